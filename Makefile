@@ -1,0 +1,49 @@
+# ptpgen: build, test, install and benchmark. `make` builds ./ptpgen with $(CC) (gcc or clang).
+CC ?= cc
+CFLAGS ?= -O2
+PREFIX ?= /usr/local
+STD = -std=c11 -Wall -Wextra -Werror -pedantic
+B = build/$(notdir $(CC))
+
+GEN_SRC = $(sort $(wildcard gen/*.c))
+GEN_HDR = $(sort $(wildcard gen/*.h))
+LIB_SRC = $(filter-out gen/main.c,$(GEN_SRC))
+TESTS = $(patsubst tests/%.c,%,$(sort $(wildcard tests/test_*.c)))
+
+all: ptpgen
+
+# ./ptpgen is a copy of the binary built by the compiler asked for, so that
+# `make CC=clang` after `make` really switches compilers.
+ptpgen: $(B)/ptpgen FORCE
+	@cmp -s $< $@ || cp $< $@
+
+$(B)/ptpgen: $(GEN_SRC) $(GEN_HDR)
+	@mkdir -p $(B)
+	$(CC) $(STD) $(CFLAGS) -o $@ $(GEN_SRC)
+
+$(B)/test_%: tests/test_%.c tests/check.h $(LIB_SRC) $(GEN_HDR)
+	@mkdir -p $(B)
+	$(CC) $(STD) $(CFLAGS) -Igen -o $@ $< $(LIB_SRC) -lm
+
+# Everything one compiler builds for the tests.
+build-tests: $(B)/ptpgen $(addprefix $(B)/,$(TESTS))
+
+test:
+	@bash tests/run.sh
+
+install: ptpgen
+	install -d $(DESTDIR)$(PREFIX)/bin
+	install -m 755 ptpgen $(DESTDIR)$(PREFIX)/bin/ptpgen
+
+bench-gen: $(B)/bench_gen ptpgen
+	$(B)/bench_gen ./ptpgen
+
+$(B)/bench_gen: bench/bench_gen.c
+	@mkdir -p $(B)
+	$(CC) $(STD) $(CFLAGS) -o $@ $<
+
+clean:
+	rm -rf build ptpgen
+
+FORCE:
+.PHONY: all test install bench-gen build-tests clean FORCE

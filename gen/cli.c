@@ -1,0 +1,138 @@
+/* cli.c: parses and validates ptpgen's options.
+ * Accepts "--opt value" and "--opt=value"; the last occurrence of an option wins. */
+#include "cli.h"
+
+#include <stdio.h>
+#include <string.h>
+
+const char cli_usage[] =
+    "usage: ptpgen --degree N|NxM [--target json|table|stats] [-o FILE]\n"
+    "       ptpgen --help | --version\n"
+    "\n"
+    "Derives the exact control planes of the parametric tangent plane\n"
+    "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u).\n"
+    "\n"
+    "  --degree N|NxM   patch bidegree, 1 <= N, M <= 16 (N alone means NxN)\n"
+    "  --target T       json (default): the exact terms, ptpgen-planes/1\n"
+    "                   table: a C header in the paper's idx/wgt format\n"
+    "                   stats: the term count of every plane\n"
+    "  -o, --output F   write to F (atomically) instead of standard output\n"
+    "  -h, --help       show this help\n"
+    "  --version        show the version\n"
+    "\n"
+    "Exit status: 0 success, 1 failure, 2 usage error.\n";
+
+/* Parses one degree: decimal digits only, 1..PTP_MAX_DEGREE. *end is where it stopped. */
+static int parse_one(int *d, const char *s, const char **end, const char *arg, ptp_error *err)
+{
+    long v = 0;
+    const char *p = s;
+    int big = 0;
+    for (; *p >= '0' && *p <= '9'; p++) {
+        v = v * 10 + (*p - '0');
+        if (v > PTP_MAX_DEGREE) {
+            big = 1;
+            v = PTP_MAX_DEGREE + 1;
+        }
+    }
+    if (p == s)
+        return ptp_fail(err, PTP_EUSAGE,
+                        "--degree '%s': expected N or NxM with whole numbers 1 to %d (e.g. 3 or 2x3)",
+                        arg, PTP_MAX_DEGREE);
+    *end = p;
+    if (big)
+        return ptp_fail(err, PTP_EUSAGE, "--degree '%s': the largest supported degree is %d", arg,
+                        PTP_MAX_DEGREE);
+    if (v == 0)
+        return ptp_fail(err, PTP_EUSAGE, "--degree '%s': degrees must be at least 1", arg);
+    *d = (int)v;
+    return PTP_OK;
+}
+
+static int parse_degree(cli_options *o, const char *arg, ptp_error *err)
+{
+    const char *p;
+    int st;
+    if ((st = parse_one(&o->n, arg, &p, arg, err)))
+        return st;
+    if (*p == '\0') {
+        o->m = o->n;
+        return PTP_OK;
+    }
+    if (*p == 'x' && (st = parse_one(&o->m, p + 1, &p, arg, err)))
+        return st;
+    if (*p != '\0')
+        return ptp_fail(err, PTP_EUSAGE,
+                        "--degree '%s': expected N or NxM with whole numbers 1 to %d (e.g. 3 or 2x3)",
+                        arg, PTP_MAX_DEGREE);
+    return PTP_OK;
+}
+
+static int parse_target(cli_options *o, const char *arg, ptp_error *err)
+{
+    static const char *const names[] = {"json", "table", "stats"};
+    size_t i;
+    for (i = 0; i < sizeof names / sizeof *names; i++)
+        if (strcmp(arg, names[i]) == 0) {
+            o->target = (cli_target)i;
+            return PTP_OK;
+        }
+    return ptp_fail(err, PTP_EUSAGE, "unknown target '%s' (expected json, table or stats)", arg);
+}
+
+/* If argv[*i] is option name (long "--name" or short "-c"), sets *val to its argument,
+ * taken from "--name=value" or the next word, and returns 1; returns 0 if it is not. */
+static int take(const char **val, int *st, const char *name, int argc, char **argv, int *i,
+                ptp_error *err)
+{
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    if (strncmp(a, name, n) != 0)
+        return 0;
+    if (a[n] == '=' && name[1] == '-') {
+        *val = a + n + 1;
+        return 1;
+    }
+    if (a[n] != '\0')
+        return 0;
+    if (*i + 1 >= argc) {
+        *st = ptp_fail(err, PTP_EUSAGE, "option %s needs an argument", name);
+        return 1;
+    }
+    *val = argv[++*i];
+    return 1;
+}
+
+int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
+{
+    static const char *const targets[] = {"json", "table", "stats"};
+    int i, st = PTP_OK;
+    memset(o, 0, sizeof *o);
+    o->target = CLI_JSON;
+    for (i = 1; i < argc && !st; i++) {
+        const char *a = argv[i], *v = NULL;
+        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0)
+            o->help = 1;
+        else if (strcmp(a, "--version") == 0)
+            o->version = 1;
+        else if (take(&v, &st, "--degree", argc, argv, &i, err))
+            st = st ? st : parse_degree(o, v, err);
+        else if (take(&v, &st, "--target", argc, argv, &i, err))
+            st = st ? st : parse_target(o, v, err);
+        else if (take(&v, &st, "--output", argc, argv, &i, err) ||
+                 take(&v, &st, "-o", argc, argv, &i, err))
+            o->output = v;
+        else if (a[0] == '-')
+            st = ptp_fail(err, PTP_EUSAGE, "unknown option '%s' (see ptpgen --help)", a);
+        else
+            st = ptp_fail(err, PTP_EUSAGE, "unexpected argument '%s' (see ptpgen --help)", a);
+    }
+    if (st || o->help || o->version)
+        return st;
+    if (!o->n)
+        return ptp_fail(err, PTP_EUSAGE, "missing --degree N or --degree NxM (see ptpgen --help)");
+    snprintf(o->command, sizeof o->command, "ptpgen --degree %dx%d --target %s", o->n, o->m,
+             targets[o->target]);
+    snprintf(o->prefix, sizeof o->prefix, "ptp_%dx%d_", o->n, o->m);
+    return PTP_OK;
+}

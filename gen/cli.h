@@ -1,0 +1,24 @@
+/* cli.h: the ptpgen command line, parsed into options without side effects.
+ * Usage errors come back as PTP_EUSAGE with a message; main decides the exit code. */
+#ifndef CLI_H
+#define CLI_H
+
+#include "ptp.h"
+
+typedef enum { CLI_JSON, CLI_TABLE, CLI_STATS } cli_target;
+
+typedef struct {
+    int n, m;             /* bidegree; 0 until --degree is given */
+    cli_target target;
+    const char *output;   /* -o path, or NULL for stdout */
+    int help, version;    /* --help or --version was given */
+    char command[256];    /* the normalized command line, for banners */
+    char prefix[64];      /* generated-name prefix, "ptp_<n>x<m>_" */
+} cli_options;
+
+/* Parses argv[1..argc-1] into o. Returns PTP_OK or PTP_EUSAGE with the message in err. */
+int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err);
+/* The --help text. */
+extern const char cli_usage[];
+
+#endif
