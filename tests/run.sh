@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# run.sh: what `make test` runs: installs missing tools, builds with gcc and clang, runs every test.
+# Each test prints "ok - ..." / "not ok - ..." lines; the last line is "N passed, N failed".
+set -u
+cd "$(dirname "$0")/.."
+. tests/deps.sh
+
+log=build/test.log
+mkdir -p build
+: > "$log"
+
+# Runs a command, copies its output to the log and the terminal, and turns a non-zero exit
+# with no "not ok" line into one.
+run() {
+    local name=$1 out rc
+    shift
+    out=$("$@" 2>&1)
+    rc=$?
+    printf '%s\n' "$out" | tee -a "$log"
+    if [ $rc -ne 0 ] && ! printf '%s\n' "$out" | grep -q '^not ok - '; then
+        echo "not ok - $name exited with status $rc" | tee -a "$log"
+    fi
+}
+
+ptp_ensure_deps | tee -a "$log"
+
+compilers=""
+for cc in gcc clang; do
+    command -v $cc >/dev/null 2>&1 || continue
+    compilers="$compilers $cc"
+    if make -s CC=$cc build-tests >build/make-$cc.log 2>&1; then
+        echo "ok - builds with $cc -std=c11 -Wall -Wextra -Werror -pedantic" | tee -a "$log"
+    else
+        echo "not ok - build with $cc failed: see build/make-$cc.log" | tee -a "$log"
+        cat build/make-$cc.log
+    fi
+done
+
+for cc in $compilers; do
+    for t in build/$cc/test_*; do
+        [ -x "$t" ] && run "$t" "$t"
+    done
+done
+
+if [ -x build/gcc/ptpgen ]; then
+    run tests/test_cli.sh env PTPGEN=build/gcc/ptpgen PTPGEN_OTHER=build/clang/ptpgen bash tests/test_cli.sh
+fi
+
+passed=$(grep -c '^ok - ' "$log")
+failed=$(grep -c '^not ok - ' "$log")
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
