@@ -1,6 +1,8 @@
 # ptpgen: build, test, install and benchmark. `make` builds ./ptpgen with $(CC) (gcc or clang).
 CC ?= cc
 CFLAGS ?= -O2
+# Static linking halves process start-up, a third of a small run (make LDFLAGS= to link dynamically).
+LDFLAGS ?= -static
 PREFIX ?= /usr/local
 STD = -std=c11 -Wall -Wextra -Werror -pedantic
 B = build/$(notdir $(CC))
@@ -17,11 +19,11 @@ all: ptpgen
 ptpgen: $(B)/ptpgen FORCE
 	@cmp -s $< $@ || cp $< $@
 
-$(B)/ptpgen: $(GEN_SRC) $(GEN_HDR)
+$(B)/ptpgen: $(GEN_SRC) $(GEN_HDR) Makefile
 	@mkdir -p $(B)
-	$(CC) $(STD) $(CFLAGS) -o $@ $(GEN_SRC)
+	$(CC) $(STD) $(CFLAGS) $(LDFLAGS) -o $@ $(GEN_SRC)
 
-$(B)/test_%: tests/test_%.c tests/check.h $(LIB_SRC) $(GEN_HDR)
+$(B)/test_%: tests/test_%.c tests/check.h $(LIB_SRC) $(GEN_HDR) Makefile
 	@mkdir -p $(B)
 	$(CC) $(STD) $(CFLAGS) -Igen -o $@ $< $(LIB_SRC) -lm
 

@@ -94,22 +94,28 @@ static int mul_overflow(ptp_error *err)
     return ptp_fail(err, PTP_EOVERFLOW, "exact arithmetic overflowed 128 bits in a Bernstein product");
 }
 
+/* Binomial rows of the two factors' degrees, computed once per product. */
+typedef struct {
+    ptp_i128 au[3 * PTP_MAX_DEGREE + 1], av[3 * PTP_MAX_DEGREE + 1];
+    ptp_i128 bu[3 * PTP_MAX_DEGREE + 1], bv[3 * PTP_MAX_DEGREE + 1];
+} binom_rows;
+
 /* The factor of cell pair (ia, ja) x (ib, jb): the Bernstein numerators over both
  * denominators, in lowest terms. */
-static int pair_factor(rat *f, const bez *A, const bez *B, int ia, int ja, int ib, int jb)
+static int pair_factor(rat *f, const bez *A, const bez *B, const binom_rows *c, int ia, int ja,
+                       int ib, int jb)
 {
     ptp_i128 n, d;
     const form *fa = bez_at(A, ia, ja), *fb = bez_at(B, ib, jb);
-    if (i128_mul_ovf(&n, binom(A->du, ia), binom(B->du, ib)) ||
-        i128_mul_ovf(&n, n, binom(A->dv, ja)) || i128_mul_ovf(&n, n, binom(B->dv, jb)) ||
-        i128_mul_ovf(&d, fa->den, fb->den))
+    if (i128_mul_ovf(&n, c->au[ia], c->bu[ib]) || i128_mul_ovf(&n, n, c->av[ja]) ||
+        i128_mul_ovf(&n, n, c->bv[jb]) || i128_mul_ovf(&d, fa->den, fb->den))
         return PTP_EOVERFLOW;
     return rat_set_frac(f, n, d);
 }
 
 /* Collects the products for output cell (I, J) into *buf (growing it) and sets the cell. */
-static int mul_cell(bez *R, const bez *A, const bez *B, int I, int J, form_term **buf,
-                    size_t *cap, rat *factors, ptp_error *err)
+static int mul_cell(bez *R, const bez *A, const bez *B, const binom_rows *c, int I, int J,
+                    form_term **buf, size_t *cap, rat *factors, ptp_error *err)
 {
     int ia, ja, ilo = I > B->du ? I - B->du : 0, jlo = J > B->dv ? J - B->dv : 0;
     int ihi = I < A->du ? I : A->du, jhi = J < A->dv ? J : A->dv, np = 0;
@@ -120,7 +126,7 @@ static int mul_cell(bez *R, const bez *A, const bez *B, int I, int J, form_term 
         for (ja = jlo; ja <= jhi; ja++, np++) {
             rat *f = &factors[np];
             ptp_i128 g;
-            if (pair_factor(f, A, B, ia, ja, I - ia, J - ja))
+            if (pair_factor(f, A, B, c, ia, ja, I - ia, J - ja))
                 return mul_overflow(err);
             g = (ptp_i128)u128_gcd((ptp_u128)L, (ptp_u128)f->den);
             if (i128_mul_ovf(&L, L / g, f->den))
@@ -171,6 +177,7 @@ int bez_mul(bez *R, const bez *A, const bez *B, ptp_error *err)
     form_term *buf = NULL;
     size_t cap = 0;
     rat *factors;
+    binom_rows c;
     int I, J, st;
     if (A->rank + B->rank > FORM_MAX_RANK)
         return ptp_fail(err, PTP_EINTERNAL, "product of rank %d exceeds %d", A->rank + B->rank,
@@ -182,9 +189,15 @@ int bez_mul(bez *R, const bez *A, const bez *B, ptp_error *err)
         bez_clear(R);
         return ptp_fail(err, PTP_ENOMEM, "out of memory (Bernstein product)");
     }
+    for (I = 0; I <= 3 * PTP_MAX_DEGREE; I++) {
+        c.au[I] = I <= A->du ? binom(A->du, I) : 0;
+        c.av[I] = I <= A->dv ? binom(A->dv, I) : 0;
+        c.bu[I] = I <= B->du ? binom(B->du, I) : 0;
+        c.bv[I] = I <= B->dv ? binom(B->dv, I) : 0;
+    }
     for (I = 0; I <= R->du && !st; I++)
         for (J = 0; J <= R->dv && !st; J++)
-            st = mul_cell(R, A, B, I, J, &buf, &cap, factors, err);
+            st = mul_cell(R, A, B, &c, I, J, &buf, &cap, factors, err);
     free(buf);
     free(factors);
     if (st)

@@ -29,7 +29,7 @@ static int key_is_sorted(form_key key, int rank)
     for (i = 1; i < rank; i++)
         if (idx[i - 1] >= idx[i])
             return 0;
-    return rank == FORM_MAX_RANK || (key >> (16 * rank)) == 0;
+    return (key >> (16 * rank)) == 0; /* rank <= 3: the shift is at most 48 */
 }
 
 int form_is_canonical(const form *f)
@@ -69,6 +69,21 @@ int form_key_wedge(form_key *r, form_key a, int ra, form_key b, int rb)
 {
     int x[FORM_MAX_RANK], y[FORM_MAX_RANK], i = 0, j = 0, sign = 1;
     form_key k = 0;
+    if (ra == 2 && rb == 1) { /* the hot case of B ^ B_u ^ B_v: place b among (a0, a1) */
+        form_key a0 = a >> 16, a1 = a & FORM_MAX_POINT;
+        if (b == a0 || b == a1)
+            return 0;
+        if (b > a1) {
+            *r = a << 16 | b;
+            return 1;
+        }
+        if (b > a0) {
+            *r = a0 << 32 | b << 16 | a1;
+            return -1;
+        }
+        *r = b << 32 | a;
+        return 1;
+    }
     form_key_unpack(x, a, ra);
     form_key_unpack(y, b, rb);
     /* Merge; each y element placed before remaining x elements crosses them all. */

@@ -43,6 +43,10 @@ static inline int i128_from_mag(ptp_i128 *r, int neg, ptp_u128 u)
 static inline int i128_mul_ovf(ptp_i128 *r, ptp_i128 a, ptp_i128 b)
 {
     ptp_u128 u;
+    if (a == (int64_t)a && b == (int64_t)b) { /* |a*b| < 2^126: one 64x64->128 multiply */
+        *r = (ptp_i128)(int64_t)a * (int64_t)b;
+        return 0;
+    }
     if (u128_mul_ovf(&u, i128_abs(a), i128_abs(b)))
         return 1;
     return i128_from_mag(r, (a < 0) != (b < 0), u);

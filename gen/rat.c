@@ -10,10 +10,15 @@ char *i128_to_str(char *buf, ptp_i128 a)
     char tmp[41];
     int n = 0, i = 0;
     ptp_u128 u = i128_abs(a);
-    do {
+    for (; u >> 64; u /= 10)
         tmp[n++] = (char)('0' + (int)(u % 10));
-        u /= 10;
-    } while (u);
+    {
+        uint64_t v = (uint64_t)u; /* the rest in cheap 64-bit divisions */
+        do {
+            tmp[n++] = (char)('0' + (int)(v % 10));
+            v /= 10;
+        } while (v);
+    }
     if (a < 0)
         buf[i++] = '-';
     while (n)

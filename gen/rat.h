@@ -21,7 +21,9 @@ int rat_set_frac(rat *r, ptp_i128 num, ptp_i128 den);
 /* Nonzero when a is in canonical form. */
 int rat_is_canonical(const rat *a);
 /* r = a + b, a - b, a * b, a / b. Aliasing of r with a or b is allowed. On failure
- * (PTP_EOVERFLOW; PTP_EUSAGE for division by zero) r is unchanged. */
+ * (PTP_EOVERFLOW; PTP_EUSAGE for division by zero) r is unchanged. Overflow is reported
+ * when an intermediate product exceeds 127 bits, rarely even though the reduced result
+ * would fit: an answer is never wrong, at worst refused. */
 int rat_add(rat *r, const rat *a, const rat *b);
 int rat_sub(rat *r, const rat *a, const rat *b);
 int rat_mul(rat *r, const rat *a, const rat *b);
