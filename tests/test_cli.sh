@@ -171,6 +171,20 @@ fi
 "$P" --degree 2x4 --target stats | grep -q 'planes of bidegree 4x10' && ok "stats 2x4 names the plane bidegree 4x10" ||
     notok "stats 2x4" "plane bidegree missing"
 
+# The supported range: every bidegree up to 8x8 and the corners of the 16x16 limit derive
+# (the degree reductions' zero residuals are checked on each).
+bad=""
+for n in 1 2 3 4 5 6 7 8; do
+    for m in 1 2 3 4 5 6 7 8; do
+        "$P" --degree ${n}x$m --target stats >/dev/null 2>"$tmp/err" || bad="$bad ${n}x$m"
+    done
+done
+[ -z "$bad" ] && ok "every bidegree 1x1 to 8x8 derives" || notok "every bidegree 1x1 to 8x8 derives" "failed:$bad"
+for d in 16x1 1x16 16x16; do
+    "$P" --degree $d --target stats >"$tmp/s.txt" 2>"$tmp/err" && grep -q '^total [0-9]' "$tmp/s.txt" &&
+        ok "bidegree $d (the limit) derives without overflow" || notok "bidegree $d derives" "$(cat "$tmp/err")"
+done
+
 # gcc and clang builds produce the same bytes.
 if [ -n "${PTPGEN_OTHER:-}" ] && [ -x "$PTPGEN_OTHER" ]; then
     same=1
