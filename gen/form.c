@@ -274,8 +274,11 @@ int form_set_terms(form *r, form_term *terms, size_t n, ptp_i128 den, ptp_error 
         return st;
     for (i = 0; i < n; i++) {
         if (k && r->t[k - 1].key == terms[i].key) {
-            if (i128_add_ovf(&r->t[k - 1].num, r->t[k - 1].num, terms[i].num))
+            if (i128_add_ovf(&r->t[k - 1].num, r->t[k - 1].num, terms[i].num)) {
+                r->len = 0;
+                r->den = 1;
                 return overflow(err, "a sum of products");
+            }
         } else {
             if (k && r->t[k - 1].num == 0)
                 k--;

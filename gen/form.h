@@ -47,7 +47,8 @@ int form_set_point(form *r, int j, const rat *w, ptp_error *err);
 int form_lincomb(form *r, const rat *a, const form *x, const rat *b, const form *y,
                  ptp_error *err);
 /* Sets r (whose rank is kept) to sum_i (terms[i].num / den) * key_i: sorts terms in place,
- * adds equal keys, drops zeros and reduces to canonical form. den must be positive. */
+ * adds equal keys, drops zeros and reduces to canonical form. den must be positive. On
+ * failure r is the zero form. */
 int form_set_terms(form *r, form_term *terms, size_t n, ptp_i128 den, ptp_error *err);
 /* Nonzero when x == y (both canonical). */
 int form_equal(const form *x, const form *y);

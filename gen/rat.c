@@ -154,41 +154,45 @@ char *rat_get_str(char *buf, const rat *a)
     return buf;
 }
 
-/* Parses an optionally signed decimal integer from *s, advancing *s; PTP_EUSAGE if no digits. */
-static int parse_int(ptp_i128 *v, const char **s, int allow_sign)
+/* Parses decimal digits from *s into the magnitude *u, advancing *s; PTP_EUSAGE if there are
+ * none, PTP_EOVERFLOW past 2^128 - 1. */
+static int parse_mag(ptp_u128 *u, const char **s)
 {
     const char *p = *s;
-    int neg = 0, digits = 0;
-    ptp_u128 u = 0;
-    if (allow_sign && *p == '-') {
-        neg = 1;
-        p++;
-    }
-    for (; *p >= '0' && *p <= '9'; p++, digits++) {
-        if (u128_mul_ovf(&u, u, 10) || u + (ptp_u128)(*p - '0') < u)
+    *u = 0;
+    for (; *p >= '0' && *p <= '9'; p++) {
+        if (u128_mul_ovf(u, *u, 10) || *u + (ptp_u128)(*p - '0') < *u)
             return PTP_EOVERFLOW;
-        u += (ptp_u128)(*p - '0');
+        *u += (ptp_u128)(*p - '0');
     }
-    if (!digits)
+    if (p == *s)
         return PTP_EUSAGE;
-    if (i128_from_mag(v, neg, u))
-        return PTP_EOVERFLOW;
     *s = p;
     return PTP_OK;
 }
 
 int rat_set_str(rat *r, const char *s)
 {
-    ptp_i128 num, den = 1;
-    int st = parse_int(&num, &s, 1);
-    if (st)
+    ptp_u128 num, den = 1, g;
+    rat t;
+    int neg = *s == '-', st;
+    s += neg;
+    if ((st = parse_mag(&num, &s)))
         return st;
     if (*s == '/') {
         s++;
-        if ((st = parse_int(&den, &s, 0)))
+        if ((st = parse_mag(&den, &s)))
             return st;
     }
     if (*s != '\0')
         return PTP_EUSAGE;
-    return rat_set_frac(r, num, den);
+    if (den == 0)
+        return PTP_EUSAGE;
+    g = u128_gcd(num, den); /* reduce before the range check: "-2^127/2" fits */
+    if (i128_from_mag(&t.num, neg, num / g) || i128_from_mag(&t.den, 0, den / g))
+        return PTP_EOVERFLOW;
+    if (t.num == 0)
+        t.den = 1;
+    *r = t;
+    return PTP_OK;
 }

@@ -1,0 +1,1290 @@
+/* test_rat.c: randomized property tests of the exact rationals (gen/rat.c, gen/i128.h).
+ * Every result is checked against an independent 512-bit reference; deterministic seed. */
+#include "check.h"
+#include "ptp.h"
+#include "rat.h"
+
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PAIRS 100000L /* values for the cheap single-value properties */
+#define SWEEP 40000L  /* pairs (and triples) for the operation sweep */
+#define MAXI ((ptp_i128)(((ptp_u128)1 << 127) - 1))
+
+/* ---- deterministic PRNG (splitmix64) ---- */
+
+static uint64_t rng_state = 0x243F6A8885A308D3u;
+
+static uint64_t rnd(void)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return z ^ (z >> 31);
+}
+
+static unsigned rnd_below(unsigned n)
+{
+    return (unsigned)(rnd() % n);
+}
+
+static ptp_u128 rnd_u128(void)
+{
+    ptp_u128 hi = rnd();
+    return (hi << 64) | rnd();
+}
+
+/* A uniform value of at most bits bits (0 < bits <= 128). */
+static ptp_u128 rnd_bits(int bits)
+{
+    ptp_u128 u = rnd_u128();
+    return bits >= 128 ? u : u & (((ptp_u128)1 << bits) - 1);
+}
+
+/* ---- independent helpers on plain 128-bit integers ---- */
+
+static ptp_u128 uabs(ptp_i128 a)
+{
+    return a < 0 ? (ptp_u128)0 - (ptp_u128)a : (ptp_u128)a;
+}
+
+/* gcd by Euclid's algorithm (a different algorithm from the library's binary gcd). */
+static ptp_u128 my_gcd(ptp_u128 a, ptp_u128 b)
+{
+    uint64_t x, y;
+    while ((a >> 64) || (b >> 64)) {
+        ptp_u128 t;
+        if (b == 0)
+            return a;
+        t = a % b;
+        a = b;
+        b = t;
+    }
+    x = (uint64_t)a;
+    y = (uint64_t)b;
+    while (y) {
+        uint64_t t = x % y;
+        x = y;
+        y = t;
+    }
+    return x;
+}
+
+/* Canonical by the definition: den > 0, num != -2^127, 0 is 0/1, gcd(num, den) = 1. */
+static int my_canonical(const rat *a)
+{
+    if (a->den <= 0 || a->num < -MAXI)
+        return 0;
+    if (a->num == 0)
+        return a->den == 1;
+    return my_gcd(uabs(a->num), (ptp_u128)a->den) == 1;
+}
+
+/* Decimal text of a 128-bit integer, independent of i128_to_str. */
+static char *my_i128_str(char *buf, ptp_i128 v)
+{
+    const uint64_t e19 = 10000000000000000000u;
+    ptp_u128 u = uabs(v);
+    uint64_t parts[3];
+    int n = 0, i;
+    char *p = buf;
+    do {
+        parts[n++] = (uint64_t)(u % e19);
+        u /= e19;
+    } while (u);
+    if (v < 0)
+        *p++ = '-';
+    p += sprintf(p, "%llu", (unsigned long long)parts[n - 1]);
+    for (i = n - 2; i >= 0; i--)
+        p += sprintf(p, "%019llu", (unsigned long long)parts[i]);
+    return buf;
+}
+
+static char *my_rat_str(char *buf, const rat *a)
+{
+    my_i128_str(buf, a->num);
+    if (a->den != 1) {
+        size_t n = strlen(buf);
+        buf[n] = '/';
+        my_i128_str(buf + n + 1, a->den);
+    }
+    return buf;
+}
+
+/* Rotating buffers so that several values can be printed in one message. */
+static const char *S(const rat *a)
+{
+    static char pool[12][100];
+    static int k;
+    return my_rat_str(pool[k++ % 12], a);
+}
+
+static const char *SI(ptp_i128 v)
+{
+    static char pool[8][48];
+    static int k;
+    return my_i128_str(pool[k++ % 8], v);
+}
+
+static rat mk(ptp_i128 num, ptp_i128 den)
+{
+    rat r;
+    r.num = num;
+    r.den = den;
+    return r;
+}
+
+static int req(const rat *a, const rat *b)
+{
+    return a->num == b->num && a->den == b->den;
+}
+
+/* ---- a small signed 512-bit integer (sign and magnitude in 32-bit limbs) ---- */
+
+#define BN_N 16
+
+typedef struct {
+    int neg;
+    uint32_t d[BN_N];
+} bn;
+
+static bn bn_u(ptp_u128 u)
+{
+    bn r;
+    int i;
+    memset(&r, 0, sizeof r);
+    for (i = 0; i < 4; i++)
+        r.d[i] = (uint32_t)(u >> (32 * i));
+    return r;
+}
+
+static bn bn_i(ptp_i128 v)
+{
+    bn r = bn_u(uabs(v));
+    r.neg = v < 0;
+    return r;
+}
+
+static int bn_len(const bn *a)
+{
+    int n = BN_N;
+    while (n && !a->d[n - 1])
+        n--;
+    return n;
+}
+
+static int bn_zero(const bn *a)
+{
+    return bn_len(a) == 0;
+}
+
+static bn bn_mul(bn a, bn b)
+{
+    bn r;
+    int la = bn_len(&a), lb = bn_len(&b), i, j;
+    memset(&r, 0, sizeof r);
+    if (la + lb > BN_N) {
+        fprintf(stderr, "test_rat: 512-bit reference overflow\n");
+        exit(2);
+    }
+    for (i = 0; i < la; i++) {
+        uint64_t c = 0;
+        for (j = 0; j < lb; j++) {
+            uint64_t t = (uint64_t)a.d[i] * b.d[j] + r.d[i + j] + c;
+            r.d[i + j] = (uint32_t)t;
+            c = t >> 32;
+        }
+        r.d[i + lb] = (uint32_t)c;
+    }
+    r.neg = la && lb && a.neg != b.neg;
+    return r;
+}
+
+static int bn_cmpmag(const bn *a, const bn *b)
+{
+    int i;
+    for (i = BN_N - 1; i >= 0; i--)
+        if (a->d[i] != b->d[i])
+            return a->d[i] < b->d[i] ? -1 : 1;
+    return 0;
+}
+
+static bn bn_add(bn a, bn b)
+{
+    bn r;
+    int i;
+    memset(&r, 0, sizeof r);
+    if (a.neg == b.neg) {
+        uint64_t c = 0;
+        for (i = 0; i < BN_N; i++) {
+            c += (uint64_t)a.d[i] + b.d[i];
+            r.d[i] = (uint32_t)c;
+            c >>= 32;
+        }
+        if (c) {
+            fprintf(stderr, "test_rat: 512-bit reference overflow\n");
+            exit(2);
+        }
+        r.neg = a.neg;
+    } else {
+        const bn *x = &a, *y = &b;
+        uint64_t br = 0;
+        if (bn_cmpmag(&a, &b) < 0) {
+            x = &b;
+            y = &a;
+        }
+        for (i = 0; i < BN_N; i++) {
+            uint64_t t = (uint64_t)x->d[i] - y->d[i] - br;
+            r.d[i] = (uint32_t)t;
+            br = (t >> 63) & 1;
+        }
+        r.neg = x->neg;
+    }
+    if (bn_zero(&r))
+        r.neg = 0;
+    return r;
+}
+
+static bn bn_neg(bn a)
+{
+    if (!bn_zero(&a))
+        a.neg = !a.neg;
+    return a;
+}
+
+static int bn_eq(const bn *a, const bn *b)
+{
+    return a->neg == b->neg && bn_cmpmag(a, b) == 0;
+}
+
+/* Nonzero when |a| <= 2^127 - 1 (a canonical numerator or denominator can hold it). */
+static int bn_fits(const bn *a)
+{
+    int i;
+    for (i = 4; i < BN_N; i++)
+        if (a->d[i])
+            return 0;
+    return a->d[3] < 0x80000000u;
+}
+
+/* q = |a| / dv (sign of a kept), *rem = |a| mod dv; 0 < dv < 2^127. Bit by bit. */
+static void bn_divmod(bn *q, ptp_u128 *rem, const bn *a, ptp_u128 dv)
+{
+    ptp_u128 r = 0;
+    int i;
+    bn out;
+    memset(&out, 0, sizeof out);
+    for (i = bn_len(a) * 32 - 1; i >= 0; i--) {
+        r = (r << 1) | ((a->d[i / 32] >> (i % 32)) & 1);
+        if (r >= dv) {
+            r -= dv;
+            out.d[i / 32] |= (uint32_t)1 << (i % 32);
+        }
+    }
+    out.neg = a->neg && !bn_zero(&out);
+    if (q)
+        *q = out;
+    if (rem)
+        *rem = r;
+}
+
+/* ---- random operands ---- */
+
+static const unsigned small_primes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23};
+
+/* A magnitude from one of several classes: tiny, 30-bit, 62-bit, 100-bit, near 2^126,
+ * smooth (many small prime factors), special (powers of two, +-1, the maximum). */
+static ptp_u128 rnd_mag(void)
+{
+    switch (rnd_below(9)) {
+    case 0:
+    case 1:
+        return rnd_below(11);
+    case 2:
+        return rnd_bits(30);
+    case 3:
+        return rnd_bits(62);
+    case 4:
+        return rnd_bits(100);
+    case 5: {
+        int b = 120 + (int)rnd_below(8); /* 120..127 bits, top bit set */
+        return rnd_bits(b) | ((ptp_u128)1 << (b - 1));
+    }
+    case 6:
+    case 7: {
+        ptp_u128 u = 1, lim = (ptp_u128)1 << (10 + rnd_below(117));
+        for (;;) {
+            unsigned p = small_primes[rnd_below(9)];
+            if (u > lim / p)
+                return u;
+            u *= p;
+        }
+    }
+    default: {
+        int k = 1 + (int)rnd_below(126);
+        switch (rnd_below(5)) {
+        case 0:
+            return (ptp_u128)1 << k;
+        case 1:
+            return ((ptp_u128)1 << k) - 1;
+        case 2:
+            return ((ptp_u128)1 << k) + 1;
+        case 3:
+            return (ptp_u128)MAXI;
+        default:
+            return 1;
+        }
+    }
+    }
+}
+
+/* A magnitude of at most 62 bits (tiny, 30-bit, 62-bit or smooth), so that sums and
+ * products of a few of them mostly fit. */
+static ptp_u128 rnd_mag_small(void)
+{
+    switch (rnd_below(4)) {
+    case 0:
+        return rnd_below(11);
+    case 1:
+        return rnd_bits(30);
+    case 2:
+        return rnd_bits(62);
+    default: {
+        ptp_u128 u = 1, lim = (ptp_u128)1 << (10 + rnd_below(52));
+        for (;;) {
+            unsigned p = small_primes[rnd_below(9)];
+            if (u > lim / p)
+                return u;
+            u *= p;
+        }
+    }
+    }
+}
+
+static int small_mode; /* when set, rnd_rat draws from rnd_mag_small only */
+
+/* A canonical rational with numerator and denominator from independent classes. */
+static rat rnd_rat(void)
+{
+    ptp_u128 n = small_mode ? rnd_mag_small() : rnd_mag(),
+             d = small_mode ? rnd_mag_small() : rnd_mag(), g;
+    rat r;
+    if (d == 0)
+        d = 1;
+    if (n == 0) {
+        r.num = 0;
+        r.den = 1;
+        return r;
+    }
+    g = my_gcd(n, d);
+    r.num = (ptp_i128)(n / g);
+    r.den = (ptp_i128)(d / g);
+    if (rnd() & 1)
+        r.num = -r.num;
+    return r;
+}
+
+/* ---- aggregated properties: one check line each, first counterexample kept ---- */
+
+typedef struct {
+    char name[200];
+    long tried, bad;
+    char detail[700];
+} prop;
+
+static void prop_init(prop *p, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(p->name, sizeof p->name, fmt, ap);
+    va_end(ap);
+    p->tried = p->bad = 0;
+    p->detail[0] = '\0';
+}
+
+static void prop_fail(prop *p, const char *fmt, ...)
+{
+    if (!p->bad++) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(p->detail, sizeof p->detail, fmt, ap);
+        va_end(ap);
+    }
+}
+
+static void prop_report(const prop *p)
+{
+    check(!p->bad && p->tried > 0, p->name, "%s (%ld of %ld cases failed)",
+          p->tried ? p->detail : "no case was tried", p->bad, p->tried);
+}
+
+/* ---- the operations and their references ---- */
+
+typedef int (*rat_op)(rat *, const rat *, const rat *);
+
+enum { OP_ADD, OP_SUB, OP_MUL, OP_DIV, NOPS };
+static const rat_op ops[NOPS] = {rat_add, rat_sub, rat_mul, rat_div};
+static const char *const op_sym[NOPS] = {"+", "-", "*", "/"};
+
+static const rat sentinel = {12345, 678}; /* canonical, stands for "unchanged" */
+
+static long spurious[NOPS]; /* EOVERFLOW although the exact result fits */
+
+/* What the exact canonical result of a op b needs: fits (both parts <= 2^127 - 1), and for
+ * + and - whether an intermediate of Knuth's method (a.num*(b.den/g), b.num*(a.den/g), their
+ * sum) exceeds 128 bits. Also the exact canonical result itself when it fits. */
+typedef struct {
+    int fits, inter_ovf;
+    rat val;
+} ref_result;
+
+static ref_result reference(int op, const rat *a, const rat *b)
+{
+    ref_result out;
+    bn num, den;
+    out.inter_ovf = 0;
+    if (op == OP_ADD || op == OP_SUB) {
+        ptp_i128 bnum = op == OP_SUB ? -b->num : b->num;
+        ptp_u128 g = my_gcd((ptp_u128)a->den, (ptp_u128)b->den), g2, rem;
+        bn x = bn_mul(bn_i(a->num), bn_u((ptp_u128)b->den / g));
+        bn y = bn_mul(bn_i(bnum), bn_u((ptp_u128)a->den / g));
+        bn t = bn_add(x, y);
+        out.inter_ovf = !bn_fits(&x) || !bn_fits(&y) || !bn_fits(&t);
+        if (bn_zero(&t)) {
+            num = bn_u(0);
+            den = bn_u(1);
+        } else {
+            /* gcd(t, (a.den/g) * b.den) = gcd(t, g) since a, b are in lowest terms. */
+            bn_divmod(NULL, &rem, &t, g);
+            g2 = my_gcd(rem, g);
+            bn_divmod(&num, NULL, &t, g2);
+            den = bn_mul(bn_u((ptp_u128)a->den / g), bn_u((ptp_u128)b->den / g2));
+        }
+    } else {
+        rat bb = *b;
+        if (op == OP_DIV) { /* b's inverse, written out independently */
+            bb.num = b->num < 0 ? -b->den : b->den;
+            bb.den = (ptp_i128)uabs(b->num);
+        }
+        if (a->num == 0 || bb.num == 0) {
+            num = bn_u(0);
+            den = bn_u(1);
+        } else {
+            ptp_u128 g1 = my_gcd(uabs(a->num), (ptp_u128)bb.den);
+            ptp_u128 g2 = my_gcd(uabs(bb.num), (ptp_u128)a->den);
+            num = bn_mul(bn_i(a->num / (ptp_i128)g1), bn_i(bb.num / (ptp_i128)g2));
+            den = bn_mul(bn_i(a->den / (ptp_i128)g2), bn_i(bb.den / (ptp_i128)g1));
+        }
+    }
+    out.fits = bn_fits(&num) && bn_fits(&den);
+    out.val = mk(0, 1);
+    if (out.fits) {
+        ptp_u128 n = (ptp_u128)num.d[0] | (ptp_u128)num.d[1] << 32 | (ptp_u128)num.d[2] << 64 |
+                     (ptp_u128)num.d[3] << 96;
+        ptp_u128 d = (ptp_u128)den.d[0] | (ptp_u128)den.d[1] << 32 | (ptp_u128)den.d[2] << 64 |
+                     (ptp_u128)den.d[3] << 96;
+        out.val.num = num.neg ? -(ptp_i128)n : (ptp_i128)n;
+        out.val.den = (ptp_i128)d;
+    }
+    return out;
+}
+
+/* Cross-multiplied exactness: r == a op b  <=>  r.num * D == N * r.den with N/D = a op b
+ * unreduced (N, D computed in 512 bits straight from the definitions). */
+static int cross_ok(int op, const rat *a, const rat *b, const rat *r)
+{
+    bn an = bn_i(a->num), ad = bn_i(a->den), bnu = bn_i(b->num), bd = bn_i(b->den), n, d, lhs,
+       rhs;
+    switch (op) {
+    case OP_ADD:
+        n = bn_add(bn_mul(an, bd), bn_mul(bnu, ad));
+        d = bn_mul(ad, bd);
+        break;
+    case OP_SUB:
+        n = bn_add(bn_mul(an, bd), bn_neg(bn_mul(bnu, ad)));
+        d = bn_mul(ad, bd);
+        break;
+    case OP_MUL:
+        n = bn_mul(an, bnu);
+        d = bn_mul(ad, bd);
+        break;
+    default:
+        n = bn_mul(an, bd);
+        d = bn_mul(ad, bnu);
+        break;
+    }
+    lhs = bn_mul(bn_i(r->num), d);
+    rhs = bn_mul(n, bn_i(r->den));
+    return bn_eq(&lhs, &rhs);
+}
+
+/* Per-operation properties. */
+typedef struct {
+    prop exact, justified, nocause, canon;
+} op_props;
+
+static op_props opp[NOPS];
+
+/* Runs r = a op b and checks it against the reference; returns the status, result in *out. */
+static int run_op(int op, const rat *a, const rat *b, rat *out)
+{
+    rat r = sentinel;
+    int st = ops[op](&r, a, b);
+    op_props *p = &opp[op];
+    *out = r;
+    p->exact.tried++;
+    if (op == OP_DIV && b->num == 0) {
+        if (st != PTP_EUSAGE || !req(&r, &sentinel))
+            prop_fail(&p->exact, "%s / 0: status %d, r = %s (want PTP_EUSAGE, r unchanged)",
+                      S(a), st, S(&r));
+        return st;
+    }
+    if (st == PTP_OK) {
+        ref_result ref;
+        p->canon.tried++;
+        if (!my_canonical(&r) || !rat_is_canonical(&r))
+            prop_fail(&p->canon, "%s %s %s = %s is not canonical", S(a), op_sym[op], S(b),
+                      S(&r));
+        if (!cross_ok(op, a, b, &r)) {
+            prop_fail(&p->exact, "%s %s %s: got %s, which is wrong (512-bit cross-check)",
+                      S(a), op_sym[op], S(b), S(&r));
+            return st;
+        }
+        ref = reference(op, a, b);
+        if (!ref.fits || !req(&ref.val, &r))
+            prop_fail(&p->exact, "%s %s %s: got %s, reference says %s (fits %d)", S(a),
+                      op_sym[op], S(b), S(&r), S(&ref.val), ref.fits);
+    } else if (st == PTP_EOVERFLOW) {
+        ref_result ref = reference(op, a, b);
+        p->justified.tried++;
+        if (!req(&r, &sentinel))
+            prop_fail(&p->justified, "%s %s %s: EOVERFLOW but r changed to %s", S(a),
+                      op_sym[op], S(b), S(&r));
+        else if (ref.fits && !ref.inter_ovf)
+            prop_fail(&p->justified,
+                      "%s %s %s: EOVERFLOW but the exact result %s fits and no intermediate "
+                      "overflows",
+                      S(a), op_sym[op], S(b), S(&ref.val));
+        if (ref.fits)
+            spurious[op]++;
+    } else {
+        prop_fail(&p->exact, "%s %s %s: unexpected status %d", S(a), op_sym[op], S(b), st);
+    }
+    return st;
+}
+
+/* The "no overflow without cause" side, run on a sample where the op might succeed. */
+static void check_nocause(int op, const rat *a, const rat *b, int st)
+{
+    ref_result ref;
+    if (op == OP_DIV && b->num == 0)
+        return;
+    ref = reference(op, a, b);
+    if (ref.fits && !ref.inter_ovf) {
+        opp[op].nocause.tried++;
+        if (st != PTP_OK)
+            prop_fail(&opp[op].nocause, "%s %s %s: status %d although the result %s fits",
+                      S(a), op_sym[op], S(b), st, S(&ref.val));
+    }
+}
+
+/* ---- the random-pair sweep ---- */
+
+static prop p_comm_add, p_comm_mul, p_assoc_add, p_assoc_mul, p_distrib, p_alias[NOPS],
+    p_add0, p_mul1, p_sub_self, p_add_neg, p_inv, p_divmul, p_div_self, p_zero, p_sub_anti,
+    p_mul_strict;
+
+static void sweep(void)
+{
+    long i;
+    int op;
+    const rat zero = {0, 1}, one = {1, 1};
+    prop_init(&p_comm_add, "rat: a+b == b+a, same status (%ld random pairs)", SWEEP);
+    prop_init(&p_comm_mul, "rat: a*b == b*a, same status (%ld random pairs)", SWEEP);
+    prop_init(&p_assoc_add, "rat: (a+b)+c == a+(b+c) where no overflow (%ld random triples)",
+              SWEEP);
+    prop_init(&p_assoc_mul, "rat: (a*b)*c == a*(b*c), and when a*b and b*c fit both sides "
+                            "agree on overflow (%ld random triples)",
+              SWEEP);
+    prop_init(&p_distrib, "rat: a*(b+c) == a*b + a*c where no overflow (%ld random triples)",
+              SWEEP);
+    for (op = 0; op < NOPS; op++) {
+        prop_init(&opp[op].exact,
+                  "rat: a%sb on success equals the exact value (512-bit cross-multiplication, "
+                  "%ld random pairs)",
+                  op_sym[op], SWEEP);
+        prop_init(&opp[op].canon, "rat: a%sb results are canonical (%ld random pairs)",
+                  op_sym[op], SWEEP);
+        prop_init(&opp[op].justified,
+                  "rat: a%sb EOVERFLOW leaves r unchanged and only when the exact result "
+                  "does not fit%s",
+                  op_sym[op],
+                  op <= OP_SUB ? " or an intermediate of Knuth's method does" : "");
+        prop_init(&opp[op].nocause,
+                  "rat: a%sb succeeds whenever the exact result fits%s (every 4th of %ld "
+                  "random pairs)",
+                  op_sym[op], op <= OP_SUB ? " and no intermediate overflows" : "", SWEEP);
+        prop_init(&p_alias[op],
+                  "rat: a%sb aliasing r==a, r==b, r==a==b matches the unaliased result (%ld "
+                  "random pairs)",
+                  op_sym[op], SWEEP);
+    }
+    prop_init(&p_add0, "rat: a+0 == 0+a == a, a-0 == a (%ld random values)", SWEEP);
+    prop_init(&p_mul1, "rat: a*1 == 1*a == a, a/1 == a (%ld random values)", SWEEP);
+    prop_init(&p_sub_self, "rat: a-a == 0 (%ld random values)", SWEEP);
+    prop_init(&p_add_neg, "rat: a+(-a) == 0 (%ld random values)", SWEEP);
+    prop_init(&p_inv, "rat: 1/a never overflows and a*(1/a) == 1 (%ld random values)", SWEEP);
+    prop_init(&p_divmul, "rat: (a/b)*b == a whenever a/b succeeds (%ld random pairs)", SWEEP);
+    prop_init(&p_div_self, "rat: a/a == 1, 0/a == 0, a*0 == 0, a/0 is PTP_EUSAGE (%ld random "
+                           "values)",
+              SWEEP);
+    prop_init(&p_zero, "rat: 0 results are exactly 0/1 (%ld random values)", SWEEP);
+    prop_init(&p_sub_anti, "rat: a-b == -(b-a), same status (%ld random pairs)", SWEEP);
+    prop_init(&p_mul_strict, "rat: a*b and a/b report EOVERFLOW iff the exact result does not "
+                             "fit (every overflow and every 4th pair of %ld random pairs)",
+              SWEEP);
+
+    for (i = 0; i < SWEEP; i++) {
+        rat a, b, c, res[NOPS], t, u, v, w;
+        int st[NOPS], s1, s2, s3, s4, s5;
+        small_mode = i % 4 == 3; /* a quarter of the triples from at most 62-bit parts */
+        a = rnd_rat();
+        b = rnd_rat();
+        c = rnd_rat();
+        small_mode = 0;
+
+        for (op = 0; op < NOPS; op++) {
+            st[op] = run_op(op, &a, &b, &res[op]);
+            if (i % 4 == 0)
+                check_nocause(op, &a, &b, st[op]);
+        }
+        /* mul and div: overflow exactly when the canonical result does not fit. */
+        for (op = OP_MUL; op <= OP_DIV; op++) {
+            ref_result ref;
+            if (op == OP_DIV && b.num == 0)
+                continue;
+            if (st[op] != PTP_EOVERFLOW && i % 4)
+                continue;
+            ref = reference(op, &a, &b);
+            p_mul_strict.tried++;
+            if ((st[op] == PTP_EOVERFLOW) != !ref.fits)
+                prop_fail(&p_mul_strict, "%s %s %s: status %d but the result %s", S(&a),
+                          op_sym[op], S(&b), st[op],
+                          ref.fits ? "fits" : "does not fit");
+        }
+
+        /* aliasing */
+        for (op = 0; op < NOPS; op++) {
+            rat r2 = sentinel;
+            int sa, sb, sab, s0 = st[op], s2b;
+            p_alias[op].tried++;
+            t = a;
+            sa = ops[op](&t, &t, &b);
+            if (sa != s0 || !req(&t, s0 ? &a : &res[op]))
+                prop_fail(&p_alias[op], "r==a: %s %s %s gave %d, %s; unaliased %d, %s", S(&a),
+                          op_sym[op], S(&b), sa, S(&t), s0, S(&res[op]));
+            t = b;
+            sb = ops[op](&t, &a, &t);
+            if (sb != s0 || !req(&t, s0 ? &b : &res[op]))
+                prop_fail(&p_alias[op], "r==b: %s %s %s gave %d, %s; unaliased %d, %s", S(&a),
+                          op_sym[op], S(&b), sb, S(&t), s0, S(&res[op]));
+            s2b = ops[op](&r2, &a, &a);
+            t = a;
+            sab = ops[op](&t, &t, &t);
+            if (sab != s2b || !req(&t, s2b ? &a : &r2))
+                prop_fail(&p_alias[op], "r==a==b: %s %s %s gave %d, %s; unaliased %d, %s",
+                          S(&a), op_sym[op], S(&a), sab, S(&t), s2b, S(&r2));
+        }
+
+        /* commutativity */
+        p_comm_add.tried++;
+        s1 = rat_add(&t, &b, &a);
+        if (s1 != st[OP_ADD] || (s1 == PTP_OK && !req(&t, &res[OP_ADD])))
+            prop_fail(&p_comm_add, "a=%s b=%s: a+b %d %s, b+a %d %s", S(&a), S(&b),
+                      st[OP_ADD], S(&res[OP_ADD]), s1, S(&t));
+        p_comm_mul.tried++;
+        s1 = rat_mul(&t, &b, &a);
+        if (s1 != st[OP_MUL] || (s1 == PTP_OK && !req(&t, &res[OP_MUL])))
+            prop_fail(&p_comm_mul, "a=%s b=%s: a*b %d %s, b*a %d %s", S(&a), S(&b),
+                      st[OP_MUL], S(&res[OP_MUL]), s1, S(&t));
+
+        /* a-b == -(b-a) */
+        p_sub_anti.tried++;
+        s1 = rat_sub(&t, &b, &a);
+        rat_neg(&u, &t);
+        if (s1 != st[OP_SUB] || (s1 == PTP_OK && !req(&u, &res[OP_SUB])))
+            prop_fail(&p_sub_anti, "a=%s b=%s: a-b %d %s, b-a %d %s", S(&a), S(&b),
+                      st[OP_SUB], S(&res[OP_SUB]), s1, S(&t));
+
+        /* associativity */
+        s1 = st[OP_ADD];
+        s2 = s1 ? s1 : rat_add(&t, &res[OP_ADD], &c);
+        s3 = rat_add(&u, &b, &c);
+        s4 = s3 ? s3 : rat_add(&v, &a, &u);
+        if (!s2 && !s4) {
+            p_assoc_add.tried++;
+            if (!req(&t, &v))
+                prop_fail(&p_assoc_add, "a=%s b=%s c=%s: (a+b)+c = %s, a+(b+c) = %s", S(&a),
+                          S(&b), S(&c), S(&t), S(&v));
+        }
+        s1 = st[OP_MUL];
+        s2 = s1 ? s1 : rat_mul(&t, &res[OP_MUL], &c);
+        s3 = rat_mul(&u, &b, &c);
+        s4 = s3 ? s3 : rat_mul(&v, &a, &u);
+        if (!s2 && !s4) {
+            p_assoc_mul.tried++;
+            if (!req(&t, &v))
+                prop_fail(&p_assoc_mul, "a=%s b=%s c=%s: (a*b)*c = %s, a*(b*c) = %s", S(&a),
+                          S(&b), S(&c), S(&t), S(&v));
+        } else if ((!s1 && !s3) && (!s2 != !s4)) {
+            /* both inner products fit, so each side's outer product is the whole exact
+             * product: one side cannot overflow while the other succeeds. */
+            p_assoc_mul.tried++;
+            prop_fail(&p_assoc_mul, "a=%s b=%s c=%s: (a*b)*c %d %s, a*(b*c) %d %s", S(&a),
+                      S(&b), S(&c), s2, S(&t), s4, S(&v));
+        }
+
+        /* distributivity */
+        s1 = rat_add(&t, &b, &c);
+        s2 = s1 ? s1 : rat_mul(&u, &a, &t);
+        s3 = rat_mul(&v, &a, &b);
+        s4 = s3 ? s3 : rat_mul(&w, &a, &c);
+        s5 = s4 ? s4 : rat_add(&w, &v, &w);
+        if (!s2 && !s5) {
+            p_distrib.tried++;
+            if (!req(&u, &w))
+                prop_fail(&p_distrib, "a=%s b=%s c=%s: a*(b+c) = %s, a*b+a*c = %s", S(&a),
+                          S(&b), S(&c), S(&u), S(&w));
+        }
+
+        /* identities */
+        p_add0.tried++;
+        if (rat_add(&t, &a, &zero) || !req(&t, &a) || rat_add(&u, &zero, &a) || !req(&u, &a) ||
+            rat_sub(&v, &a, &zero) || !req(&v, &a))
+            prop_fail(&p_add0, "a=%s: a+0 = %s, 0+a = %s, a-0 = %s", S(&a), S(&t), S(&u),
+                      S(&v));
+        p_mul1.tried++;
+        if (rat_mul(&t, &a, &one) || !req(&t, &a) || rat_mul(&u, &one, &a) || !req(&u, &a) ||
+            rat_div(&v, &a, &one) || !req(&v, &a))
+            prop_fail(&p_mul1, "a=%s: a*1 = %s, 1*a = %s, a/1 = %s", S(&a), S(&t), S(&u),
+                      S(&v));
+        p_sub_self.tried++;
+        t = sentinel;
+        if (rat_sub(&t, &a, &a) || !req(&t, &zero))
+            prop_fail(&p_sub_self, "a=%s: a-a = %s", S(&a), S(&t));
+        p_add_neg.tried++;
+        rat_neg(&u, &a);
+        t = sentinel;
+        if (rat_add(&t, &a, &u) || !req(&t, &zero))
+            prop_fail(&p_add_neg, "a=%s: a+(-a) = %s", S(&a), S(&t));
+        if (a.num) {
+            p_inv.tried++;
+            t = sentinel;
+            s1 = rat_div(&t, &one, &a);
+            u = sentinel;
+            s2 = s1 ? s1 : rat_mul(&u, &a, &t);
+            if (s1 || !my_canonical(&t) || s2 || !req(&u, &one))
+                prop_fail(&p_inv, "a=%s: 1/a %d %s, a*(1/a) %d %s", S(&a), s1, S(&t), s2,
+                          S(&u));
+        }
+        if (b.num && !st[OP_DIV]) {
+            p_divmul.tried++;
+            t = sentinel;
+            s1 = rat_mul(&t, &res[OP_DIV], &b);
+            if (s1 || !req(&t, &a))
+                prop_fail(&p_divmul, "a=%s b=%s: a/b = %s, (a/b)*b %d %s", S(&a), S(&b),
+                          S(&res[OP_DIV]), s1, S(&t));
+        }
+        p_div_self.tried++;
+        {
+            rat q = sentinel, z1 = sentinel, z2 = sentinel, e = sentinel;
+            int sq = a.num ? rat_div(&q, &a, &a) : PTP_OK;
+            int sz1 = a.num ? rat_div(&z1, &zero, &a) : PTP_OK;
+            int sz2 = rat_mul(&z2, &a, &zero), se = rat_div(&e, &a, &zero);
+            if (!a.num)
+                q = one, z1 = zero;
+            if (sq || !req(&q, &one) || sz1 || !req(&z1, &zero) || sz2 || !req(&z2, &zero) ||
+                se != PTP_EUSAGE || !req(&e, &sentinel))
+                prop_fail(&p_div_self, "a=%s: a/a %d %s, 0/a %d %s, a*0 %d %s, a/0 %d %s",
+                          S(&a), sq, S(&q), sz1, S(&z1), sz2, S(&z2), se, S(&e));
+        }
+        for (op = 0; op < NOPS; op++) {
+            if (st[op] || res[op].num)
+                continue;
+            p_zero.tried++;
+            if (res[op].den != 1)
+                prop_fail(&p_zero, "%s %s %s = %s", S(&a), op_sym[op], S(&b), S(&res[op]));
+        }
+    }
+
+    for (op = 0; op < NOPS; op++) {
+        prop_report(&opp[op].exact);
+        prop_report(&opp[op].canon);
+        prop_report(&opp[op].justified);
+        prop_report(&opp[op].nocause);
+        prop_report(&p_alias[op]);
+        printf("# a%sb: %ld successes, %ld overflows (%ld of them although the exact result "
+               "fits)\n",
+               op_sym[op], opp[op].canon.tried, opp[op].justified.tried, spurious[op]);
+    }
+    prop_report(&p_mul_strict);
+    prop_report(&p_comm_add);
+    prop_report(&p_comm_mul);
+    prop_report(&p_sub_anti);
+    prop_report(&p_assoc_add);
+    prop_report(&p_assoc_mul);
+    prop_report(&p_distrib);
+    printf("# associativity of + checked on %ld triples, of * on %ld, distributivity on %ld\n",
+           p_assoc_add.tried, p_assoc_mul.tried, p_distrib.tried);
+    prop_report(&p_add0);
+    prop_report(&p_mul1);
+    prop_report(&p_sub_self);
+    prop_report(&p_add_neg);
+    prop_report(&p_inv);
+    prop_report(&p_divmul);
+    prop_report(&p_div_self);
+    prop_report(&p_zero);
+}
+
+/* ---- constructed overflows and boundary cases ---- */
+
+#define MINI (-MAXI - 1)
+#define P2(k) ((ptp_i128)1 << (k))
+
+typedef struct {
+    int op;
+    rat a, b;
+    int want;   /* expected status */
+    rat result; /* expected value when want == PTP_OK */
+    const char *why;
+} fixed_case;
+
+static void explicit_cases(void)
+{
+    const fixed_case cases[] = {
+        {OP_MUL, {P2(100), 1}, {P2(100), 1}, PTP_EOVERFLOW, {0, 1}, "2^100 * 2^100"},
+        {OP_MUL, {1, P2(100)}, {1, P2(100)}, PTP_EOVERFLOW, {0, 1}, "2^-100 * 2^-100"},
+        {OP_DIV, {P2(100), 1}, {1, P2(100)}, PTP_EOVERFLOW, {0, 1}, "2^100 / 2^-100"},
+        {OP_DIV, {1, P2(100)}, {P2(100), 1}, PTP_EOVERFLOW, {0, 1}, "2^-100 / 2^100"},
+        {OP_ADD, {1, P2(70) + 1}, {1, P2(70) - 1}, PTP_EOVERFLOW, {0, 1},
+         "1/(2^70+1) + 1/(2^70-1)"},
+        {OP_SUB, {1, P2(70) + 1}, {1, P2(70) - 1}, PTP_EOVERFLOW, {0, 1},
+         "1/(2^70+1) - 1/(2^70-1)"},
+        {OP_ADD, {MAXI, 1}, {1, 1}, PTP_EOVERFLOW, {0, 1}, "(2^127-1) + 1"},
+        {OP_SUB, {-MAXI, 1}, {1, 1}, PTP_EOVERFLOW, {0, 1}, "-(2^127-1) - 1 = -2^127"},
+        {OP_ADD, {-P2(126), 1}, {-P2(126), 1}, PTP_EOVERFLOW, {0, 1}, "-2^126 + -2^126"},
+        {OP_MUL, {-P2(126), 1}, {2, 1}, PTP_EOVERFLOW, {0, 1}, "-2^126 * 2 = -2^127"},
+        {OP_DIV, {-P2(126), 1}, {1, 2}, PTP_EOVERFLOW, {0, 1}, "-2^126 / (1/2) = -2^127"},
+        {OP_ADD, {P2(126), 1}, {P2(126), 1}, PTP_EOVERFLOW, {0, 1}, "2^126 + 2^126"},
+        {OP_MUL, {MAXI, 1}, {2, 1}, PTP_EOVERFLOW, {0, 1}, "(2^127-1) * 2"},
+        {OP_MUL, {MAXI, 1}, {-MAXI, 1}, PTP_EOVERFLOW, {0, 1}, "(2^127-1) * -(2^127-1)"},
+        {OP_DIV, {MAXI, 1}, {1, 2}, PTP_EOVERFLOW, {0, 1}, "(2^127-1) / (1/2)"},
+        {OP_MUL, {1, MAXI}, {1, 2}, PTP_EOVERFLOW, {0, 1}, "1/(2^127-1) * 1/2"},
+        {OP_SUB, {1, MAXI}, {1, 2}, PTP_EOVERFLOW, {0, 1}, "1/(2^127-1) - 1/2"},
+        {OP_ADD, {P2(126), 3}, {P2(126), 3}, PTP_EOVERFLOW, {0, 1}, "2^126/3 + 2^126/3"},
+        {OP_DIV, {1, 1}, {0, 1}, PTP_EUSAGE, {0, 1}, "1 / 0"},
+        {OP_DIV, {0, 1}, {0, 1}, PTP_EUSAGE, {0, 1}, "0 / 0"},
+        {OP_ADD, {MAXI, 1}, {-MAXI, 1}, PTP_OK, {0, 1}, "(2^127-1) + -(2^127-1)"},
+        {OP_ADD, {MAXI - 1, 1}, {1, 1}, PTP_OK, {MAXI, 1}, "(2^127-2) + 1"},
+        {OP_SUB, {-MAXI + 1, 1}, {1, 1}, PTP_OK, {-MAXI, 1}, "-(2^127-2) - 1"},
+        {OP_ADD, {-P2(126), 1}, {-P2(126) + 1, 1}, PTP_OK, {-MAXI, 1}, "-2^126 + -(2^126-1)"},
+        {OP_MUL, {MAXI, 1}, {-1, 1}, PTP_OK, {-MAXI, 1}, "(2^127-1) * -1"},
+        {OP_DIV, {MAXI, 1}, {MAXI, 1}, PTP_OK, {1, 1}, "(2^127-1) / (2^127-1)"},
+        {OP_DIV, {1, MAXI}, {-1, MAXI}, PTP_OK, {-1, 1}, "1/(2^127-1) / -1/(2^127-1)"},
+        {OP_MUL, {P2(100), 3}, {3, P2(100)}, PTP_OK, {1, 1}, "2^100/3 * 3/2^100"},
+        {OP_MUL, {P2(100), 1}, {1, P2(100)}, PTP_OK, {1, 1}, "2^100 * 2^-100"},
+        {OP_MUL, {-P2(63), 1}, {P2(63), 1}, PTP_OK, {-P2(126), 1}, "-2^63 * 2^63"},
+        {OP_ADD, {1, MAXI}, {1, MAXI}, PTP_OK, {2, MAXI}, "1/(2^127-1) + 1/(2^127-1)"},
+        {OP_ADD, {1, 6}, {1, 10}, PTP_OK, {4, 15}, "1/6 + 1/10 (Knuth's g2 > 1)"},
+        {OP_ADD, {1, 2}, {1, 2}, PTP_OK, {1, 1}, "1/2 + 1/2"},
+        {OP_SUB, {P2(120) + 1, P2(64)}, {1, P2(64)}, PTP_OK, {P2(56), 1},
+         "(2^120+1)/2^64 - 1/2^64"},
+        {OP_MUL, {MAXI, P2(126)}, {P2(126), MAXI}, PTP_OK, {1, 1},
+         "(2^127-1)/2^126 * 2^126/(2^127-1)"},
+    };
+    prop p;
+    size_t i;
+    prop_init(&p, "rat: %zu constructed overflow and boundary cases give the expected status "
+                  "and value, r unchanged on failure",
+              sizeof cases / sizeof cases[0]);
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const fixed_case *c = &cases[i];
+        rat r = sentinel;
+        int st;
+        p.tried++;
+        if (!my_canonical(&c->a) || !my_canonical(&c->b)) {
+            prop_fail(&p, "test case %s has a non-canonical operand", c->why);
+            continue;
+        }
+        st = ops[c->op](&r, &c->a, &c->b);
+        if (st != c->want || (st == PTP_OK && !req(&r, &c->result)) ||
+            (st != PTP_OK && !req(&r, &sentinel)))
+            prop_fail(&p, "%s: status %d, r = %s (want %d%s%s)", c->why, st, S(&r), c->want,
+                      c->want == PTP_OK ? ", " : ", r unchanged",
+                      c->want == PTP_OK ? S(&c->result) : "");
+    }
+    prop_report(&p);
+
+    /* random a/p + b/q with coprime p, q of 65..100 bits: the denominator p*q cannot fit */
+    prop_init(&p, "rat: a/p + b/q, a/p - b/q, (a/p)*(b/q) with coprime p, q of 65..100 bits "
+                  "overflow, r unchanged (10000 random)");
+    for (i = 0; i < 10000; i++) {
+        ptp_u128 pp, qq, an, bnum;
+        rat a, b, r;
+        int op;
+        do {
+            pp = rnd_bits(65 + (int)rnd_below(36)) | ((ptp_u128)1 << 64) | 1;
+            qq = rnd_bits(65 + (int)rnd_below(36)) | ((ptp_u128)1 << 64);
+        } while (my_gcd(pp, qq) != 1);
+        /* a coprime to p and q, b coprime to q and p: nothing cancels even in the product */
+        do
+            an = rnd_bits(1 + (int)rnd_below(100)) | 1;
+        while (my_gcd(an, pp) != 1 || my_gcd(an, qq) != 1);
+        do
+            bnum = rnd_bits(1 + (int)rnd_below(100)) | 1;
+        while (my_gcd(bnum, qq) != 1 || my_gcd(bnum, pp) != 1);
+        a = mk(rnd() & 1 ? -(ptp_i128)an : (ptp_i128)an, (ptp_i128)pp);
+        b = mk(rnd() & 1 ? -(ptp_i128)bnum : (ptp_i128)bnum, (ptp_i128)qq);
+        for (op = OP_ADD; op <= OP_MUL; op++) {
+            int st;
+            r = sentinel;
+            p.tried++;
+            st = ops[op](&r, &a, &b);
+            if (st != PTP_EOVERFLOW || !req(&r, &sentinel))
+                prop_fail(&p, "%s %s %s: status %d, r = %s", S(&a), op_sym[op], S(&b), st,
+                          S(&r));
+        }
+    }
+    prop_report(&p);
+
+    {
+        /* A known limitation, reported rather than checked: Knuth's intermediate
+         * a.num*(b.den/g) overflows although the difference is 1/6. */
+        rat a = mk(P2(126) + 1, 2), b = mk(3 * P2(125) + 1, 3), r = sentinel;
+        int st = rat_sub(&r, &a, &b);
+        printf("# note: (2^126+1)/2 - (3*2^125+1)/3 = 1/6 exactly; rat_sub gives status %d, "
+               "r = %s\n",
+               st, S(&r));
+    }
+}
+
+/* ---- rat_set_si, rat_set_frac, rat_is_canonical ---- */
+
+static void construction(void)
+{
+    prop p;
+    long i;
+    rat r;
+    static const int64_t si[] = {0, 1, -1, INT64_MAX, INT64_MIN, INT64_MIN + 1, 42, -42};
+
+    prop_init(&p, "rat: rat_set_si(n) == n/1, canonical (%ld random int64 and 8 edge values)",
+              PAIRS);
+    for (i = 0; i < PAIRS + 8; i++) {
+        int64_t n = i < 8 ? si[i] : (int64_t)rnd();
+        p.tried++;
+        rat_set_si(&r, n);
+        if (r.num != n || r.den != 1 || !my_canonical(&r))
+            prop_fail(&p, "rat_set_si(%lld) = %s", (long long)n, S(&r));
+    }
+    prop_report(&p);
+
+    prop_init(&p, "rat: rat_set_frac reduces, normalizes signs and zero (%ld random num/den, "
+                  "both signs, common factors)",
+              PAIRS);
+    for (i = 0; i < PAIRS; i++) {
+        ptp_u128 n = rnd_mag(), d = rnd_mag(), k = 1 + rnd_below(i % 3 ? 10 : 1000000), g;
+        int nneg = (int)(rnd() & 1), dneg = (int)(rnd() & 1), st;
+        ptp_i128 sn, sd;
+        rat want;
+        if (d == 0)
+            d = 1;
+        if (n <= (ptp_u128)MAXI / k && d <= (ptp_u128)MAXI / k) {
+            n *= k;
+            d *= k;
+        }
+        sn = nneg ? -(ptp_i128)n : (ptp_i128)n;
+        sd = dneg ? -(ptp_i128)d : (ptp_i128)d;
+        if (n == 0) {
+            want = mk(0, 1);
+        } else {
+            g = my_gcd(n, d);
+            want = mk((ptp_i128)(n / g), (ptp_i128)(d / g));
+            if (nneg != dneg)
+                want.num = -want.num;
+        }
+        r = sentinel;
+        p.tried++;
+        st = rat_set_frac(&r, sn, sd);
+        if (st != PTP_OK || !req(&r, &want) || !my_canonical(&r))
+            prop_fail(&p, "rat_set_frac(%s, %s): status %d, %s (want %s)", SI(sn), SI(sd), st,
+                      S(&r), S(&want));
+    }
+    prop_report(&p);
+
+    {
+        static const struct {
+            ptp_i128 num, den;
+            int want;
+            rat result;
+        } fc[] = {
+            {0, 0, PTP_EUSAGE, {0, 1}},
+            {1, 0, PTP_EUSAGE, {0, 1}},
+            {-5, 0, PTP_EUSAGE, {0, 1}},
+            {MINI, 0, PTP_EUSAGE, {0, 1}},
+            {MINI, 1, PTP_EOVERFLOW, {0, 1}},
+            {MINI, -1, PTP_EOVERFLOW, {0, 1}},
+            {1, MINI, PTP_EOVERFLOW, {0, 1}},
+            {MINI, 3, PTP_EOVERFLOW, {0, 1}},
+            {MINI, 2, PTP_OK, {-P2(126), 1}},
+            {MINI, -2, PTP_OK, {P2(126), 1}},
+            {MINI, MINI, PTP_OK, {1, 1}},
+            {P2(126), MINI, PTP_OK, {-1, 2}},
+            {0, MINI, PTP_OK, {0, 1}},
+            {0, -7, PTP_OK, {0, 1}},
+            {MAXI, -1, PTP_OK, {-MAXI, 1}},
+            {-MAXI, -MAXI, PTP_OK, {1, 1}},
+            {-6, -4, PTP_OK, {3, 2}},
+            {6, -4, PTP_OK, {-3, 2}},
+            {-6, 4, PTP_OK, {-3, 2}},
+        };
+        size_t j;
+        prop_init(&p, "rat: rat_set_frac edge cases (den 0 is PTP_EUSAGE, -2^127 only when it "
+                      "reduces away), r unchanged on failure");
+        for (j = 0; j < sizeof fc / sizeof fc[0]; j++) {
+            int st;
+            r = sentinel;
+            p.tried++;
+            st = rat_set_frac(&r, fc[j].num, fc[j].den);
+            if (st != fc[j].want || (st == PTP_OK && !req(&r, &fc[j].result)) ||
+                (st != PTP_OK && !req(&r, &sentinel)))
+                prop_fail(&p, "rat_set_frac(%s, %s): status %d, r = %s (want %d, %s)",
+                          SI(fc[j].num), SI(fc[j].den), st, S(&r), fc[j].want,
+                          fc[j].want ? "r unchanged" : S(&fc[j].result));
+        }
+        prop_report(&p);
+    }
+
+    {
+        static const rat bad[] = {{1, 0},       {0, 0},     {1, -2},   {-1, -2},
+                                  {3, -1},      {2, 4},     {6, 9},    {0, 2},
+                                  {0, -1},      {MINI, 1},  {MINI, 3}, {MAXI, MAXI},
+                                  {-P2(64), 2}, {P2(126), P2(100)}};
+        static const rat good[] = {{0, 1},    {1, 1},        {-1, 1},    {MAXI, 1},
+                                   {-MAXI, 1}, {1, MAXI},    {-1, MAXI}, {-MAXI, MAXI - 1},
+                                   {3, 2},     {-P2(126), 1}, {1, P2(126)}};
+        size_t j;
+        prop_init(&p, "rat: rat_is_canonical rejects %zu hand-made non-canonical values, "
+                      "accepts %zu canonical ones, agrees with the definition on %ld random "
+                      "pairs",
+                  sizeof bad / sizeof bad[0], sizeof good / sizeof good[0], PAIRS);
+        for (j = 0; j < sizeof bad / sizeof bad[0]; j++) {
+            p.tried++;
+            if (rat_is_canonical(&bad[j]))
+                prop_fail(&p, "accepts %s/%s", SI(bad[j].num), SI(bad[j].den));
+        }
+        for (j = 0; j < sizeof good / sizeof good[0]; j++) {
+            p.tried++;
+            if (!rat_is_canonical(&good[j]))
+                prop_fail(&p, "rejects %s", S(&good[j]));
+        }
+        for (i = 0; i < PAIRS; i++) {
+            ptp_u128 n = rnd_mag(), d = i % 2 ? rnd_mag() : 1, k = 1 + rnd_below(4);
+            rat x;
+            if (n <= (ptp_u128)MAXI / k && d <= (ptp_u128)MAXI / k) {
+                n *= k;
+                d *= k;
+            }
+            x.num = rnd() & 1 ? -(ptp_i128)n : (ptp_i128)n;
+            x.den = rnd_below(5) ? (ptp_i128)d : -(ptp_i128)d;
+            if (i % 1000 == 7)
+                x.num = MINI;
+            p.tried++;
+            if (!rat_is_canonical(&x) != !my_canonical(&x))
+                prop_fail(&p, "rat_is_canonical(%s/%s) = %d", SI(x.num), SI(x.den),
+                          rat_is_canonical(&x));
+        }
+        prop_report(&p);
+    }
+}
+
+/* ---- strings ---- */
+
+static void strings(void)
+{
+    prop p;
+    long i;
+    char buf[RAT_STRLEN + 16], mine[100];
+    prop_init(&p, "rat: rat_get_str matches an independent formatter and rat_set_str reads it "
+                  "back (%ld random values)",
+              PAIRS);
+    static const ptp_i128 edge[] = {
+        0, 1, 9, 10, 99, 100, (ptp_i128)1 << 63, ((ptp_i128)1 << 64) - 1, (ptp_i128)1 << 64,
+        ((ptp_i128)1 << 64) + 1, ((ptp_i128)1 << 64) + 10, (ptp_i128)9999999999999999999u,
+        (ptp_i128)10000000000000000000u, (ptp_i128)10000000000000000000u * 10 - 1,
+        (ptp_i128)10000000000000000000u * 10, (ptp_i128)10000000000000000000u * 10000000000,
+        MAXI - 1, MAXI};
+    const long nedge = (long)(sizeof edge / sizeof edge[0]);
+    for (i = 0; i < PAIRS; i++) {
+        rat a = rnd_rat(), r = sentinel;
+        int st;
+        if (i == 0)
+            a = mk(-MAXI, MAXI - 1); /* the longest string */
+        else if (i <= 2 * nedge) /* decimal boundaries, numerator then denominator */
+            a = i <= nedge ? mk(i % 2 ? edge[i - 1] : -edge[i - 1], 1)
+                           : mk(i % 2 ? 1 : -1, edge[i - nedge - 1] ? edge[i - nedge - 1] : 1);
+        memset(buf, 'x', sizeof buf);
+        rat_get_str(buf, &a);
+        my_rat_str(mine, &a);
+        p.tried++;
+        if (strlen(buf) >= RAT_STRLEN || strcmp(buf, mine)) {
+            prop_fail(&p, "rat_get_str(%s) = \"%.90s\"", mine, buf);
+            continue;
+        }
+        st = rat_set_str(&r, buf);
+        if (st || !req(&r, &a) || !my_canonical(&r))
+            prop_fail(&p, "rat_set_str(\"%s\"): status %d, %s", buf, st, S(&r));
+    }
+    prop_report(&p);
+
+    prop_init(&p, "rat: rat_set_str canonicalizes \"nk/dk\" to n/d (%ld random values and "
+                  "factors)",
+              PAIRS / 4);
+    for (i = 0; i < PAIRS / 4; i++) {
+        rat a = rnd_rat(), r = sentinel;
+        ptp_u128 k = 1 + rnd_below(i % 2 ? 100 : 1000000000);
+        char nbuf[48], dbuf[48];
+        int st;
+        if (uabs(a.num) > (ptp_u128)MAXI / k || (ptp_u128)a.den > (ptp_u128)MAXI / k)
+            k = 1;
+        my_i128_str(nbuf, a.num * (ptp_i128)k);
+        my_i128_str(dbuf, a.den * (ptp_i128)k);
+        snprintf(buf, sizeof buf, "%s/%s", nbuf, dbuf);
+        p.tried++;
+        st = rat_set_str(&r, buf);
+        if (st || !req(&r, &a))
+            prop_fail(&p, "rat_set_str(\"%s\"): status %d, %s (want %s)", buf, st, S(&r),
+                      S(&a));
+    }
+    prop_report(&p);
+
+    {
+        static const struct {
+            const char *s;
+            int want;
+            rat result;
+        } sc[] = {
+            {"", PTP_EUSAGE, {0, 1}},
+            {"-", PTP_EUSAGE, {0, 1}},
+            {"1/", PTP_EUSAGE, {0, 1}},
+            {"/2", PTP_EUSAGE, {0, 1}},
+            {"1/0", PTP_EUSAGE, {0, 1}},
+            {"0/0", PTP_EUSAGE, {0, 1}},
+            {"1/-2", PTP_EUSAGE, {0, 1}},
+            {"+3", PTP_EUSAGE, {0, 1}},
+            {"1.5", PTP_EUSAGE, {0, 1}},
+            {"abc", PTP_EUSAGE, {0, 1}},
+            {"1/2/3", PTP_EUSAGE, {0, 1}},
+            {" 1", PTP_EUSAGE, {0, 1}},
+            {"1 ", PTP_EUSAGE, {0, 1}},
+            {"--1", PTP_EUSAGE, {0, 1}},
+            {"0x10", PTP_EUSAGE, {0, 1}},
+            {"1e3", PTP_EUSAGE, {0, 1}},
+            {"-/2", PTP_EUSAGE, {0, 1}},
+            {"340282366920938463463374607431768211456", PTP_EOVERFLOW, {0, 1}},
+            {"170141183460469231731687303715884105728", PTP_EOVERFLOW, {0, 1}},
+            {"-170141183460469231731687303715884105728", PTP_EOVERFLOW, {0, 1}},
+            {"1/170141183460469231731687303715884105728", PTP_EOVERFLOW, {0, 1}},
+            {"1/340282366920938463463374607431768211457", PTP_EOVERFLOW, {0, 1}},
+            {"123456789012345678901234567890123456789012345678901234567890", PTP_EOVERFLOW,
+             {0, 1}},
+            {"0", PTP_OK, {0, 1}},
+            {"-0", PTP_OK, {0, 1}},
+            {"0/7", PTP_OK, {0, 1}},
+            {"-0/5", PTP_OK, {0, 1}},
+            {"00012/0008", PTP_OK, {3, 2}},
+            {"-6/4", PTP_OK, {-3, 2}},
+            {"170141183460469231731687303715884105727", PTP_OK, {MAXI, 1}},
+            {"-170141183460469231731687303715884105727", PTP_OK, {-MAXI, 1}},
+            {"1/170141183460469231731687303715884105727", PTP_OK, {1, MAXI}},
+            {"-170141183460469231731687303715884105727/170141183460469231731687303715884105727",
+             PTP_OK,
+             {-1, 1}},
+            {"85070591730234615865843651857942052864/170141183460469231731687303715884105727",
+             PTP_OK,
+             {P2(126), MAXI}},
+        };
+        size_t j;
+        prop_init(&p, "rat: rat_set_str on %zu fixed strings: malformed is PTP_EUSAGE, too "
+                      "large is PTP_EOVERFLOW, r unchanged on failure",
+                  sizeof sc / sizeof sc[0]);
+        for (j = 0; j < sizeof sc / sizeof sc[0]; j++) {
+            rat r = sentinel;
+            int st = rat_set_str(&r, sc[j].s);
+            p.tried++;
+            if (st != sc[j].want || (st == PTP_OK && !req(&r, &sc[j].result)) ||
+                (st != PTP_OK && !req(&r, &sentinel)))
+                prop_fail(&p, "rat_set_str(\"%s\"): status %d, r = %s (want %d, %s)", sc[j].s,
+                          st, S(&r), sc[j].want, sc[j].want ? "r unchanged" : S(&sc[j].result));
+        }
+        prop_report(&p);
+    }
+}
+
+/* ---- sign, equality, negation, conversion to double ---- */
+
+static void misc(void)
+{
+    prop ps, pe, pn, pd;
+    long i;
+    prop_init(&ps, "rat: rat_sgn is the sign of the numerator (%ld random values)", PAIRS);
+    prop_init(&pe, "rat: rat_equal(a, b) iff same num and den; a == copy; a == -a iff a == 0 "
+                   "(%ld random pairs)",
+              PAIRS);
+    prop_init(&pn, "rat: rat_neg is canonical, an involution, flips the sign, may alias (%ld "
+                   "random values)",
+              PAIRS);
+    prop_init(&pd, "rat: rat_get_d within 3 ulp of num/den (%ld random values)", PAIRS);
+    for (i = 0; i < PAIRS; i++) {
+        rat a = rnd_rat(), b = i % 3 ? rnd_rat() : a, n, nn, t;
+        int sg = rat_sgn(&a);
+        long double ref = (long double)a.num / (long double)a.den, d = rat_get_d(&a);
+        ps.tried++;
+        if (sg != (a.num > 0) - (a.num < 0))
+            prop_fail(&ps, "rat_sgn(%s) = %d", S(&a), sg);
+        pe.tried++;
+        t = a;
+        rat_neg(&n, &a);
+        if (!rat_equal(&a, &t) || !rat_equal(&a, &b) != !req(&a, &b) ||
+            !rat_equal(&a, &n) != !!a.num)
+            prop_fail(&pe, "a=%s b=%s: equal(a,a) %d, equal(a,b) %d, equal(a,-a) %d", S(&a),
+                      S(&b), rat_equal(&a, &t), rat_equal(&a, &b), rat_equal(&a, &n));
+        pn.tried++;
+        rat_neg(&nn, &n);
+        t = a;
+        rat_neg(&t, &t);
+        if (!my_canonical(&n) || !req(&nn, &a) || rat_sgn(&n) != -sg || !req(&t, &n) ||
+            n.den != a.den)
+            prop_fail(&pn, "a=%s: -a = %s, -(-a) = %s, aliased -a = %s", S(&a), S(&n), S(&nn),
+                      S(&t));
+        pd.tried++;
+        if ((d - ref < 0 ? ref - d : d - ref) > 3 * 2.220446049250313e-16L * (ref < 0 ? -ref : ref))
+            prop_fail(&pd, "rat_get_d(%s) = %.17g", S(&a), (double)d);
+    }
+    prop_report(&ps);
+    prop_report(&pe);
+    prop_report(&pn);
+    prop_report(&pd);
+}
+
+int main(void)
+{
+    construction();
+    sweep();
+    explicit_cases();
+    strings();
+    misc();
+    return check_exit();
+}
