@@ -6,7 +6,8 @@
 #include <string.h>
 
 const char cli_usage[] =
-    "usage: ptpgen --degree N|NxM [--target json|table|stats] [-o FILE]\n"
+    "usage: ptpgen --degree N|NxM [--target json|table|stats] [--threads-per-patch P]\n"
+    "              [--patches-per-block Q] [-o FILE]\n"
     "       ptpgen --help | --version\n"
     "\n"
     "Derives the exact control planes of the parametric tangent plane\n"
@@ -16,6 +17,11 @@ const char cli_usage[] =
     "  --target T       json (default): the exact terms, ptpgen-planes/1\n"
     "                   table: a C header in the paper's idx/wgt format\n"
     "                   stats: the term count of every plane\n"
+    "  --threads-per-patch P\n"
+    "                   threads that share one patch, 1..1024, at most the number of\n"
+    "                   planes (default 16 for 3x3; see README for other degrees)\n"
+    "  --patches-per-block Q\n"
+    "                   patches per thread block (default 128/P, at least 1)\n"
     "  -o, --output F   write to F (atomically) instead of standard output\n"
     "  -h, --help       show this help\n"
     "  --version        show the version\n"
@@ -68,6 +74,20 @@ static int parse_degree(cli_options *o, const char *arg, ptp_error *err)
     return PTP_OK;
 }
 
+/* Parses a thread count: decimal digits only; values past 10^6 are kept as 10^6 + 1 so that
+ * the scheduler's range check names the limit. Zero is left to that check too. */
+static int parse_count(int *v, const char *opt, const char *arg, ptp_error *err)
+{
+    const char *p = arg;
+    long x = 0;
+    for (; *p >= '0' && *p <= '9'; p++)
+        x = x > 1000000 ? 1000001 : x * 10 + (*p - '0');
+    if (p == arg || *p != '\0')
+        return ptp_fail(err, PTP_EUSAGE, "%s '%s': expected a whole number", opt, arg);
+    *v = (int)x;
+    return PTP_OK;
+}
+
 static int parse_target(cli_options *o, const char *arg, ptp_error *err)
 {
     static const char *const names[] = {"json", "table", "stats"};
@@ -109,6 +129,7 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
     int i, st = PTP_OK;
     memset(o, 0, sizeof *o);
     o->target = CLI_JSON;
+    o->threads = o->patches = -1;
     for (i = 1; i < argc && !st; i++) {
         const char *a = argv[i], *v = NULL;
         if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0)
@@ -119,6 +140,10 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
             st = st ? st : parse_degree(o, v, err);
         else if (take(&v, &st, "--target", argc, argv, &i, err))
             st = st ? st : parse_target(o, v, err);
+        else if (take(&v, &st, "--threads-per-patch", argc, argv, &i, err))
+            st = st ? st : parse_count(&o->threads, "--threads-per-patch", v, err);
+        else if (take(&v, &st, "--patches-per-block", argc, argv, &i, err))
+            st = st ? st : parse_count(&o->patches, "--patches-per-block", v, err);
         else if (take(&v, &st, "--output", argc, argv, &i, err) ||
                  take(&v, &st, "-o", argc, argv, &i, err))
             o->output = v;
@@ -131,8 +156,16 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         return st;
     if (!o->n)
         return ptp_fail(err, PTP_EUSAGE, "missing --degree N or --degree NxM (see ptpgen --help)");
-    snprintf(o->command, sizeof o->command, "ptpgen --degree %dx%d --target %s", o->n, o->m,
-             targets[o->target]);
+    {
+        int n = snprintf(o->command, sizeof o->command, "ptpgen --degree %dx%d --target %s", o->n,
+                         o->m, targets[o->target]);
+        if (o->threads >= 0)
+            n += snprintf(o->command + n, sizeof o->command - (size_t)n,
+                          " --threads-per-patch %d", o->threads);
+        if (o->patches >= 0)
+            snprintf(o->command + n, sizeof o->command - (size_t)n, " --patches-per-block %d",
+                     o->patches);
+    }
     snprintf(o->prefix, sizeof o->prefix, "ptp_%dx%d_", o->n, o->m);
     return PTP_OK;
 }

@@ -11,6 +11,7 @@ typedef struct {
     int n, m;             /* bidegree; 0 until --degree is given */
     cli_target target;
     const char *output;   /* -o path, or NULL for stdout */
+    int threads, patches; /* --threads-per-patch, --patches-per-block; -1 when not given */
     int help, version;    /* --help or --version was given */
     char command[256];    /* the normalized command line, for banners */
     char prefix[64];      /* generated-name prefix, "ptp_<n>x<m>_" */

@@ -65,16 +65,25 @@ static int run(const cli_options *o, ptp_error *err)
         out_json, out_table, out_stats};
     out_info info;
     tp_table t;
+    sched s;
     sbuf b;
-    int st;
+    int st, P, Q;
     if ((st = tp_derive(&t, o->n, o->m, err)))
         return st;
+    P = o->threads >= 0 ? o->threads : sched_default_threads(&t);
+    Q = o->patches >= 0 ? o->patches : sched_default_patches(P);
+    if ((st = sched_build(&s, &t, P, Q, err))) {
+        tp_clear(&t);
+        return st;
+    }
     info.command = o->command;
     info.prefix = o->prefix;
+    info.sched = &s;
     sbuf_init(&b);
     if (!(st = render[o->target](&b, &t, &info, err)))
         st = write_output(o->output, &b, err);
     sbuf_clear(&b);
+    sched_clear(&s);
     tp_clear(&t);
     return st;
 }

@@ -4,12 +4,14 @@
 #define OUT_H
 
 #include "sbuf.h"
+#include "sched.h"
 #include "tplane.h"
 
 /* What every output names besides the table itself. */
 typedef struct {
     const char *command; /* the normalized command line that makes this output */
     const char *prefix;  /* identifier prefix of generated names, e.g. "ptp_3x3_" */
+    const sched *sched;  /* the schedule of the table's terms over a patch's threads */
 } out_info;
 
 /* The ptpgen-planes/1 JSON document of t. */

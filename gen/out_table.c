@@ -49,17 +49,70 @@ static char *float_literal(char *buf, const rat *w)
     return buf;
 }
 
+/* The rows of one idx/wgt/iwgt array set: the table's terms in order, or the schedule's slots. */
+typedef struct {
+    const tp_table *t;
+    const sched *s; /* NULL: the terms in table order */
+    long n;
+} rows;
+
+/* Row x as a term; a padding slot is {a plane of its own thread, 0, 0, 0} with weight 0. */
+static tp_term row_at(const rows *r, long x)
+{
+    tp_term pad;
+    if (!r->s)
+        return r->t->terms[x];
+    if (r->s->slot[x] >= 0)
+        return r->t->terms[r->s->slot[x]];
+    pad.plane = sched_padding_plane(r->s, (int)(x % r->s->threads));
+    pad.j = pad.k = pad.l = 0;
+    rat_set_si(&pad.w, 0);
+    return pad;
+}
+
+/* Writes NAMEidx, NAMEwgt and (itype given) NAMEiwgt for the rows, count macro COUNT. */
+static void put_arrays(sbuf *o, const rows *r, const char *name, const char *count,
+                       const char *itype, ptp_i128 D)
+{
+    char lit[48], w[RAT_STRLEN];
+    long x;
+    sbuf_printf(o, "\nstatic const unsigned short %sidx[%s][4] = {\n", name, count);
+    for (x = 0; x < r->n; x++) {
+        tp_term e = row_at(r, x);
+        sbuf_printf(o, "    {%d, %d, %d, %d},\n", e.plane, e.j, e.k, e.l);
+    }
+    sbuf_printf(o, "};\n\nstatic const float %swgt[%s] = {\n", name, count);
+    for (x = 0; x < r->n; x++) {
+        tp_term e = row_at(r, x);
+        float_literal(lit, &e.w);
+        sbuf_printf(o, "    %s,%*s/* %s */\n", lit, (int)(16 - strlen(lit)), "",
+                    rat_get_str(w, &e.w));
+    }
+    sbuf_puts(o, "};\n");
+    if (!itype)
+        return;
+    sbuf_printf(o, "\nstatic const %s %siwgt[%s] = {\n", itype, name, count);
+    for (x = 0; x < r->n; x++) {
+        tp_term e = row_at(r, x);
+        sbuf_printf(o, "    %s%s,\n", i128_to_str(w, e.w.num * (D / e.w.den)),
+                    itype[0] == 'l' ? "LL" : "");
+    }
+    sbuf_puts(o, "};\n");
+}
+
 int out_table(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    char up[64], lit[48], w[RAT_STRLEN], num[48];
+    char up[64], name[80], count[80], num[48];
+    const sched *s = info->sched;
     const char *itype = NULL;
+    rows plain, slots;
     ptp_i128 D;
     size_t i;
-    int have_den = common_den(&D, t) == PTP_OK;
+    int p;
     for (i = 0; info->prefix[i] && i + 1 < sizeof up; i++)
         up[i] = (char)toupper((unsigned char)info->prefix[i]);
     up[i] = '\0';
-    if (have_den)
+    if (common_den(&D, t) == PTP_OK)
         itype = int_type(t, D);
     sbuf_printf(o, "/* %stable.h: the control planes of the parametric tangent plane, bidegree %dx%d.\n",
                 info->prefix, t->n, t->m);
@@ -71,34 +124,37 @@ int out_table(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
                 " * cross4 as in Appendix A of Loop, Niessner and Eisenacher (2011).\n",
                 t->m + 1, t->pv + 1);
     if (itype)
-        sbuf_puts(o, " * Integer form: wgt[x] = iwgt[x] / DENOM exactly. */\n");
+        sbuf_puts(o, " * Integer form: wgt[x] = iwgt[x] / DENOM exactly.\n");
     else
-        sbuf_puts(o, " * No integer form: the common denominator or D*wgt needs more than 64 bits. */\n");
+        sbuf_puts(o, " * No integer form: the common denominator or D*wgt needs more than 64 bits.\n");
+    sbuf_printf(o,
+                " *\n * The schedule (sched_ arrays): %d threads per patch, %d patches per block, %d rounds.\n"
+                " * Thread tid runs for (x = tid; x < SLOTS; x += THREADS) over the sched_ arrays and\n"
+                " * only ever writes the planes p with owner[p] == tid: no atomics, no barriers. A\n"
+                " * padding slot is {a plane of its own thread, 0, 0, 0} with weight 0. */\n",
+                s->threads, s->patches, s->rounds);
     sbuf_printf(o, "#ifndef %sTABLE_H\n#define %sTABLE_H\n\n", up, up);
     sbuf_printf(o, "#define %sPOINTS %d\n#define %sPLANES %d\n#define %sTERMS %zu\n", up,
                 t->npoints, up, t->nplanes, up, t->nterms);
     if (itype)
         sbuf_printf(o, "#define %sDENOM %s\n", up, i128_to_str(num, D));
-    sbuf_printf(o, "\nstatic const unsigned short %sidx[%sTERMS][4] = {\n", info->prefix, up);
-    for (i = 0; i < t->nterms; i++)
-        sbuf_printf(o, "    {%d, %d, %d, %d},\n", t->terms[i].plane, t->terms[i].j, t->terms[i].k,
-                    t->terms[i].l);
-    sbuf_printf(o, "};\n\nstatic const float %swgt[%sTERMS] = {\n", info->prefix, up);
-    for (i = 0; i < t->nterms; i++) {
-        float_literal(lit, &t->terms[i].w);
-        sbuf_printf(o, "    %s,%*s/* %s */\n", lit, (int)(16 - strlen(lit)), "",
-                    rat_get_str(w, &t->terms[i].w));
-    }
-    sbuf_puts(o, "};\n");
-    if (itype) {
-        sbuf_printf(o, "\nstatic const %s %siwgt[%sTERMS] = {\n", itype, info->prefix, up);
-        for (i = 0; i < t->nterms; i++) {
-            const rat *x = &t->terms[i].w;
-            sbuf_printf(o, "    %s%s,\n", i128_to_str(num, x->num * (D / x->den)),
-                        itype[0] == 'l' ? "LL" : "");
-        }
-        sbuf_puts(o, "};\n");
-    }
+    sbuf_printf(o, "#define %sTHREADS %d\n#define %sPATCHES %d\n#define %sROUNDS %d\n", up,
+                s->threads, up, s->patches, up, s->rounds);
+    sbuf_printf(o, "#define %sSLOTS (%sROUNDS * %sTHREADS)\n", up, up, up);
+    plain.t = slots.t = t;
+    plain.s = NULL;
+    plain.n = (long)t->nterms;
+    slots.s = s;
+    slots.n = (long)s->rounds * s->threads;
+    snprintf(count, sizeof count, "%sTERMS", up);
+    put_arrays(o, &plain, info->prefix, count, itype, D);
+    sbuf_printf(o, "\nstatic const unsigned short %sowner[%sPLANES] = {", info->prefix, up);
+    for (p = 0; p < t->nplanes; p++)
+        sbuf_printf(o, "%s%d", p == 0 ? "\n    " : p % (t->pv + 1) ? ", " : ",\n    ", s->owner[p]);
+    sbuf_puts(o, "\n};\n");
+    snprintf(name, sizeof name, "%ssched_", info->prefix);
+    snprintf(count, sizeof count, "%sSLOTS", up);
+    put_arrays(o, &slots, name, count, itype, D);
     sbuf_printf(o, "\n#endif\n");
     return o->failed ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the table") : PTP_OK;
 }

@@ -163,13 +163,123 @@ done
 # Stats: the paper's matrix for bicubic.
 "$P" --degree 3 --target stats >"$tmp/s.txt"
 if grep -q '^ 5 10 17 21 21 17 10  5$' "$tmp/s.txt" && grep -q '^total 516$' "$tmp/s.txt" &&
-    [ "$(grep -c '^ *[0-9]' "$tmp/s.txt")" -eq 8 ]; then
-    ok "stats 3x3 prints the paper's 8x8 matrix and total 516"
+    [ "$(sed -n '/^terms per plane/,/^total/p' "$tmp/s.txt" | grep -c '^ *[0-9]')" -eq 8 ] &&
+    grep -q '^rounds R = 33, lower bound LB = 33' "$tmp/s.txt" &&
+    grep -q '^efficiency 516 / (R \* P) = 516 / 528 = 97.7%$' "$tmp/s.txt" &&
+    [ "$(sed -n '/^owning thread/,/^terms per thread/p' "$tmp/s.txt" | grep -c '^ *[0-9]')" -eq 8 ]; then
+    ok "stats 3x3 prints the paper's 8x8 matrix, total 516, the owner map, R = LB = 33 and the efficiency"
 else
     notok "stats 3x3" "$(cat "$tmp/s.txt")"
 fi
 "$P" --degree 2x4 --target stats | grep -q 'planes of bidegree 4x10' && ok "stats 2x4 names the plane bidegree 4x10" ||
     notok "stats 2x4" "plane bidegree missing"
+
+# Scheduler options: bad values are usage errors.
+for v in 0 -1 abc 1025 99999999999 4x ''; do
+    expect_fail "--threads-per-patch '$v' is a usage error" 2 "threads-per-patch" --degree 3 --threads-per-patch "$v"
+done
+expect_fail "--threads-per-patch beyond the planes is refused" 2 "exceeds the 64 planes" --degree 3 --threads-per-patch 65
+for v in 0 -2 x 1025; do
+    expect_fail "--patches-per-block '$v' is a usage error" 2 "patches-per-block" --degree 3 --patches-per-block "$v"
+done
+expect_fail "P*Q over 1024 is refused" 2 "1024" --degree 3 --threads-per-patch 16 --patches-per-block 65
+expect_fail "--threads-per-patch without its argument" 2 "needs an argument" --degree 3 --threads-per-patch
+
+# The schedule in json: every term exactly once, only in its owner's slots, R = the largest load.
+cat >"$tmp/sched.py" <<'PY'
+import json, sys
+doc = json.load(open(sys.argv[1]))
+s = doc["schedule"]
+P, R = s["threads_per_patch"], s["rounds"]
+want_P, want_Q = int(sys.argv[2]), int(sys.argv[3])
+assert (P, s["patches_per_block"]) == (want_P, want_Q), (P, s["patches_per_block"])
+owner, slots, terms = s["owner"], s["slots"], doc["terms"]
+assert len(owner) == doc["planes"] and len(slots) == R * P
+assert all(0 <= o < P for o in owner) and set(owner) == set(range(P)), "every thread owns a plane"
+seen = []
+for x, e in enumerate(slots):
+    if e is None:
+        continue
+    assert owner[e[0]] == x % P, ("slot of a plane another thread owns", x, e)
+    seen.append(tuple(e))
+assert sorted(seen) == sorted(tuple(t) for t in terms), "slots are not the terms, each once"
+loads = [sum(1 for x, e in enumerate(slots) if e is not None and x % P == t) for t in range(P)]
+assert loads == s["loads"] and R == max(loads), (loads, s["loads"], R)
+count = [0] * doc["planes"]
+for t in terms:
+    count[t[0]] += 1
+lb = max(-(-len(terms) // P), max(count))
+assert s["lower_bound"] == lb and R >= lb and (R > lb or s["proven_optimal"])
+for t in range(P):  # round-major: a thread's padding comes after its terms
+    mine = [slots[r * P + t] for r in range(R)]
+    assert None not in mine[:loads[t]] and all(e is None for e in mine[loads[t]:])
+PY
+# sched_case P Q ARGS...: ptpgen ARGS gives a valid schedule with P threads and Q patches.
+sched_case() {
+    local Pw=$1 Q=$2
+    shift 2
+    "$P" "$@" >"$tmp/s.json" && python3 "$tmp/sched.py" "$tmp/s.json" "$Pw" "$Q" >"$tmp/err" 2>&1 &&
+        ok "schedule for $*: P=$Pw Q=$Q, each term once, owner-only slots, R = max load >= LB" ||
+        notok "schedule for $*" "$(tail -1 "$tmp/err")"
+}
+sched_case 16 8 --degree 3
+sched_case 7 18 --degree 3x3 --threads-per-patch 7
+sched_case 32 4 --degree 2x3 --threads-per-patch 32
+sched_case 4 32 --degree 1x1
+sched_case 16 3 --degree 4x2 --patches-per-block 3
+sched_case 32 4 --degree 5
+sched_case 1 128 --degree 6x1 --threads-per-patch 1
+
+# The table's scheduled arrays, run as P threads would, give the same planes as the plain loop.
+cat >"$tmp/run_sched.c" <<'C'
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#define CAT2(a, b) a##b
+#define CAT(a, b) CAT2(a, b)
+static double cross4z(const double *a, const double *b, const double *c)
+{
+    return a[0] * (b[1] * c[3] - b[3] * c[1]) - b[0] * (a[1] * c[3] - a[3] * c[1]) +
+           c[0] * (a[1] * b[3] - a[3] * b[1]);
+}
+int main(void)
+{
+    static double b[CAT(UP, POINTS)][4], plain[CAT(UP, PLANES)], sched[CAT(UP, PLANES)];
+    int x, p, c;
+    srand(7);
+    for (p = 0; p < CAT(UP, POINTS); p++)
+        for (c = 0; c < 4; c++)
+            b[p][c] = rand() / (double)RAND_MAX - 0.5 + (c == 3);
+    for (x = 0; x < CAT(UP, TERMS); x++)
+        plain[CAT(LO, idx)[x][0]] += CAT(LO, wgt)[x] *
+            cross4z(b[CAT(LO, idx)[x][1]], b[CAT(LO, idx)[x][2]], b[CAT(LO, idx)[x][3]]);
+    for (x = 0; x < CAT(UP, SLOTS); x++) { /* thread x % THREADS, round x / THREADS */
+        const unsigned short *e = CAT(LO, sched_idx)[x];
+        if (CAT(LO, owner)[e[0]] != x % CAT(UP, THREADS)) {
+            printf("slot %d writes plane %u of thread %u\n", x, e[0], CAT(LO, owner)[e[0]]);
+            return 1;
+        }
+        sched[e[0]] += CAT(LO, sched_wgt)[x] * cross4z(b[e[1]], b[e[2]], b[e[3]]);
+    }
+    for (p = 0; p < CAT(UP, PLANES); p++)
+        if (fabs(plain[p] - sched[p]) > 1e-12 * (1 + fabs(plain[p]))) {
+            printf("plane %d: %g vs %g\n", p, plain[p], sched[p]);
+            return 1;
+        }
+    return 0;
+}
+C
+for c in "3x3" "2x3 --threads-per-patch 8" "3x1 --threads-per-patch 5" "4x4"; do
+    set -- $c
+    d=$1; n=${d%x*}; m=${d#*x}
+    if "$P" --degree "$@" --target table -o "$tmp/t.h" &&
+        gcc -std=c99 -Wall -Wextra -pedantic -Werror -include "$tmp/t.h" -DUP=PTP_${n}X${m}_ -DLO=ptp_${n}x${m}_ \
+            "$tmp/run_sched.c" -o "$tmp/run_sched" -lm 2>"$tmp/err" && "$tmp/run_sched" >"$tmp/err" 2>&1; then
+        ok "table $c: the scheduled loop (owner-only writes, padding included) equals the plain loop"
+    else
+        notok "table $c scheduled loop" "$(tail -2 "$tmp/err")"
+    fi
+done
 
 # The supported range: every bidegree up to 8x8 and the corners of the 16x16 limit derive
 # (the degree reductions' zero residuals are checked on each).
