@@ -27,6 +27,41 @@ static int check(int ok, const char *name, const char *detail, ...)
     return ok;
 }
 
+/* A property checked on many cases, reported as one check line with the first counterexample:
+ * prop_init, then per case tried++ and prop_fail on a failure, then prop_report. */
+typedef struct {
+    char name[220];
+    long tried, bad;
+    char detail[1500];
+} prop;
+
+static inline void prop_init(prop *p, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(p->name, sizeof p->name, fmt, ap);
+    va_end(ap);
+    p->tried = p->bad = 0;
+    p->detail[0] = '\0';
+}
+
+/* Records a failure; the first one's detail (printf-style) is kept. */
+static inline void prop_fail(prop *p, const char *fmt, ...)
+{
+    if (!p->bad++) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(p->detail, sizeof p->detail, fmt, ap);
+        va_end(ap);
+    }
+}
+
+static inline void prop_report(const prop *p)
+{
+    check(!p->bad && p->tried > 0, p->name, "%s (%ld of %ld cases failed)",
+          p->tried ? p->detail : "no case was tried", p->bad, p->tried);
+}
+
 /* The exit status of a test program: 0 when every check passed. */
 static int check_exit(void)
 {

@@ -103,39 +103,6 @@ static const char *SF(const form *f)
     return b;
 }
 
-/* ---- aggregated properties: one check line each, first counterexample kept ---- */
-
-typedef struct {
-    char name[220];
-    long tried, bad;
-    char detail[1500];
-} prop;
-
-static void prop_init(prop *p, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(p->name, sizeof p->name, fmt, ap);
-    va_end(ap);
-    p->tried = p->bad = 0;
-    p->detail[0] = '\0';
-}
-
-static void prop_fail(prop *p, const char *fmt, ...)
-{
-    if (!p->bad++) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(p->detail, sizeof p->detail, fmt, ap);
-        va_end(ap);
-    }
-}
-
-static void prop_report(const prop *p)
-{
-    check(!p->bad && p->tried > 0, p->name, "%s (%ld of %ld cases failed)",
-          p->tried ? p->detail : "no case was tried", p->bad, p->tried);
-}
 
 /* ---- keys: an independent packing and wedge ---- */
 

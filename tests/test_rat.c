@@ -387,40 +387,6 @@ static rat rnd_rat(void)
     return r;
 }
 
-/* ---- aggregated properties: one check line each, first counterexample kept ---- */
-
-typedef struct {
-    char name[200];
-    long tried, bad;
-    char detail[700];
-} prop;
-
-static void prop_init(prop *p, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(p->name, sizeof p->name, fmt, ap);
-    va_end(ap);
-    p->tried = p->bad = 0;
-    p->detail[0] = '\0';
-}
-
-static void prop_fail(prop *p, const char *fmt, ...)
-{
-    if (!p->bad++) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(p->detail, sizeof p->detail, fmt, ap);
-        va_end(ap);
-    }
-}
-
-static void prop_report(const prop *p)
-{
-    check(!p->bad && p->tried > 0, p->name, "%s (%ld of %ld cases failed)",
-          p->tried ? p->detail : "no case was tried", p->bad, p->tried);
-}
-
 /* ---- the operations and their references ---- */
 
 typedef int (*rat_op)(rat *, const rat *, const rat *);
