@@ -9,7 +9,9 @@ B = build/$(notdir $(CC))
 
 GEN_SRC = $(sort $(wildcard gen/*.c))
 GEN_HDR = $(sort $(wildcard gen/*.h))
-LIB_SRC = $(filter-out gen/main.c,$(GEN_SRC))
+TEMPLATES = $(sort $(wildcard templates/*/*))
+# The library the tests link: the generator without main, and the embedded templates.
+LIB_SRC = $(filter-out gen/main.c,$(GEN_SRC)) $(B)/templates.c
 TESTS = $(patsubst tests/%.c,%,$(sort $(wildcard tests/test_*.c)))
 
 all: ptpgen
@@ -19,13 +21,26 @@ all: ptpgen
 ptpgen: $(B)/ptpgen FORCE
 	@cmp -s $< $@ || cp $< $@
 
-$(B)/ptpgen: $(GEN_SRC) $(GEN_HDR) Makefile
-	@mkdir -p $(B)
-	$(CC) $(STD) $(CFLAGS) $(LDFLAGS) -o $@ $(GEN_SRC)
+$(B)/ptpgen: $(GEN_SRC) $(GEN_HDR) $(B)/templates.c Makefile
+	$(CC) $(STD) $(CFLAGS) $(LDFLAGS) -Igen -o $@ $(GEN_SRC) $(B)/templates.c
 
-$(B)/test_%: tests/test_%.c tests/check.h $(LIB_SRC) $(GEN_HDR) Makefile
+# The templates are compiled in, so an installed ptpgen works from any directory.
+$(B)/templates.c: $(TEMPLATES) $(B)/embed
+	$(B)/embed $(TEMPLATES) >$@.tmp && mv $@.tmp $@
+
+$(B)/embed: gen/embed/embed.c
 	@mkdir -p $(B)
-	$(CC) $(STD) $(CFLAGS) -Igen -o $@ $< $(LIB_SRC) -lm
+	$(CC) $(STD) -O1 -o $@ $<
+
+$(B)/test_%: tests/test_%.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lm
+
+# The hosts that run emitted kernels: OpenCL through PoCL, Vulkan (GLSL, HLSL) on lavapipe.
+$(B)/host_opencl: tests/host_opencl.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lOpenCL -lm
+
+$(B)/host_vulkan: tests/host_vulkan.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lvulkan -lm
 
 # Everything one compiler builds for the tests.
 build-tests: $(B)/ptpgen $(addprefix $(B)/,$(TESTS))

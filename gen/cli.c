@@ -2,21 +2,34 @@
  * Accepts "--opt value" and "--opt=value"; the last occurrence of an option wins. */
 #include "cli.h"
 
+#include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 
+const char *const cli_targets[] = {"json", "table", "stats", "c", "glsl", "hlsl", "opencl", "cuda"};
+
 const char cli_usage[] =
-    "usage: ptpgen --degree N|NxM [--target json|table|stats] [--threads-per-patch P]\n"
-    "              [--patches-per-block Q] [-o FILE]\n"
+    "usage: ptpgen --degree N|NxM [--target T] [--space clip|world] [--rule strict|degenerate]\n"
+    "              [--planes] [--prefix NAME] [--threads-per-patch P] [--patches-per-block Q]\n"
+    "              [-o FILE]\n"
     "       ptpgen --help | --version\n"
     "\n"
     "Derives the exact control planes of the parametric tangent plane\n"
-    "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u).\n"
+    "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u) and\n"
+    "writes them, or a back-patch culling kernel built on them.\n"
     "\n"
     "  --degree N|NxM   patch bidegree, 1 <= N, M <= 16 (N alone means NxN)\n"
-    "  --target T       json (default): the exact terms, ptpgen-planes/1\n"
+    "  --target T       json (default): the exact terms and schedule, ptpgen-planes/1\n"
     "                   table: a C header in the paper's idx/wgt format\n"
-    "                   stats: the term count of every plane\n"
+    "                   stats: the term count of every plane and the schedule\n"
+    "                   c: a C99 single header (stb style)\n"
+    "                   glsl, hlsl, opencl, cuda: a compute kernel\n"
+    "  --space S        clip (default): points in clip space, eye (0, 0, alpha, 0);\n"
+    "                   world: the full planes dotted with a homogeneous eye point\n"
+    "  --rule R         strict (default): back iff all values < 0, front iff all > 0;\n"
+    "                   degenerate: back iff none > 0, front iff none < 0\n"
+    "  --planes         kernels also write the value of every plane\n"
+    "  --prefix NAME    prefix of generated names (default ptp_NxM_)\n"
     "  --threads-per-patch P\n"
     "                   threads that share one patch, 1..1024, at most the number of\n"
     "                   planes (default 16 for 3x3; see README for other degrees)\n"
@@ -88,16 +101,37 @@ static int parse_count(int *v, const char *opt, const char *arg, ptp_error *err)
     return PTP_OK;
 }
 
-static int parse_target(cli_options *o, const char *arg, ptp_error *err)
+/* Sets *v to the index of arg in names[0..n-1]; a usage error naming the choices otherwise. */
+static int parse_choice(int *v, const char *opt, const char *arg, const char *const *names, int n,
+                        ptp_error *err)
 {
-    static const char *const names[] = {"json", "table", "stats"};
-    size_t i;
-    for (i = 0; i < sizeof names / sizeof *names; i++)
+    char choices[128] = "";
+    int i;
+    for (i = 0; i < n; i++) {
         if (strcmp(arg, names[i]) == 0) {
-            o->target = (cli_target)i;
+            *v = i;
             return PTP_OK;
         }
-    return ptp_fail(err, PTP_EUSAGE, "unknown target '%s' (expected json, table or stats)", arg);
+        snprintf(choices + strlen(choices), sizeof choices - strlen(choices), "%s%s",
+                 i == 0 ? "" : i == n - 1 ? " or " : ", ", names[i]);
+    }
+    return ptp_fail(err, PTP_EUSAGE, "unknown %s '%s' (expected %s)", opt, arg, choices);
+}
+
+/* A prefix is a C identifier start: a letter or '_', then letters, digits and '_'. */
+static int parse_prefix(cli_options *o, const char *arg, ptp_error *err)
+{
+    size_t i, n = strlen(arg);
+    int ok = n > 0 && n < sizeof o->prefix - 1 && (isalpha((unsigned char)arg[0]) || arg[0] == '_');
+    for (i = 1; ok && i < n; i++)
+        ok = isalnum((unsigned char)arg[i]) || arg[i] == '_';
+    if (!ok)
+        return ptp_fail(err, PTP_EUSAGE,
+                        "--prefix '%s': expected an identifier prefix (letters, digits and _, not "
+                        "starting with a digit, at most %zu characters)",
+                        arg, sizeof o->prefix - 2);
+    strcpy(o->prefix, arg);
+    return PTP_OK;
 }
 
 /* If argv[*i] is option name (long "--name" or short "-c"), sets *val to its argument,
@@ -125,10 +159,9 @@ static int take(const char **val, int *st, const char *name, int argc, char **ar
 
 int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
 {
-    static const char *const targets[] = {"json", "table", "stats"};
-    int i, st = PTP_OK;
+    static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
+    int i, st = PTP_OK, target = CLI_JSON;
     memset(o, 0, sizeof *o);
-    o->target = CLI_JSON;
     o->threads = o->patches = -1;
     for (i = 1; i < argc && !st; i++) {
         const char *a = argv[i], *v = NULL;
@@ -138,8 +171,16 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
             o->version = 1;
         else if (take(&v, &st, "--degree", argc, argv, &i, err))
             st = st ? st : parse_degree(o, v, err);
+        else if (strcmp(a, "--planes") == 0)
+            o->planes = 1;
         else if (take(&v, &st, "--target", argc, argv, &i, err))
-            st = st ? st : parse_target(o, v, err);
+            st = st ? st : parse_choice(&target, "target", v, cli_targets, 8, err);
+        else if (take(&v, &st, "--space", argc, argv, &i, err))
+            st = st ? st : parse_choice(&o->world, "space", v, spaces, 2, err);
+        else if (take(&v, &st, "--rule", argc, argv, &i, err))
+            st = st ? st : parse_choice(&o->degenerate, "rule", v, rules, 2, err);
+        else if (take(&v, &st, "--prefix", argc, argv, &i, err))
+            st = st ? st : parse_prefix(o, v, err);
         else if (take(&v, &st, "--threads-per-patch", argc, argv, &i, err))
             st = st ? st : parse_count(&o->threads, "--threads-per-patch", v, err);
         else if (take(&v, &st, "--patches-per-block", argc, argv, &i, err))
@@ -152,13 +193,22 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         else
             st = ptp_fail(err, PTP_EUSAGE, "unexpected argument '%s' (see ptpgen --help)", a);
     }
+    o->target = (cli_target)target;
     if (st || o->help || o->version)
         return st;
     if (!o->n)
         return ptp_fail(err, PTP_EUSAGE, "missing --degree N or --degree NxM (see ptpgen --help)");
     {
         int n = snprintf(o->command, sizeof o->command, "ptpgen --degree %dx%d --target %s", o->n,
-                         o->m, targets[o->target]);
+                         o->m, cli_targets[o->target]);
+        if (o->world)
+            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --space world");
+        if (o->degenerate)
+            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --rule degenerate");
+        if (o->planes)
+            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --planes");
+        if (o->prefix[0])
+            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --prefix %s", o->prefix);
         if (o->threads >= 0)
             n += snprintf(o->command + n, sizeof o->command - (size_t)n,
                           " --threads-per-patch %d", o->threads);
@@ -166,6 +216,7 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
             snprintf(o->command + n, sizeof o->command - (size_t)n, " --patches-per-block %d",
                      o->patches);
     }
-    snprintf(o->prefix, sizeof o->prefix, "ptp_%dx%d_", o->n, o->m);
+    if (!o->prefix[0])
+        snprintf(o->prefix, sizeof o->prefix, "ptp_%dx%d_", o->n, o->m);
     return PTP_OK;
 }

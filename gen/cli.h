@@ -5,16 +5,31 @@
 
 #include "ptp.h"
 
-typedef enum { CLI_JSON, CLI_TABLE, CLI_STATS } cli_target;
+typedef enum {
+    CLI_JSON,
+    CLI_TABLE,
+    CLI_STATS,
+    CLI_C,
+    CLI_GLSL,
+    CLI_HLSL,
+    CLI_OPENCL,
+    CLI_CUDA
+} cli_target;
+
+/* The target names, indexed by cli_target. */
+extern const char *const cli_targets[];
 
 typedef struct {
     int n, m;             /* bidegree; 0 until --degree is given */
     cli_target target;
     const char *output;   /* -o path, or NULL for stdout */
     int threads, patches; /* --threads-per-patch, --patches-per-block; -1 when not given */
+    int world;            /* --space world (else clip) */
+    int degenerate;       /* --rule degenerate (else strict) */
+    int planes;           /* --planes */
     int help, version;    /* --help or --version was given */
     char command[256];    /* the normalized command line, for banners */
-    char prefix[64];      /* generated-name prefix, "ptp_<n>x<m>_" */
+    char prefix[64];      /* generated-name prefix: --prefix, or "ptp_<n>x<m>_" */
 } cli_options;
 
 /* Parses argv[1..argc-1] into o. Returns PTP_OK or PTP_EUSAGE with the message in err. */

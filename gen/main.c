@@ -2,7 +2,7 @@
  * The only place that prints errors and exits; output reaches -o only complete (temp + rename). */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
-#include "out.h"
+#include "kern.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -62,7 +62,7 @@ static int write_output(const char *path, const sbuf *b, ptp_error *err)
 static int run(const cli_options *o, ptp_error *err)
 {
     static int (*const render[])(sbuf *, const tp_table *, const out_info *, ptp_error *) = {
-        out_json, out_table, out_stats};
+        out_json, out_table, out_stats, emit_c, emit_glsl, emit_hlsl, emit_opencl, emit_cuda};
     out_info info;
     tp_table t;
     sched s;
@@ -79,6 +79,9 @@ static int run(const cli_options *o, ptp_error *err)
     info.command = o->command;
     info.prefix = o->prefix;
     info.sched = &s;
+    info.space = o->world ? OUT_WORLD : OUT_CLIP;
+    info.rule = o->degenerate ? OUT_DEGENERATE : OUT_STRICT;
+    info.planes = o->planes;
     sbuf_init(&b);
     if (!(st = render[o->target](&b, &t, &info, err)))
         st = write_output(o->output, &b, err);

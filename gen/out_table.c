@@ -39,8 +39,15 @@ static int common_den(ptp_i128 *D, const tp_table *t)
     return PTP_OK;
 }
 
-/* A float literal of the value nearest to w, e.g. "-3.85714293f". */
-static char *float_literal(char *buf, const rat *w)
+void out_upper(char *up, size_t size, const char *prefix)
+{
+    size_t i;
+    for (i = 0; prefix[i] && i + 1 < size; i++)
+        up[i] = (char)toupper((unsigned char)prefix[i]);
+    up[i] = '\0';
+}
+
+char *out_float_literal(char *buf, const rat *w)
 {
     sprintf(buf, "%.9g", (double)(float)rat_get_d(w));
     if (!strpbrk(buf, ".en"))
@@ -49,7 +56,8 @@ static char *float_literal(char *buf, const rat *w)
     return buf;
 }
 
-/* The rows of one idx/wgt/iwgt array set: the table's terms in order, or the schedule's slots. */
+/* The rows of one idx/wgt/iwgt array set: the table's terms in order, or the schedule's slots
+ * (n of them). */
 typedef struct {
     const tp_table *t;
     const sched *s; /* NULL: the terms in table order */
@@ -70,12 +78,15 @@ static tp_term row_at(const rows *r, long x)
     return pad;
 }
 
-/* Writes NAMEidx, NAMEwgt and (itype given) NAMEiwgt for the rows, count macro COUNT. */
-static void put_arrays(sbuf *o, const rows *r, const char *name, const char *count,
-                       const char *itype, ptp_i128 D)
+void out_c_arrays(sbuf *o, const tp_table *t, const sched *s, const char *name,
+                  const char *count, const char *itype, ptp_i128 D)
 {
     char lit[48], w[RAT_STRLEN];
+    rows all, *r = &all;
     long x;
+    all.t = t;
+    all.s = s;
+    all.n = s ? (long)s->rounds * s->threads : (long)t->nterms;
     sbuf_printf(o, "\nstatic const unsigned short %sidx[%s][4] = {\n", name, count);
     for (x = 0; x < r->n; x++) {
         tp_term e = row_at(r, x);
@@ -84,7 +95,7 @@ static void put_arrays(sbuf *o, const rows *r, const char *name, const char *cou
     sbuf_printf(o, "};\n\nstatic const float %swgt[%s] = {\n", name, count);
     for (x = 0; x < r->n; x++) {
         tp_term e = row_at(r, x);
-        float_literal(lit, &e.w);
+        out_float_literal(lit, &e.w);
         sbuf_printf(o, "    %s,%*s/* %s */\n", lit, (int)(16 - strlen(lit)), "",
                     rat_get_str(w, &e.w));
     }
@@ -105,13 +116,9 @@ int out_table(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     char up[64], name[80], count[80], num[48];
     const sched *s = info->sched;
     const char *itype = NULL;
-    rows plain, slots;
     ptp_i128 D;
-    size_t i;
     int p;
-    for (i = 0; info->prefix[i] && i + 1 < sizeof up; i++)
-        up[i] = (char)toupper((unsigned char)info->prefix[i]);
-    up[i] = '\0';
+    out_upper(up, sizeof up, info->prefix);
     if (common_den(&D, t) == PTP_OK)
         itype = int_type(t, D);
     sbuf_printf(o, "/* %stable.h: the control planes of the parametric tangent plane, bidegree %dx%d.\n",
@@ -141,20 +148,15 @@ int out_table(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     sbuf_printf(o, "#define %sTHREADS %d\n#define %sPATCHES %d\n#define %sROUNDS %d\n", up,
                 s->threads, up, s->patches, up, s->rounds);
     sbuf_printf(o, "#define %sSLOTS (%sROUNDS * %sTHREADS)\n", up, up, up);
-    plain.t = slots.t = t;
-    plain.s = NULL;
-    plain.n = (long)t->nterms;
-    slots.s = s;
-    slots.n = (long)s->rounds * s->threads;
     snprintf(count, sizeof count, "%sTERMS", up);
-    put_arrays(o, &plain, info->prefix, count, itype, D);
+    out_c_arrays(o, t, NULL, info->prefix, count, itype, D);
     sbuf_printf(o, "\nstatic const unsigned short %sowner[%sPLANES] = {", info->prefix, up);
     for (p = 0; p < t->nplanes; p++)
         sbuf_printf(o, "%s%d", p == 0 ? "\n    " : p % (t->pv + 1) ? ", " : ",\n    ", s->owner[p]);
     sbuf_puts(o, "\n};\n");
     snprintf(name, sizeof name, "%ssched_", info->prefix);
     snprintf(count, sizeof count, "%sSLOTS", up);
-    put_arrays(o, &slots, name, count, itype, D);
+    out_c_arrays(o, t, s, name, count, itype, D);
     sbuf_printf(o, "\n#endif\n");
     return o->failed ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the table") : PTP_OK;
 }

@@ -10,7 +10,7 @@ static int check_failed_count;
 
 /* Reports one named check; detail (printf-style, may be "") is printed only on failure.
  * Returns ok. */
-static int check(int ok, const char *name, const char *detail, ...)
+static inline int check(int ok, const char *name, const char *detail, ...)
 {
     if (ok) {
         printf("ok - %s\n", name);
@@ -63,7 +63,7 @@ static inline void prop_report(const prop *p)
 }
 
 /* The exit status of a test program: 0 when every check passed. */
-static int check_exit(void)
+static inline int check_exit(void)
 {
     return check_failed_count ? 1 : 0;
 }
