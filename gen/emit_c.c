@@ -11,8 +11,12 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
     sbuf_printf(o,
-                "/* cross4 of Appendix A of Loop, Niessner and Eisenacher (2011): r . x = -det[a b c x]. */\n"
+                "/* cross4 of Appendix A of Loop, Niessner and Eisenacher (2011): r . x = -det[a b c x].\n"
+                " * Its products are never contracted into FMAs, so two equal points give exactly 0. */\n"
+                "#if defined(__GNUC__) && !defined(__clang__)\n"
+                "#pragma GCC push_options\n#pragma GCC optimize(\"fp-contract=off\")\n#endif\n"
                 "static void %scross4(float r[4], const float a[4], const float b[4], const float c[4])\n{\n"
+                "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n"
                 "    r[0] = a[1] * (b[2] * c[3] - b[3] * c[2]) - b[1] * (a[2] * c[3] - a[3] * c[2]) +\n"
                 "           c[1] * (a[2] * b[3] - a[3] * b[2]);\n"
                 "    r[1] = -(a[0] * (b[2] * c[3] - b[3] * c[2]) - b[0] * (a[2] * c[3] - a[3] * c[2]) +\n"
@@ -20,7 +24,8 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
                 "    r[2] = a[0] * (b[1] * c[3] - b[3] * c[1]) - b[0] * (a[1] * c[3] - a[3] * c[1]) +\n"
                 "           c[0] * (a[1] * b[3] - a[3] * b[1]);\n"
                 "    r[3] = -(a[0] * (b[1] * c[2] - b[2] * c[1]) - b[0] * (a[1] * c[2] - a[2] * c[1]) +\n"
-                "             c[0] * (a[1] * b[2] - a[2] * b[1]));\n}\n\n",
+                "             c[0] * (a[1] * b[2] - a[2] * b[1]));\n}\n"
+                "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n",
                 px);
     sbuf_printf(o,
                 "void %splanes(const float cp[][4], float t[][4])\n{\n"

@@ -4,7 +4,7 @@
 
 static const kern_target cuda = {
     "cuda", "CUDA kernel", "cuda/kernel.cu", ".cu", 1,
-    "unsigned", "float4", "__constant__", "static __device__ ", "__shared__", 1, "__syncthreads();",
+    "unsigned", "float4", "__constant__", "static __device__ ", "__shared__", 1, "__syncthreads();", "", "__fmul_rn(%s, %s)",
     "threadIdx.x", "blockIdx.x", "blockIdx.y", "gridDim.x", NULL,
     " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count), extern \"C\": planes receives\n"
     " * d[p*L + P] when not NULL. Launch P*Q threads per block and ceil(patch_count / Q) blocks,\n"

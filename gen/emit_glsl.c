@@ -4,7 +4,7 @@
 
 static const kern_target glsl = {
     "glsl", "GLSL 4.50 compute shader for Vulkan", "glsl/kernel.comp", ".comp", 0,
-    "uint", "vec4", "const", "", "shared", 0, "barrier();",
+    "uint", "vec4", "const", "", "shared", 0, "barrier();", "precise ", "%s * %s",
     "gl_LocalInvocationID.x", "gl_WorkGroupID.x", "gl_WorkGroupID.y", "gl_NumWorkGroups.x",
     "layout(std430, set = 0, binding = 2) writeonly buffer Planes { float planes[]; };\n",
     " * Bindings (set 0, std430): 0 control points (readonly vec4[]), 1 classes (uint[]), 2 values\n"

@@ -5,7 +5,7 @@
 static const kern_target hlsl = {
     "hlsl", "HLSL compute shader (Direct3D 11/12; Vulkan via glslangValidator -D or DXC)",
     "hlsl/kernel.hlsl", ".hlsl", 0,
-    "uint", "float4", "static const", "", "groupshared", 0, "GroupMemoryBarrierWithGroupSync();",
+    "uint", "float4", "static const", "", "groupshared", 0, "GroupMemoryBarrierWithGroupSync();", "precise ", "%s * %s",
     "lid3.x", "gid.x", "gid.y", "groups_x",
     "[[vk::binding(2, 0)]] RWStructuredBuffer<float> planes : register(u2);\n",
     " * Entry point main. Resources: t0 / Vulkan binding 0 the control points (StructuredBuffer<float4>),\n"

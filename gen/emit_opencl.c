@@ -4,7 +4,7 @@
 
 static const kern_target opencl = {
     "opencl", "OpenCL C 1.2 kernel", "opencl/kernel.cl", ".cl", 1,
-    "uint", "float4", "constant", "", "local", 1, "barrier(CLK_LOCAL_MEM_FENCE);",
+    "uint", "float4", "constant", "", "local", 1, "barrier(CLK_LOCAL_MEM_FENCE);", "", "%s * %s",
     "(uint)get_local_id(0)", "(uint)get_group_id(0)", "(uint)get_group_id(1)",
     "(uint)get_num_groups(0)", NULL,
     " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count): planes receives d[p*L + P] when not\n"

@@ -18,6 +18,8 @@ typedef struct {
     const char *shared_qual;   /* qualifier of workgroup-shared arrays */
     int shared_in_body;        /* shared arrays are declared inside the kernel (else at file scope) */
     const char *barrier;       /* a workgroup barrier with shared-memory ordering, as a statement */
+    const char *precise;       /* qualifier that forbids contracting a*b - c*d into an FMA, or "" */
+    const char *mul;           /* a product of two operands, printf format ("%s * %s") */
     const char *local_id;      /* the invocation's index in its workgroup */
     const char *group_x, *group_y, *groups_x; /* workgroup ids and the number along x */
     const char *planes_buffer; /* file-scope declaration of the values buffer (with --planes), or

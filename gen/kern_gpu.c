@@ -49,25 +49,24 @@ void kern_banner(sbuf *o, const tp_table *t, const out_info *info, const char *f
 /* Appends a constant table: `qual type NAME[n] = { ... };`, `per_line` values to a line, in hex
  * (packed fields) or decimal. */
 static void put_uint_table(sbuf *o, const kern_target *g, const char *prefix, const char *name,
-                           const unsigned long *v, long n, int per_line, int hex, const char *comment)
+                           const unsigned long *v, long n, int per_line, int hex)
 {
     long i;
-    sbuf_printf(o, "/* %s */\n%s %s %s%s[%ld] = {", comment, g->table_qual, g->uint, prefix, name, n);
+    sbuf_printf(o, "%s %s %s%s[%ld] = {", g->table_qual, g->uint, prefix, name, n);
     for (i = 0; i < n; i++)
         sbuf_printf(o, hex ? "%s0x%05lxu" : "%s%luu", i == 0 ? "\n    " : i % per_line ? ", " : ",\n    ",
                     v[i]);
-    sbuf_puts(o, "\n};\n\n");
+    sbuf_puts(o, "\n};\n");
 }
 
-/* The constant tables: the owned planes of each thread (CSR), the slots (packed indices and
- * weights), round-major, one round per line. */
+/* The constant tables: the owned planes of each thread (CSR), and per round the slots of the
+ * P threads (packed indices and weights); padding slots name an owned plane with weight 0. */
 static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                       const char *up, ptp_error *err)
 {
     const sched *s = info->sched;
-    long n = (long)s->rounds * s->threads, i;
-    int P = s->threads, th, p, k = 0;
-    unsigned long *v = malloc((size_t)(n > t->nplanes ? n : t->nplanes + P + 1) * sizeof *v);
+    int P = s->threads, th, p, r, k = 0;
+    unsigned long *v = malloc((size_t)(2 * P > t->nplanes ? 2 * P : t->nplanes + P + 1) * sizeof *v);
     char lit[48];
     if (!v)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
@@ -75,71 +74,98 @@ static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const ke
     sbuf_printf(o, "#define %sQ %du /* patches per workgroup */\n", up, s->patches);
     sbuf_printf(o, "#define %sK %du /* control points per patch */\n", up, t->npoints);
     sbuf_printf(o, "#define %sL %du /* control planes per patch */\n", up, t->nplanes);
-    sbuf_printf(o, "#define %sR %du /* rounds: the largest number of terms of one thread */\n\n", up,
-                s->rounds);
+    sbuf_printf(o, "/* %d rounds: the largest number of terms of one thread. */\n\n", s->rounds);
     for (th = 0; th <= P; th++) {
         v[th] = (unsigned long)k;
         for (p = 0; th < P && p < t->nplanes; p++)
             k += s->owner[p] == th;
     }
-    put_uint_table(o, g, info->prefix, "own_start", v, P + 1, 16, 0,
-                   "Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1].");
+    sbuf_puts(o, "/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */\n");
+    put_uint_table(o, g, info->prefix, "own_start", v, P + 1, 16, 0);
     for (th = 0, k = 0; th < P; th++)
         for (p = 0; p < t->nplanes; p++)
             if (s->owner[p] == th)
                 v[k++] = (unsigned long)p;
-    put_uint_table(o, g, info->prefix, "own_plane", v, t->nplanes, 16, 0, "The planes, by owner.");
-    for (i = 0; i < n; i++) {
-        long x = s->slot[i];
-        int plane = x >= 0 ? t->terms[x].plane : sched_padding_plane(s, (int)(i % P));
-        v[i] = (unsigned long)plane | (unsigned long)(x >= 0 ? t->terms[x].j : 0) << 16;
+    put_uint_table(o, g, info->prefix, "own_plane", v, t->nplanes, 16, 0);
+    sbuf_puts(o, "\n");
+    for (r = 0; r < s->rounds; r++) {
+        /* Round r: one small table per field, indexed by the thread. Unrolled, so that no
+         * shader indexes a large constant array dynamically (lavapipe copies such an array
+         * on every access; GPUs prefer small tables too). */
+        char name[32];
+        for (th = 0; th < P; th++) {
+            long x = s->slot[(long)r * P + th];
+            int plane = x >= 0 ? t->terms[x].plane : sched_padding_plane(s, th);
+            v[th] = (unsigned long)plane | (unsigned long)(x >= 0 ? t->terms[x].j : 0) << 16;
+            v[P + th] = x >= 0 ? (unsigned long)t->terms[x].k | (unsigned long)t->terms[x].l << 16 : 0;
+        }
+        sbuf_printf(o, "/* Round %d: thread t adds w%d[t] * term(plane | j << 16 = pj%d[t], k | l << 16 = kl%d[t]). */\n",
+                    r, r, r, r);
+        snprintf(name, sizeof name, "pj%d", r);
+        put_uint_table(o, g, info->prefix, name, v, P, 8, 1);
+        snprintf(name, sizeof name, "kl%d", r);
+        put_uint_table(o, g, info->prefix, name, v + P, P, 8, 1);
+        sbuf_printf(o, "%s float %sw%d[%d] = {", g->table_qual, info->prefix, r, P);
+        for (th = 0; th < P; th++) {
+            long x = s->slot[(long)r * P + th];
+            rat zero;
+            rat_set_si(&zero, 0);
+            out_float_literal(lit, x >= 0 ? &t->terms[x].w : &zero);
+            sbuf_printf(o, "%s%s", th == 0 ? "\n    " : th % 8 ? ", " : ",\n    ", lit);
+        }
+        sbuf_puts(o, "\n};\n\n");
     }
-    put_uint_table(o, g, info->prefix, "slot_pj", v, n, P, 1,
-                   "Slot r*P + t, thread t's r-th term: plane | j << 16 (padding: an owned plane, weight 0).");
-    for (i = 0; i < n; i++) {
-        long x = s->slot[i];
-        v[i] = x >= 0 ? (unsigned long)t->terms[x].k | (unsigned long)t->terms[x].l << 16 : 0;
-    }
-    put_uint_table(o, g, info->prefix, "slot_kl", v, n, P, 1, "The same slots: k | l << 16.");
-    sbuf_printf(o, "/* The same slots: the weights (exact values in ptpgen --target json). */\n"
-                   "%s float %sslot_w[%ld] = {", g->table_qual, info->prefix, n);
-    for (i = 0; i < n; i++) {
-        rat zero;
-        rat_set_si(&zero, 0);
-        out_float_literal(lit, s->slot[i] >= 0 ? &t->terms[s->slot[i]].w : &zero);
-        sbuf_printf(o, "%s%s", i == 0 ? "\n    " : i % P ? ", " : ",\n    ", lit);
-    }
-    sbuf_puts(o, "\n};\n\n");
     free(v);
     return PTP_OK;
 }
 
+/* Appends det[a b c] of rows p, q, s (components "xyzw"[i]) with the target's products. */
+static void put_det(sbuf *o, const kern_target *g, int p, int q, int s)
+{
+    static const char comp[] = "xyzw";
+    const char *col = "abc";
+    int i;
+    for (i = 0; i < 3; i++) {
+        /* cofactor expansion along row p: +a.p (b c), -b.p (a c), +c.p (a b) */
+        char u = col[i == 0 ? 1 : 0], v = col[i == 2 ? 1 : 2], x[16], y[16], m1[48], m2[48], d[128];
+        snprintf(x, sizeof x, "%c.%c", u, comp[q]);
+        snprintf(y, sizeof y, "%c.%c", v, comp[s]);
+        snprintf(m1, sizeof m1, g->mul, x, y);
+        snprintf(x, sizeof x, "%c.%c", u, comp[s]);
+        snprintf(y, sizeof y, "%c.%c", v, comp[q]);
+        snprintf(m2, sizeof m2, g->mul, x, y);
+        snprintf(d, sizeof d, "(%s - %s)", m1, m2);
+        snprintf(x, sizeof x, "%c.%c", col[i], comp[p]);
+        sbuf_puts(o, i == 0 ? "" : i == 1 ? " -\n        " : " +\n        ");
+        sbuf_printf(o, g->mul, x, d);
+    }
+}
+
 /* The helper functions: the term (cross4's z, or eye . cross4), the flags of one value and the
- * class of a patch's flags, per space and rule. */
+ * class of a patch's flags, per space and rule. The products are never contracted into FMAs, so
+ * a term with two equal points (a collapsed edge) is exactly zero, as the degenerate rule needs. */
 static void put_functions(sbuf *o, const out_info *info, const kern_target *g)
 {
     const char *f = g->func_qual, *u = g->uint, *v = g->vec4, *px = info->prefix;
-    if (info->space == OUT_CLIP)
-        sbuf_printf(o,
-                    "/* The z component of cross4(a, b, c): det of rows x, y, w. */\n"
-                    "%sfloat %scross4z(%s a, %s b, %s c)\n{\n"
-                    "    return a.x * (b.y * c.w - b.w * c.y) - b.x * (a.y * c.w - a.w * c.y) +\n"
-                    "           c.x * (a.y * b.w - a.w * b.y);\n}\n\n",
-                    f, px, v, v, v);
-    else
-        sbuf_printf(o,
-                    "/* e . cross4(a, b, c), cross4 as in Appendix A of Loop, Niessner and Eisenacher. */\n"
-                    "%sfloat %seye_cross4(%s a, %s b, %s c, %s e)\n{\n"
-                    "    float x = a.y * (b.z * c.w - b.w * c.z) - b.y * (a.z * c.w - a.w * c.z) +\n"
-                    "              c.y * (a.z * b.w - a.w * b.z);\n"
-                    "    float y = a.x * (b.z * c.w - b.w * c.z) - b.x * (a.z * c.w - a.w * c.z) +\n"
-                    "              c.x * (a.z * b.w - a.w * b.z);\n"
-                    "    float z = a.x * (b.y * c.w - b.w * c.y) - b.x * (a.y * c.w - a.w * c.y) +\n"
-                    "              c.x * (a.y * b.w - a.w * b.y);\n"
-                    "    float w = a.x * (b.y * c.z - b.z * c.y) - b.x * (a.y * c.z - a.z * c.y) +\n"
-                    "              c.x * (a.y * b.z - a.z * b.y);\n"
-                    "    return e.x * x - e.y * y + e.z * z - e.w * w;\n}\n\n",
-                    f, px, v, v, v, v);
+    if (info->space == OUT_CLIP) {
+        sbuf_printf(o, "/* The z component of cross4(a, b, c): det of rows x, y, w. */\n"
+                       "%sfloat %scross4z(%s a, %s b, %s c)\n{\n    %sfloat z = ",
+                    f, px, v, v, v, g->precise);
+        put_det(o, g, 0, 1, 3);
+        sbuf_puts(o, ";\n    return z;\n}\n\n");
+    } else {
+        static const int rows[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+        int c;
+        sbuf_printf(o, "/* e . cross4(a, b, c), cross4 as in Appendix A of Loop, Niessner and Eisenacher:\n"
+                       " * (det yzw, -det xzw, det xyw, -det xyz) of the columns a, b, c. */\n"
+                       "%sfloat %seye_cross4(%s a, %s b, %s c, %s e)\n{\n", f, px, v, v, v, v);
+        for (c = 0; c < 4; c++) {
+            sbuf_printf(o, "    %sfloat %c = ", g->precise, "xyzw"[c]);
+            put_det(o, g, rows[c][0], rows[c][1], rows[c][2]);
+            sbuf_puts(o, ";\n");
+        }
+        sbuf_puts(o, "    return e.x * x - e.y * y + e.z * z - e.w * w;\n}\n\n");
+    }
     if (info->rule == OUT_STRICT)
         sbuf_printf(o,
                     "/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */\n"
@@ -172,10 +198,12 @@ static void put_shared(sbuf *o, const kern_target *g, const char *up, const char
 static void put_body(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *u = g->uint, *px = info->prefix;
+    const char *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
+    int r;
     if (g->shared_in_body)
         put_shared(o, g, up, "    ");
     sbuf_printf(o,
-                "    %s lid = %s, q = lid / %sP, t = lid %% %sP, i, r;\n"
+                "    %s lid = %s, q = lid / %sP, t = lid %% %sP, i, pj, kl;\n"
                 "    %s pid = (%s * %s + %s) * %sQ + q;\n"
                 "    %s f = 0u;\n"
                 "    bool live = pid < patch_count;\n\n",
@@ -188,21 +216,21 @@ static void put_body(sbuf *o, const out_info *info, const kern_target *g, const 
                 "    %s\n\n",
                 up, up, up, up, g->barrier);
     sbuf_printf(o,
-                "    /* Accumulate the planes this thread owns: no other thread touches them. */\n"
+                "    /* Accumulate the planes this thread owns, one round at a time: no other thread\n"
+                "     * touches them. */\n"
                 "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++)\n"
-                "        acc[q * %sL + %sown_plane[i]] = 0.0f;\n"
-                "    for (r = 0u; r < %sR; r++) {\n"
-                "        %s s = r * %sP + t, pj = %sslot_pj[s], kl = %sslot_kl[s];\n"
-                "        acc[q * %sL + (pj & 0xffffu)] += %sslot_w[s] *\n",
-                px, px, up, px, up, u, up, px, px, up, px);
-    if (info->space == OUT_CLIP)
-        sbuf_printf(o, "            %scross4z(pts[q * %sK + (pj >> 16)], pts[q * %sK + (kl & 0xffffu)],\n"
-                       "                      pts[q * %sK + (kl >> 16)]);\n    }\n\n",
-                    px, up, up, up);
-    else
-        sbuf_printf(o, "            %seye_cross4(pts[q * %sK + (pj >> 16)], pts[q * %sK + (kl & 0xffffu)],\n"
-                       "                         pts[q * %sK + (kl >> 16)], eye);\n    }\n\n",
-                    px, up, up, up);
+                "        acc[q * %sL + %sown_plane[i]] = 0.0f;\n",
+                px, px, up, px);
+    for (r = 0; r < info->sched->rounds; r++) {
+        sbuf_printf(o, "    pj = %spj%d[t];\n    kl = %skl%d[t];\n"
+                       "    acc[q * %sL + (pj & 0xffffu)] += %sw%d[t] *\n",
+                    px, r, px, r, up, px, r);
+        sbuf_printf(o, "        %s%s(pts[q * %sK + (pj >> 16)], pts[q * %sK + (kl & 0xffffu)],\n"
+                       "        %*s pts[q * %sK + (kl >> 16)]%s);\n",
+                    px, fn, up, up, (int)(strlen(px) + strlen(fn)), "", up,
+                    info->space == OUT_CLIP ? "" : ", eye");
+    }
+    sbuf_puts(o, "\n");
     sbuf_printf(o,
                 "    /* The values and signs of the owned planes; then one thread combines the patch's. */\n"
                 "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n"

@@ -58,8 +58,9 @@ int out_json(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
                 info->command);
     sbuf_printf(o, "  \"degree\": [%d, %d],\n  \"plane_degree\": [%d, %d],\n", t->n, t->m,
                 t->pu, t->pv);
-    sbuf_printf(o, "  \"points\": %d,\n  \"planes\": %d,\n  \"terms\": [", t->npoints,
-                t->nplanes);
+    sbuf_printf(o, "  \"points\": %d,\n  \"planes\": %d,\n", t->npoints, t->nplanes);
+    /* The kernels' values are d_P = eye . t_P times this positive constant (true scale). */
+    sbuf_puts(o, "  \"plane_scale\": \"1\",\n  \"terms\": [");
     for (i = 0; i < t->nterms; i++) {
         sbuf_puts(o, i ? ",\n    " : "\n    ");
         put_term(o, &t->terms[i]);
