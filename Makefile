@@ -35,6 +35,12 @@ $(B)/embed: gen/embed/embed.c
 $(B)/test_%: tests/test_%.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lm
 
+# The generator library and kref as an archive, for test programs built around emitted headers.
+$(B)/libptptest.a: $(LIB_SRC) $(GEN_HDR) tests/kref.c tests/kref.h tests/check.h Makefile
+	rm -rf $(B)/lib && mkdir -p $(B)/lib
+	cd $(B)/lib && $(CC) $(STD) $(CFLAGS) -I$(CURDIR)/gen -I$(CURDIR)/tests -c $(addprefix $(CURDIR)/,$(LIB_SRC) tests/kref.c)
+	ar rcs $@ $(B)/lib/*.o
+
 # The hosts that run emitted kernels: OpenCL through PoCL, Vulkan (GLSL, HLSL) on lavapipe.
 $(B)/host_opencl: tests/host_opencl.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lOpenCL -lm

@@ -1,39 +1,42 @@
-# deps.sh: makes sure the commands the tests run are installed (sourced by tests/run.sh).
-# Missing ones are installed from Debian's packages; under CI=true one still missing is a failure.
+# deps.sh: makes sure what the tests run is installed (sourced by tests/run.sh).
+# Missing packages are installed from Debian's; under CI=true one still missing is a failure.
 
-# command -> Debian package
-PTP_DEPS="gcc:gcc clang:clang make:make python3:python3"
+# what -> Debian package; "what" is a command, or an absolute path for a file a package ships.
+PTP_DEPS="gcc:gcc clang:clang make:make python3:python3
+glslangValidator:glslang-tools spirv-val:spirv-tools
+/usr/include/CL/cl.h:opencl-headers /usr/lib/x86_64-linux-gnu/libOpenCL.so:ocl-icd-opencl-dev
+/etc/OpenCL/vendors/pocl.icd:pocl-opencl-icd
+/usr/include/vulkan/vulkan.h:libvulkan-dev /usr/share/vulkan/icd.d/lvp_icd.x86_64.json:mesa-vulkan-drivers"
 
-# Prints the commands of PTP_DEPS that are not on PATH.
+# Prints each entry "what:package" of PTP_DEPS that is missing.
 ptp_missing_deps() {
-    local d
+    local d w
     for d in $PTP_DEPS; do
-        command -v "${d%%:*}" >/dev/null 2>&1 || echo "${d%%:*}"
+        w=${d%%:*}
+        case $w in
+        /*) [ -e "$w" ] || echo "$d" ;;
+        *) command -v "$w" >/dev/null 2>&1 || echo "$d" ;;
+        esac
     done
 }
 
-# Installs the packages of missing commands when running as root; reports what stays missing
+# Installs the packages of missing entries when running as root; reports what stays missing
 # as a "not ok" line (CI) or a "# skip" note (a developer's machine without root).
 ptp_ensure_deps() {
-    local missing pkgs d c
+    local missing pkgs d
     missing=$(ptp_missing_deps)
     [ -z "$missing" ] && return 0
-    pkgs=""
-    for c in $missing; do
-        for d in $PTP_DEPS; do
-            [ "${d%%:*}" = "$c" ] && pkgs="$pkgs ${d#*:}"
-        done
-    done
+    pkgs=$(for d in $missing; do echo "${d#*:}"; done | sort -u | tr '\n' ' ')
     if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
-        echo "# installing:$pkgs"
+        echo "# installing: $pkgs"
         { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $pkgs; } >&2 ||
-            echo "# apt-get failed for:$pkgs"
+            echo "# apt-get failed for: $pkgs"
     fi
-    for c in $(ptp_missing_deps); do
+    for d in $(ptp_missing_deps); do
         if [ "${CI:-}" = true ]; then
-            echo "not ok - dependency '$c' is missing and could not be installed"
+            echo "not ok - dependency '${d%%:*}' (Debian package ${d#*:}) is missing and could not be installed"
         else
-            echo "# skip: '$c' is missing (install it, or run as root to let make test do it)"
+            echo "# skip: '${d%%:*}' is missing (Debian package ${d#*:}; run make test as root to install it)"
         fi
     done
 }

@@ -1,14 +1,159 @@
 /* kref.c: test data and the double-precision reference for executing emitted kernels.
- * The bound on a float32 evaluation is (terms + 32) * 2^-23 times the sum of |monomials|. */
+ * The bound on a float32 evaluation is (terms + 32) * 2^-23 times the sum of |monomials|; exact
+ * zeros (two equal points in every term of a plane) have bound 0. */
 #include "kref.h"
 #include "check.h"
 
+#include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define M_PI_6 0.52359877559829887308 /* 30 degrees: half the field of view */
+
+/* Prints the usage failure as one "not ok" line; returns 2. */
+static int usage(const char *host, const char *label, const char *detail)
+{
+    check(0, label ? label : host,
+          "%s; usage: %s [FILE] [--kernel NAME] --degree N M --space clip|world "
+          "--rule strict|degenerate [--block-threads PQ --patches-per-block Q] [--planes] "
+          "[--groups-x-constant] (--random SETS COUNT SEED | --model PATH NEYES SEED)... "
+          "--name LABEL",
+          detail, host);
+    return 2;
+}
+
+/* Parses a decimal integer in [lo, hi] into *out; 0 on success. */
+static int parse_ull(const char *s, unsigned long long lo, unsigned long long hi,
+                     unsigned long long *out)
+{
+    char *end;
+    unsigned long long v;
+    if (!s || *s < '0' || *s > '9')
+        return -1;
+    errno = 0;
+    v = strtoull(s, &end, 10);
+    if (errno || *end || v < lo || v > hi)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsigned need)
+{
+    int i, have_degree = 0, have_space = 0, have_rule = 0;
+    unsigned long long a, b, c;
+    memset(o, 0, sizeof *o);
+    /* the label first, so that every usage failure carries it */
+    for (i = 1; i + 1 < argc; i++)
+        if (!strcmp(argv[i], "--name"))
+            o->label = argv[i + 1];
+    for (i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        int left = argc - i - 1;
+        if (!strcmp(s, "--name") && left >= 1) {
+            o->label = argv[++i];
+        } else if (!strcmp(s, "--kernel") && left >= 1) {
+            o->kernel_name = argv[++i];
+        } else if (!strcmp(s, "--degree") && left >= 2) {
+            if (parse_ull(argv[i + 1], 1, PTP_MAX_DEGREE, &a) ||
+                parse_ull(argv[i + 2], 1, PTP_MAX_DEGREE, &b))
+                return usage(host, o->label, "--degree takes N M, each 1..16");
+            o->n = (int)a;
+            o->m = (int)b;
+            have_degree = 1;
+            i += 2;
+        } else if (!strcmp(s, "--space") && left >= 1) {
+            s = argv[++i];
+            if (!strcmp(s, "clip"))
+                o->space = KREF_CLIP;
+            else if (!strcmp(s, "world"))
+                o->space = KREF_WORLD;
+            else
+                return usage(host, o->label, "--space is clip or world");
+            have_space = 1;
+        } else if (!strcmp(s, "--rule") && left >= 1) {
+            s = argv[++i];
+            if (!strcmp(s, "strict"))
+                o->rule = KREF_STRICT;
+            else if (!strcmp(s, "degenerate"))
+                o->rule = KREF_DEGENERATE;
+            else
+                return usage(host, o->label, "--rule is strict or degenerate");
+            have_rule = 1;
+        } else if (!strcmp(s, "--block-threads") && left >= 1) {
+            if (parse_ull(argv[++i], 1, 1u << 20, &a))
+                return usage(host, o->label, "--block-threads takes a positive integer");
+            o->pq = (size_t)a;
+        } else if (!strcmp(s, "--patches-per-block") && left >= 1) {
+            if (parse_ull(argv[++i], 1, 1u << 20, &a))
+                return usage(host, o->label, "--patches-per-block takes a positive integer");
+            o->q = (size_t)a;
+        } else if (!strcmp(s, "--planes")) {
+            o->planes = 1;
+        } else if (!strcmp(s, "--groups-x-constant")) {
+            o->groups_x_constant = 1;
+        } else if ((!strcmp(s, "--random") || !strcmp(s, "--model")) && left >= 3) {
+            kref_source *sr;
+            int model = !strcmp(s, "--model");
+            if (o->nsources == KREF_MAX_SOURCES)
+                return usage(host, o->label, "too many --random and --model options");
+            sr = &o->src[o->nsources++];
+            sr->is_model = model;
+            if (model) {
+                sr->path = argv[i + 1];
+                if (parse_ull(argv[i + 2], 1, INT_MAX, &a) ||
+                    parse_ull(argv[i + 3], 0, UINT64_MAX, &c))
+                    return usage(host, o->label, "--model takes PATH NEYES SEED");
+                sr->nsets = (long)a;
+            } else {
+                if (parse_ull(argv[i + 1], 1, INT_MAX, &a) ||
+                    parse_ull(argv[i + 2], 1, UINT32_MAX, &b) ||
+                    parse_ull(argv[i + 3], 0, UINT64_MAX, &c))
+                    return usage(host, o->label, "--random takes SETS COUNT SEED (COUNT >= 1)");
+                sr->nsets = (long)a;
+                sr->count = (size_t)b;
+            }
+            sr->seed = (uint64_t)c;
+            i += 3;
+        } else if (s[0] == '-' && s[1] == '-') {
+            char msg[200];
+            snprintf(msg, sizeof msg, "unknown option or missing values: %.100s", s);
+            return usage(host, o->label, msg);
+        } else if (!o->file) {
+            o->file = s;
+        } else {
+            char msg[200];
+            snprintf(msg, sizeof msg, "unexpected argument %.100s", s);
+            return usage(host, o->label, msg);
+        }
+    }
+    if (!o->label)
+        return usage(host, NULL, "--name LABEL is required");
+    if (!have_degree || !have_space || !have_rule || (need & KREF_NEED_FILE && !o->file) ||
+        (need & KREF_NEED_KERNEL && !o->kernel_name) || (need & KREF_NEED_BLOCK && (!o->pq || !o->q)))
+        return usage(host, o->label, "a required argument is missing");
+    if (o->q && o->pq % o->q)
+        return usage(host, o->label, "--block-threads PQ must be a multiple of --patches-per-block Q");
+    if (!o->nsources)
+        return usage(host, o->label, "give at least one --random or --model");
+    return 0;
+}
+
+kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char *label)
+{
+    ptp_error err;
+    kref_set *sets;
+    if (src->is_model) {
+        if (!(sets = kref_model_sets(r, src->path, (int)src->nsets, src->seed, &err)))
+            check(0, label, "model %s: %s", src->path, err.msg);
+    } else if (!(sets = kref_random_sets(r, (int)src->nsets, src->count, src->seed))) {
+        check(0, label, "%ld random sets of %zu patches: out of memory", src->nsets, src->count);
+    }
+    return sets;
+}
 
 int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_error *err)
 {
@@ -87,7 +232,7 @@ kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t 
         for (p = 0; p < count; p++) {
             /* A random parallelogram frame, bent by noise of a random size; a third rational. */
             double o[3], a[3], b[3], amp = noise[(int)uniform(&rng, 0, 6)];
-            int rational = uniform(&rng, 0, 3) < 1;
+            int rational = uniform(&rng, 0, 3) < 1, collapse = (int)uniform(&rng, 0, 16);
             for (c = 0; c < 3; c++) {
                 o[c] = uniform(&rng, -1, 1);
                 a[c] = uniform(&rng, -1, 1);
@@ -104,6 +249,16 @@ kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t 
                     for (c = 0; c < 3; c++)
                         pt[c] = (float)(w * x[c]);
                     pt[3] = (float)(w * (r->space == KREF_CLIP ? uniform(&rng, 1.5, 2.5) : 1.0));
+                }
+            /* A quarter collapse one edge (0: i = 0, 1: i = n, 2: j = 0, 3: j = m) to a point,
+             * like the Utah teapot's lid: that edge's planes are then exactly zero. */
+            for (i = 0; collapse < 4 && i <= n; i++)
+                for (j = 0; j <= m; j++) {
+                    int on = collapse == 0 ? i == 0 : collapse == 1 ? i == n : collapse == 2 ? j == 0 : j == m;
+                    int first = collapse < 2 ? i * (m + 1) : j;
+                    if (on)
+                        memcpy(set->cp[p * (size_t)r->K + (size_t)(i * (m + 1) + j)],
+                               set->cp[p * (size_t)r->K + (size_t)first], sizeof *set->cp);
                 }
         }
     }
@@ -165,18 +320,14 @@ static void mat_mul(double r[16], const double A[16], const double B[16])
         }
 }
 
-/* An OpenGL camera at E looking at C: M = Proj * View. The eye maps to (0, 0, Proj[2][3], 0),
- * but cross4 of transformed points is det(M) M^-T cross4, so the clip-space eye that keeps the
- * world-space classes is (0, 0, sign(det Proj) * Proj[2][3], 0) = (0, 0, -Proj[3][2] * |.|, 0). */
-static void camera(double M[16], double *alpha, const double E[3], const double C[3], double R)
+void kref_look_at(double V[16], const double E[3], const double C[3], int d3d)
 {
-    double f[3], up[3] = {0, 1, 0}, s[3], u[3], d = 0, len, V[16], P[16] = {0}, n, far;
+    double f[3], up[3] = {0, 1, 0}, s[3], u[3], d = 0, len;
     int c;
     for (c = 0; c < 3; c++)
         d += (C[c] - E[c]) * (C[c] - E[c]);
-    d = sqrt(d);
     for (c = 0; c < 3; c++)
-        f[c] = (C[c] - E[c]) / d;
+        f[c] = (C[c] - E[c]) / sqrt(d);
     if (fabs(f[1]) > 0.9) {
         up[0] = 1;
         up[1] = 0;
@@ -191,15 +342,27 @@ static void camera(double M[16], double *alpha, const double E[3], const double 
     u[1] = s[2] * f[0] - s[0] * f[2];
     u[2] = s[0] * f[1] - s[1] * f[0];
     for (c = 0; c < 3; c++) {
-        V[0 * 4 + c] = s[c];
-        V[1 * 4 + c] = u[c];
-        V[2 * 4 + c] = -f[c];
-        V[3 * 4 + c] = 0;
+        V[c] = d3d ? -s[c] : s[c]; /* x = -s keeps the rotation proper with z = +f */
+        V[4 + c] = u[c];
+        V[8 + c] = d3d ? f[c] : -f[c];
+        V[12 + c] = 0;
     }
-    V[3] = -(s[0] * E[0] + s[1] * E[1] + s[2] * E[2]);
-    V[7] = -(u[0] * E[0] + u[1] * E[1] + u[2] * E[2]);
-    V[11] = f[0] * E[0] + f[1] * E[1] + f[2] * E[2];
+    for (c = 0; c < 3; c++)
+        V[c * 4 + 3] = -(V[c * 4] * E[0] + V[c * 4 + 1] * E[1] + V[c * 4 + 2] * E[2]);
     V[15] = 1;
+}
+
+/* An OpenGL camera at E looking at C: M = Proj * View. The eye maps to (0, 0, Proj[2][3], 0),
+ * but cross4 of transformed points is det(M) M^-T cross4, so the clip-space eye that keeps the
+ * world-space classes is (0, 0, sign(det Proj) * Proj[2][3], 0) = (0, 0, -Proj[3][2] * |.|, 0). */
+static void camera(double M[16], double *alpha, const double E[3], const double C[3], double R)
+{
+    double V[16], P[16] = {0}, d = 0, n, far;
+    int c;
+    for (c = 0; c < 3; c++)
+        d += (C[c] - E[c]) * (C[c] - E[c]);
+    d = sqrt(d);
+    kref_look_at(V, E, C, 0);
     n = 0.5 * (d - R);
     far = d + 2 * R;
     P[0] = P[5] = 1 / tan(M_PI_6);
@@ -276,11 +439,18 @@ done:
     return sets;
 }
 
-/* cross4 of Appendix A in double, and the sum of |monomials| of each component. */
+/* cross4 of Appendix A in double, and the sum of |monomials| of each component. With two equal
+ * points it is exactly zero (t = mag = 0): a float evaluation without contracted multiply-adds
+ * gives exactly zero too, so such planes, e.g. along a collapsed edge, have bound 0. */
 static void cross4_mag(double t[4], double mag[4], const float *a, const float *b, const float *c)
 {
     static const int rows[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
     int o;
+    if (!memcmp(a, b, 4 * sizeof *a) || !memcmp(a, c, 4 * sizeof *a) || !memcmp(b, c, 4 * sizeof *b)) {
+        for (o = 0; o < 4; o++)
+            t[o] = mag[o] = 0;
+        return;
+    }
     for (o = 0; o < 4; o++) {
         int p = rows[o][0], q = rows[o][1], s = rows[o][2];
         double m1 = (double)a[p] * b[q] * c[s], m2 = (double)a[p] * b[s] * c[q];
@@ -347,14 +517,17 @@ void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const un
         int ambiguous = 0, want;
         kref_values(r, s, p, d, bound);
         for (i = 0; i < r->L; i++)
-            ambiguous |= fabs(d[i]) <= bound[i];
+            ambiguous |= bound[i] > 0 && fabs(d[i]) <= bound[i]; /* bound 0: exactly zero */
         want = kref_classify(d, r->L, r->rule);
         res->patches++;
         if (cls[p] > 2 || (!ambiguous && (int)cls[p] != want)) {
-            if (!res->class_bad++ && !res->first[0])
-                snprintf(res->first, sizeof res->first, "%s patch %zu: class %u, reference %s%s",
+            if (!res->class_bad++)
+                snprintf(res->first_class, sizeof res->first_class, "%s patch %zu: class %u, reference %s%s",
                          s->name, p, cls[p], names[want], ambiguous ? " (ambiguous)" : "");
         }
+        for (i = 0; i < r->L && !(bound[i] == 0 && d[i] == 0); i++)
+            ;
+        res->exact_zero += i < r->L;
         if (ambiguous)
             res->ambiguous++;
         else
@@ -365,8 +538,8 @@ void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const un
             if (bound[i] > 0)
                 res->worst = fmax(res->worst, e / bound[i]);
             if (!(e <= bound[i])) {
-                if (!res->value_bad++ && !res->first[0])
-                    snprintf(res->first, sizeof res->first,
+                if (!res->value_bad++)
+                    snprintf(res->first_value, sizeof res->first_value,
                              "%s patch %zu plane %d: %.9g, reference %.9g, bound %.3g", s->name, p,
                              i, got, d[i], bound[i]);
             }
@@ -382,11 +555,11 @@ int kref_report(const kref_result *res, const char *name)
     snprintf(label, sizeof label, "%s: %zu patches, classes agree with the double reference "
              "(%zu ambiguous within the bound)", name, res->patches, res->ambiguous);
     ok &= check(res->patches > 0 && res->class_bad == 0, label, "%zu wrong: %s", res->class_bad,
-                res->first);
+                res->first_class);
     if (res->values) {
         snprintf(label, sizeof label, "%s: %zu plane values within the float32 bound", name,
                  res->values);
-        ok &= check(res->value_bad == 0, label, "%zu off: %s", res->value_bad, res->first);
+        ok &= check(res->value_bad == 0, label, "%zu off: %s", res->value_bad, res->first_value);
     }
     if (res->patches >= 500) {
         snprintf(label, sizeof label, "%s: the patches include front, back and silhouette ones", name);
@@ -394,8 +567,8 @@ int kref_report(const kref_result *res, const char *name)
                     "front %zu, back %zu, silhouette %zu", res->counts[0], res->counts[1],
                     res->counts[2]);
     }
-    printf("# %s: front %zu, back %zu, silhouette %zu, ambiguous %zu, worst value error %.3g of "
-           "the bound\n", name, res->counts[0], res->counts[1], res->counts[2], res->ambiguous,
-           res->worst);
+    printf("# %s: front %zu, back %zu, silhouette %zu, ambiguous %zu, with exact zero planes %zu, "
+           "worst value error %.3g of the bound\n", name, res->counts[0], res->counts[1],
+           res->counts[2], res->ambiguous, res->exact_zero, res->worst);
     return ok;
 }

@@ -39,16 +39,51 @@ typedef struct {
     size_t value_bad;  /* planes whose value is off by more than the bound */
     size_t values;     /* plane values compared */
     size_t counts[3];  /* reference classes of the unambiguous patches: front, back, silhouette */
+    size_t exact_zero; /* patches with a plane that is exactly zero (a collapsed edge) */
     double worst;      /* largest |value - reference| / bound seen */
-    char first[256];   /* the first failure, for the report */
+    char first_class[256], first_value[256]; /* the first failures, for the report */
 } kref_result;
+
+/* The command line every host shares:
+ *   [FILE] [--kernel NAME] --degree N M --space clip|world --rule strict|degenerate
+ *   [--block-threads PQ --patches-per-block Q] [--planes] [--groups-x-constant]
+ *   (--random SETS COUNT SEED | --model PATH NEYES SEED)... --name LABEL */
+#define KREF_MAX_SOURCES 16
+typedef struct {
+    int is_model;
+    const char *path; /* model */
+    long nsets;       /* random: sets; model: eyes */
+    size_t count;     /* random: patches per set */
+    uint64_t seed;
+} kref_source;
+
+typedef struct {
+    const char *file, *kernel_name, *label; /* the kernel file, --kernel, --name */
+    int n, m;
+    kref_space space;
+    kref_rule rule;
+    size_t pq, q;                           /* --block-threads, --patches-per-block */
+    int planes, groups_x_constant;
+    int nsources;
+    kref_source src[KREF_MAX_SOURCES];
+} kref_args;
+
+/* What a host requires besides the degree, space, rule, a source and --name. */
+enum { KREF_NEED_FILE = 1, KREF_NEED_KERNEL = 2, KREF_NEED_BLOCK = 4 };
+
+/* Parses the shared command line into a; on a usage error prints one "not ok" line (with the
+ * host's name and usage) and returns 2, else 0. */
+int kref_parse_args(kref_args *a, int argc, char **argv, const char *host, unsigned need);
+/* The sets of one source (random or a model), or NULL after printing a "not ok" line. */
+kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char *label);
 
 /* Derives the table for the reference; 0 on success (messages go to err). */
 int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_error *err);
 void kref_clear(kref_ref *r);
 
 /* nsets sets of count random patches each (deterministic in seed): near-planar patches with
- * noise of varied size, and w != 1 (rational) in part of them, so that all three classes occur.
+ * noise of varied size, w != 1 (rational) in a third, one edge collapsed to a point in a quarter
+ * (exactly zero planes, where the rules differ), so that all three classes occur.
  * Returns an array of nsets sets, or NULL on failure. */
 kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed);
 /* One set per eye for a bicubic BEZ model (the format of ../shared/models): eyes uniform on
@@ -59,9 +94,13 @@ kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t 
 kref_set *kref_model_sets(const kref_ref *r, const char *path, int neyes, uint64_t seed,
                           ptp_error *err);
 void kref_free_sets(kref_set *sets, int nsets);
+/* A view matrix (row-major, a rotation and translation) putting the eye E at the origin, looking
+ * at C along -z (OpenGL, d3d == 0) or +z (Direct3D). */
+void kref_look_at(double V[16], const double E[3], const double C[3], int d3d);
 
 /* The reference value of every plane of patch p of s in double (d[L]) and its bound (bound[L]):
- * the largest error a float32 evaluation of the table may make. */
+ * the largest error a float32 evaluation of the table may make; bound 0 for an exact zero, which
+ * a kernel must reproduce exactly (it may not contract multiply-adds in cross4). */
 void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, double *bound);
 /* The class of values d[0..L-1] under rule (NaN makes a patch silhouette). */
 int kref_classify(const double *d, int L, kref_rule rule);
@@ -71,6 +110,7 @@ int kref_classify(const double *d, int L, kref_rule rule);
 void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const unsigned *cls,
                 const float *planes);
 /* Prints the check lines for res ("ok - NAME: ..." or "not ok - ..."); returns 1 if all passed.
+ * The caller's exit status must use it: check.h's failure count is per source file.
  * Also prints a "# " line with the counts (ambiguous patches, classes, worst value error). */
 int kref_report(const kref_result *res, const char *name);
 

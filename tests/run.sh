@@ -46,6 +46,20 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/test_cli.sh env PTPGEN=build/gcc/ptpgen PTPGEN_OTHER=build/clang/ptpgen bash tests/test_cli.sh
 fi
 
+# The hosts that execute emitted kernels (they need the OpenCL and Vulkan development files).
+for cc in $compilers; do
+    for h in libptptest.a host_opencl host_vulkan; do
+        if make -s CC=$cc build/$cc/$h >build/make-$cc-$h.log 2>&1; then
+            echo "ok - builds build/$cc/$h" | tee -a "$log"
+        else
+            echo "not ok - build of build/$cc/$h failed: $(grep -m1 -i error build/make-$cc-$h.log)" | tee -a "$log"
+        fi
+    done
+done
+if [ -x build/gcc/ptpgen ]; then
+    run tests/test_kernels.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_kernels.sh
+fi
+
 passed=$(grep -c '^ok - ' "$log")
 failed=$(grep -c '^not ok - ' "$log")
 echo "$passed passed, $failed failed"

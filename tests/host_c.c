@@ -1,0 +1,92 @@
+/* host_c.c: runs an emitted C header (--target c) over patch sets and checks it with kref.
+ * Built per header: cc -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix> -DUPFX=<PREFIX> ... */
+#include "check.h"
+#include "kref.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CAT2(a, b) a##b
+#define CAT(a, b) CAT2(a, b)
+#define FN(name) CAT(PFX, name)
+#define MACRO(name) CAT(UPFX, name)
+
+/* Runs the header's functions over one set and accumulates the three comparisons. */
+static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_result *res_classify,
+                   kref_result *res_batch, kref_result *res_planes)
+{
+    size_t p, L = (size_t)ref->L;
+    unsigned *cls = malloc(s->count * sizeof *cls);
+    unsigned char *batch = malloc(s->count);
+    float *d = malloc(s->count * L * sizeof *d), *dp = malloc(s->count * L * sizeof *dp);
+    float(*t)[4] = malloc(L * sizeof *t);
+    int batch_bad = 0;
+    for (p = 0; p < s->count; p++) {
+        const float(*cp)[4] = (const float(*)[4])s->cp + p * (size_t)ref->K;
+        size_t x;
+        cls[p] = FN(classify)(cp, s->eye);
+        FN(values)(cp, s->eye, d + p * L);
+        FN(planes)(cp, t);
+        for (x = 0; x < L; x++)
+            dp[p * L + x] = world ? s->eye[0] * t[x][0] + s->eye[1] * t[x][1] +
+                                        s->eye[2] * t[x][2] + s->eye[3] * t[x][3]
+                                  : s->eye[2] * t[x][2];
+    }
+    FN(classify_batch)((const float(*)[4])s->cp, s->count, s->eye, batch);
+    for (p = 0; p < s->count; p++)
+        batch_bad += batch[p] != cls[p];
+    kref_check(res_classify, ref, s, cls, d);
+    for (p = 0; p < s->count; p++)
+        cls[p] = batch[p];
+    kref_check(res_batch, ref, s, cls, NULL);
+    kref_check(res_planes, ref, s, cls, dp);
+    free(cls);
+    free(batch);
+    free(d);
+    free(dp);
+    free(t);
+    return batch_bad;
+}
+
+int main(int argc, char **argv)
+{
+    kref_result res_classify, res_batch, res_planes;
+    kref_args o;
+    kref_ref ref;
+    ptp_error err;
+    char label[200];
+    int si, i, batch_bad = 0, ok = 1;
+    if (kref_parse_args(&o, argc, argv, "host_c", 0))
+        return 2;
+    memset(&res_classify, 0, sizeof res_classify);
+    memset(&res_batch, 0, sizeof res_batch);
+    memset(&res_planes, 0, sizeof res_planes);
+    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
+        return !check(0, o.label, "%s", err.msg);
+    if (ref.K != MACRO(POINTS) || ref.L != MACRO(PLANES)) {
+        kref_clear(&ref);
+        return !check(0, o.label, "the header's bidegree differs from --degree");
+    }
+    for (si = 0; si < o.nsources; si++) {
+        kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);
+        if (!sets) {
+            kref_clear(&ref);
+            return 1;
+        }
+        for (i = 0; i < o.src[si].nsets; i++)
+            batch_bad += run_set(&ref, &sets[i], o.space == KREF_WORLD, &res_classify, &res_batch,
+                                 &res_planes);
+        kref_free_sets(sets, (int)o.src[si].nsets);
+    }
+    snprintf(label, sizeof label, "%s classify and values", o.label);
+    ok &= kref_report(&res_classify, label);
+    snprintf(label, sizeof label, "%s classify_batch", o.label);
+    ok &= kref_report(&res_batch, label);
+    snprintf(label, sizeof label, "%s classify_batch equals classify on every patch", o.label);
+    ok &= check(batch_bad == 0, label, "they differ on %d patches", batch_bad);
+    snprintf(label, sizeof label, "%s planes (dotted with the eye)", o.label);
+    ok &= kref_report(&res_planes, label);
+    kref_clear(&ref);
+    return check_exit() || !ok;
+}

@@ -1,0 +1,87 @@
+/* host_cuda.cu: runs an emitted CUDA kernel (--target cuda) over patch sets and checks it with kref.
+ * Built per kernel: nvcc -DKERNEL_FILE='"k.cu"' -DKERNEL=ptp_3x3_classify ...; runs where a GPU is. */
+extern "C" {
+#include "check.h"
+#include "kref.h"
+}
+#include KERNEL_FILE
+
+#include <cuda_runtime.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Runs the kernel over one set; 0 on success, else a "not ok" line was printed. */
+static int run_set(const kref_args *o, const kref_ref *ref, const kref_set *s, kref_result *res)
+{
+    size_t K = (size_t)ref->K, L = (size_t)ref->L, groups = (s->count + o->q - 1) / o->q;
+    size_t gx = groups < 65535 ? groups : 65535, gy = (groups + gx - 1) / gx;
+    unsigned *cls = (unsigned *)malloc(s->count * sizeof *cls);
+    float *planes = (float *)malloc(s->count * L * sizeof *planes);
+    float4 *d_cp = NULL, eye = make_float4(s->eye[0], s->eye[1], s->eye[2], s->eye[3]);
+    unsigned *d_cls = NULL;
+    float *d_planes = NULL;
+    cudaError_t e;
+    int ok = 0;
+    if (!cls || !planes)
+        goto done;
+    if ((e = cudaMalloc(&d_cp, s->count * K * sizeof *d_cp)) != cudaSuccess ||
+        (e = cudaMalloc(&d_cls, s->count * sizeof *d_cls)) != cudaSuccess ||
+        (o->planes && (e = cudaMalloc(&d_planes, s->count * L * sizeof *d_planes)) != cudaSuccess) ||
+        (e = cudaMemcpy(d_cp, s->cp, s->count * K * sizeof *d_cp, cudaMemcpyHostToDevice)) != cudaSuccess ||
+        (e = cudaMemset(d_cls, 0xFF, s->count * sizeof *d_cls)) != cudaSuccess) {
+        check(0, o->label, "%s: %s", s->name, cudaGetErrorString(e));
+        goto done;
+    }
+    KERNEL<<<dim3((unsigned)gx, (unsigned)gy), (unsigned)o->pq>>>(d_cp, d_cls, d_planes, eye,
+                                                                  (unsigned)s->count);
+    if ((e = cudaDeviceSynchronize()) != cudaSuccess || (e = cudaGetLastError()) != cudaSuccess ||
+        (e = cudaMemcpy(cls, d_cls, s->count * sizeof *cls, cudaMemcpyDeviceToHost)) != cudaSuccess ||
+        (o->planes &&
+         (e = cudaMemcpy(planes, d_planes, s->count * L * sizeof *planes, cudaMemcpyDeviceToHost)) !=
+             cudaSuccess)) {
+        check(0, o->label, "%s: %s", s->name, cudaGetErrorString(e));
+        goto done;
+    }
+    kref_check(res, ref, s, cls, o->planes ? planes : NULL);
+    ok = 1;
+done:
+    cudaFree(d_cp);
+    cudaFree(d_cls);
+    cudaFree(d_planes);
+    free(cls);
+    free(planes);
+    return !ok;
+}
+
+int main(int argc, char **argv)
+{
+    kref_args o;
+    kref_ref ref;
+    kref_result res;
+    ptp_error err;
+    int ndev = 0, si, i, failed = 0;
+    if (kref_parse_args(&o, argc, argv, "host_cuda", KREF_NEED_BLOCK))
+        return 2;
+    if (cudaGetDeviceCount(&ndev) != cudaSuccess || ndev == 0) {
+        printf("# %s: no CUDA device here: built, not run\n", o.label);
+        return 0;
+    }
+    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
+        return !check(0, o.label, "%s", err.msg);
+    memset(&res, 0, sizeof res);
+    for (si = 0; si < o.nsources && !failed; si++) {
+        kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);
+        if (!sets) {
+            failed = 1;
+            break;
+        }
+        for (i = 0; i < o.src[si].nsets && !failed; i++)
+            failed = run_set(&o, &ref, &sets[i], &res);
+        kref_free_sets(sets, (int)o.src[si].nsets);
+    }
+    if (!failed)
+        failed = !kref_report(&res, o.label);
+    kref_clear(&ref);
+    return failed || check_exit();
+}

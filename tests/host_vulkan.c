@@ -1,0 +1,866 @@
+/* host_vulkan.c: runs one compiled SPIR-V compute kernel (GLSL or HLSL) over patch sets with
+ * Vulkan 1.0 (lavapipe in the tests), checking every class (and, with --planes, every plane
+ * value) against the double reference of kref.
+ *
+ *   host_vulkan SPV --degree N M --space clip|world --rule strict|degenerate
+ *               --block-threads PQ --patches-per-block Q [--planes] [--groups-x-constant]
+ *               [--random SETS COUNT SEED] [--model PATH NEYES SEED] --name LABEL
+ *
+ * Kernel contract: entry point "main"; std430 storage buffers in set 0: binding 0 the control
+ * points (readonly vec4[], point k of patch p at p*K + k), binding 1 the classes (uint[], one per
+ * patch), binding 2 the plane values (float[], d[p*L + i]) only with --planes. One 32-byte
+ * push-constant range: { vec4 eye; uint patch_count; uint groups_x; 8 bytes padding }, of which
+ * GLSL kernels declare eye and patch_count and HLSL kernels also groups_x (--groups-x-constant
+ * says so; the host fills groups_x either way). Workgroups of PQ invocations along x, each
+ * handling the Q patches of block gl_WorkGroupID.y * groups_x + gl_WorkGroupID.x; the host
+ * dispatches ceil(count/Q) groups as (gx, gy), gx = min(groups, 65535), gy = ceil(groups/gx),
+ * groups_x = gx. Invocations past patch_count write nothing.
+ *
+ * The module is checked first: a GLCompute entry point "main", its LocalSize (PQ, 1, 1), and
+ * no resource outside set 0 bindings 0..1 (0..2 with --planes). Sets whose buffers would exceed
+ * one storage buffer (128 MiB, lavapipe's limit, or the device's maxStorageBufferRange) run in
+ * chunks of patches, one dispatch each with patch_count = the chunk size.
+ *
+ * Output: "# device: ...", kref_report's lines, and one check that the kernel wrote nothing
+ * past patch_count (the classes and values buffers are filled with 0xFFFFFFFF before every
+ * dispatch and reach past the chunk as far as its last workgroup does; the part past the chunk
+ * must come back untouched; unwritten classes in the chunk are caught by kref_check). --random
+ * and --model may each be given more than once; at least one is required. Any setup failure is
+ * one "not ok - LABEL: reason" line. Exit status 0 only when every check passed. */
+#define _POSIX_C_SOURCE 200809L
+
+#include "check.h"
+#include "kref.h"
+
+#include <vulkan/vulkan.h>
+
+#include <errno.h>
+#include <inttypes.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+/* The largest storage buffer the host creates (lavapipe's limit); compile with
+ * -DHOST_MAX_BUFFER=... to exercise chunking with small sets. */
+#ifndef HOST_MAX_BUFFER
+#define HOST_MAX_BUFFER ((VkDeviceSize)128 << 20)
+#endif
+/* The largest group count along x of one dispatch (lavapipe's limit; lowered with
+ * -DHOST_MAX_GROUPS_X=... to exercise 2-D dispatches with small sets). */
+#ifndef HOST_MAX_GROUPS_X
+#define HOST_MAX_GROUPS_X 65535u
+#endif
+/* How long one dispatch may take before the run is declared hung. */
+#define HOST_FENCE_TIMEOUT_NS (600ull * 1000000000ull)
+/* The push-constant block: eye, patch_count, groups_x, padding. */
+#define HOST_PUSH_BYTES 32u
+/* The classes and plane values buffers are filled with this before every dispatch. */
+#define HOST_UNWRITTEN 0xFFFFFFFFu
+
+/* ---- errors ---- */
+
+static const char *vk_result_str(VkResult r)
+{
+    switch (r) {
+    case VK_SUCCESS: return "VK_SUCCESS";
+    case VK_NOT_READY: return "VK_NOT_READY";
+    case VK_TIMEOUT: return "VK_TIMEOUT";
+    case VK_INCOMPLETE: return "VK_INCOMPLETE";
+    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
+    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
+    case VK_ERROR_MEMORY_MAP_FAILED: return "VK_ERROR_MEMORY_MAP_FAILED";
+    case VK_ERROR_LAYER_NOT_PRESENT: return "VK_ERROR_LAYER_NOT_PRESENT";
+    case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
+    case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
+    case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER (no Vulkan driver)";
+    case VK_ERROR_TOO_MANY_OBJECTS: return "VK_ERROR_TOO_MANY_OBJECTS";
+    case VK_ERROR_FORMAT_NOT_SUPPORTED: return "VK_ERROR_FORMAT_NOT_SUPPORTED";
+    case VK_ERROR_FRAGMENTED_POOL: return "VK_ERROR_FRAGMENTED_POOL";
+    default: return "unknown VkResult";
+    }
+}
+
+/* Formats a message into err (size HOST_ERRSZ); returns -1. */
+#define HOST_ERRSZ 512
+static int fail(char *err, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+static int fail(char *err, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, HOST_ERRSZ, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+#define VK_TRY(call, what)                                                                     \
+    do {                                                                                       \
+        VkResult vk_try_r = (call);                                                            \
+        if (vk_try_r != VK_SUCCESS)                                                            \
+            return fail(err, "%s failed: %s (%d)", (what), vk_result_str(vk_try_r),            \
+                        (int)vk_try_r);                                                        \
+    } while (0)
+
+/* ---- the SPIR-V module ---- */
+
+typedef struct {
+    uint32_t *words;
+    size_t nwords;
+} spirv;
+
+static int spv_read(spirv *s, const char *path, char *err)
+{
+    FILE *f = fopen(path, "rb");
+    size_t cap = 1 << 16, len = 0;
+    unsigned char *buf;
+    s->words = NULL;
+    s->nwords = 0;
+    if (!f)
+        return fail(err, "cannot open %s: %s", path, strerror(errno));
+    buf = malloc(cap);
+    for (;;) {
+        size_t got;
+        if (!buf) {
+            fclose(f);
+            return fail(err, "out of memory reading %s", path);
+        }
+        got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        if (len < cap) {
+            if (ferror(f)) {
+                free(buf);
+                fclose(f);
+                return fail(err, "cannot read %s", path);
+            }
+            break;
+        }
+        {
+            unsigned char *nb = realloc(buf, cap * 2);
+            if (!nb)
+                free(buf);
+            buf = nb;
+            cap *= 2;
+        }
+    }
+    fclose(f);
+    if (len < 20 || len % 4) {
+        free(buf);
+        return fail(err, "%s is not SPIR-V (%zu bytes)", path, len);
+    }
+    s->nwords = len / 4;
+    s->words = malloc(len);
+    if (!s->words) {
+        free(buf);
+        return fail(err, "out of memory reading %s", path);
+    }
+    memcpy(s->words, buf, len);
+    free(buf);
+    if (s->words[0] != 0x07230203u) {
+        uint32_t magic = s->words[0];
+        free(s->words);
+        s->words = NULL;
+        return fail(err, "%s is not SPIR-V (magic 0x%08" PRIx32 ")", path, magic);
+    }
+    return 0;
+}
+
+/* What the host checks in the module before creating the pipeline. */
+typedef struct {
+    int has_main;        /* a GLCompute entry point named "main" */
+    int has_local_size;  /* an OpExecutionMode LocalSize for it */
+    uint32_t local_size[3];
+    int nbindings;       /* storage resources found (Binding decorations) */
+    uint32_t binding[16], set[16];
+} spv_info;
+
+static int spv_scan(const spirv *s, spv_info *info, char *err)
+{
+    enum {
+        OP_ENTRY_POINT = 15, OP_EXECUTION_MODE = 16, OP_DECORATE = 71,
+        MODEL_GLCOMPUTE = 5, MODE_LOCAL_SIZE = 17, DEC_BINDING = 33, DEC_SET = 34
+    };
+    uint32_t main_id = 0;
+    uint32_t set_ids[16], set_vals[16];
+    int nsets = 0;
+    memset(info, 0, sizeof *info);
+    /* pass 1: entry point, bindings */
+    for (size_t i = 5; i < s->nwords;) {
+        uint32_t w = s->words[i], wc = w >> 16, op = w & 0xFFFFu;
+        if (wc == 0 || i + wc > s->nwords)
+            return fail(err, "malformed SPIR-V (instruction at word %zu)", i);
+        if (op == OP_ENTRY_POINT && wc >= 4 && s->words[i + 1] == MODEL_GLCOMPUTE) {
+            const char *name = (const char *)&s->words[i + 3];
+            size_t maxlen = (wc - 3) * 4;
+            if (memchr(name, '\0', maxlen) && !strcmp(name, "main")) {
+                info->has_main = 1;
+                main_id = s->words[i + 2];
+            }
+        } else if (op == OP_DECORATE && wc >= 4 && s->words[i + 2] == DEC_BINDING) {
+            if (info->nbindings < 16) {
+                info->binding[info->nbindings] = s->words[i + 3];
+                info->set[info->nbindings] = s->words[i + 1]; /* the id for now */
+                info->nbindings++;
+            }
+        } else if (op == OP_DECORATE && wc >= 4 && s->words[i + 2] == DEC_SET) {
+            if (nsets < 16) {
+                set_ids[nsets] = s->words[i + 1];
+                set_vals[nsets] = s->words[i + 3];
+                nsets++;
+            }
+        }
+        i += wc;
+    }
+    /* resolve the descriptor set of every binding (no DescriptorSet decoration means set 0) */
+    for (int b = 0; b < info->nbindings; b++) {
+        uint32_t id = info->set[b];
+        info->set[b] = 0;
+        for (int k = 0; k < nsets; k++)
+            if (set_ids[k] == id)
+                info->set[b] = set_vals[k];
+    }
+    /* pass 2: the local size of main */
+    for (size_t i = 5; info->has_main && i < s->nwords;) {
+        uint32_t w = s->words[i], wc = w >> 16, op = w & 0xFFFFu;
+        if (op == OP_EXECUTION_MODE && wc >= 6 && s->words[i + 1] == main_id &&
+            s->words[i + 2] == MODE_LOCAL_SIZE) {
+            info->has_local_size = 1;
+            info->local_size[0] = s->words[i + 3];
+            info->local_size[1] = s->words[i + 4];
+            info->local_size[2] = s->words[i + 5];
+        }
+        i += wc;
+    }
+    return 0;
+}
+
+/* ---- Vulkan ---- */
+
+typedef struct {
+    VkBuffer buf;
+    VkDeviceMemory mem;
+    void *map;
+    VkDeviceSize size;
+} hbuf;
+
+typedef struct {
+    VkInstance inst;
+    VkPhysicalDevice phys;
+    VkPhysicalDeviceProperties props;
+    VkPhysicalDeviceMemoryProperties memprops;
+    uint32_t qfam;
+    VkDevice dev;
+    VkQueue queue;
+    VkShaderModule shader;
+    VkDescriptorSetLayout dsl;
+    VkPipelineLayout layout;
+    VkPipeline pipe;
+    VkDescriptorPool dpool;
+    VkDescriptorSet dset;
+    VkCommandPool cpool;
+    VkCommandBuffer cmd;
+    VkFence fence;
+    int nbindings;  /* 2, or 3 with --planes */
+    hbuf bufs[3];   /* control points, classes, plane values */
+    size_t cap;     /* patches the control point buffer holds (0: no buffers yet) */
+    int hung;     /* a dispatch did not finish: do not wait for the device when cleaning up */
+} vkctx;
+
+static int vk_setup_device(vkctx *v, char *err)
+{
+    VkApplicationInfo app;
+    VkInstanceCreateInfo ici;
+    VkPhysicalDevice *devs;
+    uint32_t ndev = 0;
+    VkResult r;
+
+    memset(&app, 0, sizeof app);
+    app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
+    app.pApplicationName = "ptpgen host_vulkan";
+    app.pEngineName = "ptpgen";
+    app.apiVersion = VK_API_VERSION_1_0;
+    memset(&ici, 0, sizeof ici);
+    ici.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+    ici.pApplicationInfo = &app;
+    VK_TRY(vkCreateInstance(&ici, NULL, &v->inst), "vkCreateInstance");
+
+    VK_TRY(vkEnumeratePhysicalDevices(v->inst, &ndev, NULL), "vkEnumeratePhysicalDevices");
+    if (ndev == 0)
+        return fail(err, "no Vulkan device");
+    devs = malloc(ndev * sizeof *devs);
+    if (!devs)
+        return fail(err, "out of memory");
+    r = vkEnumeratePhysicalDevices(v->inst, &ndev, devs);
+    if (r != VK_SUCCESS && r != VK_INCOMPLETE) {
+        free(devs);
+        return fail(err, "vkEnumeratePhysicalDevices failed: %s", vk_result_str(r));
+    }
+    for (uint32_t d = 0; d < ndev && !v->phys; d++) {
+        uint32_t nq = 0;
+        VkQueueFamilyProperties *qp;
+        vkGetPhysicalDeviceQueueFamilyProperties(devs[d], &nq, NULL);
+        qp = malloc((nq ? nq : 1) * sizeof *qp);
+        if (!qp) {
+            free(devs);
+            return fail(err, "out of memory");
+        }
+        vkGetPhysicalDeviceQueueFamilyProperties(devs[d], &nq, qp);
+        for (uint32_t q = 0; q < nq; q++)
+            if ((qp[q].queueFlags & VK_QUEUE_COMPUTE_BIT) && qp[q].queueCount > 0) {
+                v->phys = devs[d];
+                v->qfam = q;
+                break;
+            }
+        free(qp);
+    }
+    free(devs);
+    if (!v->phys)
+        return fail(err, "no Vulkan device with a compute queue (%" PRIu32 " devices)", ndev);
+    vkGetPhysicalDeviceProperties(v->phys, &v->props);
+    vkGetPhysicalDeviceMemoryProperties(v->phys, &v->memprops);
+    printf("# device: %s (Vulkan %u.%u.%u, driver 0x%08" PRIx32 ")\n", v->props.deviceName,
+           VK_VERSION_MAJOR(v->props.apiVersion), VK_VERSION_MINOR(v->props.apiVersion),
+           VK_VERSION_PATCH(v->props.apiVersion), v->props.driverVersion);
+    fflush(stdout);
+
+    {
+        float prio = 1.0f;
+        VkDeviceQueueCreateInfo qci;
+        VkDeviceCreateInfo dci;
+        memset(&qci, 0, sizeof qci);
+        qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+        qci.queueFamilyIndex = v->qfam;
+        qci.queueCount = 1;
+        qci.pQueuePriorities = &prio;
+        memset(&dci, 0, sizeof dci);
+        dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+        dci.queueCreateInfoCount = 1;
+        dci.pQueueCreateInfos = &qci;
+        VK_TRY(vkCreateDevice(v->phys, &dci, NULL, &v->dev), "vkCreateDevice");
+    }
+    vkGetDeviceQueue(v->dev, v->qfam, 0, &v->queue);
+    return 0;
+}
+
+static int vk_setup_pipeline(vkctx *v, const spirv *code, int nbindings, char *err)
+{
+    VkDescriptorSetLayoutBinding b[3];
+    {
+        VkShaderModuleCreateInfo smci;
+        memset(&smci, 0, sizeof smci);
+        smci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+        smci.codeSize = code->nwords * 4;
+        smci.pCode = code->words;
+        VK_TRY(vkCreateShaderModule(v->dev, &smci, NULL, &v->shader), "vkCreateShaderModule");
+    }
+    {
+        VkDescriptorSetLayoutCreateInfo dslci;
+        memset(b, 0, sizeof b);
+        for (int i = 0; i < nbindings; i++) {
+            b[i].binding = (uint32_t)i;
+            b[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            b[i].descriptorCount = 1;
+            b[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+        }
+        memset(&dslci, 0, sizeof dslci);
+        dslci.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+        dslci.bindingCount = (uint32_t)nbindings;
+        dslci.pBindings = b;
+        VK_TRY(vkCreateDescriptorSetLayout(v->dev, &dslci, NULL, &v->dsl),
+               "vkCreateDescriptorSetLayout");
+    }
+    {
+        VkPushConstantRange pcr;
+        VkPipelineLayoutCreateInfo plci;
+        if (v->props.limits.maxPushConstantsSize < HOST_PUSH_BYTES)
+            return fail(err, "device allows only %" PRIu32 " bytes of push constants",
+                        v->props.limits.maxPushConstantsSize);
+        pcr.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+        pcr.offset = 0;
+        pcr.size = HOST_PUSH_BYTES;
+        memset(&plci, 0, sizeof plci);
+        plci.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+        plci.setLayoutCount = 1;
+        plci.pSetLayouts = &v->dsl;
+        plci.pushConstantRangeCount = 1;
+        plci.pPushConstantRanges = &pcr;
+        VK_TRY(vkCreatePipelineLayout(v->dev, &plci, NULL, &v->layout), "vkCreatePipelineLayout");
+    }
+    {
+        VkComputePipelineCreateInfo cpci;
+        memset(&cpci, 0, sizeof cpci);
+        cpci.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+        cpci.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+        cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+        cpci.stage.module = v->shader;
+        cpci.stage.pName = "main";
+        cpci.layout = v->layout;
+        VK_TRY(vkCreateComputePipelines(v->dev, VK_NULL_HANDLE, 1, &cpci, NULL, &v->pipe),
+               "vkCreateComputePipelines");
+    }
+    {
+        VkDescriptorPoolSize ps;
+        VkDescriptorPoolCreateInfo dpci;
+        VkDescriptorSetAllocateInfo dsai;
+        ps.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        ps.descriptorCount = (uint32_t)nbindings;
+        memset(&dpci, 0, sizeof dpci);
+        dpci.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+        dpci.maxSets = 1;
+        dpci.poolSizeCount = 1;
+        dpci.pPoolSizes = &ps;
+        VK_TRY(vkCreateDescriptorPool(v->dev, &dpci, NULL, &v->dpool), "vkCreateDescriptorPool");
+        memset(&dsai, 0, sizeof dsai);
+        dsai.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+        dsai.descriptorPool = v->dpool;
+        dsai.descriptorSetCount = 1;
+        dsai.pSetLayouts = &v->dsl;
+        VK_TRY(vkAllocateDescriptorSets(v->dev, &dsai, &v->dset), "vkAllocateDescriptorSets");
+    }
+    {
+        VkCommandPoolCreateInfo cpi;
+        VkCommandBufferAllocateInfo cbai;
+        VkFenceCreateInfo fci;
+        memset(&cpi, 0, sizeof cpi);
+        cpi.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+        cpi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+        cpi.queueFamilyIndex = v->qfam;
+        VK_TRY(vkCreateCommandPool(v->dev, &cpi, NULL, &v->cpool), "vkCreateCommandPool");
+        memset(&cbai, 0, sizeof cbai);
+        cbai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+        cbai.commandPool = v->cpool;
+        cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        cbai.commandBufferCount = 1;
+        VK_TRY(vkAllocateCommandBuffers(v->dev, &cbai, &v->cmd), "vkAllocateCommandBuffers");
+        memset(&fci, 0, sizeof fci);
+        fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+        VK_TRY(vkCreateFence(v->dev, &fci, NULL, &v->fence), "vkCreateFence");
+    }
+    return 0;
+}
+
+/* Creates a host-visible, coherent, mapped storage buffer of size bytes. */
+static int vk_buffer(vkctx *v, hbuf *h, VkDeviceSize size, const char *what, char *err)
+{
+    VkBufferCreateInfo bci;
+    VkMemoryRequirements req;
+    VkMemoryAllocateInfo mai;
+    const VkMemoryPropertyFlags want =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    uint32_t type = UINT32_MAX;
+
+    memset(&bci, 0, sizeof bci);
+    bci.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+    bci.size = size;
+    bci.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VK_TRY(vkCreateBuffer(v->dev, &bci, NULL, &h->buf), "vkCreateBuffer");
+    vkGetBufferMemoryRequirements(v->dev, h->buf, &req);
+    for (uint32_t t = 0; t < v->memprops.memoryTypeCount; t++)
+        if ((req.memoryTypeBits & (1u << t)) &&
+            (v->memprops.memoryTypes[t].propertyFlags & want) == want) {
+            type = t;
+            break;
+        }
+    if (type == UINT32_MAX)
+        return fail(err, "no host-visible coherent memory for the %s buffer", what);
+    memset(&mai, 0, sizeof mai);
+    mai.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+    mai.allocationSize = req.size;
+    mai.memoryTypeIndex = type;
+    {
+        VkResult r = vkAllocateMemory(v->dev, &mai, NULL, &h->mem);
+        if (r != VK_SUCCESS)
+            return fail(err, "vkAllocateMemory of %llu bytes for the %s buffer failed: %s",
+                        (unsigned long long)req.size, what, vk_result_str(r));
+    }
+    VK_TRY(vkBindBufferMemory(v->dev, h->buf, h->mem, 0), "vkBindBufferMemory");
+    VK_TRY(vkMapMemory(v->dev, h->mem, 0, VK_WHOLE_SIZE, 0, &h->map), "vkMapMemory");
+    h->size = size;
+    return 0;
+}
+
+static void vk_free_buffers(vkctx *v)
+{
+    for (int i = 0; i < 3; i++) {
+        if (v->bufs[i].map)
+            vkUnmapMemory(v->dev, v->bufs[i].mem);
+        if (v->bufs[i].buf)
+            vkDestroyBuffer(v->dev, v->bufs[i].buf, NULL);
+        if (v->bufs[i].mem)
+            vkFreeMemory(v->dev, v->bufs[i].mem, NULL);
+        memset(&v->bufs[i], 0, sizeof v->bufs[i]);
+    }
+    v->cap = 0;
+}
+
+static void vk_teardown(vkctx *v)
+{
+    if (v->dev) {
+        if (v->hung)
+            return; /* destroying objects in use is invalid; leave them to process exit */
+        vkDeviceWaitIdle(v->dev);
+        vk_free_buffers(v);
+        if (v->fence)
+            vkDestroyFence(v->dev, v->fence, NULL);
+        if (v->cpool)
+            vkDestroyCommandPool(v->dev, v->cpool, NULL);
+        if (v->dpool)
+            vkDestroyDescriptorPool(v->dev, v->dpool, NULL);
+        if (v->pipe)
+            vkDestroyPipeline(v->dev, v->pipe, NULL);
+        if (v->layout)
+            vkDestroyPipelineLayout(v->dev, v->layout, NULL);
+        if (v->dsl)
+            vkDestroyDescriptorSetLayout(v->dev, v->dsl, NULL);
+        if (v->shader)
+            vkDestroyShaderModule(v->dev, v->shader, NULL);
+        vkDestroyDevice(v->dev, NULL);
+    }
+    if (v->inst)
+        vkDestroyInstance(v->inst, NULL);
+    memset(v, 0, sizeof *v);
+}
+
+/* Runs the kernel over patches [0, n) already in the control point buffer. */
+static int vk_run(vkctx *v, const float eye[4], uint32_t n, uint32_t gx, uint32_t gy,
+                  char *err)
+{
+    unsigned char push[HOST_PUSH_BYTES];
+    uint32_t pc[2];
+    VkCommandBufferBeginInfo cbbi;
+    VkMemoryBarrier mb;
+    VkSubmitInfo si;
+    VkResult r;
+
+    memset(push, 0, sizeof push);
+    memcpy(push, eye, 16);
+    pc[0] = n;  /* patch_count, offset 16 */
+    pc[1] = gx; /* groups_x, offset 20 */
+    memcpy(push + 16, pc, sizeof pc);
+
+    VK_TRY(vkResetCommandBuffer(v->cmd, 0), "vkResetCommandBuffer");
+    memset(&cbbi, 0, sizeof cbbi);
+    cbbi.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    cbbi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_TRY(vkBeginCommandBuffer(v->cmd, &cbbi), "vkBeginCommandBuffer");
+    vkCmdBindPipeline(v->cmd, VK_PIPELINE_BIND_POINT_COMPUTE, v->pipe);
+    vkCmdBindDescriptorSets(v->cmd, VK_PIPELINE_BIND_POINT_COMPUTE, v->layout, 0, 1, &v->dset,
+                            0, NULL);
+    vkCmdPushConstants(v->cmd, v->layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, HOST_PUSH_BYTES, push);
+    vkCmdDispatch(v->cmd, gx, gy, 1);
+    /* make the shader's writes visible to the host reads after the fence */
+    memset(&mb, 0, sizeof mb);
+    mb.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+    mb.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    mb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(v->cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                         0, 1, &mb, 0, NULL, 0, NULL);
+    VK_TRY(vkEndCommandBuffer(v->cmd), "vkEndCommandBuffer");
+
+    memset(&si, 0, sizeof si);
+    si.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &v->cmd;
+    VK_TRY(vkQueueSubmit(v->queue, 1, &si, v->fence), "vkQueueSubmit");
+    r = vkWaitForFences(v->dev, 1, &v->fence, VK_TRUE, HOST_FENCE_TIMEOUT_NS);
+    if (r != VK_SUCCESS) {
+        v->hung = 1;
+        return fail(err, "the dispatch (%" PRIu32 " x %" PRIu32 " groups) did not finish: %s",
+                    gx, gy, vk_result_str(r));
+    }
+    VK_TRY(vkResetFences(v->dev, 1, &v->fence), "vkResetFences");
+    return 0;
+}
+
+/* ---- running the sets ---- */
+
+/* The dispatch of count patches: groups = ceil(count / q) laid out as gx * gy. */
+static void dispatch_shape(size_t count, size_t q, uint64_t max_x, uint64_t *gx, uint64_t *gy)
+{
+    uint64_t groups = (count + q - 1) / q;
+    *gx = groups < max_x ? groups : max_x;
+    if (*gx == 0)
+        *gx = 1;
+    *gy = (groups + *gx - 1) / *gx;
+    if (*gy == 0)
+        *gy = 1;
+}
+
+/* What limits a chunk: the largest buffer and dispatch. */
+typedef struct {
+    uint64_t max_bytes; /* of one storage buffer */
+    uint64_t max_x;     /* groups along x */
+    size_t chunk;       /* the most patches of one dispatch */
+} limits;
+
+/* Makes the buffers hold a chunk of n patches: control points exactly; classes and plane
+ * values as far as the dispatch of n patches reaches (and the buffer limit allows), so that
+ * writes past patch_count land in them and are seen. Rebinds the descriptors if it grows. */
+static int ensure_buffers(vkctx *v, const kref_args *o, const limits *lim, size_t K, size_t L,
+                          size_t n, char *err)
+{
+    uint64_t gx, gy, cover, ncls, npl;
+    if (n <= v->cap)
+        return 0;
+    vk_free_buffers(v);
+    dispatch_shape(n, o->q, lim->max_x, &gx, &gy);
+    cover = gx * gy * o->q;
+    ncls = cover < lim->max_bytes / 4 ? cover : lim->max_bytes / 4;
+    npl = cover < lim->max_bytes / (4 * L) ? cover : lim->max_bytes / (4 * L);
+    if (vk_buffer(v, &v->bufs[0], (VkDeviceSize)n * K * 16, "control point", err) ||
+        vk_buffer(v, &v->bufs[1], ncls * 4, "class", err) ||
+        (o->planes && vk_buffer(v, &v->bufs[2], npl * L * 4, "plane value", err)))
+        return -1;
+    v->cap = n;
+    {
+        VkDescriptorBufferInfo dbi[3];
+        VkWriteDescriptorSet w[3];
+        memset(w, 0, sizeof w);
+        for (int i = 0; i < v->nbindings; i++) {
+            dbi[i].buffer = v->bufs[i].buf;
+            dbi[i].offset = 0;
+            dbi[i].range = VK_WHOLE_SIZE;
+            w[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+            w[i].dstSet = v->dset;
+            w[i].dstBinding = (uint32_t)i;
+            w[i].descriptorCount = 1;
+            w[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            w[i].pBufferInfo = &dbi[i];
+        }
+        vkUpdateDescriptorSets(v->dev, (uint32_t)v->nbindings, w, 0, NULL);
+    }
+    return 0;
+}
+
+static double now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec / 1e6;
+}
+
+/* Tallies writes past patch_count (kref_check itself catches classes left unwritten). */
+typedef struct {
+    size_t bad;      /* 32-bit words written past patch_count */
+    size_t guarded;  /* words past patch_count checked */
+    size_t dispatches;
+    double ms;       /* in dispatches, waiting included */
+    char first[300];
+} tally;
+
+static void stray(tally *t, const char *set, const char *what, size_t index, size_t n)
+{
+    if (!t->bad++)
+        snprintf(t->first, sizeof t->first, "%.80s: %s %zu of a %zu-patch dispatch", set, what,
+                 index, n);
+}
+
+/* Runs one set chunk by chunk into cls (and planes) and checks it; 0 or -1 (message in err). */
+static int run_set(vkctx *v, const kref_args *o, const limits *lim, const kref_ref *ref,
+                   const kref_set *s, unsigned *cls, float *planes, kref_result *res, tally *t,
+                   char *err)
+{
+    size_t K = (size_t)ref->K, L = (size_t)ref->L;
+    if (s->K != ref->K)
+        return fail(err, "%s: %d points per patch, the reference has %d", s->name, s->K, ref->K);
+    for (size_t off = 0; off < s->count;) {
+        size_t n = s->count - off < lim->chunk ? s->count - off : lim->chunk, ncls;
+        uint64_t gx, gy;
+        const uint32_t *rc;
+        double t0;
+        if (ensure_buffers(v, o, lim, K, L, n, err))
+            return -1;
+        dispatch_shape(n, o->q, lim->max_x, &gx, &gy);
+        memcpy(v->bufs[0].map, s->cp + off * K, n * K * 16);
+        memset(v->bufs[1].map, 0xFF, (size_t)v->bufs[1].size);
+        if (o->planes)
+            memset(v->bufs[2].map, 0xFF, (size_t)v->bufs[2].size);
+        t0 = now_ms();
+        if (vk_run(v, s->eye, (uint32_t)n, (uint32_t)gx, (uint32_t)gy, err)) {
+            size_t len = strlen(err);
+            snprintf(err + len, HOST_ERRSZ - len, " (%.80s, patches %zu..%zu)", s->name, off,
+                     off + n - 1);
+            return -1;
+        }
+        t->ms += now_ms() - t0;
+        t->dispatches++;
+        rc = v->bufs[1].map;
+        ncls = (size_t)(v->bufs[1].size / 4);
+        memcpy(cls + off, rc, n * sizeof *cls);
+        for (size_t p = n; p < ncls; p++, t->guarded++)
+            if (rc[p] != HOST_UNWRITTEN)
+                stray(t, s->name, "class written at patch", p, n);
+        if (o->planes) {
+            const uint32_t *rp = v->bufs[2].map;
+            size_t npl = (size_t)(v->bufs[2].size / 4);
+            memcpy(planes + off * L, rp, n * L * sizeof *planes);
+            for (size_t x = n * L; x < npl; x++, t->guarded++)
+                if (rp[x] != HOST_UNWRITTEN)
+                    stray(t, s->name, "plane value written at index", x, n);
+        }
+        off += n;
+    }
+    kref_check(res, ref, s, cls, planes);
+    return 0;
+}
+
+/* ---- main ---- */
+
+int main(int argc, char **argv)
+{
+    kref_args o;
+    char msg[HOST_ERRSZ];
+    ptp_error perr;
+    kref_ref ref;
+    kref_result res;
+    tally t;
+    limits lim;
+    spirv code = {NULL, 0};
+    spv_info info;
+    vkctx v;
+    unsigned *cls = NULL;
+    float *planes = NULL;
+    size_t K, L, have = 0, total = 0;
+    int have_ref = 0, nsets_total = 0, ok = 0;
+
+    if (kref_parse_args(&o, argc, argv, "host_vulkan", KREF_NEED_FILE | KREF_NEED_BLOCK))
+        return 2;
+    memset(&v, 0, sizeof v);
+    memset(&res, 0, sizeof res);
+    memset(&t, 0, sizeof t);
+    memset(&perr, 0, sizeof perr);
+
+#define SETUP_FAIL(...)                                                                        \
+    do {                                                                                       \
+        check(0, o.label, __VA_ARGS__);                                                        \
+        goto done;                                                                             \
+    } while (0)
+
+    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &perr))
+        SETUP_FAIL("kref_init(%dx%d): %s", o.n, o.m, perr.msg);
+    have_ref = 1;
+    K = (size_t)ref.K;
+    L = (size_t)ref.L;
+
+    /* the module: an entry point main, its workgroup size, its bindings */
+    if (spv_read(&code, o.file, msg) || spv_scan(&code, &info, msg))
+        SETUP_FAIL("%s", msg);
+    if (!info.has_main)
+        SETUP_FAIL("%s has no GLCompute entry point named main", o.file);
+    if (info.has_local_size && (info.local_size[0] != o.pq || info.local_size[1] != 1 ||
+                                info.local_size[2] != 1))
+        SETUP_FAIL("%s has workgroup size (%" PRIu32 ", %" PRIu32 ", %" PRIu32
+                   "), --block-threads is %zu",
+                   o.file, info.local_size[0], info.local_size[1], info.local_size[2], o.pq);
+    v.nbindings = o.planes ? 3 : 2;
+    for (int b = 0; b < info.nbindings; b++)
+        if (info.set[b] != 0 || info.binding[b] >= (uint32_t)v.nbindings)
+            SETUP_FAIL("%s uses set %" PRIu32 " binding %" PRIu32 ", the host binds set 0 "
+                       "bindings 0..%d%s",
+                       o.file, info.set[b], info.binding[b], v.nbindings - 1,
+                       o.planes ? "" : " (binding 2 only with --planes)");
+
+    /* the device and the pipeline */
+    if (vk_setup_device(&v, msg))
+        SETUP_FAIL("%s", msg);
+    if (o.pq > v.props.limits.maxComputeWorkGroupInvocations ||
+        o.pq > v.props.limits.maxComputeWorkGroupSize[0])
+        SETUP_FAIL("--block-threads %zu exceeds the device's workgroup limit (%" PRIu32 ")",
+                   o.pq, v.props.limits.maxComputeWorkGroupInvocations);
+    if (vk_setup_pipeline(&v, &code, v.nbindings, msg))
+        SETUP_FAIL("%s", msg);
+    printf("# kernel: %s, %dx%d, %s, %s, %zu invocations per group, %zu patches per group, "
+           "%s%s\n",
+           o.file, o.n, o.m, o.space == KREF_CLIP ? "clip" : "world",
+           o.rule == KREF_STRICT ? "strict" : "degenerate", o.pq, o.q,
+           o.planes ? "planes" : "no planes",
+           o.groups_x_constant ? ", groups_x read from the push constants" : "");
+
+    /* the largest chunk of patches whose buffers all fit and whose dispatch is allowed */
+    {
+        uint64_t per = K * 16, chunk, max_groups;
+        lim.max_bytes = HOST_MAX_BUFFER;
+        if (v.props.limits.maxStorageBufferRange < lim.max_bytes)
+            lim.max_bytes = v.props.limits.maxStorageBufferRange;
+        lim.max_x = v.props.limits.maxComputeWorkGroupCount[0];
+        if (lim.max_x > HOST_MAX_GROUPS_X)
+            lim.max_x = HOST_MAX_GROUPS_X;
+        if (o.planes && L * 4 > per)
+            per = L * 4;
+        chunk = lim.max_bytes / per;
+        if (chunk == 0)
+            SETUP_FAIL("one patch needs %" PRIu64 " bytes, more than a storage buffer may "
+                       "hold (%" PRIu64 ")",
+                       per, lim.max_bytes);
+        max_groups = lim.max_x * v.props.limits.maxComputeWorkGroupCount[1];
+        if (chunk > max_groups * o.q)
+            chunk = max_groups * o.q;
+        if (chunk > UINT32_MAX)
+            chunk = UINT32_MAX;
+        if (chunk >= o.q)
+            chunk -= chunk % o.q; /* whole blocks in every chunk but a set's last */
+        lim.chunk = (size_t)chunk;
+    }
+
+    /* every set of every source */
+    for (int si = 0; si < o.nsources; si++) {
+        int nsets = (int)o.src[si].nsets, failed = 0;
+        kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);
+        if (!sets)
+            goto done;
+        for (int i = 0; i < nsets && !failed; i++) {
+            if (sets[i].count > have) {
+                free(cls);
+                free(planes);
+                planes = NULL;
+                have = 0;
+                cls = malloc(sets[i].count * sizeof *cls);
+                if (o.planes)
+                    planes = malloc(sets[i].count * L * sizeof *planes);
+                if (!cls || (o.planes && !planes)) {
+                    snprintf(msg, sizeof msg, "out of memory for %zu patches", sets[i].count);
+                    failed = 1;
+                    break;
+                }
+                have = sets[i].count;
+            }
+            failed = run_set(&v, &o, &lim, &ref, &sets[i], cls, planes, &res, &t, msg) != 0;
+            total += sets[i].count;
+        }
+        kref_free_sets(sets, nsets);
+        if (failed)
+            SETUP_FAIL("%s", msg);
+        nsets_total += nsets;
+    }
+
+    printf("# %s: %d sets, %zu patches, %zu dispatches (chunks of at most %zu patches), "
+           "%.1f ms in dispatches\n",
+           o.label, nsets_total, total, t.dispatches, lim.chunk, t.ms);
+    {
+        char name[400];
+        snprintf(name, sizeof name, "%s: nothing written past patch_count (%zu words checked)",
+                 o.label, t.guarded);
+        ok = check(!t.bad, name, "%zu words written, first: %s", t.bad, t.first);
+        ok = kref_report(&res, o.label) && ok;
+    }
+
+done:
+#undef SETUP_FAIL
+    fflush(stdout);
+    vk_teardown(&v);
+    free(code.words);
+    free(cls);
+    free(planes);
+    if (have_ref)
+        kref_clear(&ref);
+    return ok && !check_exit() ? 0 : 1;
+}

@@ -1,0 +1,204 @@
+#!/usr/bin/env bash
+# test_kernels.sh: emits every kernel target, compiles it and executes it on this machine, and
+# checks values and classes against the double reference (tests/kref.c) through the hosts.
+# Needs PTPGEN (the generator under test), BUILD (the folder with the OpenCL and Vulkan hosts) and
+# build/<cc>/libptptest.a for each C compiler.
+set -u
+P=${PTPGEN:?set PTPGEN}
+B=${BUILD:?set BUILD}
+models=${MODELS:-../shared/models}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export POCL_CACHE_DIR=$PWD/build/cache/pocl MESA_SHADER_CACHE_DIR=$PWD/build/cache/mesa
+export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
+mkdir -p "$POCL_CACHE_DIR" "$MESA_SHADER_CACHE_DIR"
+NVCC=${NVCC:-/usr/local/cuda/bin/nvcc}
+
+ok() { echo "ok - $1"; }
+notok() { echo "not ok - $1: $2"; }
+# missing TOOL WHAT: under CI a missing tool is a failure; elsewhere a skip note.
+missing() {
+    if [ "${CI:-}" = true ]; then notok "$2" "$1 is not available"; else echo "# skip: $2 ($1 is not available)"; fi
+}
+# run_host NAME CMD...: runs a host, passes its check lines through, and turns a silent failure
+# into a "not ok" line.
+run_host() {
+    local name=$1 out rc
+    shift
+    out=$("$@" 2>&1)
+    rc=$?
+    printf '%s\n' "$out" | grep -E '^(ok|not ok|#) ' || true
+    if [ $rc -ne 0 ] && ! printf '%s\n' "$out" | grep -q '^not ok - '; then
+        notok "$name" "exit $rc: $(printf '%s\n' "$out" | tail -3 | tr '\n' ' ')"
+    fi
+}
+# data_args DEGREE: the patch sets of a configuration: 10,000 random patches, and for bicubic
+# each model with random eyes (one host run per line).
+data_args() {
+    echo "--random 1 10000 $seed"
+    if [ "$1" = 3x3 ]; then
+        for f in "$models"/*.bez; do
+            [ -e "$f" ] && echo "--model $f 6 $seed"
+        done
+    fi
+}
+
+have_gpu_tools=1
+for tool in glslangValidator spirv-val; do
+    command -v $tool >/dev/null || { missing $tool "GLSL and HLSL kernels"; have_gpu_tools=0; }
+done
+[ -x "$B/host_opencl" ] || missing "the OpenCL host (OpenCL headers and ICD loader)" "OpenCL kernels"
+[ -x "$B/host_vulkan" ] || missing "the Vulkan host (libvulkan)" "GLSL and HLSL kernels"
+[ -x "$NVCC" ] || missing nvcc "CUDA kernels"
+ls "$models"/*.bez >/dev/null 2>&1 || missing "$models" "kernels on the shared models"
+
+seed=1
+for d in 1x1 2x2 3x3 4x4 2x3 3x1; do
+    n=${d%x*}; m=${d#*x}
+    for space in clip world; do
+        for rule in strict degenerate; do
+            seed=$((seed + 1))
+            cfg="--degree $d --space $space --rule $rule"
+            hcfg="--degree $n $m --space $space --rule $rule"
+            label="$d $space $rule"
+            "$P" $cfg --planes -o "$tmp/k.json" --target json || notok "$label json" "ptpgen failed"
+            PQ=$(python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$tmp/k.json")
+            Q=${PQ#* }; PQ=${PQ% *}
+
+            # C, with gcc and clang.
+            "$P" $cfg --target c -o "$tmp/k.h"
+            for cc in gcc clang; do
+                command -v $cc >/dev/null || continue
+                if $cc -std=c11 -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/k.h" \
+                    -DPTP_${n}X${m}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${m}_ \
+                    tests/host_c.c "build/$cc/libptptest.a" -lm -o "$tmp/host_c" 2>"$tmp/err"; then
+                    data_args $d | while read -r data; do
+                        run_host "c $label ($cc)" "$tmp/host_c" $hcfg $data --name "c/$cc $label${data:+ ${data%% *}}"
+                    done
+                else
+                    notok "c $label compiles with $cc" "$(head -5 "$tmp/err")"
+                fi
+            done
+
+            # OpenCL on PoCL.
+            if [ -x "$B/host_opencl" ]; then
+                "$P" $cfg --planes --target opencl -o "$tmp/k.cl"
+                data_args $d | while read -r data; do
+                    run_host "opencl $label" "$B/host_opencl" "$tmp/k.cl" --kernel ptp_${d}_classify $hcfg \
+                        --block-threads $PQ --patches-per-block $Q --planes $data --name "opencl $label ${data%% *}"
+                done
+            fi
+
+            # GLSL and HLSL: SPIR-V that spirv-val accepts, run on lavapipe.
+            if [ $have_gpu_tools = 1 ]; then
+                "$P" $cfg --planes --target glsl -o "$tmp/k.comp"
+                "$P" $cfg --planes --target hlsl -o "$tmp/k.hlsl"
+                for lang in glsl hlsl; do
+                    if [ $lang = glsl ]; then
+                        glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?; extra=""
+                    else
+                        glslangValidator -D -V -S comp -e main "$tmp/k.hlsl" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?; extra=--groups-x-constant
+                    fi
+                    if [ $rc -ne 0 ] || ! spirv-val "$tmp/k.spv" 2>>"$tmp/err"; then
+                        notok "$lang $label compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
+                        continue
+                    fi
+                    ok "$lang $label compiles to SPIR-V that spirv-val accepts"
+                    [ -x "$B/host_vulkan" ] || continue
+                    data_args $d | while read -r data; do
+                        run_host "$lang $label" "$B/host_vulkan" "$tmp/k.spv" $hcfg --block-threads $PQ \
+                            --patches-per-block $Q --planes $extra $data --name "$lang $label ${data%% *}"
+                    done
+                done
+            fi
+
+            # CUDA: compiled to an object and to PTX, and run by tests/host_cuda.cu where a GPU is.
+            if [ -x "$NVCC" ]; then
+                "$P" $cfg --planes --target cuda -o "$tmp/k.cu"
+                if "$NVCC" -c "$tmp/k.cu" -o "$tmp/k.o" >"$tmp/err" 2>&1 && "$NVCC" -ptx "$tmp/k.cu" -o "$tmp/k.ptx" >>"$tmp/err" 2>&1 &&
+                    grep -q "\.entry ptp_${d}_classify" "$tmp/k.ptx"; then
+                    ok "cuda $label compiles with nvcc (-c and -ptx, entry ptp_${d}_classify)"
+                    # The host links here and runs wherever a GPU is (it says so when there is none).
+                    if "$NVCC" -O2 -Igen -Itests -I"$tmp" -DKERNEL_FILE='"k.cu"' -DKERNEL=ptp_${d}_classify \
+                        tests/host_cuda.cu build/gcc/libptptest.a -o "$tmp/host_cuda" >"$tmp/err" 2>&1; then
+                        data_args $d | while read -r data; do
+                            run_host "cuda $label" "$tmp/host_cuda" $hcfg --block-threads $PQ --patches-per-block $Q \
+                                --planes $data --name "cuda $label ${data%% *}"
+                        done
+                    else
+                        notok "cuda $label host builds with nvcc" "$(grep -m2 error "$tmp/err")"
+                    fi
+                else
+                    notok "cuda $label compiles with nvcc" "$(head -5 "$tmp/err")"
+                fi
+            fi
+        done
+    done
+done
+
+# Without --planes the kernels write only the classes (OpenCL gets a null planes pointer).
+"$P" --degree 3 --target opencl -o "$tmp/k.cl" && [ -x "$B/host_opencl" ] &&
+    run_host "opencl without --planes" "$B/host_opencl" "$tmp/k.cl" --kernel ptp_3x3_classify --degree 3 3 \
+        --space clip --rule strict --block-threads 128 --patches-per-block 8 --random 1 10000 99 --name "opencl 3x3 without --planes"
+if [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ]; then
+    "$P" --degree 3 --target glsl -o "$tmp/k.comp" && glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >/dev/null &&
+        run_host "glsl without --planes" "$B/host_vulkan" "$tmp/k.spv" --degree 3 3 --space clip --rule strict \
+            --block-threads 128 --patches-per-block 8 --random 1 10000 99 --name "glsl 3x3 without --planes"
+    "$P" --degree 3 --target hlsl -o "$tmp/k.hlsl" && glslangValidator -D -V -S comp -e main "$tmp/k.hlsl" -o "$tmp/k.spv" >/dev/null &&
+        run_host "hlsl without --planes" "$B/host_vulkan" "$tmp/k.spv" --degree 3 3 --space clip --rule strict \
+            --block-threads 128 --patches-per-block 8 --groups-x-constant --random 1 10000 99 --name "hlsl 3x3 without --planes"
+    # A non-default schedule: 7 threads per patch, 5 patches per workgroup.
+    "$P" --degree 2x3 --target glsl --space world --planes --threads-per-patch 7 --patches-per-block 5 -o "$tmp/k.comp" &&
+        glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >/dev/null &&
+        run_host "glsl P=7 Q=5" "$B/host_vulkan" "$tmp/k.spv" --degree 2 3 --space world --rule strict --block-threads 35 \
+            --patches-per-block 5 --planes --random 1 3000 7 --name "glsl 2x3 world, 7 threads per patch, 5 patches per group"
+fi
+
+# The checks can fail: a C header with one weight changed must be caught.
+"$P" --degree 3 --target c -o "$tmp/k.h" && sed -i '0,/-9.0f/s//-9.5f/' "$tmp/k.h"
+if gcc -std=c11 -O2 -Igen -Itests -include "$tmp/k.h" -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ \
+    tests/host_c.c build/gcc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
+    ! "$tmp/host_c" --degree 3 3 --space clip --rule strict --random 1 2000 5 --name mutant >"$tmp/out" 2>&1 &&
+    grep -q '^not ok - mutant.*plane values' "$tmp/out"; then
+    ok "a C header with one weight changed (-9 -> -9.5) fails the value check"
+else
+    notok "a C header with one weight changed fails the value check" "it passed or did not fail by its exit status"
+fi
+
+# Several degrees, and a custom prefix, in one C program; a header included twice.
+"$P" --degree 2 --target c -o "$tmp/a.h" && "$P" --degree 3 --target c --space world --prefix cull_ -o "$tmp/b.h"
+cat >"$tmp/multi.c" <<'C'
+#define PTP_2X2_IMPLEMENTATION
+#define CULL_IMPLEMENTATION
+#include "a.h"
+#include "b.h"
+#include "a.h"
+int main(void)
+{
+    static float cp2[9][4], cp3[16][4];
+    const float eye[4] = {0, 0, 1, 0};
+    unsigned char cls[1];
+    int k;
+    for (k = 0; k < 16; k++) {
+        cp3[k][0] = (float)(k / 4);
+        cp3[k][1] = (float)(k % 4);
+        cp3[k][3] = 1;
+        if (k < 9) {
+            cp2[k][0] = (float)(k / 3);
+            cp2[k][1] = (float)(k % 3);
+            cp2[k][3] = 1;
+        }
+    }
+    cull_classify_batch((const float (*)[4])cp3, 1, eye, cls);
+    /* C before C23 does not add const to a pointer to array implicitly: users cast. */
+    return !(ptp_2x2_classify((const float (*)[4])cp2, eye) == PTP_2X2_FRONT &&
+             cull_classify((const float (*)[4])cp3, eye) == CULL_FRONT &&
+             cls[0] == CULL_FRONT && PTP_2X2_PLANES == 25 && CULL_PLANES == 64);
+}
+C
+for cc in gcc clang; do
+    command -v $cc >/dev/null || continue
+    $cc -std=c99 -Wall -Wextra -pedantic -Werror -I"$tmp" "$tmp/multi.c" -o "$tmp/multi" 2>"$tmp/err" && "$tmp/multi" &&
+        ok "C headers of two degrees (one with --prefix cull_), one included twice, in one program ($cc)" ||
+        notok "C headers of two degrees in one program ($cc)" "$(grep -m1 error "$tmp/err")"
+done
