@@ -65,8 +65,24 @@ $(B)/bench_gen: bench/bench_gen.c
 	@mkdir -p $(B)
 	$(CC) $(STD) $(CFLAGS) -o $@ $<
 
+# The vendored sources: every kernel target, json and table for common degrees (clip space,
+# the default schedule). `make out` regenerates out/; the tests regenerate into a temporary
+# OUTDIR with the gcc and the clang build and require identical bytes.
+OUT_DEGREES = 1x1 2x2 3x3 4x4 1x3 3x1 2x3 3x2
+OUT_FILES = c:.h glsl:.comp hlsl:.hlsl opencl:.cl cuda:.cu json:.json table:_table.h
+OUTDIR ?= out
+PTPGEN_BIN ?= ./ptpgen
+
+out: ptpgen
+	@for d in $(OUT_DEGREES); do \
+	    mkdir -p $(OUTDIR)/$$d || exit 1; \
+	    for te in $(OUT_FILES); do \
+	        $(PTPGEN_BIN) --degree $$d --target $${te%%:*} -o $(OUTDIR)/$$d/ptp_$$d$${te#*:} || exit 1; \
+	    done; \
+	done
+
 clean:
 	rm -rf build ptpgen
 
 FORCE:
-.PHONY: all test install bench-gen build-tests clean FORCE
+.PHONY: all test install bench-gen build-tests out clean FORCE

@@ -327,6 +327,18 @@ for t in c glsl hlsl opencl cuda; do
     fi
 done
 
+# out/ is what ptpgen generates now, from the gcc and from the clang build, byte for byte.
+for bin in "$P" "${PTPGEN_OTHER:-}"; do
+    [ -n "$bin" ] && [ -x "$bin" ] || continue
+    rm -rf "$tmp/out"
+    if make -s out OUTDIR="$tmp/out" PTPGEN_BIN="$bin" >"$tmp/err" 2>&1 &&
+        diff -r -x README.md out "$tmp/out" >"$tmp/err" 2>&1; then
+        ok "out/ is byte-identical to what $bin generates now"
+    else
+        notok "out/ is byte-identical to what $bin generates now" "$(head -3 "$tmp/err" | tr '\n' ' ')"
+    fi
+done
+
 # Installation.
 make -s install PREFIX="$tmp/prefix" CC=gcc >/dev/null 2>&1 && (cd / && "$tmp/prefix/bin/ptpgen" --degree 2 >/dev/null) &&
     ok "make install PREFIX=... installs a ptpgen that runs from any directory" ||

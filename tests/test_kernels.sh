@@ -52,88 +52,106 @@ done
 [ -x "$NVCC" ] || missing nvcc "CUDA kernels"
 ls "$models"/*.bez >/dev/null 2>&1 || missing "$models" "kernels on the shared models"
 
+# schedule FILE.json: prints "PQ Q", the threads and the patches of a workgroup.
+schedule() {
+    python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$1"
+}
+
+# exercise DIR D SPACE RULE PLANES PQ Q LABEL: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu}
+# (bidegree D, default names) and runs each on the data of data_args against the reference.
+exercise() {
+    local dir=$1 d=$2 space=$3 rule=$4 pl="" PQ=$6 Q=$7 label=$8 n=${2%x*} m=${2#*x} cc lang extra rc data
+    local hcfg="--degree ${2%x*} ${2#*x} --space $3 --rule $4"
+    [ "$5" = 1 ] && pl=--planes
+
+    # C, with gcc and clang.
+    for cc in gcc clang; do
+        command -v $cc >/dev/null || continue
+        if $cc -std=c11 -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$dir/ptp_$d.h" \
+            -DPTP_${n}X${m}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${m}_ \
+            tests/host_c.c "build/$cc/libptptest.a" -lm -o "$tmp/host_c" 2>"$tmp/err"; then
+            data_args $d | while read -r data; do
+                run_host "c $label ($cc)" "$tmp/host_c" $hcfg $data --name "c/$cc $label ${data%% *}"
+            done
+        else
+            notok "c $label compiles with $cc" "$(head -5 "$tmp/err")"
+        fi
+    done
+
+    # OpenCL on PoCL.
+    if [ -x "$B/host_opencl" ]; then
+        data_args $d | while read -r data; do
+            run_host "opencl $label" "$B/host_opencl" "$dir/ptp_$d.cl" --kernel ptp_${d}_classify $hcfg \
+                --block-threads $PQ --patches-per-block $Q $pl $data --name "opencl $label ${data%% *}"
+        done
+    fi
+
+    # GLSL and HLSL: SPIR-V that spirv-val accepts, run on lavapipe.
+    if [ $have_gpu_tools = 1 ]; then
+        for lang in glsl hlsl; do
+            if [ $lang = glsl ]; then
+                glslangValidator -V "$dir/ptp_$d.comp" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?; extra=""
+            else
+                glslangValidator -D -V -S comp -e main "$dir/ptp_$d.hlsl" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?
+                extra=--groups-x-constant
+            fi
+            if [ $rc -ne 0 ] || ! spirv-val "$tmp/k.spv" 2>>"$tmp/err"; then
+                notok "$lang $label compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
+                continue
+            fi
+            ok "$lang $label compiles to SPIR-V that spirv-val accepts"
+            [ -x "$B/host_vulkan" ] || continue
+            data_args $d | while read -r data; do
+                run_host "$lang $label" "$B/host_vulkan" "$tmp/k.spv" $hcfg --block-threads $PQ \
+                    --patches-per-block $Q $pl $extra $data --name "$lang $label ${data%% *}"
+            done
+        done
+    fi
+
+    # CUDA: compiled to an object and to PTX, and run by tests/host_cuda.cu where a GPU is.
+    if [ -x "$NVCC" ]; then
+        if "$NVCC" -c "$dir/ptp_$d.cu" -o "$tmp/k.o" >"$tmp/err" 2>&1 && "$NVCC" -ptx "$dir/ptp_$d.cu" -o "$tmp/k.ptx" >>"$tmp/err" 2>&1 &&
+            grep -q "\.entry ptp_${d}_classify" "$tmp/k.ptx"; then
+            ok "cuda $label compiles with nvcc (-c and -ptx, entry ptp_${d}_classify)"
+            # The host links here and runs wherever a GPU is (it says so when there is none).
+            if "$NVCC" -O2 -Igen -Itests -I"$dir" -DKERNEL_FILE="\"ptp_$d.cu\"" -DKERNEL=ptp_${d}_classify \
+                tests/host_cuda.cu build/gcc/libptptest.a -o "$tmp/host_cuda" >"$tmp/err" 2>&1; then
+                data_args $d | while read -r data; do
+                    run_host "cuda $label" "$tmp/host_cuda" $hcfg --block-threads $PQ --patches-per-block $Q \
+                        $pl $data --name "cuda $label ${data%% *}"
+                done
+            else
+                notok "cuda $label host builds with nvcc" "$(grep -m2 error "$tmp/err")"
+            fi
+        else
+            notok "cuda $label compiles with nvcc" "$(head -5 "$tmp/err")"
+        fi
+    fi
+}
+
+# Freshly generated kernels, with --planes: every bidegree, space and rule of the matrix.
 seed=1
+mkdir -p "$tmp/gen"
 for d in 1x1 2x2 3x3 4x4 2x3 3x1; do
-    n=${d%x*}; m=${d#*x}
     for space in clip world; do
         for rule in strict degenerate; do
             seed=$((seed + 1))
-            cfg="--degree $d --space $space --rule $rule"
-            hcfg="--degree $n $m --space $space --rule $rule"
-            label="$d $space $rule"
-            "$P" $cfg --planes -o "$tmp/k.json" --target json || notok "$label json" "ptpgen failed"
-            PQ=$(python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$tmp/k.json")
-            Q=${PQ#* }; PQ=${PQ% *}
-
-            # C, with gcc and clang.
-            "$P" $cfg --target c -o "$tmp/k.h"
-            for cc in gcc clang; do
-                command -v $cc >/dev/null || continue
-                if $cc -std=c11 -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/k.h" \
-                    -DPTP_${n}X${m}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${m}_ \
-                    tests/host_c.c "build/$cc/libptptest.a" -lm -o "$tmp/host_c" 2>"$tmp/err"; then
-                    data_args $d | while read -r data; do
-                        run_host "c $label ($cc)" "$tmp/host_c" $hcfg $data --name "c/$cc $label${data:+ ${data%% *}}"
-                    done
-                else
-                    notok "c $label compiles with $cc" "$(head -5 "$tmp/err")"
-                fi
+            cfg="--degree $d --space $space --rule $rule --planes"
+            for te in json:.json c:.h glsl:.comp hlsl:.hlsl opencl:.cl cuda:.cu; do
+                "$P" $cfg --target ${te%%:*} -o "$tmp/gen/ptp_$d${te#*:}" || notok "$d $space $rule ${te%%:*}" "ptpgen failed"
             done
-
-            # OpenCL on PoCL.
-            if [ -x "$B/host_opencl" ]; then
-                "$P" $cfg --planes --target opencl -o "$tmp/k.cl"
-                data_args $d | while read -r data; do
-                    run_host "opencl $label" "$B/host_opencl" "$tmp/k.cl" --kernel ptp_${d}_classify $hcfg \
-                        --block-threads $PQ --patches-per-block $Q --planes $data --name "opencl $label ${data%% *}"
-                done
-            fi
-
-            # GLSL and HLSL: SPIR-V that spirv-val accepts, run on lavapipe.
-            if [ $have_gpu_tools = 1 ]; then
-                "$P" $cfg --planes --target glsl -o "$tmp/k.comp"
-                "$P" $cfg --planes --target hlsl -o "$tmp/k.hlsl"
-                for lang in glsl hlsl; do
-                    if [ $lang = glsl ]; then
-                        glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?; extra=""
-                    else
-                        glslangValidator -D -V -S comp -e main "$tmp/k.hlsl" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?; extra=--groups-x-constant
-                    fi
-                    if [ $rc -ne 0 ] || ! spirv-val "$tmp/k.spv" 2>>"$tmp/err"; then
-                        notok "$lang $label compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
-                        continue
-                    fi
-                    ok "$lang $label compiles to SPIR-V that spirv-val accepts"
-                    [ -x "$B/host_vulkan" ] || continue
-                    data_args $d | while read -r data; do
-                        run_host "$lang $label" "$B/host_vulkan" "$tmp/k.spv" $hcfg --block-threads $PQ \
-                            --patches-per-block $Q --planes $extra $data --name "$lang $label ${data%% *}"
-                    done
-                done
-            fi
-
-            # CUDA: compiled to an object and to PTX, and run by tests/host_cuda.cu where a GPU is.
-            if [ -x "$NVCC" ]; then
-                "$P" $cfg --planes --target cuda -o "$tmp/k.cu"
-                if "$NVCC" -c "$tmp/k.cu" -o "$tmp/k.o" >"$tmp/err" 2>&1 && "$NVCC" -ptx "$tmp/k.cu" -o "$tmp/k.ptx" >>"$tmp/err" 2>&1 &&
-                    grep -q "\.entry ptp_${d}_classify" "$tmp/k.ptx"; then
-                    ok "cuda $label compiles with nvcc (-c and -ptx, entry ptp_${d}_classify)"
-                    # The host links here and runs wherever a GPU is (it says so when there is none).
-                    if "$NVCC" -O2 -Igen -Itests -I"$tmp" -DKERNEL_FILE='"k.cu"' -DKERNEL=ptp_${d}_classify \
-                        tests/host_cuda.cu build/gcc/libptptest.a -o "$tmp/host_cuda" >"$tmp/err" 2>&1; then
-                        data_args $d | while read -r data; do
-                            run_host "cuda $label" "$tmp/host_cuda" $hcfg --block-threads $PQ --patches-per-block $Q \
-                                --planes $data --name "cuda $label ${data%% *}"
-                        done
-                    else
-                        notok "cuda $label host builds with nvcc" "$(grep -m2 error "$tmp/err")"
-                    fi
-                else
-                    notok "cuda $label compiles with nvcc" "$(head -5 "$tmp/err")"
-                fi
-            fi
+            read -r PQ Q < <(schedule "$tmp/gen/ptp_$d.json")
+            exercise "$tmp/gen" $d $space $rule 1 $PQ $Q "$d $space $rule"
         done
     done
+done
+
+# The vendored kernels in out/ (clip space, strict rule, no values), exactly like fresh ones.
+for dir in out/*x*/; do
+    d=$(basename "$dir")
+    seed=$((seed + 1))
+    read -r PQ Q < <(schedule "out/$d/ptp_$d.json")
+    exercise "out/$d" $d clip strict 0 $PQ $Q "vendored out/$d"
 done
 
 # Without --planes the kernels write only the classes (OpenCL gets a null planes pointer).
