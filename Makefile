@@ -65,6 +65,23 @@ $(B)/bench_gen: bench/bench_gen.c
 	@mkdir -p $(B)
 	$(CC) $(STD) $(CFLAGS) -o $@ $<
 
+# Fuzzing verify's parsers with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs
+# collect in build/fuzz/corpus; copy an input that fails into tests/fuzz/regressions/, which the
+# tests replay (with tests/fuzz/verify/, the seeds) under AddressSanitizer and UBSan.
+FUZZ_SECONDS ?= 300
+SAN = -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=all
+
+fuzz:
+	@$(MAKE) -s CC=clang build/clang/templates.c
+	@mkdir -p build/fuzz/corpus
+	clang $(STD) $(SAN) -fsanitize=fuzzer -Igen -o build/fuzz/fuzz_verify tests/fuzz_verify.c \
+	    $(filter-out gen/main.c,$(GEN_SRC)) build/clang/templates.c -lm
+	build/fuzz/fuzz_verify -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 \
+	    build/fuzz/corpus tests/fuzz/verify tests/fuzz/regressions
+
+$(B)/replay_verify: tests/fuzz_verify.c $(LIB_SRC) $(GEN_HDR) Makefile
+	$(CC) $(STD) $(SAN) -DFUZZ_REPLAY -Igen -o $@ $< $(LIB_SRC) -lm
+
 # The vendored sources: every kernel target, json and table for common degrees (clip space,
 # the default schedule). `make out` regenerates out/; the tests regenerate into a temporary
 # OUTDIR with the gcc and the clang build and require identical bytes.
@@ -85,4 +102,4 @@ clean:
 	rm -rf build ptpgen
 
 FORCE:
-.PHONY: all test install bench-gen build-tests out clean FORCE
+.PHONY: all test install bench-gen build-tests out fuzz clean FORCE

@@ -9,15 +9,14 @@ log=build/test.log
 mkdir -p build
 : > "$log"
 
-# Runs a command, copies its output to the log and the terminal, and turns a non-zero exit
+# Runs a command, streams its output to the terminal and the log, and turns a non-zero exit
 # with no "not ok" line into one.
 run() {
-    local name=$1 out rc
+    local name=$1 rc
     shift
-    out=$("$@" 2>&1)
-    rc=$?
-    printf '%s\n' "$out" | tee -a "$log"
-    if [ $rc -ne 0 ] && ! printf '%s\n' "$out" | grep -q '^not ok - '; then
+    "$@" 2>&1 | tee build/run.out | tee -a "$log"
+    rc=${PIPESTATUS[0]}
+    if [ "$rc" -ne 0 ] && ! grep -q '^not ok - ' build/run.out; then
         echo "not ok - $name exited with status $rc" | tee -a "$log"
     fi
 }
@@ -40,6 +39,17 @@ for cc in $compilers; do
     for t in build/$cc/test_*; do
         [ -x "$t" ] && run "$t" "$t"
     done
+done
+
+# verify's fuzz seeds and every input that once failed, replayed under ASan and UBSan.
+for cc in $compilers; do
+    n=$(ls tests/fuzz/verify tests/fuzz/regressions | grep -vc ':$')
+    if make -s CC=$cc build/$cc/replay_verify >build/make-$cc-replay.log 2>&1 &&
+        build/$cc/replay_verify tests/fuzz/verify/* tests/fuzz/regressions/* >build/replay-$cc.log 2>&1; then
+        echo "ok - verify replays its fuzz corpus and regressions ($n inputs) cleanly under ASan and UBSan ($cc)" | tee -a "$log"
+    else
+        echo "not ok - verify's fuzz corpus under ASan and UBSan ($cc): $(tail -3 build/replay-$cc.log build/make-$cc-replay.log 2>/dev/null | tr '\n' ' ')" | tee -a "$log"
+    fi
 done
 
 if [ -x build/gcc/ptpgen ]; then

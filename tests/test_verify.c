@@ -1,0 +1,829 @@
+/* test_verify.c: checks `ptpgen verify` (verify_table) on generated tables and on wrong ones.
+ * Every constructed mistake must get its diagnosis, and malformed input a usage error with a line. */
+#include "check.h"
+#include "out.h"
+#include "verify.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+/* The longest weight text: "p.0f / q.0f". */
+#define WLEN (2 * RAT_STRLEN + 16)
+
+/* One term as a test writes it: the points in the order given, the weight as text. */
+typedef struct {
+    int plane, p[3];
+    char w[WLEN];
+} row;
+
+typedef struct {
+    row *r;
+    size_t n;
+} rows;
+
+static uint64_t rng = 0x2545F4914F6CDD1Du;
+
+/* A pseudo-random number below n (xorshift64*; fixed seed, reproducible). */
+static size_t below(size_t n)
+{
+    rng ^= rng >> 12;
+    rng ^= rng << 25;
+    rng ^= rng >> 27;
+    return (size_t)((rng * 2685821657736338717u) >> 33) % n;
+}
+
+/* The result of one verify_table call. */
+typedef struct {
+    int st, verdict;
+    char *report; /* the report ("" on failure) */
+    ptp_error err;
+} result;
+
+static result run_verify(const char *text, size_t len, const char *name, int n, int m)
+{
+    result r;
+    sbuf o;
+    sbuf_init(&o);
+    r.err.msg[0] = '\0';
+    r.verdict = -1;
+    r.st = verify_table(&o, &r.verdict, text, len, name, n, m, &r.err);
+    r.report = malloc(o.len + 1);
+    if (r.report) {
+        memcpy(r.report, o.s ? o.s : "", o.len);
+        r.report[o.len] = '\0';
+    }
+    sbuf_clear(&o);
+    return r;
+}
+
+static result verify_str(const sbuf *b, const char *name, int n, int m)
+{
+    return run_verify(b->s ? b->s : "", b->len, name, n, m);
+}
+
+/* The last line of a report (its verdict), for failure details. */
+static const char *last_line(const char *s)
+{
+    const char *p = s && *s ? s + strlen(s) - 1 : "";
+    while (p > s && p[-1] != '\n')
+        p--;
+    return p;
+}
+
+/* Renders t with out_table (target table) or out_json into b. */
+static int render(sbuf *b, const tp_table *t, int table)
+{
+    char prefix[32], command[64];
+    sched s;
+    out_info info;
+    ptp_error err;
+    int P = sched_default_threads(t), st;
+    if (sched_build(&s, t, P, sched_default_patches(P), &err))
+        return 0;
+    snprintf(prefix, sizeof prefix, "ptp_%dx%d_", t->n, t->m);
+    snprintf(command, sizeof command, "ptpgen --degree %dx%d --target %s", t->n, t->m,
+             table ? "table" : "json");
+    info.command = command;
+    info.prefix = prefix;
+    info.sched = &s;
+    info.space = OUT_CLIP;
+    info.rule = OUT_STRICT;
+    info.planes = 0;
+    sbuf_init(b);
+    st = table ? out_table(b, t, &info, &err) : out_json(b, t, &info, &err);
+    sched_clear(&s);
+    return !st && !b->failed;
+}
+
+/* The weight w as text: "p/q", "-27.0f/7.0f" (cfrac), or the float "%.9gf" times mul. */
+enum { W_FRAC, W_CFRAC, W_FLOAT };
+
+static void weight_text(char *buf, const rat *w, int style, double mul)
+{
+    char num[RAT_STRLEN], den[RAT_STRLEN];
+    rat n;
+    if (style == W_FLOAT) {
+        snprintf(buf, WLEN, "%.9gf", (double)(float)(rat_get_d(w) * mul));
+        if (!strpbrk(buf, ".e"))
+            snprintf(buf, WLEN, "%.1ff", (double)(float)(rat_get_d(w) * mul));
+        return;
+    }
+    if (style == W_FRAC) {
+        rat_get_str(buf, w);
+        return;
+    }
+    n.num = w->num;
+    n.den = 1;
+    rat_get_str(num, &n);
+    n.num = w->den;
+    rat_get_str(den, &n);
+    snprintf(buf, WLEN, "%s.0f / %s.0f", num, den);
+}
+
+/* The rows of t, weights in style (times mul for floats). */
+static rows rows_of(const tp_table *t, int style, double mul)
+{
+    rows r;
+    size_t x;
+    r.n = t->nterms;
+    r.r = malloc((t->nterms + 8) * sizeof *r.r);
+    for (x = 0; r.r && x < t->nterms; x++) {
+        const tp_term *e = &t->terms[x];
+        r.r[x].plane = e->plane;
+        r.r[x].p[0] = e->j;
+        r.r[x].p[1] = e->k;
+        r.r[x].p[2] = e->l;
+        weight_text(r.r[x].w, &e->w, style, mul);
+    }
+    return r;
+}
+
+/* JSON with one term per line: term x is on line JSON_LINE0 + x. */
+#define JSON_LINE0 5
+
+static void write_json(sbuf *b, const rows *r, int n, int m)
+{
+    size_t x;
+    sbuf_init(b);
+    sbuf_puts(b, "{\n  \"format\": \"ptpgen-planes/1\",\n");
+    if (n)
+        sbuf_printf(b, "  \"degree\": [%d, %d],\n", n, m);
+    else
+        sbuf_puts(b, "  \"comment\": \"no degree\",\n");
+    sbuf_puts(b, "  \"terms\": [\n");
+    for (x = 0; x < r->n; x++)
+        sbuf_printf(b, "    [%d, %d, %d, %d, \"%s\"]%s\n", r->r[x].plane, r->r[x].p[0],
+                    r->r[x].p[1], r->r[x].p[2], r->r[x].w, x + 1 < r->n ? "," : "");
+    sbuf_puts(b, "  ]\n}\n");
+}
+
+/* The paper's layout, rows on lines PAPER_LINE0 + x, with comments and a directive. */
+#define PAPER_LINE0 4
+
+static void write_paper(sbuf *b, const rows *r)
+{
+    size_t x;
+    sbuf_init(b);
+    sbuf_puts(b, "/* the paper's table, as someone typed it */\n#include <stdint.h>\n"
+                 "uint idx[4][] = {\n");
+    for (x = 0; x < r->n; x++)
+        sbuf_printf(b, "    {%d, %d, %d, %d},  // term %zu\n", r->r[x].plane, r->r[x].p[0],
+                    r->r[x].p[1], r->r[x].p[2], x);
+    sbuf_puts(b, "};\n#define UNUSED 1\nfloat wgt[] = {\n");
+    for (x = 0; x < r->n; x++)
+        sbuf_printf(b, "    %s%s /* %zu */\n", r->r[x].w, x + 1 < r->n ? "," : "", x);
+    sbuf_puts(b, "};\n");
+}
+
+static void shuffle(rows *r)
+{
+    size_t x;
+    for (x = r->n; x > 1; x--) {
+        size_t y = below(x);
+        row t = r->r[x - 1];
+        r->r[x - 1] = r->r[y];
+        r->r[y] = t;
+    }
+}
+
+/* The exact table of (n, m) relabelled (i, j) -> (j, i), negated when negate is set. */
+static rows relabelled(const tp_table *t, int negate)
+{
+    rows r = rows_of(t, W_FRAC, 1);
+    size_t x;
+    for (x = 0; r.r && x < r.n; x++) {
+        row *e = &r.r[x];
+        int q, a, b, sign = negate ? -1 : 1;
+        rat w = t->terms[x].w;
+        e->plane = (e->plane % (t->pv + 1)) * (t->pu + 1) + e->plane / (t->pv + 1);
+        for (q = 0; q < 3; q++)
+            e->p[q] = (e->p[q] % (t->m + 1)) * (t->n + 1) + e->p[q] / (t->m + 1);
+        for (a = 0; a < 3; a++)
+            for (b = a + 1; b < 3; b++)
+                if (e->p[b] < e->p[a]) {
+                    int tmp = e->p[a];
+                    e->p[a] = e->p[b];
+                    e->p[b] = tmp;
+                    sign = -sign;
+                }
+        if (sign < 0)
+            rat_neg(&w, &w);
+        rat_get_str(e->w, &w);
+    }
+    return r;
+}
+
+static int has(const result *r, const char *s)
+{
+    return r->report && strstr(r->report, s) != NULL;
+}
+
+/* Checks a RIGHT (or WRONG) verdict with a report containing want. */
+static void expect_verdict(const char *name, result r, int verdict, const char *want)
+{
+    check(r.st == PTP_OK && r.verdict == verdict && has(&r, want), name,
+          "status %d (%s), verdict %d, report ends \"%s\", wanted \"%s\"", r.st, r.err.msg,
+          r.verdict, last_line(r.report), want);
+    free(r.report);
+}
+
+/* Checks a WRONG verdict whose report has a line starting "NAME:LINE: what". */
+static void expect_line(const char *name, result r, const char *file, int line, const char *what)
+{
+    char want[256];
+    if (line)
+        snprintf(want, sizeof want, "%s:%d: %s", file, line, what);
+    else
+        snprintf(want, sizeof want, "%s: %s", file, what);
+    check(r.st == PTP_OK && r.verdict == VERIFY_WRONG && has(&r, want), name,
+          "status %d (%s), verdict %d, wanted \"%s\" in:\n%.2000s", r.st, r.err.msg, r.verdict,
+          want, r.report ? r.report : "");
+    free(r.report);
+}
+
+/* Checks a usage error whose message starts "FILE:LINE: " (any line when line is 0) and
+ * mentions what; the report must stay empty. */
+static void expect_usage(const char *name, result r, const char *file, int line, const char *what)
+{
+    size_t k = strlen(file);
+    const char *p = r.err.msg + k + 1;
+    int ok = !strncmp(r.err.msg, file, k) && r.err.msg[k] == ':' && *p >= '1' && *p <= '9';
+    ok = ok && (!line || atoi(p) == line);
+    while (*p >= '0' && *p <= '9')
+        p++;
+    check(r.st == PTP_EUSAGE && ok && *p == ':' && strstr(r.err.msg, what) && r.report &&
+              !*r.report, name, "status %d, message \"%s\", wanted %s:%d: \"%s\"", r.st,
+          r.err.msg, file, line, what);
+    free(r.report);
+}
+
+static void test_generated(void)
+{
+    static const int degrees[][2] = {{1, 1}, {2, 2}, {3, 3}, {4, 4}, {1, 3}, {3, 1}, {2, 3}, {3, 2}};
+    size_t d;
+    for (d = 0; d < sizeof degrees / sizeof degrees[0]; d++) {
+        int n = degrees[d][0], m = degrees[d][1], table;
+        tp_table t;
+        ptp_error err;
+        if (!check(!tp_derive(&t, n, m, &err), "derive", "%s", err.msg))
+            continue;
+        for (table = 0; table < 2; table++) {
+            char name[128];
+            sbuf b;
+            if (!check(render(&b, &t, table), "render", "%dx%d", n, m))
+                continue;
+            snprintf(name, sizeof name, "verify accepts ptpgen's own %dx%d %s (degree inferred)", n,
+                     m, table ? "table" : "json");
+            expect_verdict(name, verify_str(&b, "gen", 0, 0), VERIFY_RIGHT, "RIGHT: exact");
+            snprintf(name, sizeof name, "verify accepts ptpgen's own %dx%d %s with --degree %dx%d", n,
+                     m, table ? "table" : "json", n, m);
+            expect_verdict(name, verify_str(&b, "gen", n, m), VERIFY_RIGHT, "RIGHT: exact");
+            sbuf_clear(&b);
+        }
+        tp_clear(&t);
+    }
+}
+
+/* The wrong variants of the bicubic table, each with its diagnosis. */
+static void test_bicubic_mistakes(void)
+{
+    tp_table t;
+    ptp_error err;
+    rows r;
+    sbuf b;
+    row keep;
+    size_t x;
+    char want[256], w[RAT_STRLEN];
+    if (!check(!tp_derive(&t, 3, 3, &err), "derive 3x3", "%s", err.msg))
+        return;
+    r = rows_of(&t, W_FRAC, 1);
+
+    /* one weight changed */
+    keep = r.r[10];
+    strcpy(r.r[10].w, "-1/3");
+    write_json(&b, &r, 3, 3);
+    expect_line("one weight changed: wrong weight, with its line", verify_str(&b, "t.json", 0, 0),
+                "t.json", JSON_LINE0 + 10, "wrong weight");
+    snprintf(want, sizeof want, "got -1/3, expected %s", rat_get_str(w, &t.terms[10].w));
+    expect_verdict("wrong weight: got vs expected", verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
+                   want);
+    sbuf_clear(&b);
+    r.r[10] = keep;
+
+    /* two points swapped within a row */
+    keep = r.r[1];
+    r.r[1].p[1] = keep.p[2];
+    r.r[1].p[2] = keep.p[1];
+    write_json(&b, &r, 3, 3);
+    expect_line("two indices swapped in a row: the order flips the sign",
+                verify_str(&b, "t.json", 0, 0), "t.json", JSON_LINE0 + 1,
+                "points not in increasing order flip the sign: {1, 0, 5, 1} is -27/7 * "
+                "cross4(b0, b5, b1) = 27/7 * cross4(b0, b1, b5)");
+    sbuf_clear(&b);
+    /* the same swap with the weight negated is right: a note, no problem */
+    strcpy(r.r[1].w, "27/7");
+    write_json(&b, &r, 3, 3);
+    expect_verdict("swapped points with the weight negated: right, with a note",
+                   verify_str(&b, "t.json", 0, 0), VERIFY_RIGHT, "note: points not in increasing");
+    sbuf_clear(&b);
+    r.r[1] = keep;
+
+    /* a term dropped */
+    keep = r.r[7];
+    memmove(&r.r[7], &r.r[8], (r.n - 8) * sizeof *r.r);
+    r.n--;
+    write_json(&b, &r, 3, 3);
+    snprintf(want, sizeof want, "missing term: plane %d: %s * cross4(b%d, b%d, b%d)", keep.plane,
+             keep.w, keep.p[0], keep.p[1], keep.p[2]);
+    expect_line("a term dropped: missing, with plane, points and exact weight",
+                verify_str(&b, "t.json", 0, 0), "t.json", 0, want);
+    sbuf_clear(&b);
+    memmove(&r.r[8], &r.r[7], (r.n - 7) * sizeof *r.r);
+    r.r[7] = keep;
+    r.n++;
+
+    /* a term duplicated (the copy as the last term) */
+    r.r[r.n] = r.r[20];
+    r.n++;
+    write_json(&b, &r, 3, 3);
+    snprintf(want, sizeof want, "duplicated term: plane %d, cross4(b%d, b%d, b%d) repeats line %d",
+             r.r[20].plane, r.r[20].p[0], r.r[20].p[1], r.r[20].p[2], JSON_LINE0 + 20);
+    expect_line("a term duplicated: the line and the line it repeats",
+                verify_str(&b, "t.json", 0, 0), "t.json", JSON_LINE0 + (int)r.n - 1, want);
+    sbuf_clear(&b);
+    r.n--;
+
+    /* an extra term */
+    r.r[r.n] = r.r[0];
+    r.r[r.n].p[2] = 15;
+    r.n++;
+    write_json(&b, &r, 3, 3);
+    expect_line("an extra term", verify_str(&b, "t.json", 0, 0), "t.json",
+                JSON_LINE0 + (int)r.n - 1, "extra term: {0, 0, 1, 15}");
+    sbuf_clear(&b);
+    r.n--;
+
+    /* a term moved to a plane without those points */
+    keep = r.r[30];
+    r.r[30].plane = 63;
+    write_json(&b, &r, 3, 3);
+    snprintf(want, sizeof want, "is in plane 63 but belongs to plane %d", keep.plane);
+    expect_line("a term moved to a wrong plane", verify_str(&b, "t.json", 0, 0), "t.json",
+                JSON_LINE0 + 30, "wrong plane");
+    expect_verdict("wrong plane names both planes", verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
+                   want);
+    sbuf_clear(&b);
+    r.r[30] = keep;
+
+    /* all weights times 1/7, exact */
+    for (x = 0; x < r.n; x++) {
+        rat s, v;
+        rat_set_frac(&s, 1, 7);
+        rat_mul(&v, &t.terms[x].w, &s);
+        rat_get_str(r.r[x].w, &v);
+    }
+    write_json(&b, &r, 3, 3);
+    expect_verdict("all weights times 1/7: right up to the scale, named",
+                   verify_str(&b, "t.json", 0, 0), VERIFY_RIGHT,
+                   "RIGHT: correct up to a positive scale s = 0.142857143 = 1/7");
+    sbuf_clear(&b);
+    free(r.r);
+
+    /* all weights times 2.5, as floats, in ptpgen's table layout */
+    r = rows_of(&t, W_FLOAT, 2.5);
+    write_paper(&b, &r);
+    expect_verdict("all float weights times 2.5: right up to the scale 5/2",
+                   verify_str(&b, "p.h", 0, 0), VERIFY_RIGHT, "positive scale s = 2.5 = 5/2");
+    sbuf_clear(&b);
+    free(r.r);
+
+    /* all negated */
+    r = rows_of(&t, W_FLOAT, -1);
+    write_paper(&b, &r);
+    expect_verdict("all weights negated: wrong, the opposite orientation",
+                   verify_str(&b, "p.h", 0, 0), VERIFY_WRONG, "WRONG: all weights negated");
+    free(r.r);
+    sbuf_clear(&b);
+
+    /* negated and scaled */
+    r = rows_of(&t, W_FLOAT, -3);
+    write_paper(&b, &r);
+    expect_verdict("all weights times -3: negated and scaled", verify_str(&b, "p.h", 0, 0),
+                   VERIFY_WRONG, "WRONG: all weights negated, and every weight scaled by 3");
+    free(r.r);
+    sbuf_clear(&b);
+
+    /* a square patch: u and v swapped gives the same table; v-first gives the negated one */
+    r = relabelled(&t, 1);
+    write_json(&b, &r, 3, 3);
+    expect_verdict("3x3 with u and v swapped is the same table (the transposition rule)",
+                   verify_str(&b, "t.json", 0, 0), VERIFY_RIGHT, "RIGHT: exact");
+    free(r.r);
+    sbuf_clear(&b);
+    r = relabelled(&t, 0);
+    write_json(&b, &r, 3, 3);
+    expect_verdict("3x3 in the v-first convention: negated, and v-first named",
+                   verify_str(&b, "t.json", 0, 0), VERIFY_WRONG, "v-first index convention");
+    free(r.r);
+    sbuf_clear(&b);
+
+    /* the paper's own layout: shuffled, fractions as weights, no degree */
+    r = rows_of(&t, W_CFRAC, 1);
+    shuffle(&r);
+    write_paper(&b, &r);
+    expect_verdict("the paper's layout, shuffled, -27.0f / 7.0f fractions: exact",
+                   verify_str(&b, "paper.h", 0, 0), VERIFY_RIGHT, "RIGHT: exact");
+    /* and a wrong weight there names the idx line and the wgt line */
+    snprintf(r.r[40].w, sizeof r.r[40].w, "1.5f");
+    sbuf_clear(&b);
+    write_paper(&b, &r);
+    snprintf(want, sizeof want, "(the weight is on line %d)", PAPER_LINE0 + (int)r.n + 3 + 40);
+    expect_line("paper layout: a wrong weight names its row's line", verify_str(&b, "paper.h", 0, 0),
+                "paper.h", PAPER_LINE0 + 40, "wrong weight");
+    expect_verdict("paper layout: a wrong weight names the weight's line too",
+                   verify_str(&b, "paper.h", 0, 0), VERIFY_WRONG, want);
+    sbuf_clear(&b);
+    free(r.r);
+    tp_clear(&t);
+}
+
+/* u and v swapped and v-first on a non-square patch, where they differ from the exact table. */
+static void test_transposed(void)
+{
+    tp_table t, u;
+    ptp_error err;
+    rows r;
+    sbuf b;
+    size_t x;
+    if (!check(!tp_derive(&t, 2, 3, &err) && !tp_derive(&u, 3, 2, &err), "derive 2x3, 3x2", "%s",
+               err.msg))
+        return;
+    r = relabelled(&t, 1);
+    write_json(&b, &r, 0, 0);
+    expect_verdict("2x3 with u and v swapped: wrong, the transposed patch",
+                   verify_str(&b, "t.json", 2, 3), VERIFY_WRONG,
+                   "WRONG: u and v swapped: it is the exact table of bidegree 3x2");
+    expect_verdict("2x3 with u and v swapped is exactly the 3x2 table",
+                   verify_str(&b, "t.json", 3, 2), VERIFY_RIGHT, "RIGHT: exact");
+    sbuf_clear(&b);
+    free(r.r);
+
+    r = rows_of(&u, W_FRAC, 1);
+    write_json(&b, &r, 3, 2);
+    expect_verdict("a 3x2 document checked as 2x3: u and v swapped, and a note on the degree",
+                   verify_str(&b, "t.json", 2, 3), VERIFY_WRONG,
+                   "t.json:3: note: the document names bidegree 3x2; checked as 2x3");
+    sbuf_clear(&b);
+    free(r.r);
+
+    r = relabelled(&t, 0);
+    write_json(&b, &r, 2, 3);
+    expect_verdict("2x3 in the v-first index convention: wrong, explained",
+                   verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
+                   "WRONG: the v-first index convention: the same planes, but point (i, j) "
+                   "numbered j*3+i");
+    sbuf_clear(&b);
+    free(r.r);
+
+    r = relabelled(&t, 1);
+    for (x = 0; x < r.n; x++) {
+        rat w, two;
+        rat_set_str(&w, r.r[x].w);
+        rat_set_si(&two, 2);
+        rat_mul(&w, &w, &two);
+        rat_get_str(r.r[x].w, &w);
+    }
+    strcpy(r.r[3].w, "1");
+    write_json(&b, &r, 2, 3);
+    expect_verdict("2x3 with u and v swapped and scaled by 2, one weight wrong: both named",
+                   verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
+                   "1 wrong weight) against the 200 terms of bidegree 2x3, read as the exact "
+                   "table with u and v swapped and scaled by 2");
+    expect_line("... and the wrong weight is against the swapped table, scaled",
+                verify_str(&b, "t.json", 0, 0), "t.json", JSON_LINE0 + 3, "wrong weight");
+    sbuf_clear(&b);
+    free(r.r);
+
+    r = rows_of(&t, W_FRAC, 1);
+    write_paper(&b, &r);
+    expect_usage("a 2x3 paper table without --degree: ambiguous, asks for it",
+                 verify_str(&b, "p.h", 0, 0), "p.h", 0, "use --degree");
+    expect_verdict("... and with --degree 2x3 it is exact", verify_str(&b, "p.h", 2, 3),
+                   VERIFY_RIGHT, "RIGHT: exact");
+    sbuf_clear(&b);
+    free(r.r);
+    tp_clear(&t);
+    tp_clear(&u);
+}
+
+static result verify_text(const char *text, int n)
+{
+    return run_verify(text, strlen(text), "x", n, n);
+}
+
+static void test_malformed(void)
+{
+    tp_table t;
+    ptp_error err;
+    sbuf b;
+    char *big;
+    size_t x, n = 10u << 20;
+    double t0;
+    rows r;
+    if (!check(!tp_derive(&t, 2, 2, &err), "derive 2x2", "%s", err.msg))
+        return;
+    if (render(&b, &t, 1)) {
+        result res = run_verify(b.s, b.len / 2, "x", 0, 0);
+        expect_usage("a table cut in the middle: a usage error with the line", res, "x", 0, "");
+        res = run_verify(b.s, (size_t)(strstr(b.s, "_idx[") - b.s) + 200, "x", 0, 0);
+        expect_usage("a table cut inside its idx array", res, "x", 0, "expected");
+        res = run_verify(b.s, (size_t)(strstr(b.s, "_wgt[") - b.s) + 200, "x", 0, 0);
+        expect_usage("a table cut inside its wgt array", res, "x", 0, "expected");
+        sbuf_clear(&b);
+    }
+    if (render(&b, &t, 0)) {
+        expect_usage("a json cut in the middle", run_verify(b.s, b.len / 2, "x", 0, 0), "x", 0, "");
+        sbuf_clear(&b);
+    }
+    r = rows_of(&t, W_FRAC, 1);
+    r.n--;
+    write_paper(&b, &r);
+    r.n++;
+    {
+        /* one weight fewer than rows: drop the last weight line */
+        char *p = strstr(b.s, "float wgt[] = {\n");
+        char *q = p ? strstr(p, ",") : NULL;
+        if (q) {
+            char *text = malloc(b.len + 64);
+            size_t k = (size_t)(q - b.s);
+            memcpy(text, b.s, k);
+            strcpy(text + k, "\n};\n");
+            expect_usage("idx and wgt of different lengths", verify_text(text, 0), "x", 0,
+                         "weights but the idx array");
+            free(text);
+        }
+    }
+    sbuf_clear(&b);
+    free(r.r);
+
+    expect_usage("a point out of range",
+                 verify_text("uint idx[][4] = {{0, 0, 1, 16}};\nfloat wgt[] = {-9};\n", 3), "x", 0,
+                 "point 16 out of range");
+    expect_usage("a plane out of range", verify_text("[[64, 0, 1, 2, \"1\"]]", 3), "x", 0,
+                 "plane 64 out of range");
+    expect_usage("an index beyond any bidegree without --degree",
+                 verify_text("idx[][4] = {{0, 0, 1, 2}, {1, 0, 1, 99}};\nwgt[] = {1, 2};", 0), "x", 0,
+                 "cannot infer the bidegree");
+    expect_usage("a negative index", verify_text("idx[][4] = {{0, -1, 1, 2}}; wgt[] = {1};", 0),
+                 "x", 0, "negative index");
+    expect_usage("a non-number index", verify_text("idx[][4] = {{0, a, 1, 2}}; wgt[] = {1};", 0),
+                 "x", 0, "expected an index");
+    expect_usage("a non-number weight", verify_text("idx[][4] = {{0, 0, 1, 2}};\nwgt[] = {x};", 0),
+                 "x", 2, "expected a weight");
+    expect_usage("a bad literal", verify_text("idx[][4] = {{0, 0, 1, 2}};\nwgt[] = {1.2.3};", 0),
+                 "x", 2, "is not a number");
+    expect_usage("a weight string that is no number", verify_text("[[0, 0, 1, 4, \"-9x\"]]", 3),
+                 "x", 0, "'9x' is not a number");
+    expect_usage("a weight string with more than a number",
+                 verify_text("[[0, 0, 1, 4, \"-9 x\"]]", 3), "x", 0, "not a number or a fraction");
+    expect_usage("a weight that is no string or number", verify_text("[[0, 0, 1, 4, true]]", 3),
+                 "x", 0, "a weight must be");
+    expect_usage("a division by zero", verify_text("idx[][4] = {{0, 0, 1, 2}}; wgt[] = {1/0};", 0),
+                 "x", 0, "division by zero");
+    expect_usage("a row of 3 indices", verify_text("idx[][4] = {{0, 0, 1}}; wgt[] = {1};", 0), "x", 0,
+                 "expected ','");
+    expect_usage("two idx arrays",
+                 verify_text("a_idx[][4] = {{0,0,1,2}};\nb_idx[][4] = {{0,0,1,2}};\nwgt[] = {1};", 0),
+                 "x", 2, "a second idx array");
+    expect_usage("no wgt array", verify_text("idx[][4] = {{0,0,1,2}};", 0), "x", 0, "no wgt array");
+    expect_usage("an unterminated comment", verify_text("idx[][4] = {{0,0,1,2}};\n/* ...", 0),
+                 "x", 2, "unterminated comment");
+    expect_usage("an empty file", run_verify("", 0, "x", 0, 0), "x", 1, "empty");
+    expect_usage("only blanks", verify_text(" \n\t\n", 0), "x", 0, "empty");
+    expect_usage("only comments", verify_text("// nothing\n/* here */\n", 0), "x", 0, "no table");
+    expect_usage("json without terms", verify_text("{\"degree\": [3, 3]}", 0), "x", 0,
+                 "no \"terms\"");
+    expect_usage("json with a bad degree", verify_text("{\"degree\": [0, 3], \"terms\": []}", 0),
+                 "x", 0, "degree");
+    expect_usage("json with trailing text", verify_text("{\"terms\": []} x", 3), "x", 0,
+                 "after the end");
+    expect_usage("json with an empty table and no degree", verify_text("{\"terms\": []}", 0), "x", 0,
+                 "no terms");
+    expect_verdict("an empty table with --degree: every term missing", verify_text("[]", 1),
+                   VERIFY_WRONG, "4 missing terms");
+
+    /* binary garbage, fixed seed */
+    big = malloc(n + 1);
+    if (!check(big != NULL, "allocate 10 MB", ""))
+        return;
+    for (x = 0; x < 4096; x++)
+        big[x] = (char)below(256);
+    big[0] = 'x'; /* not JSON */
+    {
+        result res = run_verify(big, 4096, "x", 0, 0);
+        check(res.st == PTP_EUSAGE && !strncmp(res.err.msg, "x:", 2), "binary garbage: usage error",
+              "status %d: %s", res.st, res.err.msg);
+        free(res.report);
+        res = run_verify(big, 4096, "x", 3, 3);
+        check(res.st == PTP_EUSAGE, "binary garbage with --degree: usage error", "status %d: %s",
+              res.st, res.err.msg);
+        free(res.report);
+    }
+
+    /* a 10 MB line: a number of 10 MB digits; then 10 MB of one JSON line; then 10 MB of '[' */
+    t0 = (double)clock() / CLOCKS_PER_SEC;
+    strcpy(big, "idx[][4] = {{0, 0, 1, 2}}; wgt[] = {");
+    memset(big + strlen(big), '7', n - strlen(big));
+    big[n] = '\0';
+    expect_usage("a 10 MB number on one line", run_verify(big, n, "x", 0, 0), "x", 1,
+                 "number too long");
+    memset(big, ' ', n);
+    memcpy(big, "{\"terms\": [", 11);
+    for (x = 11; x + 20 < n; x += 20)
+        memcpy(big + x, "[0, 0, 1, 2, \"-1\"], ", 20);
+    expect_usage("10 MB of terms on one line, unterminated", run_verify(big, n, "x", 1, 1), "x", 1,
+                 "term");
+    memset(big, '[', n);
+    memcpy(big, "{\"a\": ", 6);
+    expect_usage("10 MB of nested '[' in JSON", run_verify(big, n, "x", 0, 0), "x", 1,
+                 "nested too deeply");
+    memcpy(big, "{\"terms\": [[[[", 14);
+    expect_usage("nested arrays as a term", run_verify(big, n, "x", 0, 0), "x", 1, "expected");
+    strcpy(big, "idx[][4] = {{0, 0, 1, 2}}; wgt[] = {");
+    memset(big + strlen(big), '(', n - strlen(big));
+    expect_usage("10 MB of '(' in a weight", run_verify(big, n, "x", 0, 0), "x", 1,
+                 "nested too deeply");
+    strcpy(big, "idx[][4] = {{0, 0, 1, 2}}; wgt[] = {");
+    memset(big + strlen(big), '-', n - strlen(big));
+    expect_usage("10 MB of '-' in a weight", run_verify(big, n, "x", 0, 0), "x", 1,
+                 "expected a weight");
+    check((double)clock() / CLOCKS_PER_SEC - t0 < 20, "the 10 MB inputs take under 20 s of CPU",
+          "%.1f s", (double)clock() / CLOCKS_PER_SEC - t0);
+    free(big);
+    tp_clear(&t);
+}
+
+/* The 1x1 table written in many legal ways: each must read as exact. */
+static void test_forms(void)
+{
+    static const char *const right[] = {
+        /* a flat idx array, hex, octal and suffixed integers, exponents, a cast, long double */
+        "static const unsigned idx[16] = {0x0, 0, 1, 2u, 1, 0, 1, 3UL, 2, 0, 02, 3, 3, 1, 2, 3};\n"
+        "const double wgt[4] = {-1e0, -10e-1, 0.1e1f, (double)(1.0L)};\n",
+        /* directives with continuations, comments and quotes; a use of idx in code; strings */
+        "#define A \"x\\\" /* not a comment\" \\\n   continued 'q\n#if 0 /* a comment\n spanning */\n"
+        "#endif\nint idx[][4] = { {0,0,1,2}, {1,0,1,3}, {2,0,2,3}, {3,1,2,3,}, }; // done\n"
+        "const char *s = \"idx[] = {\", c = '{';\nfloat wgt[] = { -1, -1, +1, 1., };\n"
+        "void f(float *t) { int x; for (x = 0; x < 4; x++) t[idx[x][0]] += wgt[x]; }\n",
+        /* JSON: escapes in keys and strings, numbers as weights, fields to ignore */
+        "{\"ter\\u006ds\": [[0,0,1,2,-1],[1,0,1,3,-1.0],[2,0,2,3,1E0],[3,1,2,3,\"1\"]],\n"
+        " \"x\": {\"a\": [true, false, null, \"\\n\\t\\\"\\\\\\/\\b\\f\\r\\u00e9\"], \"b\": -1.5e-3}}",
+        /* a bare terms array with weights as expressions in strings */
+        "\xEF\xBB\xBF[[0, 0, 1, 2, \"-2/2\"], [1, 0, 1, 3, \"(-1)\"], [2, 0, 2, 3, \"3 * 1/3\"],"
+        " [3, 1, 2, 3, \"(float)1\"]]",
+    };
+    static const struct {
+        const char *text, *what;
+        int line;
+    } usage[] = {
+        {"[[0, 0, 1, 2, \"-1\x01\"]]", "control character", 1},
+        {"[[0, 0, 1, 2, \"\\x\"]]", "bad escape", 1},
+        {"[[0, 0, 1, 2, \"\\u12\"]]", "bad \\u escape", 1},
+        {"[[0, 0, 1, 2, -]]", "a bad number", 1},
+        {"[[0, 0, 1, 2, 1.]]", "a bad number", 1},
+        {"[[0, 0, 1, 2, 1e]]", "a bad number", 1},
+        {"[[0, 0, 1.5, 2, 1]]", "must be a non-negative integer", 1},
+        {"[[0, 0, 100000, 2, 1]]", "out of range", 1},
+        {"[[0, 0, 1, 2, 1e999]]", "weight out of range", 1},
+        {"{\"terms\": 5}", "must be an array", 1},
+        {"{\"terms\": [],\n\"terms\": []}", "a second \"terms\"", 2},
+        {"{\"degree\": [1, 1],\n\"degree\": [1, 1], \"terms\": []}", "a second \"degree\"", 2},
+        {"{5: 1}", "expected a key string", 1},
+        {"{\"a\": x, \"terms\": []}", "expected a JSON value", 1},
+        {"{\"terms\": [],\n \"a\": {5: 1}}", "expected a key string", 2},
+        {"{\"terms\": [] \"a\": 1}", "expected ','", 1},
+        {"idx[] = {0, 0, 1, 2, {1, 0, 1, 3}}; wgt[] = {1, 1};", "mixes", 1},
+        {"idx[] = {0, 0, 1, 2, 1};\nwgt[] = {1, 1};", "not a multiple of 4", 1},
+        {"idx[][4] = {{0,0,1,2}}; wgt[] = {1};\nwgt[] = {1};", "a second wgt array", 2},
+        {"idx[4\n", "unterminated '['", 1},
+        {"idx[][4] = {{0,0,1,2}}; wgt[] = {1};\nchar *s = \"abc;\n", "unterminated string", 2},
+        {"idx[][4] = {{0,0,1,100000}}; wgt[] = {1};", "out of range", 1},
+        {"idx[][4] = {{0,0,1,2}};\nwgt[] = {1e999};", "weight out of range", 2},
+        {"idx[][4] = {{0,0,1,2}};\nwgt[] = {(float x};", "expected ')' after the cast", 2},
+        {"idx[][4] = {{0,0,1,2}};\nwgt[] = {(1};", "expected ')' to close", 2},
+        {"idx[][4] = {{0,0,1,2}};\nwgt[] = {1 2};", "expected ',' or '}' in the wgt array of line 2",
+         2},
+        {"void f(void) {\n idx[][4] = {{0,0,1,2}}; wgt[] = {1};", "is never closed", 1},
+        {"[[0, 0, 1, 2, \"1111111111111111111111111111111111111111111111111111111111111111111111"
+         "1111111111111111111111111111111111111111111111111111111111111111111111111111111111111111"
+         "1111111111111111111111111111111111111111111111111111111111111111111111111111111111111111"
+         "1111111111111111111111111111111111111111111\"]]", "weight string too long", 1},
+        {"{", "expected a key string", 1},
+    };
+    size_t k;
+    for (k = 0; k < sizeof right / sizeof *right; k++) {
+        char name[64];
+        snprintf(name, sizeof name, "the 1x1 table written in legal form %zu reads as exact", k + 1);
+        expect_verdict(name, verify_text(right[k], 0), VERIFY_RIGHT, "RIGHT: exact");
+    }
+    for (k = 0; k < sizeof usage / sizeof *usage; k++) {
+        char name[128];
+        snprintf(name, sizeof name, "malformed input %zu: %s", k + 1, usage[k].what);
+        expect_usage(name, verify_text(usage[k].text, 0), "x", usage[k].line, usage[k].what);
+    }
+    {
+        result r = verify_text("[]", -1);
+        check(r.st == PTP_EUSAGE, "a negative degree is a usage error", "status %d", r.st);
+        free(r.report);
+        r = run_verify("[]", 2, "x", 3, 0);
+        check(r.st == PTP_EUSAGE, "only one of n, m zero is a usage error", "status %d", r.st);
+        free(r.report);
+        r = verify_text("[]", PTP_MAX_DEGREE + 1);
+        check(r.st == PTP_ELIMIT, "a degree beyond the limit is refused", "status %d", r.st);
+        free(r.report);
+    }
+}
+
+/* Several mistakes in one table: each named on its line, in line order, and the notes. */
+static void test_several(void)
+{
+    static const char *const want[] = {
+        "t.json:6: points not in increasing order flip the sign",
+        "t.json:7: wrong weight: plane 1, cross4(b0, b4, b2): got 1, expected 18/7 (the points are "
+        "not in increasing order: that is -1 times the exact term's weight for cross4(b0, b2, b4))",
+        "t.json:9: note: {2, 0, 0, 5} repeats a point",
+        "t.json:10: note: {2, 0, 3, 15} has weight 0",
+        "t.json:11: wrong weight: plane 2, cross4(b1, b2, b4): got 0, expected -9/7",
+        "t.json:13: wrong weight", /* the first of two different copies when neither is right */
+        "t.json:14: duplicated term: plane 3, cross4(b0, b3, b5) repeats line 13",
+        "t.json: missing term: plane 2: -18/7 * cross4(b0, b2, b5)",
+        "t.json: missing term: plane 2: -3/7 * cross4(b0, b3, b4)",
+        "t.json: missing term: plane 3: -54/35 * cross4(b0, b2, b6)",
+        "t.json: WRONG: 8 problems (3 missing terms, 3 wrong weights, 1 duplicated term, 1 sign "
+        "flipped by the order of the points)",
+    };
+    tp_table t;
+    ptp_error err;
+    rows r;
+    sbuf b;
+    result res;
+    size_t k;
+    const char *at;
+    if (!check(!tp_derive(&t, 3, 3, &err), "derive 3x3", "%s", err.msg))
+        return;
+    r = rows_of(&t, W_FRAC, 1);
+    r.r[1].p[1] = 5, r.r[1].p[2] = 1;             /* line 6: order flips the sign */
+    r.r[2].p[1] = 4, r.r[2].p[2] = 2;             /* line 7: order flipped and weight wrong */
+    strcpy(r.r[2].w, "1");
+    r.r[4].p[1] = 0;                              /* line 9: a repeated point (and a missing term) */
+    r.r[5].p[2] = 15;                             /* line 10: an extra term of weight 0 */
+    strcpy(r.r[5].w, "0");
+    strcpy(r.r[6].w, "0");                        /* line 11: a weight 0 where one belongs */
+    r.r[8] = r.r[9];                              /* lines 13, 14: two copies, both wrong */
+    strcpy(r.r[8].w, "5");
+    strcpy(r.r[9].w, "6");
+    write_json(&b, &r, 3, 3);
+    res = verify_str(&b, "t.json", 0, 0);
+    at = res.report;
+    for (k = 0; at && k < sizeof want / sizeof *want; k++)
+        at = strstr(at, want[k]);
+    check(res.st == PTP_OK && res.verdict == VERIFY_WRONG && at != NULL,
+          "several mistakes: each named on its line, in line order, with the notes",
+          "missing \"%s\" (in this order) in:\n%s", k ? want[k - 1] : want[0], res.report);
+    free(res.report);
+    sbuf_clear(&b);
+    free(r.r);
+    tp_clear(&t);
+}
+
+/* A 2x2 table checked as 3x3: many problems, and a note that the indices fit 2x2. */
+static void test_wrong_degree(void)
+{
+    tp_table t;
+    ptp_error err;
+    sbuf b;
+    if (!check(!tp_derive(&t, 2, 2, &err), "derive 2x2", "%s", err.msg))
+        return;
+    if (render(&b, &t, 1)) {
+        expect_verdict("a 2x2 table checked as 3x3 says the indices fit 2x2",
+                       verify_str(&b, "t.h", 3, 3), VERIFY_WRONG,
+                       "t.h: note: the indices fit bidegree 2x2, not 3x3");
+        expect_verdict("... and that its name says 2x2", verify_str(&b, "t.h", 3, 3), VERIFY_WRONG,
+                       "note: the array name names bidegree 2x2; checked as 3x3");
+        sbuf_clear(&b);
+    }
+    tp_clear(&t);
+}
+
+int main(void)
+{
+    test_generated();
+    test_bicubic_mistakes();
+    test_transposed();
+    test_malformed();
+    test_forms();
+    test_several();
+    test_wrong_degree();
+    return check_exit();
+}
