@@ -12,6 +12,8 @@ const char cli_usage[] =
     "usage: ptpgen --degree N|NxM [--target T] [--space clip|world] [--rule strict|degenerate]\n"
     "              [--planes] [--prefix NAME] [--threads-per-patch P] [--patches-per-block Q]\n"
     "              [-o FILE]\n"
+    "       ptpgen verify FILE [--degree NxM] [-o REPORT]\n"
+    "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world] [-o FILE]\n"
     "       ptpgen --help | --version\n"
     "\n"
     "Derives the exact control planes of the parametric tangent plane\n"
@@ -38,6 +40,11 @@ const char cli_usage[] =
     "  -o, --output F   write to F (atomically) instead of standard output\n"
     "  -h, --help       show this help\n"
     "  --version        show the version\n"
+    "\n"
+    "verify checks a table (the paper's idx/wgt C header or ptpgen's json) against the\n"
+    "exact derivation and names each problem with its line: exit 0 right, 1 wrong, 2 unreadable.\n"
+    "vectors writes K random patches (small integers) with their exact plane values and\n"
+    "classes under both rules, as JSON; the same seed gives the same bytes.\n"
     "\n"
     "Exit status: 0 success, 1 failure, 2 usage error.\n";
 
@@ -157,14 +164,54 @@ static int take(const char **val, int *st, const char *name, int argc, char **ar
     return 1;
 }
 
+/* Parses an unsigned decimal number up to max into *v (digits only). */
+static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t max, ptp_error *err)
+{
+    const char *p = arg;
+    uint64_t x = 0;
+    for (; *p >= '0' && *p <= '9'; p++) {
+        if (x > (max - (uint64_t)(*p - '0')) / 10)
+            return ptp_fail(err, PTP_EUSAGE, "%s '%s': the largest allowed is %llu", opt, arg,
+                            (unsigned long long)max);
+        x = x * 10 + (uint64_t)(*p - '0');
+    }
+    if (p == arg || *p != '\0')
+        return ptp_fail(err, PTP_EUSAGE, "%s '%s': expected a whole number", opt, arg);
+    *v = x;
+    return PTP_OK;
+}
+
+/* The options each mode accepts, by the bit of their index in cli_parse's names[]. */
+enum {
+    OPT_DEGREE = 1 << 0, OPT_TARGET = 1 << 1, OPT_SPACE = 1 << 2, OPT_RULE = 1 << 3,
+    OPT_PLANES = 1 << 4, OPT_PREFIX = 1 << 5, OPT_THREADS = 1 << 6, OPT_PATCHES = 1 << 7,
+    OPT_COUNT = 1 << 8, OPT_SEED = 1 << 9
+};
+
 int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
 {
+    static const char *const names[] = {"--degree", "--target", "--space", "--rule", "--planes",
+                                        "--prefix", "--threads-per-patch", "--patches-per-block",
+                                        "--count", "--seed"};
+    static const char *const modes[] = {"code generation", "verify", "vectors"};
+    static const unsigned allowed[] = {0xFF, OPT_DEGREE, OPT_DEGREE | OPT_SPACE | OPT_COUNT | OPT_SEED};
+    unsigned seen = 0;
+    uint64_t u = 0;
+    int first = 1, k;
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
     int i, st = PTP_OK, target = CLI_JSON;
     memset(o, 0, sizeof *o);
     o->threads = o->patches = -1;
-    for (i = 1; i < argc && !st; i++) {
+    if (argc > 1 && (strcmp(argv[1], "verify") == 0 || strcmp(argv[1], "vectors") == 0)) {
+        o->mode = argv[1][1] == 'e' && argv[1][2] == 'r' ? CLI_VERIFY : CLI_VECTORS;
+        first = 2;
+    }
+    for (i = first; i < argc && !st; i++) {
         const char *a = argv[i], *v = NULL;
+        for (k = 0; k < (int)(sizeof names / sizeof *names); k++) /* for the mode check below */
+            if (strncmp(a, names[k], strlen(names[k])) == 0 &&
+                (a[strlen(names[k])] == '\0' || a[strlen(names[k])] == '='))
+                seen |= 1u << k;
         if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0)
             o->help = 1;
         else if (strcmp(a, "--version") == 0)
@@ -185,9 +232,17 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
             st = st ? st : parse_count(&o->threads, "--threads-per-patch", v, err);
         else if (take(&v, &st, "--patches-per-block", argc, argv, &i, err))
             st = st ? st : parse_count(&o->patches, "--patches-per-block", v, err);
+        else if (take(&v, &st, "--count", argc, argv, &i, err)) {
+            if (!st && !(st = parse_ulong(&u, "--count", v, 1000000, err)))
+                o->count = (long)u;
+        }
+        else if (take(&v, &st, "--seed", argc, argv, &i, err))
+            st = st ? st : parse_ulong(&o->seed, "--seed", v, UINT64_MAX, err);
         else if (take(&v, &st, "--output", argc, argv, &i, err) ||
                  take(&v, &st, "-o", argc, argv, &i, err))
             o->output = v;
+        else if (o->mode == CLI_VERIFY && !o->input && (a[0] != '-' || a[1] == '\0'))
+            o->input = a;
         else if (a[0] == '-')
             st = ptp_fail(err, PTP_EUSAGE, "unknown option '%s' (see ptpgen --help)", a);
         else
@@ -196,8 +251,25 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
     o->target = (cli_target)target;
     if (st || o->help || o->version)
         return st;
+    for (k = 0; k < (int)(sizeof names / sizeof *names); k++)
+        if (seen >> k & 1 && !(allowed[o->mode] >> k & 1))
+            return ptp_fail(err, PTP_EUSAGE, "option %s does not apply to %s", names[k],
+                            modes[o->mode]);
+    if (o->mode == CLI_VERIFY) {
+        if (!o->input)
+            return ptp_fail(err, PTP_EUSAGE, "verify: missing the FILE to check (see ptpgen --help)");
+        return PTP_OK;
+    }
     if (!o->n)
         return ptp_fail(err, PTP_EUSAGE, "missing --degree N or --degree NxM (see ptpgen --help)");
+    if (o->mode == CLI_VECTORS) {
+        if (!(seen & OPT_COUNT) || !(seen & OPT_SEED) || o->count < 1)
+            return ptp_fail(err, PTP_EUSAGE, "vectors needs --count K (1 to 1000000) and --seed S");
+        snprintf(o->command, sizeof o->command,
+                 "ptpgen vectors --degree %dx%d --count %ld --seed %llu --space %s", o->n, o->m,
+                 o->count, (unsigned long long)o->seed, o->world ? "world" : "clip");
+        return PTP_OK;
+    }
     {
         int n = snprintf(o->command, sizeof o->command, "ptpgen --degree %dx%d --target %s", o->n,
                          o->m, cli_targets[o->target]);

@@ -5,6 +5,8 @@
 
 #include "ptp.h"
 
+#include <stdint.h>
+
 typedef enum {
     CLI_JSON,
     CLI_TABLE,
@@ -19,7 +21,14 @@ typedef enum {
 /* The target names, indexed by cli_target. */
 extern const char *const cli_targets[];
 
+/* What ptpgen does: generate a target (the default), verify a table, or write test vectors. */
+typedef enum { CLI_GENERATE, CLI_VERIFY, CLI_VECTORS } cli_mode;
+
 typedef struct {
+    cli_mode mode;
+    const char *input;    /* verify: the table to check ("-": standard input) */
+    long count;           /* vectors: --count */
+    uint64_t seed;        /* vectors: --seed */
     int n, m;             /* bidegree; 0 until --degree is given */
     cli_target target;
     const char *output;   /* -o path, or NULL for stdout */

@@ -1,8 +1,10 @@
-/* main.c: the ptpgen command: parse, derive, render, write.
+/* main.c: the ptpgen command: parse, then generate, verify or write vectors, and write.
  * The only place that prints errors and exits; output reaches -o only complete (temp + rename). */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 #include "kern.h"
+#include "vectors.h"
+#include "verify.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -59,6 +61,75 @@ static int write_output(const char *path, const sbuf *b, ptp_error *err)
     return PTP_OK;
 }
 
+/* Reads the whole file at path ("-": standard input) into *text (NUL-terminated). */
+static int read_input(char **text, size_t *len, const char *path, ptp_error *err)
+{
+    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+    size_t cap = 1 << 16;
+    char *buf = NULL, *grown;
+    *len = 0;
+    if (!f)
+        return ptp_fail(err, PTP_EUSAGE, "cannot read %s: %s", path, strerror(errno));
+    for (;;) {
+        if (!(grown = realloc(buf, cap + 1))) {
+            free(buf);
+            if (f != stdin)
+                fclose(f);
+            return ptp_fail(err, PTP_ENOMEM, "out of memory reading %s", path);
+        }
+        buf = grown;
+        *len += fread(buf + *len, 1, cap - *len, f);
+        if (*len < cap)
+            break;
+        cap *= 2;
+    }
+    if (ferror(f)) {
+        free(buf);
+        if (f != stdin)
+            fclose(f);
+        return ptp_fail(err, PTP_EUSAGE, "cannot read %s: %s", path, strerror(errno));
+    }
+    if (f != stdin)
+        fclose(f);
+    buf[*len] = '\0';
+    *text = buf;
+    return PTP_OK;
+}
+
+/* ptpgen verify: the report goes to the output; *verdict is VERIFY_RIGHT or VERIFY_WRONG. */
+static int run_verify(const cli_options *o, int *verdict, ptp_error *err)
+{
+    char *text = NULL;
+    size_t len;
+    sbuf b;
+    int st = read_input(&text, &len, o->input, err);
+    if (st)
+        return st;
+    sbuf_init(&b);
+    if (!(st = verify_table(&b, verdict, text, len, o->input, o->n, o->m, err)))
+        st = write_output(o->output, &b, err);
+    sbuf_clear(&b);
+    free(text);
+    return st;
+}
+
+/* ptpgen vectors. */
+static int run_vectors(const cli_options *o, ptp_error *err)
+{
+    tp_table t;
+    sbuf b;
+    int st = tp_derive(&t, o->n, o->m, err);
+    if (st)
+        return st;
+    sbuf_init(&b);
+    if (!(st = vectors_write(&b, &t, o->count, o->seed, o->world ? OUT_WORLD : OUT_CLIP,
+                             o->command, err)))
+        st = write_output(o->output, &b, err);
+    sbuf_clear(&b);
+    tp_clear(&t);
+    return st;
+}
+
 static int run(const cli_options *o, ptp_error *err)
 {
     static int (*const render[])(sbuf *, const tp_table *, const out_info *, ptp_error *) = {
@@ -104,8 +175,14 @@ int main(int argc, char **argv)
         printf("ptpgen %s\n", PTP_VERSION);
         return 0;
     }
-    if (!st)
-        st = run(&o, &err);
+    if (!st && o.mode == CLI_VERIFY) {
+        /* exit 0 right, 1 wrong, 2 when the input cannot be read */
+        int verdict = VERIFY_WRONG;
+        if (!(st = run_verify(&o, &verdict, &err)))
+            return verdict == VERIFY_RIGHT ? 0 : 1;
+    } else if (!st) {
+        st = o.mode == CLI_VECTORS ? run_vectors(&o, &err) : run(&o, &err);
+    }
     if (st) {
         fprintf(stderr, "ptpgen: %s\n", err.msg);
         return st == PTP_EUSAGE ? 2 : 1;

@@ -327,6 +327,42 @@ for t in c glsl hlsl opencl cuda; do
     fi
 done
 
+# verify and vectors: usage errors.
+expect_fail "verify without a file" 2 "missing the FILE" verify
+expect_fail "verify of a missing file" 2 "cannot read $tmp/none.h" verify "$tmp/none.h"
+expect_fail "verify with a generator option" 2 "option --target does not apply to verify" verify out/3x3/ptp_3x3_table.h --target glsl
+expect_fail "vectors without --count and --seed" 2 "vectors needs --count" vectors --degree 3
+expect_fail "vectors --count 0" 2 "vectors needs --count" vectors --degree 3 --count 0 --seed 1
+expect_fail "vectors --count too large" 2 "largest allowed is 1000000" vectors --degree 3 --count 1000001 --seed 1
+expect_fail "vectors --seed not a number" 2 "--seed 'x'" vectors --degree 3 --count 5 --seed x
+expect_fail "--count outside vectors" 2 "option --count does not apply to code generation" --degree 3 --count 5
+
+# verify accepts every vendored table and json, and names a wrong one (exit 1).
+bad=""
+for f in out/*/ptp_*_table.h out/*/ptp_*.json; do
+    d=$(basename "$(dirname "$f")")
+    "$P" verify "$f" --degree "$d" >"$tmp/out" 2>&1 || bad="$bad $f"
+done
+[ -z "$bad" ] && ok "verify accepts every vendored table and json (exit 0)" || notok "verify accepts the vendored tables" "rejected:$bad"
+sed '0,/-9.0f/s//-9.5f/' out/3x3/ptp_3x3_table.h >"$tmp/wrong.h"
+"$P" verify "$tmp/wrong.h" >"$tmp/out" 2>&1
+rc=$?
+[ $rc -eq 1 ] && grep -q "wrong.h:[0-9]*:.*weight" "$tmp/out" &&
+    ok "verify names a wrong weight with its line, exit 1" || notok "verify of a wrong weight" "exit $rc: $(head -2 "$tmp/out")"
+
+# vectors: the same seed gives the same bytes, another seed other bytes; an independent check.
+"$P" vectors --degree 2x3 --count 50 --seed 7 >"$tmp/v1.json" && "$P" vectors --degree 2x3 --count 50 --seed 7 -o "$tmp/v2.json" &&
+    "$P" vectors --degree 2x3 --count 50 --seed 8 >"$tmp/v3.json" && cmp -s "$tmp/v1.json" "$tmp/v2.json" &&
+    ! cmp -s "$tmp/v1.json" "$tmp/v3.json" && ok "vectors: the same seed gives the same bytes, another seed others" ||
+    notok "vectors determinism" "differs"
+for c in "2x3 clip" "3x3 world" "1x1 clip" "3x2 world"; do
+    set -- $c
+    "$P" vectors --degree $1 --count 200 --seed 11 --space $2 >"$tmp/v.json" && "$P" --degree $1 >"$tmp/t.json" &&
+        python3 tests/check_vectors.py "$tmp/v.json" "$tmp/t.json" >"$tmp/out" 2>&1 &&
+        ok "vectors $1 $2: values and classes recomputed exactly by tests/check_vectors.py ($(tail -1 "$tmp/out"))" ||
+        notok "vectors $1 $2 independent check" "$(tail -2 "$tmp/out")"
+done
+
 # out/ is what ptpgen generates now, from the gcc and from the clang build, byte for byte.
 for bin in "$P" "${PTPGEN_OTHER:-}"; do
     [ -n "$bin" ] && [ -x "$bin" ] || continue
