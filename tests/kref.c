@@ -1,5 +1,5 @@
 /* kref.c: test data and the double-precision reference for executing emitted kernels.
- * The bound on a float32 evaluation is (terms + 32) * 2^-23 times the sum of |monomials|; exact
+ * The bound on a float32 evaluation is (terms + 16) * 2^-24 times the sum of |monomials|; exact
  * zeros (two equal points in every term of a plane) have bound 0. */
 #include "kref.h"
 #include "check.h"
@@ -462,6 +462,10 @@ static void cross4_mag(double t[4], double mag[4], const float *a, const float *
     }
 }
 
+/* The bound, with u = 2^-24: a cross4 component rounds its three-factor monomials, two
+ * differences and two sums (5u relative to the sum of |monomials|), the float weight and its
+ * product add 2u, the eye's products and sums at most 5u (world space), and summing a plane's
+ * terms in any order (count - 1)u: (count + 12)u in all, taken as (count + 16)u. */
 void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, double *bound)
 {
     const float(*b)[4] = (const float(*)[4])s->cp + p * (size_t)r->K;
@@ -485,7 +489,7 @@ void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, doub
     for (i = 0, x = 0; i < r->L; i++) {
         for (count = 0; x < r->t.nterms && r->t.terms[x].plane == i; x++)
             count++;
-        bound[i] *= (count + 32) * ldexp(1, -23);
+        bound[i] *= (count + 16) * ldexp(1, -24);
     }
 }
 
