@@ -181,62 +181,62 @@ static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t m
     return PTP_OK;
 }
 
-/* The options each mode accepts, by the bit of their index in cli_parse's names[]. */
+/* The options that belong to one mode or another: bit i stands for opt_names[i]. */
 enum {
-    OPT_DEGREE = 1 << 0, OPT_TARGET = 1 << 1, OPT_SPACE = 1 << 2, OPT_RULE = 1 << 3,
-    OPT_PLANES = 1 << 4, OPT_PREFIX = 1 << 5, OPT_THREADS = 1 << 6, OPT_PATCHES = 1 << 7,
-    OPT_COUNT = 1 << 8, OPT_SEED = 1 << 9
+    OPT_DEGREE = 1 << 0,
+    OPT_GENERATE = 0xFE, /* --target, --space, --rule, --planes, --prefix, the thread counts */
+    OPT_SPACE = 1 << 2,
+    OPT_COUNT = 1 << 8,
+    OPT_SEED = 1 << 9
 };
+static const char *const opt_names[] = {"--degree", "--target", "--space", "--rule", "--planes",
+                                        "--prefix", "--threads-per-patch", "--patches-per-block",
+                                        "--count", "--seed"};
 
 int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
 {
-    static const char *const names[] = {"--degree", "--target", "--space", "--rule", "--planes",
-                                        "--prefix", "--threads-per-patch", "--patches-per-block",
-                                        "--count", "--seed"};
+    static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
     static const char *const modes[] = {"code generation", "verify", "vectors"};
-    static const unsigned allowed[] = {0xFF, OPT_DEGREE, OPT_DEGREE | OPT_SPACE | OPT_COUNT | OPT_SEED};
+    static const unsigned allowed[] = {OPT_DEGREE | OPT_GENERATE, OPT_DEGREE,
+                                       OPT_DEGREE | OPT_SPACE | OPT_COUNT | OPT_SEED};
     unsigned seen = 0;
     uint64_t u = 0;
-    int first = 1, k;
-    static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
-    int i, st = PTP_OK, target = CLI_JSON;
+    int i, k, st = PTP_OK, target = CLI_JSON, first = 1;
     memset(o, 0, sizeof *o);
     o->threads = o->patches = -1;
-    if (argc > 1 && (strcmp(argv[1], "verify") == 0 || strcmp(argv[1], "vectors") == 0)) {
-        o->mode = argv[1][1] == 'e' && argv[1][2] == 'r' ? CLI_VERIFY : CLI_VECTORS;
-        first = 2;
-    }
+    if (argc > 1 && strcmp(argv[1], "verify") == 0)
+        o->mode = CLI_VERIFY;
+    else if (argc > 1 && strcmp(argv[1], "vectors") == 0)
+        o->mode = CLI_VECTORS;
+    first += o->mode != CLI_GENERATE;
+    /* Each option's branch also records it in seen ((seen |= bit) is never 0), for the check
+     * below that it belongs to the mode. */
     for (i = first; i < argc && !st; i++) {
         const char *a = argv[i], *v = NULL;
-        for (k = 0; k < (int)(sizeof names / sizeof *names); k++) /* for the mode check below */
-            if (strncmp(a, names[k], strlen(names[k])) == 0 &&
-                (a[strlen(names[k])] == '\0' || a[strlen(names[k])] == '='))
-                seen |= 1u << k;
         if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0)
             o->help = 1;
         else if (strcmp(a, "--version") == 0)
             o->version = 1;
-        else if (take(&v, &st, "--degree", argc, argv, &i, err))
-            st = st ? st : parse_degree(o, v, err);
-        else if (strcmp(a, "--planes") == 0)
+        else if (strcmp(a, "--planes") == 0 && (seen |= 1u << 4))
             o->planes = 1;
-        else if (take(&v, &st, "--target", argc, argv, &i, err))
+        else if (take(&v, &st, "--degree", argc, argv, &i, err) && (seen |= 1u << 0))
+            st = st ? st : parse_degree(o, v, err);
+        else if (take(&v, &st, "--target", argc, argv, &i, err) && (seen |= 1u << 1))
             st = st ? st : parse_choice(&target, "target", v, cli_targets, 8, err);
-        else if (take(&v, &st, "--space", argc, argv, &i, err))
+        else if (take(&v, &st, "--space", argc, argv, &i, err) && (seen |= 1u << 2))
             st = st ? st : parse_choice(&o->world, "space", v, spaces, 2, err);
-        else if (take(&v, &st, "--rule", argc, argv, &i, err))
+        else if (take(&v, &st, "--rule", argc, argv, &i, err) && (seen |= 1u << 3))
             st = st ? st : parse_choice(&o->degenerate, "rule", v, rules, 2, err);
-        else if (take(&v, &st, "--prefix", argc, argv, &i, err))
+        else if (take(&v, &st, "--prefix", argc, argv, &i, err) && (seen |= 1u << 5))
             st = st ? st : parse_prefix(o, v, err);
-        else if (take(&v, &st, "--threads-per-patch", argc, argv, &i, err))
+        else if (take(&v, &st, "--threads-per-patch", argc, argv, &i, err) && (seen |= 1u << 6))
             st = st ? st : parse_count(&o->threads, "--threads-per-patch", v, err);
-        else if (take(&v, &st, "--patches-per-block", argc, argv, &i, err))
+        else if (take(&v, &st, "--patches-per-block", argc, argv, &i, err) && (seen |= 1u << 7))
             st = st ? st : parse_count(&o->patches, "--patches-per-block", v, err);
-        else if (take(&v, &st, "--count", argc, argv, &i, err)) {
+        else if (take(&v, &st, "--count", argc, argv, &i, err) && (seen |= 1u << 8)) {
             if (!st && !(st = parse_ulong(&u, "--count", v, 1000000, err)))
                 o->count = (long)u;
-        }
-        else if (take(&v, &st, "--seed", argc, argv, &i, err))
+        } else if (take(&v, &st, "--seed", argc, argv, &i, err) && (seen |= 1u << 9))
             st = st ? st : parse_ulong(&o->seed, "--seed", v, UINT64_MAX, err);
         else if (take(&v, &st, "--output", argc, argv, &i, err) ||
                  take(&v, &st, "-o", argc, argv, &i, err))
@@ -251,9 +251,9 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
     o->target = (cli_target)target;
     if (st || o->help || o->version)
         return st;
-    for (k = 0; k < (int)(sizeof names / sizeof *names); k++)
+    for (k = 0; k < (int)(sizeof opt_names / sizeof *opt_names); k++)
         if (seen >> k & 1 && !(allowed[o->mode] >> k & 1))
-            return ptp_fail(err, PTP_EUSAGE, "option %s does not apply to %s", names[k],
+            return ptp_fail(err, PTP_EUSAGE, "option %s does not apply to %s", opt_names[k],
                             modes[o->mode]);
     if (o->mode == CLI_VERIFY) {
         if (!o->input)
