@@ -4,6 +4,7 @@
 #define CHECK_H
 
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 
 static int check_failed_count;
@@ -60,6 +61,15 @@ static inline void prop_report(const prop *p)
 {
     check(!p->bad && p->tried > 0, p->name, "%s (%ld of %ld cases failed)",
           p->tried ? p->detail : "no case was tried", p->bad, p->tried);
+}
+
+/* splitmix64: the next value of the deterministic pseudo-random stream *state. */
+static inline uint64_t check_rand(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return z ^ (z >> 31);
 }
 
 /* The exit status of a test program: 0 when every check passed. */

@@ -172,14 +172,10 @@ void kref_clear(kref_ref *r)
     tp_clear(&r->t);
 }
 
-/* splitmix64: a uniform double in [lo, hi). */
+/* A uniform double in [lo, hi) from the stream *s. */
 static double uniform(uint64_t *s, double lo, double hi)
 {
-    uint64_t z = (*s += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    z ^= z >> 31;
-    return lo + (hi - lo) * (double)(z >> 11) / 9007199254740992.0;
+    return lo + (hi - lo) * (double)(check_rand(s) >> 11) / 9007199254740992.0;
 }
 
 static kref_set *alloc_sets(int nsets, size_t count, int K)

@@ -20,10 +20,7 @@ static uint64_t rng_state = 0x243F6A8885A308D3u;
 
 static uint64_t rnd(void)
 {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return z ^ (z >> 31);
+    return check_rand(&rng_state);
 }
 
 static unsigned rnd_below(unsigned n)
