@@ -10,7 +10,8 @@ const char *const cli_targets[] = {"json", "table", "stats", "c", "glsl", "hlsl"
 
 const char cli_usage[] =
     "usage: ptpgen --degree N|NxM [--target T] [--space clip|world] [--rule strict|degenerate]\n"
-    "              [--planes] [--prefix NAME] [--threads-per-patch P] [--patches-per-block Q]\n"
+    "              [--planes] [--certified] [--refine K] [--prefix NAME]\n"
+    "              [--threads-per-patch P] [--patches-per-block Q]\n"
     "              [-o FILE]\n"
     "       ptpgen verify FILE [--degree NxM] [-o REPORT]\n"
     "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world] [-o FILE]\n"
@@ -31,6 +32,10 @@ const char cli_usage[] =
     "  --rule R         strict (default): back iff all values < 0, front iff all > 0;\n"
     "                   degenerate: back iff none > 0, front iff none < 0\n"
     "  --planes         kernels also write the value of every plane\n"
+    "  --certified      call a patch back or front only when every value clears a rigorous\n"
+    "                   bound on its float rounding error (README: Certified classification)\n"
+    "  --refine K       C only: split the patch's scalar Bezier function e.T by de Casteljau,\n"
+    "                   up to K levels (1 to 6), while its control values have mixed signs\n"
     "  --prefix NAME    prefix of generated names (default ptp_NxM_)\n"
     "  --threads-per-patch P\n"
     "                   threads that share one patch, 1..1024, at most the number of\n"
@@ -184,14 +189,15 @@ static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t m
 /* The options that belong to one mode or another: bit i stands for opt_names[i]. */
 enum {
     OPT_DEGREE = 1 << 0,
-    OPT_GENERATE = 0xFE, /* --target, --space, --rule, --planes, --prefix, the thread counts */
+    OPT_GENERATE = 0xCFE, /* --target, --space, --rule, --planes, --prefix, the thread counts,
+                             --certified, --refine */
     OPT_SPACE = 1 << 2,
     OPT_COUNT = 1 << 8,
     OPT_SEED = 1 << 9
 };
 static const char *const opt_names[] = {"--degree", "--target", "--space", "--rule", "--planes",
                                         "--prefix", "--threads-per-patch", "--patches-per-block",
-                                        "--count", "--seed"};
+                                        "--count", "--seed", "--certified", "--refine"};
 
 int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
 {
@@ -219,6 +225,8 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
             o->version = 1;
         else if (strcmp(a, "--planes") == 0 && (seen |= 1u << 4))
             o->planes = 1;
+        else if (strcmp(a, "--certified") == 0 && (seen |= 1u << 10))
+            o->certified = 1;
         else if (take(&v, &st, "--degree", argc, argv, &i, err) && (seen |= 1u << 0))
             st = st ? st : parse_degree(o, v, err);
         else if (take(&v, &st, "--target", argc, argv, &i, err) && (seen |= 1u << 1))
@@ -236,6 +244,9 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         else if (take(&v, &st, "--count", argc, argv, &i, err) && (seen |= 1u << 8)) {
             if (!st && !(st = parse_ulong(&u, "--count", v, 1000000, err)))
                 o->count = (long)u;
+        } else if (take(&v, &st, "--refine", argc, argv, &i, err) && (seen |= 1u << 11)) {
+            if (!st && !(st = parse_ulong(&u, "--refine", v, CLI_MAX_REFINE, err)))
+                o->refine = (int)u;
         } else if (take(&v, &st, "--seed", argc, argv, &i, err) && (seen |= 1u << 9))
             st = st ? st : parse_ulong(&o->seed, "--seed", v, UINT64_MAX, err);
         else if (take(&v, &st, "--output", argc, argv, &i, err) ||
@@ -270,6 +281,8 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
                  o->count, (unsigned long long)o->seed, o->world ? "world" : "clip");
         return PTP_OK;
     }
+    if (o->refine && o->target != CLI_C)
+        return ptp_fail(err, PTP_EUSAGE, "--refine applies to --target c only");
     {
         int n = snprintf(o->command, sizeof o->command, "ptpgen --degree %dx%d --target %s", o->n,
                          o->m, cli_targets[o->target]);
@@ -279,6 +292,10 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
             n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --rule degenerate");
         if (o->planes)
             n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --planes");
+        if (o->certified)
+            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --certified");
+        if (o->refine)
+            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --refine %d", o->refine);
         if (o->prefix[0])
             n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --prefix %s", o->prefix);
         if (o->threads >= 0)

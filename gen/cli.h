@@ -7,6 +7,9 @@
 
 #include <stdint.h>
 
+/* The most de Casteljau levels --refine accepts. */
+#define CLI_MAX_REFINE 6
+
 typedef enum {
     CLI_JSON,
     CLI_TABLE,
@@ -36,6 +39,8 @@ typedef struct {
     int world;            /* --space world (else clip) */
     int degenerate;       /* --rule degenerate (else strict) */
     int planes;           /* --planes */
+    int certified;        /* --certified */
+    int refine;           /* --refine K (C only), 0 when not given */
     int help, version;    /* --help or --version was given */
     char command[256];    /* the normalized command line, for banners */
     char prefix[64];      /* generated-name prefix: --prefix, or "ptp_<n>x<m>_" */

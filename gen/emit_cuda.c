@@ -8,7 +8,8 @@ static const kern_target cuda = {
     "threadIdx.x", "blockIdx.x", "blockIdx.y", "gridDim.x", NULL,
     " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count), extern \"C\": planes receives\n"
     " * d[p*L + P] when not NULL. Launch P*Q threads per block and ceil(patch_count / Q) blocks,\n"
-    " * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.\n"};
+    " * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.\n",
+    "fabsf", "fmaxf"};
 
 int emit_cuda(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {

@@ -10,7 +10,8 @@ static const kern_target glsl = {
     " * Bindings (set 0, std430): 0 control points (readonly vec4[]), 1 classes (uint[]), 2 values\n"
     " * d[p*L + P] (float[], with --planes). Push constants: { vec4 eye; uint patch_count; }.\n"
     " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
-    " * workgroup (x, y) handles the patches of block y * num_groups_x + x.\n"};
+    " * workgroup (x, y) handles the patches of block y * num_groups_x + x.\n",
+    "abs", "max"};
 
 int emit_glsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {

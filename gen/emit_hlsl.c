@@ -13,7 +13,8 @@ static const kern_target hlsl = {
     " * (with --planes); constants in b0 / Vulkan push constants: { float4 eye; uint patch_count;\n"
     " * uint groups_x; }, groups_x = the number of workgroups dispatched along x.\n"
     " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
-    " * workgroup (x, y) handles the patches of block y * groups_x + x.\n"};
+    " * workgroup (x, y) handles the patches of block y * groups_x + x.\n",
+    "abs", "max"};
 
 int emit_hlsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {

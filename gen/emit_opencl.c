@@ -9,7 +9,8 @@ static const kern_target opencl = {
     "(uint)get_num_groups(0)", NULL,
     " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count): planes receives d[p*L + P] when not\n"
     " * NULL. Work-group size exactly P*Q; ceil(patch_count / Q) work-groups, 1-D or 2-D:\n"
-    " * work-group (x, y) handles the patches of block y * num_groups(0) + x.\n"};
+    " * work-group (x, y) handles the patches of block y * num_groups(0) + x.\n",
+    "fabs", "fmax"};
 
 int emit_opencl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {

@@ -25,6 +25,7 @@ typedef struct {
     const char *planes_buffer; /* file-scope declaration of the values buffer (with --planes), or
                                   NULL when it is a kernel parameter that may be null */
     const char *interface;     /* the banner's description of bindings / signature and dispatch */
+    const char *fabs, *fmax;   /* absolute value and maximum of floats (--certified) */
 } kern_target;
 
 /* Writes a GPU kernel for target g: P threads per patch accumulate the planes they own in

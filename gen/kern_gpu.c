@@ -1,5 +1,6 @@
 /* kern_gpu.c: the one GPU kernel emitter, specialized by a target's data table.
  * Computes the banner, constant tables, helper functions and body, then fills the template. */
+#include "cert.h"
 #include "kern.h"
 #include "template.h"
 
@@ -33,10 +34,15 @@ void kern_banner(sbuf *o, const tp_table *t, const out_info *info, const char *f
     else
         sbuf_puts(o, " * World space: eye is the homogeneous eye point in the points' space; the values are\n"
                      " * d_P = eye . t_P. Negate eye to flip the orientation.\n");
-    sbuf_printf(o, " * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule %s.\n",
-                info->rule == OUT_STRICT
-                    ? "strict: back iff every d_P < 0, front iff every d_P > 0"
-                    : "degenerate: back iff no d_P > 0, front iff no d_P < 0 (all zero: back)");
+    if (info->certified)
+        sbuf_puts(o, " * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Certified: back iff every\n"
+                     " * d_P < -tau_P, front iff every d_P > tau_P, tau_P a rigorous bound on the float\n"
+                     " * rounding error of d_P (README: Certified classification), whatever the rule.\n");
+    else
+        sbuf_printf(o, " * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule %s.\n",
+                    info->rule == OUT_STRICT
+                        ? "strict: back iff every d_P < 0, front iff every d_P > 0"
+                        : "degenerate: back iff no d_P > 0, front iff no d_P < 0 (all zero: back)");
     sbuf_printf(o, " * A NaN value makes a patch silhouette. Values are at true scale (plane_scale 1).\n");
     if (interface)
         sbuf_printf(o, " *\n%s", interface);
@@ -61,6 +67,22 @@ static void put_uint_table(sbuf *o, const kern_target *g, const char *prefix, co
 
 /* The constant tables: the owned planes of each thread (CSR), and per round the slots of the
  * P threads (packed indices and weights); padding slots name an owned plane with weight 0. */
+/* Appends a constant float table NAME[n] = { ... } (values rounded to floats exactly, 9 digits). */
+static void put_float_table(sbuf *o, const kern_target *g, const char *prefix, const char *name,
+                            const float *v, int n)
+{
+    int i;
+    sbuf_printf(o, "%s float %s%s[%d] = {", g->table_qual, prefix, name, n);
+    for (i = 0; i < n; i++) {
+        char lit[48];
+        sprintf(lit, "%.9g", (double)v[i]);
+        if (!strpbrk(lit, ".en"))
+            strcat(lit, ".0");
+        sbuf_printf(o, "%s%sf", i == 0 ? "\n    " : i % 6 ? ", " : ",\n    ", lit);
+    }
+    sbuf_puts(o, "\n};\n");
+}
+
 static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                       const char *up, ptp_error *err)
 {
@@ -116,6 +138,20 @@ static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const ke
         sbuf_puts(o, "\n};\n\n");
     }
     free(v);
+    if (info->certified) {
+        cert_bounds cb;
+        int st = cert_table(&cb, t, info->space == OUT_WORLD, err);
+        if (st)
+            return st;
+        sbuf_printf(o, "/* Certified: |d_P - exact| <= tau_k[P] * E R^3 + tau_f[P] * (1 + R)^3 (1 + E), R the\n"
+                       " * patch's largest |coordinate|, E the eye's; for max(E, 1) R^3 < %sQMAX. */\n"
+                       "#define %sQMAX %.9gf\n",
+                    up, up, (double)cb.q_max);
+        put_float_table(o, g, info->prefix, "tau_k", cb.k, cb.nplanes);
+        put_float_table(o, g, info->prefix, "tau_f", cb.k2, cb.nplanes);
+        sbuf_puts(o, "\n");
+        cert_clear(&cb);
+    }
     return PTP_OK;
 }
 
@@ -166,7 +202,16 @@ static void put_functions(sbuf *o, const out_info *info, const kern_target *g)
         }
         sbuf_puts(o, "    return e.x * x - e.y * y + e.z * z - e.w * w;\n}\n\n");
     }
-    if (info->rule == OUT_STRICT)
+    if (info->certified)
+        sbuf_printf(o,
+                    "/* Bit 0: d is not certainly < 0 (d >= -bound); bit 1: not certainly > 0 (NaN sets both). */\n"
+                    "%s%s %sflags(float d, float bound)\n{\n"
+                    "    return (d < -bound ? 0u : 1u) | (d > bound ? 0u : 2u);\n}\n\n"
+                    "/* Certified: back iff every value is certainly < 0, front iff every value is certainly > 0. */\n"
+                    "%s%s %sclass_of(%s f)\n{\n"
+                    "    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;\n}\n\n",
+                    f, u, px, f, u, px, u);
+    else if (info->rule == OUT_STRICT)
         sbuf_printf(o,
                     "/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */\n"
                     "%s%s %sflags(float d)\n{\n"
@@ -231,6 +276,30 @@ static void put_body(sbuf *o, const out_info *info, const kern_target *g, const 
                     info->space == OUT_CLIP ? "" : ", eye");
     }
     sbuf_puts(o, "\n");
+    if (info->certified) {
+        const char *ab = g->fabs, *mx = g->fmax;
+        sbuf_printf(o, "    /* Certified: R, the patch's largest |coordinate|, and E, the eye's, bound the errors. */\n"
+                       "    float R = 0.0f;\n"
+                       "    for (i = 0u; i < %sK; i++) {\n"
+                       "        %s a = pts[q * %sK + i];\n",
+                    up, g->vec4, up);
+        if (info->space == OUT_CLIP)
+            sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(a.w)));\n    }\n", mx, mx, mx, ab,
+                        ab, ab);
+        else
+            sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(%s(a.z), %s(a.w))));\n    }\n", mx,
+                        mx, mx, ab, ab, mx, ab, ab);
+        if (info->space == OUT_CLIP)
+            sbuf_printf(o, "    float E = %s(eye.z);\n", ab);
+        else
+            sbuf_printf(o, "    float E = %s(%s(%s(eye.x), %s(eye.y)), %s(%s(eye.z), %s(eye.w)));\n", mx, mx,
+                        ab, ab, mx, ab, ab);
+        sbuf_printf(o, "    float R3 = R * R * R, ER3 = E * R3;\n"
+                       "    float F = (1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E);\n"
+                       "    if (!(%s(E, 1.0f) * R3 < %sQMAX))\n"
+                       "        f = 3u; /* too large for the bound, or NaN: never certified */\n",
+                    mx, up);
+    }
     sbuf_printf(o,
                 "    /* The values and signs of the owned planes; then one thread combines the patch's. */\n"
                 "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n"
@@ -240,8 +309,11 @@ static void put_body(sbuf *o, const out_info *info, const kern_target *g, const 
     if (info->planes)
         sbuf_printf(o, "        if (%slive)\n            planes[pid * %sL + plane] = d;\n",
                     g->planes_buffer ? "" : "planes && ", up);
+    if (info->certified)
+        sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * ER3 + %stau_f[plane] * F);\n", px, px, px);
+    else
+        sbuf_printf(o, "        f |= %sflags(d);\n", px);
     sbuf_printf(o,
-                "        f |= %sflags(d);\n"
                 "    }\n"
                 "    flags[q * %sP + t] = f;\n"
                 "    %s\n"
@@ -250,7 +322,7 @@ static void put_body(sbuf *o, const out_info *info, const kern_target *g, const 
                 "            f |= flags[q * %sP + i];\n"
                 "        cls[pid] = %sclass_of(f);\n"
                 "    }\n",
-                px, up, g->barrier, up, up, px);
+                up, g->barrier, up, up, px);
 }
 
 int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,

@@ -134,7 +134,7 @@ static int run(const cli_options *o, ptp_error *err)
 {
     static int (*const render[])(sbuf *, const tp_table *, const out_info *, ptp_error *) = {
         out_json, out_table, out_stats, emit_c, emit_glsl, emit_hlsl, emit_opencl, emit_cuda};
-    out_info info;
+    out_info info = {0};
     tp_table t;
     sched s;
     sbuf b;
@@ -153,6 +153,8 @@ static int run(const cli_options *o, ptp_error *err)
     info.space = o->world ? OUT_WORLD : OUT_CLIP;
     info.rule = o->degenerate ? OUT_DEGENERATE : OUT_STRICT;
     info.planes = o->planes;
+    info.certified = o->certified;
+    info.refine = o->refine;
     sbuf_init(&b);
     if (!(st = render[o->target](&b, &t, &info, err)))
         st = write_output(o->output, &b, err);

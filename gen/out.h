@@ -22,6 +22,8 @@ typedef struct {
     out_space space;
     out_rule rule;
     int planes;          /* kernels also write the per-plane values */
+    int certified;       /* back or front only when every value clears its rounding bound */
+    int refine;          /* C: de Casteljau levels on e.T when the values have mixed signs */
 } out_info;
 
 /* The ptpgen-planes/1 JSON document of t. */

@@ -172,16 +172,38 @@ if [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ]; then
             --patches-per-block 5 --planes --random 1 3000 7 --name "glsl 2x3 world, 7 threads per patch, 5 patches per group"
 fi
 
-# The checks can fail: a C header with one weight changed must be caught.
-"$P" --degree 3 --target c -o "$tmp/k.h" && sed -i '0,/-9.0f/s//-9.5f/' "$tmp/k.h"
-if gcc -std=c11 -O2 -Igen -Itests -include "$tmp/k.h" -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ \
-    tests/host_c.c build/gcc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
-    ! "$tmp/host_c" --degree 3 3 --space clip --rule strict --random 1 2000 5 --name mutant >"$tmp/out" 2>&1 &&
-    grep -q '^not ok - mutant.*plane values' "$tmp/out"; then
-    ok "a C header with one weight changed (-9 -> -9.5) fails the value check"
-else
-    notok "a C header with one weight changed fails the value check" "it passed or did not fail by its exit status"
-fi
+# mutant SED CHECK WHAT: a bicubic C header edited by sed script SED must fail the check lines
+# matching CHECK ("not ok - mutant CHECK") when run on random patches.
+mutant() {
+    "$P" --degree 3 --target c -o "$tmp/k.h" && sed -i "$1" "$tmp/k.h"
+    if gcc -std=c11 -O2 -Igen -Itests -include "$tmp/k.h" -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ \
+        tests/host_c.c build/gcc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
+        ! "$tmp/host_c" --degree 3 3 --space clip --rule strict --random 1 2000 5 --name mutant >"$tmp/out" 2>&1 &&
+        grep -q "^not ok - mutant $2" "$tmp/out"; then
+        ok "a C header with $3 fails its check"
+    else
+        notok "a C header with $3 fails its check" "it passed or did not fail by its exit status"
+    fi
+}
+# The checks can fail: the table (values) and the straight-line code (classify) each.
+mutant '0,/-9.0f/s//-9.5f/' '.*plane values' "one table weight changed (-9 -> -9.5)"
+mutant '0,/u = -((w0 \* m1_5/s//u = ((w0 * m1_5/' 'classify_batch' "one straight-line term's sign flipped"
+
+# The vectorized batch path as users build it for speed (clang: quick to compile at -O3), with
+# the SSE transposition and without it.
+for variant in "" "-DPTP_3X3_NO_SSE" "-DPTP_4X4_NO_SSE"; do
+    d=3x3 space=clip rule=strict
+    case "$variant" in *4X4*) d=4x4 space=world rule=degenerate ;; esac
+    n=${d%x*}
+    command -v clang >/dev/null || { notok "clang for the -O3 batch path" "clang is missing"; break; }
+    "$P" --degree $d --target c --space $space --rule $rule -o "$tmp/k.h" &&
+        clang -std=c11 -O3 -march=native -Wall -Wextra -Werror -pedantic $variant -Igen -Itests -include "$tmp/k.h" \
+            -DPTP_${n}X${n}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${n}_ tests/host_c.c \
+            build/clang/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
+        run_host "c $d $space $rule -O3 -march=native $variant" "$tmp/host_c" --degree $n $n --space $space \
+            --rule $rule --random 2 5003 17 --name "c/clang -O3 -march=native $d $space $rule $variant" ||
+        notok "c $d -O3 -march=native $variant compiles" "$(head -5 "$tmp/err")"
+done
 
 # Several degrees, and a custom prefix, in one C program; a header included twice.
 "$P" --degree 2 --target c -o "$tmp/a.h" && "$P" --degree 3 --target c --space world --prefix cull_ -o "$tmp/b.h"

@@ -76,7 +76,7 @@ static int render(sbuf *b, const tp_table *t, int table)
 {
     char prefix[32], command[64];
     sched s;
-    out_info info;
+    out_info info = {0};
     ptp_error err;
     int P = sched_default_threads(t), st;
     if (sched_build(&s, t, P, sched_default_patches(P), &err))

@@ -29,6 +29,12 @@ extern "C" {
 #define PTP_1X1_FRONT 0u
 #define PTP_1X1_BACK 1u
 #define PTP_1X1_SILHOUETTE 2u
+/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+#define PTP_1X1_FLOPS 42
+/* Patches classify_batch transposes and classifies at a time (define it to override). */
+#ifndef PTP_1X1_LANES
+#define PTP_1X1_LANES 64
+#endif
 
 /* The 4 control planes of one patch, all four components, at true scale. */
 void ptp_1x1_planes(const float cp[][4], float t[][4]);
@@ -39,6 +45,10 @@ unsigned ptp_1x1_classify(const float cp[][4], const float eye[4]);
 /* cls[p] = the class of patch p for patch_count patches, cp patch-major (4 points each). */
 void ptp_1x1_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                               unsigned char *cls);
+/* The same from structure-of-arrays: coordinate c of point k of patch p at
+ * soa[(k * 4 + c) * stride + p], stride >= patch_count. */
+void ptp_1x1_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
+                            unsigned char *cls);
 
 #ifdef __cplusplus
 }
@@ -47,6 +57,11 @@ void ptp_1x1_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 
 #if defined(PTP_1X1_IMPLEMENTATION) && !defined(PTP_1X1_IMPLEMENTED)
 #define PTP_1X1_IMPLEMENTED
+#if defined(__SSE2__) && !defined(PTP_1X1_NO_SSE)
+#include <emmintrin.h>
+#endif
+/* max(r, |x|) without branches; NaN in x gives NaN. */
+#define PTP_1X1_ABSMAX(r, x) ((r) > ((x) < 0.0f ? -(x) : (x)) ? (r) : ((x) < 0.0f ? -(x) : (x)))
 
 #define PTP_1X1_TERMS 4
 
@@ -115,22 +130,112 @@ void ptp_1x1_values(const float cp[][4], const float eye[4], float d[])
         d[x] *= eye[2];
 }
 
+/* The classification of n patches in structure-of-arrays order: coordinate c of point k
+ * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
+ * (PTP_1X1_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
+ * Laplace expansions over shared 2x2 minors. Iterations are independent, so compilers
+ * vectorize the loop across patches (-O3; -march=native for AVX2 or AVX-512). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#endif
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone)) /* one copy: it is large */
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_1x1_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
+                    unsigned char *restrict cls)
+{
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const float e2 = eye[2];
+    size_t l;
+    for (l = 0; l < n; l++) {
+        const float *q = soa + l;
+        unsigned notlt = 0, notgt = 0;
+        float u, v;
+        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride];
+        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride];
+        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride];
+        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride];
+        const float m1_2 = x1 * y2 - y1 * x2;
+        const float m0_2 = x0 * y2 - y0 * x2;
+        const float m0_1 = x0 * y1 - y0 * x1;
+        u = -((w0 * m1_2 - w1 * m0_2) + w2 * m0_1);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 0 */
+        const float m1_3 = x1 * y3 - y1 * x3;
+        const float m0_3 = x0 * y3 - y0 * x3;
+        u = -((w0 * m1_3 - w1 * m0_3) + w3 * m0_1);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 1 */
+        const float m2_3 = x2 * y3 - y2 * x3;
+        u = ((w0 * m2_3 - w2 * m0_3) + w3 * m0_2);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 2 */
+        u = ((w1 * m2_3 - w2 * m1_3) + w3 * m1_2);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 3 */
+        /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
+         * silhouette (2); arithmetic, not branches, so that the loop vectorizes. */
+        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt));
+    }
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
+
 unsigned ptp_1x1_classify(const float cp[][4], const float eye[4])
 {
-    float d[PTP_1X1_PLANES];
-    unsigned x, f = 0;
-    ptp_1x1_values(cp, eye, d);
-    for (x = 0; x < PTP_1X1_PLANES; x++)
-        f |= (d[x] < 0.0f ? 0u : 1u) | (d[x] > 0.0f ? 0u : 2u); /* not < 0, not > 0 */
-    /* Strict: back iff every value < 0, front iff every value > 0. */
-    return !(f & 1u) ? PTP_1X1_BACK : !(f & 2u) ? PTP_1X1_FRONT : PTP_1X1_SILHOUETTE;
+    unsigned char c;
+    ptp_1x1_lanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */
+    return c;
+}
+
+void ptp_1x1_classify_soa(const float *soa, size_t stride, size_t patch_count,
+                  const float eye[4], unsigned char *cls)
+{
+    ptp_1x1_lanes(soa, stride, patch_count, eye, cls);
 }
 
 void ptp_1x1_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
-    size_t p;
-    for (p = 0; p < patch_count; p++)
-        cls[p] = (unsigned char)ptp_1x1_classify(cp + p * PTP_1X1_POINTS, eye);
+    float soa[PTP_1X1_POINTS * 4 * PTP_1X1_LANES];
+    size_t p, l, n;
+    unsigned k, c;
+    for (p = 0; p < patch_count; p += n) {
+        n = patch_count - p < PTP_1X1_LANES ? patch_count - p : PTP_1X1_LANES;
+        l = 0;
+#if defined(__SSE2__) && !defined(PTP_1X1_NO_SSE)
+        for (; l + 4 <= n; l += 4) /* 4x4 transposes: one point of four patches */
+            for (k = 0; k < PTP_1X1_POINTS; k++) {
+                __m128 r0 = _mm_loadu_ps(cp[(p + l) * PTP_1X1_POINTS + k]);
+                __m128 r1 = _mm_loadu_ps(cp[(p + l + 1) * PTP_1X1_POINTS + k]);
+                __m128 r2 = _mm_loadu_ps(cp[(p + l + 2) * PTP_1X1_POINTS + k]);
+                __m128 r3 = _mm_loadu_ps(cp[(p + l + 3) * PTP_1X1_POINTS + k]);
+                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+                _mm_storeu_ps(soa + (k * 4 + 0) * PTP_1X1_LANES + l, r0);
+                _mm_storeu_ps(soa + (k * 4 + 1) * PTP_1X1_LANES + l, r1);
+                _mm_storeu_ps(soa + (k * 4 + 2) * PTP_1X1_LANES + l, r2);
+                _mm_storeu_ps(soa + (k * 4 + 3) * PTP_1X1_LANES + l, r3);
+            }
+#endif
+        for (; l < n; l++)
+            for (k = 0; k < PTP_1X1_POINTS; k++)
+                for (c = 0; c < 4; c++)
+                    soa[(k * 4 + c) * PTP_1X1_LANES + l] = cp[(p + l) * PTP_1X1_POINTS + k][c];
+        ptp_1x1_lanes(soa, PTP_1X1_LANES, n, eye, cls + p);
+    }
 }
 #endif

@@ -29,6 +29,12 @@ extern "C" {
 #define PTP_3X1_FRONT 0u
 #define PTP_3X1_BACK 1u
 #define PTP_3X1_SILHOUETTE 2u
+/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+#define PTP_3X1_FLOPS 404
+/* Patches classify_batch transposes and classifies at a time (define it to override). */
+#ifndef PTP_3X1_LANES
+#define PTP_3X1_LANES 64
+#endif
 
 /* The 16 control planes of one patch, all four components, at true scale. */
 void ptp_3x1_planes(const float cp[][4], float t[][4]);
@@ -39,6 +45,10 @@ unsigned ptp_3x1_classify(const float cp[][4], const float eye[4]);
 /* cls[p] = the class of patch p for patch_count patches, cp patch-major (8 points each). */
 void ptp_3x1_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                               unsigned char *cls);
+/* The same from structure-of-arrays: coordinate c of point k of patch p at
+ * soa[(k * 4 + c) * stride + p], stride >= patch_count. */
+void ptp_3x1_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
+                            unsigned char *cls);
 
 #ifdef __cplusplus
 }
@@ -47,6 +57,11 @@ void ptp_3x1_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 
 #if defined(PTP_3X1_IMPLEMENTATION) && !defined(PTP_3X1_IMPLEMENTED)
 #define PTP_3X1_IMPLEMENTED
+#if defined(__SSE2__) && !defined(PTP_3X1_NO_SSE)
+#include <emmintrin.h>
+#endif
+/* max(r, |x|) without branches; NaN in x gives NaN. */
+#define PTP_3X1_ABSMAX(r, x) ((r) > ((x) < 0.0f ? -(x) : (x)) ? (r) : ((x) < 0.0f ? -(x) : (x)))
 
 #define PTP_3X1_TERMS 48
 
@@ -203,22 +218,258 @@ void ptp_3x1_values(const float cp[][4], const float eye[4], float d[])
         d[x] *= eye[2];
 }
 
+/* The classification of n patches in structure-of-arrays order: coordinate c of point k
+ * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
+ * (PTP_3X1_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
+ * Laplace expansions over shared 2x2 minors. Iterations are independent, so compilers
+ * vectorize the loop across patches (-O3; -march=native for AVX2 or AVX-512). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#endif
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone)) /* one copy: it is large */
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
+                    unsigned char *restrict cls)
+{
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const float e2 = eye[2];
+    size_t l;
+    for (l = 0; l < n; l++) {
+        const float *q = soa + l;
+        unsigned notlt = 0, notgt = 0;
+        float u, v;
+        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride];
+        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride];
+        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride];
+        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride];
+        const float x4 = q[16 * stride], y4 = q[17 * stride], w4 = q[19 * stride];
+        const float x5 = q[20 * stride], y5 = q[21 * stride], w5 = q[23 * stride];
+        const float x6 = q[24 * stride], y6 = q[25 * stride], w6 = q[27 * stride];
+        const float x7 = q[28 * stride], y7 = q[29 * stride], w7 = q[31 * stride];
+        const float m1_2 = x1 * y2 - y1 * x2;
+        const float m0_2 = x0 * y2 - y0 * x2;
+        const float m0_1 = x0 * y1 - y0 * x1;
+        u = -((w0 * m1_2 - w1 * m0_2) + w2 * m0_1);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 0 */
+        const float m1_3 = x1 * y3 - y1 * x3;
+        const float m0_3 = x0 * y3 - y0 * x3;
+        u = -((w0 * m1_3 - w1 * m0_3) + w3 * m0_1);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 1 */
+        const float m1_4 = x1 * y4 - y1 * x4;
+        const float m0_4 = x0 * y4 - y0 * x4;
+        u = -((w0 * m1_4 - w1 * m0_4) + w4 * m0_1);
+        v = 2.0f * u;
+        const float m2_3 = x2 * y3 - y2 * x3;
+        u = ((w0 * m2_3 - w2 * m0_3) + w3 * m0_2);
+        v += 3.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 2 */
+        const float m1_5 = x1 * y5 - y1 * x5;
+        const float m0_5 = x0 * y5 - y0 * x5;
+        u = -((w0 * m1_5 - w1 * m0_5) + w5 * m0_1);
+        v = 2.0f * u;
+        u = ((w1 * m2_3 - w2 * m1_3) + w3 * m1_2);
+        v += 3.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 3 */
+        const float m1_6 = x1 * y6 - y1 * x6;
+        const float m0_6 = x0 * y6 - y0 * x6;
+        u = -((w0 * m1_6 - w1 * m0_6) + w6 * m0_1);
+        v = u;
+        const float m2_5 = x2 * y5 - y2 * x5;
+        u = ((w0 * m2_5 - w2 * m0_5) + w5 * m0_2);
+        const float m2_4 = x2 * y4 - y2 * x4;
+        u += ((w1 * m2_4 - w2 * m1_4) + w4 * m1_2);
+        v += 3.0f * u;
+        const float m3_4 = x3 * y4 - y3 * x4;
+        u = -((w0 * m3_4 - w3 * m0_4) + w4 * m0_3);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 4 */
+        const float m1_7 = x1 * y7 - y1 * x7;
+        const float m0_7 = x0 * y7 - y0 * x7;
+        u = -((w0 * m1_7 - w1 * m0_7) + w7 * m0_1);
+        v = u;
+        const float m3_5 = x3 * y5 - y3 * x5;
+        u = -((w0 * m3_5 - w3 * m0_5) + w5 * m0_3);
+        u -= ((w1 * m3_4 - w3 * m1_4) + w4 * m1_3);
+        v += 3.0f * u;
+        u = ((w1 * m2_5 - w2 * m1_5) + w5 * m1_2);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 5 */
+        const float m2_7 = x2 * y7 - y2 * x7;
+        u = ((w0 * m2_7 - w2 * m0_7) + w7 * m0_2);
+        v = u;
+        const float m2_6 = x2 * y6 - y2 * x6;
+        u = ((w1 * m2_6 - w2 * m1_6) + w6 * m1_2);
+        v += 2.0f * u;
+        const float m3_6 = x3 * y6 - y3 * x6;
+        u = -((w0 * m3_6 - w3 * m0_6) + w6 * m0_3);
+        v += 3.0f * u;
+        const float m4_5 = x4 * y5 - y4 * x5;
+        u = ((w0 * m4_5 - w4 * m0_5) + w5 * m0_4);
+        v += 6.0f * u;
+        u = -((w2 * m3_4 - w3 * m2_4) + w4 * m2_3);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 6 */
+        u = -((w1 * m3_6 - w3 * m1_6) + w6 * m1_3);
+        v = u;
+        const float m3_7 = x3 * y7 - y3 * x7;
+        u = -((w0 * m3_7 - w3 * m0_7) + w7 * m0_3);
+        v += 2.0f * u;
+        u = ((w1 * m2_7 - w2 * m1_7) + w7 * m1_2);
+        v += 3.0f * u;
+        u = ((w1 * m4_5 - w4 * m1_5) + w5 * m1_4);
+        v += 6.0f * u;
+        u = -((w2 * m3_5 - w3 * m2_5) + w5 * m2_3);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 7 */
+        const float m4_6 = x4 * y6 - y4 * x6;
+        u = ((w1 * m4_6 - w4 * m1_6) + w6 * m1_4);
+        v = u;
+        const float m4_7 = x4 * y7 - y4 * x7;
+        u = ((w0 * m4_7 - w4 * m0_7) + w7 * m0_4);
+        v += 2.0f * u;
+        const float m5_6 = x5 * y6 - y5 * x6;
+        u = -((w0 * m5_6 - w5 * m0_6) + w6 * m0_5);
+        v += 3.0f * u;
+        u = -((w2 * m3_6 - w3 * m2_6) + w6 * m2_3);
+        v += 6.0f * u;
+        u = ((w2 * m4_5 - w4 * m2_5) + w5 * m2_4);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 8 */
+        const float m5_7 = x5 * y7 - y5 * x7;
+        u = -((w0 * m5_7 - w5 * m0_7) + w7 * m0_5);
+        v = u;
+        u = -((w1 * m5_6 - w5 * m1_6) + w6 * m1_5);
+        v += 2.0f * u;
+        u = ((w1 * m4_7 - w4 * m1_7) + w7 * m1_4);
+        v += 3.0f * u;
+        u = -((w2 * m3_7 - w3 * m2_7) + w7 * m2_3);
+        v += 6.0f * u;
+        u = ((w3 * m4_5 - w4 * m3_5) + w5 * m3_4);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 9 */
+        const float m6_7 = x6 * y7 - y6 * x7;
+        u = ((w0 * m6_7 - w6 * m0_7) + w7 * m0_6);
+        v = u;
+        u = ((w2 * m4_7 - w4 * m2_7) + w7 * m2_4);
+        u += ((w3 * m4_6 - w4 * m3_6) + w6 * m3_4);
+        v += 3.0f * u;
+        u = -((w2 * m5_6 - w5 * m2_6) + w6 * m2_5);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 10 */
+        u = ((w1 * m6_7 - w6 * m1_7) + w7 * m1_6);
+        v = u;
+        u = -((w2 * m5_7 - w5 * m2_7) + w7 * m2_5);
+        u -= ((w3 * m5_6 - w5 * m3_6) + w6 * m3_5);
+        v += 3.0f * u;
+        u = ((w3 * m4_7 - w4 * m3_7) + w7 * m3_4);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 11 */
+        u = ((w2 * m6_7 - w6 * m2_7) + w7 * m2_6);
+        v = 2.0f * u;
+        u = -((w4 * m5_6 - w5 * m4_6) + w6 * m4_5);
+        v += 3.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 12 */
+        u = ((w3 * m6_7 - w6 * m3_7) + w7 * m3_6);
+        v = 2.0f * u;
+        u = -((w4 * m5_7 - w5 * m4_7) + w7 * m4_5);
+        v += 3.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 13 */
+        u = ((w4 * m6_7 - w6 * m4_7) + w7 * m4_6);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 14 */
+        u = ((w5 * m6_7 - w6 * m5_7) + w7 * m5_6);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 15 */
+        /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
+         * silhouette (2); arithmetic, not branches, so that the loop vectorizes. */
+        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt));
+    }
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
+
 unsigned ptp_3x1_classify(const float cp[][4], const float eye[4])
 {
-    float d[PTP_3X1_PLANES];
-    unsigned x, f = 0;
-    ptp_3x1_values(cp, eye, d);
-    for (x = 0; x < PTP_3X1_PLANES; x++)
-        f |= (d[x] < 0.0f ? 0u : 1u) | (d[x] > 0.0f ? 0u : 2u); /* not < 0, not > 0 */
-    /* Strict: back iff every value < 0, front iff every value > 0. */
-    return !(f & 1u) ? PTP_3X1_BACK : !(f & 2u) ? PTP_3X1_FRONT : PTP_3X1_SILHOUETTE;
+    unsigned char c;
+    ptp_3x1_lanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */
+    return c;
+}
+
+void ptp_3x1_classify_soa(const float *soa, size_t stride, size_t patch_count,
+                  const float eye[4], unsigned char *cls)
+{
+    ptp_3x1_lanes(soa, stride, patch_count, eye, cls);
 }
 
 void ptp_3x1_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
-    size_t p;
-    for (p = 0; p < patch_count; p++)
-        cls[p] = (unsigned char)ptp_3x1_classify(cp + p * PTP_3X1_POINTS, eye);
+    float soa[PTP_3X1_POINTS * 4 * PTP_3X1_LANES];
+    size_t p, l, n;
+    unsigned k, c;
+    for (p = 0; p < patch_count; p += n) {
+        n = patch_count - p < PTP_3X1_LANES ? patch_count - p : PTP_3X1_LANES;
+        l = 0;
+#if defined(__SSE2__) && !defined(PTP_3X1_NO_SSE)
+        for (; l + 4 <= n; l += 4) /* 4x4 transposes: one point of four patches */
+            for (k = 0; k < PTP_3X1_POINTS; k++) {
+                __m128 r0 = _mm_loadu_ps(cp[(p + l) * PTP_3X1_POINTS + k]);
+                __m128 r1 = _mm_loadu_ps(cp[(p + l + 1) * PTP_3X1_POINTS + k]);
+                __m128 r2 = _mm_loadu_ps(cp[(p + l + 2) * PTP_3X1_POINTS + k]);
+                __m128 r3 = _mm_loadu_ps(cp[(p + l + 3) * PTP_3X1_POINTS + k]);
+                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+                _mm_storeu_ps(soa + (k * 4 + 0) * PTP_3X1_LANES + l, r0);
+                _mm_storeu_ps(soa + (k * 4 + 1) * PTP_3X1_LANES + l, r1);
+                _mm_storeu_ps(soa + (k * 4 + 2) * PTP_3X1_LANES + l, r2);
+                _mm_storeu_ps(soa + (k * 4 + 3) * PTP_3X1_LANES + l, r3);
+            }
+#endif
+        for (; l < n; l++)
+            for (k = 0; k < PTP_3X1_POINTS; k++)
+                for (c = 0; c < 4; c++)
+                    soa[(k * 4 + c) * PTP_3X1_LANES + l] = cp[(p + l) * PTP_3X1_POINTS + k][c];
+        ptp_3x1_lanes(soa, PTP_3X1_LANES, n, eye, cls + p);
+    }
 }
 #endif

@@ -29,6 +29,12 @@ extern "C" {
 #define PTP_3X2_FRONT 0u
 #define PTP_3X2_BACK 1u
 #define PTP_3X2_SILHOUETTE 2u
+/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+#define PTP_3X2_FLOPS 1520
+/* Patches classify_batch transposes and classifies at a time (define it to override). */
+#ifndef PTP_3X2_LANES
+#define PTP_3X2_LANES 64
+#endif
 
 /* The 40 control planes of one patch, all four components, at true scale. */
 void ptp_3x2_planes(const float cp[][4], float t[][4]);
@@ -39,6 +45,10 @@ unsigned ptp_3x2_classify(const float cp[][4], const float eye[4]);
 /* cls[p] = the class of patch p for patch_count patches, cp patch-major (12 points each). */
 void ptp_3x2_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                               unsigned char *cls);
+/* The same from structure-of-arrays: coordinate c of point k of patch p at
+ * soa[(k * 4 + c) * stride + p], stride >= patch_count. */
+void ptp_3x2_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
+                            unsigned char *cls);
 
 #ifdef __cplusplus
 }
@@ -47,6 +57,11 @@ void ptp_3x2_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 
 #if defined(PTP_3X2_IMPLEMENTATION) && !defined(PTP_3X2_IMPLEMENTED)
 #define PTP_3X2_IMPLEMENTED
+#if defined(__SSE2__) && !defined(PTP_3X2_NO_SSE)
+#include <emmintrin.h>
+#endif
+/* max(r, |x|) without branches; NaN in x gives NaN. */
+#define PTP_3X2_ABSMAX(r, x) ((r) > ((x) < 0.0f ? -(x) : (x)) ? (r) : ((x) < 0.0f ? -(x) : (x)))
 
 #define PTP_3X2_TERMS 200
 
@@ -507,22 +522,632 @@ void ptp_3x2_values(const float cp[][4], const float eye[4], float d[])
         d[x] *= eye[2];
 }
 
+/* The classification of n patches in structure-of-arrays order: coordinate c of point k
+ * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
+ * (PTP_3X2_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
+ * Laplace expansions over shared 2x2 minors. Iterations are independent, so compilers
+ * vectorize the loop across patches (-O3; -march=native for AVX2 or AVX-512). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#endif
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone)) /* one copy: it is large */
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_3x2_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
+                    unsigned char *restrict cls)
+{
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const float e2 = eye[2];
+    size_t l;
+    for (l = 0; l < n; l++) {
+        const float *q = soa + l;
+        unsigned notlt = 0, notgt = 0;
+        float u, v;
+        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride];
+        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride];
+        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride];
+        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride];
+        const float x4 = q[16 * stride], y4 = q[17 * stride], w4 = q[19 * stride];
+        const float x5 = q[20 * stride], y5 = q[21 * stride], w5 = q[23 * stride];
+        const float x6 = q[24 * stride], y6 = q[25 * stride], w6 = q[27 * stride];
+        const float x7 = q[28 * stride], y7 = q[29 * stride], w7 = q[31 * stride];
+        const float x8 = q[32 * stride], y8 = q[33 * stride], w8 = q[35 * stride];
+        const float x9 = q[36 * stride], y9 = q[37 * stride], w9 = q[39 * stride];
+        const float x10 = q[40 * stride], y10 = q[41 * stride], w10 = q[43 * stride];
+        const float x11 = q[44 * stride], y11 = q[45 * stride], w11 = q[47 * stride];
+        const float m1_3 = x1 * y3 - y1 * x3;
+        const float m0_3 = x0 * y3 - y0 * x3;
+        const float m0_1 = x0 * y1 - y0 * x1;
+        u = -((w0 * m1_3 - w1 * m0_3) + w3 * m0_1);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 0 */
+        const float m2_3 = x2 * y3 - y2 * x3;
+        const float m0_2 = x0 * y2 - y0 * x2;
+        u = -((w0 * m2_3 - w2 * m0_3) + w3 * m0_2);
+        v = u;
+        const float m1_4 = x1 * y4 - y1 * x4;
+        const float m0_4 = x0 * y4 - y0 * x4;
+        u = -((w0 * m1_4 - w1 * m0_4) + w4 * m0_1);
+        v += 2.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 1 */
+        const float m1_5 = x1 * y5 - y1 * x5;
+        const float m0_5 = x0 * y5 - y0 * x5;
+        u = -((w0 * m1_5 - w1 * m0_5) + w5 * m0_1);
+        const float m1_2 = x1 * y2 - y1 * x2;
+        u -= ((w1 * m2_3 - w2 * m1_3) + w3 * m1_2);
+        v = u;
+        const float m2_4 = x2 * y4 - y2 * x4;
+        u = -((w0 * m2_4 - w2 * m0_4) + w4 * m0_2);
+        v += 2.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 2 */
+        const float m2_5 = x2 * y5 - y2 * x5;
+        u = -((w0 * m2_5 - w2 * m0_5) + w5 * m0_2);
+        v = u;
+        u = -((w1 * m2_4 - w2 * m1_4) + w4 * m1_2);
+        v += 2.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 3 */
+        u = -((w1 * m2_5 - w2 * m1_5) + w5 * m1_2);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 4 */
+        const float m1_6 = x1 * y6 - y1 * x6;
+        const float m0_6 = x0 * y6 - y0 * x6;
+        u = -((w0 * m1_6 - w1 * m0_6) + w6 * m0_1);
+        v = 2.0f * u;
+        const float m3_4 = x3 * y4 - y3 * x4;
+        u = ((w0 * m3_4 - w3 * m0_4) + w4 * m0_3);
+        v += 3.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 5 */
+        const float m2_6 = x2 * y6 - y2 * x6;
+        u = -((w0 * m2_6 - w2 * m0_6) + w6 * m0_2);
+        v = 2.0f * u;
+        const float m3_5 = x3 * y5 - y3 * x5;
+        u = ((w0 * m3_5 - w3 * m0_5) + w5 * m0_3);
+        v += 3.0f * u;
+        const float m1_7 = x1 * y7 - y1 * x7;
+        const float m0_7 = x0 * y7 - y0 * x7;
+        u = -((w0 * m1_7 - w1 * m0_7) + w7 * m0_1);
+        v += 4.0f * u;
+        u = ((w1 * m3_4 - w3 * m1_4) + w4 * m1_3);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 6 */
+        const float m1_8 = x1 * y8 - y1 * x8;
+        const float m0_8 = x0 * y8 - y0 * x8;
+        u = -((w0 * m1_8 - w1 * m0_8) + w8 * m0_1);
+        u -= ((w1 * m2_6 - w2 * m1_6) + w6 * m1_2);
+        v = 2.0f * u;
+        const float m4_5 = x4 * y5 - y4 * x5;
+        u = ((w0 * m4_5 - w4 * m0_5) + w5 * m0_4);
+        u += ((w2 * m3_4 - w3 * m2_4) + w4 * m2_3);
+        v += 3.0f * u;
+        const float m2_7 = x2 * y7 - y2 * x7;
+        u = -((w0 * m2_7 - w2 * m0_7) + w7 * m0_2);
+        v += 4.0f * u;
+        u = ((w1 * m3_5 - w3 * m1_5) + w5 * m1_3);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 7 */
+        const float m2_8 = x2 * y8 - y2 * x8;
+        u = -((w0 * m2_8 - w2 * m0_8) + w8 * m0_2);
+        v = 2.0f * u;
+        u = ((w2 * m3_5 - w3 * m2_5) + w5 * m2_3);
+        v += 3.0f * u;
+        u = -((w1 * m2_7 - w2 * m1_7) + w7 * m1_2);
+        v += 4.0f * u;
+        u = ((w1 * m4_5 - w4 * m1_5) + w5 * m1_4);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 8 */
+        u = -((w1 * m2_8 - w2 * m1_8) + w8 * m1_2);
+        v = 2.0f * u;
+        u = ((w2 * m4_5 - w4 * m2_5) + w5 * m2_4);
+        v += 3.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 9 */
+        const float m1_9 = x1 * y9 - y1 * x9;
+        const float m0_9 = x0 * y9 - y0 * x9;
+        u = -((w0 * m1_9 - w1 * m0_9) + w9 * m0_1);
+        v = u;
+        const float m3_7 = x3 * y7 - y3 * x7;
+        u = ((w0 * m3_7 - w3 * m0_7) + w7 * m0_3);
+        const float m3_6 = x3 * y6 - y3 * x6;
+        u += ((w1 * m3_6 - w3 * m1_6) + w6 * m1_3);
+        v += 3.0f * u;
+        const float m4_6 = x4 * y6 - y4 * x6;
+        u = -((w0 * m4_6 - w4 * m0_6) + w6 * m0_4);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 10 */
+        const float m2_9 = x2 * y9 - y2 * x9;
+        u = -((w0 * m2_9 - w2 * m0_9) + w9 * m0_2);
+        v = u;
+        const float m1_10 = x1 * y10 - y1 * x10;
+        const float m0_10 = x0 * y10 - y0 * x10;
+        u = -((w0 * m1_10 - w1 * m0_10) + w10 * m0_1);
+        v += 2.0f * u;
+        const float m3_8 = x3 * y8 - y3 * x8;
+        u = ((w0 * m3_8 - w3 * m0_8) + w8 * m0_3);
+        u += ((w2 * m3_6 - w3 * m2_6) + w6 * m2_3);
+        v += 3.0f * u;
+        const float m4_7 = x4 * y7 - y4 * x7;
+        u = -((w0 * m4_7 - w4 * m0_7) + w7 * m0_4);
+        const float m5_6 = x5 * y6 - y5 * x6;
+        u -= ((w0 * m5_6 - w5 * m0_6) + w6 * m0_5);
+        u -= ((w1 * m4_6 - w4 * m1_6) + w6 * m1_4);
+        v += 6.0f * u;
+        u = ((w1 * m3_7 - w3 * m1_7) + w7 * m1_3);
+        v += 12.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 11 */
+        const float m1_11 = x1 * y11 - y1 * x11;
+        const float m0_11 = x0 * y11 - y0 * x11;
+        u = -((w0 * m1_11 - w1 * m0_11) + w11 * m0_1);
+        u -= ((w1 * m2_9 - w2 * m1_9) + w9 * m1_2);
+        v = u;
+        const float m2_10 = x2 * y10 - y2 * x10;
+        u = -((w0 * m2_10 - w2 * m0_10) + w10 * m0_2);
+        v += 2.0f * u;
+        const float m5_7 = x5 * y7 - y5 * x7;
+        u = -((w0 * m5_7 - w5 * m0_7) + w7 * m0_5);
+        u += ((w1 * m3_8 - w3 * m1_8) + w8 * m1_3);
+        u -= ((w1 * m5_6 - w5 * m1_6) + w6 * m1_5);
+        u += ((w2 * m3_7 - w3 * m2_7) + w7 * m2_3);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 12 */
+        const float m2_11 = x2 * y11 - y2 * x11;
+        u = -((w0 * m2_11 - w2 * m0_11) + w11 * m0_2);
+        v = u;
+        u = -((w1 * m2_10 - w2 * m1_10) + w10 * m1_2);
+        v += 2.0f * u;
+        const float m5_8 = x5 * y8 - y5 * x8;
+        u = -((w0 * m5_8 - w5 * m0_8) + w8 * m0_5);
+        u -= ((w2 * m5_6 - w5 * m2_6) + w6 * m2_5);
+        v += 3.0f * u;
+        const float m4_8 = x4 * y8 - y4 * x8;
+        u = ((w1 * m4_8 - w4 * m1_8) + w8 * m1_4);
+        u += ((w2 * m3_8 - w3 * m2_8) + w8 * m2_3);
+        u += ((w2 * m4_7 - w4 * m2_7) + w7 * m2_4);
+        v += 6.0f * u;
+        u = -((w1 * m5_7 - w5 * m1_7) + w7 * m1_5);
+        v += 12.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 13 */
+        u = -((w1 * m2_11 - w2 * m1_11) + w11 * m1_2);
+        v = u;
+        u = -((w1 * m5_8 - w5 * m1_8) + w8 * m1_5);
+        u -= ((w2 * m5_7 - w5 * m2_7) + w7 * m2_5);
+        v += 3.0f * u;
+        u = ((w2 * m4_8 - w4 * m2_8) + w8 * m2_4);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 14 */
+        const float m3_10 = x3 * y10 - y3 * x10;
+        u = ((w0 * m3_10 - w3 * m0_10) + w10 * m0_3);
+        v = u;
+        const float m3_9 = x3 * y9 - y3 * x9;
+        u = ((w1 * m3_9 - w3 * m1_9) + w9 * m1_3);
+        v += 2.0f * u;
+        const float m4_9 = x4 * y9 - y4 * x9;
+        u = -((w0 * m4_9 - w4 * m0_9) + w9 * m0_4);
+        v += 3.0f * u;
+        const float m6_7 = x6 * y7 - y6 * x7;
+        u = ((w0 * m6_7 - w6 * m0_7) + w7 * m0_6);
+        v += 6.0f * u;
+        u = -((w3 * m4_6 - w4 * m3_6) + w6 * m3_4);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 15 */
+        const float m3_11 = x3 * y11 - y3 * x11;
+        u = ((w0 * m3_11 - w3 * m0_11) + w11 * m0_3);
+        v = u;
+        u = -((w1 * m4_9 - w4 * m1_9) + w9 * m1_4);
+        u += ((w2 * m3_9 - w3 * m2_9) + w9 * m2_3);
+        v += 2.0f * u;
+        const float m5_9 = x5 * y9 - y5 * x9;
+        u = -((w0 * m5_9 - w5 * m0_9) + w9 * m0_5);
+        v += 3.0f * u;
+        const float m4_10 = x4 * y10 - y4 * x10;
+        u = -((w0 * m4_10 - w4 * m0_10) + w10 * m0_4);
+        v += 4.0f * u;
+        const float m6_8 = x6 * y8 - y6 * x8;
+        u = ((w0 * m6_8 - w6 * m0_8) + w8 * m0_6);
+        u += ((w1 * m3_10 - w3 * m1_10) + w10 * m1_3);
+        v += 6.0f * u;
+        u = -((w3 * m5_6 - w5 * m3_6) + w6 * m3_5);
+        v += 9.0f * u;
+        u = ((w1 * m6_7 - w6 * m1_7) + w7 * m1_6);
+        v += 12.0f * u;
+        u = -((w3 * m4_7 - w4 * m3_7) + w7 * m3_4);
+        v += 18.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 16 */
+        const float m4_11 = x4 * y11 - y4 * x11;
+        u = -((w0 * m4_11 - w4 * m0_11) + w11 * m0_4);
+        u += ((w2 * m4_9 - w4 * m2_9) + w9 * m2_4);
+        v = u;
+        u = ((w1 * m3_11 - w3 * m1_11) + w11 * m1_3);
+        u -= ((w1 * m5_9 - w5 * m1_9) + w9 * m1_5);
+        v += 4.0f * u;
+        const float m5_10 = x5 * y10 - y5 * x10;
+        u = -((w0 * m5_10 - w5 * m0_10) + w10 * m0_5);
+        u += ((w2 * m3_10 - w3 * m2_10) + w10 * m2_3);
+        v += 5.0f * u;
+        const float m7_8 = x7 * y8 - y7 * x8;
+        u = ((w0 * m7_8 - w7 * m0_8) + w8 * m0_7);
+        u += ((w2 * m6_7 - w6 * m2_7) + w7 * m2_6);
+        v += 6.0f * u;
+        u = -((w3 * m4_8 - w4 * m3_8) + w8 * m3_4);
+        u -= ((w4 * m5_6 - w5 * m4_6) + w6 * m4_5);
+        v += 9.0f * u;
+        u = ((w1 * m6_8 - w6 * m1_8) + w8 * m1_6);
+        v += 12.0f * u;
+        u = -((w3 * m5_7 - w5 * m3_7) + w7 * m3_5);
+        v += 18.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 17 */
+        u = -((w2 * m5_9 - w5 * m2_9) + w9 * m2_5);
+        v = u;
+        const float m5_11 = x5 * y11 - y5 * x11;
+        u = -((w0 * m5_11 - w5 * m0_11) + w11 * m0_5);
+        u += ((w1 * m4_11 - w4 * m1_11) + w11 * m1_4);
+        v += 2.0f * u;
+        u = ((w2 * m3_11 - w3 * m2_11) + w11 * m2_3);
+        v += 3.0f * u;
+        u = ((w2 * m4_10 - w4 * m2_10) + w10 * m2_4);
+        v += 4.0f * u;
+        u = -((w1 * m5_10 - w5 * m1_10) + w10 * m1_5);
+        u += ((w2 * m6_8 - w6 * m2_8) + w8 * m2_6);
+        v += 6.0f * u;
+        u = -((w3 * m5_8 - w5 * m3_8) + w8 * m3_5);
+        v += 9.0f * u;
+        u = ((w1 * m7_8 - w7 * m1_8) + w8 * m1_7);
+        v += 12.0f * u;
+        u = -((w4 * m5_7 - w5 * m4_7) + w7 * m4_5);
+        v += 18.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 18 */
+        u = -((w2 * m5_10 - w5 * m2_10) + w10 * m2_5);
+        v = u;
+        u = -((w1 * m5_11 - w5 * m1_11) + w11 * m1_5);
+        v += 2.0f * u;
+        u = ((w2 * m4_11 - w4 * m2_11) + w11 * m2_4);
+        v += 3.0f * u;
+        u = ((w2 * m7_8 - w7 * m2_8) + w8 * m2_7);
+        v += 6.0f * u;
+        u = -((w4 * m5_8 - w5 * m4_8) + w8 * m4_5);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 19 */
+        const float m6_9 = x6 * y9 - y6 * x9;
+        u = ((w1 * m6_9 - w6 * m1_9) + w9 * m1_6);
+        v = u;
+        const float m6_10 = x6 * y10 - y6 * x10;
+        u = ((w0 * m6_10 - w6 * m0_10) + w10 * m0_6);
+        v += 2.0f * u;
+        const float m7_9 = x7 * y9 - y7 * x9;
+        u = -((w0 * m7_9 - w7 * m0_9) + w9 * m0_7);
+        v += 3.0f * u;
+        u = -((w3 * m4_9 - w4 * m3_9) + w9 * m3_4);
+        v += 6.0f * u;
+        u = ((w3 * m6_7 - w6 * m3_7) + w7 * m3_6);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 20 */
+        u = ((w2 * m6_9 - w6 * m2_9) + w9 * m2_6);
+        v = u;
+        const float m6_11 = x6 * y11 - y6 * x11;
+        u = ((w0 * m6_11 - w6 * m0_11) + w11 * m0_6);
+        const float m7_10 = x7 * y10 - y7 * x10;
+        u -= ((w0 * m7_10 - w7 * m0_10) + w10 * m0_7);
+        v += 2.0f * u;
+        const float m8_9 = x8 * y9 - y8 * x9;
+        u = -((w0 * m8_9 - w8 * m0_9) + w9 * m0_8);
+        v += 3.0f * u;
+        u = -((w1 * m7_9 - w7 * m1_9) + w9 * m1_7);
+        v += 4.0f * u;
+        u = ((w1 * m6_10 - w6 * m1_10) + w10 * m1_6);
+        u -= ((w3 * m5_9 - w5 * m3_9) + w9 * m3_5);
+        v += 6.0f * u;
+        u = ((w3 * m6_8 - w6 * m3_8) + w8 * m3_6);
+        v += 9.0f * u;
+        u = -((w3 * m4_10 - w4 * m3_10) + w10 * m3_4);
+        v += 12.0f * u;
+        u = ((w4 * m6_7 - w6 * m4_7) + w7 * m4_6);
+        v += 18.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 21 */
+        const float m7_11 = x7 * y11 - y7 * x11;
+        u = ((w0 * m7_11 - w7 * m0_11) + w11 * m0_7);
+        u -= ((w2 * m7_9 - w7 * m2_9) + w9 * m2_7);
+        v = u;
+        const float m8_10 = x8 * y10 - y8 * x10;
+        u = -((w0 * m8_10 - w8 * m0_10) + w10 * m0_8);
+        u += ((w2 * m6_10 - w6 * m2_10) + w10 * m2_6);
+        v += 4.0f * u;
+        u = ((w1 * m6_11 - w6 * m1_11) + w11 * m1_6);
+        u -= ((w1 * m8_9 - w8 * m1_9) + w9 * m1_8);
+        v += 5.0f * u;
+        u = -((w3 * m4_11 - w4 * m3_11) + w11 * m3_4);
+        u -= ((w4 * m5_9 - w5 * m4_9) + w9 * m4_5);
+        v += 6.0f * u;
+        u = ((w3 * m7_8 - w7 * m3_8) + w8 * m3_7);
+        u += ((w5 * m6_7 - w6 * m5_7) + w7 * m5_6);
+        v += 9.0f * u;
+        u = -((w3 * m5_10 - w5 * m3_10) + w10 * m3_5);
+        v += 12.0f * u;
+        u = ((w4 * m6_8 - w6 * m4_8) + w8 * m4_6);
+        v += 18.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 22 */
+        const float m8_11 = x8 * y11 - y8 * x11;
+        u = -((w0 * m8_11 - w8 * m0_11) + w11 * m0_8);
+        v = u;
+        u = ((w2 * m7_10 - w7 * m2_10) + w10 * m2_7);
+        u -= ((w2 * m8_9 - w8 * m2_9) + w9 * m2_8);
+        v += 2.0f * u;
+        u = ((w2 * m6_11 - w6 * m2_11) + w11 * m2_6);
+        v += 3.0f * u;
+        u = ((w1 * m7_11 - w7 * m1_11) + w11 * m1_7);
+        v += 4.0f * u;
+        u = -((w1 * m8_10 - w8 * m1_10) + w10 * m1_8);
+        u -= ((w3 * m5_11 - w5 * m3_11) + w11 * m3_5);
+        v += 6.0f * u;
+        u = ((w5 * m6_8 - w6 * m5_8) + w8 * m5_6);
+        v += 9.0f * u;
+        u = -((w4 * m5_10 - w5 * m4_10) + w10 * m4_5);
+        v += 12.0f * u;
+        u = ((w4 * m7_8 - w7 * m4_8) + w8 * m4_7);
+        v += 18.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 23 */
+        u = -((w1 * m8_11 - w8 * m1_11) + w11 * m1_8);
+        v = u;
+        u = -((w2 * m8_10 - w8 * m2_10) + w10 * m2_8);
+        v += 2.0f * u;
+        u = ((w2 * m7_11 - w7 * m2_11) + w11 * m2_7);
+        v += 3.0f * u;
+        u = -((w4 * m5_11 - w5 * m4_11) + w11 * m4_5);
+        v += 6.0f * u;
+        u = ((w5 * m7_8 - w7 * m5_8) + w8 * m5_7);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 24 */
+        const float m9_10 = x9 * y10 - y9 * x10;
+        u = ((w0 * m9_10 - w9 * m0_10) + w10 * m0_9);
+        v = u;
+        u = ((w3 * m6_10 - w6 * m3_10) + w10 * m3_6);
+        u += ((w4 * m6_9 - w6 * m4_9) + w9 * m4_6);
+        v += 3.0f * u;
+        u = -((w3 * m7_9 - w7 * m3_9) + w9 * m3_7);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 25 */
+        const float m9_11 = x9 * y11 - y9 * x11;
+        u = ((w0 * m9_11 - w9 * m0_11) + w11 * m0_9);
+        v = u;
+        u = ((w1 * m9_10 - w9 * m1_10) + w10 * m1_9);
+        v += 2.0f * u;
+        u = ((w3 * m6_11 - w6 * m3_11) + w11 * m3_6);
+        u += ((w5 * m6_9 - w6 * m5_9) + w9 * m5_6);
+        v += 3.0f * u;
+        u = -((w3 * m7_10 - w7 * m3_10) + w10 * m3_7);
+        u -= ((w3 * m8_9 - w8 * m3_9) + w9 * m3_8);
+        u -= ((w4 * m7_9 - w7 * m4_9) + w9 * m4_7);
+        v += 6.0f * u;
+        u = ((w4 * m6_10 - w6 * m4_10) + w10 * m4_6);
+        v += 12.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 26 */
+        const float m10_11 = x10 * y11 - y10 * x11;
+        u = ((w0 * m10_11 - w10 * m0_11) + w11 * m0_10);
+        u += ((w2 * m9_10 - w9 * m2_10) + w10 * m2_9);
+        v = u;
+        u = ((w1 * m9_11 - w9 * m1_11) + w11 * m1_9);
+        v += 2.0f * u;
+        u = -((w3 * m8_10 - w8 * m3_10) + w10 * m3_8);
+        u += ((w4 * m6_11 - w6 * m4_11) + w11 * m4_6);
+        u -= ((w4 * m8_9 - w8 * m4_9) + w9 * m4_8);
+        u += ((w5 * m6_10 - w6 * m5_10) + w10 * m5_6);
+        v += 9.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 27 */
+        u = ((w2 * m9_11 - w9 * m2_11) + w11 * m2_9);
+        v = u;
+        u = ((w1 * m10_11 - w10 * m1_11) + w11 * m1_10);
+        v += 2.0f * u;
+        u = -((w3 * m8_11 - w8 * m3_11) + w11 * m3_8);
+        u -= ((w5 * m8_9 - w8 * m5_9) + w9 * m5_8);
+        v += 3.0f * u;
+        u = ((w4 * m7_11 - w7 * m4_11) + w11 * m4_7);
+        u += ((w5 * m6_11 - w6 * m5_11) + w11 * m5_6);
+        u += ((w5 * m7_10 - w7 * m5_10) + w10 * m5_7);
+        v += 6.0f * u;
+        u = -((w4 * m8_10 - w8 * m4_10) + w10 * m4_8);
+        v += 12.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 28 */
+        u = ((w2 * m10_11 - w10 * m2_11) + w11 * m2_10);
+        v = u;
+        u = -((w4 * m8_11 - w8 * m4_11) + w11 * m4_8);
+        u -= ((w5 * m8_10 - w8 * m5_10) + w10 * m5_8);
+        v += 3.0f * u;
+        u = ((w5 * m7_11 - w7 * m5_11) + w11 * m5_7);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 29 */
+        u = ((w3 * m9_10 - w9 * m3_10) + w10 * m3_9);
+        v = 2.0f * u;
+        u = -((w6 * m7_9 - w7 * m6_9) + w9 * m6_7);
+        v += 3.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 30 */
+        u = ((w3 * m9_11 - w9 * m3_11) + w11 * m3_9);
+        v = 2.0f * u;
+        u = -((w6 * m8_9 - w8 * m6_9) + w9 * m6_8);
+        v += 3.0f * u;
+        u = ((w4 * m9_10 - w9 * m4_10) + w10 * m4_9);
+        v += 4.0f * u;
+        u = -((w6 * m7_10 - w7 * m6_10) + w10 * m6_7);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 31 */
+        u = ((w3 * m10_11 - w10 * m3_11) + w11 * m3_10);
+        u += ((w5 * m9_10 - w9 * m5_10) + w10 * m5_9);
+        v = 2.0f * u;
+        u = -((w6 * m7_11 - w7 * m6_11) + w11 * m6_7);
+        u -= ((w7 * m8_9 - w8 * m7_9) + w9 * m7_8);
+        v += 3.0f * u;
+        u = ((w4 * m9_11 - w9 * m4_11) + w11 * m4_9);
+        v += 4.0f * u;
+        u = -((w6 * m8_10 - w8 * m6_10) + w10 * m6_8);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 32 */
+        u = ((w5 * m9_11 - w9 * m5_11) + w11 * m5_9);
+        v = 2.0f * u;
+        u = -((w6 * m8_11 - w8 * m6_11) + w11 * m6_8);
+        v += 3.0f * u;
+        u = ((w4 * m10_11 - w10 * m4_11) + w11 * m4_10);
+        v += 4.0f * u;
+        u = -((w7 * m8_10 - w8 * m7_10) + w10 * m7_8);
+        v += 6.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 33 */
+        u = ((w5 * m10_11 - w10 * m5_11) + w11 * m5_10);
+        v = 2.0f * u;
+        u = -((w7 * m8_11 - w8 * m7_11) + w11 * m7_8);
+        v += 3.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 34 */
+        u = ((w6 * m9_10 - w9 * m6_10) + w10 * m6_9);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 35 */
+        u = ((w6 * m9_11 - w9 * m6_11) + w11 * m6_9);
+        v = u;
+        u = ((w7 * m9_10 - w9 * m7_10) + w10 * m7_9);
+        v += 2.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 36 */
+        u = ((w6 * m10_11 - w10 * m6_11) + w11 * m6_10);
+        u += ((w8 * m9_10 - w9 * m8_10) + w10 * m8_9);
+        v = u;
+        u = ((w7 * m9_11 - w9 * m7_11) + w11 * m7_9);
+        v += 2.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 37 */
+        u = ((w8 * m9_11 - w9 * m8_11) + w11 * m8_9);
+        v = u;
+        u = ((w7 * m10_11 - w10 * m7_11) + w11 * m7_10);
+        v += 2.0f * u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 38 */
+        u = ((w8 * m10_11 - w10 * m8_11) + w11 * m8_10);
+        v = u;
+        v *= e2;
+        notlt |= !(v < 0.0f);
+        notgt |= !(v > 0.0f); /* plane 39 */
+        /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
+         * silhouette (2); arithmetic, not branches, so that the loop vectorizes. */
+        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt));
+    }
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
+
 unsigned ptp_3x2_classify(const float cp[][4], const float eye[4])
 {
-    float d[PTP_3X2_PLANES];
-    unsigned x, f = 0;
-    ptp_3x2_values(cp, eye, d);
-    for (x = 0; x < PTP_3X2_PLANES; x++)
-        f |= (d[x] < 0.0f ? 0u : 1u) | (d[x] > 0.0f ? 0u : 2u); /* not < 0, not > 0 */
-    /* Strict: back iff every value < 0, front iff every value > 0. */
-    return !(f & 1u) ? PTP_3X2_BACK : !(f & 2u) ? PTP_3X2_FRONT : PTP_3X2_SILHOUETTE;
+    unsigned char c;
+    ptp_3x2_lanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */
+    return c;
+}
+
+void ptp_3x2_classify_soa(const float *soa, size_t stride, size_t patch_count,
+                  const float eye[4], unsigned char *cls)
+{
+    ptp_3x2_lanes(soa, stride, patch_count, eye, cls);
 }
 
 void ptp_3x2_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
-    size_t p;
-    for (p = 0; p < patch_count; p++)
-        cls[p] = (unsigned char)ptp_3x2_classify(cp + p * PTP_3X2_POINTS, eye);
+    float soa[PTP_3X2_POINTS * 4 * PTP_3X2_LANES];
+    size_t p, l, n;
+    unsigned k, c;
+    for (p = 0; p < patch_count; p += n) {
+        n = patch_count - p < PTP_3X2_LANES ? patch_count - p : PTP_3X2_LANES;
+        l = 0;
+#if defined(__SSE2__) && !defined(PTP_3X2_NO_SSE)
+        for (; l + 4 <= n; l += 4) /* 4x4 transposes: one point of four patches */
+            for (k = 0; k < PTP_3X2_POINTS; k++) {
+                __m128 r0 = _mm_loadu_ps(cp[(p + l) * PTP_3X2_POINTS + k]);
+                __m128 r1 = _mm_loadu_ps(cp[(p + l + 1) * PTP_3X2_POINTS + k]);
+                __m128 r2 = _mm_loadu_ps(cp[(p + l + 2) * PTP_3X2_POINTS + k]);
+                __m128 r3 = _mm_loadu_ps(cp[(p + l + 3) * PTP_3X2_POINTS + k]);
+                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+                _mm_storeu_ps(soa + (k * 4 + 0) * PTP_3X2_LANES + l, r0);
+                _mm_storeu_ps(soa + (k * 4 + 1) * PTP_3X2_LANES + l, r1);
+                _mm_storeu_ps(soa + (k * 4 + 2) * PTP_3X2_LANES + l, r2);
+                _mm_storeu_ps(soa + (k * 4 + 3) * PTP_3X2_LANES + l, r3);
+            }
+#endif
+        for (; l < n; l++)
+            for (k = 0; k < PTP_3X2_POINTS; k++)
+                for (c = 0; c < 4; c++)
+                    soa[(k * 4 + c) * PTP_3X2_LANES + l] = cp[(p + l) * PTP_3X2_POINTS + k][c];
+        ptp_3x2_lanes(soa, PTP_3X2_LANES, n, eye, cls + p);
+    }
 }
 #endif
