@@ -175,10 +175,11 @@ static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t m
     const char *p = arg;
     uint64_t x = 0;
     for (; *p >= '0' && *p <= '9'; p++) {
-        if (x > (max - (uint64_t)(*p - '0')) / 10)
+        uint64_t d = (uint64_t)(*p - '0');
+        if (d > max || x > (max - d) / 10)
             return ptp_fail(err, PTP_EUSAGE, "%s '%s': the largest allowed is %llu", opt, arg,
                             (unsigned long long)max);
-        x = x * 10 + (uint64_t)(*p - '0');
+        x = x * 10 + d;
     }
     if (p == arg || *p != '\0')
         return ptp_fail(err, PTP_EUSAGE, "%s '%s': expected a whole number", opt, arg);
@@ -283,6 +284,9 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
     }
     if (o->refine && o->target != CLI_C)
         return ptp_fail(err, PTP_EUSAGE, "--refine applies to --target c only");
+    if (o->refine && o->certified)
+        return ptp_fail(err, PTP_EUSAGE, "--refine and --certified do not go together: the "
+                                         "subdivision is not certified");
     {
         int n = snprintf(o->command, sizeof o->command, "ptpgen --degree %dx%d --target %s", o->n,
                          o->m, cli_targets[o->target]);

@@ -121,6 +121,65 @@ static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_
     }
 }
 
+/* --refine K: the class of a silhouette patch from the scalar Bezier function e.T(u,v), whose
+ * control values are the plane values, split by de Casteljau into four while it has mixed signs. */
+static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const char *up)
+{
+    const char *px = info->prefix, *neg = info->rule == OUT_STRICT ? "< 0.0f" : "<= 0.0f";
+    const char *pos = info->rule == OUT_STRICT ? "> 0.0f" : ">= 0.0f";
+    sbuf_printf(o,
+                "/* --refine %d: the class of the scalar Bezier patch with control values d[I * %d + J] (bidegree\n"
+                " * %dx%d): back if all values are %s, front if all are %s, and otherwise, while levels\n"
+                " * remain and the four corners (values of the function itself) agree, the class the four\n"
+                " * quarters split at u = v = 1/2 (de Casteljau) agree on, else silhouette. */\n"
+                "static unsigned %ssplit_class(const float *d, int levels)\n{\n"
+                "    enum { U = %d, V = %d, N = (U + 1) * (V + 1) };\n"
+                "    float h[2][N], q[2][N], w[U > V ? U + 1 : V + 1];\n"
+                "    unsigned n = 0, p = 0, cn, cp, x, a, b, cls = 0;\n"
+                "    int i, j, k;\n"
+                "    for (x = 0; x < N; x++) {\n"
+                "        n += d[x] %s;\n        p += d[x] %s;\n    }\n"
+                "    if (n == N)\n        return %sBACK;\n"
+                "    if (p == N)\n        return %sFRONT;\n"
+                "    cn = (d[0] %s) + (d[V] %s) + (d[U * (V + 1)] %s) + (d[N - 1] %s);\n"
+                "    cp = (d[0] %s) + (d[V] %s) + (d[U * (V + 1)] %s) + (d[N - 1] %s);\n"
+                "    if (levels == 0 || (cn != 4 && cp != 4))\n"
+                "        return %sSILHOUETTE; /* the corners differ: a real sign change */\n"
+                "    for (j = 0; j <= V; j++) { /* along u: h[0] on u in [0, 1/2], h[1] on [1/2, 1] */\n"
+                "        for (i = 0; i <= U; i++)\n            w[i] = d[i * (V + 1) + j];\n"
+                "        for (i = 0; i <= U; i++) {\n"
+                "            h[0][i * (V + 1) + j] = w[0];\n"
+                "            h[1][(U - i) * (V + 1) + j] = w[U - i];\n"
+                "            for (k = 0; k < U - i; k++)\n                w[k] = 0.5f * (w[k] + w[k + 1]);\n"
+                "        }\n"
+                "    }\n"
+                "    for (a = 0; a < 2; a++) {\n"
+                "        for (i = 0; i <= U; i++) { /* h[a] along v into q[0] and q[1] */\n"
+                "            for (j = 0; j <= V; j++)\n                w[j] = h[a][i * (V + 1) + j];\n"
+                "            for (j = 0; j <= V; j++) {\n"
+                "                q[0][i * (V + 1) + j] = w[0];\n"
+                "                q[1][i * (V + 1) + V - j] = w[V - j];\n"
+                "                for (k = 0; k < V - j; k++)\n                    w[k] = 0.5f * (w[k] + w[k + 1]);\n"
+                "            }\n"
+                "        }\n"
+                "        for (b = 0; b < 2; b++) {\n"
+                "            unsigned c = %ssplit_class(q[b], levels - 1);\n"
+                "            if (c == %sSILHOUETTE || (a + b > 0 && c != cls))\n"
+                "                return %sSILHOUETTE;\n"
+                "            cls = c;\n"
+                "        }\n"
+                "    }\n"
+                "    return cls;\n}\n\n",
+                info->refine, t->pv + 1, t->pu, t->pv, neg, pos, px, t->pu, t->pv, neg, pos, up, up,
+                neg, neg, neg, neg, pos, pos, pos, pos, up, px, up, up);
+    sbuf_printf(o, "/* The refined class of a patch the plane values leave silhouette. */\n"
+                   "static unsigned %srefined(const float cp[][4], const float eye[4])\n{\n"
+                   "    float d[%sPLANES];\n"
+                   "    %svalues(cp, eye, d);\n"
+                   "    return %ssplit_class(d, %d);\n}\n\n",
+                px, up, px, px, info->refine);
+}
+
 /* The straight-line kernel over n patches in structure-of-arrays order, and the three entry
  * points built on it: classify (one patch), classify_batch (patch-major) and classify_soa. */
 static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
@@ -232,15 +291,31 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                      "        cls[l] = (unsigned char)(2u * nan + (1u - nan) * ((1u - gt) + 2u * (gt & lt)));\n");
     sbuf_printf(o, "    }\n}\n"
                    "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
+    if (info->refine)
+        put_refine(o, t, info, up);
     sbuf_printf(o, "unsigned %sclassify(const float cp[][4], const float eye[4])\n{\n"
                    "    unsigned char c;\n"
-                   "    %slanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */\n"
-                   "    return c;\n}\n\n",
+                   "    %slanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */\n",
                 px, px);
+    if (info->refine)
+        sbuf_printf(o, "    if (c == %sSILHOUETTE)\n        c = (unsigned char)%srefined(cp, eye);\n", up, px);
+    sbuf_puts(o, "    return c;\n}\n\n");
     sbuf_printf(o, "void %sclassify_soa(const float *soa, size_t stride, size_t patch_count,\n"
                    "                  const float eye[4], unsigned char *cls)\n{\n"
-                   "    %slanes(soa, stride, patch_count, eye, cls);\n}\n\n",
+                   "    %slanes(soa, stride, patch_count, eye, cls);\n",
                 px, px);
+    if (info->refine)
+        sbuf_printf(o, "    size_t p;\n    unsigned k, c;\n"
+                       "    for (p = 0; p < patch_count; p++)\n"
+                       "        if (cls[p] == %sSILHOUETTE) {\n"
+                       "            float cp[%sPOINTS][4];\n"
+                       "            for (k = 0; k < %sPOINTS; k++)\n"
+                       "                for (c = 0; c < 4; c++)\n"
+                       "                    cp[k][c] = soa[(k * 4 + c) * stride + p];\n"
+                       "            cls[p] = (unsigned char)%srefined((const float (*)[4])cp, eye);\n"
+                       "        }\n",
+                    up, up, up, px);
+    sbuf_puts(o, "}\n\n");
     sbuf_printf(o, "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
                    "                    unsigned char *cls)\n{\n"
                    "    float soa[%sPOINTS * 4 * %sLANES];\n"
@@ -267,9 +342,14 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                    "            for (k = 0; k < %sPOINTS; k++)\n"
                    "                for (c = 0; c < 4; c++)\n"
                    "                    soa[(k * 4 + c) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][c];\n"
-                   "        %slanes(soa, %sLANES, n, eye, cls + p);\n"
-                   "    }\n}\n",
+                   "        %slanes(soa, %sLANES, n, eye, cls + p);\n",
                 px, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, px, up);
+    if (info->refine)
+        sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
+                       "            if (cls[p + l] == %sSILHOUETTE)\n"
+                       "                cls[p + l] = (unsigned char)%srefined(cp + (p + l) * %sPOINTS, eye);\n",
+                    up, px, up);
+    sbuf_puts(o, "    }\n}\n");
     free(done);
     return PTP_OK;
 }
