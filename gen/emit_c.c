@@ -106,7 +106,7 @@ static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_
         put_bracket(o, p, x, 'b', 'm');
         sbuf_puts(o, ")");
     } else
-        put_bracket(o, p, x, 'w', 'm');
+        put_bracket(o, p, x, 'g', 'm');
     sbuf_puts(o, ";\n");
     if (last) {
         char sv[RAT_STRLEN];
@@ -233,8 +233,8 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                         k, 4 * k, k, 4 * k + 1, k, 4 * k + 2, k, 4 * k + 3, k, k, k, k, k, k);
         else
             sbuf_printf(o, "        const float x%d = q[%d * stride], y%d = q[%d * stride], "
-                           "w%d = q[%d * stride];\n",
-                        k, 4 * k, k, 4 * k + 1, k, 4 * k + 3);
+                           "w%d = q[%d * stride], g%d = e2 * w%d;\n",
+                        k, 4 * k, k, 4 * k + 1, k, 4 * k + 3, k, k);
     }
     if (info->certified) {
         sbuf_puts(o, "        /* Certified: R, the largest |coordinate|, bounds every value's rounding error. */\n"
@@ -263,8 +263,6 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
         put_term(o, p, i, world, first_group);
         if (!last)
             continue;
-        if (!world)
-            sbuf_puts(o, "        v *= e2;\n");
         if (info->certified)
             sbuf_printf(o, "        t = %af * ER3 + %af * F; /* the bound of plane %d */\n"
                            "        notlt |= !(v < -t);\n        notgt |= !(v > t);\n",

@@ -133,6 +133,6 @@ long slp_flops(const slp_prog *p, int world)
     f += (long)p->nterms * (6 * kinds - 1);          /* the brackets */
     f += (long)p->nterms - p->nplanes;               /* the sums */
     if (!world)
-        f += p->nplanes;                             /* times e2 */
+        f += p->npoints;                             /* G = e2 w */
     return f;
 }

@@ -9,8 +9,8 @@
  * where each bracket is the generalized Laplace expansion of -det[b_j b_k b_l e] along rows
  * {0, 1}, so every monomial of the determinant appears once. World space has two kinds:
  *     G_0(x) = e0 x1 - e1 x0 with M_0 the (z, w) minor, G_1(x) = e2 x3 - e3 x2 with the (x, y) minor;
- * clip space (e = (0, 0, e2, 0)) only kind 1 with G_1(x) = x3, the value multiplied by e2 at the
- * end. Two equal points in a term make its bracket exactly zero in float arithmetic without
+ * clip space (e = (0, 0, e2, 0)) only kind 1 with G_1(x) = e2 x3. Two equal points in a term
+ * make its bracket exactly zero in float arithmetic without
  * contracted multiply-adds, so a plane whose terms all vanish is exactly zero. */
 typedef struct {
     int k, l; /* the minor M(b_k, b_l), k < l */

@@ -156,34 +156,30 @@ static void ptp_1x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         const float *q = soa + l;
         unsigned notlt = 0, notgt = 0;
         float u, v;
-        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride];
-        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride];
-        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride];
-        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride];
+        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride], g0 = e2 * w0;
+        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride], g1 = e2 * w1;
+        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride], g2 = e2 * w2;
+        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride], g3 = e2 * w3;
         const float m1_2 = x1 * y2 - y1 * x2;
         const float m0_2 = x0 * y2 - y0 * x2;
         const float m0_1 = x0 * y1 - y0 * x1;
-        u = -((w0 * m1_2 - w1 * m0_2) + w2 * m0_1);
+        u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 0 */
         const float m1_3 = x1 * y3 - y1 * x3;
         const float m0_3 = x0 * y3 - y0 * x3;
-        u = -((w0 * m1_3 - w1 * m0_3) + w3 * m0_1);
+        u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 1 */
         const float m2_3 = x2 * y3 - y2 * x3;
-        u = ((w0 * m2_3 - w2 * m0_3) + w3 * m0_2);
+        u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 2 */
-        u = ((w1 * m2_3 - w2 * m1_3) + w3 * m1_2);
+        u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
         v = u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 3 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else

@@ -30,7 +30,7 @@ extern "C" {
 #define PTP_3X1_BACK 1u
 #define PTP_3X1_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa. */
-#define PTP_3X1_FLOPS 404
+#define PTP_3X1_FLOPS 396
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X1_LANES
 #define PTP_3X1_LANES 64
@@ -244,180 +244,164 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         const float *q = soa + l;
         unsigned notlt = 0, notgt = 0;
         float u, v;
-        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride];
-        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride];
-        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride];
-        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride];
-        const float x4 = q[16 * stride], y4 = q[17 * stride], w4 = q[19 * stride];
-        const float x5 = q[20 * stride], y5 = q[21 * stride], w5 = q[23 * stride];
-        const float x6 = q[24 * stride], y6 = q[25 * stride], w6 = q[27 * stride];
-        const float x7 = q[28 * stride], y7 = q[29 * stride], w7 = q[31 * stride];
+        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride], g0 = e2 * w0;
+        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride], g1 = e2 * w1;
+        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride], g2 = e2 * w2;
+        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride], g3 = e2 * w3;
+        const float x4 = q[16 * stride], y4 = q[17 * stride], w4 = q[19 * stride], g4 = e2 * w4;
+        const float x5 = q[20 * stride], y5 = q[21 * stride], w5 = q[23 * stride], g5 = e2 * w5;
+        const float x6 = q[24 * stride], y6 = q[25 * stride], w6 = q[27 * stride], g6 = e2 * w6;
+        const float x7 = q[28 * stride], y7 = q[29 * stride], w7 = q[31 * stride], g7 = e2 * w7;
         const float m1_2 = x1 * y2 - y1 * x2;
         const float m0_2 = x0 * y2 - y0 * x2;
         const float m0_1 = x0 * y1 - y0 * x1;
-        u = -((w0 * m1_2 - w1 * m0_2) + w2 * m0_1);
+        u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 0 */
         const float m1_3 = x1 * y3 - y1 * x3;
         const float m0_3 = x0 * y3 - y0 * x3;
-        u = -((w0 * m1_3 - w1 * m0_3) + w3 * m0_1);
+        u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 1 */
         const float m1_4 = x1 * y4 - y1 * x4;
         const float m0_4 = x0 * y4 - y0 * x4;
-        u = -((w0 * m1_4 - w1 * m0_4) + w4 * m0_1);
+        u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = 2.0f * u;
         const float m2_3 = x2 * y3 - y2 * x3;
-        u = ((w0 * m2_3 - w2 * m0_3) + w3 * m0_2);
+        u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v += 3.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 2 */
         const float m1_5 = x1 * y5 - y1 * x5;
         const float m0_5 = x0 * y5 - y0 * x5;
-        u = -((w0 * m1_5 - w1 * m0_5) + w5 * m0_1);
+        u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v = 2.0f * u;
-        u = ((w1 * m2_3 - w2 * m1_3) + w3 * m1_2);
+        u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
         v += 3.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 3 */
         const float m1_6 = x1 * y6 - y1 * x6;
         const float m0_6 = x0 * y6 - y0 * x6;
-        u = -((w0 * m1_6 - w1 * m0_6) + w6 * m0_1);
+        u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
         v = u;
         const float m2_5 = x2 * y5 - y2 * x5;
-        u = ((w0 * m2_5 - w2 * m0_5) + w5 * m0_2);
+        u = ((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         const float m2_4 = x2 * y4 - y2 * x4;
-        u += ((w1 * m2_4 - w2 * m1_4) + w4 * m1_2);
+        u += ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
         v += 3.0f * u;
         const float m3_4 = x3 * y4 - y3 * x4;
-        u = -((w0 * m3_4 - w3 * m0_4) + w4 * m0_3);
+        u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v += 6.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 4 */
         const float m1_7 = x1 * y7 - y1 * x7;
         const float m0_7 = x0 * y7 - y0 * x7;
-        u = -((w0 * m1_7 - w1 * m0_7) + w7 * m0_1);
+        u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
         v = u;
         const float m3_5 = x3 * y5 - y3 * x5;
-        u = -((w0 * m3_5 - w3 * m0_5) + w5 * m0_3);
-        u -= ((w1 * m3_4 - w3 * m1_4) + w4 * m1_3);
+        u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+        u -= ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v += 3.0f * u;
-        u = ((w1 * m2_5 - w2 * m1_5) + w5 * m1_2);
+        u = ((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v += 6.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 5 */
         const float m2_7 = x2 * y7 - y2 * x7;
-        u = ((w0 * m2_7 - w2 * m0_7) + w7 * m0_2);
+        u = ((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
         v = u;
         const float m2_6 = x2 * y6 - y2 * x6;
-        u = ((w1 * m2_6 - w2 * m1_6) + w6 * m1_2);
+        u = ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v += 2.0f * u;
         const float m3_6 = x3 * y6 - y3 * x6;
-        u = -((w0 * m3_6 - w3 * m0_6) + w6 * m0_3);
+        u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
         v += 3.0f * u;
         const float m4_5 = x4 * y5 - y4 * x5;
-        u = ((w0 * m4_5 - w4 * m0_5) + w5 * m0_4);
+        u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v += 6.0f * u;
-        u = -((w2 * m3_4 - w3 * m2_4) + w4 * m2_3);
+        u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v += 9.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 6 */
-        u = -((w1 * m3_6 - w3 * m1_6) + w6 * m1_3);
+        u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
         v = u;
         const float m3_7 = x3 * y7 - y3 * x7;
-        u = -((w0 * m3_7 - w3 * m0_7) + w7 * m0_3);
+        u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         v += 2.0f * u;
-        u = ((w1 * m2_7 - w2 * m1_7) + w7 * m1_2);
+        u = ((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         v += 3.0f * u;
-        u = ((w1 * m4_5 - w4 * m1_5) + w5 * m1_4);
+        u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v += 6.0f * u;
-        u = -((w2 * m3_5 - w3 * m2_5) + w5 * m2_3);
+        u = -((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
         v += 9.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 7 */
         const float m4_6 = x4 * y6 - y4 * x6;
-        u = ((w1 * m4_6 - w4 * m1_6) + w6 * m1_4);
+        u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v = u;
         const float m4_7 = x4 * y7 - y4 * x7;
-        u = ((w0 * m4_7 - w4 * m0_7) + w7 * m0_4);
+        u = ((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         v += 2.0f * u;
         const float m5_6 = x5 * y6 - y5 * x6;
-        u = -((w0 * m5_6 - w5 * m0_6) + w6 * m0_5);
+        u = -((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
         v += 3.0f * u;
-        u = -((w2 * m3_6 - w3 * m2_6) + w6 * m2_3);
+        u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v += 6.0f * u;
-        u = ((w2 * m4_5 - w4 * m2_5) + w5 * m2_4);
+        u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v += 9.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 8 */
         const float m5_7 = x5 * y7 - y5 * x7;
-        u = -((w0 * m5_7 - w5 * m0_7) + w7 * m0_5);
+        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
         v = u;
-        u = -((w1 * m5_6 - w5 * m1_6) + w6 * m1_5);
+        u = -((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v += 2.0f * u;
-        u = ((w1 * m4_7 - w4 * m1_7) + w7 * m1_4);
+        u = ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
         v += 3.0f * u;
-        u = -((w2 * m3_7 - w3 * m2_7) + w7 * m2_3);
+        u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v += 6.0f * u;
-        u = ((w3 * m4_5 - w4 * m3_5) + w5 * m3_4);
+        u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
         v += 9.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 9 */
         const float m6_7 = x6 * y7 - y6 * x7;
-        u = ((w0 * m6_7 - w6 * m0_7) + w7 * m0_6);
+        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         v = u;
-        u = ((w2 * m4_7 - w4 * m2_7) + w7 * m2_4);
-        u += ((w3 * m4_6 - w4 * m3_6) + w6 * m3_4);
+        u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
+        u += ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v += 3.0f * u;
-        u = -((w2 * m5_6 - w5 * m2_6) + w6 * m2_5);
+        u = -((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v += 6.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 10 */
-        u = ((w1 * m6_7 - w6 * m1_7) + w7 * m1_6);
+        u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         v = u;
-        u = -((w2 * m5_7 - w5 * m2_7) + w7 * m2_5);
-        u -= ((w3 * m5_6 - w5 * m3_6) + w6 * m3_5);
+        u = -((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
+        u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
         v += 3.0f * u;
-        u = ((w3 * m4_7 - w4 * m3_7) + w7 * m3_4);
+        u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v += 6.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 11 */
-        u = ((w2 * m6_7 - w6 * m2_7) + w7 * m2_6);
+        u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v = 2.0f * u;
-        u = -((w4 * m5_6 - w5 * m4_6) + w6 * m4_5);
+        u = -((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
         v += 3.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 12 */
-        u = ((w3 * m6_7 - w6 * m3_7) + w7 * m3_6);
+        u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = 2.0f * u;
-        u = -((w4 * m5_7 - w5 * m4_7) + w7 * m4_5);
+        u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
         v += 3.0f * u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 13 */
-        u = ((w4 * m6_7 - w6 * m4_7) + w7 * m4_6);
+        u = ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v = u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 14 */
-        u = ((w5 * m6_7 - w6 * m5_7) + w7 * m5_6);
+        u = ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
         v = u;
-        v *= e2;
         notlt |= !(v < 0.0f);
         notgt |= !(v > 0.0f); /* plane 15 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
