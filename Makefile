@@ -65,6 +65,37 @@ $(B)/bench_gen: bench/bench_gen.c
 	@mkdir -p $(B)
 	$(CC) $(STD) $(CFLAGS) -o $@ $<
 
+# `make bench`: culling throughput on this machine (bench/run_bench.sh): the paper's loop and the
+# emitted C header's paths per bidegree on one core and on all cores, against a peak it measures;
+# the OpenCL kernel on PoCL and the GLSL kernel on lavapipe (the test hosts' --bench); ptpgen's own
+# time. The hosts are built when their libraries are there; a missing one makes its rows unavailable.
+BENCH_DEGREES = 2x2 3x3 4x4
+BENCH_CFLAGS = -O3 -march=native
+# clang by default where installed: it vectorizes the emitted loop well and in seconds, while gcc 12
+# needs -O3, takes minutes for 4x4 and runs it slower (make bench BENCH_CC=gcc to compare).
+BENCH_CC ?= $(shell command -v clang >/dev/null 2>&1 && echo clang || echo $(CC))
+
+bench: ptpgen $(B)/bench/peak $(addprefix $(B)/bench/bench_cull_,$(BENCH_DEGREES))
+	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan >$(B)/bench/hosts.log 2>&1 || true
+	@bash bench/run_bench.sh $(B) $(BENCH_CC) "$(BENCH_CFLAGS)" $(BENCH_DEGREES)
+
+$(B)/bench/ptp_%.h: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree $* --target c --space clip --rule strict --prefix ptp_$*_ -o $@
+
+$(B)/bench/bench_cull_%: bench/bench_cull.c $(B)/bench/ptp_%.h Makefile
+	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -D_GNU_SOURCE -include $(B)/bench/ptp_$*.h \
+	    -DPTP_$(subst x,X,$*)_IMPLEMENTATION -DPFX=ptp_$*_ -DUPFX=PTP_$(subst x,X,$*)_ \
+	    -DDEGREE='"$*"' -o $@ $< -lm -pthread
+
+# The peak: FMA and add chains, with a * b + c contracted into FMAs.
+$(B)/bench/peak: bench/peak.c Makefile
+	@mkdir -p $(@D)
+	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -ffp-contract=fast -o $@ $< -pthread
+
+.SECONDARY: $(addprefix $(B)/bench/ptp_,$(addsuffix .h,$(BENCH_DEGREES)))
+.PHONY: bench
+
 # Fuzzing verify's parsers with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs
 # collect in build/fuzz/corpus; copy an input that fails into tests/fuzz/regressions/, which the
 # tests replay (with tests/fuzz/verify/, the seeds) under AddressSanitizer and UBSan.
@@ -103,3 +134,35 @@ clean:
 
 FORCE:
 .PHONY: all test install bench-gen build-tests out fuzz clean FORCE
+
+# `make cullrate`: the average number of patches NCONE, TCONE and ptpgen's tangent-plane test
+# (strict, degenerate, certified) cull from 10,000 random eye points around each model of
+# $(CULLRATE_MODELS), with a bracket of the exact answer (CVis). CULLRATE_ARGS passes options, e.g. `make cullrate CULLRATE_ARGS=--quick`.
+CULLRATE_MODELS ?= ../shared/models
+CULLRATE_ARGS ?=
+CR = $(B)/cullrate
+
+cullrate: $(CR)/cullrate
+	$(CR)/cullrate --models $(CULLRATE_MODELS) $(CULLRATE_ARGS)
+
+$(CR)/cr_s.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --degree 3 --target c --space world --rule strict --prefix cr_s_ -o $@
+
+$(CR)/cr_d.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --degree 3 --target c --space world --rule degenerate --prefix cr_d_ -o $@
+
+$(CR)/cr_c.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --degree 3 --target c --space world --certified --prefix cr_c_ -o $@
+
+$(CR)/cr_t.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --degree 3 --target table --prefix cr_t_ -o $@
+
+$(CR)/cullrate: bench/cullrate.c bench/cones.c bench/cones.h $(CR)/cr_s.h $(CR)/cr_d.h $(CR)/cr_c.h \
+    $(CR)/cr_t.h Makefile
+	$(CC) $(STD) $(CFLAGS) -pthread -Ibench -I$(CR) -o $@ bench/cullrate.c bench/cones.c -lm
+
+.PHONY: cullrate

@@ -34,21 +34,34 @@ static void fill(cert_bounds *b, const double *d, const double *S, const double 
          * again for the rounding of a subnormal K2 * F. */
         b->k2[i] = float_up(4 * eta * n[i] * (S[i] > 1 ? S[i] : 1) * widen);
         smax = m * S[i] > smax ? m * S[i] : smax;
+        if (b->k64) {
+            /* The same evaluation in double (u = 2^-53), with two more roundings for the double
+             * weights; 1 + 2^-40 covers the double evaluation of the bound and of k itself. */
+            const double u64 = 0x1p-53, d64 = d[i] + 2;
+            b->k64[i] = d64 * u64 / (1 - d64 * u64) * m * S[i] * (1 + 0x1p-40);
+            b->k2_64[i] = 4 * 0x1p-1074 * n[i] * (S[i] > 1 ? S[i] : 1) * (1 + 0x1p-40);
+        }
     }
     /* Every intermediate is at most max(E, 1) R^3 m S (1 + gamma): certifying only patches with
      * max(E, 1) R^3 < 2^120 / max(m S) keeps all of them below FLT_MAX. */
     b->q_max = (float)(0x1p120 / (smax + 1));
 }
 
-static int alloc(cert_bounds *b, int nplanes, double **d, double **S, double **n, ptp_error *err)
+static int alloc(cert_bounds *b, int nplanes, int with64, double **d, double **S, double **n,
+                 ptp_error *err)
 {
+    memset(b, 0, sizeof *b);
     b->nplanes = nplanes;
     b->k = malloc((size_t)nplanes * sizeof *b->k);
     b->k2 = malloc((size_t)nplanes * sizeof *b->k2);
+    if (with64) {
+        b->k64 = malloc((size_t)nplanes * sizeof *b->k64);
+        b->k2_64 = malloc((size_t)nplanes * sizeof *b->k2_64);
+    }
     *d = calloc((size_t)nplanes * 3, sizeof **d);
     *S = *d ? *d + nplanes : NULL;
     *n = *d ? *d + 2 * nplanes : NULL;
-    if (b->k && b->k2 && *d)
+    if (b->k && b->k2 && *d && (!with64 || (b->k64 && b->k2_64)))
         return PTP_OK;
     free(*d);
     cert_clear(b);
@@ -59,7 +72,7 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
 {
     double *d, *S, *n;
     size_t i;
-    int st = alloc(b, t->nplanes, &d, &S, &n, err);
+    int st = alloc(b, t->nplanes, 1, &d, &S, &n, err);
     if (st)
         return st;
     for (i = 0; i < t->nterms; i++) {
@@ -79,7 +92,7 @@ int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)
 {
     double *d, *S, *n;
     size_t i;
-    int st = alloc(b, p->nplanes, &d, &S, &n, err);
+    int st = alloc(b, p->nplanes, 0, &d, &S, &n, err);
     if (st)
         return st;
     for (i = 0; i < p->nterms; i++) {
@@ -100,5 +113,7 @@ void cert_clear(cert_bounds *b)
 {
     free(b->k);
     free(b->k2);
+    free(b->k64);
+    free(b->k2_64);
     memset(b, 0, sizeof *b);
 }

@@ -13,10 +13,11 @@
 typedef struct {
     float *k, *k2; /* per plane */
     float q_max;   /* certify only patches with max(E, 1) R^3 < q_max: nothing overflows */
+    double *k64, *k2_64; /* cert_table: the same for the table loop in double (else NULL) */
     int nplanes;
 } cert_bounds;
-/* The bounds of the table loop (the GPU kernels and the C target's values): float weights,
- * (terms + 16) roundings on a path as derived in README. PTP_ENOMEM on failure. */
+/* The bounds of the table loop (the GPU kernels; in double, the C target's recheck): float
+ * weights, (terms + 16) roundings on a path as derived in README. PTP_ENOMEM on failure. */
 int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
 /* The bounds of the straight-line program p (the C target's classify), at its planes' scales. */
 int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err);

@@ -180,6 +180,97 @@ static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const c
                 px, up, px, px, info->refine);
 }
 
+/* Appends a constant double table NAME[n] (hex literals: exact). */
+static void put_double_table(sbuf *o, const char *px, const char *name, const double *v, int n)
+{
+    int i;
+    sbuf_printf(o, "static const double %s%s[%d] = {", px, name, n);
+    for (i = 0; i < n; i++)
+        sbuf_printf(o, "%s%a", i == 0 ? "\n    " : i % 4 ? ", " : ",\n    ", v[i]);
+    sbuf_puts(o, "\n};\n");
+}
+
+/* --certified: the second look at a patch float cannot certify, in double. The table loop with
+ * double weights and the bounds of cert_table for u = 2^-53, which are 2^29 times smaller. */
+static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const char *up,
+                         ptp_error *err)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD;
+    double *w = malloc((t->nterms + 1) * sizeof *w);
+    cert_bounds cb = {0};
+    size_t i;
+    int st = w ? cert_table(&cb, t, world, err)
+               : ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
+    if (st) {
+        free(w);
+        return st;
+    }
+    for (i = 0; i < t->nterms; i++)
+        w[i] = rat_get_d(&t->terms[i].w);
+    sbuf_puts(o, "/* --certified, second look: the weights in double, and each plane's bound in double. */\n");
+    put_double_table(o, px, "wgt64", w, (int)t->nterms);
+    put_double_table(o, px, "tau64_k", cb.k64, cb.nplanes);
+    put_double_table(o, px, "tau64_f", cb.k2_64, cb.nplanes);
+    sbuf_printf(o,
+                "\n/* The certified class of a patch the float code could not certify, from the table loop\n"
+                " * in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
+                "static unsigned %scertify64(const float cp[][4], const float eye[4])\n{\n"
+                "    double d[%sPLANES], R = 0, E = 0, ER3, F;\n"
+                "    unsigned x, c, notlt = 0, notgt = 0;\n"
+                "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
+                "    for (x = 0; x < %sPOINTS; x++)\n"
+                "        for (c = 0; c < 4; c++)\n"
+                "            if (%s)\n"
+                "                R = %sABSMAX(R, (double)cp[x][c]);\n"
+                "    for (c = 0; c < 4; c++)\n"
+                "        if (%s)\n"
+                "            E = %sABSMAX(E, (double)eye[c]);\n"
+                "    ER3 = E * (R * R * R);\n"
+                "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
+                "    for (x = 0; x < %sTERMS; x++) {\n"
+                "        const float *a = cp[%sidx[x][1]], *b = cp[%sidx[x][2]], *e = cp[%sidx[x][3]];\n",
+                px, up, up, up, world ? "1" : "c != 2", up, world ? "1" : "c == 2", up, up, px, px, px);
+    if (world)
+        sbuf_printf(o,
+                    "        double r[4];\n"
+                    "        r[0] = a[1] * ((double)b[2] * e[3] - (double)b[3] * e[2]) -\n"
+                    "               b[1] * ((double)a[2] * e[3] - (double)a[3] * e[2]) +\n"
+                    "               e[1] * ((double)a[2] * b[3] - (double)a[3] * b[2]);\n"
+                    "        r[1] = -(a[0] * ((double)b[2] * e[3] - (double)b[3] * e[2]) -\n"
+                    "                 b[0] * ((double)a[2] * e[3] - (double)a[3] * e[2]) +\n"
+                    "                 e[0] * ((double)a[2] * b[3] - (double)a[3] * b[2]));\n"
+                    "        r[2] = a[0] * ((double)b[1] * e[3] - (double)b[3] * e[1]) -\n"
+                    "               b[0] * ((double)a[1] * e[3] - (double)a[3] * e[1]) +\n"
+                    "               e[0] * ((double)a[1] * b[3] - (double)a[3] * b[1]);\n"
+                    "        r[3] = -(a[0] * ((double)b[1] * e[2] - (double)b[2] * e[1]) -\n"
+                    "                 b[0] * ((double)a[1] * e[2] - (double)a[2] * e[1]) +\n"
+                    "                 e[0] * ((double)a[1] * b[2] - (double)a[2] * b[1]));\n"
+                    "        d[%sidx[x][0]] += %swgt64[x] * ((double)eye[0] * r[0] + (double)eye[1] * r[1] +\n"
+                    "                                        (double)eye[2] * r[2] + (double)eye[3] * r[3]);\n"
+                    "    }\n",
+                    px, px);
+    else
+        sbuf_printf(o,
+                    "        d[%sidx[x][0]] += %swgt64[x] * (a[0] * ((double)b[1] * e[3] - (double)b[3] * e[1]) -\n"
+                    "                                        b[0] * ((double)a[1] * e[3] - (double)a[3] * e[1]) +\n"
+                    "                                        e[0] * ((double)a[1] * b[3] - (double)a[3] * b[1]));\n"
+                    "    }\n"
+                    "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n",
+                    px, px, up);
+    sbuf_printf(o,
+                "    for (x = 0; x < %sPLANES; x++) {\n"
+                "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
+                "        notlt |= !(d[x] < -bound);\n"
+                "        notgt |= !(d[x] > bound);\n"
+                "    }\n"
+                "    return (1u - notlt) + 2u * (notlt & notgt);\n}\n\n",
+                up, px, px);
+    cert_clear(&cb);
+    free(w);
+    return PTP_OK;
+}
+
 /* The straight-line kernel over n patches in structure-of-arrays order, and the three entry
  * points built on it: classify (one patch), classify_batch (patch-major) and classify_soa. */
 static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
@@ -188,6 +279,9 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD, k, first_group = 1;
     int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
+    /* what silhouette patches get a second look from: refinement, or certification in double */
+    const char *second = info->refine ? "refined" : info->certified ? "certify64" : NULL;
+    int st;
     unsigned char *done = calloc(p->npairs + 1, 1);
     size_t i;
     if (!done)
@@ -291,18 +385,23 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                    "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
     if (info->refine)
         put_refine(o, t, info, up);
+    else if (info->certified && (st = put_certify64(o, t, info, up, err)) != PTP_OK) {
+        free(done);
+        return st;
+    }
     sbuf_printf(o, "unsigned %sclassify(const float cp[][4], const float eye[4])\n{\n"
                    "    unsigned char c;\n"
                    "    %slanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */\n",
                 px, px);
-    if (info->refine)
-        sbuf_printf(o, "    if (c == %sSILHOUETTE)\n        c = (unsigned char)%srefined(cp, eye);\n", up, px);
+    if (second)
+        sbuf_printf(o, "    if (c == %sSILHOUETTE)\n        c = (unsigned char)%s%s(cp, eye);\n", up, px,
+                    second);
     sbuf_puts(o, "    return c;\n}\n\n");
     sbuf_printf(o, "void %sclassify_soa(const float *soa, size_t stride, size_t patch_count,\n"
                    "                  const float eye[4], unsigned char *cls)\n{\n"
                    "    %slanes(soa, stride, patch_count, eye, cls);\n",
                 px, px);
-    if (info->refine)
+    if (second)
         sbuf_printf(o, "    size_t p;\n    unsigned k, c;\n"
                        "    for (p = 0; p < patch_count; p++)\n"
                        "        if (cls[p] == %sSILHOUETTE) {\n"
@@ -310,9 +409,9 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                        "            for (k = 0; k < %sPOINTS; k++)\n"
                        "                for (c = 0; c < 4; c++)\n"
                        "                    cp[k][c] = soa[(k * 4 + c) * stride + p];\n"
-                       "            cls[p] = (unsigned char)%srefined((const float (*)[4])cp, eye);\n"
+                       "            cls[p] = (unsigned char)%s%s((const float (*)[4])cp, eye);\n"
                        "        }\n",
-                    up, up, up, px);
+                    up, up, up, px, second);
     sbuf_puts(o, "}\n\n");
     sbuf_printf(o, "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
                    "                    unsigned char *cls)\n{\n"
@@ -342,11 +441,11 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                    "                    soa[(k * 4 + c) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][c];\n"
                    "        %slanes(soa, %sLANES, n, eye, cls + p);\n",
                 px, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, px, up);
-    if (info->refine)
+    if (second)
         sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
                        "            if (cls[p + l] == %sSILHOUETTE)\n"
-                       "                cls[p + l] = (unsigned char)%srefined(cp + (p + l) * %sPOINTS, eye);\n",
-                    up, px, up);
+                       "                cls[p + l] = (unsigned char)%s%s(cp + (p + l) * %sPOINTS, eye);\n",
+                    up, px, second, up);
     sbuf_puts(o, "    }\n}\n");
     free(done);
     return PTP_OK;

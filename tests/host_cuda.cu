@@ -69,6 +69,7 @@ int main(int argc, char **argv)
     }
     if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
         return !check(0, o.label, "%s", err.msg);
+    ref.certified = o.certified;
     memset(&res, 0, sizeof res);
     for (si = 0; si < o.nsources && !failed; si++) {
         kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);

@@ -2,8 +2,9 @@
  * every class (and, with --planes, every plane value) against the double reference of kref.
  *
  *   host_opencl KERNEL.cl --kernel NAME --degree N M --space clip|world --rule strict|degenerate
- *               --block-threads PQ --patches-per-block Q [--planes] [--random SETS COUNT SEED]
- *               [--model PATH NEYES SEED] --name LABEL
+ *               --block-threads PQ --patches-per-block Q [--planes] [--certified]
+ *               [--random SETS COUNT SEED] [--model PATH NEYES SEED] [--exact SETS COUNT SEED]
+ *               --name LABEL [--bench RUNS]
  *
  * Kernel contract: kernel void NAME(global const float4 *cp, global uint *cls,
  * global float *planes, float4 eye, uint patch_count) with reqd_work_group_size(PQ, 1, 1);
@@ -14,8 +15,13 @@
  * past patch_count (the output buffers are padded to whole blocks, filled with a sentinel, and
  * the padding is checked untouched; classes start as 0xFFFFFFFF, so kref_check catches unwritten
  * ones). Any setup failure is one "not ok - " line.
- * --random and --model may each be given more than once; at least one is required.
- * Exit status 0 only when every check passed. */
+ * --random, --model and --exact may each be given more than once; at least one is required.
+ * Exit status 0 only when every check passed.
+ *
+ * --bench RUNS (for `make bench`): after each set's checked run, the set's dispatch, clFinish and
+ * the read-back of its classes run RUNS more times (compilation and the upload of the control
+ * points excluded), and the best is printed as "# bench: patches=N runs=RUNS best_s=S
+ * patches_per_s=R". */
 #define _POSIX_C_SOURCE 200809L
 #define CL_TARGET_OPENCL_VERSION 120
 
@@ -30,6 +36,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #define CLS_UNWRITTEN 0xFFFFFFFFu
 #define PLANE_UNWRITTEN 0xFF7FFFFFu /* -FLT_MAX: far outside any reference bound */
@@ -405,6 +412,45 @@ static int run_set(state *st, const kref_args *o, const kref_ref *ref, const kre
     return 0;
 }
 
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/* --bench: times runs repetitions of the dispatch of set s (its control points and the kernel
+ * arguments are still in place from run_set), clFinish and the read-back of its classes, and
+ * prints the best as one "# bench: " line; 0, or -1 on an OpenCL failure (reported). */
+static int bench_set(state *st, const kref_args *o, const kref_set *s, long runs)
+{
+    size_t groups = (s->count + o->q - 1) / o->q, gsize = groups * o->pq, lsize = o->pq;
+    double best = 0;
+    long r;
+    if (s->count == 0)
+        return 0;
+    for (r = 0; r < runs; r++) {
+        double t0 = now_s(), secs;
+        cl_int e = clEnqueueNDRangeKernel(st->queue, st->kern, 1, NULL, &gsize, &lsize, 0, NULL,
+                                          NULL);
+        if (e == CL_SUCCESS)
+            e = clFinish(st->queue);
+        if (e == CL_SUCCESS)
+            e = clEnqueueReadBuffer(st->queue, st->cls_buf, CL_TRUE, 0,
+                                    s->count * sizeof(cl_uint), st->cls, 0, NULL, NULL);
+        if (e != CL_SUCCESS) {
+            check(0, o->label, "%s: --bench: %s", s->name, cl_err(e));
+            return -1;
+        }
+        secs = now_s() - t0;
+        if (r == 0 || secs < best)
+            best = secs;
+    }
+    printf("# bench: patches=%zu runs=%ld best_s=%.6f patches_per_s=%.0f\n", s->count, runs, best,
+           (double)s->count / best);
+    return 0;
+}
+
 static void release(state *st)
 {
     if (st->cp_buf)
@@ -438,9 +484,15 @@ int main(int argc, char **argv)
     cl_device_id dev;
     cl_int e;
     int si, ok = 0, have_ref = 0, nsets_total = 0;
+    const char *bench = kref_take_bench(&argc, argv);
+    long runs = 0;
 
     if (kref_parse_args(&o, argc, argv, "host_opencl", KREF_NEED_FILE | KREF_NEED_KERNEL | KREF_NEED_BLOCK))
         return 2;
+    if (bench && !(runs = kref_bench_runs(bench))) {
+        check(0, o.label, "--bench takes RUNS, 1 to 1000");
+        return 2;
+    }
     memset(&st, 0, sizeof st);
     memset(&res, 0, sizeof res);
     memset(&h, 0, sizeof h);
@@ -451,6 +503,7 @@ int main(int argc, char **argv)
         goto done;
     }
     have_ref = 1;
+    ref.certified = o.certified;
     if (pick_device(o.label, &plat, &dev))
         goto done;
     {
@@ -481,7 +534,8 @@ int main(int argc, char **argv)
         if (!sets)
             goto done;
         for (i = 0; i < nsets && !failed; i++)
-            failed = run_set(&st, &o, &ref, &sets[i], &res, &h) != 0;
+            failed = run_set(&st, &o, &ref, &sets[i], &res, &h) != 0 ||
+                     (runs && bench_set(&st, &o, &sets[i], runs) != 0);
         kref_free_sets(sets, nsets);
         if (failed)
             goto done;

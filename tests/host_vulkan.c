@@ -4,7 +4,8 @@
  *
  *   host_vulkan SPV --degree N M --space clip|world --rule strict|degenerate
  *               --block-threads PQ --patches-per-block Q [--planes] [--groups-x-constant]
- *               [--random SETS COUNT SEED] [--model PATH NEYES SEED] --name LABEL
+ *               [--certified] [--random SETS COUNT SEED] [--model PATH NEYES SEED]
+ *               [--exact SETS COUNT SEED] --name LABEL [--bench RUNS]
  *
  * Kernel contract: entry point "main"; std430 storage buffers in set 0: binding 0 the control
  * points (readonly vec4[], point k of patch p at p*K + k), binding 1 the classes (uint[], one per
@@ -24,9 +25,14 @@
  * Output: "# device: ...", kref_report's lines, and one check that the kernel wrote nothing
  * past patch_count (the classes and values buffers are filled with 0xFFFFFFFF before every
  * dispatch and reach past the chunk as far as its last workgroup does; the part past the chunk
- * must come back untouched; unwritten classes in the chunk are caught by kref_check). --random
- * and --model may each be given more than once; at least one is required. Any setup failure is
- * one "not ok - LABEL: reason" line. Exit status 0 only when every check passed. */
+ * must come back untouched; unwritten classes in the chunk are caught by kref_check). --random,
+ * --model and --exact may each be given more than once; at least one is required. Any setup
+ * failure is one "not ok - LABEL: reason" line. Exit status 0 only when every check passed.
+ *
+ * --bench RUNS (for `make bench`): after each set's checked run, the set's dispatch (with the wait
+ * for its fence) and the copy of its classes out of the mapped buffer run RUNS more times
+ * (pipeline creation and the upload of the control points excluded), and the best is printed as
+ * "# bench: patches=N runs=RUNS best_s=S patches_per_s=R". The set must fit one dispatch. */
 #define _POSIX_C_SOURCE 200809L
 
 #include "check.h"
@@ -713,6 +719,34 @@ static int run_set(vkctx *v, const kref_args *o, const limits *lim, const kref_r
     return 0;
 }
 
+/* --bench: times runs repetitions of the dispatch of set s, whose control points run_set left in
+ * the buffer, and of the copy of its classes into cls; prints the best as one "# bench: " line.
+ * 0, or -1 (message in err). */
+static int bench_set(vkctx *v, const kref_args *o, const limits *lim, const kref_set *s,
+                     unsigned *cls, long runs, char *err)
+{
+    uint64_t gx, gy;
+    double best = 0;
+    if (s->count == 0)
+        return 0;
+    if (s->count > lim->chunk)
+        return fail(err, "%s: --bench needs a set that fits one dispatch (%zu patches), it has %zu",
+                    s->name, lim->chunk, s->count);
+    dispatch_shape(s->count, o->q, lim->max_x, &gx, &gy);
+    for (long r = 0; r < runs; r++) {
+        double t0 = now_ms(), ms;
+        if (vk_run(v, s->eye, (uint32_t)s->count, (uint32_t)gx, (uint32_t)gy, err))
+            return -1;
+        memcpy(cls, v->bufs[1].map, s->count * sizeof *cls);
+        ms = now_ms() - t0;
+        if (r == 0 || ms < best)
+            best = ms;
+    }
+    printf("# bench: patches=%zu runs=%ld best_s=%.6f patches_per_s=%.0f\n", s->count, runs,
+           best * 1e-3, (double)s->count / (best * 1e-3));
+    return 0;
+}
+
 /* ---- main ---- */
 
 int main(int argc, char **argv)
@@ -731,9 +765,15 @@ int main(int argc, char **argv)
     float *planes = NULL;
     size_t K, L, have = 0, total = 0;
     int have_ref = 0, nsets_total = 0, ok = 0;
+    const char *bench = kref_take_bench(&argc, argv);
+    long runs = 0;
 
     if (kref_parse_args(&o, argc, argv, "host_vulkan", KREF_NEED_FILE | KREF_NEED_BLOCK))
         return 2;
+    if (bench && !(runs = kref_bench_runs(bench))) {
+        check(0, o.label, "--bench takes RUNS, 1 to 1000");
+        return 2;
+    }
     memset(&v, 0, sizeof v);
     memset(&res, 0, sizeof res);
     memset(&t, 0, sizeof t);
@@ -748,6 +788,7 @@ int main(int argc, char **argv)
     if (kref_init(&ref, o.n, o.m, o.space, o.rule, &perr))
         SETUP_FAIL("kref_init(%dx%d): %s", o.n, o.m, perr.msg);
     have_ref = 1;
+    ref.certified = o.certified;
     K = (size_t)ref.K;
     L = (size_t)ref.L;
 
@@ -833,7 +874,8 @@ int main(int argc, char **argv)
                 }
                 have = sets[i].count;
             }
-            failed = run_set(&v, &o, &lim, &ref, &sets[i], cls, planes, &res, &t, msg) != 0;
+            failed = run_set(&v, &o, &lim, &ref, &sets[i], cls, planes, &res, &t, msg) != 0 ||
+                     (runs && bench_set(&v, &o, &lim, &sets[i], cls, runs, msg) != 0);
             total += sets[i].count;
         }
         kref_free_sets(sets, nsets);

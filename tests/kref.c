@@ -3,6 +3,7 @@
  * zeros (two equal points in every term of a plane) have bound 0. */
 #include "kref.h"
 #include "check.h"
+#include "i128.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -19,8 +20,8 @@ static int usage(const char *host, const char *label, const char *detail)
     check(0, label ? label : host,
           "%s; usage: %s [FILE] [--kernel NAME] --degree N M --space clip|world "
           "--rule strict|degenerate [--block-threads PQ --patches-per-block Q] [--planes] "
-          "[--groups-x-constant] (--random SETS COUNT SEED | --model PATH NEYES SEED)... "
-          "--name LABEL",
+          "[--groups-x-constant] [--certified] (--random SETS COUNT SEED | "
+          "--model PATH NEYES SEED | --exact SETS COUNT SEED)... --name LABEL",
           detail, host);
     return 2;
 }
@@ -95,14 +96,18 @@ int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsig
             o->planes = 1;
         } else if (!strcmp(s, "--groups-x-constant")) {
             o->groups_x_constant = 1;
-        } else if ((!strcmp(s, "--random") || !strcmp(s, "--model")) && left >= 3) {
+        } else if (!strcmp(s, "--certified")) {
+            o->certified = 1;
+        } else if ((!strcmp(s, "--random") || !strcmp(s, "--model") || !strcmp(s, "--exact")) &&
+                   left >= 3) {
             kref_source *sr;
-            int model = !strcmp(s, "--model");
             if (o->nsources == KREF_MAX_SOURCES)
-                return usage(host, o->label, "too many --random and --model options");
+                return usage(host, o->label, "too many --random, --model and --exact options");
             sr = &o->src[o->nsources++];
-            sr->is_model = model;
-            if (model) {
+            sr->kind = !strcmp(s, "--model")  ? KREF_SRC_MODEL
+                       : !strcmp(s, "--exact") ? KREF_SRC_EXACT
+                                               : KREF_SRC_RANDOM;
+            if (sr->kind == KREF_SRC_MODEL) {
                 sr->path = argv[i + 1];
                 if (parse_ull(argv[i + 2], 1, INT_MAX, &a) ||
                     parse_ull(argv[i + 3], 0, UINT64_MAX, &c))
@@ -112,7 +117,9 @@ int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsig
                 if (parse_ull(argv[i + 1], 1, INT_MAX, &a) ||
                     parse_ull(argv[i + 2], 1, UINT32_MAX, &b) ||
                     parse_ull(argv[i + 3], 0, UINT64_MAX, &c))
-                    return usage(host, o->label, "--random takes SETS COUNT SEED (COUNT >= 1)");
+                    return usage(host, o->label, sr->kind == KREF_SRC_EXACT
+                                                     ? "--exact takes SETS COUNT SEED (COUNT >= 1)"
+                                                     : "--random takes SETS COUNT SEED (COUNT >= 1)");
                 sr->nsets = (long)a;
                 sr->count = (size_t)b;
             }
@@ -138,7 +145,7 @@ int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsig
     if (o->q && o->pq % o->q)
         return usage(host, o->label, "--block-threads PQ must be a multiple of --patches-per-block Q");
     if (!o->nsources)
-        return usage(host, o->label, "give at least one --random or --model");
+        return usage(host, o->label, "give at least one --random, --model or --exact");
     return 0;
 }
 
@@ -146,13 +153,59 @@ kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char
 {
     ptp_error err;
     kref_set *sets;
-    if (src->is_model) {
+    if (src->kind == KREF_SRC_MODEL) {
         if (!(sets = kref_model_sets(r, src->path, (int)src->nsets, src->seed, &err)))
             check(0, label, "model %s: %s", src->path, err.msg);
+    } else if (src->kind == KREF_SRC_EXACT) {
+        if (!(sets = kref_exact_sets(r, (int)src->nsets, src->count, src->seed, &err)))
+            check(0, label, "%ld exact sets of %zu patches: %s", src->nsets, src->count, err.msg);
     } else if (!(sets = kref_random_sets(r, (int)src->nsets, src->count, src->seed))) {
         check(0, label, "%ld random sets of %zu patches: out of memory", src->nsets, src->count);
     }
     return sets;
+}
+
+/* r->den (the lcm of each plane's denominators) and r->wint (den * w per term), or both NULL
+ * when a scale overflows 128 bits or a plane's sum of |den * w| reaches 2^47 (exact sets are
+ * then refused: exact_values relies on it); PTP_ENOMEM on failure. */
+static int integer_weights(kref_ref *r, ptp_error *err)
+{
+    size_t x;
+    int ovf = 0;
+    ptp_i128 sum = 0;
+    r->den = malloc((size_t)r->L * sizeof *r->den);
+    r->wint = malloc((r->t.nterms ? r->t.nterms : 1) * sizeof *r->wint);
+    if (!r->den || !r->wint) {
+        free(r->den);
+        free(r->wint);
+        r->den = NULL;
+        r->wint = NULL;
+        return ptp_fail(err, PTP_ENOMEM, "out of memory");
+    }
+    for (x = 0; x < (size_t)r->L; x++)
+        r->den[x] = 1;
+    for (x = 0; x < r->t.nterms && !ovf; x++) { /* den = lcm(den, w.den) */
+        const tp_term *e = &r->t.terms[x];
+        ptp_i128 g = (ptp_i128)u128_gcd((ptp_u128)r->den[e->plane], (ptp_u128)e->w.den);
+        ovf = i128_mul_ovf(&r->den[e->plane], r->den[e->plane] / g, e->w.den);
+    }
+    for (x = 0; x < r->t.nterms && !ovf; x++) {
+        const tp_term *e = &r->t.terms[x];
+        ptp_i128 w = 0;
+        if (x && e->plane != r->t.terms[x - 1].plane)
+            sum = 0;
+        ovf = i128_mul_ovf(&w, e->w.num, r->den[e->plane] / e->w.den) ||
+              (sum += w < 0 ? -w : w) >= (ptp_i128)1 << 47;
+        if (!ovf)
+            r->wint[x] = (int64_t)w;
+    }
+    if (ovf) {
+        free(r->den);
+        free(r->wint);
+        r->den = NULL;
+        r->wint = NULL;
+    }
+    return PTP_OK;
 }
 
 int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_error *err)
@@ -164,12 +217,19 @@ int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_e
     r->L = r->t.nplanes;
     r->space = space;
     r->rule = rule;
-    return PTP_OK;
+    r->certified = 0;
+    if ((st = integer_weights(r, err)))
+        tp_clear(&r->t);
+    return st;
 }
 
 void kref_clear(kref_ref *r)
 {
     tp_clear(&r->t);
+    free(r->wint);
+    free(r->den);
+    r->wint = NULL;
+    r->den = NULL;
 }
 
 /* A uniform double in [lo, hi) from the stream *s. */
@@ -200,8 +260,10 @@ void kref_free_sets(kref_set *sets, int nsets)
     int i;
     if (!sets)
         return;
-    for (i = 0; i < nsets; i++)
+    for (i = 0; i < nsets; i++) {
         free(sets[i].cp);
+        free(sets[i].exact);
+    }
     free(sets);
 }
 
@@ -258,6 +320,392 @@ kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t 
                 }
         }
     }
+    return sets;
+}
+
+/* ---- exact sets (--exact): integer data on the edge between the classes ---- */
+
+/* Eye-relative coordinates of exact sets stay within EXACT_MAX; exact_values accepts up to
+ * EXACT_LIMIT, where a determinant of three points still fits 64 bits (cross products below
+ * 2^39, determinants below 3 * 2^58) and every point fits a float exactly. */
+#define EXACT_MAX ((int64_t)1 << 18)
+#define EXACT_LIMIT ((int64_t)1 << 19)
+#define KREF_MAXK ((PTP_MAX_DEGREE + 1) * (PTP_MAX_DEGREE + 1))
+
+enum { EX_RANDOM, EX_COLLAPSED, EX_PLANAR, EX_TANGENT, EX_NEAR, EX_KINDS };
+static const char *const exact_kind[EX_KINDS] = {"random", "collapsed edge", "planar",
+                                                 "tangent corner", "near-planar"};
+
+/* A uniform integer in [lo, hi] from the stream *s (hi - lo < 2^62; the modulo bias is
+ * negligible for test data). */
+static int64_t irand(uint64_t *s, int64_t lo, int64_t hi)
+{
+    return lo + (int64_t)(check_rand(s) % (uint64_t)(hi - lo + 1));
+}
+
+/* Returns g = gcd(|a|, |b|) and sets *x, *y to integers with a x + b y = g (extended Euclid;
+ * |a|, |b| < 2^62). */
+static int64_t egcd(int64_t a, int64_t b, int64_t *x, int64_t *y)
+{
+    int64_t x0 = 1, y0 = 0, x1 = 0, y1 = 1, q, t;
+    while (b) {
+        q = a / b;
+        t = a - q * b, a = b, b = t;
+        t = x0 - q * x1, x0 = x1, x1 = t;
+        t = y0 - q * y1, y0 = y1, y1 = t;
+    }
+    *x = a < 0 ? -x0 : x0;
+    *y = a < 0 ? -y0 : y0;
+    return a < 0 ? -a : a;
+}
+
+/* a . b, exactly (components below 2^62). */
+static ptp_i128 dot3(const int64_t a[3], const int64_t b[3])
+{
+    return (ptp_i128)a[0] * b[0] + (ptp_i128)a[1] * b[1] + (ptp_i128)a[2] * b[2];
+}
+
+/* Subtracts from a the integer multiple mu b nearest to its projection on b,
+ * mu = round(a.b / b.b) (b != 0; components below 2^49, so that |mu b| <= |a| fits). */
+static void reduce_by(int64_t a[3], const int64_t b[3])
+{
+    ptp_i128 num = dot3(a, b), den = dot3(b, b), mu = num / den, rem = num % den;
+    int c;
+    if (2 * rem > den)
+        mu++;
+    else if (2 * rem < -den)
+        mu--;
+    for (c = 0; c < 3; c++)
+        a[c] -= (int64_t)mu * b[c];
+}
+
+/* A plane through the eye: a random primitive integer normal n with |n_c| <= 2^bits, a
+ * Lagrange-reduced basis a, b of the integer points on it, and a short d with n.d = 1, so that
+ * c d + i a + j b lies on n.x = c. Returns 0, or -1 when a, b or d has a component beyond
+ * 2^13 (a skewed lattice: the caller draws again). */
+static int plane_frame(uint64_t *rng, int bits, int64_t n[3], int64_t a[3], int64_t b[3],
+                       int64_t d[3])
+{
+    int64_t g, p, q, r, t, lim = (int64_t)1 << 13;
+    int c, it;
+    do {
+        for (c = 0; c < 3; c++)
+            n[c] = irand(rng, -((int64_t)1 << bits), (int64_t)1 << bits);
+        g = egcd(n[0], n[1], &p, &q);
+    } while (egcd(g, n[2], &r, &t) != 1);
+    if (g == 0) { /* n = (0, 0, +-1) */
+        int64_t a0[3] = {1, 0, 0}, b0[3] = {0, 1, 0}, d0[3] = {0, 0, n[2]};
+        memcpy(a, a0, sizeof a0);
+        memcpy(b, b0, sizeof b0);
+        memcpy(d, d0, sizeof d0);
+        return 0;
+    }
+    /* n.a = 0, n.b = n2 (p n0 + q n1 - g) = 0, a x b = n: a basis; n.d = r g + t n2 = 1 */
+    a[0] = n[1] / g, a[1] = -n[0] / g, a[2] = 0;
+    b[0] = p * n[2], b[1] = q * n[2], b[2] = -g;
+    d[0] = r * p, d[1] = r * q, d[2] = t;
+    for (;;) { /* Lagrange: |a| <= |b| and |a.b| <= |a|^2 / 2 */
+        int64_t tmp[3];
+        if (dot3(a, a) > dot3(b, b)) {
+            memcpy(tmp, a, sizeof tmp);
+            memcpy(a, b, sizeof tmp);
+            memcpy(b, tmp, sizeof tmp);
+        }
+        memcpy(tmp, b, sizeof tmp);
+        reduce_by(b, a);
+        if (!memcmp(tmp, b, sizeof tmp))
+            break;
+    }
+    for (it = 0; it < 8; it++) { /* shorten d modulo the lattice (n.d stays 1) */
+        reduce_by(d, a);
+        reduce_by(d, b);
+    }
+    for (c = 0; c < 3; c++)
+        if (llabs(a[c]) > lim || llabs(b[c]) > lim || llabs(d[c]) > lim)
+            return -1;
+    return 0;
+}
+
+/* One patch under construction: eye-relative points v and (world space) their w. */
+typedef struct {
+    int n, m, K, world;
+    int64_t v[KREF_MAXK][3];
+    int64_t w[KREF_MAXK];
+} ipatch;
+
+/* Kind 0: coordinates in [-2^bits, 2^bits]; clip space: the third (w) in 1..4. */
+static void exact_random(ipatch *pt, uint64_t *rng, int bits)
+{
+    int64_t a = (int64_t)1 << bits;
+    int k, c;
+    for (k = 0; k < pt->K; k++)
+        for (c = 0; c < 3; c++)
+            pt->v[k][c] = !pt->world && c == 2 ? irand(rng, 1, 4) : irand(rng, -a, a);
+}
+
+/* Moves each coordinate by +-1 with probability 1/q. */
+static void jiggle(ipatch *pt, uint64_t *rng, int q)
+{
+    int k, c;
+    for (k = 0; k < pt->K; k++)
+        for (c = 0; c < 3; c++)
+            if (irand(rng, 0, q - 1) == 0)
+                pt->v[k][c] += irand(rng, 0, 1) ? 1 : -1;
+}
+
+/* Kinds 2 to 4 on a plane frame of the given bits; returns -1 when plane_frame does. */
+static int exact_lattice(ipatch *pt, uint64_t *rng, int kind, int bits)
+{
+    int64_t n[3], a[3], b[3], d[3], u[3], v[3], o[3], e[3] = {0, 0, 0};
+    int64_t s1 = irand(rng, 1, 2), s2 = irand(rng, 1, 2), off = 0, k0, k1, hc = 0;
+    int i, j, c, axis = 0, corner = 0;
+    if (plane_frame(rng, bits, n, a, b, d))
+        return -1;
+    for (c = 0; c < 3; c++) {
+        u[c] = s1 * a[c];
+        v[c] = s2 * b[c];
+    }
+    k0 = irand(rng, -4, 4);
+    k1 = irand(rng, -4, 4);
+    if (kind == EX_TANGENT) {
+        /* The corner (0, 0) at o = off d + k (u + v): o, o + u and o + v lie on n.x = off, 0
+         * or one unit from the eye, and the convex bump h e (zero at those three points, e
+         * along n's largest component) bends the rest away, so that the corner value is 0
+         * or tiny and the others are large and of one sign. The corner is mirrored to any of
+         * the four. */
+        off = irand(rng, -1, 1);
+        k0 = k1 = irand(rng, 2, 6);
+        for (c = 0; c < 3; c++)
+            if (llabs(n[c]) > llabs(n[axis]))
+                axis = c;
+        e[axis] = irand(rng, 0, 1) ? 1 : -1;
+        hc = (int64_t)1 << irand(rng, 0, 4);
+        corner = (int)irand(rng, 0, 3);
+    } else if (kind == EX_NEAR) {
+        /* on n.x = off: through the eye, one unit from it, or further */
+        static const int64_t offs[] = {0, 0, 1, -1, 2, -3};
+        off = irand(rng, 0, 7);
+        off = off < 6 ? offs[off] : irand(rng, -((int64_t)1 << bits), (int64_t)1 << bits);
+    }
+    for (c = 0; c < 3; c++)
+        o[c] = off * d[c] + k0 * u[c] + k1 * v[c];
+    for (i = 0; i <= pt->n; i++)
+        for (j = 0; j <= pt->m; j++) {
+            /* point (i, j) of the construction goes to index (gi, gj) */
+            int gi = corner & 1 ? pt->n - i : i, gj = corner & 2 ? pt->m - j : j;
+            int64_t *q = pt->v[gi * (pt->m + 1) + gj];
+            int64_t h = hc * (i * (i - 1) + j * (j - 1) + i * j);
+            int64_t ja = kind == EX_PLANAR ? irand(rng, -1, 1) : 0; /* in-plane jitter */
+            int64_t jb = kind == EX_PLANAR ? irand(rng, -1, 1) : 0;
+            for (c = 0; c < 3; c++)
+                q[c] = o[c] + i * u[c] + j * v[c] + h * e[c] + ja * a[c] + jb * b[c];
+        }
+    if (kind == EX_NEAR)
+        jiggle(pt, rng, 4);
+    else if (kind == EX_TANGENT && irand(rng, 0, 3) == 0) /* a quarter: 1 to 3 moved by 1 */
+        for (i = (int)irand(rng, 1, 3); i > 0; i--)
+            pt->v[irand(rng, 0, pt->K - 1)][irand(rng, 0, 2)] += irand(rng, 0, 1) ? 1 : -1;
+    return 0;
+}
+
+/* Collapses boundary row or column `edge` (0: i = 0, 1: i = n, 2: j = 0, 3: j = m) to its
+ * first point. */
+static void collapse_edge(ipatch *pt, int edge)
+{
+    int i, j;
+    for (i = 0; i <= pt->n; i++)
+        for (j = 0; j <= pt->m; j++) {
+            int on = edge == 0 ? i == 0 : edge == 1 ? i == pt->n : edge == 2 ? j == 0 : j == pt->m;
+            int first = edge < 2 ? i * (pt->m + 1) : j, k = i * (pt->m + 1) + j;
+            if (on) {
+                memcpy(pt->v[k], pt->v[first], sizeof pt->v[k]);
+                pt->w[k] = pt->w[first];
+            }
+        }
+}
+
+/* One patch of the given kind and level (0..3: the magnitude); the coordinates stay within
+ * EXACT_MAX (a frame that would pass it is drawn again, with fewer bits each time). */
+static void exact_patch(ipatch *pt, uint64_t *rng, int kind, int level)
+{
+    static const int rbits[4] = {2, 4, 8, 12}, lbits[4] = {6, 12, 18, 24};
+    int bits = lbits[level], k, c, ok;
+    for (k = 0; k < pt->K; k++) /* world space: w = 1, or 2..4 for a quarter */
+        pt->w[k] = pt->world && irand(rng, 0, 3) == 0 ? irand(rng, 2, 4) : 1;
+    do {
+        int base = kind == EX_COLLAPSED ? (irand(rng, 0, 1) ? EX_NEAR : EX_RANDOM) : kind;
+        if (base == EX_RANDOM)
+            exact_random(pt, rng, rbits[level]);
+        ok = base == EX_RANDOM || !exact_lattice(pt, rng, base, bits);
+        for (k = 0; ok && k < pt->K; k++)
+            for (c = 0; c < 3; c++)
+                ok &= llabs(pt->v[k][c]) <= EXACT_MAX;
+        if (!ok && bits > 4)
+            bits--;
+    } while (!ok);
+    if (kind == EX_COLLAPSED)
+        collapse_edge(pt, (int)irand(rng, 0, 3));
+}
+
+/* *out = f when f is an integer of magnitude <= lim (< 2^24, so exact in float); else -1. */
+static int float_int(float f, int64_t lim, int64_t *out)
+{
+    if (!(fabsf(f) <= (float)lim) || (float)(int64_t)f != f)
+        return -1;
+    *out = (int64_t)f;
+    return 0;
+}
+
+/* The exact values of patch p of an exact set s, each times its plane's r->den: v[i] =
+ * den_i * d_i. cr is scratch for K * K cross products. Returns 0, or -1 when r->wint is NULL or
+ * a coordinate or the eye is not an integer of the range kref_exact_sets makes.
+ * No sum overflows: |det| < 2^60 for coordinates within EXACT_LIMIT, a plane's sum of |wint|
+ * is below 2^47 (integer_weights) and |scale| <= EXACT_LIMIT, so |v| < 2^126. */
+static int exact_values(const kref_ref *r, const kref_set *s, size_t p, int64_t (*cr)[3],
+                        ptp_i128 *v)
+{
+    const float(*b)[4] = (const float(*)[4])s->cp + p * (size_t)r->K;
+    int64_t q[KREF_MAXK][3], e[4], x[4];
+    ptp_i128 scale;
+    size_t t;
+    int i, k, l, c;
+    if (!r->wint)
+        return -1;
+    for (c = 0; c < 4; c++)
+        if (float_int(s->eye[c], EXACT_LIMIT, &e[c]))
+            return -1;
+    /* world: the eye is (e, 1) and value_t = e . cross4 = -det[b_j b_k b_l e] = -det3 of the
+     * eye-relative points b - b.w e; clip: the eye is (0, 0, alpha, 0) and value_t = alpha
+     * times det3 of the points' (x, y, w) (tests/kref.c cross4_mag: t.z = +det(x, y, w)) */
+    if (r->space == KREF_WORLD ? e[3] != 1 : e[0] || e[1] || e[3])
+        return -1;
+    scale = r->space == KREF_WORLD ? -1 : e[2];
+    for (k = 0; k < r->K; k++) {
+        for (c = 0; c < 4; c++)
+            if (float_int(b[k][c], (int64_t)1 << 23, &x[c]))
+                return -1;
+        for (c = 0; c < 3; c++) {
+            q[k][c] = r->space == KREF_WORLD ? x[c] - x[3] * e[c] : x[c == 2 ? 3 : c];
+            if (llabs(q[k][c]) > EXACT_LIMIT)
+                return -1;
+        }
+    }
+    for (k = 0; k < r->K; k++) /* cr[k K + l] = q_k x q_l for k < l */
+        for (l = k + 1; l < r->K; l++) {
+            int64_t *o = cr[k * r->K + l];
+            o[0] = q[k][1] * q[l][2] - q[k][2] * q[l][1];
+            o[1] = q[k][2] * q[l][0] - q[k][0] * q[l][2];
+            o[2] = q[k][0] * q[l][1] - q[k][1] * q[l][0];
+        }
+    for (i = 0, t = 0; i < r->L; i++) { /* the terms are sorted by plane */
+        ptp_i128 sum = 0;
+        for (; t < r->t.nterms && r->t.terms[t].plane == i; t++) {
+            const tp_term *te = &r->t.terms[t];
+            const int64_t *a = q[te->j], *bc = cr[te->k * r->K + te->l];
+            sum += (ptp_i128)r->wint[t] * (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]);
+        }
+        v[i] = sum * scale;
+    }
+    return 0;
+}
+
+/* The class of exact values v[0..L-1] under rule. */
+static int exact_class(const ptp_i128 *v, int L, kref_rule rule)
+{
+    int i, lt = 0, gt = 0, all_lt = 1, all_gt = 1;
+    for (i = 0; i < L; i++) {
+        lt |= v[i] < 0;
+        gt |= v[i] > 0;
+        all_lt &= v[i] < 0;
+        all_gt &= v[i] > 0;
+    }
+    if (rule == KREF_STRICT)
+        return all_lt ? KREF_BACK : all_gt ? KREF_FRONT : KREF_SILHOUETTE;
+    return !gt ? KREF_BACK : !lt ? KREF_FRONT : KREF_SILHOUETTE;
+}
+
+kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed,
+                          ptp_error *err)
+{
+    static const int ebits[4] = {2, 6, 10, 16};
+    static const float alphas[4] = {1, -1, 2, 3};
+    kref_set *sets;
+    ipatch *pt;
+    ptp_i128 *ev;
+    int64_t(*cr)[3];
+    int s, k, c;
+    size_t p;
+    if (!r->wint) {
+        ptp_fail(err, PTP_ELIMIT, "the %dx%d weights are too large for exact evaluation",
+                 r->t.n, r->t.m);
+        return NULL;
+    }
+    sets = alloc_sets(nsets, count, r->K);
+    pt = malloc(sizeof *pt);
+    ev = malloc((size_t)r->L * sizeof *ev);
+    cr = malloc((size_t)r->K * (size_t)r->K * sizeof *cr);
+    for (s = 0; sets && s < nsets; s++)
+        if (!(sets[s].exact = malloc(count ? count : 1))) {
+            kref_free_sets(sets, nsets);
+            sets = NULL;
+        }
+    if (!sets || !pt || !ev || !cr) {
+        kref_free_sets(sets, nsets);
+        free(pt);
+        free(ev);
+        free(cr);
+        ptp_fail(err, PTP_ENOMEM, "out of memory");
+        return NULL;
+    }
+    pt->n = r->t.n;
+    pt->m = r->t.m;
+    pt->K = r->K;
+    pt->world = r->space == KREF_WORLD;
+    for (s = 0; sets && s < nsets; s++) {
+        kref_set *set = &sets[s];
+        uint64_t rng = seed * 1000033u + (uint64_t)s;
+        int kind = s % EX_KINDS, level = s / EX_KINDS % 4;
+        int64_t eb = (int64_t)1 << ebits[s / 2 % 4];
+        snprintf(set->name, sizeof set->name, "exact %dx%d #%d (%s)", pt->n, pt->m, s,
+                 exact_kind[kind]);
+        if (pt->world) {
+            for (c = 0; c < 3; c++)
+                set->eye[c] = (float)irand(&rng, -eb, eb);
+            set->eye[3] = 1;
+        } else {
+            set->eye[0] = set->eye[1] = set->eye[3] = 0;
+            set->eye[2] = alphas[s % 4];
+        }
+        for (p = 0; p < count; p++) {
+            exact_patch(pt, &rng, kind, level);
+            for (k = 0; k < r->K; k++) {
+                float *q = set->cp[p * (size_t)r->K + (size_t)k];
+                const int64_t *v = pt->v[k];
+                if (pt->world) {
+                    for (c = 0; c < 3; c++)
+                        q[c] = (float)(v[c] + pt->w[k] * (int64_t)set->eye[c]);
+                    q[3] = (float)pt->w[k];
+                } else {
+                    q[0] = (float)v[0];
+                    q[1] = (float)v[1];
+                    q[2] = (float)(v[2] / 2);
+                    q[3] = (float)v[2];
+                }
+            }
+            if (exact_values(r, set, p, cr, ev)) { /* the construction keeps in range */
+                ptp_fail(err, PTP_EINTERNAL, "%s patch %zu is outside the exact range",
+                         set->name, p);
+                kref_free_sets(sets, nsets);
+                sets = NULL;
+                break;
+            }
+            set->exact[p] = (unsigned char)(exact_class(ev, r->L, KREF_STRICT) +
+                                            4 * exact_class(ev, r->L, KREF_DEGENERATE));
+        }
+    }
+    free(pt);
+    free(ev);
+    free(cr);
     return sets;
 }
 
@@ -504,23 +952,121 @@ int kref_classify(const double *d, int L, kref_rule rule)
     return nan ? KREF_SILHOUETTE : !gt ? KREF_BACK : !lt ? KREF_FRONT : KREF_SILHOUETTE;
 }
 
+/* Compares the kernel's class cls of patch p of the exact set s with its exact class (s->exact)
+ * under the strict rule (certified kernels) or r->rule, and describes the first unsafe one with
+ * its exact values (ev, and cr for exact_values, are scratch). */
+static void check_exact(kref_result *res, const kref_ref *r, const kref_set *s, size_t p,
+                        unsigned cls, int64_t (*cr)[3], ptp_i128 *ev)
+{
+    static const char *const names[] = {"front", "back", "silhouette"};
+    int strict = r->certified || r->rule == KREF_STRICT, i, n, first;
+    int cl[2] = {s->exact[p] & 3, s->exact[p] >> 2}, want = cl[strict ? 0 : 1];
+    size_t len;
+    res->exact++;
+    res->exact_counts[0][cl[0]]++;
+    res->exact_counts[1][cl[1]]++;
+    res->exact_certain += want != KREF_SILHOUETTE;
+    res->exact_given_up += cls == KREF_SILHOUETTE && want != KREF_SILHOUETTE;
+    if ((cls != KREF_BACK && cls != KREF_FRONT) || (int)cls == want)
+        return;
+    first = res->unsafe_back + res->unsafe_front == 0;
+    if (cls == KREF_BACK)
+        res->unsafe_back++;
+    else
+        res->unsafe_front++;
+    if (!first)
+        return;
+    /* the first unsafe class: the planes that contradict it (up to three) */
+    len = (size_t)snprintf(res->first_unsafe, sizeof res->first_unsafe,
+                           "%s patch %zu: kernel %s, exact class %s (%s rule); exact values "
+                           "(times the plane's scale)", s->name, p, names[cls], names[want],
+                           strict ? "strict" : "degenerate");
+    if (exact_values(r, s, p, cr, ev)) /* kref_exact_sets computed them once */
+        return;
+    for (i = 0, n = 0; i < r->L && n < 3 && len < sizeof res->first_unsafe; i++)
+        if (cls == KREF_BACK ? ev[i] >= 0 : ev[i] <= 0) {
+            char num[48], den[48];
+            len += (size_t)snprintf(res->first_unsafe + len, sizeof res->first_unsafe - len,
+                                    "%s plane %d = %s (scale %s)", n++ ? "," : ":", i,
+                                    i128_to_str(num, ev[i]), i128_to_str(den, r->den[i]));
+        }
+    if (r->certified) { /* a certified kernel's unsafe class is a generator bug: the patch */
+        const float(*b)[4] = (const float(*)[4])s->cp + p * (size_t)r->K;
+        int k;
+        printf("# %s patch %zu: eye %.0f %.0f %.0f %.0f; points (x y z w):", s->name, p,
+               s->eye[0], s->eye[1], s->eye[2], s->eye[3]);
+        for (k = 0; k < r->K; k++)
+            printf("%s %.0f %.0f %.0f %.0f", k ? "," : "", b[k][0], b[k][1], b[k][2], b[k][3]);
+        printf("\n");
+    }
+}
+
+/* Compares the exact values of a sampled patch p of the exact set s (into ev; cr is scratch)
+ * with the double reference d, within 2^-20 of its float bound (far above the double rounding,
+ * far below any real disagreement), and its class with the exact class kref_exact_sets stored. */
+static void compare_exact(kref_result *res, const kref_ref *r, const kref_set *s, size_t p,
+                          const double *d, const double *bound, int64_t (*cr)[3], ptp_i128 *ev)
+{
+    int i;
+    res->exact_compared++;
+    if (exact_values(r, s, p, cr, ev) ||
+        s->exact[p] != exact_class(ev, r->L, KREF_STRICT) +
+                           4 * exact_class(ev, r->L, KREF_DEGENERATE)) {
+        if (!res->exact_bad++)
+            snprintf(res->first_exact, sizeof res->first_exact,
+                     "%s patch %zu: the exact values cannot be computed again, or their classes "
+                     "changed", s->name, p);
+        return;
+    }
+    for (i = 0; i < r->L; i++) {
+        double x = (double)ev[i] / (double)r->den[i];
+        if (!(fabs(x - d[i]) <= ldexp(bound[i], -20))) {
+            if (!res->exact_bad++)
+                snprintf(res->first_exact, sizeof res->first_exact,
+                         "%s patch %zu plane %d: exact %.17g, double reference %.17g", s->name,
+                         p, i, x, d[i]);
+            return;
+        }
+    }
+}
+
 void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const unsigned *cls,
                 const float *planes)
 {
     double *d = malloc(2 * (size_t)r->L * sizeof *d), *bound = d + r->L;
+    ptp_i128 *ev = s->exact ? malloc((size_t)r->L * sizeof *ev) : NULL;
+    int64_t(*cr)[3] = s->exact ? malloc((size_t)r->K * (size_t)r->K * sizeof *cr) : NULL;
     static const char *const names[] = {"front", "back", "silhouette"};
     size_t p;
     int i;
-    if (!d)
+    if (!d || (s->exact && (!ev || !cr))) {
+        free(d);
+        free(ev);
+        free(cr);
         return;
+    }
+    res->certified = r->certified;
     for (p = 0; p < s->count; p++) {
         int ambiguous = 0, want;
+        if (s->exact) {
+            check_exact(res, r, s, p, cls[p], cr, ev);
+            if (p % KREF_EXACT_SAMPLE) {
+                if (cls[p] > 2 && !res->class_bad++)
+                    snprintf(res->first_class, sizeof res->first_class, "%s patch %zu: class %u",
+                             s->name, p, cls[p]);
+                continue;
+            }
+        }
         kref_values(r, s, p, d, bound);
+        if (s->exact)
+            compare_exact(res, r, s, p, d, bound, cr, ev);
         for (i = 0; i < r->L; i++)
             ambiguous |= bound[i] > 0 && fabs(d[i]) <= bound[i]; /* bound 0: exactly zero */
         want = kref_classify(d, r->L, r->rule);
         res->patches++;
-        if (cls[p] > 2 || (!ambiguous && (int)cls[p] != want)) {
+        if (r->certified && !ambiguous && cls[p] == KREF_SILHOUETTE && want != KREF_SILHOUETTE) {
+            res->given_up++; /* a certified kernel may give up a class */
+        } else if (cls[p] > 2 || (!ambiguous && (int)cls[p] != want)) {
             if (!res->class_bad++)
                 snprintf(res->first_class, sizeof res->first_class, "%s patch %zu: class %u, reference %s%s",
                          s->name, p, cls[p], names[want], ambiguous ? " (ambiguous)" : "");
@@ -546,14 +1092,55 @@ void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const un
         }
     }
     free(d);
+    free(ev);
+    free(cr);
+}
+
+/* The check lines and the "# " line of the exact sets (kref_report); returns 1 if all passed. */
+static int report_exact(const kref_result *res, const char *name)
+{
+    char label[400];
+    size_t unsafe = res->unsafe_back + res->unsafe_front, certain = res->exact_certain;
+    int ok = 1;
+    snprintf(label, sizeof label, "%s: exact values of %zu patches agree with the double "
+             "reference on every %dth (%zu compared)", name, res->exact, KREF_EXACT_SAMPLE,
+             res->exact_compared);
+    ok &= check(res->exact_bad == 0 && res->exact_compared > 0, label, "%zu bad: %s",
+                res->exact_bad, res->exact_bad ? res->first_exact : "none compared");
+    if (res->certified) {
+        snprintf(label, sizeof label, "%s: certified: no unsafe class on %zu exact patches "
+                 "(back only if every exact value < 0, front only if every one > 0)", name,
+                 res->exact);
+        ok &= check(unsafe == 0, label, "%zu unsafe (back %zu, front %zu), first: %s", unsafe,
+                    res->unsafe_back, res->unsafe_front, res->first_unsafe);
+    } else {
+        snprintf(label, sizeof label, "%s: %zu exact patches classified (plain float may be "
+                 "unsafe near zero: %zu are)", name, res->exact, unsafe);
+        ok &= check(1, label, "");
+        if (unsafe)
+            printf("# %s: first unsafe: %s\n", name, res->first_unsafe);
+    }
+    printf("# %s: exact: %zu patches; strict rule front %zu, back %zu, silhouette %zu; "
+           "degenerate rule front %zu, back %zu, silhouette %zu; kernel unsafe %zu (back %zu, "
+           "front %zu); given up %zu of %zu exactly back or front (%.2f%%)\n", name, res->exact,
+           res->exact_counts[0][0], res->exact_counts[0][1], res->exact_counts[0][2],
+           res->exact_counts[1][0], res->exact_counts[1][1], res->exact_counts[1][2], unsafe,
+           res->unsafe_back, res->unsafe_front, res->exact_given_up, certain,
+           certain ? 100.0 * (double)res->exact_given_up / (double)certain : 0.0);
+    return ok;
 }
 
 int kref_report(const kref_result *res, const char *name)
 {
     char label[320];
     int ok = 1;
-    snprintf(label, sizeof label, "%s: %zu patches, classes agree with the double reference "
-             "(%zu ambiguous within the bound)", name, res->patches, res->ambiguous);
+    if (res->certified)
+        snprintf(label, sizeof label, "%s: %zu patches, classes agree with the double reference "
+                 "or are silhouette (certified: %zu given up, %zu ambiguous within the bound)",
+                 name, res->patches, res->given_up, res->ambiguous);
+    else
+        snprintf(label, sizeof label, "%s: %zu patches, classes agree with the double reference "
+                 "(%zu ambiguous within the bound)", name, res->patches, res->ambiguous);
     ok &= check(res->patches > 0 && res->class_bad == 0, label, "%zu wrong: %s", res->class_bad,
                 res->first_class);
     if (res->values) {
@@ -568,7 +1155,39 @@ int kref_report(const kref_result *res, const char *name)
                     res->counts[2]);
     }
     printf("# %s: front %zu, back %zu, silhouette %zu, ambiguous %zu, with exact zero planes %zu, "
-           "worst value error %.3g of the bound\n", name, res->counts[0], res->counts[1],
+           "worst value error %.3g of the bound", name, res->counts[0], res->counts[1],
            res->counts[2], res->ambiguous, res->exact_zero, res->worst);
+    if (res->certified) {
+        size_t certain = res->counts[0] + res->counts[1];
+        printf(", certified: given up %zu of %zu back or front (%.2f%%)", res->given_up,
+               certain, certain ? 100.0 * (double)res->given_up / (double)certain : 0.0);
+    }
+    printf("\n");
+    if (res->exact)
+        ok &= report_exact(res, name);
     return ok;
+}
+
+const char *kref_take_bench(int *argc, char **argv)
+{
+    const char *runs = NULL;
+    int i, j = 1;
+    for (i = 1; i < *argc; i++) {
+        if (!runs && !strcmp(argv[i], "--bench") && i + 1 < *argc)
+            runs = argv[++i];
+        else
+            argv[j++] = argv[i];
+    }
+    *argc = j;
+    argv[j] = NULL;
+    return runs;
+}
+
+long kref_bench_runs(const char *s)
+{
+    char *end;
+    long r;
+    errno = 0;
+    r = strtol(s, &end, 10);
+    return !errno && end != s && !*end && r >= 1 && r <= 1000 ? r : 0;
 }

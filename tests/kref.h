@@ -21,6 +21,8 @@ typedef struct {
     int K;             /* control points per patch */
     float (*cp)[4];    /* count*K points, patch-major: point k of patch p at p*K + k */
     float eye[4];      /* world: the homogeneous eye point; clip: (0, 0, alpha, 0) */
+    unsigned char *exact; /* kref_exact_sets: per patch, its exact class under the strict rule
+                             plus 4 times the one under the degenerate rule; NULL otherwise */
 } kref_set;
 
 /* The exact table of one bidegree, for the reference. */
@@ -29,6 +31,10 @@ typedef struct {
     int K, L;          /* points and planes per patch */
     kref_space space;
     kref_rule rule;
+    int certified;     /* the kernel is certified (ptpgen --certified); kref_init sets 0 */
+    int64_t *wint;     /* per term: den[plane] * w, an integer; NULL when a plane's sum of
+                          |den * w| reaches 2^47 (exact sets are then refused) */
+    ptp_i128 *den;     /* per plane: the lcm of its weights' denominators (> 0) */
 } kref_ref;
 
 /* Accumulated comparison of a kernel's output with the reference. */
@@ -42,18 +48,40 @@ typedef struct {
     size_t exact_zero; /* patches with a plane that is exactly zero (a collapsed edge) */
     double worst;      /* largest |value - reference| / bound seen */
     char first_class[256], first_value[256]; /* the first failures, for the report */
+    int certified;     /* checked as a certified kernel (kref_ref.certified) */
+    size_t given_up;   /* certified: silhouette where the unambiguous reference is back or front */
+    /* Sets from kref_exact_sets: every patch is classified exactly (in integers), the double
+     * reference above runs on every KREF_EXACT_SAMPLE-th patch only. */
+    size_t exact;            /* patches classified exactly */
+    size_t exact_counts[2][3]; /* their exact classes: [0] strict rule, [1] degenerate rule */
+    size_t exact_certain;    /* exact class back or front, under the rule the kernel is held to */
+    size_t unsafe_back;      /* kernel back where that exact class is not back */
+    size_t unsafe_front;     /* kernel front where that exact class is not front */
+    size_t exact_given_up;   /* kernel silhouette where that exact class is back or front */
+    size_t exact_compared;   /* sampled patches whose exact values were compared with doubles */
+    size_t exact_bad;        /* patches whose exact values disagree with the double reference
+                                or cannot be computed (not integers, too large, overflow) */
+    char first_unsafe[512], first_exact[256];
 } kref_result;
+
+/* kref_check runs the double reference on every KREF_EXACT_SAMPLE-th patch of an exact set. */
+#define KREF_EXACT_SAMPLE 64
 
 /* The command line every host shares:
  *   [FILE] [--kernel NAME] --degree N M --space clip|world --rule strict|degenerate
- *   [--block-threads PQ --patches-per-block Q] [--planes] [--groups-x-constant]
- *   (--random SETS COUNT SEED | --model PATH NEYES SEED)... --name LABEL */
+ *   [--block-threads PQ --patches-per-block Q] [--planes] [--groups-x-constant] [--certified]
+ *   (--random SETS COUNT SEED | --model PATH NEYES SEED | --exact SETS COUNT SEED)...
+ *   --name LABEL
+ * --certified: the kernel was generated with --certified: it may answer silhouette wherever the
+ * reference says back or front (counted as given up), and on --exact data it must never call a
+ * patch back or front unless the exact class under the strict rule is that class. */
 #define KREF_MAX_SOURCES 16
+typedef enum { KREF_SRC_RANDOM, KREF_SRC_MODEL, KREF_SRC_EXACT } kref_source_kind;
 typedef struct {
-    int is_model;
+    kref_source_kind kind;
     const char *path; /* model */
-    long nsets;       /* random: sets; model: eyes */
-    size_t count;     /* random: patches per set */
+    long nsets;       /* random, exact: sets; model: eyes */
+    size_t count;     /* random, exact: patches per set */
     uint64_t seed;
 } kref_source;
 
@@ -63,7 +91,7 @@ typedef struct {
     kref_space space;
     kref_rule rule;
     size_t pq, q;                           /* --block-threads, --patches-per-block */
-    int planes, groups_x_constant;
+    int planes, groups_x_constant, certified;
     int nsources;
     kref_source src[KREF_MAX_SOURCES];
 } kref_args;
@@ -74,10 +102,11 @@ enum { KREF_NEED_FILE = 1, KREF_NEED_KERNEL = 2, KREF_NEED_BLOCK = 4 };
 /* Parses the shared command line into a; on a usage error prints one "not ok" line (with the
  * host's name and usage) and returns 2, else 0. */
 int kref_parse_args(kref_args *a, int argc, char **argv, const char *host, unsigned need);
-/* The sets of one source (random or a model), or NULL after printing a "not ok" line. */
+/* The sets of one source (random, a model or exact), or NULL after printing a "not ok" line. */
 kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char *label);
 
-/* Derives the table for the reference; 0 on success (messages go to err). */
+/* Derives the table for the reference; 0 on success (messages go to err). The kernel is taken
+ * as not certified: a host sets r->certified after this call. */
 int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_error *err);
 void kref_clear(kref_ref *r);
 
@@ -93,6 +122,23 @@ kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t 
  * Returns NULL (message in err) if the file cannot be read. */
 kref_set *kref_model_sets(const kref_ref *r, const char *path, int neyes, uint64_t seed,
                           ptp_error *err);
+/* nsets sets of count patches each (deterministic in seed) whose coordinates and eye are small
+ * integers, stored exactly in float, built to sit on the edge between the classes; set s is of
+ * kind s % 5 with magnitudes varying with s / 5:
+ *   0 random integers in [-2^a, 2^a], a in {2, 4, 8, 12}, w small and positive;
+ *   1 near-planar patches (as 4) or random ones (as 0) with a boundary row or column collapsed;
+ *   2 planar patches through the eye: every exact value is zero;
+ *   3 the eye exactly on the tangent plane at a corner (or one unit off it) and the rest of the
+ *     patch curving away, so that the corner value is 0 or tiny and every other value is large
+ *     and of one sign; a quarter get one to three coordinates moved by 1;
+ *   4 patches on a plane through the eye or near it, with coordinates moved by 1.
+ * World space: the eye is an integer point (ex, ey, ez, 1) and a point is (v + w e, w) for an
+ * integer eye-relative v; clip space: the eye is (0, 0, alpha, 0), alpha in {1, -1, 2, 3}, and
+ * a point is (v0, v1, v2 / 2, v2). Eye-relative coordinates reach 2^18, so that float products
+ * round. The exact classes are computed here, in 128-bit integers (set.exact).
+ * Returns NULL (message in err) when out of memory or r->wint is NULL. */
+kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed,
+                          ptp_error *err);
 void kref_free_sets(kref_set *sets, int nsets);
 /* A view matrix (row-major, a rotation and translation) putting the eye E at the origin, looking
  * at C along -z (OpenGL, d3d == 0) or +z (Direct3D). */
@@ -106,12 +152,27 @@ void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, doub
 int kref_classify(const double *d, int L, kref_rule rule);
 
 /* Compares a kernel's classes cls[count] and, if planes is not NULL, its values
- * planes[p*L + i] for every patch of s; accumulates into res. */
+ * planes[p*L + i] for every patch of s; accumulates into res. The class of a certified kernel
+ * (r->certified) may also be silhouette where the reference is back or front. For an exact set
+ * every class is also compared with the exact one (under the strict rule for a certified
+ * kernel, else under r->rule), and the double reference runs on every KREF_EXACT_SAMPLE-th
+ * patch, where the exact values must agree with it. */
 void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const unsigned *cls,
                 const float *planes);
 /* Prints the check lines for res ("ok - NAME: ..." or "not ok - ..."); returns 1 if all passed.
  * The caller's exit status must use it: check.h's failure count is per source file.
- * Also prints a "# " line with the counts (ambiguous patches, classes, worst value error). */
+ * Also prints a "# " line with the counts (ambiguous patches, classes, worst value error).
+ * After exact sets: a check that the sampled exact values agree with the double reference, and
+ * for a certified kernel that no class is unsafe (for a plain one the unsafe count is printed
+ * with an "ok" line: float may be wrong near zero), and a "# NAME: exact: ..." line with the
+ * exact classes, "kernel unsafe N" and the classes given up. */
 int kref_report(const kref_result *res, const char *name);
+
+/* The hosts' timing option (make bench): removes "--bench RUNS", which kref_parse_args does not
+ * know, from argv and returns RUNS as given; NULL when absent. A "--bench" without a value stays,
+ * for kref_parse_args to refuse. */
+const char *kref_take_bench(int *argc, char **argv);
+/* RUNS of --bench, 1 to 1000; 0 if s is not such a number. */
+long kref_bench_runs(const char *s);
 
 #endif

@@ -187,7 +187,7 @@ mutant() {
 }
 # The checks can fail: the table (values) and the straight-line code (classify) each.
 mutant '0,/-9.0f/s//-9.5f/' '.*plane values' "one table weight changed (-9 -> -9.5)"
-mutant '0,/u = -((w0 \* m1_5/s//u = ((w0 * m1_5/' 'classify_batch' "one straight-line term's sign flipped"
+mutant '0,/u = -((g0 \* m1_5/s//u = ((g0 * m1_5/' 'classify_batch' "one straight-line term's sign flipped"
 
 # The vectorized batch path as users build it for speed (clang: quick to compile at -O3), with
 # the SSE transposition and without it.
@@ -242,3 +242,114 @@ for cc in gcc clang; do
         ok "C headers of two degrees (one with --prefix cull_), one included twice, in one program ($cc)" ||
         notok "C headers of two degrees in one program ($cc)" "$(grep -m1 error "$tmp/err")"
 done
+
+# Certified kernels (--certified) against exact classes. kref's --exact data are integer patches
+# built to sit on the edge between the classes (planar through the eye, the eye on a corner's
+# tangent plane, collapsed edges, +-1 noise), classified exactly in 128-bit integers. A
+# certified kernel must never call a patch back or front that is not exactly back or front
+# under the strict rule ("unsafe"); the plain float kernel, on the first fifth of the same data,
+# must be unsafe somewhere, which shows that the data reach the rounding. Each certified kernel
+# also runs on random data, where its classes must be the double reference's or silhouette.
+# C, OpenCL and CUDA see 10^6 exact patches per certified kernel; lavapipe, at about 25 us a
+# patch, 2x10^5 (its first fifth).
+cert_data="--exact 100 10000 41" cert_short="--exact 20 10000 41"
+# exact_run NAME KIND CMD...: runs a host like run_host; KIND plain also requires the first
+# "kernel unsafe N" the host prints to be at least 1 (a host with no GPU prints none: skipped).
+exact_run() {
+    local name=$1 kind=$2 out n
+    shift 2
+    out=$(run_host "$name" "$@")
+    printf '%s\n' "$out"
+    [ "$kind" = plain ] || return 0
+    printf '%s\n' "$out" | grep -q 'no CUDA device here' && return 0
+    n=$(printf '%s\n' "$out" | grep -m1 -o 'kernel unsafe [0-9]*' | grep -o '[0-9]*$')
+    if [ "${n:-0}" -ge 1 ]; then
+        ok "$name: plain float is unsafe on $n exact patches, so the data reach the rounding"
+    else
+        notok "$name: plain float is unsafe on some exact patch" "${n:-no} unsafe classes reported"
+    fi
+}
+# run_exact TARGET DATA CMD...: the exact data DATA through a host, and for a certified kernel
+# the random data too ($space, $kind and the host options $hcfg of the loop below).
+run_exact() {
+    local target=$1 data=$2
+    shift 2
+    exact_run "$target 3x3 $space $kind" $kind "$@" $hcfg $data --name "$kind $target 3x3 $space exact"
+    [ $kind = certified ] && run_host "$target 3x3 $space certified random" "$@" $hcfg \
+        --random 1 10000 43 --name "certified $target 3x3 $space random"
+    return 0
+}
+mkdir -p "$tmp/cert"
+command -v clang >/dev/null || missing clang "certified C kernels with clang -O3 -march=native"
+for space in clip world; do
+    for kind in certified plain; do
+        dir="$tmp/cert/$space-$kind" cflag="" data=$cert_short
+        [ $kind = certified ] && cflag=--certified data=$cert_data
+        hcfg="--degree 3 3 --space $space --rule strict $cflag"
+        mkdir -p "$dir"
+        for te in json:.json c:.h glsl:.comp hlsl:.hlsl opencl:.cl cuda:.cu; do
+            "$P" --degree 3 --space $space $cflag --target ${te%%:*} -o "$dir/ptp_3x3${te#*:}" ||
+                notok "3x3 $space $kind ${te%%:*}" "ptpgen failed"
+        done
+        read -r PQ Q < <(schedule "$dir/ptp_3x3.json")
+
+        # C: gcc -O2 and clang -O3 -march=native (the vectorized batch path).
+        for cc in "gcc -O2" "clang -O3 -march=native"; do
+            command -v ${cc%% *} >/dev/null || continue
+            if ${cc%% *} -std=c11 ${cc#* } -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$dir/ptp_3x3.h" \
+                -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ tests/host_c.c \
+                "build/${cc%% *}/libptptest.a" -lm -o "$tmp/host_c" 2>"$tmp/err"; then
+                run_exact "c/$cc" "$data" "$tmp/host_c"
+            else
+                notok "c 3x3 $space $kind compiles with $cc" "$(head -5 "$tmp/err")"
+            fi
+        done
+
+        # OpenCL on PoCL.
+        [ -x "$B/host_opencl" ] && run_exact opencl "$data" "$B/host_opencl" "$dir/ptp_3x3.cl" \
+            --kernel ptp_3x3_classify --block-threads $PQ --patches-per-block $Q
+
+        # GLSL and HLSL on lavapipe.
+        if [ $have_gpu_tools = 1 ]; then
+            for lang in glsl hlsl; do
+                if [ $lang = glsl ]; then
+                    glslangValidator -V "$dir/ptp_3x3.comp" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?; extra=""
+                else
+                    glslangValidator -D -V -S comp -e main "$dir/ptp_3x3.hlsl" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?
+                    extra=--groups-x-constant
+                fi
+                if [ $rc -ne 0 ] || ! spirv-val "$tmp/k.spv" 2>>"$tmp/err"; then
+                    notok "$lang 3x3 $space $kind compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
+                    continue
+                fi
+                [ -x "$B/host_vulkan" ] && run_exact $lang "$cert_short" "$B/host_vulkan" "$tmp/k.spv" \
+                    --block-threads $PQ --patches-per-block $Q $extra
+            done
+        fi
+
+        # CUDA: compiled, and run where a GPU is.
+        if [ -x "$NVCC" ]; then
+            if "$NVCC" -c "$dir/ptp_3x3.cu" -o "$tmp/k.o" >"$tmp/err" 2>&1 && "$NVCC" -ptx "$dir/ptp_3x3.cu" -o "$tmp/k.ptx" >>"$tmp/err" 2>&1 &&
+                grep -q "\.entry ptp_3x3_classify" "$tmp/k.ptx" &&
+                "$NVCC" -O2 -Igen -Itests -I"$dir" -DKERNEL_FILE='"ptp_3x3.cu"' -DKERNEL=ptp_3x3_classify \
+                    tests/host_cuda.cu build/gcc/libptptest.a -o "$tmp/host_cuda" >>"$tmp/err" 2>&1; then
+                ok "cuda 3x3 $space $kind compiles with nvcc (-c, -ptx and the host)"
+                run_exact cuda "$data" "$tmp/host_cuda" --block-threads $PQ --patches-per-block $Q
+            else
+                notok "cuda 3x3 $space $kind compiles with nvcc" "$(grep -m3 -i error "$tmp/err")"
+            fi
+        fi
+    done
+done
+# The exact check can fail: a certified header whose bounds are 2^10 times too small must be
+# caught calling patches back or front that are not.
+"$P" --degree 3 --space clip --certified --target c -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /' "$tmp/k.h"
+if grep -q 'ER3 \* 0x1p-10f' "$tmp/k.h" &&
+    gcc -std=c11 -O2 -Igen -Itests -include "$tmp/k.h" -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ \
+        tests/host_c.c build/gcc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
+    ! "$tmp/host_c" --degree 3 3 --space clip --rule strict --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
+    grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
+    ok "a certified C header with its bounds 2^10 times too small is caught unsafe on exact data"
+else
+    notok "a certified C header with its bounds 2^10 times too small is caught unsafe" "it passed, or its bounds were not found"
+fi

@@ -1,0 +1,398 @@
+/* cones.c: NCONE and TCONE normal cones with bounding spheres, and the subdivision and sampling
+ * bracket of the exact tangent-plane test, for bicubic patches in double precision (cones.h). */
+#include "cones.h"
+
+#include <math.h>
+#include <string.h>
+
+/* The products of cross products are never fused into FMAs, so that a cross product of two
+ * bitwise-equal vectors is exactly zero (cone_planes' collapsed edges rely on it). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+
+#define PI 3.14159265358979323846
+
+static void sub3(double r[3], const double a[3], const double b[3])
+{
+    r[0] = a[0] - b[0];
+    r[1] = a[1] - b[1];
+    r[2] = a[2] - b[2];
+}
+
+static void cross3(double r[3], const double a[3], const double b[3])
+{
+    r[0] = a[1] * b[2] - a[2] * b[1];
+    r[1] = a[2] * b[0] - a[0] * b[2];
+    r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* The angle between two unit vectors, accurate near 0 and pi. */
+static double angle(const double a[3], const double b[3])
+{
+    double x[3];
+    cross3(x, a, b);
+    return atan2(sqrt(dot3(x, x)), dot3(a, b));
+}
+
+/* 1 if all 16 points are finite. */
+static int finite_patch(const double (*b)[3])
+{
+    int k, c;
+    for (k = 0; k < 16; k++)
+        for (c = 0; c < 3; c++)
+            if (!isfinite(b[k][c]))
+                return 0;
+    return 1;
+}
+
+/* The sphere about the center of the bounding box that holds the 16 points. */
+static void sphere(const double (*b)[3], cone_bound *c)
+{
+    double lo[3], hi[3], r2 = 0;
+    int k, i;
+    for (i = 0; i < 3; i++)
+        lo[i] = hi[i] = b[0][i];
+    for (k = 1; k < 16; k++)
+        for (i = 0; i < 3; i++) {
+            lo[i] = fmin(lo[i], b[k][i]);
+            hi[i] = fmax(hi[i], b[k][i]);
+        }
+    for (i = 0; i < 3; i++)
+        c->center[i] = 0.5 * (lo[i] + hi[i]);
+    for (k = 0; k < 16; k++) {
+        double d[3];
+        sub3(d, b[k], c->center);
+        r2 = fmax(r2, dot3(d, d));
+    }
+    c->radius = sqrt(r2);
+}
+
+/* A cone holding the directions of the n (<= 36) vectors v, zero vectors skipped: unit axis
+ * and half-angle *alpha. The axis is the direction of the center of the smallest ball
+ * enclosing the unit vectors, approximated by 64 Badoiu-Clarkson steps from their mean (the
+ * farthest vector from the center is the one at the largest angle to the axis), keeping the
+ * narrowest cone seen; any axis is valid, as alpha is the largest angle to it. Returns 0
+ * when every vector is zero or the mean is zero (no cone), else 1, with alpha possibly
+ * pi/2 or more. */
+static int bound_directions(const double (*v)[3], int n, double axis[3], double *alpha)
+{
+    double u[36][3], c[3] = {0, 0, 0};
+    int m = 0, i, it;
+    for (i = 0; i < n; i++) {
+        double l = sqrt(dot3(v[i], v[i]));
+        if (l == 0)
+            continue;
+        u[m][0] = v[i][0] / l;
+        u[m][1] = v[i][1] / l;
+        u[m][2] = v[i][2] / l;
+        c[0] += u[m][0];
+        c[1] += u[m][1];
+        c[2] += u[m][2];
+        m++;
+    }
+    for (i = 0; i < 3 && m > 0; i++)
+        c[i] /= m;
+    *alpha = PI;
+    for (it = 1; it <= 64; it++) {
+        double a[3], worst = -1, len = sqrt(dot3(c, c));
+        int far = 0;
+        if (len == 0)
+            return it > 1; /* no mean direction; later, the best cone so far */
+        a[0] = c[0] / len;
+        a[1] = c[1] / len;
+        a[2] = c[2] / len;
+        for (i = 0; i < m; i++) {
+            double t = angle(a, u[i]);
+            if (t > worst) {
+                worst = t;
+                far = i;
+            }
+        }
+        if (worst < *alpha) {
+            *alpha = worst;
+            memcpy(axis, a, sizeof a);
+        }
+        for (i = 0; i < 3; i++)
+            c[i] += (u[far][i] - c[i]) / (it + 1);
+    }
+    return 1;
+}
+
+/* B_u's 12 control vectors bu[a*4 + b] = 3 (b_{a+1,b} - b_{a,b}) (degree 2x3) and B_v's 12,
+ * bv[c*3 + d] = 3 (b_{c,d+1} - b_{c,d}) (degree 3x2). */
+static void derivatives(const double (*b)[3], double bu[12][3], double bv[12][3])
+{
+    int i, j, k;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 4; j++)
+            for (k = 0; k < 3; k++)
+                bu[i * 4 + j][k] = 3 * (b[(i + 1) * 4 + j][k] - b[i * 4 + j][k]);
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 3; j++)
+            for (k = 0; k < 3; k++)
+                bv[i * 3 + j][k] = 3 * (b[i * 4 + j + 1][k] - b[i * 4 + j][k]);
+}
+
+static const double binom[8][8] = {
+    {1, 0, 0, 0, 0, 0, 0, 0},     {1, 1, 0, 0, 0, 0, 0, 0},      {1, 2, 1, 0, 0, 0, 0, 0},
+    {1, 3, 3, 1, 0, 0, 0, 0},     {1, 4, 6, 4, 1, 0, 0, 0},      {1, 5, 10, 10, 5, 1, 0, 0},
+    {1, 6, 15, 20, 15, 6, 1, 0},  {1, 7, 21, 35, 35, 21, 7, 1},
+};
+
+int cone_ncone(const cone_patch *bp, cone_bound *c)
+{
+    const double(*b)[3] = bp->p;
+    double bu[12][3], bv[12][3], n[36][3];
+    int a, bb, cc, d, k;
+    memset(c, 0, sizeof *c);
+    if (!finite_patch(b))
+        return CONE_EINVAL;
+    derivatives(b, bu, bv);
+    memset(n, 0, sizeof n);
+    /* N_{IJ} = sum C(2,a)C(3,c)/C(5,a+c) C(3,b)C(2,d)/C(5,b+d) Bu_{ab} x Bv_{cd}. */
+    for (a = 0; a < 3; a++)
+        for (bb = 0; bb < 4; bb++)
+            for (cc = 0; cc < 4; cc++)
+                for (d = 0; d < 3; d++) {
+                    double x[3], w = binom[2][a] * binom[3][cc] / binom[5][a + cc] *
+                                     binom[3][bb] * binom[2][d] / binom[5][bb + d];
+                    double *t = n[(a + cc) * 6 + bb + d];
+                    cross3(x, bu[a * 4 + bb], bv[cc * 3 + d]);
+                    for (k = 0; k < 3; k++)
+                        t[k] += w * x[k];
+                }
+    sphere(b, c);
+    c->usable = bound_directions((const double(*)[3])n, 36, c->axis, &c->alpha) &&
+                c->alpha < PI / 2;
+    return CONE_OK;
+}
+
+int cone_tcone(const cone_patch *bp, cone_bound *c)
+{
+    const double(*b)[3] = bp->p;
+    double bu[12][3], bv[12][3], au[3], av[3], x[3], alu, alv, beta, s;
+    memset(c, 0, sizeof *c);
+    if (!finite_patch(b))
+        return CONE_EINVAL;
+    derivatives(b, bu, bv);
+    sphere(b, c);
+    if (!bound_directions((const double(*)[3])bu, 12, au, &alu) ||
+        !bound_directions((const double(*)[3])bv, 12, av, &alv) || alu >= PI / 2 ||
+        alv >= PI / 2)
+        return CONE_OK;
+    beta = angle(au, av);
+    /* Tangent and bitangent never parallel nor antiparallel, so the normal turns continuously
+     * and stays within alpha of the axis. The sign of cos(beta) is taken as the worse one:
+     * with the signed cos(beta), sampling finds normals outside the cone for beta > pi/2. */
+    if (alu + alv >= beta || alu + alv >= PI - beta)
+        return CONE_OK;
+    s = sqrt(sin(alu) * sin(alu) + 2 * sin(alu) * sin(alv) * fabs(cos(beta)) +
+             sin(alv) * sin(alv)) /
+        sin(beta);
+    if (!(s < 1))
+        return CONE_OK;
+    cross3(x, au, av);
+    s = asin(s);
+    beta = sqrt(dot3(x, x));
+    c->axis[0] = x[0] / beta;
+    c->axis[1] = x[1] / beta;
+    c->axis[2] = x[2] / beta;
+    c->alpha = s;
+    c->usable = 1;
+    return CONE_OK;
+}
+
+int cone_cull(const cone_bound *c, const double eye[3])
+{
+    double d[3], dist, delta;
+    if (!c->usable)
+        return 0;
+    sub3(d, eye, c->center);
+    dist = sqrt(dot3(d, d));
+    if (!(dist > c->radius))
+        return 0;
+    delta = asin(c->radius / dist);
+    if (c->alpha + delta >= PI / 2)
+        return 0;
+    /* angle(axis, d) > pi/2 + alpha + delta, both sides in [0, pi]. */
+    return dot3(c->axis, d) / dist < -sin(c->alpha + delta);
+}
+
+int cone_planes(const cone_patch *bp, size_t terms, const unsigned short idx[][4],
+                const int iwgt[], int denom, cone_tplane *tp)
+{
+    const double(*b)[3] = bp->p;
+    double(*t)[4] = tp->t;
+    size_t x;
+    int p, k;
+    if (denom <= 0)
+        return CONE_EINVAL;
+    memset(tp, 0, sizeof *tp);
+    for (x = 0; x < terms; x++) {
+        const double *bj;
+        double e1[3], e2[3], n[3];
+        if (idx[x][0] >= 64 || idx[x][1] >= 16 || idx[x][2] >= 16 || idx[x][3] >= 16)
+            return CONE_EINVAL;
+        bj = b[idx[x][1]];
+        sub3(e1, b[idx[x][2]], bj);
+        sub3(e2, b[idx[x][3]], bj);
+        cross3(n, e1, e2);
+        p = idx[x][0];
+        for (k = 0; k < 3; k++)
+            t[p][k] += iwgt[x] * n[k];
+        t[p][3] -= iwgt[x] * dot3(bj, n);
+    }
+    for (p = 0; p < 64; p++)
+        for (k = 0; k < 4; k++)
+            t[p][k] /= denom;
+    return CONE_OK;
+}
+
+void cone_values(const cone_tplane *tp, const double eye[3], double c[64])
+{
+    const double(*t)[4] = tp->t;
+    int p;
+    for (p = 0; p < 64; p++)
+        c[p] = eye[0] * t[p][0] + eye[1] * t[p][1] + eye[2] * t[p][2] + t[p][3];
+}
+
+/* The Bernstein basis of degree deg (<= 7) at t. */
+static void bernstein(int deg, double t, double out[8])
+{
+    double tp[8], sp[8];
+    int i;
+    tp[0] = sp[0] = 1;
+    for (i = 1; i <= deg; i++) {
+        tp[i] = tp[i - 1] * t;
+        sp[i] = sp[i - 1] * (1 - t);
+    }
+    for (i = 0; i <= deg; i++)
+        out[i] = binom[deg][i] * tp[i] * sp[deg - i];
+}
+
+double cone_eval(const double c[64], double u, double v)
+{
+    double bu[8], bv[8], f = 0;
+    int i, j;
+    bernstein(7, u, bu);
+    bernstein(7, v, bv);
+    for (i = 0; i < 8; i++) {
+        double row = 0;
+        for (j = 0; j < 8; j++)
+            row += bv[j] * c[i * 8 + j];
+        f += bu[i] * row;
+    }
+    return f;
+}
+
+double cone_direct(const cone_patch *bp, const double eye[3], double u, double v, double *sine)
+{
+    const double(*b)[3] = bp->p;
+    double du[8], dv[8], cu[8], cv[8], p[3] = {0, 0, 0}, pu[3] = {0, 0, 0}, pv[3] = {0, 0, 0};
+    double d[3], n[3], f;
+    int i, j, k;
+    bernstein(3, u, cu);
+    bernstein(3, v, cv);
+    bernstein(2, u, du);
+    bernstein(2, v, dv);
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            for (k = 0; k < 3; k++) {
+                p[k] += cu[i] * cv[j] * b[i * 4 + j][k];
+                if (i < 3)
+                    pu[k] += 3 * du[i] * cv[j] * (b[(i + 1) * 4 + j][k] - b[i * 4 + j][k]);
+                if (j < 3)
+                    pv[k] += 3 * cu[i] * dv[j] * (b[i * 4 + j + 1][k] - b[i * 4 + j][k]);
+            }
+    sub3(d, eye, p);
+    cross3(n, pu, pv);
+    f = dot3(d, n);
+    if (sine) {
+        double den = sqrt(dot3(d, d)) * sqrt(dot3(n, n));
+        *sine = den > 0 ? f / den : 0;
+    }
+    return f;
+}
+
+/* Splits the 8 values x[0], x[s], ..., x[7s] at t = 1/2 into lo and hi (same stride). */
+static void halve(const double *x, int s, double *lo, double *hi)
+{
+    double w[8];
+    int r, i;
+    for (i = 0; i < 8; i++)
+        w[i] = x[i * s];
+    lo[0] = w[0];
+    hi[7 * s] = w[7];
+    for (r = 1; r < 8; r++) {
+        for (i = 0; i < 8 - r; i++)
+            w[i] = 0.5 * (w[i] + w[i + 1]);
+        lo[r * s] = w[0];
+        hi[(7 - r) * s] = w[7 - r];
+    }
+}
+
+static int split_rec(const double c[64], int depth)
+{
+    double half[2][64], q[4][64];
+    int p, h, k, r;
+    for (p = 0; p < 64 && !(c[p] > 0); p++)
+        ;
+    if (p == 64)
+        return CONE_BACK;
+    if (c[0] > 0 || c[7] > 0 || c[56] > 0 || c[63] > 0)
+        return CONE_NOT_BACK;
+    if (depth == 0)
+        return CONE_UNDECIDED;
+    for (k = 0; k < 8; k++) /* u (the first index): column k */
+        halve(c + k, 8, half[0] + k, half[1] + k);
+    for (h = 0; h < 2; h++)
+        for (k = 0; k < 8; k++) /* v: row k */
+            halve(half[h] + 8 * k, 1, q[2 * h] + 8 * k, q[2 * h + 1] + 8 * k);
+    for (h = 0; h < 4; h++)
+        if ((r = split_rec(q[h], depth - 1)) != CONE_BACK)
+            return r;
+    return CONE_BACK;
+}
+
+int cone_split(const double c[64], int depth)
+{
+    if (depth < 0 || depth > 12)
+        return CONE_EINVAL;
+    return split_rec(c, depth);
+}
+
+int cone_sample(const double c[64], int n, int *positive)
+{
+    double bv[257][8];
+    int s, t, i, j;
+    *positive = 0;
+    if (n < 2 || n > 257)
+        return CONE_EINVAL;
+    for (t = 0; t < n; t++)
+        bernstein(7, (double)t / (n - 1), bv[t]);
+    for (s = 0; s < n; s++) {
+        double g[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+        for (i = 0; i < 8; i++)
+            for (j = 0; j < 8; j++)
+                g[j] += bv[s][i] * c[i * 8 + j]; /* u = s/(n-1), the same basis */
+        for (t = 0; t < n; t++) {
+            double f = 0;
+            for (j = 0; j < 8; j++)
+                f += bv[t][j] * g[j];
+            if (f > 0) {
+                *positive = 1;
+                return CONE_OK;
+            }
+        }
+    }
+    return CONE_OK;
+}
