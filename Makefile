@@ -75,7 +75,11 @@ BENCH_CFLAGS = -O3 -march=native
 # needs -O3, takes minutes for 4x4 and runs it slower (make bench BENCH_CC=gcc to compare).
 BENCH_CC ?= $(shell command -v clang >/dev/null 2>&1 && echo clang || echo $(CC))
 
-bench: ptpgen $(B)/bench/peak $(addprefix $(B)/bench/bench_cull_,$(BENCH_DEGREES))
+# Variants of the bicubic header whose batch path is timed too: --refine 3 and --certified.
+BENCH_VARIANTS = refine3 certified
+
+bench: ptpgen $(B)/bench/peak $(addprefix $(B)/bench/bench_cull_,$(BENCH_DEGREES)) \
+    $(addprefix $(B)/bench/bench_cull_3x3_,$(BENCH_VARIANTS))
 	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan >$(B)/bench/hosts.log 2>&1 || true
 	@bash bench/run_bench.sh $(B) $(BENCH_CC) "$(BENCH_CFLAGS)" $(BENCH_DEGREES)
 
@@ -88,12 +92,26 @@ $(B)/bench/bench_cull_%: bench/bench_cull.c $(B)/bench/ptp_%.h Makefile
 	    -DPTP_$(subst x,X,$*)_IMPLEMENTATION -DPFX=ptp_$*_ -DUPFX=PTP_$(subst x,X,$*)_ \
 	    -DDEGREE='"$*"' -o $@ $< -lm -pthread
 
+$(B)/bench/ptp_3x3_refine3.h: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target c --refine 3 --prefix ptp_3x3_ -o $@
+
+$(B)/bench/ptp_3x3_certified.h: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target c --certified --prefix ptp_3x3_ -o $@
+
+$(B)/bench/bench_cull_3x3_%: bench/bench_cull.c $(B)/bench/ptp_3x3_%.h Makefile
+	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -D_GNU_SOURCE -include $(B)/bench/ptp_3x3_$*.h \
+	    -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ -DDEGREE='"3x3"' \
+	    -DVARIANT='"$(subst refine,--refine ,$(subst certified,--certified,$*))"' -o $@ $< -lm -pthread
+
 # The peak: FMA and add chains, with a * b + c contracted into FMAs.
 $(B)/bench/peak: bench/peak.c Makefile
 	@mkdir -p $(@D)
 	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -ffp-contract=fast -o $@ $< -pthread
 
-.SECONDARY: $(addprefix $(B)/bench/ptp_,$(addsuffix .h,$(BENCH_DEGREES)))
+.SECONDARY: $(addprefix $(B)/bench/ptp_,$(addsuffix .h,$(BENCH_DEGREES))) \
+    $(addprefix $(B)/bench/ptp_3x3_,$(addsuffix .h,$(BENCH_VARIANTS)))
 .PHONY: bench
 
 # Fuzzing verify's parsers with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs
@@ -157,12 +175,16 @@ $(CR)/cr_c.h: $(B)/ptpgen
 	@mkdir -p $(CR)
 	$(B)/ptpgen --degree 3 --target c --space world --certified --prefix cr_c_ -o $@
 
+$(CR)/cr_r%.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --degree 3 --target c --space world --refine $* --prefix cr_r$*_ -o $@
+
 $(CR)/cr_t.h: $(B)/ptpgen
 	@mkdir -p $(CR)
 	$(B)/ptpgen --degree 3 --target table --prefix cr_t_ -o $@
 
 $(CR)/cullrate: bench/cullrate.c bench/cones.c bench/cones.h $(CR)/cr_s.h $(CR)/cr_d.h $(CR)/cr_c.h \
-    $(CR)/cr_t.h Makefile
-	$(CC) $(STD) $(CFLAGS) -pthread -Ibench -I$(CR) -o $@ bench/cullrate.c bench/cones.c -lm
+    $(CR)/cr_r1.h $(CR)/cr_r2.h $(CR)/cr_r3.h $(CR)/cr_t.h Makefile
+	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -pthread -Ibench -I$(CR) -o $@ bench/cullrate.c bench/cones.c -lm
 
 .PHONY: cullrate

@@ -7,6 +7,7 @@
  * (_GNU_SOURCE, for sched_setaffinity, on the command line: the header comes before this file.)
  *
  *   bench_cull --peak GFLOPS_1 GFLOPS_ALL [--patches N]   the table's rows for this bidegree
+ *     (built with -DVARIANT='"--refine 3"' around a header with that option: its batch row only)
  *   bench_cull --gen PTPGEN                               median ms of PTPGEN --target c */
 #include <math.h>
 #include <pthread.h>
@@ -397,6 +398,21 @@ int main(int argc, char **argv)
         counts[ref[p] < 3 ? ref[p] : 2]++;
 
     paper = measure(run_paper, &d, cls, 0, &used);
+#ifdef VARIANT
+    /* A header with an option (VARIANT, e.g. "--refine 3"): only its batch path, and its classes. */
+    rate = measure(run_batch, &d, cls, 1, &used);
+    snprintf(label, sizeof label, "classify_batch %s", VARIANT);
+    row(label, rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
+    printf("# %s %s: %.1f ns a patch; classes front %.1f%%, back %.1f%%, silhouette %.1f%%\n",
+           DEGREE, VARIANT, 1e9 / rate, 100.0 * (double)counts[0] / (double)count,
+           100.0 * (double)counts[1] / (double)count, 100.0 * (double)counts[2] / (double)count);
+    free(cp);
+    free(soa);
+    free(ref);
+    free(cls);
+    free(cpus);
+    return 0;
+#endif
     row("paper loop", paper, PAPER_FLOPS, peak1, 0, count_differ(cls, ref, used), used);
     rate = measure(run_classify, &d, cls, 0, &used);
     row("classify", rate, MACRO(FLOPS), peak1, paper, 0, 0);

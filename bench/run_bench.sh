@@ -111,6 +111,12 @@ for d in "$@"; do
 
     gen+="${gen:+, }$d $("$B/bench/bench_cull_$d" --gen "$B/ptpgen" || echo ?) ms"
 done
+for v in "$B"/bench/bench_cull_3x3_*; do
+    [ -x "$v" ] || continue
+    "$v" --peak "$peak1" "$peakall" >"$tmp/rows" || fail "$v failed"
+    grep -v '^#' "$tmp/rows"
+    while IFS= read -r line; do notes+=("$line"); done < <(grep '^#' "$tmp/rows")
+done
 echo "generation time (ptpgen --target c, clip, strict; whole process, median of 21): $gen"
 echo
 printf '%s\n' "${notes[@]}"

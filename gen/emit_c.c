@@ -213,8 +213,8 @@ static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const
     put_double_table(o, px, "tau64_k", cb.k64, cb.nplanes);
     put_double_table(o, px, "tau64_f", cb.k2_64, cb.nplanes);
     sbuf_printf(o,
-                "\n/* The certified class of a patch the float code could not certify, from the table loop\n"
-                " * in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
+                "\n/* The certified class of a patch whose plain float signs decide but whose bounds do not, from\n"
+                " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
                 "static unsigned %scertify64(const float cp[][4], const float eye[4])\n{\n"
                 "    double d[%sPLANES], R = 0, E = 0, ER3, F;\n"
                 "    unsigned x, c, notlt = 0, notgt = 0;\n"
@@ -281,6 +281,9 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
     /* what silhouette patches get a second look from: refinement, or certification in double */
     const char *second = info->refine ? "refined" : info->certified ? "certify64" : NULL;
+    /* the class the lanes leave for it: silhouette, or 3 (certified: only plain signs decide) */
+    const char *again = info->certified ? "3u" : "SILHOUETTE";
+    const char *again_px = info->certified ? "" : up;
     int st;
     unsigned char *done = calloc(p->npairs + 1, 1);
     size_t i;
@@ -317,7 +320,8 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     sbuf_printf(o, "    size_t l;\n    for (l = 0; l < n; l++) {\n"
                    "        const float *q = soa + l;\n"
                    "        unsigned %s = 0, %s = 0%s;\n        float u, v%s;\n",
-                strict ? "notlt" : "lt", strict ? "notgt" : "gt", strict ? "" : ", nan = 0",
+                strict ? "notlt" : "lt", strict ? "notgt" : "gt",
+                info->certified ? ", plt = 0, pgt = 0" : strict ? "" : ", nan = 0",
                 info->certified ? ", t" : "");
     for (k = 0; k < t->npoints; k++) {
         if (world)
@@ -359,7 +363,8 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
             continue;
         if (info->certified)
             sbuf_printf(o, "        t = %af * ER3 + %af * F; /* the bound of plane %d */\n"
-                           "        notlt |= !(v < -t);\n        notgt |= !(v > t);\n",
+                           "        notlt |= !(v < -t);\n        notgt |= !(v > t);\n"
+                           "        plt |= !(v < 0.0f);\n        pgt |= !(v > 0.0f);\n",
                         (double)cb->k[x->plane], (double)cb->k2[x->plane], x->plane);
         else if (strict)
             sbuf_printf(o, "        notlt |= !(v < 0.0f);\n        notgt |= !(v > 0.0f); /* plane %d */\n",
@@ -371,8 +376,10 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     }
     if (info->certified)
         sbuf_puts(o, "        /* Certified: back (1) iff every value is below minus its bound, front (0) iff\n"
-                     "         * every value is above its bound, else silhouette (2). */\n"
-                     "        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt));\n");
+                     "         * every value is above its bound; 3 where only the plain signs decide (a second\n"
+                     "         * look in double follows), else silhouette (2). */\n"
+                     "        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt) +\n"
+                     "                                 (notlt & notgt & (1u - (plt & pgt))));\n");
     else if (strict)
         sbuf_puts(o, "        /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else\n"
                      "         * silhouette (2); arithmetic, not branches, so that the loop vectorizes. */\n"
@@ -394,8 +401,8 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                    "    %slanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */\n",
                 px, px);
     if (second)
-        sbuf_printf(o, "    if (c == %sSILHOUETTE)\n        c = (unsigned char)%s%s(cp, eye);\n", up, px,
-                    second);
+        sbuf_printf(o, "    if (c == %s%s)\n        c = (unsigned char)%s%s(cp, eye);\n", again_px, again,
+                    px, second);
     sbuf_puts(o, "    return c;\n}\n\n");
     sbuf_printf(o, "void %sclassify_soa(const float *soa, size_t stride, size_t patch_count,\n"
                    "                  const float eye[4], unsigned char *cls)\n{\n"
@@ -404,14 +411,14 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     if (second)
         sbuf_printf(o, "    size_t p;\n    unsigned k, c;\n"
                        "    for (p = 0; p < patch_count; p++)\n"
-                       "        if (cls[p] == %sSILHOUETTE) {\n"
+                       "        if (cls[p] == %s%s) {\n"
                        "            float cp[%sPOINTS][4];\n"
                        "            for (k = 0; k < %sPOINTS; k++)\n"
                        "                for (c = 0; c < 4; c++)\n"
                        "                    cp[k][c] = soa[(k * 4 + c) * stride + p];\n"
                        "            cls[p] = (unsigned char)%s%s((const float (*)[4])cp, eye);\n"
                        "        }\n",
-                    up, up, up, px, second);
+                    again_px, again, up, up, px, second);
     sbuf_puts(o, "}\n\n");
     sbuf_printf(o, "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
                    "                    unsigned char *cls)\n{\n"
@@ -443,9 +450,9 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                 px, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, px, up);
     if (second)
         sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
-                       "            if (cls[p + l] == %sSILHOUETTE)\n"
+                       "            if (cls[p + l] == %s%s)\n"
                        "                cls[p + l] = (unsigned char)%s%s(cp + (p + l) * %sPOINTS, eye);\n",
-                    up, px, second, up);
+                    again_px, again, px, second, up);
     sbuf_puts(o, "    }\n}\n");
     free(done);
     return PTP_OK;
