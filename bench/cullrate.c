@@ -145,7 +145,8 @@ static int read_bez(model *m, const char *path)
         for (k = 0; k < 16; k++) {
             if (idx[p][k] < 1 || idx[p][k] > nv)
                 goto done;
-            memcpy(m->b[p].p[k], v[idx[p][k] - 1], sizeof m->b[p].p[k]);
+            for (c = 0; c < 3; c++) /* the float model the kernels see, for every method */
+                m->b[p].p[k][c] = (float)v[idx[p][k] - 1][c];
         }
     rc = 0;
 done:
@@ -263,8 +264,8 @@ static void *run_job(void *arg)
         float eyef[4];
         int p, k;
         eye_point(m, s->seed, j->stream, e, j->dist, eye);
-        for (k = 0; k < 3; k++)
-            eyef[k] = (float)eye[k];
+        for (k = 0; k < 3; k++) /* every method sees the float eye the kernels see */
+            eye[k] = eyef[k] = (float)eye[k];
         eyef[3] = 1;
         cr_s_classify_soa(m->soa, (size_t)m->npatches, (size_t)m->npatches, eyef, cs);
         cr_d_classify_soa(m->soa, (size_t)m->npatches, (size_t)m->npatches, eyef, cd);
