@@ -71,7 +71,7 @@ static void put_bracket(sbuf *o, const slp_prog *p, const slp_term *x, char g, c
 }
 
 /* Declares the minors term x needs that are not declared yet. */
-static void put_minors(sbuf *o, const slp_prog *p, const slp_term *x, int world,
+static void put_minors(sbuf *o, const slp_prog *p, const slp_term *x, int world, const char *px,
                        unsigned char *done)
 {
     int i;
@@ -80,11 +80,11 @@ static void put_minors(sbuf *o, const slp_prog *p, const slp_term *x, int world,
         if (done[x->pair[i]])
             continue;
         done[x->pair[i]] = 1;
-        sbuf_printf(o, "        const float m%d_%d = x%d * y%d - y%d * x%d;\n", q->k, q->l, q->k,
+        sbuf_printf(o, "        const %svf m%d_%d = x%d * y%d - y%d * x%d;\n", px, q->k, q->l, q->k,
                     q->l, q->k, q->l);
         if (world)
-            sbuf_printf(o, "        const float n%d_%d = z%d * w%d - w%d * z%d;\n", q->k, q->l, q->k,
-                        q->l, q->k, q->l);
+            sbuf_printf(o, "        const %svf n%d_%d = z%d * w%d - w%d * z%d;\n", px, q->k, q->l,
+                        q->k, q->l, q->k, q->l);
     }
 }
 
@@ -278,6 +278,7 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
 {
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD, k, first_group = 1;
+    const char *op;
     int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
     /* what silhouette patches get a second look from: refinement, or certification in double */
     const char *second = info->refine ? "refined" : info->certified ? "certify64" : NULL;
@@ -293,9 +294,10 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                 "/* The classification of n patches in structure-of-arrays order: coordinate c of point k\n"
                 " * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table\n"
                 " * (%sFLOPS per patch): each plane's value at a positive scale as the sum of its terms'\n"
-                " * Laplace expansions over shared 2x2 minors. Iterations are independent and branch-free,\n"
-                " * so compilers vectorize the loop across patches (clang -O2, gcc -O3; -march=native for\n"
-                " * AVX2 or AVX-512). Products are never contracted into FMAs: equal points give exact zeros. */\n"
+                " * Laplace expansions over shared 2x2 minors. An iteration classifies %sVW patches,\n"
+                " * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations\n"
+                " * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last\n"
+                " * one. Products are never contracted into FMAs: equal points give exact zeros. */\n"
                 "#if defined(__GNUC__) && !defined(__clang__)\n"
                 "#pragma GCC push_options\n#pragma GCC optimize(\"fp-contract=off\")\n"
                 "__attribute__((noinline, noclone)) /* one copy: it is large */\n"
@@ -303,7 +305,7 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                 "static void %slanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],\n"
                 "%*sunsigned char *restrict cls)\n{\n"
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
-                up, px, (int)strlen(px) + 18, "");
+                up, up, px, (int)strlen(px) + 18, "");
     if (world)
         sbuf_puts(o, "    const float e0 = eye[0], e1 = eye[1], e2 = eye[2], e3 = eye[3];\n");
     else
@@ -317,77 +319,93 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
         else
             sbuf_printf(o, "    const float E = %sABSMAX(0.0f, e2);\n", up);
     }
-    sbuf_printf(o, "    size_t l;\n    for (l = 0; l < n; l++) {\n"
-                   "        const float *q = soa + l;\n"
-                   "        unsigned %s = 0, %s = 0%s;\n        float u, v%s;\n",
-                strict ? "notlt" : "lt", strict ? "notgt" : "gt",
-                info->certified ? ", plt = 0, pgt = 0" : strict ? "" : ", nan = 0",
-                info->certified ? ", t" : "");
+    sbuf_printf(o, "    size_t l;\n    for (l = 0; l < n; l += %sVW) {\n"
+                   "        const float *q = soa + l;\n        size_t qs = stride;\n"
+                   "        %svm %s, %s%s;\n        %svf u, v%s;\n"
+                   "#if %sVW > 1\n"
+                   "        float tail[%sPOINTS * 4 * %sVW];\n"
+                   "        if (n - l < %sVW) {\n"
+                   "            size_t i, k;\n"
+                   "            for (k = 0; k < %sPOINTS * 4; k++)\n"
+                   "%s"
+                   "%*sfor (i = 0; i < %sVW; i++)\n"
+                   "%*s    tail[k * %sVW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];\n"
+                   "            q = tail;\n            qs = %sVW;\n        }\n#endif\n",
+                up, px, strict ? "notlt" : "lt", strict ? "notgt" : "gt",
+                info->certified ? ", plt, pgt" : strict ? "" : ", nan", px,
+                info->certified ? ", t" : "", up, up, up, up, up,
+                world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
+                world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
     for (k = 0; k < t->npoints; k++) {
         if (world)
-            sbuf_printf(o, "        const float x%d = q[%d * stride], y%d = q[%d * stride], "
-                           "z%d = q[%d * stride], w%d = q[%d * stride];\n"
-                           "        const float a%d = e0 * y%d - e1 * x%d, b%d = e2 * w%d - e3 * z%d;\n",
-                        k, 4 * k, k, 4 * k + 1, k, 4 * k + 2, k, 4 * k + 3, k, k, k, k, k, k);
+            sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
+                           "            z%d = %svload(q + %d * qs), w%d = %svload(q + %d * qs);\n"
+                           "        const %svf a%d = e0 * y%d - e1 * x%d, b%d = e2 * w%d - e3 * z%d;\n",
+                        px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 2, k, px, 4 * k + 3, px,
+                        k, k, k, k, k, k);
         else
-            sbuf_printf(o, "        const float x%d = q[%d * stride], y%d = q[%d * stride], "
-                           "w%d = q[%d * stride], g%d = e2 * w%d;\n",
-                        k, 4 * k, k, 4 * k + 1, k, 4 * k + 3, k, k);
+            sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
+                           "            w%d = %svload(q + %d * qs), g%d = e2 * w%d;\n",
+                        px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 3, k, k);
     }
     if (info->certified) {
-        sbuf_puts(o, "        /* Certified: R, the largest |coordinate|, bounds every value's rounding error. */\n"
-                     "        float R = 0.0f;\n");
-        for (k = 0; k < t->npoints; k++)
+        sbuf_printf(o, "        /* Certified: R, the largest |coordinate|, bounds every value's rounding error. */\n"
+                       "        %svf R = %svabsmax(x0, x0);\n", px, px);
+        for (k = 0; k < t->npoints; k++) {
+            if (k > 0)
+                sbuf_printf(o, "        R = %svabsmax(R, x%d);\n", px, k);
+            sbuf_printf(o, "        R = %svabsmax(R, y%d);\n", px, k);
             if (world)
-                sbuf_printf(o, "        R = %sABSMAX(R, x%d);\n        R = %sABSMAX(R, y%d);\n"
-                               "        R = %sABSMAX(R, z%d);\n        R = %sABSMAX(R, w%d);\n",
-                            up, k, up, k, up, k, up, k);
-            else
-                sbuf_printf(o, "        R = %sABSMAX(R, x%d);\n        R = %sABSMAX(R, y%d);\n"
-                               "        R = %sABSMAX(R, w%d);\n",
-                            up, k, up, k, up, k);
-        sbuf_printf(o, "        const float R3 = R * R * R, ER3 = E * R3;\n"
-                       "        const float F = (1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E);\n"
+                sbuf_printf(o, "        R = %svabsmax(R, z%d);\n", px, k);
+            sbuf_printf(o, "        R = %svabsmax(R, w%d);\n", px, k);
+        }
+        sbuf_printf(o, "        const %svf R3 = R * R * R, ER3 = E * R3;\n"
+                       "        const %svf F = (1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E);\n"
                        "        /* Patches too large for the bound (or NaN) are never certified. */\n"
-                       "        notlt = notgt = !((E > 1.0f ? E : 1.0f) * R3 < %af);\n",
-                    (double)cb->q_max);
+                       "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %af) == 0;\n",
+                    px, px, (double)cb->q_max);
     }
     for (i = 0; i < p->nterms; i++) {
         const slp_term *x = &p->terms[i];
         int last = i + 1 == p->nterms || p->terms[i + 1].plane != x->plane;
-        put_minors(o, p, x, world, done);
+        put_minors(o, p, x, world, px, done);
         if (i > 0 && p->terms[i - 1].group != x->group)
             first_group = p->terms[i - 1].plane != x->plane;
         put_term(o, p, i, world, first_group);
         if (!last)
             continue;
+        /* the masks: set by the first plane (certified: by the size guard), then or-ed */
+        op = x->plane == p->terms[0].plane ? "=" : "|=";
         if (info->certified)
             sbuf_printf(o, "        t = %af * ER3 + %af * F; /* the bound of plane %d */\n"
-                           "        notlt |= !(v < -t);\n        notgt |= !(v > t);\n"
-                           "        plt |= !(v < 0.0f);\n        pgt |= !(v > 0.0f);\n",
-                        (double)cb->k[x->plane], (double)cb->k2[x->plane], x->plane);
+                           "        notlt |= (v < -t) == 0;\n        notgt |= (v > t) == 0;\n"
+                           "        plt %s (v < 0.0f) == 0;\n        pgt %s (v > 0.0f) == 0;\n",
+                        (double)cb->k[x->plane], (double)cb->k2[x->plane], x->plane, op, op);
         else if (strict)
-            sbuf_printf(o, "        notlt |= !(v < 0.0f);\n        notgt |= !(v > 0.0f); /* plane %d */\n",
-                        x->plane);
+            sbuf_printf(o, "        notlt %s (v < 0.0f) == 0;\n        notgt %s (v > 0.0f) == 0; /* plane %d */\n",
+                        op, op, x->plane);
         else
-            sbuf_printf(o, "        lt |= v < 0.0f;\n        gt |= v > 0.0f;\n"
-                           "        nan |= v != v; /* plane %d */\n",
-                        x->plane);
+            sbuf_printf(o, "        lt %s v < 0.0f;\n        gt %s v > 0.0f;\n"
+                           "        nan %s v != v; /* plane %d */\n",
+                        op, op, op, x->plane);
     }
     if (info->certified)
         sbuf_puts(o, "        /* Certified: back (1) iff every value is below minus its bound, front (0) iff\n"
                      "         * every value is above its bound; 3 where only the plain signs decide (a second\n"
-                     "         * look in double follows), else silhouette (2). */\n"
-                     "        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt) +\n"
-                     "                                 (notlt & notgt & (1u - (plt & pgt))));\n");
+                     "         * look in double follows), else silhouette (2). Masks 0 or 1 first. */\n"
+                     "        notlt &= 1;\n        notgt &= 1;\n        plt &= 1;\n        pgt &= 1;\n");
     else if (strict)
         sbuf_puts(o, "        /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else\n"
-                     "         * silhouette (2); arithmetic, not branches, so that the loop vectorizes. */\n"
-                     "        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt));\n");
+                     "         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */\n"
+                     "        notlt &= 1;\n        notgt &= 1;\n");
     else
         sbuf_puts(o, "        /* Degenerate: back (1) iff no value > 0, front (0) iff no value < 0, else\n"
-                     "         * silhouette (2), and NaN silhouette; arithmetic, so that the loop vectorizes. */\n"
-                     "        cls[l] = (unsigned char)(2u * nan + (1u - nan) * ((1u - gt) + 2u * (gt & lt)));\n");
+                     "         * silhouette (2), and NaN silhouette; arithmetic, not branches. Masks 0 or 1 first. */\n"
+                     "        lt &= 1;\n        gt &= 1;\n        nan &= 1;\n");
+    sbuf_printf(o, "        %svstore(cls + l, %s, n - l);\n", px,
+                info->certified ? "(1 - notlt) + 2 * (notlt & notgt) + (notlt & notgt & (1 - (plt & pgt)))"
+                : strict ? "(1 - notlt) + 2 * (notlt & notgt)"
+                         : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
     sbuf_printf(o, "    }\n}\n"
                    "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
     if (info->refine)
@@ -420,11 +438,12 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                        "        }\n",
                     again_px, again, up, up, px, second);
     sbuf_puts(o, "}\n\n");
+    /* clip space never reads z: the transposition skips it */
     sbuf_printf(o, "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
                    "                    unsigned char *cls)\n{\n"
                    "    float soa[%sPOINTS * 4 * %sLANES];\n"
                    "    size_t p, l, n;\n"
-                   "    unsigned k, c;\n"
+                   "    unsigned k%s;\n"
                    "    for (p = 0; p < patch_count; p += n) {\n"
                    "        n = patch_count - p < %sLANES ? patch_count - p : %sLANES;\n"
                    "        l = 0;\n"
@@ -437,17 +456,37 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                    "                __m128 r3 = _mm_loadu_ps(cp[(p + l + 3) * %sPOINTS + k]);\n"
                    "                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);\n"
                    "                _mm_storeu_ps(soa + (k * 4 + 0) * %sLANES + l, r0);\n"
-                   "                _mm_storeu_ps(soa + (k * 4 + 1) * %sLANES + l, r1);\n"
-                   "                _mm_storeu_ps(soa + (k * 4 + 2) * %sLANES + l, r2);\n"
-                   "                _mm_storeu_ps(soa + (k * 4 + 3) * %sLANES + l, r3);\n"
+                   "                _mm_storeu_ps(soa + (k * 4 + 1) * %sLANES + l, r1);\n",
+                px, up, up, world ? ", c" : "", up, up, up, up, up, up, up, up, up, up);
+    if (world)
+        sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 2) * %sLANES + l, r2);\n", up);
+    sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 3) * %sLANES + l, r3);\n"
                    "            }\n"
                    "#endif\n"
                    "        for (; l < n; l++)\n"
-                   "            for (k = 0; k < %sPOINTS; k++)\n"
-                   "                for (c = 0; c < 4; c++)\n"
-                   "                    soa[(k * 4 + c) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][c];\n"
+                   "            for (k = 0; k < %sPOINTS; k++)\n",
+                up, up);
+    if (world)
+        sbuf_printf(o, "                for (c = 0; c < 4; c++)\n"
+                       "                    soa[(k * 4 + c) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][c];\n",
+                    up, up);
+    else
+        sbuf_printf(o, "            {\n"
+                       "                soa[(k * 4 + 0) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][0];\n"
+                       "                soa[(k * 4 + 1) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][1];\n"
+                       "                soa[(k * 4 + 3) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][3];\n"
+                       "            }\n",
+                    up, up, up, up, up, up);
+    sbuf_printf(o, "#if defined(__GNUC__) /* the next block into the caches while this one is classified */\n"
+                   "        {\n"
+                   "            const char *next = (const char *)(cp + (p + n) * %sPOINTS);\n"
+                   "            size_t b, m = patch_count - p - n < %sLANES ? patch_count - p - n : %sLANES;\n"
+                   "            for (b = 0; b < m * %sPOINTS * sizeof *cp; b += 64)\n"
+                   "                __builtin_prefetch(next + b, 0, 0);\n"
+                   "        }\n"
+                   "#endif\n"
                    "        %slanes(soa, %sLANES, n, eye, cls + p);\n",
-                px, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, up, px, up);
+                up, up, up, up, px, up);
     if (second)
         sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
                        "            if (cls[p + l] == %s%s)\n"

@@ -189,20 +189,27 @@ mutant() {
 mutant '0,/-9.0f/s//-9.5f/' '.*plane values' "one table weight changed (-9 -> -9.5)"
 mutant '0,/u = -((g0 \* m1_5/s//u = ((g0 * m1_5/' 'classify_batch' "one straight-line term's sign flipped"
 
-# The vectorized batch path as users build it for speed (clang: quick to compile at -O3), with
-# the SSE transposition and without it.
-for variant in "" "-DPTP_3X3_NO_SSE" "-DPTP_4X4_NO_SSE"; do
+# The vectorized paths as users build them for speed: clang -O3 -march=native (its vectorizer),
+# gcc -O2 -march=native (GNU C vectors, AVX-512 here) and -mavx2 (8 lanes); with and without the
+# SSE transposition; and gcc's scalar fallback (NO_VECTOR).
+for variant in "clang -O3 -march=native" "clang -O3 -march=native -DPTP_3X3_NO_SSE" \
+    "clang -O3 -march=native -DPTP_4X4_NO_SSE" "gcc -O2 -march=native" "gcc -O2 -march=native -DPTP_4X4_NO_SSE" \
+    "gcc -O2 -mavx2 -mfma" "gcc -O2 -DPTP_3X3_NO_VECTOR"; do
     d=3x3 space=clip rule=strict
-    case "$variant" in *4X4*) d=4x4 space=world rule=degenerate ;; esac
-    n=${d%x*}
-    command -v clang >/dev/null || { notok "clang for the -O3 batch path" "clang is missing"; break; }
+    case "$variant" in *4X4*) d=4x4 space=world rule=degenerate ;; *avx2*) space=world ;; esac
+    n=${d%x*} cc=${variant%% *}
+    command -v $cc >/dev/null || { notok "$cc for the vectorized paths" "$cc is missing"; continue; }
+    case "$variant" in *avx2*) grep -qw avx2 /proc/cpuinfo || {
+        echo "ok - c $variant # SKIP this CPU has no AVX2"
+        continue
+    } ;; esac
     "$P" --degree $d --target c --space $space --rule $rule -o "$tmp/k.h" &&
-        clang -std=c11 -O3 -march=native -Wall -Wextra -Werror -pedantic $variant -Igen -Itests -include "$tmp/k.h" \
+        $variant -std=c11 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/k.h" \
             -DPTP_${n}X${n}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${n}_ tests/host_c.c \
-            build/clang/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
-        run_host "c $d $space $rule -O3 -march=native $variant" "$tmp/host_c" --degree $n $n --space $space \
-            --rule $rule --random 2 5003 17 --name "c/clang -O3 -march=native $d $space $rule $variant" ||
-        notok "c $d -O3 -march=native $variant compiles" "$(head -5 "$tmp/err")"
+            build/$cc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
+        run_host "c $d $space $rule $variant" "$tmp/host_c" --degree $n $n --space $space \
+            --rule $rule --random 2 5003 17 --name "c/$variant $d $space $rule" ||
+        notok "c $d $variant compiles" "$(head -5 "$tmp/err")"
 done
 
 # Several degrees, and a custom prefix, in one C program; a header included twice.
@@ -293,8 +300,8 @@ for space in clip world; do
         done
         read -r PQ Q < <(schedule "$dir/ptp_3x3.json")
 
-        # C: gcc -O2 and clang -O3 -march=native (the vectorized batch path).
-        for cc in "gcc -O2" "clang -O3 -march=native"; do
+        # C: gcc -O2 and -O2 -march=native (GNU C vectors, 4 and 16 lanes), clang -O3 -march=native.
+        for cc in "gcc -O2" "gcc -O2 -march=native" "clang -O3 -march=native"; do
             command -v ${cc%% *} >/dev/null || continue
             if ${cc%% *} -std=c11 ${cc#* } -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$dir/ptp_3x3.h" \
                 -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ tests/host_c.c \

@@ -33,7 +33,7 @@ extern "C" {
 #define PTP_1X1_FLOPS 42
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_1X1_LANES
-#define PTP_1X1_LANES 64
+#define PTP_1X1_LANES 16
 #endif
 
 /* The 4 control planes of one patch, all four components, at true scale. */
@@ -62,6 +62,58 @@ void ptp_1x1_classify_soa(const float *soa, size_t stride, size_t patch_count, c
 #endif
 /* max(r, |x|) without branches; NaN in x gives NaN. */
 #define PTP_1X1_ABSMAX(r, x) ((r) > ((x) < 0.0f ? -(x) : (x)) ? (r) : ((x) < 0.0f ? -(x) : (x)))
+/* The straight-line code's value type ptp_1x1_vf and mask type ptp_1x1_vm (a comparison's
+ * result: 1 or -1 where true), PTP_1X1_VW patches wide. gcc gets GNU C vectors: it does not
+ * vectorize the loop below -O3, and slowly at -O3. Elsewhere one patch: clang vectorizes the loop. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(PTP_1X1_NO_VECTOR)
+#include <string.h>
+#if defined(__AVX512F__)
+#define PTP_1X1_VW 16
+#elif defined(__AVX__)
+#define PTP_1X1_VW 8
+#else
+#define PTP_1X1_VW 4
+#endif
+typedef float ptp_1x1_vf __attribute__((vector_size(4 * PTP_1X1_VW)));
+typedef int ptp_1x1_vm __attribute__((vector_size(4 * PTP_1X1_VW)));
+/* PTP_1X1_VW consecutive floats from p, any alignment. */
+static inline ptp_1x1_vf ptp_1x1_vload(const float *p)
+{
+    ptp_1x1_vf v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+/* cls[i] = c[i] for the first count (at most PTP_1X1_VW) lanes. */
+static inline void ptp_1x1_vstore(unsigned char *cls, ptp_1x1_vm c, size_t count)
+{
+    size_t i;
+    for (i = 0; i < count && i < PTP_1X1_VW; i++)
+        cls[i] = (unsigned char)c[i];
+}
+/* max(r, |x|) lane by lane; NaN in x gives NaN. */
+static inline ptp_1x1_vf ptp_1x1_vabsmax(ptp_1x1_vf r, ptp_1x1_vf x)
+{
+    ptp_1x1_vm a = (ptp_1x1_vm)x & 0x7fffffff, m = r > (ptp_1x1_vf)a;
+    return (ptp_1x1_vf)(((ptp_1x1_vm)r & m) | (a & ~m));
+}
+#else
+#define PTP_1X1_VW 1
+typedef float ptp_1x1_vf;
+typedef int ptp_1x1_vm;
+static inline ptp_1x1_vf ptp_1x1_vload(const float *p)
+{
+    return *p;
+}
+static inline void ptp_1x1_vstore(unsigned char *cls, ptp_1x1_vm c, size_t count)
+{
+    (void)count;
+    *cls = (unsigned char)c;
+}
+static inline ptp_1x1_vf ptp_1x1_vabsmax(ptp_1x1_vf r, ptp_1x1_vf x)
+{
+    return PTP_1X1_ABSMAX(r, x);
+}
+#endif
 
 #define PTP_1X1_TERMS 4
 
@@ -133,9 +185,10 @@ void ptp_1x1_values(const float cp[][4], const float eye[4], float d[])
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_1X1_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
- * Laplace expansions over shared 2x2 minors. Iterations are independent and branch-free,
- * so compilers vectorize the loop across patches (clang -O2, gcc -O3; -march=native for
- * AVX2 or AVX-512). Products are never contracted into FMAs: equal points give exact zeros. */
+ * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_1X1_VW patches,
+ * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
+ * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
+ * one. Products are never contracted into FMAs: equal points give exact zeros. */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -151,39 +204,58 @@ static void ptp_1x1_lanes(const float *restrict soa, size_t stride, size_t n, co
 #endif
     const float e2 = eye[2];
     size_t l;
-    for (l = 0; l < n; l++) {
+    for (l = 0; l < n; l += PTP_1X1_VW) {
         const float *q = soa + l;
-        unsigned notlt = 0, notgt = 0;
-        float u, v;
-        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride], g0 = e2 * w0;
-        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride], g1 = e2 * w1;
-        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride], g2 = e2 * w2;
-        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride], g3 = e2 * w3;
-        const float m1_2 = x1 * y2 - y1 * x2;
-        const float m0_2 = x0 * y2 - y0 * x2;
-        const float m0_1 = x0 * y1 - y0 * x1;
+        size_t qs = stride;
+        ptp_1x1_vm notlt, notgt;
+        ptp_1x1_vf u, v;
+#if PTP_1X1_VW > 1
+        float tail[PTP_1X1_POINTS * 4 * PTP_1X1_VW];
+        if (n - l < PTP_1X1_VW) {
+            size_t i, k;
+            for (k = 0; k < PTP_1X1_POINTS * 4; k++)
+                if (k % 4 != 2) /* z: clip space never reads it */
+                    for (i = 0; i < PTP_1X1_VW; i++)
+                        tail[k * PTP_1X1_VW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];
+            q = tail;
+            qs = PTP_1X1_VW;
+        }
+#endif
+        const ptp_1x1_vf x0 = ptp_1x1_vload(q + 0 * qs), y0 = ptp_1x1_vload(q + 1 * qs),
+            w0 = ptp_1x1_vload(q + 3 * qs), g0 = e2 * w0;
+        const ptp_1x1_vf x1 = ptp_1x1_vload(q + 4 * qs), y1 = ptp_1x1_vload(q + 5 * qs),
+            w1 = ptp_1x1_vload(q + 7 * qs), g1 = e2 * w1;
+        const ptp_1x1_vf x2 = ptp_1x1_vload(q + 8 * qs), y2 = ptp_1x1_vload(q + 9 * qs),
+            w2 = ptp_1x1_vload(q + 11 * qs), g2 = e2 * w2;
+        const ptp_1x1_vf x3 = ptp_1x1_vload(q + 12 * qs), y3 = ptp_1x1_vload(q + 13 * qs),
+            w3 = ptp_1x1_vload(q + 15 * qs), g3 = e2 * w3;
+        const ptp_1x1_vf m1_2 = x1 * y2 - y1 * x2;
+        const ptp_1x1_vf m0_2 = x0 * y2 - y0 * x2;
+        const ptp_1x1_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 0 */
-        const float m1_3 = x1 * y3 - y1 * x3;
-        const float m0_3 = x0 * y3 - y0 * x3;
+        notlt = (v < 0.0f) == 0;
+        notgt = (v > 0.0f) == 0; /* plane 0 */
+        const ptp_1x1_vf m1_3 = x1 * y3 - y1 * x3;
+        const ptp_1x1_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 1 */
-        const float m2_3 = x2 * y3 - y2 * x3;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        const ptp_1x1_vf m2_3 = x2 * y3 - y2 * x3;
         u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 2 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 2 */
         u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 3 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 3 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches, so that the loop vectorizes. */
-        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt));
+         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
+        notlt &= 1;
+        notgt &= 1;
+        ptp_1x1_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
 }
 #if defined(__GNUC__) && !defined(__clang__)
@@ -208,7 +280,7 @@ void ptp_1x1_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 {
     float soa[PTP_1X1_POINTS * 4 * PTP_1X1_LANES];
     size_t p, l, n;
-    unsigned k, c;
+    unsigned k;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_1X1_LANES ? patch_count - p : PTP_1X1_LANES;
         l = 0;
@@ -222,14 +294,24 @@ void ptp_1x1_classify_batch(const float (*cp)[4], size_t patch_count, const floa
                 _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
                 _mm_storeu_ps(soa + (k * 4 + 0) * PTP_1X1_LANES + l, r0);
                 _mm_storeu_ps(soa + (k * 4 + 1) * PTP_1X1_LANES + l, r1);
-                _mm_storeu_ps(soa + (k * 4 + 2) * PTP_1X1_LANES + l, r2);
                 _mm_storeu_ps(soa + (k * 4 + 3) * PTP_1X1_LANES + l, r3);
             }
 #endif
         for (; l < n; l++)
             for (k = 0; k < PTP_1X1_POINTS; k++)
-                for (c = 0; c < 4; c++)
-                    soa[(k * 4 + c) * PTP_1X1_LANES + l] = cp[(p + l) * PTP_1X1_POINTS + k][c];
+            {
+                soa[(k * 4 + 0) * PTP_1X1_LANES + l] = cp[(p + l) * PTP_1X1_POINTS + k][0];
+                soa[(k * 4 + 1) * PTP_1X1_LANES + l] = cp[(p + l) * PTP_1X1_POINTS + k][1];
+                soa[(k * 4 + 3) * PTP_1X1_LANES + l] = cp[(p + l) * PTP_1X1_POINTS + k][3];
+            }
+#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+        {
+            const char *next = (const char *)(cp + (p + n) * PTP_1X1_POINTS);
+            size_t b, m = patch_count - p - n < PTP_1X1_LANES ? patch_count - p - n : PTP_1X1_LANES;
+            for (b = 0; b < m * PTP_1X1_POINTS * sizeof *cp; b += 64)
+                __builtin_prefetch(next + b, 0, 0);
+        }
+#endif
         ptp_1x1_lanes(soa, PTP_1X1_LANES, n, eye, cls + p);
     }
 }

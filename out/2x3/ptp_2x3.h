@@ -33,7 +33,7 @@ extern "C" {
 #define PTP_2X3_FLOPS 1492
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_2X3_LANES
-#define PTP_2X3_LANES 64
+#define PTP_2X3_LANES 16
 #endif
 
 /* The 40 control planes of one patch, all four components, at true scale. */
@@ -62,6 +62,58 @@ void ptp_2x3_classify_soa(const float *soa, size_t stride, size_t patch_count, c
 #endif
 /* max(r, |x|) without branches; NaN in x gives NaN. */
 #define PTP_2X3_ABSMAX(r, x) ((r) > ((x) < 0.0f ? -(x) : (x)) ? (r) : ((x) < 0.0f ? -(x) : (x)))
+/* The straight-line code's value type ptp_2x3_vf and mask type ptp_2x3_vm (a comparison's
+ * result: 1 or -1 where true), PTP_2X3_VW patches wide. gcc gets GNU C vectors: it does not
+ * vectorize the loop below -O3, and slowly at -O3. Elsewhere one patch: clang vectorizes the loop. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(PTP_2X3_NO_VECTOR)
+#include <string.h>
+#if defined(__AVX512F__)
+#define PTP_2X3_VW 16
+#elif defined(__AVX__)
+#define PTP_2X3_VW 8
+#else
+#define PTP_2X3_VW 4
+#endif
+typedef float ptp_2x3_vf __attribute__((vector_size(4 * PTP_2X3_VW)));
+typedef int ptp_2x3_vm __attribute__((vector_size(4 * PTP_2X3_VW)));
+/* PTP_2X3_VW consecutive floats from p, any alignment. */
+static inline ptp_2x3_vf ptp_2x3_vload(const float *p)
+{
+    ptp_2x3_vf v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+/* cls[i] = c[i] for the first count (at most PTP_2X3_VW) lanes. */
+static inline void ptp_2x3_vstore(unsigned char *cls, ptp_2x3_vm c, size_t count)
+{
+    size_t i;
+    for (i = 0; i < count && i < PTP_2X3_VW; i++)
+        cls[i] = (unsigned char)c[i];
+}
+/* max(r, |x|) lane by lane; NaN in x gives NaN. */
+static inline ptp_2x3_vf ptp_2x3_vabsmax(ptp_2x3_vf r, ptp_2x3_vf x)
+{
+    ptp_2x3_vm a = (ptp_2x3_vm)x & 0x7fffffff, m = r > (ptp_2x3_vf)a;
+    return (ptp_2x3_vf)(((ptp_2x3_vm)r & m) | (a & ~m));
+}
+#else
+#define PTP_2X3_VW 1
+typedef float ptp_2x3_vf;
+typedef int ptp_2x3_vm;
+static inline ptp_2x3_vf ptp_2x3_vload(const float *p)
+{
+    return *p;
+}
+static inline void ptp_2x3_vstore(unsigned char *cls, ptp_2x3_vm c, size_t count)
+{
+    (void)count;
+    *cls = (unsigned char)c;
+}
+static inline ptp_2x3_vf ptp_2x3_vabsmax(ptp_2x3_vf r, ptp_2x3_vf x)
+{
+    return PTP_2X3_ABSMAX(r, x);
+}
+#endif
 
 #define PTP_2X3_TERMS 200
 
@@ -525,9 +577,10 @@ void ptp_2x3_values(const float cp[][4], const float eye[4], float d[])
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_2X3_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
- * Laplace expansions over shared 2x2 minors. Iterations are independent and branch-free,
- * so compilers vectorize the loop across patches (clang -O2, gcc -O3; -march=native for
- * AVX2 or AVX-512). Products are never contracted into FMAs: equal points give exact zeros. */
+ * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_2X3_VW patches,
+ * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
+ * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
+ * one. Products are never contracted into FMAs: equal points give exact zeros. */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -543,87 +596,112 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
 #endif
     const float e2 = eye[2];
     size_t l;
-    for (l = 0; l < n; l++) {
+    for (l = 0; l < n; l += PTP_2X3_VW) {
         const float *q = soa + l;
-        unsigned notlt = 0, notgt = 0;
-        float u, v;
-        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride], g0 = e2 * w0;
-        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride], g1 = e2 * w1;
-        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride], g2 = e2 * w2;
-        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride], g3 = e2 * w3;
-        const float x4 = q[16 * stride], y4 = q[17 * stride], w4 = q[19 * stride], g4 = e2 * w4;
-        const float x5 = q[20 * stride], y5 = q[21 * stride], w5 = q[23 * stride], g5 = e2 * w5;
-        const float x6 = q[24 * stride], y6 = q[25 * stride], w6 = q[27 * stride], g6 = e2 * w6;
-        const float x7 = q[28 * stride], y7 = q[29 * stride], w7 = q[31 * stride], g7 = e2 * w7;
-        const float x8 = q[32 * stride], y8 = q[33 * stride], w8 = q[35 * stride], g8 = e2 * w8;
-        const float x9 = q[36 * stride], y9 = q[37 * stride], w9 = q[39 * stride], g9 = e2 * w9;
-        const float x10 = q[40 * stride], y10 = q[41 * stride], w10 = q[43 * stride], g10 = e2 * w10;
-        const float x11 = q[44 * stride], y11 = q[45 * stride], w11 = q[47 * stride], g11 = e2 * w11;
-        const float m1_4 = x1 * y4 - y1 * x4;
-        const float m0_4 = x0 * y4 - y0 * x4;
-        const float m0_1 = x0 * y1 - y0 * x1;
+        size_t qs = stride;
+        ptp_2x3_vm notlt, notgt;
+        ptp_2x3_vf u, v;
+#if PTP_2X3_VW > 1
+        float tail[PTP_2X3_POINTS * 4 * PTP_2X3_VW];
+        if (n - l < PTP_2X3_VW) {
+            size_t i, k;
+            for (k = 0; k < PTP_2X3_POINTS * 4; k++)
+                if (k % 4 != 2) /* z: clip space never reads it */
+                    for (i = 0; i < PTP_2X3_VW; i++)
+                        tail[k * PTP_2X3_VW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];
+            q = tail;
+            qs = PTP_2X3_VW;
+        }
+#endif
+        const ptp_2x3_vf x0 = ptp_2x3_vload(q + 0 * qs), y0 = ptp_2x3_vload(q + 1 * qs),
+            w0 = ptp_2x3_vload(q + 3 * qs), g0 = e2 * w0;
+        const ptp_2x3_vf x1 = ptp_2x3_vload(q + 4 * qs), y1 = ptp_2x3_vload(q + 5 * qs),
+            w1 = ptp_2x3_vload(q + 7 * qs), g1 = e2 * w1;
+        const ptp_2x3_vf x2 = ptp_2x3_vload(q + 8 * qs), y2 = ptp_2x3_vload(q + 9 * qs),
+            w2 = ptp_2x3_vload(q + 11 * qs), g2 = e2 * w2;
+        const ptp_2x3_vf x3 = ptp_2x3_vload(q + 12 * qs), y3 = ptp_2x3_vload(q + 13 * qs),
+            w3 = ptp_2x3_vload(q + 15 * qs), g3 = e2 * w3;
+        const ptp_2x3_vf x4 = ptp_2x3_vload(q + 16 * qs), y4 = ptp_2x3_vload(q + 17 * qs),
+            w4 = ptp_2x3_vload(q + 19 * qs), g4 = e2 * w4;
+        const ptp_2x3_vf x5 = ptp_2x3_vload(q + 20 * qs), y5 = ptp_2x3_vload(q + 21 * qs),
+            w5 = ptp_2x3_vload(q + 23 * qs), g5 = e2 * w5;
+        const ptp_2x3_vf x6 = ptp_2x3_vload(q + 24 * qs), y6 = ptp_2x3_vload(q + 25 * qs),
+            w6 = ptp_2x3_vload(q + 27 * qs), g6 = e2 * w6;
+        const ptp_2x3_vf x7 = ptp_2x3_vload(q + 28 * qs), y7 = ptp_2x3_vload(q + 29 * qs),
+            w7 = ptp_2x3_vload(q + 31 * qs), g7 = e2 * w7;
+        const ptp_2x3_vf x8 = ptp_2x3_vload(q + 32 * qs), y8 = ptp_2x3_vload(q + 33 * qs),
+            w8 = ptp_2x3_vload(q + 35 * qs), g8 = e2 * w8;
+        const ptp_2x3_vf x9 = ptp_2x3_vload(q + 36 * qs), y9 = ptp_2x3_vload(q + 37 * qs),
+            w9 = ptp_2x3_vload(q + 39 * qs), g9 = e2 * w9;
+        const ptp_2x3_vf x10 = ptp_2x3_vload(q + 40 * qs), y10 = ptp_2x3_vload(q + 41 * qs),
+            w10 = ptp_2x3_vload(q + 43 * qs), g10 = e2 * w10;
+        const ptp_2x3_vf x11 = ptp_2x3_vload(q + 44 * qs), y11 = ptp_2x3_vload(q + 45 * qs),
+            w11 = ptp_2x3_vload(q + 47 * qs), g11 = e2 * w11;
+        const ptp_2x3_vf m1_4 = x1 * y4 - y1 * x4;
+        const ptp_2x3_vf m0_4 = x0 * y4 - y0 * x4;
+        const ptp_2x3_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 0 */
-        const float m2_4 = x2 * y4 - y2 * x4;
-        const float m0_2 = x0 * y2 - y0 * x2;
+        notlt = (v < 0.0f) == 0;
+        notgt = (v > 0.0f) == 0; /* plane 0 */
+        const ptp_2x3_vf m2_4 = x2 * y4 - y2 * x4;
+        const ptp_2x3_vf m0_2 = x0 * y2 - y0 * x2;
         u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = 2.0f * u;
-        const float m1_5 = x1 * y5 - y1 * x5;
-        const float m0_5 = x0 * y5 - y0 * x5;
+        const ptp_2x3_vf m1_5 = x1 * y5 - y1 * x5;
+        const ptp_2x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v += 3.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 1 */
-        const float m3_4 = x3 * y4 - y3 * x4;
-        const float m0_3 = x0 * y3 - y0 * x3;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        const ptp_2x3_vf m3_4 = x3 * y4 - y3 * x4;
+        const ptp_2x3_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v = u;
-        const float m1_6 = x1 * y6 - y1 * x6;
-        const float m0_6 = x0 * y6 - y0 * x6;
+        const ptp_2x3_vf m1_6 = x1 * y6 - y1 * x6;
+        const ptp_2x3_vf m0_6 = x0 * y6 - y0 * x6;
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
-        const float m1_2 = x1 * y2 - y1 * x2;
+        const ptp_2x3_vf m1_2 = x1 * y2 - y1 * x2;
         u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
         v += 3.0f * u;
-        const float m2_5 = x2 * y5 - y2 * x5;
+        const ptp_2x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 2 */
-        const float m1_7 = x1 * y7 - y1 * x7;
-        const float m0_7 = x0 * y7 - y0 * x7;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        const ptp_2x3_vf m1_7 = x1 * y7 - y1 * x7;
+        const ptp_2x3_vf m0_7 = x0 * y7 - y0 * x7;
         u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
         v = u;
-        const float m1_3 = x1 * y3 - y1 * x3;
+        const ptp_2x3_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v += 2.0f * u;
-        const float m3_5 = x3 * y5 - y3 * x5;
+        const ptp_2x3_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
         v += 3.0f * u;
-        const float m2_6 = x2 * y6 - y2 * x6;
+        const ptp_2x3_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
         v += 6.0f * u;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v += 9.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 3 */
-        const float m2_3 = x2 * y3 - y2 * x3;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        const ptp_2x3_vf m2_3 = x2 * y3 - y2 * x3;
         u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = u;
-        const float m2_7 = x2 * y7 - y2 * x7;
+        const ptp_2x3_vf m2_7 = x2 * y7 - y2 * x7;
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
         v += 2.0f * u;
-        const float m3_6 = x3 * y6 - y3 * x6;
+        const ptp_2x3_vf m3_6 = x3 * y6 - y3 * x6;
         u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
         v += 3.0f * u;
         u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         v += 6.0f * u;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v += 9.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 4 */
-        const float m3_7 = x3 * y7 - y3 * x7;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        const ptp_2x3_vf m3_7 = x3 * y7 - y3 * x7;
         u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
@@ -631,76 +709,76 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 5 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = 2.0f * u;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v += 3.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 6 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 7 */
-        const float m1_8 = x1 * y8 - y1 * x8;
-        const float m0_8 = x0 * y8 - y0 * x8;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        const ptp_2x3_vf m1_8 = x1 * y8 - y1 * x8;
+        const ptp_2x3_vf m0_8 = x0 * y8 - y0 * x8;
         u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
         v = u;
-        const float m4_5 = x4 * y5 - y4 * x5;
+        const ptp_2x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v += 2.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 8 */
-        const float m2_8 = x2 * y8 - y2 * x8;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        const ptp_2x3_vf m2_8 = x2 * y8 - y2 * x8;
         u = -((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
         v = 2.0f * u;
-        const float m1_9 = x1 * y9 - y1 * x9;
-        const float m0_9 = x0 * y9 - y0 * x9;
+        const ptp_2x3_vf m1_9 = x1 * y9 - y1 * x9;
+        const ptp_2x3_vf m0_9 = x0 * y9 - y0 * x9;
         u = -((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
         v += 3.0f * u;
-        const float m4_6 = x4 * y6 - y4 * x6;
+        const ptp_2x3_vf m4_6 = x4 * y6 - y4 * x6;
         u = ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
         v += 4.0f * u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 9 */
-        const float m3_8 = x3 * y8 - y3 * x8;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        const ptp_2x3_vf m3_8 = x3 * y8 - y3 * x8;
         u = -((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
         v = u;
-        const float m4_7 = x4 * y7 - y4 * x7;
+        const ptp_2x3_vf m4_7 = x4 * y7 - y4 * x7;
         u = ((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         v += 2.0f * u;
-        const float m1_10 = x1 * y10 - y1 * x10;
-        const float m0_10 = x0 * y10 - y0 * x10;
+        const ptp_2x3_vf m1_10 = x1 * y10 - y1 * x10;
+        const ptp_2x3_vf m0_10 = x0 * y10 - y0 * x10;
         u = -((g0 * m1_10 - g1 * m0_10) + g10 * m0_1);
         u -= ((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
         v += 3.0f * u;
-        const float m2_9 = x2 * y9 - y2 * x9;
+        const ptp_2x3_vf m2_9 = x2 * y9 - y2 * x9;
         u = -((g0 * m2_9 - g2 * m0_9) + g9 * m0_2);
-        const float m5_6 = x5 * y6 - y5 * x6;
+        const ptp_2x3_vf m5_6 = x5 * y6 - y5 * x6;
         u += ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
         u += ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v += 6.0f * u;
         u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += 12.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 10 */
-        const float m1_11 = x1 * y11 - y1 * x11;
-        const float m0_11 = x0 * y11 - y0 * x11;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        const ptp_2x3_vf m1_11 = x1 * y11 - y1 * x11;
+        const ptp_2x3_vf m0_11 = x0 * y11 - y0 * x11;
         u = -((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
         v = u;
         u = -((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
         u += ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
         v += 2.0f * u;
-        const float m3_9 = x3 * y9 - y3 * x9;
+        const ptp_2x3_vf m3_9 = x3 * y9 - y3 * x9;
         u = -((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
         v += 3.0f * u;
-        const float m5_7 = x5 * y7 - y5 * x7;
+        const ptp_2x3_vf m5_7 = x5 * y7 - y5 * x7;
         u = ((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
         v += 4.0f * u;
-        const float m2_10 = x2 * y10 - y2 * x10;
+        const ptp_2x3_vf m2_10 = x2 * y10 - y2 * x10;
         u = -((g0 * m2_10 - g2 * m0_10) + g10 * m0_2);
         u += ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
         v += 6.0f * u;
@@ -710,16 +788,16 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v += 18.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 11 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 11 */
         u = -((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
         v = u;
-        const float m2_11 = x2 * y11 - y2 * x11;
+        const ptp_2x3_vf m2_11 = x2 * y11 - y2 * x11;
         u = -((g0 * m2_11 - g2 * m0_11) + g11 * m0_2);
-        const float m6_7 = x6 * y7 - y6 * x7;
+        const ptp_2x3_vf m6_7 = x6 * y7 - y6 * x7;
         u += ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         v += 2.0f * u;
-        const float m3_10 = x3 * y10 - y3 * x10;
+        const ptp_2x3_vf m3_10 = x3 * y10 - y3 * x10;
         u = -((g0 * m3_10 - g3 * m0_10) + g10 * m0_3);
         v += 3.0f * u;
         u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
@@ -733,9 +811,9 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v += 18.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 12 */
-        const float m3_11 = x3 * y11 - y3 * x11;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        const ptp_2x3_vf m3_11 = x3 * y11 - y3 * x11;
         u = -((g0 * m3_11 - g3 * m0_11) + g11 * m0_3);
         v = u;
         u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
@@ -749,8 +827,8 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         v += 12.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 13 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = -((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
         v = 2.0f * u;
         u = -((g2 * m3_10 - g3 * m2_10) + g10 * m2_3);
@@ -759,70 +837,70 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 4.0f * u;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 14 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
         v = u;
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v += 2.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 15 */
-        const float m4_9 = x4 * y9 - y4 * x9;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        const ptp_2x3_vf m4_9 = x4 * y9 - y4 * x9;
         u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
-        const float m4_8 = x4 * y8 - y4 * x8;
+        const ptp_2x3_vf m4_8 = x4 * y8 - y4 * x8;
         u += ((g1 * m4_8 - g4 * m1_8) + g8 * m1_4);
         v = u;
-        const float m5_8 = x5 * y8 - y5 * x8;
+        const ptp_2x3_vf m5_8 = x5 * y8 - y5 * x8;
         u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
         v += 2.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 16 */
-        const float m4_10 = x4 * y10 - y4 * x10;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 16 */
+        const ptp_2x3_vf m4_10 = x4 * y10 - y4 * x10;
         u = ((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
         u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         v = 2.0f * u;
-        const float m5_9 = x5 * y9 - y5 * x9;
+        const ptp_2x3_vf m5_9 = x5 * y9 - y5 * x9;
         u = -((g0 * m5_9 - g5 * m0_9) + g9 * m0_5);
         u -= ((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
         v += 3.0f * u;
-        const float m6_8 = x6 * y8 - y6 * x8;
+        const ptp_2x3_vf m6_8 = x6 * y8 - y6 * x8;
         u = -((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
         v += 4.0f * u;
         u = ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 17 */
-        const float m4_11 = x4 * y11 - y4 * x11;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        const ptp_2x3_vf m4_11 = x4 * y11 - y4 * x11;
         u = ((g0 * m4_11 - g4 * m0_11) + g11 * m0_4);
         u += ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
         v = u;
-        const float m7_8 = x7 * y8 - y7 * x8;
+        const ptp_2x3_vf m7_8 = x7 * y8 - y7 * x8;
         u = -((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
         v += 2.0f * u;
-        const float m6_9 = x6 * y9 - y6 * x9;
+        const ptp_2x3_vf m6_9 = x6 * y9 - y6 * x9;
         u = -((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
         u += ((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
         u -= ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
         u += ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v += 9.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 18 */
-        const float m5_11 = x5 * y11 - y5 * x11;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        const ptp_2x3_vf m5_11 = x5 * y11 - y5 * x11;
         u = ((g0 * m5_11 - g5 * m0_11) + g11 * m0_5);
         u += ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
         v = u;
         u = ((g1 * m4_11 - g4 * m1_11) + g11 * m1_4);
         u += ((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
         v += 4.0f * u;
-        const float m7_9 = x7 * y9 - y7 * x9;
+        const ptp_2x3_vf m7_9 = x7 * y9 - y7 * x9;
         u = -((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
         u -= ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
         v += 5.0f * u;
-        const float m6_10 = x6 * y10 - y6 * x10;
+        const ptp_2x3_vf m6_10 = x6 * y10 - y6 * x10;
         u = -((g0 * m6_10 - g6 * m0_10) + g10 * m0_6);
         u -= ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
         v += 6.0f * u;
-        const float m5_10 = x5 * y10 - y5 * x10;
+        const ptp_2x3_vf m5_10 = x5 * y10 - y5 * x10;
         u = ((g1 * m5_10 - g5 * m1_10) + g10 * m1_5);
         u += ((g2 * m5_9 - g5 * m2_9) + g9 * m2_5);
         v += 9.0f * u;
@@ -830,13 +908,13 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
         v += 18.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 19 */
-        const float m6_11 = x6 * y11 - y6 * x11;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 19 */
+        const ptp_2x3_vf m6_11 = x6 * y11 - y6 * x11;
         u = -((g0 * m6_11 - g6 * m0_11) + g11 * m0_6);
         u -= ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
         v = u;
-        const float m7_10 = x7 * y10 - y7 * x10;
+        const ptp_2x3_vf m7_10 = x7 * y10 - y7 * x10;
         u = -((g0 * m7_10 - g7 * m0_10) + g10 * m0_7);
         u -= ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         v += 4.0f * u;
@@ -853,9 +931,9 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
         v += 18.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 20 */
-        const float m7_11 = x7 * y11 - y7 * x11;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        const ptp_2x3_vf m7_11 = x7 * y11 - y7 * x11;
         u = -((g0 * m7_11 - g7 * m0_11) + g11 * m0_7);
         u -= ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
         v = u;
@@ -866,8 +944,8 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
         u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
         v += 9.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 21 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = -((g1 * m7_11 - g7 * m1_11) + g11 * m1_7);
         u -= ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
         v = 2.0f * u;
@@ -878,23 +956,23 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 4.0f * u;
         u = -((g2 * m7_10 - g7 * m2_10) + g10 * m2_7);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 22 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = -((g2 * m7_11 - g7 * m2_11) + g11 * m2_7);
         u -= ((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
         v = u;
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
         v += 2.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 23 */
-        const float m8_9 = x8 * y9 - y8 * x9;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 23 */
+        const ptp_2x3_vf m8_9 = x8 * y9 - y8 * x9;
         u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
         v = u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += 2.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 24 */
-        const float m8_10 = x8 * y10 - y8 * x10;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 24 */
+        const ptp_2x3_vf m8_10 = x8 * y10 - y8 * x10;
         u = ((g0 * m8_10 - g8 * m0_10) + g10 * m0_8);
         v = 2.0f * u;
         u = ((g1 * m8_9 - g8 * m1_9) + g9 * m1_8);
@@ -903,14 +981,14 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 4.0f * u;
         u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 25 */
-        const float m8_11 = x8 * y11 - y8 * x11;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 25 */
+        const ptp_2x3_vf m8_11 = x8 * y11 - y8 * x11;
         u = ((g0 * m8_11 - g8 * m0_11) + g11 * m0_8);
         v = u;
         u = -((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
         v += 2.0f * u;
-        const float m9_10 = x9 * y10 - y9 * x10;
+        const ptp_2x3_vf m9_10 = x9 * y10 - y9 * x10;
         u = ((g0 * m9_10 - g9 * m0_10) + g10 * m0_9);
         u += ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
         v += 3.0f * u;
@@ -920,11 +998,11 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
         v += 12.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 26 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 26 */
         u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
         v = u;
-        const float m9_11 = x9 * y11 - y9 * x11;
+        const ptp_2x3_vf m9_11 = x9 * y11 - y9 * x11;
         u = ((g0 * m9_11 - g9 * m0_11) + g11 * m0_9);
         u -= ((g4 * m5_11 - g5 * m4_11) + g11 * m4_5);
         v += 2.0f * u;
@@ -941,9 +1019,9 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
         v += 18.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 27 */
-        const float m10_11 = x10 * y11 - y10 * x11;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 27 */
+        const ptp_2x3_vf m10_11 = x10 * y11 - y10 * x11;
         u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
         v = u;
         u = ((g3 * m8_10 - g8 * m3_10) + g10 * m3_8);
@@ -962,8 +1040,8 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
         v += 18.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 28 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 28 */
         u = ((g3 * m8_11 - g8 * m3_11) + g11 * m3_8);
         v = u;
         u = -((g4 * m7_11 - g7 * m4_11) + g11 * m4_7);
@@ -977,8 +1055,8 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g5 * m7_10 - g7 * m5_10) + g10 * m5_7);
         v += 12.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 29 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = ((g3 * m9_11 - g9 * m3_11) + g11 * m3_9);
         v = 2.0f * u;
         u = ((g2 * m10_11 - g10 * m2_11) + g11 * m2_10);
@@ -987,24 +1065,24 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 4.0f * u;
         u = -((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 30 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         v = u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         v += 2.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 31 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 32 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = ((g4 * m8_10 - g8 * m4_10) + g10 * m4_8);
         v = 2.0f * u;
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v += 3.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 33 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = ((g4 * m8_11 - g8 * m4_11) + g11 * m4_8);
         v = u;
         u = ((g4 * m9_10 - g9 * m4_10) + g10 * m4_9);
@@ -1012,8 +1090,8 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = ((g5 * m8_10 - g8 * m5_10) + g10 * m5_8);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 34 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 34 */
         u = ((g7 * m8_9 - g8 * m7_9) + g9 * m7_8);
         v = u;
         u = ((g4 * m9_11 - g9 * m4_11) + g11 * m4_9);
@@ -1024,8 +1102,8 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g5 * m9_10 - g9 * m5_10) + g10 * m5_9);
         v += 9.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 35 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = ((g4 * m10_11 - g10 * m4_11) + g11 * m4_10);
         v = u;
         u = ((g7 * m8_10 - g8 * m7_10) + g10 * m7_8);
@@ -1036,8 +1114,8 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
         v += 9.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 36 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 36 */
         u = ((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
         v = u;
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
@@ -1045,21 +1123,23 @@ static void ptp_2x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
         v += 6.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 37 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
         v = 2.0f * u;
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v += 3.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 38 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 39 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 39 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches, so that the loop vectorizes. */
-        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt));
+         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
+        notlt &= 1;
+        notgt &= 1;
+        ptp_2x3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
 }
 #if defined(__GNUC__) && !defined(__clang__)
@@ -1084,7 +1164,7 @@ void ptp_2x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 {
     float soa[PTP_2X3_POINTS * 4 * PTP_2X3_LANES];
     size_t p, l, n;
-    unsigned k, c;
+    unsigned k;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_2X3_LANES ? patch_count - p : PTP_2X3_LANES;
         l = 0;
@@ -1098,14 +1178,24 @@ void ptp_2x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
                 _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
                 _mm_storeu_ps(soa + (k * 4 + 0) * PTP_2X3_LANES + l, r0);
                 _mm_storeu_ps(soa + (k * 4 + 1) * PTP_2X3_LANES + l, r1);
-                _mm_storeu_ps(soa + (k * 4 + 2) * PTP_2X3_LANES + l, r2);
                 _mm_storeu_ps(soa + (k * 4 + 3) * PTP_2X3_LANES + l, r3);
             }
 #endif
         for (; l < n; l++)
             for (k = 0; k < PTP_2X3_POINTS; k++)
-                for (c = 0; c < 4; c++)
-                    soa[(k * 4 + c) * PTP_2X3_LANES + l] = cp[(p + l) * PTP_2X3_POINTS + k][c];
+            {
+                soa[(k * 4 + 0) * PTP_2X3_LANES + l] = cp[(p + l) * PTP_2X3_POINTS + k][0];
+                soa[(k * 4 + 1) * PTP_2X3_LANES + l] = cp[(p + l) * PTP_2X3_POINTS + k][1];
+                soa[(k * 4 + 3) * PTP_2X3_LANES + l] = cp[(p + l) * PTP_2X3_POINTS + k][3];
+            }
+#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+        {
+            const char *next = (const char *)(cp + (p + n) * PTP_2X3_POINTS);
+            size_t b, m = patch_count - p - n < PTP_2X3_LANES ? patch_count - p - n : PTP_2X3_LANES;
+            for (b = 0; b < m * PTP_2X3_POINTS * sizeof *cp; b += 64)
+                __builtin_prefetch(next + b, 0, 0);
+        }
+#endif
         ptp_2x3_lanes(soa, PTP_2X3_LANES, n, eye, cls + p);
     }
 }

@@ -33,7 +33,7 @@ extern "C" {
 #define PTP_4X4_FLOPS 14992
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_4X4_LANES
-#define PTP_4X4_LANES 64
+#define PTP_4X4_LANES 16
 #endif
 
 /* The 121 control planes of one patch, all four components, at true scale. */
@@ -62,6 +62,58 @@ void ptp_4x4_classify_soa(const float *soa, size_t stride, size_t patch_count, c
 #endif
 /* max(r, |x|) without branches; NaN in x gives NaN. */
 #define PTP_4X4_ABSMAX(r, x) ((r) > ((x) < 0.0f ? -(x) : (x)) ? (r) : ((x) < 0.0f ? -(x) : (x)))
+/* The straight-line code's value type ptp_4x4_vf and mask type ptp_4x4_vm (a comparison's
+ * result: 1 or -1 where true), PTP_4X4_VW patches wide. gcc gets GNU C vectors: it does not
+ * vectorize the loop below -O3, and slowly at -O3. Elsewhere one patch: clang vectorizes the loop. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(PTP_4X4_NO_VECTOR)
+#include <string.h>
+#if defined(__AVX512F__)
+#define PTP_4X4_VW 16
+#elif defined(__AVX__)
+#define PTP_4X4_VW 8
+#else
+#define PTP_4X4_VW 4
+#endif
+typedef float ptp_4x4_vf __attribute__((vector_size(4 * PTP_4X4_VW)));
+typedef int ptp_4x4_vm __attribute__((vector_size(4 * PTP_4X4_VW)));
+/* PTP_4X4_VW consecutive floats from p, any alignment. */
+static inline ptp_4x4_vf ptp_4x4_vload(const float *p)
+{
+    ptp_4x4_vf v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+/* cls[i] = c[i] for the first count (at most PTP_4X4_VW) lanes. */
+static inline void ptp_4x4_vstore(unsigned char *cls, ptp_4x4_vm c, size_t count)
+{
+    size_t i;
+    for (i = 0; i < count && i < PTP_4X4_VW; i++)
+        cls[i] = (unsigned char)c[i];
+}
+/* max(r, |x|) lane by lane; NaN in x gives NaN. */
+static inline ptp_4x4_vf ptp_4x4_vabsmax(ptp_4x4_vf r, ptp_4x4_vf x)
+{
+    ptp_4x4_vm a = (ptp_4x4_vm)x & 0x7fffffff, m = r > (ptp_4x4_vf)a;
+    return (ptp_4x4_vf)(((ptp_4x4_vm)r & m) | (a & ~m));
+}
+#else
+#define PTP_4X4_VW 1
+typedef float ptp_4x4_vf;
+typedef int ptp_4x4_vm;
+static inline ptp_4x4_vf ptp_4x4_vload(const float *p)
+{
+    return *p;
+}
+static inline void ptp_4x4_vstore(unsigned char *cls, ptp_4x4_vm c, size_t count)
+{
+    (void)count;
+    *cls = (unsigned char)c;
+}
+static inline ptp_4x4_vf ptp_4x4_vabsmax(ptp_4x4_vf r, ptp_4x4_vf x)
+{
+    return PTP_4X4_ABSMAX(r, x);
+}
+#endif
 
 #define PTP_4X4_TERMS 2148
 
@@ -4421,9 +4473,10 @@ void ptp_4x4_values(const float cp[][4], const float eye[4], float d[])
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_4X4_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
- * Laplace expansions over shared 2x2 minors. Iterations are independent and branch-free,
- * so compilers vectorize the loop across patches (clang -O2, gcc -O3; -march=native for
- * AVX2 or AVX-512). Products are never contracted into FMAs: equal points give exact zeros. */
+ * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_4X4_VW patches,
+ * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
+ * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
+ * one. Products are never contracted into FMAs: equal points give exact zeros. */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -4439,122 +4492,160 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
 #endif
     const float e2 = eye[2];
     size_t l;
-    for (l = 0; l < n; l++) {
+    for (l = 0; l < n; l += PTP_4X4_VW) {
         const float *q = soa + l;
-        unsigned notlt = 0, notgt = 0;
-        float u, v;
-        const float x0 = q[0 * stride], y0 = q[1 * stride], w0 = q[3 * stride], g0 = e2 * w0;
-        const float x1 = q[4 * stride], y1 = q[5 * stride], w1 = q[7 * stride], g1 = e2 * w1;
-        const float x2 = q[8 * stride], y2 = q[9 * stride], w2 = q[11 * stride], g2 = e2 * w2;
-        const float x3 = q[12 * stride], y3 = q[13 * stride], w3 = q[15 * stride], g3 = e2 * w3;
-        const float x4 = q[16 * stride], y4 = q[17 * stride], w4 = q[19 * stride], g4 = e2 * w4;
-        const float x5 = q[20 * stride], y5 = q[21 * stride], w5 = q[23 * stride], g5 = e2 * w5;
-        const float x6 = q[24 * stride], y6 = q[25 * stride], w6 = q[27 * stride], g6 = e2 * w6;
-        const float x7 = q[28 * stride], y7 = q[29 * stride], w7 = q[31 * stride], g7 = e2 * w7;
-        const float x8 = q[32 * stride], y8 = q[33 * stride], w8 = q[35 * stride], g8 = e2 * w8;
-        const float x9 = q[36 * stride], y9 = q[37 * stride], w9 = q[39 * stride], g9 = e2 * w9;
-        const float x10 = q[40 * stride], y10 = q[41 * stride], w10 = q[43 * stride], g10 = e2 * w10;
-        const float x11 = q[44 * stride], y11 = q[45 * stride], w11 = q[47 * stride], g11 = e2 * w11;
-        const float x12 = q[48 * stride], y12 = q[49 * stride], w12 = q[51 * stride], g12 = e2 * w12;
-        const float x13 = q[52 * stride], y13 = q[53 * stride], w13 = q[55 * stride], g13 = e2 * w13;
-        const float x14 = q[56 * stride], y14 = q[57 * stride], w14 = q[59 * stride], g14 = e2 * w14;
-        const float x15 = q[60 * stride], y15 = q[61 * stride], w15 = q[63 * stride], g15 = e2 * w15;
-        const float x16 = q[64 * stride], y16 = q[65 * stride], w16 = q[67 * stride], g16 = e2 * w16;
-        const float x17 = q[68 * stride], y17 = q[69 * stride], w17 = q[71 * stride], g17 = e2 * w17;
-        const float x18 = q[72 * stride], y18 = q[73 * stride], w18 = q[75 * stride], g18 = e2 * w18;
-        const float x19 = q[76 * stride], y19 = q[77 * stride], w19 = q[79 * stride], g19 = e2 * w19;
-        const float x20 = q[80 * stride], y20 = q[81 * stride], w20 = q[83 * stride], g20 = e2 * w20;
-        const float x21 = q[84 * stride], y21 = q[85 * stride], w21 = q[87 * stride], g21 = e2 * w21;
-        const float x22 = q[88 * stride], y22 = q[89 * stride], w22 = q[91 * stride], g22 = e2 * w22;
-        const float x23 = q[92 * stride], y23 = q[93 * stride], w23 = q[95 * stride], g23 = e2 * w23;
-        const float x24 = q[96 * stride], y24 = q[97 * stride], w24 = q[99 * stride], g24 = e2 * w24;
-        const float m1_5 = x1 * y5 - y1 * x5;
-        const float m0_5 = x0 * y5 - y0 * x5;
-        const float m0_1 = x0 * y1 - y0 * x1;
+        size_t qs = stride;
+        ptp_4x4_vm notlt, notgt;
+        ptp_4x4_vf u, v;
+#if PTP_4X4_VW > 1
+        float tail[PTP_4X4_POINTS * 4 * PTP_4X4_VW];
+        if (n - l < PTP_4X4_VW) {
+            size_t i, k;
+            for (k = 0; k < PTP_4X4_POINTS * 4; k++)
+                if (k % 4 != 2) /* z: clip space never reads it */
+                    for (i = 0; i < PTP_4X4_VW; i++)
+                        tail[k * PTP_4X4_VW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];
+            q = tail;
+            qs = PTP_4X4_VW;
+        }
+#endif
+        const ptp_4x4_vf x0 = ptp_4x4_vload(q + 0 * qs), y0 = ptp_4x4_vload(q + 1 * qs),
+            w0 = ptp_4x4_vload(q + 3 * qs), g0 = e2 * w0;
+        const ptp_4x4_vf x1 = ptp_4x4_vload(q + 4 * qs), y1 = ptp_4x4_vload(q + 5 * qs),
+            w1 = ptp_4x4_vload(q + 7 * qs), g1 = e2 * w1;
+        const ptp_4x4_vf x2 = ptp_4x4_vload(q + 8 * qs), y2 = ptp_4x4_vload(q + 9 * qs),
+            w2 = ptp_4x4_vload(q + 11 * qs), g2 = e2 * w2;
+        const ptp_4x4_vf x3 = ptp_4x4_vload(q + 12 * qs), y3 = ptp_4x4_vload(q + 13 * qs),
+            w3 = ptp_4x4_vload(q + 15 * qs), g3 = e2 * w3;
+        const ptp_4x4_vf x4 = ptp_4x4_vload(q + 16 * qs), y4 = ptp_4x4_vload(q + 17 * qs),
+            w4 = ptp_4x4_vload(q + 19 * qs), g4 = e2 * w4;
+        const ptp_4x4_vf x5 = ptp_4x4_vload(q + 20 * qs), y5 = ptp_4x4_vload(q + 21 * qs),
+            w5 = ptp_4x4_vload(q + 23 * qs), g5 = e2 * w5;
+        const ptp_4x4_vf x6 = ptp_4x4_vload(q + 24 * qs), y6 = ptp_4x4_vload(q + 25 * qs),
+            w6 = ptp_4x4_vload(q + 27 * qs), g6 = e2 * w6;
+        const ptp_4x4_vf x7 = ptp_4x4_vload(q + 28 * qs), y7 = ptp_4x4_vload(q + 29 * qs),
+            w7 = ptp_4x4_vload(q + 31 * qs), g7 = e2 * w7;
+        const ptp_4x4_vf x8 = ptp_4x4_vload(q + 32 * qs), y8 = ptp_4x4_vload(q + 33 * qs),
+            w8 = ptp_4x4_vload(q + 35 * qs), g8 = e2 * w8;
+        const ptp_4x4_vf x9 = ptp_4x4_vload(q + 36 * qs), y9 = ptp_4x4_vload(q + 37 * qs),
+            w9 = ptp_4x4_vload(q + 39 * qs), g9 = e2 * w9;
+        const ptp_4x4_vf x10 = ptp_4x4_vload(q + 40 * qs), y10 = ptp_4x4_vload(q + 41 * qs),
+            w10 = ptp_4x4_vload(q + 43 * qs), g10 = e2 * w10;
+        const ptp_4x4_vf x11 = ptp_4x4_vload(q + 44 * qs), y11 = ptp_4x4_vload(q + 45 * qs),
+            w11 = ptp_4x4_vload(q + 47 * qs), g11 = e2 * w11;
+        const ptp_4x4_vf x12 = ptp_4x4_vload(q + 48 * qs), y12 = ptp_4x4_vload(q + 49 * qs),
+            w12 = ptp_4x4_vload(q + 51 * qs), g12 = e2 * w12;
+        const ptp_4x4_vf x13 = ptp_4x4_vload(q + 52 * qs), y13 = ptp_4x4_vload(q + 53 * qs),
+            w13 = ptp_4x4_vload(q + 55 * qs), g13 = e2 * w13;
+        const ptp_4x4_vf x14 = ptp_4x4_vload(q + 56 * qs), y14 = ptp_4x4_vload(q + 57 * qs),
+            w14 = ptp_4x4_vload(q + 59 * qs), g14 = e2 * w14;
+        const ptp_4x4_vf x15 = ptp_4x4_vload(q + 60 * qs), y15 = ptp_4x4_vload(q + 61 * qs),
+            w15 = ptp_4x4_vload(q + 63 * qs), g15 = e2 * w15;
+        const ptp_4x4_vf x16 = ptp_4x4_vload(q + 64 * qs), y16 = ptp_4x4_vload(q + 65 * qs),
+            w16 = ptp_4x4_vload(q + 67 * qs), g16 = e2 * w16;
+        const ptp_4x4_vf x17 = ptp_4x4_vload(q + 68 * qs), y17 = ptp_4x4_vload(q + 69 * qs),
+            w17 = ptp_4x4_vload(q + 71 * qs), g17 = e2 * w17;
+        const ptp_4x4_vf x18 = ptp_4x4_vload(q + 72 * qs), y18 = ptp_4x4_vload(q + 73 * qs),
+            w18 = ptp_4x4_vload(q + 75 * qs), g18 = e2 * w18;
+        const ptp_4x4_vf x19 = ptp_4x4_vload(q + 76 * qs), y19 = ptp_4x4_vload(q + 77 * qs),
+            w19 = ptp_4x4_vload(q + 79 * qs), g19 = e2 * w19;
+        const ptp_4x4_vf x20 = ptp_4x4_vload(q + 80 * qs), y20 = ptp_4x4_vload(q + 81 * qs),
+            w20 = ptp_4x4_vload(q + 83 * qs), g20 = e2 * w20;
+        const ptp_4x4_vf x21 = ptp_4x4_vload(q + 84 * qs), y21 = ptp_4x4_vload(q + 85 * qs),
+            w21 = ptp_4x4_vload(q + 87 * qs), g21 = e2 * w21;
+        const ptp_4x4_vf x22 = ptp_4x4_vload(q + 88 * qs), y22 = ptp_4x4_vload(q + 89 * qs),
+            w22 = ptp_4x4_vload(q + 91 * qs), g22 = e2 * w22;
+        const ptp_4x4_vf x23 = ptp_4x4_vload(q + 92 * qs), y23 = ptp_4x4_vload(q + 93 * qs),
+            w23 = ptp_4x4_vload(q + 95 * qs), g23 = e2 * w23;
+        const ptp_4x4_vf x24 = ptp_4x4_vload(q + 96 * qs), y24 = ptp_4x4_vload(q + 97 * qs),
+            w24 = ptp_4x4_vload(q + 99 * qs), g24 = e2 * w24;
+        const ptp_4x4_vf m1_5 = x1 * y5 - y1 * x5;
+        const ptp_4x4_vf m0_5 = x0 * y5 - y0 * x5;
+        const ptp_4x4_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 0 */
-        const float m2_5 = x2 * y5 - y2 * x5;
-        const float m0_2 = x0 * y2 - y0 * x2;
+        notlt = (v < 0.0f) == 0;
+        notgt = (v > 0.0f) == 0; /* plane 0 */
+        const ptp_4x4_vf m2_5 = x2 * y5 - y2 * x5;
+        const ptp_4x4_vf m0_2 = x0 * y2 - y0 * x2;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v = 3.0f * u;
-        const float m1_6 = x1 * y6 - y1 * x6;
-        const float m0_6 = x0 * y6 - y0 * x6;
+        const ptp_4x4_vf m1_6 = x1 * y6 - y1 * x6;
+        const ptp_4x4_vf m0_6 = x0 * y6 - y0 * x6;
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 1 */
-        const float m3_5 = x3 * y5 - y3 * x5;
-        const float m0_3 = x0 * y3 - y0 * x3;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        const ptp_4x4_vf m3_5 = x3 * y5 - y3 * x5;
+        const ptp_4x4_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
         v = u;
-        const float m1_7 = x1 * y7 - y1 * x7;
-        const float m0_7 = x0 * y7 - y0 * x7;
+        const ptp_4x4_vf m1_7 = x1 * y7 - y1 * x7;
+        const ptp_4x4_vf m0_7 = x0 * y7 - y0 * x7;
         u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
-        const float m1_2 = x1 * y2 - y1 * x2;
+        const ptp_4x4_vf m1_2 = x1 * y2 - y1 * x2;
         u -= ((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v += 2.0f * u;
-        const float m2_6 = x2 * y6 - y2 * x6;
+        const ptp_4x4_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 2 */
-        const float m4_5 = x4 * y5 - y4 * x5;
-        const float m0_4 = x0 * y4 - y0 * x4;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        const ptp_4x4_vf m4_5 = x4 * y5 - y4 * x5;
+        const ptp_4x4_vf m0_4 = x0 * y4 - y0 * x4;
         u = -((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = u;
-        const float m1_8 = x1 * y8 - y1 * x8;
-        const float m0_8 = x0 * y8 - y0 * x8;
+        const ptp_4x4_vf m1_8 = x1 * y8 - y1 * x8;
+        const ptp_4x4_vf m0_8 = x0 * y8 - y0 * x8;
         u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
         v += 4.0f * u;
-        const float m1_3 = x1 * y3 - y1 * x3;
+        const ptp_4x4_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         v += 8.0f * u;
-        const float m3_6 = x3 * y6 - y3 * x6;
+        const ptp_4x4_vf m3_6 = x3 * y6 - y3 * x6;
         u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
         v += 12.0f * u;
-        const float m2_7 = x2 * y7 - y2 * x7;
+        const ptp_4x4_vf m2_7 = x2 * y7 - y2 * x7;
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
         v += 18.0f * u;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v += 24.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 3 */
-        const float m1_9 = x1 * y9 - y1 * x9;
-        const float m0_9 = x0 * y9 - y0 * x9;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        const ptp_4x4_vf m1_9 = x1 * y9 - y1 * x9;
+        const ptp_4x4_vf m0_9 = x0 * y9 - y0 * x9;
         u = -((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
         v = u;
-        const float m1_4 = x1 * y4 - y1 * x4;
+        const ptp_4x4_vf m1_4 = x1 * y4 - y1 * x4;
         u = -((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v += 3.0f * u;
-        const float m4_6 = x4 * y6 - y4 * x6;
+        const ptp_4x4_vf m4_6 = x4 * y6 - y4 * x6;
         u = -((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
         v += 4.0f * u;
-        const float m2_3 = x2 * y3 - y2 * x3;
+        const ptp_4x4_vf m2_3 = x2 * y3 - y2 * x3;
         u = -((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
         v += 6.0f * u;
-        const float m2_8 = x2 * y8 - y2 * x8;
+        const ptp_4x4_vf m2_8 = x2 * y8 - y2 * x8;
         u = -((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
         v += 12.0f * u;
-        const float m3_7 = x3 * y7 - y3 * x7;
+        const ptp_4x4_vf m3_7 = x3 * y7 - y3 * x7;
         u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         v += 18.0f * u;
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
         v += 32.0f * u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         v += 36.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 4 */
-        const float m2_9 = x2 * y9 - y2 * x9;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        const ptp_4x4_vf m2_9 = x2 * y9 - y2 * x9;
         u = -((g0 * m2_9 - g2 * m0_9) + g9 * m0_2);
-        const float m2_4 = x2 * y4 - y2 * x4;
+        const ptp_4x4_vf m2_4 = x2 * y4 - y2 * x4;
         u -= ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v = u;
-        const float m4_7 = x4 * y7 - y4 * x7;
+        const ptp_4x4_vf m4_7 = x4 * y7 - y4 * x7;
         u = -((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         v += 2.0f * u;
-        const float m3_8 = x3 * y8 - y3 * x8;
+        const ptp_4x4_vf m3_8 = x3 * y8 - y3 * x8;
         u = -((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
         u -= ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += 4.0f * u;
@@ -4563,15 +4654,15 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 8.0f * u;
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 5 */
-        const float m3_4 = x3 * y4 - y3 * x4;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 5 */
+        const ptp_4x4_vf m3_4 = x3 * y4 - y3 * x4;
         u = -((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
         v = u;
-        const float m3_9 = x3 * y9 - y3 * x9;
+        const ptp_4x4_vf m3_9 = x3 * y9 - y3 * x9;
         u = -((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
         v += 3.0f * u;
-        const float m4_8 = x4 * y8 - y4 * x8;
+        const ptp_4x4_vf m4_8 = x4 * y8 - y4 * x8;
         u = -((g0 * m4_8 - g4 * m0_8) + g8 * m0_4);
         v += 4.0f * u;
         u = -((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
@@ -4584,9 +4675,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v += 36.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 6 */
-        const float m4_9 = x4 * y9 - y4 * x9;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        const ptp_4x4_vf m4_9 = x4 * y9 - y4 * x9;
         u = -((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
         v = u;
         u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
@@ -4599,8 +4690,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
         v += 24.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 7 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 7 */
         u = -((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
         v = u;
         u = -((g2 * m3_9 - g3 * m2_9) + g9 * m2_3);
@@ -4608,85 +4699,85 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = -((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 8 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 8 */
         u = -((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v = 3.0f * u;
         u = -((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 9 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 9 */
         u = -((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 10 */
-        const float m1_10 = x1 * y10 - y1 * x10;
-        const float m0_10 = x0 * y10 - y0 * x10;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        const ptp_4x4_vf m1_10 = x1 * y10 - y1 * x10;
+        const ptp_4x4_vf m0_10 = x0 * y10 - y0 * x10;
         u = -((g0 * m1_10 - g1 * m0_10) + g10 * m0_1);
         v = 3.0f * u;
-        const float m5_6 = x5 * y6 - y5 * x6;
+        const ptp_4x4_vf m5_6 = x5 * y6 - y5 * x6;
         u = ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 11 */
-        const float m2_10 = x2 * y10 - y2 * x10;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        const ptp_4x4_vf m2_10 = x2 * y10 - y2 * x10;
         u = -((g0 * m2_10 - g2 * m0_10) + g10 * m0_2);
         v = 9.0f * u;
-        const float m1_11 = x1 * y11 - y1 * x11;
-        const float m0_11 = x0 * y11 - y0 * x11;
+        const ptp_4x4_vf m1_11 = x1 * y11 - y1 * x11;
+        const ptp_4x4_vf m0_11 = x0 * y11 - y0 * x11;
         u = -((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
-        const float m5_7 = x5 * y7 - y5 * x7;
+        const ptp_4x4_vf m5_7 = x5 * y7 - y5 * x7;
         u += ((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
         v += 12.0f * u;
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 12 */
-        const float m3_10 = x3 * y10 - y3 * x10;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        const ptp_4x4_vf m3_10 = x3 * y10 - y3 * x10;
         u = -((g0 * m3_10 - g3 * m0_10) + g10 * m0_3);
         v = 3.0f * u;
-        const float m5_8 = x5 * y8 - y5 * x8;
+        const ptp_4x4_vf m5_8 = x5 * y8 - y5 * x8;
         u = ((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
         v += 4.0f * u;
-        const float m1_12 = x1 * y12 - y1 * x12;
-        const float m0_12 = x0 * y12 - y0 * x12;
+        const ptp_4x4_vf m1_12 = x1 * y12 - y1 * x12;
+        const ptp_4x4_vf m0_12 = x0 * y12 - y0 * x12;
         u = -((g0 * m1_12 - g1 * m0_12) + g12 * m0_1);
         u -= ((g1 * m2_10 - g2 * m1_10) + g10 * m1_2);
         v += 6.0f * u;
-        const float m6_7 = x6 * y7 - y6 * x7;
+        const ptp_4x4_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         u += ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v += 8.0f * u;
-        const float m2_11 = x2 * y11 - y2 * x11;
+        const ptp_4x4_vf m2_11 = x2 * y11 - y2 * x11;
         u = -((g0 * m2_11 - g2 * m0_11) + g11 * m0_2);
         v += 12.0f * u;
         u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 13 */
-        const float m4_10 = x4 * y10 - y4 * x10;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        const ptp_4x4_vf m4_10 = x4 * y10 - y4 * x10;
         u = -((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
         v = 3.0f * u;
-        const float m5_9 = x5 * y9 - y5 * x9;
+        const ptp_4x4_vf m5_9 = x5 * y9 - y5 * x9;
         u = ((g0 * m5_9 - g5 * m0_9) + g9 * m0_5);
         v += 4.0f * u;
-        const float m1_13 = x1 * y13 - y1 * x13;
-        const float m0_13 = x0 * y13 - y0 * x13;
+        const ptp_4x4_vf m1_13 = x1 * y13 - y1 * x13;
+        const ptp_4x4_vf m0_13 = x0 * y13 - y0 * x13;
         u = -((g0 * m1_13 - g1 * m0_13) + g13 * m0_1);
         v += 12.0f * u;
         u = ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
         v += 16.0f * u;
         u = -((g1 * m3_10 - g3 * m1_10) + g10 * m1_3);
         v += 24.0f * u;
-        const float m6_8 = x6 * y8 - y6 * x8;
+        const ptp_4x4_vf m6_8 = x6 * y8 - y6 * x8;
         u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
         v += 32.0f * u;
-        const float m3_11 = x3 * y11 - y3 * x11;
+        const ptp_4x4_vf m3_11 = x3 * y11 - y3 * x11;
         u = -((g0 * m3_11 - g3 * m0_11) + g11 * m0_3);
         v += 36.0f * u;
         u = ((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
         v += 48.0f * u;
-        const float m2_12 = x2 * y12 - y2 * x12;
+        const ptp_4x4_vf m2_12 = x2 * y12 - y2 * x12;
         u = -((g0 * m2_12 - g2 * m0_12) + g12 * m0_2);
         v += 54.0f * u;
         u = -((g1 * m2_11 - g2 * m1_11) + g11 * m1_2);
@@ -4694,34 +4785,34 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 14 */
-        const float m1_14 = x1 * y14 - y1 * x14;
-        const float m0_14 = x0 * y14 - y0 * x14;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        const ptp_4x4_vf m1_14 = x1 * y14 - y1 * x14;
+        const ptp_4x4_vf m0_14 = x0 * y14 - y0 * x14;
         u = -((g0 * m1_14 - g1 * m0_14) + g14 * m0_1);
         v = 3.0f * u;
         u = ((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
         v += 4.0f * u;
         u = -((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
         v += 9.0f * u;
-        const float m4_11 = x4 * y11 - y4 * x11;
+        const ptp_4x4_vf m4_11 = x4 * y11 - y4 * x11;
         u = -((g0 * m4_11 - g4 * m0_11) + g11 * m0_4);
-        const float m6_9 = x6 * y9 - y6 * x9;
+        const ptp_4x4_vf m6_9 = x6 * y9 - y6 * x9;
         u += ((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
         v += 12.0f * u;
         u = ((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
         v += 16.0f * u;
         u = -((g2 * m3_10 - g3 * m2_10) + g10 * m2_3);
         v += 18.0f * u;
-        const float m7_8 = x7 * y8 - y7 * x8;
+        const ptp_4x4_vf m7_8 = x7 * y8 - y7 * x8;
         u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
         v += 24.0f * u;
-        const float m2_13 = x2 * y13 - y2 * x13;
+        const ptp_4x4_vf m2_13 = x2 * y13 - y2 * x13;
         u = -((g0 * m2_13 - g2 * m0_13) + g13 * m0_2);
         v += 36.0f * u;
         u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
         v += 48.0f * u;
-        const float m3_12 = x3 * y12 - y3 * x12;
+        const ptp_4x4_vf m3_12 = x3 * y12 - y3 * x12;
         u = -((g0 * m3_12 - g3 * m0_12) + g12 * m0_3);
         v += 54.0f * u;
         u = ((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
@@ -4734,22 +4825,22 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 15 */
-        const float m2_14 = x2 * y14 - y2 * x14;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        const ptp_4x4_vf m2_14 = x2 * y14 - y2 * x14;
         u = -((g0 * m2_14 - g2 * m0_14) + g14 * m0_2);
         u -= ((g2 * m4_10 - g4 * m2_10) + g10 * m2_4);
         v = 3.0f * u;
-        const float m7_9 = x7 * y9 - y7 * x9;
+        const ptp_4x4_vf m7_9 = x7 * y9 - y7 * x9;
         u = ((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
         u += ((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
         v += 4.0f * u;
-        const float m4_12 = x4 * y12 - y4 * x12;
+        const ptp_4x4_vf m4_12 = x4 * y12 - y4 * x12;
         u = -((g0 * m4_12 - g4 * m0_12) + g12 * m0_4);
         v += 6.0f * u;
         u = ((g2 * m5_9 - g5 * m2_9) + g9 * m2_5);
         v += 8.0f * u;
-        const float m3_13 = x3 * y13 - y3 * x13;
+        const ptp_4x4_vf m3_13 = x3 * y13 - y3 * x13;
         u = -((g0 * m3_13 - g3 * m0_13) + g13 * m0_3);
         u -= ((g1 * m4_11 - g4 * m1_11) + g11 * m1_4);
         v += 12.0f * u;
@@ -4766,17 +4857,17 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 48.0f * u;
         u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
         v += 64.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 16 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 16 */
         u = -((g3 * m4_10 - g4 * m3_10) + g10 * m3_4);
         v = 3.0f * u;
-        const float m8_9 = x8 * y9 - y8 * x9;
+        const ptp_4x4_vf m8_9 = x8 * y9 - y8 * x9;
         u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
         v += 4.0f * u;
-        const float m3_14 = x3 * y14 - y3 * x14;
+        const ptp_4x4_vf m3_14 = x3 * y14 - y3 * x14;
         u = -((g0 * m3_14 - g3 * m0_14) + g14 * m0_3);
         v += 9.0f * u;
-        const float m4_13 = x4 * y13 - y4 * x13;
+        const ptp_4x4_vf m4_13 = x4 * y13 - y4 * x13;
         u = -((g0 * m4_13 - g4 * m0_13) + g13 * m0_4);
         u += ((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += 12.0f * u;
@@ -4802,9 +4893,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 17 */
-        const float m4_14 = x4 * y14 - y4 * x14;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        const ptp_4x4_vf m4_14 = x4 * y14 - y4 * x14;
         u = -((g0 * m4_14 - g4 * m0_14) + g14 * m0_4);
         v = 3.0f * u;
         u = ((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
@@ -4828,8 +4919,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 18 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = -((g1 * m4_14 - g4 * m1_14) + g14 * m1_4);
         v = 3.0f * u;
         u = ((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
@@ -4844,8 +4935,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 19 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = -((g2 * m4_14 - g4 * m2_14) + g14 * m2_4);
         v = 9.0f * u;
         u = -((g3 * m4_13 - g4 * m3_13) + g13 * m3_4);
@@ -4853,96 +4944,96 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 20 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = -((g3 * m4_14 - g4 * m3_14) + g14 * m3_4);
         v = 3.0f * u;
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 21 */
-        const float m1_15 = x1 * y15 - y1 * x15;
-        const float m0_15 = x0 * y15 - y0 * x15;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 21 */
+        const ptp_4x4_vf m1_15 = x1 * y15 - y1 * x15;
+        const ptp_4x4_vf m0_15 = x0 * y15 - y0 * x15;
         u = -((g0 * m1_15 - g1 * m0_15) + g15 * m0_1);
         v = u;
-        const float m5_11 = x5 * y11 - y5 * x11;
+        const ptp_4x4_vf m5_11 = x5 * y11 - y5 * x11;
         u = ((g0 * m5_11 - g5 * m0_11) + g11 * m0_5);
-        const float m5_10 = x5 * y10 - y5 * x10;
+        const ptp_4x4_vf m5_10 = x5 * y10 - y5 * x10;
         u += ((g1 * m5_10 - g5 * m1_10) + g10 * m1_5);
         v += 2.0f * u;
-        const float m6_10 = x6 * y10 - y6 * x10;
+        const ptp_4x4_vf m6_10 = x6 * y10 - y6 * x10;
         u = -((g0 * m6_10 - g6 * m0_10) + g10 * m0_6);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 22 */
-        const float m2_15 = x2 * y15 - y2 * x15;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 22 */
+        const ptp_4x4_vf m2_15 = x2 * y15 - y2 * x15;
         u = -((g0 * m2_15 - g2 * m0_15) + g15 * m0_2);
         v = 3.0f * u;
-        const float m1_16 = x1 * y16 - y1 * x16;
-        const float m0_16 = x0 * y16 - y0 * x16;
+        const ptp_4x4_vf m1_16 = x1 * y16 - y1 * x16;
+        const ptp_4x4_vf m0_16 = x0 * y16 - y0 * x16;
         u = -((g0 * m1_16 - g1 * m0_16) + g16 * m0_1);
         v += 4.0f * u;
-        const float m5_12 = x5 * y12 - y5 * x12;
+        const ptp_4x4_vf m5_12 = x5 * y12 - y5 * x12;
         u = ((g0 * m5_12 - g5 * m0_12) + g12 * m0_5);
         u += ((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
         v += 6.0f * u;
-        const float m6_11 = x6 * y11 - y6 * x11;
+        const ptp_4x4_vf m6_11 = x6 * y11 - y6 * x11;
         u = -((g0 * m6_11 - g6 * m0_11) + g11 * m0_6);
         u -= ((g1 * m6_10 - g6 * m1_10) + g10 * m1_6);
         v += 8.0f * u;
-        const float m7_10 = x7 * y10 - y7 * x10;
+        const ptp_4x4_vf m7_10 = x7 * y10 - y7 * x10;
         u = -((g0 * m7_10 - g7 * m0_10) + g10 * m0_7);
         v += 12.0f * u;
         u = ((g1 * m5_11 - g5 * m1_11) + g11 * m1_5);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 23 */
-        const float m3_15 = x3 * y15 - y3 * x15;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 23 */
+        const ptp_4x4_vf m3_15 = x3 * y15 - y3 * x15;
         u = -((g0 * m3_15 - g3 * m0_15) + g15 * m0_3);
         v = u;
-        const float m1_17 = x1 * y17 - y1 * x17;
-        const float m0_17 = x0 * y17 - y0 * x17;
+        const ptp_4x4_vf m1_17 = x1 * y17 - y1 * x17;
+        const ptp_4x4_vf m0_17 = x0 * y17 - y0 * x17;
         u = -((g0 * m1_17 - g1 * m0_17) + g17 * m0_1);
-        const float m5_13 = x5 * y13 - y5 * x13;
+        const ptp_4x4_vf m5_13 = x5 * y13 - y5 * x13;
         u += ((g0 * m5_13 - g5 * m0_13) + g13 * m0_5);
         u -= ((g1 * m2_15 - g2 * m1_15) + g15 * m1_2);
         u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
         v += 2.0f * u;
-        const float m2_16 = x2 * y16 - y2 * x16;
+        const ptp_4x4_vf m2_16 = x2 * y16 - y2 * x16;
         u = -((g0 * m2_16 - g2 * m0_16) + g16 * m0_2);
-        const float m8_10 = x8 * y10 - y8 * x10;
+        const ptp_4x4_vf m8_10 = x8 * y10 - y8 * x10;
         u -= ((g0 * m8_10 - g8 * m0_10) + g10 * m0_8);
         v += 4.0f * u;
-        const float m7_11 = x7 * y11 - y7 * x11;
+        const ptp_4x4_vf m7_11 = x7 * y11 - y7 * x11;
         u = -((g0 * m7_11 - g7 * m0_11) + g11 * m0_7);
         u += ((g1 * m5_12 - g5 * m1_12) + g12 * m1_5);
         u -= ((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
         u += ((g2 * m5_11 - g5 * m2_11) + g11 * m2_5);
         v += 12.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 24 */
-        const float m4_15 = x4 * y15 - y4 * x15;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 24 */
+        const ptp_4x4_vf m4_15 = x4 * y15 - y4 * x15;
         u = -((g0 * m4_15 - g4 * m0_15) + g15 * m0_4);
         v = u;
-        const float m5_14 = x5 * y14 - y5 * x14;
+        const ptp_4x4_vf m5_14 = x5 * y14 - y5 * x14;
         u = ((g0 * m5_14 - g5 * m0_14) + g14 * m0_5);
         u += ((g4 * m5_10 - g5 * m4_10) + g10 * m4_5);
         v += 2.0f * u;
-        const float m1_18 = x1 * y18 - y1 * x18;
-        const float m0_18 = x0 * y18 - y0 * x18;
+        const ptp_4x4_vf m1_18 = x1 * y18 - y1 * x18;
+        const ptp_4x4_vf m0_18 = x0 * y18 - y0 * x18;
         u = -((g0 * m1_18 - g1 * m0_18) + g18 * m0_1);
-        const float m9_10 = x9 * y10 - y9 * x10;
+        const ptp_4x4_vf m9_10 = x9 * y10 - y9 * x10;
         u -= ((g0 * m9_10 - g9 * m0_10) + g10 * m0_9);
         v += 4.0f * u;
-        const float m6_13 = x6 * y13 - y6 * x13;
+        const ptp_4x4_vf m6_13 = x6 * y13 - y6 * x13;
         u = ((g0 * m6_13 - g6 * m0_13) + g13 * m0_6);
         u -= ((g1 * m3_15 - g3 * m1_15) + g15 * m1_3);
         u += ((g3 * m6_10 - g6 * m3_10) + g10 * m3_6);
         v += 8.0f * u;
-        const float m3_16 = x3 * y16 - y3 * x16;
+        const ptp_4x4_vf m3_16 = x3 * y16 - y3 * x16;
         u = -((g0 * m3_16 - g3 * m0_16) + g16 * m0_3);
         v += 12.0f * u;
-        const float m2_17 = x2 * y17 - y2 * x17;
+        const ptp_4x4_vf m2_17 = x2 * y17 - y2 * x17;
         u = -((g0 * m2_17 - g2 * m0_17) + g17 * m0_2);
         v += 18.0f * u;
         u = -((g1 * m2_16 - g2 * m1_16) + g16 * m1_2);
@@ -4950,15 +5041,15 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = ((g1 * m5_13 - g5 * m1_13) + g13 * m1_5);
         u += ((g3 * m5_11 - g5 * m3_11) + g11 * m3_5);
         v += 32.0f * u;
-        const float m7_12 = x7 * y12 - y7 * x12;
+        const ptp_4x4_vf m7_12 = x7 * y12 - y7 * x12;
         u = -((g0 * m7_12 - g7 * m0_12) + g12 * m0_7);
         u -= ((g2 * m7_10 - g7 * m2_10) + g10 * m2_7);
         v += 36.0f * u;
-        const float m8_11 = x8 * y11 - y8 * x11;
+        const ptp_4x4_vf m8_11 = x8 * y11 - y8 * x11;
         u = -((g0 * m8_11 - g8 * m0_11) + g11 * m0_8);
         u -= ((g1 * m8_10 - g8 * m1_10) + g10 * m1_8);
         v += 40.0f * u;
-        const float m6_12 = x6 * y12 - y6 * x12;
+        const ptp_4x4_vf m6_12 = x6 * y12 - y6 * x12;
         u = ((g1 * m6_12 - g6 * m1_12) + g12 * m1_6);
         u += ((g2 * m6_11 - g6 * m2_11) + g11 * m2_6);
         v += 48.0f * u;
@@ -4966,17 +5057,17 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g1 * m7_11 - g7 * m1_11) + g11 * m1_7);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 25 */
-        const float m1_19 = x1 * y19 - y1 * x19;
-        const float m0_19 = x0 * y19 - y0 * x19;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 25 */
+        const ptp_4x4_vf m1_19 = x1 * y19 - y1 * x19;
+        const ptp_4x4_vf m0_19 = x0 * y19 - y0 * x19;
         u = -((g0 * m1_19 - g1 * m0_19) + g19 * m0_1);
         v = u;
         u = -((g1 * m4_15 - g4 * m1_15) + g15 * m1_4);
         v += 3.0f * u;
-        const float m4_16 = x4 * y16 - y4 * x16;
+        const ptp_4x4_vf m4_16 = x4 * y16 - y4 * x16;
         u = -((g0 * m4_16 - g4 * m0_16) + g16 * m0_4);
-        const float m6_14 = x6 * y14 - y6 * x14;
+        const ptp_4x4_vf m6_14 = x6 * y14 - y6 * x14;
         u += ((g0 * m6_14 - g6 * m0_14) + g14 * m0_6);
         u += ((g4 * m6_10 - g6 * m4_10) + g10 * m4_6);
         v += 4.0f * u;
@@ -4985,24 +5076,24 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = ((g1 * m5_14 - g5 * m1_14) + g14 * m1_5);
         u += ((g4 * m5_11 - g5 * m4_11) + g11 * m4_5);
         v += 10.0f * u;
-        const float m2_18 = x2 * y18 - y2 * x18;
+        const ptp_4x4_vf m2_18 = x2 * y18 - y2 * x18;
         u = -((g0 * m2_18 - g2 * m0_18) + g18 * m0_2);
-        const float m7_13 = x7 * y13 - y7 * x13;
+        const ptp_4x4_vf m7_13 = x7 * y13 - y7 * x13;
         u -= ((g0 * m7_13 - g7 * m0_13) + g13 * m0_7);
         u -= ((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
         v += 12.0f * u;
-        const float m9_11 = x9 * y11 - y9 * x11;
+        const ptp_4x4_vf m9_11 = x9 * y11 - y9 * x11;
         u = -((g0 * m9_11 - g9 * m0_11) + g11 * m0_9);
         u -= ((g1 * m9_10 - g9 * m1_10) + g10 * m1_9);
         v += 14.0f * u;
-        const float m3_17 = x3 * y17 - y3 * x17;
+        const ptp_4x4_vf m3_17 = x3 * y17 - y3 * x17;
         u = -((g0 * m3_17 - g3 * m0_17) + g17 * m0_3);
         v += 18.0f * u;
         u = -((g1 * m3_16 - g3 * m1_16) + g16 * m1_3);
         v += 32.0f * u;
         u = -((g1 * m2_17 - g2 * m1_17) + g17 * m1_2);
         v += 36.0f * u;
-        const float m8_12 = x8 * y12 - y8 * x12;
+        const ptp_4x4_vf m8_12 = x8 * y12 - y8 * x12;
         u = -((g0 * m8_12 - g8 * m0_12) + g12 * m0_8);
         u -= ((g2 * m8_10 - g8 * m2_10) + g10 * m2_8);
         v += 48.0f * u;
@@ -5019,26 +5110,26 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g2 * m6_12 - g6 * m2_12) + g12 * m2_6);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 26 */
-        const float m2_19 = x2 * y19 - y2 * x19;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 26 */
+        const ptp_4x4_vf m2_19 = x2 * y19 - y2 * x19;
         u = -((g0 * m2_19 - g2 * m0_19) + g19 * m0_2);
         u -= ((g2 * m4_15 - g4 * m2_15) + g15 * m2_4);
         v = u;
-        const float m4_17 = x4 * y17 - y4 * x17;
+        const ptp_4x4_vf m4_17 = x4 * y17 - y4 * x17;
         u = -((g0 * m4_17 - g4 * m0_17) + g17 * m0_4);
         v += 2.0f * u;
-        const float m3_18 = x3 * y18 - y3 * x18;
+        const ptp_4x4_vf m3_18 = x3 * y18 - y3 * x18;
         u = -((g0 * m3_18 - g3 * m0_18) + g18 * m0_3);
         u -= ((g1 * m4_16 - g4 * m1_16) + g16 * m1_4);
         v += 4.0f * u;
-        const float m9_12 = x9 * y12 - y9 * x12;
+        const ptp_4x4_vf m9_12 = x9 * y12 - y9 * x12;
         u = -((g0 * m9_12 - g9 * m0_12) + g12 * m0_9);
         u += ((g2 * m5_14 - g5 * m2_14) + g14 * m2_5);
         u -= ((g2 * m9_10 - g9 * m2_10) + g10 * m2_9);
         u += ((g4 * m5_12 - g5 * m4_12) + g12 * m4_5);
         v += 6.0f * u;
-        const float m8_13 = x8 * y13 - y8 * x13;
+        const ptp_4x4_vf m8_13 = x8 * y13 - y8 * x13;
         u = -((g0 * m8_13 - g8 * m0_13) + g13 * m0_8);
         u -= ((g1 * m2_18 - g2 * m1_18) + g18 * m1_2);
         u += ((g1 * m6_14 - g6 * m1_14) + g14 * m1_6);
@@ -5055,26 +5146,26 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g2 * m8_11 - g8 * m2_11) + g11 * m2_8);
         u += ((g3 * m6_12 - g6 * m3_12) + g12 * m3_6);
         v += 48.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 27 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 27 */
         u = -((g3 * m4_15 - g4 * m3_15) + g15 * m3_4);
         v = u;
-        const float m3_19 = x3 * y19 - y3 * x19;
+        const ptp_4x4_vf m3_19 = x3 * y19 - y3 * x19;
         u = -((g0 * m3_19 - g3 * m0_19) + g19 * m0_3);
         v += 3.0f * u;
-        const float m4_18 = x4 * y18 - y4 * x18;
+        const ptp_4x4_vf m4_18 = x4 * y18 - y4 * x18;
         u = -((g0 * m4_18 - g4 * m0_18) + g18 * m0_4);
-        const float m8_14 = x8 * y14 - y8 * x14;
+        const ptp_4x4_vf m8_14 = x8 * y14 - y8 * x14;
         u -= ((g0 * m8_14 - g8 * m0_14) + g14 * m0_8);
         u -= ((g4 * m8_10 - g8 * m4_10) + g10 * m4_8);
         v += 4.0f * u;
         u = -((g1 * m2_19 - g2 * m1_19) + g19 * m1_2);
         v += 6.0f * u;
-        const float m9_13 = x9 * y13 - y9 * x13;
+        const ptp_4x4_vf m9_13 = x9 * y13 - y9 * x13;
         u = -((g0 * m9_13 - g9 * m0_13) + g13 * m0_9);
         u -= ((g3 * m9_10 - g9 * m3_10) + g10 * m3_9);
         v += 10.0f * u;
-        const float m7_14 = x7 * y14 - y7 * x14;
+        const ptp_4x4_vf m7_14 = x7 * y14 - y7 * x14;
         u = ((g1 * m7_14 - g7 * m1_14) + g14 * m1_7);
         u -= ((g2 * m4_16 - g4 * m2_16) + g16 * m2_4);
         u += ((g4 * m7_11 - g7 * m4_11) + g11 * m4_7);
@@ -5104,12 +5195,12 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g2 * m8_12 - g8 * m2_12) + g12 * m2_8);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 28 */
-        const float m4_19 = x4 * y19 - y4 * x19;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 28 */
+        const ptp_4x4_vf m4_19 = x4 * y19 - y4 * x19;
         u = -((g0 * m4_19 - g4 * m0_19) + g19 * m0_4);
         v = u;
-        const float m9_14 = x9 * y14 - y9 * x14;
+        const ptp_4x4_vf m9_14 = x9 * y14 - y9 * x14;
         u = -((g0 * m9_14 - g9 * m0_14) + g14 * m0_9);
         u -= ((g4 * m9_10 - g9 * m4_10) + g10 * m4_9);
         v += 2.0f * u;
@@ -5142,8 +5233,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g3 * m7_13 - g7 * m3_13) + g13 * m3_7);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 29 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = -((g1 * m4_19 - g4 * m1_19) + g19 * m1_4);
         v = u;
         u = -((g1 * m9_14 - g9 * m1_14) + g14 * m1_9);
@@ -5159,8 +5250,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g3 * m9_12 - g9 * m3_12) + g12 * m3_9);
         u += ((g4 * m7_13 - g7 * m4_13) + g13 * m4_7);
         v += 12.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 30 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = -((g2 * m4_19 - g4 * m2_19) + g19 * m2_4);
         v = 3.0f * u;
         u = -((g3 * m4_18 - g4 * m3_18) + g18 * m3_4);
@@ -5175,8 +5266,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g3 * m9_13 - g9 * m3_13) + g13 * m3_9);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 31 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = -((g3 * m4_19 - g4 * m3_19) + g19 * m3_4);
         v = u;
         u = -((g3 * m9_14 - g9 * m3_14) + g14 * m3_9);
@@ -5184,51 +5275,51 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = ((g4 * m8_14 - g8 * m4_14) + g14 * m4_8);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 32 */
-        const float m1_20 = x1 * y20 - y1 * x20;
-        const float m0_20 = x0 * y20 - y0 * x20;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 32 */
+        const ptp_4x4_vf m1_20 = x1 * y20 - y1 * x20;
+        const ptp_4x4_vf m0_20 = x0 * y20 - y0 * x20;
         u = -((g0 * m1_20 - g1 * m0_20) + g20 * m0_1);
         v = u;
-        const float m5_16 = x5 * y16 - y5 * x16;
+        const ptp_4x4_vf m5_16 = x5 * y16 - y5 * x16;
         u = ((g0 * m5_16 - g5 * m0_16) + g16 * m0_5);
         v += 4.0f * u;
-        const float m5_15 = x5 * y15 - y5 * x15;
+        const ptp_4x4_vf m5_15 = x5 * y15 - y5 * x15;
         u = ((g1 * m5_15 - g5 * m1_15) + g15 * m1_5);
         v += 8.0f * u;
-        const float m6_15 = x6 * y15 - y6 * x15;
+        const ptp_4x4_vf m6_15 = x6 * y15 - y6 * x15;
         u = -((g0 * m6_15 - g6 * m0_15) + g15 * m0_6);
         v += 12.0f * u;
-        const float m10_11 = x10 * y11 - y10 * x11;
+        const ptp_4x4_vf m10_11 = x10 * y11 - y10 * x11;
         u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
         v += 18.0f * u;
         u = -((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
         v += 24.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 33 */
-        const float m2_20 = x2 * y20 - y2 * x20;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 33 */
+        const ptp_4x4_vf m2_20 = x2 * y20 - y2 * x20;
         u = -((g0 * m2_20 - g2 * m0_20) + g20 * m0_2);
         v = 3.0f * u;
-        const float m1_21 = x1 * y21 - y1 * x21;
-        const float m0_21 = x0 * y21 - y0 * x21;
+        const ptp_4x4_vf m1_21 = x1 * y21 - y1 * x21;
+        const ptp_4x4_vf m0_21 = x0 * y21 - y0 * x21;
         u = -((g0 * m1_21 - g1 * m0_21) + g21 * m0_1);
         v += 4.0f * u;
-        const float m5_17 = x5 * y17 - y5 * x17;
+        const ptp_4x4_vf m5_17 = x5 * y17 - y5 * x17;
         u = ((g0 * m5_17 - g5 * m0_17) + g17 * m0_5);
         v += 12.0f * u;
         u = -((g1 * m6_15 - g6 * m1_15) + g15 * m1_6);
         v += 16.0f * u;
         u = ((g2 * m5_15 - g5 * m2_15) + g15 * m2_5);
         v += 24.0f * u;
-        const float m6_16 = x6 * y16 - y6 * x16;
+        const ptp_4x4_vf m6_16 = x6 * y16 - y6 * x16;
         u = -((g0 * m6_16 - g6 * m0_16) + g16 * m0_6);
         v += 32.0f * u;
-        const float m7_15 = x7 * y15 - y7 * x15;
+        const ptp_4x4_vf m7_15 = x7 * y15 - y7 * x15;
         u = -((g0 * m7_15 - g7 * m0_15) + g15 * m0_7);
         v += 36.0f * u;
         u = ((g1 * m5_16 - g5 * m1_16) + g16 * m1_5);
         v += 48.0f * u;
-        const float m10_12 = x10 * y12 - y10 * x12;
+        const ptp_4x4_vf m10_12 = x10 * y12 - y10 * x12;
         u = ((g0 * m10_12 - g10 * m0_12) + g12 * m0_10);
         v += 54.0f * u;
         u = ((g1 * m10_11 - g10 * m1_11) + g11 * m1_10);
@@ -5236,30 +5327,30 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g5 * m6_11 - g6 * m5_11) + g11 * m5_6);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 34 */
-        const float m3_20 = x3 * y20 - y3 * x20;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 34 */
+        const ptp_4x4_vf m3_20 = x3 * y20 - y3 * x20;
         u = -((g0 * m3_20 - g3 * m0_20) + g20 * m0_3);
         v = u;
-        const float m1_22 = x1 * y22 - y1 * x22;
-        const float m0_22 = x0 * y22 - y0 * x22;
+        const ptp_4x4_vf m1_22 = x1 * y22 - y1 * x22;
+        const ptp_4x4_vf m0_22 = x0 * y22 - y0 * x22;
         u = -((g0 * m1_22 - g1 * m0_22) + g22 * m0_1);
         u -= ((g1 * m2_20 - g2 * m1_20) + g20 * m1_2);
         v += 2.0f * u;
-        const float m2_21 = x2 * y21 - y2 * x21;
+        const ptp_4x4_vf m2_21 = x2 * y21 - y2 * x21;
         u = -((g0 * m2_21 - g2 * m0_21) + g21 * m0_2);
-        const float m5_18 = x5 * y18 - y5 * x18;
+        const ptp_4x4_vf m5_18 = x5 * y18 - y5 * x18;
         u += ((g0 * m5_18 - g5 * m0_18) + g18 * m0_5);
         v += 4.0f * u;
-        const float m6_17 = x6 * y17 - y6 * x17;
+        const ptp_4x4_vf m6_17 = x6 * y17 - y6 * x17;
         u = -((g0 * m6_17 - g6 * m0_17) + g17 * m0_6);
         u += ((g2 * m6_15 - g6 * m2_15) + g15 * m2_6);
         u += ((g3 * m5_15 - g5 * m3_15) + g15 * m3_5);
         v += 8.0f * u;
-        const float m8_15 = x8 * y15 - y8 * x15;
+        const ptp_4x4_vf m8_15 = x8 * y15 - y8 * x15;
         u = -((g0 * m8_15 - g8 * m0_15) + g15 * m0_8);
         v += 12.0f * u;
-        const float m10_13 = x10 * y13 - y10 * x13;
+        const ptp_4x4_vf m10_13 = x10 * y13 - y10 * x13;
         u = ((g0 * m10_13 - g10 * m0_13) + g13 * m0_10);
         v += 18.0f * u;
         u = -((g5 * m8_10 - g8 * m5_10) + g10 * m5_8);
@@ -5267,11 +5358,11 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = ((g1 * m5_17 - g5 * m1_17) + g17 * m1_5);
         u -= ((g1 * m7_15 - g7 * m1_15) + g15 * m1_7);
         v += 32.0f * u;
-        const float m11_12 = x11 * y12 - y11 * x12;
+        const ptp_4x4_vf m11_12 = x11 * y12 - y11 * x12;
         u = ((g0 * m11_12 - g11 * m0_12) + g12 * m0_11);
         u += ((g2 * m10_11 - g10 * m2_11) + g11 * m2_10);
         v += 36.0f * u;
-        const float m7_16 = x7 * y16 - y7 * x16;
+        const ptp_4x4_vf m7_16 = x7 * y16 - y7 * x16;
         u = -((g0 * m7_16 - g7 * m0_16) + g16 * m0_7);
         u += ((g2 * m5_16 - g5 * m2_16) + g16 * m2_5);
         v += 40.0f * u;
@@ -5282,28 +5373,28 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g5 * m7_11 - g7 * m5_11) + g11 * m5_7);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 35 */
-        const float m4_20 = x4 * y20 - y4 * x20;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 35 */
+        const ptp_4x4_vf m4_20 = x4 * y20 - y4 * x20;
         u = -((g0 * m4_20 - g4 * m0_20) + g20 * m0_4);
         v = u;
-        const float m1_23 = x1 * y23 - y1 * x23;
-        const float m0_23 = x0 * y23 - y0 * x23;
+        const ptp_4x4_vf m1_23 = x1 * y23 - y1 * x23;
+        const ptp_4x4_vf m0_23 = x0 * y23 - y0 * x23;
         u = -((g0 * m1_23 - g1 * m0_23) + g23 * m0_1);
-        const float m5_19 = x5 * y19 - y5 * x19;
+        const ptp_4x4_vf m5_19 = x5 * y19 - y5 * x19;
         u += ((g0 * m5_19 - g5 * m0_19) + g19 * m0_5);
         v += 4.0f * u;
         u = -((g1 * m3_20 - g3 * m1_20) + g20 * m1_3);
         u += ((g4 * m5_15 - g5 * m4_15) + g15 * m4_5);
         v += 8.0f * u;
-        const float m3_21 = x3 * y21 - y3 * x21;
+        const ptp_4x4_vf m3_21 = x3 * y21 - y3 * x21;
         u = -((g0 * m3_21 - g3 * m0_21) + g21 * m0_3);
-        const float m9_15 = x9 * y15 - y9 * x15;
+        const ptp_4x4_vf m9_15 = x9 * y15 - y9 * x15;
         u -= ((g0 * m9_15 - g9 * m0_15) + g15 * m0_9);
         v += 12.0f * u;
-        const float m2_22 = x2 * y22 - y2 * x22;
+        const ptp_4x4_vf m2_22 = x2 * y22 - y2 * x22;
         u = -((g0 * m2_22 - g2 * m0_22) + g22 * m0_2);
-        const float m10_14 = x10 * y14 - y10 * x14;
+        const ptp_4x4_vf m10_14 = x10 * y14 - y10 * x14;
         u += ((g0 * m10_14 - g10 * m0_14) + g14 * m0_10);
         v += 18.0f * u;
         u = -((g1 * m2_21 - g2 * m1_21) + g21 * m1_2);
@@ -5322,12 +5413,12 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = -((g1 * m8_15 - g8 * m1_15) + g15 * m1_8);
         u += ((g3 * m5_16 - g5 * m3_16) + g16 * m3_5);
         v += 112.0f * u;
-        const float m8_16 = x8 * y16 - y8 * x16;
+        const ptp_4x4_vf m8_16 = x8 * y16 - y8 * x16;
         u = -((g0 * m8_16 - g8 * m0_16) + g16 * m0_8);
         v += 128.0f * u;
-        const float m7_17 = x7 * y17 - y7 * x17;
+        const ptp_4x4_vf m7_17 = x7 * y17 - y7 * x17;
         u = -((g0 * m7_17 - g7 * m0_17) + g17 * m0_7);
-        const float m11_13 = x11 * y13 - y11 * x13;
+        const ptp_4x4_vf m11_13 = x11 * y13 - y11 * x13;
         u += ((g0 * m11_13 - g11 * m0_13) + g13 * m0_11);
         v += 144.0f * u;
         u = ((g2 * m6_16 - g6 * m2_16) + g16 * m2_6);
@@ -5346,25 +5437,25 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 432.0f * u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         v += 576.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 36 */
-        const float m1_24 = x1 * y24 - y1 * x24;
-        const float m0_24 = x0 * y24 - y0 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 36 */
+        const ptp_4x4_vf m1_24 = x1 * y24 - y1 * x24;
+        const ptp_4x4_vf m0_24 = x0 * y24 - y0 * x24;
         u = -((g0 * m1_24 - g1 * m0_24) + g24 * m0_1);
         v = u;
         u = -((g1 * m4_20 - g4 * m1_20) + g20 * m1_4);
         v += 3.0f * u;
-        const float m4_21 = x4 * y21 - y4 * x21;
+        const ptp_4x4_vf m4_21 = x4 * y21 - y4 * x21;
         u = -((g0 * m4_21 - g4 * m0_21) + g21 * m0_4);
-        const float m6_19 = x6 * y19 - y6 * x19;
+        const ptp_4x4_vf m6_19 = x6 * y19 - y6 * x19;
         u += ((g0 * m6_19 - g6 * m0_19) + g19 * m0_6);
         v += 4.0f * u;
         u = -((g2 * m3_20 - g3 * m2_20) + g20 * m2_3);
         v += 6.0f * u;
-        const float m2_23 = x2 * y23 - y2 * x23;
+        const ptp_4x4_vf m2_23 = x2 * y23 - y2 * x23;
         u = -((g0 * m2_23 - g2 * m0_23) + g23 * m0_2);
         v += 12.0f * u;
-        const float m3_22 = x3 * y22 - y3 * x22;
+        const ptp_4x4_vf m3_22 = x3 * y22 - y3 * x22;
         u = -((g0 * m3_22 - g3 * m0_22) + g22 * m0_3);
         u += ((g4 * m10_11 - g10 * m4_11) + g11 * m4_10);
         v += 18.0f * u;
@@ -5380,31 +5471,31 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = -((g1 * m9_15 - g9 * m1_15) + g15 * m1_9);
         v += 40.0f * u;
-        const float m9_16 = x9 * y16 - y9 * x16;
+        const ptp_4x4_vf m9_16 = x9 * y16 - y9 * x16;
         u = -((g0 * m9_16 - g9 * m0_16) + g16 * m0_9);
         v += 44.0f * u;
-        const float m11_14 = x11 * y14 - y11 * x14;
+        const ptp_4x4_vf m11_14 = x11 * y14 - y11 * x14;
         u = ((g0 * m11_14 - g11 * m0_14) + g14 * m0_11);
         v += 54.0f * u;
-        const float m7_18 = x7 * y18 - y7 * x18;
+        const ptp_4x4_vf m7_18 = x7 * y18 - y7 * x18;
         u = -((g0 * m7_18 - g7 * m0_18) + g18 * m0_7);
         u += ((g1 * m10_14 - g10 * m1_14) + g14 * m1_10);
         u -= ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
         v += 72.0f * u;
         u = -((g5 * m9_11 - g9 * m5_11) + g11 * m5_9);
         v += 96.0f * u;
-        const float m12_13 = x12 * y13 - y12 * x13;
+        const ptp_4x4_vf m12_13 = x12 * y13 - y12 * x13;
         u = ((g0 * m12_13 - g12 * m0_13) + g13 * m0_12);
         v += 108.0f * u;
         u = -((g2 * m8_15 - g8 * m2_15) + g15 * m2_8);
         v += 120.0f * u;
-        const float m6_18 = x6 * y18 - y6 * x18;
+        const ptp_4x4_vf m6_18 = x6 * y18 - y6 * x18;
         u = ((g1 * m6_18 - g6 * m1_18) + g18 * m1_6);
         v += 128.0f * u;
         u = -((g2 * m7_16 - g7 * m2_16) + g16 * m2_7);
         u -= ((g7 * m8_10 - g8 * m7_10) + g10 * m7_8);
         v += 144.0f * u;
-        const float m8_17 = x8 * y17 - y8 * x17;
+        const ptp_4x4_vf m8_17 = x8 * y17 - y8 * x17;
         u = -((g0 * m8_17 - g8 * m0_17) + g17 * m0_8);
         u += ((g2 * m5_18 - g5 * m2_18) + g18 * m2_5);
         v += 168.0f * u;
@@ -5432,18 +5523,18 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = -((g6 * m7_12 - g7 * m6_12) + g12 * m6_7);
         v += 864.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 37 */
-        const float m2_24 = x2 * y24 - y2 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 37 */
+        const ptp_4x4_vf m2_24 = x2 * y24 - y2 * x24;
         u = -((g0 * m2_24 - g2 * m0_24) + g24 * m0_2);
         u -= ((g2 * m4_20 - g4 * m2_20) + g20 * m2_4);
         v = u;
-        const float m4_22 = x4 * y22 - y4 * x22;
+        const ptp_4x4_vf m4_22 = x4 * y22 - y4 * x22;
         u = -((g0 * m4_22 - g4 * m0_22) + g22 * m0_4);
         v += 2.0f * u;
-        const float m3_23 = x3 * y23 - y3 * x23;
+        const ptp_4x4_vf m3_23 = x3 * y23 - y3 * x23;
         u = -((g0 * m3_23 - g3 * m0_23) + g23 * m0_3);
-        const float m7_19 = x7 * y19 - y7 * x19;
+        const ptp_4x4_vf m7_19 = x7 * y19 - y7 * x19;
         u -= ((g0 * m7_19 - g7 * m0_19) + g19 * m0_7);
         u -= ((g1 * m4_21 - g4 * m1_21) + g21 * m1_4);
         u += ((g4 * m7_15 - g7 * m4_15) + g15 * m4_7);
@@ -5457,18 +5548,18 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g2 * m9_15 - g9 * m2_15) + g15 * m2_9);
         u -= ((g3 * m8_15 - g8 * m3_15) + g15 * m3_8);
         v += 16.0f * u;
-        const float m12_14 = x12 * y14 - y12 * x14;
+        const ptp_4x4_vf m12_14 = x12 * y14 - y12 * x14;
         u = ((g0 * m12_14 - g12 * m0_14) + g14 * m0_12);
         u += ((g4 * m10_12 - g10 * m4_12) + g12 * m4_10);
         v += 18.0f * u;
-        const float m9_17 = x9 * y17 - y9 * x17;
+        const ptp_4x4_vf m9_17 = x9 * y17 - y9 * x17;
         u = -((g0 * m9_17 - g9 * m0_17) + g17 * m0_9);
         u += ((g4 * m5_17 - g5 * m4_17) + g17 * m4_5);
         v += 20.0f * u;
         u = -((g5 * m7_14 - g7 * m5_14) + g14 * m5_7);
         u -= ((g7 * m9_10 - g9 * m7_10) + g10 * m7_9);
         v += 24.0f * u;
-        const float m8_18 = x8 * y18 - y8 * x18;
+        const ptp_4x4_vf m8_18 = x8 * y18 - y8 * x18;
         u = -((g0 * m8_18 - g8 * m0_18) + g18 * m0_8);
         u -= ((g1 * m7_18 - g7 * m1_18) + g18 * m1_7);
         u += ((g3 * m7_16 - g7 * m3_16) + g16 * m3_7);
@@ -5502,14 +5593,14 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 288.0f * u;
         u = -((g6 * m8_12 - g8 * m6_12) + g12 * m6_8);
         v += 384.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 38 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = -((g3 * m4_20 - g4 * m3_20) + g20 * m3_4);
         v = u;
-        const float m3_24 = x3 * y24 - y3 * x24;
+        const ptp_4x4_vf m3_24 = x3 * y24 - y3 * x24;
         u = -((g0 * m3_24 - g3 * m0_24) + g24 * m0_3);
         v += 3.0f * u;
-        const float m4_23 = x4 * y23 - y4 * x23;
+        const ptp_4x4_vf m4_23 = x4 * y23 - y4 * x23;
         u = -((g0 * m4_23 - g4 * m0_23) + g23 * m0_4);
         u -= ((g4 * m8_15 - g8 * m4_15) + g15 * m4_8);
         v += 4.0f * u;
@@ -5517,11 +5608,11 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g2 * m4_21 - g4 * m2_21) + g21 * m2_4);
         v += 12.0f * u;
-        const float m13_14 = x13 * y14 - y13 * x14;
+        const ptp_4x4_vf m13_14 = x13 * y14 - y13 * x14;
         u = ((g0 * m13_14 - g13 * m0_14) + g14 * m0_13);
         u -= ((g1 * m4_22 - g4 * m1_22) + g22 * m1_4);
         v += 18.0f * u;
-        const float m8_19 = x8 * y19 - y8 * x19;
+        const ptp_4x4_vf m8_19 = x8 * y19 - y8 * x19;
         u = -((g0 * m8_19 - g8 * m0_19) + g19 * m0_8);
         v += 20.0f * u;
         u = -((g3 * m9_15 - g9 * m3_15) + g15 * m3_9);
@@ -5529,7 +5620,7 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 24.0f * u;
         u = -((g1 * m3_23 - g3 * m1_23) + g23 * m1_3);
         v += 32.0f * u;
-        const float m9_18 = x9 * y18 - y9 * x18;
+        const ptp_4x4_vf m9_18 = x9 * y18 - y9 * x18;
         u = -((g0 * m9_18 - g9 * m0_18) + g18 * m0_9);
         u -= ((g2 * m3_22 - g3 * m2_22) + g22 * m2_3);
         v += 36.0f * u;
@@ -5581,15 +5672,15 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = -((g7 * m8_12 - g8 * m7_12) + g12 * m7_8);
         v += 864.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 39 */
-        const float m4_24 = x4 * y24 - y4 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 39 */
+        const ptp_4x4_vf m4_24 = x4 * y24 - y4 * x24;
         u = -((g0 * m4_24 - g4 * m0_24) + g24 * m0_4);
         v = u;
         u = -((g3 * m4_21 - g4 * m3_21) + g21 * m3_4);
         u -= ((g4 * m9_15 - g9 * m4_15) + g15 * m4_9);
         v += 4.0f * u;
-        const float m9_19 = x9 * y19 - y9 * x19;
+        const ptp_4x4_vf m9_19 = x9 * y19 - y9 * x19;
         u = -((g0 * m9_19 - g9 * m0_19) + g19 * m0_9);
         u -= ((g1 * m3_24 - g3 * m1_24) + g24 * m1_3);
         v += 8.0f * u;
@@ -5636,8 +5727,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 432.0f * u;
         u = -((g7 * m8_13 - g8 * m7_13) + g13 * m7_8);
         v += 576.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 40 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 40 */
         u = -((g1 * m4_24 - g4 * m1_24) + g24 * m1_4);
         v = u;
         u = -((g2 * m3_24 - g3 * m2_24) + g24 * m2_3);
@@ -5672,8 +5763,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g7 * m9_13 - g9 * m7_13) + g13 * m7_9);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 41 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 41 */
         u = -((g2 * m4_24 - g4 * m2_24) + g24 * m2_4);
         v = 3.0f * u;
         u = -((g3 * m4_23 - g4 * m3_23) + g23 * m3_4);
@@ -5697,8 +5788,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g8 * m9_13 - g9 * m8_13) + g13 * m8_9);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 42 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 42 */
         u = -((g3 * m4_24 - g4 * m3_24) + g24 * m3_4);
         v = u;
         u = -((g4 * m9_18 - g9 * m4_18) + g18 * m4_9);
@@ -5711,57 +5802,57 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g8 * m9_14 - g9 * m8_14) + g14 * m8_9);
         v += 24.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 43 */
-        const float m5_21 = x5 * y21 - y5 * x21;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 43 */
+        const ptp_4x4_vf m5_21 = x5 * y21 - y5 * x21;
         u = ((g0 * m5_21 - g5 * m0_21) + g21 * m0_5);
         v = u;
-        const float m5_20 = x5 * y20 - y5 * x20;
+        const ptp_4x4_vf m5_20 = x5 * y20 - y5 * x20;
         u = ((g1 * m5_20 - g5 * m1_20) + g20 * m1_5);
         v += 3.0f * u;
-        const float m6_20 = x6 * y20 - y6 * x20;
+        const ptp_4x4_vf m6_20 = x6 * y20 - y6 * x20;
         u = -((g0 * m6_20 - g6 * m0_20) + g20 * m0_6);
         v += 4.0f * u;
-        const float m10_15 = x10 * y15 - y10 * x15;
+        const ptp_4x4_vf m10_15 = x10 * y15 - y10 * x15;
         u = ((g1 * m10_15 - g10 * m1_15) + g15 * m1_10);
         v += 6.0f * u;
-        const float m10_16 = x10 * y16 - y10 * x16;
+        const ptp_4x4_vf m10_16 = x10 * y16 - y10 * x16;
         u = ((g0 * m10_16 - g10 * m0_16) + g16 * m0_10);
         v += 12.0f * u;
-        const float m11_15 = x11 * y15 - y11 * x15;
+        const ptp_4x4_vf m11_15 = x11 * y15 - y11 * x15;
         u = -((g0 * m11_15 - g11 * m0_15) + g15 * m0_11);
         v += 18.0f * u;
         u = -((g5 * m6_15 - g6 * m5_15) + g15 * m5_6);
         v += 32.0f * u;
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
         v += 36.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 44 */
-        const float m5_22 = x5 * y22 - y5 * x22;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 44 */
+        const ptp_4x4_vf m5_22 = x5 * y22 - y5 * x22;
         u = ((g0 * m5_22 - g5 * m0_22) + g22 * m0_5);
         v = 3.0f * u;
         u = -((g1 * m6_20 - g6 * m1_20) + g20 * m1_6);
         v += 4.0f * u;
         u = ((g2 * m5_20 - g5 * m2_20) + g20 * m2_5);
         v += 9.0f * u;
-        const float m6_21 = x6 * y21 - y6 * x21;
+        const ptp_4x4_vf m6_21 = x6 * y21 - y6 * x21;
         u = -((g0 * m6_21 - g6 * m0_21) + g21 * m0_6);
-        const float m7_20 = x7 * y20 - y7 * x20;
+        const ptp_4x4_vf m7_20 = x7 * y20 - y7 * x20;
         u -= ((g0 * m7_20 - g7 * m0_20) + g20 * m0_7);
         v += 12.0f * u;
         u = ((g1 * m5_21 - g5 * m1_21) + g21 * m1_5);
         v += 16.0f * u;
         u = ((g2 * m10_15 - g10 * m2_15) + g15 * m2_10);
         v += 18.0f * u;
-        const float m11_16 = x11 * y16 - y11 * x16;
+        const ptp_4x4_vf m11_16 = x11 * y16 - y11 * x16;
         u = -((g0 * m11_16 - g11 * m0_16) + g16 * m0_11);
         v += 24.0f * u;
-        const float m10_17 = x10 * y17 - y10 * x17;
+        const ptp_4x4_vf m10_17 = x10 * y17 - y10 * x17;
         u = ((g0 * m10_17 - g10 * m0_17) + g17 * m0_10);
         v += 36.0f * u;
         u = -((g1 * m11_15 - g11 * m1_15) + g15 * m1_11);
         v += 48.0f * u;
-        const float m12_15 = x12 * y15 - y12 * x15;
+        const ptp_4x4_vf m12_15 = x12 * y15 - y12 * x15;
         u = -((g0 * m12_15 - g12 * m0_15) + g15 * m0_12);
         v += 54.0f * u;
         u = ((g1 * m10_16 - g10 * m1_16) + g16 * m1_10);
@@ -5774,16 +5865,16 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 45 */
-        const float m5_23 = x5 * y23 - y5 * x23;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 45 */
+        const ptp_4x4_vf m5_23 = x5 * y23 - y5 * x23;
         u = ((g0 * m5_23 - g5 * m0_23) + g23 * m0_5);
         v = u;
         u = ((g3 * m5_20 - g5 * m3_20) + g20 * m3_5);
         v += 3.0f * u;
-        const float m6_22 = x6 * y22 - y6 * x22;
+        const ptp_4x4_vf m6_22 = x6 * y22 - y6 * x22;
         u = -((g0 * m6_22 - g6 * m0_22) + g22 * m0_6);
-        const float m8_20 = x8 * y20 - y8 * x20;
+        const ptp_4x4_vf m8_20 = x8 * y20 - y8 * x20;
         u -= ((g0 * m8_20 - g8 * m0_20) + g20 * m0_8);
         u += ((g2 * m6_20 - g6 * m2_20) + g20 * m2_6);
         v += 4.0f * u;
@@ -5792,24 +5883,24 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = ((g1 * m5_22 - g5 * m1_22) + g22 * m1_5);
         u -= ((g1 * m7_20 - g7 * m1_20) + g20 * m1_7);
         v += 10.0f * u;
-        const float m10_18 = x10 * y18 - y10 * x18;
+        const ptp_4x4_vf m10_18 = x10 * y18 - y10 * x18;
         u = ((g0 * m10_18 - g10 * m0_18) + g18 * m0_10);
-        const float m11_17 = x11 * y17 - y11 * x17;
+        const ptp_4x4_vf m11_17 = x11 * y17 - y11 * x17;
         u += ((g0 * m11_17 - g11 * m0_17) + g17 * m0_11);
         u -= ((g2 * m11_15 - g11 * m2_15) + g15 * m2_11);
         v += 12.0f * u;
-        const float m7_21 = x7 * y21 - y7 * x21;
+        const ptp_4x4_vf m7_21 = x7 * y21 - y7 * x21;
         u = -((g0 * m7_21 - g7 * m0_21) + g21 * m0_7);
         u += ((g2 * m5_21 - g5 * m2_21) + g21 * m2_5);
         v += 14.0f * u;
-        const float m13_15 = x13 * y15 - y13 * x15;
+        const ptp_4x4_vf m13_15 = x13 * y15 - y13 * x15;
         u = -((g0 * m13_15 - g13 * m0_15) + g15 * m0_13);
         v += 18.0f * u;
         u = -((g5 * m8_15 - g8 * m5_15) + g15 * m5_8);
         v += 32.0f * u;
         u = ((g5 * m10_13 - g10 * m5_13) + g13 * m5_10);
         v += 36.0f * u;
-        const float m12_16 = x12 * y16 - y12 * x16;
+        const ptp_4x4_vf m12_16 = x12 * y16 - y12 * x16;
         u = -((g0 * m12_16 - g12 * m0_16) + g16 * m0_12);
         u += ((g2 * m10_16 - g10 * m2_16) + g16 * m2_10);
         v += 48.0f * u;
@@ -5826,24 +5917,24 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g6 * m10_12 - g10 * m6_12) + g12 * m6_10);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 46 */
-        const float m5_24 = x5 * y24 - y5 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 46 */
+        const ptp_4x4_vf m5_24 = x5 * y24 - y5 * x24;
         u = ((g0 * m5_24 - g5 * m0_24) + g24 * m0_5);
         v = u;
         u = ((g4 * m5_20 - g5 * m4_20) + g20 * m4_5);
         v += 3.0f * u;
-        const float m6_23 = x6 * y23 - y6 * x23;
+        const ptp_4x4_vf m6_23 = x6 * y23 - y6 * x23;
         u = -((g0 * m6_23 - g6 * m0_23) + g23 * m0_6);
-        const float m9_20 = x9 * y20 - y9 * x20;
+        const ptp_4x4_vf m9_20 = x9 * y20 - y9 * x20;
         u -= ((g0 * m9_20 - g9 * m0_20) + g20 * m0_9);
         v += 4.0f * u;
         u = ((g4 * m10_15 - g10 * m4_15) + g15 * m4_10);
         v += 6.0f * u;
-        const float m10_19 = x10 * y19 - y10 * x19;
+        const ptp_4x4_vf m10_19 = x10 * y19 - y10 * x19;
         u = ((g0 * m10_19 - g10 * m0_19) + g19 * m0_10);
         v += 12.0f * u;
-        const float m14_15 = x14 * y15 - y14 * x15;
+        const ptp_4x4_vf m14_15 = x14 * y15 - y14 * x15;
         u = -((g0 * m14_15 - g14 * m0_15) + g15 * m0_14);
         u -= ((g2 * m7_20 - g7 * m2_20) + g20 * m2_7);
         v += 18.0f * u;
@@ -5859,20 +5950,20 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = ((g3 * m5_21 - g5 * m3_21) + g21 * m3_5);
         v += 40.0f * u;
-        const float m8_21 = x8 * y21 - y8 * x21;
+        const ptp_4x4_vf m8_21 = x8 * y21 - y8 * x21;
         u = -((g0 * m8_21 - g8 * m0_21) + g21 * m0_8);
         v += 44.0f * u;
-        const float m7_22 = x7 * y22 - y7 * x22;
+        const ptp_4x4_vf m7_22 = x7 * y22 - y7 * x22;
         u = -((g0 * m7_22 - g7 * m0_22) + g22 * m0_7);
         v += 54.0f * u;
-        const float m11_18 = x11 * y18 - y11 * x18;
+        const ptp_4x4_vf m11_18 = x11 * y18 - y11 * x18;
         u = ((g0 * m11_18 - g11 * m0_18) + g18 * m0_11);
         u += ((g2 * m5_22 - g5 * m2_22) + g22 * m2_5);
         u += ((g2 * m6_21 - g6 * m2_21) + g21 * m2_6);
         v += 72.0f * u;
         u = -((g1 * m7_21 - g7 * m1_21) + g21 * m1_7);
         v += 96.0f * u;
-        const float m12_17 = x12 * y17 - y12 * x17;
+        const ptp_4x4_vf m12_17 = x12 * y17 - y12 * x17;
         u = -((g0 * m12_17 - g12 * m0_17) + g17 * m0_12);
         v += 108.0f * u;
         u = ((g3 * m10_16 - g10 * m3_16) + g16 * m3_10);
@@ -5882,7 +5973,7 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = ((g2 * m11_16 - g11 * m2_16) + g16 * m2_11);
         u += ((g8 * m10_11 - g10 * m8_11) + g11 * m8_10);
         v += 144.0f * u;
-        const float m13_16 = x13 * y16 - y13 * x16;
+        const ptp_4x4_vf m13_16 = x13 * y16 - y13 * x16;
         u = -((g0 * m13_16 - g13 * m0_16) + g16 * m0_13);
         u += ((g1 * m10_18 - g10 * m1_18) + g18 * m1_10);
         v += 168.0f * u;
@@ -5910,8 +6001,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = ((g6 * m11_12 - g11 * m6_12) + g12 * m6_11);
         v += 864.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 47 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 47 */
         u = ((g3 * m7_20 - g7 * m3_20) + g20 * m3_7);
         u += ((g4 * m11_15 - g11 * m4_15) + g15 * m4_11);
         v = 6.0f * u;
@@ -5922,12 +6013,12 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = -((g1 * m9_20 - g9 * m1_20) + g20 * m1_9);
         u += ((g4 * m5_21 - g5 * m4_21) + g21 * m4_5);
         v += 13.0f * u;
-        const float m9_21 = x9 * y21 - y9 * x21;
+        const ptp_4x4_vf m9_21 = x9 * y21 - y9 * x21;
         u = -((g0 * m9_21 - g9 * m0_21) + g21 * m0_9);
         v += 15.0f * u;
-        const float m7_23 = x7 * y23 - y7 * x23;
+        const ptp_4x4_vf m7_23 = x7 * y23 - y7 * x23;
         u = -((g0 * m7_23 - g7 * m0_23) + g23 * m0_7);
-        const float m11_19 = x11 * y19 - y11 * x19;
+        const ptp_4x4_vf m11_19 = x11 * y19 - y11 * x19;
         u += ((g0 * m11_19 - g11 * m0_19) + g19 * m0_11);
         v += 30.0f * u;
         u = ((g1 * m6_23 - g6 * m1_23) + g23 * m1_6);
@@ -5941,9 +6032,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = ((g1 * m10_19 - g10 * m1_19) + g19 * m1_10);
         u += ((g2 * m5_23 - g5 * m2_23) + g23 * m2_5);
         v += 54.0f * u;
-        const float m8_22 = x8 * y22 - y8 * x22;
+        const ptp_4x4_vf m8_22 = x8 * y22 - y8 * x22;
         u = -((g0 * m8_22 - g8 * m0_22) + g22 * m0_8);
-        const float m14_16 = x14 * y16 - y14 * x16;
+        const ptp_4x4_vf m14_16 = x14 * y16 - y14 * x16;
         u -= ((g0 * m14_16 - g14 * m0_16) + g16 * m0_14);
         v += 60.0f * u;
         u = -((g1 * m14_15 - g14 * m1_15) + g15 * m1_14);
@@ -5962,7 +6053,7 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = ((g2 * m6_22 - g6 * m2_22) + g22 * m2_6);
         u += ((g6 * m10_14 - g10 * m6_14) + g14 * m6_10);
         v += 144.0f * u;
-        const float m13_17 = x13 * y17 - y13 * x17;
+        const ptp_4x4_vf m13_17 = x13 * y17 - y13 * x17;
         u = -((g0 * m13_17 - g13 * m0_17) + g17 * m0_13);
         v += 180.0f * u;
         u = ((g3 * m11_16 - g11 * m3_16) + g16 * m3_11);
@@ -5995,28 +6086,28 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 1152.0f * u;
         u = ((g7 * m11_12 - g11 * m7_12) + g12 * m7_11);
         v += 1296.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 48 */
-        const float m7_24 = x7 * y24 - y7 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 48 */
+        const ptp_4x4_vf m7_24 = x7 * y24 - y7 * x24;
         u = -((g0 * m7_24 - g7 * m0_24) + g24 * m0_7);
         u += ((g4 * m7_20 - g7 * m4_20) + g20 * m4_7);
         v = 2.0f * u;
-        const float m6_24 = x6 * y24 - y6 * x24;
+        const ptp_4x4_vf m6_24 = x6 * y24 - y6 * x24;
         u = ((g1 * m6_24 - g6 * m1_24) + g24 * m1_6);
         u -= ((g3 * m8_20 - g8 * m3_20) + g20 * m3_8);
         v += 4.0f * u;
         u = ((g2 * m5_24 - g5 * m2_24) + g24 * m2_5);
         u -= ((g2 * m9_20 - g9 * m2_20) + g20 * m2_9);
         v += 5.0f * u;
-        const float m12_19 = x12 * y19 - y12 * x19;
+        const ptp_4x4_vf m12_19 = x12 * y19 - y12 * x19;
         u = ((g0 * m12_19 - g12 * m0_19) + g19 * m0_12);
         u -= ((g4 * m12_15 - g12 * m4_15) + g15 * m4_12);
         v += 6.0f * u;
-        const float m9_22 = x9 * y22 - y9 * x22;
+        const ptp_4x4_vf m9_22 = x9 * y22 - y9 * x22;
         u = -((g0 * m9_22 - g9 * m0_22) + g22 * m0_9);
         u += ((g4 * m5_22 - g5 * m4_22) + g22 * m4_5);
         v += 7.0f * u;
-        const float m8_23 = x8 * y23 - y8 * x23;
+        const ptp_4x4_vf m8_23 = x8 * y23 - y8 * x23;
         u = -((g0 * m8_23 - g8 * m0_23) + g23 * m0_8);
         u += ((g4 * m6_21 - g6 * m4_21) + g21 * m4_6);
         v += 12.0f * u;
@@ -6025,9 +6116,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u += ((g3 * m5_23 - g5 * m3_23) + g23 * m3_5);
         u += ((g3 * m7_21 - g7 * m3_21) + g21 * m3_7);
         v += 16.0f * u;
-        const float m13_18 = x13 * y18 - y13 * x18;
+        const ptp_4x4_vf m13_18 = x13 * y18 - y13 * x18;
         u = -((g0 * m13_18 - g13 * m0_18) + g18 * m0_13);
-        const float m14_17 = x14 * y17 - y14 * x17;
+        const ptp_4x4_vf m14_17 = x14 * y17 - y14 * x17;
         u -= ((g0 * m14_17 - g14 * m0_17) + g17 * m0_14);
         u += ((g4 * m10_17 - g10 * m4_17) + g17 * m4_10);
         u += ((g4 * m11_16 - g11 * m4_16) + g16 * m4_11);
@@ -6045,7 +6136,7 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g2 * m8_21 - g8 * m2_21) + g21 * m2_8);
         v += 40.0f * u;
         u = ((g1 * m11_19 - g11 * m1_19) + g19 * m1_11);
-        const float m12_18 = x12 * y18 - y12 * x18;
+        const ptp_4x4_vf m12_18 = x12 * y18 - y12 * x18;
         u += ((g1 * m12_18 - g12 * m1_18) + g18 * m1_12);
         u -= ((g3 * m12_16 - g12 * m3_16) + g16 * m3_12);
         u -= ((g3 * m13_15 - g13 * m3_15) + g15 * m3_13);
@@ -6081,18 +6172,18 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 512.0f * u;
         u = ((g7 * m11_13 - g11 * m7_13) + g13 * m7_11);
         v += 576.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 49 */
-        const float m13_19 = x13 * y19 - y13 * x19;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 49 */
+        const ptp_4x4_vf m13_19 = x13 * y19 - y13 * x19;
         u = -((g0 * m13_19 - g13 * m0_19) + g19 * m0_13);
         u -= ((g1 * m7_24 - g7 * m1_24) + g24 * m1_7);
         v = 6.0f * u;
         u = -((g3 * m9_20 - g9 * m3_20) + g20 * m3_9);
         v += 7.0f * u;
-        const float m8_24 = x8 * y24 - y8 * x24;
+        const ptp_4x4_vf m8_24 = x8 * y24 - y8 * x24;
         u = -((g0 * m8_24 - g8 * m0_24) + g24 * m0_8);
         v += 8.0f * u;
-        const float m9_23 = x9 * y23 - y9 * x23;
+        const ptp_4x4_vf m9_23 = x9 * y23 - y9 * x23;
         u = -((g0 * m9_23 - g9 * m0_23) + g23 * m0_9);
         u += ((g3 * m5_24 - g5 * m3_24) + g24 * m3_5);
         v += 13.0f * u;
@@ -6104,7 +6195,7 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = -((g3 * m8_21 - g8 * m3_21) + g21 * m3_8);
         u -= ((g8 * m9_15 - g9 * m8_15) + g15 * m8_9);
         v += 32.0f * u;
-        const float m14_18 = x14 * y18 - y14 * x18;
+        const ptp_4x4_vf m14_18 = x14 * y18 - y14 * x18;
         u = -((g0 * m14_18 - g14 * m0_18) + g18 * m0_14);
         u += ((g2 * m6_24 - g6 * m2_24) + g24 * m2_6);
         u += ((g2 * m7_23 - g7 * m2_23) + g23 * m2_7);
@@ -6164,17 +6255,17 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 1152.0f * u;
         u = ((g7 * m12_13 - g12 * m7_13) + g13 * m7_12);
         v += 1296.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 50 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 50 */
         u = -((g4 * m9_20 - g9 * m4_20) + g20 * m4_9);
         v = u;
-        const float m9_24 = x9 * y24 - y9 * x24;
+        const ptp_4x4_vf m9_24 = x9 * y24 - y9 * x24;
         u = -((g0 * m9_24 - g9 * m0_24) + g24 * m0_9);
         v += 3.0f * u;
         u = ((g4 * m5_24 - g5 * m4_24) + g24 * m4_5);
         u += ((g4 * m8_21 - g8 * m4_21) + g21 * m4_8);
         v += 4.0f * u;
-        const float m14_19 = x14 * y19 - y14 * x19;
+        const ptp_4x4_vf m14_19 = x14 * y19 - y14 * x19;
         u = -((g0 * m14_19 - g14 * m0_19) + g19 * m0_14);
         v += 6.0f * u;
         u = -((g4 * m14_15 - g14 * m4_15) + g15 * m4_14);
@@ -6240,8 +6331,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
         v += 864.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 51 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 51 */
         u = -((g4 * m9_21 - g9 * m4_21) + g21 * m4_9);
         v = u;
         u = -((g1 * m9_24 - g9 * m1_24) + g24 * m1_9);
@@ -6284,8 +6375,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 52 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 52 */
         u = -((g4 * m9_22 - g9 * m4_22) + g22 * m4_9);
         v = 3.0f * u;
         u = ((g3 * m8_24 - g8 * m3_24) + g24 * m3_8);
@@ -6317,8 +6408,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 53 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 53 */
         u = -((g4 * m9_23 - g9 * m4_23) + g23 * m4_9);
         v = u;
         u = -((g3 * m9_24 - g9 * m3_24) + g24 * m3_9);
@@ -6335,17 +6426,17 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v += 36.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 54 */
-        const float m10_21 = x10 * y21 - y10 * x21;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 54 */
+        const ptp_4x4_vf m10_21 = x10 * y21 - y10 * x21;
         u = ((g0 * m10_21 - g10 * m0_21) + g21 * m0_10);
-        const float m10_20 = x10 * y20 - y10 * x20;
+        const ptp_4x4_vf m10_20 = x10 * y20 - y10 * x20;
         u += ((g1 * m10_20 - g10 * m1_20) + g20 * m1_10);
         v = u;
-        const float m11_20 = x11 * y20 - y11 * x20;
+        const ptp_4x4_vf m11_20 = x11 * y20 - y11 * x20;
         u = -((g0 * m11_20 - g11 * m0_20) + g20 * m0_11);
         v += 2.0f * u;
-        const float m15_16 = x15 * y16 - y15 * x16;
+        const ptp_4x4_vf m15_16 = x15 * y16 - y15 * x16;
         u = ((g0 * m15_16 - g15 * m0_16) + g16 * m0_15);
         u -= ((g5 * m6_20 - g6 * m5_20) + g20 * m5_6);
         v += 4.0f * u;
@@ -6354,22 +6445,22 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 8.0f * u;
         u = -((g5 * m11_15 - g11 * m5_15) + g15 * m5_11);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 55 */
-        const float m10_22 = x10 * y22 - y10 * x22;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 55 */
+        const ptp_4x4_vf m10_22 = x10 * y22 - y10 * x22;
         u = ((g0 * m10_22 - g10 * m0_22) + g22 * m0_10);
         u += ((g2 * m10_20 - g10 * m2_20) + g20 * m2_10);
         v = 3.0f * u;
-        const float m11_21 = x11 * y21 - y11 * x21;
+        const ptp_4x4_vf m11_21 = x11 * y21 - y11 * x21;
         u = -((g0 * m11_21 - g11 * m0_21) + g21 * m0_11);
         u -= ((g1 * m11_20 - g11 * m1_20) + g20 * m1_11);
         v += 4.0f * u;
-        const float m12_20 = x12 * y20 - y12 * x20;
+        const ptp_4x4_vf m12_20 = x12 * y20 - y12 * x20;
         u = -((g0 * m12_20 - g12 * m0_20) + g20 * m0_12);
         v += 6.0f * u;
         u = ((g1 * m10_21 - g10 * m1_21) + g21 * m1_10);
         v += 8.0f * u;
-        const float m15_17 = x15 * y17 - y15 * x17;
+        const ptp_4x4_vf m15_17 = x15 * y17 - y15 * x17;
         u = ((g0 * m15_17 - g15 * m0_17) + g17 * m0_15);
         u -= ((g5 * m7_20 - g7 * m5_20) + g20 * m5_7);
         v += 12.0f * u;
@@ -6386,26 +6477,26 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 48.0f * u;
         u = ((g6 * m10_16 - g10 * m6_16) + g16 * m6_10);
         v += 64.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 56 */
-        const float m10_23 = x10 * y23 - y10 * x23;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 56 */
+        const ptp_4x4_vf m10_23 = x10 * y23 - y10 * x23;
         u = ((g0 * m10_23 - g10 * m0_23) + g23 * m0_10);
         u += ((g3 * m10_20 - g10 * m3_20) + g20 * m3_10);
         v = u;
-        const float m13_20 = x13 * y20 - y13 * x20;
+        const ptp_4x4_vf m13_20 = x13 * y20 - y13 * x20;
         u = -((g0 * m13_20 - g13 * m0_20) + g20 * m0_13);
         v += 2.0f * u;
-        const float m15_18 = x15 * y18 - y15 * x18;
+        const ptp_4x4_vf m15_18 = x15 * y18 - y15 * x18;
         u = ((g0 * m15_18 - g15 * m0_18) + g18 * m0_15);
         u -= ((g5 * m8_20 - g8 * m5_20) + g20 * m5_8);
         v += 4.0f * u;
-        const float m12_21 = x12 * y21 - y12 * x21;
+        const ptp_4x4_vf m12_21 = x12 * y21 - y12 * x21;
         u = -((g0 * m12_21 - g12 * m0_21) + g21 * m0_12);
         u += ((g1 * m10_22 - g10 * m1_22) + g22 * m1_10);
         u -= ((g1 * m12_20 - g12 * m1_20) + g20 * m1_12);
         u += ((g2 * m10_21 - g10 * m2_21) + g21 * m2_10);
         v += 6.0f * u;
-        const float m16_17 = x16 * y17 - y16 * x17;
+        const ptp_4x4_vf m16_17 = x16 * y17 - y16 * x17;
         u = ((g0 * m16_17 - g16 * m0_17) + g17 * m0_16);
         u += ((g2 * m15_16 - g15 * m2_16) + g16 * m2_15);
         u -= ((g5 * m6_22 - g6 * m5_22) + g22 * m5_6);
@@ -6422,18 +6513,18 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g6 * m12_15 - g12 * m6_15) + g15 * m6_12);
         u += ((g7 * m10_16 - g10 * m7_16) + g16 * m7_10);
         v += 48.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 57 */
-        const float m10_24 = x10 * y24 - y10 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 57 */
+        const ptp_4x4_vf m10_24 = x10 * y24 - y10 * x24;
         u = ((g0 * m10_24 - g10 * m0_24) + g24 * m0_10);
         u += ((g4 * m10_20 - g10 * m4_20) + g20 * m4_10);
         v = u;
-        const float m14_20 = x14 * y20 - y14 * x20;
+        const ptp_4x4_vf m14_20 = x14 * y20 - y14 * x20;
         u = -((g0 * m14_20 - g14 * m0_20) + g20 * m0_14);
         v += 2.0f * u;
-        const float m11_23 = x11 * y23 - y11 * x23;
+        const ptp_4x4_vf m11_23 = x11 * y23 - y11 * x23;
         u = ((g0 * m11_23 - g11 * m0_23) + g23 * m0_11);
-        const float m15_19 = x15 * y19 - y15 * x19;
+        const ptp_4x4_vf m15_19 = x15 * y19 - y15 * x19;
         u += ((g0 * m15_19 - g15 * m0_19) + g19 * m0_15);
         u += ((g3 * m11_20 - g11 * m3_20) + g20 * m3_11);
         u -= ((g5 * m9_20 - g9 * m5_20) + g20 * m5_9);
@@ -6447,19 +6538,19 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g5 * m6_23 - g6 * m5_23) + g23 * m5_6);
         u -= ((g5 * m14_15 - g14 * m5_15) + g15 * m5_14);
         v += 16.0f * u;
-        const float m12_22 = x12 * y22 - y12 * x22;
+        const ptp_4x4_vf m12_22 = x12 * y22 - y12 * x22;
         u = -((g0 * m12_22 - g12 * m0_22) + g22 * m0_12);
         u -= ((g2 * m12_20 - g12 * m2_20) + g20 * m2_12);
         v += 18.0f * u;
-        const float m13_21 = x13 * y21 - y13 * x21;
+        const ptp_4x4_vf m13_21 = x13 * y21 - y13 * x21;
         u = -((g0 * m13_21 - g13 * m0_21) + g21 * m0_13);
         u -= ((g1 * m13_20 - g13 * m1_20) + g20 * m1_13);
         v += 20.0f * u;
-        const float m11_22 = x11 * y22 - y11 * x22;
+        const ptp_4x4_vf m11_22 = x11 * y22 - y11 * x22;
         u = ((g1 * m11_22 - g11 * m1_22) + g22 * m1_11);
         u += ((g2 * m11_21 - g11 * m2_21) + g21 * m2_11);
         v += 24.0f * u;
-        const float m16_18 = x16 * y18 - y16 * x18;
+        const ptp_4x4_vf m16_18 = x16 * y18 - y16 * x18;
         u = ((g0 * m16_18 - g16 * m0_18) + g18 * m0_16);
         u += ((g5 * m11_18 - g11 * m5_18) + g18 * m5_11);
         u -= ((g6 * m8_20 - g8 * m6_20) + g20 * m6_8);
@@ -6493,9 +6584,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 288.0f * u;
         u = -((g6 * m12_16 - g12 * m6_16) + g16 * m6_12);
         v += 384.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 58 */
-        const float m11_24 = x11 * y24 - y11 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 58 */
+        const ptp_4x4_vf m11_24 = x11 * y24 - y11 * x24;
         u = ((g0 * m11_24 - g11 * m0_24) + g24 * m0_11);
         u += ((g4 * m11_20 - g11 * m4_20) + g20 * m4_11);
         v = 2.0f * u;
@@ -6505,15 +6596,15 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = ((g1 * m10_24 - g10 * m1_24) + g24 * m1_10);
         u += ((g4 * m10_21 - g10 * m4_21) + g21 * m4_10);
         v += 5.0f * u;
-        const float m12_23 = x12 * y23 - y12 * x23;
+        const ptp_4x4_vf m12_23 = x12 * y23 - y12 * x23;
         u = -((g0 * m12_23 - g12 * m0_23) + g23 * m0_12);
         u -= ((g3 * m12_20 - g12 * m3_20) + g20 * m3_12);
         v += 6.0f * u;
-        const float m14_21 = x14 * y21 - y14 * x21;
+        const ptp_4x4_vf m14_21 = x14 * y21 - y14 * x21;
         u = -((g0 * m14_21 - g14 * m0_21) + g21 * m0_14);
         u -= ((g1 * m14_20 - g14 * m1_20) + g20 * m1_14);
         v += 7.0f * u;
-        const float m16_19 = x16 * y19 - y16 * x19;
+        const ptp_4x4_vf m16_19 = x16 * y19 - y16 * x19;
         u = ((g0 * m16_19 - g16 * m0_19) + g19 * m0_16);
         u -= ((g6 * m9_20 - g9 * m6_20) + g20 * m6_9);
         v += 12.0f * u;
@@ -6522,9 +6613,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u += ((g5 * m11_19 - g11 * m5_19) + g19 * m5_11);
         u += ((g9 * m11_15 - g11 * m9_15) + g15 * m9_11);
         v += 16.0f * u;
-        const float m13_22 = x13 * y22 - y13 * x22;
+        const ptp_4x4_vf m13_22 = x13 * y22 - y13 * x22;
         u = -((g0 * m13_22 - g13 * m0_22) + g22 * m0_13);
-        const float m17_18 = x17 * y18 - y17 * x18;
+        const ptp_4x4_vf m17_18 = x17 * y18 - y17 * x18;
         u += ((g0 * m17_18 - g17 * m0_18) + g18 * m0_17);
         u -= ((g2 * m13_20 - g13 * m2_20) + g20 * m2_13);
         u -= ((g7 * m8_20 - g8 * m7_20) + g20 * m7_8);
@@ -6577,17 +6668,17 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 512.0f * u;
         u = ((g7 * m11_17 - g11 * m7_17) + g17 * m7_11);
         v += 576.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 59 */
-        const float m14_22 = x14 * y22 - y14 * x22;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 59 */
+        const ptp_4x4_vf m14_22 = x14 * y22 - y14 * x22;
         u = -((g0 * m14_22 - g14 * m0_22) + g22 * m0_14);
         u += ((g2 * m10_24 - g10 * m2_24) + g24 * m2_10);
         u -= ((g2 * m14_20 - g14 * m2_20) + g20 * m2_14);
         u += ((g4 * m10_22 - g10 * m4_22) + g22 * m4_10);
         v = 3.0f * u;
-        const float m13_23 = x13 * y23 - y13 * x23;
+        const ptp_4x4_vf m13_23 = x13 * y23 - y13 * x23;
         u = -((g0 * m13_23 - g13 * m0_23) + g23 * m0_13);
-        const float m17_19 = x17 * y19 - y17 * x19;
+        const ptp_4x4_vf m17_19 = x17 * y19 - y17 * x19;
         u += ((g0 * m17_19 - g17 * m0_19) + g19 * m0_17);
         u += ((g1 * m11_24 - g11 * m1_24) + g24 * m1_11);
         u -= ((g3 * m13_20 - g13 * m3_20) + g20 * m3_13);
@@ -6634,21 +6725,21 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g7 * m13_16 - g13 * m7_16) + g16 * m7_13);
         u += ((g8 * m11_17 - g11 * m8_17) + g17 * m8_11);
         v += 192.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 60 */
-        const float m13_24 = x13 * y24 - y13 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 60 */
+        const ptp_4x4_vf m13_24 = x13 * y24 - y13 * x24;
         u = -((g0 * m13_24 - g13 * m0_24) + g24 * m0_13);
         u -= ((g4 * m13_20 - g13 * m4_20) + g20 * m4_13);
         v = 2.0f * u;
-        const float m18_19 = x18 * y19 - y18 * x19;
+        const ptp_4x4_vf m18_19 = x18 * y19 - y18 * x19;
         u = ((g0 * m18_19 - g18 * m0_19) + g19 * m0_18);
         u -= ((g8 * m9_20 - g9 * m8_20) + g20 * m8_9);
         v += 4.0f * u;
-        const float m14_23 = x14 * y23 - y14 * x23;
+        const ptp_4x4_vf m14_23 = x14 * y23 - y14 * x23;
         u = -((g0 * m14_23 - g14 * m0_23) + g23 * m0_14);
         u -= ((g3 * m14_20 - g14 * m3_20) + g20 * m3_14);
         v += 5.0f * u;
-        const float m12_24 = x12 * y24 - y12 * x24;
+        const ptp_4x4_vf m12_24 = x12 * y24 - y12 * x24;
         u = ((g1 * m12_24 - g12 * m1_24) + g24 * m1_12);
         u += ((g4 * m12_21 - g12 * m4_21) + g21 * m4_12);
         v += 6.0f * u;
@@ -6716,9 +6807,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 512.0f * u;
         u = -((g7 * m13_17 - g13 * m7_17) + g17 * m7_13);
         v += 576.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 61 */
-        const float m14_24 = x14 * y24 - y14 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 61 */
+        const ptp_4x4_vf m14_24 = x14 * y24 - y14 * x24;
         u = -((g0 * m14_24 - g14 * m0_24) + g24 * m0_14);
         u -= ((g4 * m14_20 - g14 * m4_20) + g20 * m4_14);
         v = u;
@@ -6780,8 +6871,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 288.0f * u;
         u = ((g8 * m12_18 - g12 * m8_18) + g18 * m8_12);
         v += 384.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 62 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 62 */
         u = -((g1 * m14_24 - g14 * m1_24) + g24 * m1_14);
         u -= ((g4 * m14_21 - g14 * m4_21) + g21 * m4_14);
         v = u;
@@ -6811,8 +6902,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g8 * m14_17 - g14 * m8_17) + g17 * m8_14);
         u += ((g9 * m12_18 - g12 * m9_18) + g18 * m9_12);
         v += 48.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 63 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 63 */
         u = -((g2 * m14_24 - g14 * m2_24) + g24 * m2_14);
         u -= ((g4 * m14_22 - g14 * m4_22) + g22 * m4_14);
         v = 3.0f * u;
@@ -6839,8 +6930,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 48.0f * u;
         u = -((g8 * m14_18 - g14 * m8_18) + g18 * m8_14);
         v += 64.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 64 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 64 */
         u = -((g3 * m14_24 - g14 * m3_24) + g24 * m3_14);
         u -= ((g4 * m14_23 - g14 * m4_23) + g23 * m4_14);
         v = u;
@@ -6854,15 +6945,15 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 8.0f * u;
         u = ((g9 * m13_19 - g13 * m9_19) + g19 * m9_13);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 65 */
-        const float m15_20 = x15 * y20 - y15 * x20;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 65 */
+        const ptp_4x4_vf m15_20 = x15 * y20 - y15 * x20;
         u = ((g1 * m15_20 - g15 * m1_20) + g20 * m1_15);
         v = u;
-        const float m15_21 = x15 * y21 - y15 * x21;
+        const ptp_4x4_vf m15_21 = x15 * y21 - y15 * x21;
         u = ((g0 * m15_21 - g15 * m0_21) + g21 * m0_15);
         v += 3.0f * u;
-        const float m16_20 = x16 * y20 - y16 * x20;
+        const ptp_4x4_vf m16_20 = x16 * y20 - y16 * x20;
         u = -((g0 * m16_20 - g16 * m0_20) + g20 * m0_16);
         v += 4.0f * u;
         u = ((g5 * m10_21 - g10 * m5_21) + g21 * m5_10);
@@ -6875,17 +6966,17 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = -((g10 * m11_15 - g11 * m10_15) + g15 * m10_11);
         v += 36.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 66 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 66 */
         u = ((g2 * m15_20 - g15 * m2_20) + g20 * m2_15);
         v = 3.0f * u;
-        const float m16_21 = x16 * y21 - y16 * x21;
+        const ptp_4x4_vf m16_21 = x16 * y21 - y16 * x21;
         u = -((g0 * m16_21 - g16 * m0_21) + g21 * m0_16);
         v += 4.0f * u;
-        const float m15_22 = x15 * y22 - y15 * x22;
+        const ptp_4x4_vf m15_22 = x15 * y22 - y15 * x22;
         u = ((g0 * m15_22 - g15 * m0_22) + g22 * m0_15);
         v += 9.0f * u;
-        const float m17_20 = x17 * y20 - y17 * x20;
+        const ptp_4x4_vf m17_20 = x17 * y20 - y17 * x20;
         u = -((g0 * m17_20 - g17 * m0_20) + g20 * m0_17);
         u -= ((g1 * m16_20 - g16 * m1_20) + g20 * m1_16);
         v += 12.0f * u;
@@ -6911,22 +7002,22 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g10 * m11_16 - g11 * m10_16) + g16 * m10_11);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 67 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 67 */
         u = ((g3 * m15_20 - g15 * m3_20) + g20 * m3_15);
         v = u;
-        const float m15_23 = x15 * y23 - y15 * x23;
+        const ptp_4x4_vf m15_23 = x15 * y23 - y15 * x23;
         u = ((g0 * m15_23 - g15 * m0_23) + g23 * m0_15);
         v += 3.0f * u;
-        const float m16_22 = x16 * y22 - y16 * x22;
+        const ptp_4x4_vf m16_22 = x16 * y22 - y16 * x22;
         u = ((g0 * m16_22 - g16 * m0_22) + g22 * m0_16);
-        const float m18_20 = x18 * y20 - y18 * x20;
+        const ptp_4x4_vf m18_20 = x18 * y20 - y18 * x20;
         u -= ((g0 * m18_20 - g18 * m0_20) + g20 * m0_18);
         u -= ((g2 * m16_20 - g16 * m2_20) + g20 * m2_16);
         v += 4.0f * u;
         u = ((g5 * m10_23 - g10 * m5_23) + g23 * m5_10);
         v += 6.0f * u;
-        const float m17_21 = x17 * y21 - y17 * x21;
+        const ptp_4x4_vf m17_21 = x17 * y21 - y17 * x21;
         u = -((g0 * m17_21 - g17 * m0_21) + g21 * m0_17);
         u += ((g2 * m15_21 - g15 * m2_21) + g21 * m2_15);
         v += 10.0f * u;
@@ -6959,14 +7050,14 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g10 * m12_16 - g12 * m10_16) + g16 * m10_12);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 68 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 68 */
         u = ((g4 * m15_20 - g15 * m4_20) + g20 * m4_15);
         v = u;
-        const float m15_24 = x15 * y24 - y15 * x24;
+        const ptp_4x4_vf m15_24 = x15 * y24 - y15 * x24;
         u = ((g0 * m15_24 - g15 * m0_24) + g24 * m0_15);
         v += 3.0f * u;
-        const float m19_20 = x19 * y20 - y19 * x20;
+        const ptp_4x4_vf m19_20 = x19 * y20 - y19 * x20;
         u = -((g0 * m19_20 - g19 * m0_20) + g20 * m0_19);
         u -= ((g3 * m16_20 - g16 * m3_20) + g20 * m3_16);
         v += 4.0f * u;
@@ -6974,11 +7065,11 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g9 * m10_20 - g10 * m9_20) + g20 * m9_10);
         v += 12.0f * u;
-        const float m17_22 = x17 * y22 - y17 * x22;
+        const ptp_4x4_vf m17_22 = x17 * y22 - y17 * x22;
         u = -((g0 * m17_22 - g17 * m0_22) + g22 * m0_17);
         u -= ((g5 * m14_20 - g14 * m5_20) + g20 * m5_14);
         v += 18.0f * u;
-        const float m16_23 = x16 * y23 - y16 * x23;
+        const ptp_4x4_vf m16_23 = x16 * y23 - y16 * x23;
         u = ((g0 * m16_23 - g16 * m0_23) + g23 * m0_16);
         v += 20.0f * u;
         u = ((g2 * m16_21 - g16 * m2_21) + g21 * m2_16);
@@ -6986,7 +7077,7 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 24.0f * u;
         u = ((g5 * m15_19 - g15 * m5_19) + g19 * m5_15);
         v += 32.0f * u;
-        const float m18_21 = x18 * y21 - y18 * x21;
+        const ptp_4x4_vf m18_21 = x18 * y21 - y18 * x21;
         u = -((g0 * m18_21 - g18 * m0_21) + g21 * m0_18);
         u -= ((g10 * m14_15 - g14 * m10_15) + g15 * m10_14);
         v += 36.0f * u;
@@ -7038,18 +7129,18 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = -((g11 * m12_16 - g12 * m11_16) + g16 * m11_12);
         v += 864.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 69 */
-        const float m17_23 = x17 * y23 - y17 * x23;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 69 */
+        const ptp_4x4_vf m17_23 = x17 * y23 - y17 * x23;
         u = ((g0 * m17_23 - g17 * m0_23) + g23 * m0_17);
         u += ((g5 * m11_24 - g11 * m5_24) + g24 * m5_11);
         v = 6.0f * u;
         u = ((g4 * m15_21 - g15 * m4_21) + g21 * m4_15);
         v += 7.0f * u;
-        const float m16_24 = x16 * y24 - y16 * x24;
+        const ptp_4x4_vf m16_24 = x16 * y24 - y16 * x24;
         u = ((g0 * m16_24 - g16 * m0_24) + g24 * m0_16);
         v += 8.0f * u;
-        const float m19_21 = x19 * y21 - y19 * x21;
+        const ptp_4x4_vf m19_21 = x19 * y21 - y19 * x21;
         u = -((g0 * m19_21 - g19 * m0_21) + g21 * m0_19);
         u += ((g1 * m15_24 - g15 * m1_24) + g24 * m1_15);
         v += 13.0f * u;
@@ -7061,7 +7152,7 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u = ((g3 * m16_21 - g16 * m3_21) + g21 * m3_16);
         u += ((g9 * m15_16 - g15 * m9_16) + g16 * m9_15);
         v += 32.0f * u;
-        const float m18_22 = x18 * y22 - y18 * x22;
+        const ptp_4x4_vf m18_22 = x18 * y22 - y18 * x22;
         u = -((g0 * m18_22 - g18 * m0_22) + g22 * m0_18);
         u -= ((g1 * m17_22 - g17 * m1_22) + g22 * m1_17);
         u += ((g6 * m10_24 - g10 * m6_24) + g24 * m6_10);
@@ -7121,17 +7212,17 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 1152.0f * u;
         u = -((g11 * m12_17 - g12 * m11_17) + g17 * m11_12);
         v += 1296.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 70 */
-        const float m17_24 = x17 * y24 - y17 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 70 */
+        const ptp_4x4_vf m17_24 = x17 * y24 - y17 * x24;
         u = ((g0 * m17_24 - g17 * m0_24) + g24 * m0_17);
         u -= ((g4 * m17_20 - g17 * m4_20) + g20 * m4_17);
         v = 2.0f * u;
-        const float m18_23 = x18 * y23 - y18 * x23;
+        const ptp_4x4_vf m18_23 = x18 * y23 - y18 * x23;
         u = -((g0 * m18_23 - g18 * m0_23) + g23 * m0_18);
         u += ((g4 * m16_21 - g16 * m4_21) + g21 * m4_16);
         v += 4.0f * u;
-        const float m19_22 = x19 * y22 - y19 * x22;
+        const ptp_4x4_vf m19_22 = x19 * y22 - y19 * x22;
         u = -((g0 * m19_22 - g19 * m0_22) + g22 * m0_19);
         u += ((g4 * m15_22 - g15 * m4_22) + g22 * m4_15);
         v += 5.0f * u;
@@ -7202,12 +7293,12 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 512.0f * u;
         u = -((g11 * m13_17 - g13 * m11_17) + g17 * m11_13);
         v += 576.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 71 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 71 */
         u = -((g4 * m17_21 - g17 * m4_21) + g21 * m4_17);
         u -= ((g9 * m13_20 - g13 * m9_20) + g20 * m9_13);
         v = 6.0f * u;
-        const float m19_23 = x19 * y23 - y19 * x23;
+        const ptp_4x4_vf m19_23 = x19 * y23 - y19 * x23;
         u = -((g0 * m19_23 - g19 * m0_23) + g23 * m0_19);
         v += 7.0f * u;
         u = -((g4 * m18_20 - g18 * m4_20) + g20 * m4_18);
@@ -7282,14 +7373,14 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 1152.0f * u;
         u = -((g12 * m13_17 - g13 * m12_17) + g17 * m12_13);
         v += 1296.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 72 */
-        const float m19_24 = x19 * y24 - y19 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 72 */
+        const ptp_4x4_vf m19_24 = x19 * y24 - y19 * x24;
         u = -((g0 * m19_24 - g19 * m0_24) + g24 * m0_19);
         v = u;
         u = -((g4 * m19_20 - g19 * m4_20) + g20 * m4_19);
         v += 3.0f * u;
-        const float m18_24 = x18 * y24 - y18 * x24;
+        const ptp_4x4_vf m18_24 = x18 * y24 - y18 * x24;
         u = ((g1 * m18_24 - g18 * m1_24) + g24 * m1_18);
         u += ((g4 * m15_24 - g15 * m4_24) + g24 * m4_15);
         v += 4.0f * u;
@@ -7358,8 +7449,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = -((g12 * m13_18 - g13 * m12_18) + g18 * m12_13);
         v += 864.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 73 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 73 */
         u = -((g1 * m19_24 - g19 * m1_24) + g24 * m1_19);
         v = u;
         u = -((g4 * m19_21 - g19 * m4_21) + g21 * m4_19);
@@ -7402,8 +7493,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g12 * m14_18 - g14 * m12_18) + g18 * m12_14);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 74 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 74 */
         u = -((g2 * m19_24 - g19 * m2_24) + g24 * m2_19);
         v = 3.0f * u;
         u = ((g4 * m18_23 - g18 * m4_23) + g23 * m4_18);
@@ -7435,8 +7526,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g13 * m14_18 - g14 * m13_18) + g18 * m13_14);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 75 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 75 */
         u = -((g3 * m19_24 - g19 * m3_24) + g24 * m3_19);
         v = u;
         u = -((g4 * m19_23 - g19 * m4_23) + g23 * m4_19);
@@ -7453,9 +7544,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = -((g13 * m14_19 - g14 * m13_19) + g19 * m13_14);
         v += 36.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 76 */
-        const float m20_21 = x20 * y21 - y20 * x21;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 76 */
+        const ptp_4x4_vf m20_21 = x20 * y21 - y20 * x21;
         u = ((g0 * m20_21 - g20 * m0_21) + g21 * m0_20);
         v = u;
         u = ((g6 * m15_20 - g15 * m6_20) + g20 * m6_15);
@@ -7468,9 +7559,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g10 * m15_16 - g15 * m10_16) + g16 * m10_15);
         v += 24.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 77 */
-        const float m20_22 = x20 * y22 - y20 * x22;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 77 */
+        const ptp_4x4_vf m20_22 = x20 * y22 - y20 * x22;
         u = ((g0 * m20_22 - g20 * m0_22) + g22 * m0_20);
         v = 3.0f * u;
         u = ((g1 * m20_21 - g20 * m1_21) + g21 * m1_20);
@@ -7494,12 +7585,12 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g11 * m15_16 - g15 * m11_16) + g16 * m11_15);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 78 */
-        const float m20_23 = x20 * y23 - y20 * x23;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 78 */
+        const ptp_4x4_vf m20_23 = x20 * y23 - y20 * x23;
         u = ((g0 * m20_23 - g20 * m0_23) + g23 * m0_20);
         v = u;
-        const float m21_22 = x21 * y22 - y21 * x22;
+        const ptp_4x4_vf m21_22 = x21 * y22 - y21 * x22;
         u = ((g0 * m21_22 - g21 * m0_22) + g22 * m0_21);
         u += ((g2 * m20_21 - g20 * m2_21) + g21 * m2_20);
         v += 2.0f * u;
@@ -7532,15 +7623,15 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g11 * m15_17 - g15 * m11_17) + g17 * m11_15);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 79 */
-        const float m20_24 = x20 * y24 - y20 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 79 */
+        const ptp_4x4_vf m20_24 = x20 * y24 - y20 * x24;
         u = ((g0 * m20_24 - g20 * m0_24) + g24 * m0_20);
         v = u;
         u = ((g3 * m20_21 - g20 * m3_21) + g21 * m3_20);
         u += ((g9 * m15_20 - g15 * m9_20) + g20 * m9_15);
         v += 4.0f * u;
-        const float m21_23 = x21 * y23 - y21 * x23;
+        const ptp_4x4_vf m21_23 = x21 * y23 - y21 * x23;
         u = ((g0 * m21_23 - g21 * m0_23) + g23 * m0_21);
         u += ((g5 * m15_24 - g15 * m5_24) + g24 * m5_15);
         v += 8.0f * u;
@@ -7587,17 +7678,17 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 432.0f * u;
         u = ((g11 * m16_17 - g16 * m11_17) + g17 * m11_16);
         v += 576.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 80 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 80 */
         u = ((g4 * m20_21 - g20 * m4_21) + g21 * m4_20);
         v = u;
-        const float m21_24 = x21 * y24 - y21 * x24;
+        const ptp_4x4_vf m21_24 = x21 * y24 - y21 * x24;
         u = ((g0 * m21_24 - g21 * m0_24) + g24 * m0_21);
         v += 3.0f * u;
         u = ((g1 * m20_24 - g20 * m1_24) + g24 * m1_20);
         u += ((g9 * m16_20 - g16 * m9_20) + g20 * m9_16);
         v += 4.0f * u;
-        const float m22_23 = x22 * y23 - y22 * x23;
+        const ptp_4x4_vf m22_23 = x22 * y23 - y22 * x23;
         u = ((g0 * m22_23 - g22 * m0_23) + g23 * m0_22);
         v += 6.0f * u;
         u = ((g3 * m20_22 - g20 * m3_22) + g22 * m3_20);
@@ -7663,9 +7754,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = ((g12 * m16_17 - g16 * m12_17) + g17 * m12_16);
         v += 864.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 81 */
-        const float m22_24 = x22 * y24 - y22 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 81 */
+        const ptp_4x4_vf m22_24 = x22 * y24 - y22 * x24;
         u = ((g0 * m22_24 - g22 * m0_24) + g24 * m0_22);
         u += ((g4 * m20_22 - g20 * m4_22) + g22 * m4_20);
         v = u;
@@ -7727,9 +7818,9 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 288.0f * u;
         u = ((g12 * m16_18 - g16 * m12_18) + g18 * m12_16);
         v += 384.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 82 */
-        const float m23_24 = x23 * y24 - y23 * x24;
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 82 */
+        const ptp_4x4_vf m23_24 = x23 * y24 - y23 * x24;
         u = ((g0 * m23_24 - g23 * m0_24) + g24 * m0_23);
         v = u;
         u = ((g4 * m20_23 - g20 * m4_23) + g23 * m4_20);
@@ -7802,8 +7893,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = ((g12 * m17_18 - g17 * m12_18) + g18 * m12_17);
         v += 864.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 83 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 83 */
         u = ((g4 * m20_24 - g20 * m4_24) + g24 * m4_20);
         v = u;
         u = ((g1 * m23_24 - g23 * m1_24) + g24 * m1_23);
@@ -7855,8 +7946,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 432.0f * u;
         u = ((g13 * m17_18 - g17 * m13_18) + g18 * m13_17);
         v += 576.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 84 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 84 */
         u = ((g4 * m21_24 - g21 * m4_24) + g24 * m4_21);
         v = u;
         u = ((g2 * m23_24 - g23 * m2_24) + g24 * m2_23);
@@ -7891,8 +7982,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g13 * m17_19 - g17 * m13_19) + g19 * m13_17);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 85 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 85 */
         u = ((g4 * m22_24 - g22 * m4_24) + g24 * m4_22);
         v = 3.0f * u;
         u = ((g3 * m23_24 - g23 * m3_24) + g24 * m3_23);
@@ -7916,8 +8007,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g13 * m18_19 - g18 * m13_19) + g19 * m13_18);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 86 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 86 */
         u = ((g4 * m23_24 - g23 * m4_24) + g24 * m4_23);
         v = u;
         u = -((g8 * m19_24 - g19 * m8_24) + g24 * m8_19);
@@ -7930,8 +8021,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g14 * m18_19 - g18 * m14_19) + g19 * m14_18);
         v += 24.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 87 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 87 */
         u = ((g5 * m20_21 - g20 * m5_21) + g21 * m5_20);
         v = u;
         u = ((g10 * m15_21 - g15 * m10_21) + g21 * m10_15);
@@ -7939,8 +8030,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = -((g10 * m16_20 - g16 * m10_20) + g20 * m10_16);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 88 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 88 */
         u = ((g5 * m20_22 - g20 * m5_22) + g22 * m5_20);
         v = 3.0f * u;
         u = ((g6 * m20_21 - g20 * m6_21) + g21 * m6_20);
@@ -7955,8 +8046,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g11 * m15_21 - g15 * m11_21) + g21 * m11_15);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 89 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 89 */
         u = ((g5 * m20_23 - g20 * m5_23) + g23 * m5_20);
         v = u;
         u = ((g5 * m21_22 - g21 * m5_22) + g22 * m5_21);
@@ -7972,8 +8063,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g11 * m17_20 - g17 * m11_20) + g20 * m11_17);
         u += ((g12 * m15_21 - g15 * m12_21) + g21 * m12_15);
         v += 12.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 90 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 90 */
         u = ((g5 * m20_24 - g20 * m5_24) + g24 * m5_20);
         v = u;
         u = ((g10 * m15_24 - g15 * m10_24) + g24 * m10_15);
@@ -8008,8 +8099,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g11 * m17_21 - g17 * m11_21) + g21 * m11_17);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 91 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 91 */
         u = ((g9 * m20_21 - g20 * m9_21) + g21 * m9_20);
         v = u;
         u = ((g5 * m21_24 - g21 * m5_24) + g24 * m5_21);
@@ -8052,8 +8143,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g12 * m16_22 - g16 * m12_22) + g22 * m12_16);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 92 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 92 */
         u = ((g5 * m22_24 - g22 * m5_24) + g24 * m5_22);
         u += ((g9 * m20_22 - g20 * m9_22) + g22 * m9_20);
         v = u;
@@ -8083,8 +8174,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g12 * m18_21 - g18 * m12_21) + g21 * m12_18);
         u += ((g13 * m16_22 - g16 * m13_22) + g22 * m13_16);
         v += 48.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 93 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 93 */
         u = ((g5 * m23_24 - g23 * m5_24) + g24 * m5_23);
         v = u;
         u = ((g9 * m20_23 - g20 * m9_23) + g23 * m9_20);
@@ -8127,8 +8218,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g12 * m18_22 - g18 * m12_22) + g22 * m12_18);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 94 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 94 */
         u = ((g9 * m20_24 - g20 * m9_24) + g24 * m9_20);
         v = u;
         u = -((g10 * m19_24 - g19 * m10_24) + g24 * m10_19);
@@ -8163,8 +8254,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g13 * m17_23 - g17 * m13_23) + g23 * m13_17);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 95 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 95 */
         u = ((g9 * m21_24 - g21 * m9_24) + g24 * m9_21);
         v = u;
         u = ((g7 * m23_24 - g23 * m7_24) + g24 * m7_23);
@@ -8180,8 +8271,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g13 * m19_22 - g19 * m13_22) + g22 * m13_19);
         u += ((g14 * m17_23 - g17 * m14_23) + g23 * m14_17);
         v += 12.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 96 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 96 */
         u = ((g9 * m22_24 - g22 * m9_24) + g24 * m9_22);
         v = 3.0f * u;
         u = ((g8 * m23_24 - g23 * m8_24) + g24 * m8_23);
@@ -8196,8 +8287,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g13 * m19_23 - g19 * m13_23) + g23 * m13_19);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 97 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 97 */
         u = ((g9 * m23_24 - g23 * m9_24) + g24 * m9_23);
         v = u;
         u = -((g13 * m19_24 - g19 * m13_24) + g24 * m13_19);
@@ -8205,14 +8296,14 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = ((g14 * m18_24 - g18 * m14_24) + g24 * m14_18);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 98 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 98 */
         u = ((g10 * m20_21 - g20 * m10_21) + g21 * m10_20);
         v = 3.0f * u;
         u = -((g15 * m16_20 - g16 * m15_20) + g20 * m15_16);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 99 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 99 */
         u = ((g10 * m20_22 - g20 * m10_22) + g22 * m10_20);
         v = 9.0f * u;
         u = ((g11 * m20_21 - g20 * m11_21) + g21 * m11_20);
@@ -8220,8 +8311,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g15 * m16_21 - g16 * m15_21) + g21 * m15_16);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 100 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 100 */
         u = ((g10 * m20_23 - g20 * m10_23) + g23 * m10_20);
         v = 3.0f * u;
         u = -((g15 * m18_20 - g18 * m15_20) + g20 * m15_18);
@@ -8236,8 +8327,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g15 * m17_21 - g17 * m15_21) + g21 * m15_17);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 101 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 101 */
         u = ((g10 * m20_24 - g20 * m10_24) + g24 * m10_20);
         v = 3.0f * u;
         u = -((g15 * m19_20 - g19 * m15_20) + g20 * m15_19);
@@ -8261,8 +8352,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g16 * m17_21 - g17 * m16_21) + g21 * m16_17);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 102 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 102 */
         u = ((g14 * m20_21 - g20 * m14_21) + g21 * m14_20);
         v = 3.0f * u;
         u = -((g15 * m16_24 - g16 * m15_24) + g24 * m15_16);
@@ -8294,8 +8385,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g16 * m17_22 - g17 * m16_22) + g22 * m16_17);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 103 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 103 */
         u = ((g10 * m22_24 - g22 * m10_24) + g24 * m10_22);
         u += ((g14 * m20_22 - g20 * m14_22) + g22 * m14_20);
         v = 3.0f * u;
@@ -8322,8 +8413,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 48.0f * u;
         u = -((g16 * m18_22 - g18 * m16_22) + g22 * m16_18);
         v += 64.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 104 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 104 */
         u = ((g10 * m23_24 - g23 * m10_24) + g24 * m10_23);
         v = 3.0f * u;
         u = -((g18 * m19_20 - g19 * m18_20) + g20 * m18_19);
@@ -8355,8 +8446,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g17 * m18_22 - g18 * m17_22) + g22 * m17_18);
         v += 144.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 105 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 105 */
         u = ((g14 * m20_24 - g20 * m14_24) + g24 * m14_20);
         v = 3.0f * u;
         u = -((g15 * m19_24 - g19 * m15_24) + g24 * m15_19);
@@ -8380,8 +8471,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g17 * m18_23 - g18 * m17_23) + g23 * m17_18);
         v += 96.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 106 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 106 */
         u = ((g14 * m21_24 - g21 * m14_24) + g24 * m14_21);
         v = 3.0f * u;
         u = -((g16 * m19_24 - g19 * m16_24) + g24 * m16_19);
@@ -8396,8 +8487,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g17 * m19_23 - g19 * m17_23) + g23 * m17_19);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 107 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 107 */
         u = ((g14 * m22_24 - g22 * m14_24) + g24 * m14_22);
         v = 9.0f * u;
         u = ((g13 * m23_24 - g23 * m13_24) + g24 * m13_23);
@@ -8405,24 +8496,24 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g18 * m19_23 - g19 * m18_23) + g23 * m18_19);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 108 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 108 */
         u = ((g14 * m23_24 - g23 * m14_24) + g24 * m14_23);
         v = 3.0f * u;
         u = -((g18 * m19_24 - g19 * m18_24) + g24 * m18_19);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 109 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 109 */
         u = ((g15 * m20_21 - g20 * m15_21) + g21 * m15_20);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 110 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 110 */
         u = ((g15 * m20_22 - g20 * m15_22) + g22 * m15_20);
         v = 3.0f * u;
         u = ((g16 * m20_21 - g20 * m16_21) + g21 * m16_20);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 111 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 111 */
         u = ((g15 * m20_23 - g20 * m15_23) + g23 * m15_20);
         v = u;
         u = ((g15 * m21_22 - g21 * m15_22) + g22 * m15_21);
@@ -8430,8 +8521,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = ((g16 * m20_22 - g20 * m16_22) + g22 * m16_20);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 112 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 112 */
         u = ((g15 * m20_24 - g20 * m15_24) + g24 * m15_20);
         v = u;
         u = ((g18 * m20_21 - g20 * m18_21) + g21 * m18_20);
@@ -8444,8 +8535,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g16 * m21_22 - g21 * m16_22) + g22 * m16_21);
         v += 24.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 113 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 113 */
         u = ((g19 * m20_21 - g20 * m19_21) + g21 * m19_20);
         v = u;
         u = ((g15 * m21_24 - g21 * m15_24) + g24 * m15_21);
@@ -8462,8 +8553,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = ((g17 * m21_22 - g21 * m17_22) + g22 * m17_21);
         v += 36.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 114 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 114 */
         u = ((g15 * m22_24 - g22 * m15_24) + g24 * m15_22);
         u += ((g19 * m20_22 - g20 * m19_22) + g22 * m19_20);
         v = u;
@@ -8477,8 +8568,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 8.0f * u;
         u = ((g17 * m21_23 - g21 * m17_23) + g23 * m17_21);
         v += 16.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 115 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 115 */
         u = ((g15 * m23_24 - g23 * m15_24) + g24 * m15_23);
         v = u;
         u = ((g19 * m20_23 - g20 * m19_23) + g23 * m19_20);
@@ -8495,8 +8586,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = ((g17 * m22_23 - g22 * m17_23) + g23 * m17_22);
         v += 36.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 116 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 116 */
         u = ((g19 * m20_24 - g20 * m19_24) + g24 * m19_20);
         v = u;
         u = ((g16 * m23_24 - g23 * m16_24) + g24 * m16_23);
@@ -8509,8 +8600,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g18 * m22_23 - g22 * m18_23) + g23 * m18_22);
         v += 24.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 117 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 117 */
         u = ((g19 * m21_24 - g21 * m19_24) + g24 * m19_21);
         v = u;
         u = ((g17 * m23_24 - g23 * m17_24) + g24 * m17_23);
@@ -8518,21 +8609,23 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = ((g18 * m22_24 - g22 * m18_24) + g24 * m18_22);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 118 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 118 */
         u = ((g19 * m22_24 - g22 * m19_24) + g24 * m19_22);
         v = 3.0f * u;
         u = ((g18 * m23_24 - g23 * m18_24) + g24 * m18_23);
         v += 4.0f * u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 119 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 119 */
         u = ((g19 * m23_24 - g23 * m19_24) + g24 * m19_23);
         v = u;
-        notlt |= !(v < 0.0f);
-        notgt |= !(v > 0.0f); /* plane 120 */
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 120 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches, so that the loop vectorizes. */
-        cls[l] = (unsigned char)((1u - notlt) + 2u * (notlt & notgt));
+         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
+        notlt &= 1;
+        notgt &= 1;
+        ptp_4x4_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
 }
 #if defined(__GNUC__) && !defined(__clang__)
@@ -8557,7 +8650,7 @@ void ptp_4x4_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 {
     float soa[PTP_4X4_POINTS * 4 * PTP_4X4_LANES];
     size_t p, l, n;
-    unsigned k, c;
+    unsigned k;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_4X4_LANES ? patch_count - p : PTP_4X4_LANES;
         l = 0;
@@ -8571,14 +8664,24 @@ void ptp_4x4_classify_batch(const float (*cp)[4], size_t patch_count, const floa
                 _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
                 _mm_storeu_ps(soa + (k * 4 + 0) * PTP_4X4_LANES + l, r0);
                 _mm_storeu_ps(soa + (k * 4 + 1) * PTP_4X4_LANES + l, r1);
-                _mm_storeu_ps(soa + (k * 4 + 2) * PTP_4X4_LANES + l, r2);
                 _mm_storeu_ps(soa + (k * 4 + 3) * PTP_4X4_LANES + l, r3);
             }
 #endif
         for (; l < n; l++)
             for (k = 0; k < PTP_4X4_POINTS; k++)
-                for (c = 0; c < 4; c++)
-                    soa[(k * 4 + c) * PTP_4X4_LANES + l] = cp[(p + l) * PTP_4X4_POINTS + k][c];
+            {
+                soa[(k * 4 + 0) * PTP_4X4_LANES + l] = cp[(p + l) * PTP_4X4_POINTS + k][0];
+                soa[(k * 4 + 1) * PTP_4X4_LANES + l] = cp[(p + l) * PTP_4X4_POINTS + k][1];
+                soa[(k * 4 + 3) * PTP_4X4_LANES + l] = cp[(p + l) * PTP_4X4_POINTS + k][3];
+            }
+#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+        {
+            const char *next = (const char *)(cp + (p + n) * PTP_4X4_POINTS);
+            size_t b, m = patch_count - p - n < PTP_4X4_LANES ? patch_count - p - n : PTP_4X4_LANES;
+            for (b = 0; b < m * PTP_4X4_POINTS * sizeof *cp; b += 64)
+                __builtin_prefetch(next + b, 0, 0);
+        }
+#endif
         ptp_4x4_lanes(soa, PTP_4X4_LANES, n, eye, cls + p);
     }
 }
