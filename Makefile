@@ -71,9 +71,9 @@ $(B)/bench_gen: bench/bench_gen.c
 # time. The hosts are built when their libraries are there; a missing one makes its rows unavailable.
 BENCH_DEGREES = 2x2 3x3 4x4
 BENCH_CFLAGS = -O3 -march=native
-# clang by default where installed: it vectorizes the emitted loop well and in seconds, while gcc 12
-# needs -O3, takes minutes for 4x4 and runs it slower (make bench BENCH_CC=gcc to compare).
-BENCH_CC ?= $(shell command -v clang >/dev/null 2>&1 && echo clang || echo $(CC))
+# $(CC) by default; make bench BENCH_CC=clang to compare (gcc runs the header's GNU C vectors,
+# clang its own vectorization of the loop).
+BENCH_CC ?= $(CC)
 
 # Variants of the bicubic header whose batch path is timed too: --refine 3 and --certified.
 BENCH_VARIANTS = refine3 certified
@@ -83,11 +83,16 @@ bench: ptpgen $(B)/bench/peak $(addprefix $(B)/bench/bench_cull_,$(BENCH_DEGREES
 	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan >$(B)/bench/hosts.log 2>&1 || true
 	@bash bench/run_bench.sh $(B) $(BENCH_CC) "$(BENCH_CFLAGS)" $(BENCH_DEGREES)
 
+# The benchmark's compiler and flags: a change rebuilds the benchmarks.
+$(B)/bench/cc.txt: FORCE
+	@mkdir -p $(@D)
+	@echo '$(BENCH_CC) $(BENCH_CFLAGS)' | cmp -s - $@ || echo '$(BENCH_CC) $(BENCH_CFLAGS)' >$@
+
 $(B)/bench/ptp_%.h: $(B)/ptpgen
 	@mkdir -p $(@D)
 	$(B)/ptpgen --degree $* --target c --space clip --rule strict --prefix ptp_$*_ -o $@
 
-$(B)/bench/bench_cull_%: bench/bench_cull.c $(B)/bench/ptp_%.h Makefile
+$(B)/bench/bench_cull_%: bench/bench_cull.c $(B)/bench/ptp_%.h Makefile $(B)/bench/cc.txt
 	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -D_GNU_SOURCE -include $(B)/bench/ptp_$*.h \
 	    -DPTP_$(subst x,X,$*)_IMPLEMENTATION -DPFX=ptp_$*_ -DUPFX=PTP_$(subst x,X,$*)_ \
 	    -DDEGREE='"$*"' -o $@ $< -lm -pthread
@@ -100,13 +105,13 @@ $(B)/bench/ptp_3x3_certified.h: $(B)/ptpgen
 	@mkdir -p $(@D)
 	$(B)/ptpgen --degree 3 --target c --certified --prefix ptp_3x3_ -o $@
 
-$(B)/bench/bench_cull_3x3_%: bench/bench_cull.c $(B)/bench/ptp_3x3_%.h Makefile
+$(B)/bench/bench_cull_3x3_%: bench/bench_cull.c $(B)/bench/ptp_3x3_%.h Makefile $(B)/bench/cc.txt
 	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -D_GNU_SOURCE -include $(B)/bench/ptp_3x3_$*.h \
 	    -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ -DDEGREE='"3x3"' \
 	    -DVARIANT='"$(subst refine,--refine ,$(subst certified,--certified,$*))"' -o $@ $< -lm -pthread
 
 # The peak: FMA and add chains, with a * b + c contracted into FMAs.
-$(B)/bench/peak: bench/peak.c Makefile
+$(B)/bench/peak: bench/peak.c Makefile $(B)/bench/cc.txt
 	@mkdir -p $(@D)
 	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -ffp-contract=fast -o $@ $< -pthread
 
