@@ -14,10 +14,12 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
     sbuf_printf(o,
+                "/* From here through lanes gcc contracts no product into an FMA; one region, because gcc\n"
+                " * does not inline across optimize options (cross4 into planes and values). */\n"
+                "#if defined(__GNUC__) && !defined(__clang__)\n"
+                "#pragma GCC push_options\n#pragma GCC optimize(\"fp-contract=off\")\n#endif\n\n"
                 "/* cross4 of Appendix A of Loop, Niessner and Eisenacher (2011): r . x = -det[a b c x].\n"
                 " * Its products are never contracted into FMAs, so two equal points give exactly 0. */\n"
-                "#if defined(__GNUC__) && !defined(__clang__)\n"
-                "#pragma GCC push_options\n#pragma GCC optimize(\"fp-contract=off\")\n#endif\n"
                 "static void %scross4(float r[4], const float a[4], const float b[4], const float c[4])\n{\n"
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n"
                 "    r[0] = a[1] * (b[2] * c[3] - b[3] * c[2]) - b[1] * (a[2] * c[3] - a[3] * c[2]) +\n"
@@ -27,8 +29,7 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
                 "    r[2] = a[0] * (b[1] * c[3] - b[3] * c[1]) - b[0] * (a[1] * c[3] - a[3] * c[1]) +\n"
                 "           c[0] * (a[1] * b[3] - a[3] * b[1]);\n"
                 "    r[3] = -(a[0] * (b[1] * c[2] - b[2] * c[1]) - b[0] * (a[1] * c[2] - a[2] * c[1]) +\n"
-                "             c[0] * (a[1] * b[2] - a[2] * b[1]));\n}\n"
-                "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n",
+                "             c[0] * (a[1] * b[2] - a[2] * b[1]));\n}\n\n",
                 px);
     sbuf_printf(o,
                 "void %splanes(const float cp[][4], float t[][4])\n{\n"
@@ -299,7 +300,6 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                 " * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last\n"
                 " * one. Products are never contracted into FMAs: equal points give exact zeros. */\n"
                 "#if defined(__GNUC__) && !defined(__clang__)\n"
-                "#pragma GCC push_options\n#pragma GCC optimize(\"fp-contract=off\")\n"
                 "__attribute__((noinline, noclone)) /* one copy: it is large */\n"
                 "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
                 "static void %slanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],\n"

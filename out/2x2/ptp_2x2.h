@@ -275,12 +275,15 @@ static const float ptp_2x2_wgt[PTP_2X2_TERMS] = {
     4.0f,            /* 4 */
 };
 
-/* cross4 of Appendix A of Loop, Niessner and Eisenacher (2011): r . x = -det[a b c x].
- * Its products are never contracted into FMAs, so two equal points give exactly 0. */
+/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes and values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
 #endif
+
+/* cross4 of Appendix A of Loop, Niessner and Eisenacher (2011): r . x = -det[a b c x].
+ * Its products are never contracted into FMAs, so two equal points give exactly 0. */
 static void ptp_2x2_cross4(float r[4], const float a[4], const float b[4], const float c[4])
 {
 #if defined(__clang__)
@@ -295,9 +298,6 @@ static void ptp_2x2_cross4(float r[4], const float a[4], const float b[4], const
     r[3] = -(a[0] * (b[1] * c[2] - b[2] * c[1]) - b[0] * (a[1] * c[2] - a[2] * c[1]) +
              c[0] * (a[1] * b[2] - a[2] * b[1]));
 }
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC pop_options
-#endif
 
 void ptp_2x2_planes(const float cp[][4], float t[][4])
 {
@@ -334,8 +334,6 @@ void ptp_2x2_values(const float cp[][4], const float eye[4], float d[])
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
  * one. Products are never contracted into FMAs: equal points give exact zeros. */
 #if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC push_options
-#pragma GCC optimize("fp-contract=off")
 __attribute__((noinline, noclone)) /* one copy: it is large */
 #elif defined(__clang__)
 __attribute__((noinline))
