@@ -10,9 +10,23 @@
 #include <string.h>
 
 /* The implementation: cross4, planes, values, classify and classify_batch. */
+/* Appends component i of cross4(a, b, c) (Appendix A): +-det of the rows other than i, expanded
+ * along the first of them; cast (e.g. "(double)") converts the first factor of every product of
+ * a 2x2 minor, and ind is the indentation of continuation lines. */
+static void put_cross4_component(sbuf *o, int i, const char *cast, int ind)
+{
+    int p = i == 0 ? 1 : 0, q = i <= 1 ? 2 : 1, s = i == 3 ? 2 : 3, neg = i % 2;
+    sbuf_printf(o, "%sa[%d] * (%sb[%d] * c[%d] - %sb[%d] * c[%d]) -\n"
+                   "%*s%sb[%d] * (%sa[%d] * c[%d] - %sa[%d] * c[%d]) +\n"
+                   "%*s%sc[%d] * (%sa[%d] * b[%d] - %sa[%d] * b[%d])%s",
+                neg ? "-(" : "", p, cast, q, s, cast, s, q, ind, "", neg ? "  " : "", p, cast, q, s,
+                cast, s, q, ind, "", neg ? "  " : "", p, cast, q, s, cast, s, q, neg ? ")" : "");
+}
+
 static void put_functions(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
+    int i;
     sbuf_printf(o,
                 "/* From here through lanes gcc contracts no product into an FMA; one region, because gcc\n"
                 " * does not inline across optimize options (cross4 into planes and values). */\n"
@@ -21,16 +35,14 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
                 "/* cross4 of Appendix A of Loop, Niessner and Eisenacher (2011): r . x = -det[a b c x].\n"
                 " * Its products are never contracted into FMAs, so two equal points give exactly 0. */\n"
                 "static void %scross4(float r[4], const float a[4], const float b[4], const float c[4])\n{\n"
-                "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n"
-                "    r[0] = a[1] * (b[2] * c[3] - b[3] * c[2]) - b[1] * (a[2] * c[3] - a[3] * c[2]) +\n"
-                "           c[1] * (a[2] * b[3] - a[3] * b[2]);\n"
-                "    r[1] = -(a[0] * (b[2] * c[3] - b[3] * c[2]) - b[0] * (a[2] * c[3] - a[3] * c[2]) +\n"
-                "             c[0] * (a[2] * b[3] - a[3] * b[2]));\n"
-                "    r[2] = a[0] * (b[1] * c[3] - b[3] * c[1]) - b[0] * (a[1] * c[3] - a[3] * c[1]) +\n"
-                "           c[0] * (a[1] * b[3] - a[3] * b[1]);\n"
-                "    r[3] = -(a[0] * (b[1] * c[2] - b[2] * c[1]) - b[0] * (a[1] * c[2] - a[2] * c[1]) +\n"
-                "             c[0] * (a[1] * b[2] - a[2] * b[1]));\n}\n\n",
+                "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
                 px);
+    for (i = 0; i < 4; i++) {
+        sbuf_printf(o, "    r[%d] = ", i);
+        put_cross4_component(o, i, "", 11);
+        sbuf_puts(o, ";\n");
+    }
+    sbuf_puts(o, "}\n\n");
     sbuf_printf(o,
                 "void %splanes(const float cp[][4], float t[][4])\n{\n"
                 "    unsigned x, c;\n"
@@ -201,7 +213,7 @@ static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const
     double *w = malloc((t->nterms + 1) * sizeof *w);
     cert_bounds cb = {0};
     size_t i;
-    int st = w ? cert_table(&cb, t, world, err)
+    int k, st = w ? cert_table(&cb, t, world, err)
                : ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
     if (st) {
         free(w);
@@ -218,47 +230,39 @@ static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const
                 " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
                 "static unsigned %scertify64(const float cp[][4], const float eye[4])\n{\n"
                 "    double d[%sPLANES], R = 0, E = 0, ER3, F;\n"
-                "    unsigned x, c, notlt = 0, notgt = 0;\n"
+                "    unsigned x, k, notlt = 0, notgt = 0;\n"
                 "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
                 "    for (x = 0; x < %sPOINTS; x++)\n"
-                "        for (c = 0; c < 4; c++)\n"
+                "        for (k = 0; k < 4; k++)\n"
                 "            if (%s)\n"
-                "                R = %sABSMAX(R, (double)cp[x][c]);\n"
-                "    for (c = 0; c < 4; c++)\n"
+                "                R = %sABSMAX(R, (double)cp[x][k]);\n"
+                "    for (k = 0; k < 4; k++)\n"
                 "        if (%s)\n"
-                "            E = %sABSMAX(E, (double)eye[c]);\n"
+                "            E = %sABSMAX(E, (double)eye[k]);\n"
                 "    ER3 = E * (R * R * R);\n"
                 "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
                 "    for (x = 0; x < %sTERMS; x++) {\n"
-                "        const float *a = cp[%sidx[x][1]], *b = cp[%sidx[x][2]], *e = cp[%sidx[x][3]];\n",
-                px, up, up, up, world ? "1" : "c != 2", up, world ? "1" : "c == 2", up, up, px, px, px);
-    if (world)
-        sbuf_printf(o,
-                    "        double r[4];\n"
-                    "        r[0] = a[1] * ((double)b[2] * e[3] - (double)b[3] * e[2]) -\n"
-                    "               b[1] * ((double)a[2] * e[3] - (double)a[3] * e[2]) +\n"
-                    "               e[1] * ((double)a[2] * b[3] - (double)a[3] * b[2]);\n"
-                    "        r[1] = -(a[0] * ((double)b[2] * e[3] - (double)b[3] * e[2]) -\n"
-                    "                 b[0] * ((double)a[2] * e[3] - (double)a[3] * e[2]) +\n"
-                    "                 e[0] * ((double)a[2] * b[3] - (double)a[3] * b[2]));\n"
-                    "        r[2] = a[0] * ((double)b[1] * e[3] - (double)b[3] * e[1]) -\n"
-                    "               b[0] * ((double)a[1] * e[3] - (double)a[3] * e[1]) +\n"
-                    "               e[0] * ((double)a[1] * b[3] - (double)a[3] * b[1]);\n"
-                    "        r[3] = -(a[0] * ((double)b[1] * e[2] - (double)b[2] * e[1]) -\n"
-                    "                 b[0] * ((double)a[1] * e[2] - (double)a[2] * e[1]) +\n"
-                    "                 e[0] * ((double)a[1] * b[2] - (double)a[2] * b[1]));\n"
-                    "        d[%sidx[x][0]] += %swgt64[x] * ((double)eye[0] * r[0] + (double)eye[1] * r[1] +\n"
-                    "                                        (double)eye[2] * r[2] + (double)eye[3] * r[3]);\n"
-                    "    }\n",
+                "        const float *a = cp[%sidx[x][1]], *b = cp[%sidx[x][2]], *c = cp[%sidx[x][3]];\n",
+                px, up, up, up, world ? "1" : "k != 2", up, world ? "1" : "k == 2", up, up, px, px, px);
+    if (world) {
+        /* cross4 in double: the products of the minors are exact, as in the table's bound */
+        sbuf_puts(o, "        double r[4];\n");
+        for (k = 0; k < 4; k++) {
+            sbuf_printf(o, "        r[%d] = ", k);
+            put_cross4_component(o, k, "(double)", 15);
+            sbuf_puts(o, ";\n");
+        }
+        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt64[x] * ((double)eye[0] * r[0] + (double)eye[1] * r[1] +\n"
+                       "                                        (double)eye[2] * r[2] + (double)eye[3] * r[3]);\n"
+                       "    }\n",
                     px, px);
-    else
-        sbuf_printf(o,
-                    "        d[%sidx[x][0]] += %swgt64[x] * (a[0] * ((double)b[1] * e[3] - (double)b[3] * e[1]) -\n"
-                    "                                        b[0] * ((double)a[1] * e[3] - (double)a[3] * e[1]) +\n"
-                    "                                        e[0] * ((double)a[1] * b[3] - (double)a[3] * b[1]));\n"
-                    "    }\n"
-                    "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n",
-                    px, px, up);
+    } else {
+        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt64[x] * (", px, px);
+        put_cross4_component(o, 2, "(double)", 40);
+        sbuf_printf(o, ");\n    }\n"
+                       "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n",
+                    up);
+    }
     sbuf_printf(o,
                 "    for (x = 0; x < %sPLANES; x++) {\n"
                 "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
