@@ -1,5 +1,5 @@
 /* bench_cull.c: `make bench`: patches per second of one emitted C header (clip space, strict
- * rule) and of the paper's serial loop over its table, on one core and on every online core.
+ * rule) and of the paper's serial loop over its table, on one core and on every core it may use.
  *
  * Built once per header, like tests/host_c.c (bench/run_bench.sh runs it and prints the table):
  *   cc -O3 -march=native -D_GNU_SOURCE -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix>
@@ -385,13 +385,16 @@ int main(int argc, char **argv)
     d.cp = (const float(*)[4])cp;
     d.soa = soa;
 
-    /* one core: the first CPU this process may use; the threads get one CPU each */
+    /* one core: the first CPU this process may use (taskset narrows them); the all-core run has
+     * one thread on each (every online CPU, unpinned, when the affinity cannot be read) */
     if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
         for (i = 0; i < CPU_SETSIZE && ncpus < ncpu; i++)
             if (CPU_ISSET(i, &allowed))
                 cpus[ncpus++] = i;
-    if (ncpus)
+    if (ncpus) {
         pin(cpus[0]);
+        ncpu = ncpus;
+    }
 
     run_classify(&d, 0, count, ref); /* the classes the other paths are compared with */
     for (p = 0; p < count; p++)
@@ -421,7 +424,7 @@ int main(int argc, char **argv)
     rate = measure(run_soa, &d, cls, 1, &used);
     row("classify_soa", rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
     memset(cls, 0xFF, count);
-    rate = measure_threads(&d, cls, (int)ncpu, ncpus == ncpu ? cpus : NULL);
+    rate = measure_threads(&d, cls, (int)ncpu, ncpus ? cpus : NULL);
     snprintf(label, sizeof label, "classify_batch, %ld thread%s", ncpu, ncpu > 1 ? "s" : "");
     row(label, rate, MACRO(FLOPS), peak_all, paper, count_differ(cls, ref, count), count);
     printf("# data %s: %zu patches, %.0f MB of points; classify: front %.1f%%, back %.1f%%, "

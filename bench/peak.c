@@ -1,5 +1,5 @@
 /* peak.c: `make bench`'s own measure of this machine's peak single-precision GFLOP/s, on one core
- * and on every online core, from independent fused multiply-add chains mixed with add chains. */
+ * and on every core it may use, from independent fused multiply-add chains mixed with add chains. */
 #define _GNU_SOURCE
 #include <pthread.h>
 #include <sched.h>
@@ -124,8 +124,9 @@ out:
     return best;
 }
 
-/* Prints one line "peak GFLOPS_1 GFLOPS_ALL NCPU BITS": GFLOP/s on one core and on every online
- * core (one pinned thread each), counting an FMA as 2 flops, and the vector width in bits. */
+/* Prints one line "peak GFLOPS_1 GFLOPS_ALL NCPU BITS": GFLOP/s on one core and on the NCPU cores
+ * this process may use (one pinned thread each; every online core, unpinned, when its affinity
+ * cannot be read), counting an FMA as 2 flops, and the vector width in bits. */
 int main(void)
 {
     long ncpu = sysconf(_SC_NPROCESSORS_ONLN), iters = 1 << 20;
@@ -138,7 +139,7 @@ int main(void)
     cpus = malloc((size_t)ncpu * sizeof *cpus);
     if (!cpus)
         return 1;
-    /* the CPUs this process may run on, in order, one per thread */
+    /* the CPUs this process may run on (taskset narrows them), in order, one per thread */
     if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
         for (c = 0; c < CPU_SETSIZE && n < ncpu; c++)
             if (CPU_ISSET(c, &allowed))
@@ -150,7 +151,9 @@ int main(void)
     work(&cal);
     iters = (long)((double)iters * 0.1 / (now() - t0 + 1e-9)) + 1;
     one = gflops(1, n ? cpus : NULL, iters, 5);
-    all = gflops((int)ncpu, n == ncpu ? cpus : NULL, iters, 5);
+    if (n)
+        ncpu = n;
+    all = gflops((int)ncpu, n ? cpus : NULL, iters, 5);
     free(cpus);
     if (one <= 0.0 || all <= 0.0)
         return 1;

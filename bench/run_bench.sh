@@ -28,10 +28,11 @@ fail() {
     exit 1
 }
 read -r _ peak1 peakall ncpu bits < <("$B/bench/peak") || fail "$B/bench/peak failed"
+cores="$ncpu core$([ "$ncpu" = 1 ] || echo s)"
 
 echo "ptpgen bench: ${cpu:-unknown CPU}, $ccname $ccver $FLAGS, 1 core (pinned) unless stated;" \
     "L2 $l2, L3 $l3"
-echo "peak (measured): $peak1 GFLOP/s on 1 core, $peakall GFLOP/s on $ncpu cores" \
+echo "peak (measured): $peak1 GFLOP/s on 1 core, $peakall GFLOP/s on $cores" \
     "(FMA+ADD mix of $bits-bit vectors, an FMA counted as 2 flops)"
 # line COLUMNS...: one line of the table, aligned with bench_cull's rows.
 line() { printf '%-8s  %-26s %10s %11s %8s %7s %8s  %s\n' "$@"; }
@@ -98,7 +99,7 @@ for d in "$@"; do
     if [ -x "$B/host_opencl" ] && "$B/ptpgen" --degree "$d" --target opencl -o "$tmp/k.cl"; then
         gpu_bench "$B/host_opencl" "$tmp/k.cl" --kernel "ptp_${d}_classify" "${cfg[@]}"
     fi
-    gpu_row "$d" "OpenCL (PoCL), $ncpu cores" "$rate" "$flops" "$paper" "$check"
+    gpu_row "$d" "OpenCL (PoCL), $cores" "$rate" "$flops" "$paper" "$check"
 
     # GLSL on lavapipe
     rate="" check=""
@@ -107,7 +108,7 @@ for d in "$@"; do
         glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >/dev/null 2>&1; then
         gpu_bench "$B/host_vulkan" "$tmp/k.spv" "${cfg[@]}"
     fi
-    gpu_row "$d" "GLSL (lavapipe), $ncpu cores" "$rate" "$flops" "$paper" "$check"
+    gpu_row "$d" "GLSL (lavapipe), $cores" "$rate" "$flops" "$paper" "$check"
 
     gen+="${gen:+, }$d $("$B/bench/bench_cull_$d" --gen "$B/ptpgen" || echo ?) ms"
 done
@@ -125,7 +126,7 @@ cat <<EOF
 #   1 weight product, 1 accumulation) and alpha * d per plane; classify, classify_batch (AoS in,
 #   transposed in blocks of LANES) and classify_soa: the emitted header's straight-line code, its
 #   FLOPS per patch.
-# classify_batch on all cores: one pinned thread per online CPU, each on its own slice; %peak of
+# classify_batch on all cores: one pinned thread per CPU it may use, each on its own slice; %peak of
 #   the all-core peak. Each row is the best of at least 5 runs (0.3 s or more); the paper loop and
 #   classify run on the first patches, as many as 20 ms hold, the others on all.
 # differs: patches whose class differs from classify's, over the patches that path ran.
