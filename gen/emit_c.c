@@ -447,7 +447,7 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                    "                    unsigned char *cls)\n{\n"
                    "    float soa[%sPOINTS * 4 * %sLANES];\n"
                    "    size_t p, l, n;\n"
-                   "    unsigned k%s;\n"
+                   "    unsigned k, c;\n"
                    "    for (p = 0; p < patch_count; p += n) {\n"
                    "        n = patch_count - p < %sLANES ? patch_count - p : %sLANES;\n"
                    "        l = 0;\n"
@@ -461,26 +461,19 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                    "                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);\n"
                    "                _mm_storeu_ps(soa + (k * 4 + 0) * %sLANES + l, r0);\n"
                    "                _mm_storeu_ps(soa + (k * 4 + 1) * %sLANES + l, r1);\n",
-                px, up, up, world ? ", c" : "", up, up, up, up, up, up, up, up, up, up);
+                px, up, up, up, up, up, up, up, up, up, up, up, up);
     if (world)
         sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 2) * %sLANES + l, r2);\n", up);
     sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 3) * %sLANES + l, r3);\n"
                    "            }\n"
                    "#endif\n"
                    "        for (; l < n; l++)\n"
-                   "            for (k = 0; k < %sPOINTS; k++)\n",
-                up, up);
-    if (world)
-        sbuf_printf(o, "                for (c = 0; c < 4; c++)\n"
-                       "                    soa[(k * 4 + c) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][c];\n",
-                    up, up);
-    else
-        sbuf_printf(o, "            {\n"
-                       "                soa[(k * 4 + 0) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][0];\n"
-                       "                soa[(k * 4 + 1) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][1];\n"
-                       "                soa[(k * 4 + 3) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][3];\n"
-                       "            }\n",
-                    up, up, up, up, up, up);
+                   "            for (k = 0; k < %sPOINTS; k++)\n"
+                   "                for (c = 0; c < 4; c++)\n"
+                   "%s"
+                   "%*ssoa[(k * 4 + c) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][c];\n",
+                up, up, world ? "" : "                    if (c != 2) /* z: clip space never reads it */\n",
+                world ? 20 : 24, "", up, up);
     sbuf_printf(o, "#if defined(__GNUC__) /* the next block into the caches while this one is classified */\n"
                    "        {\n"
                    "            const char *next = (const char *)(cp + (p + n) * %sPOINTS);\n"

@@ -12,7 +12,8 @@
 #define FN(name) CAT(PFX, name)
 #define MACRO(name) CAT(UPFX, name)
 
-/* Runs the header's functions over one set and accumulates the three comparisons. */
+/* Runs the header's functions over one set and accumulates the three comparisons; returns how
+ * often classify_batch or classify_soa differs from classify. */
 static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_result *res_classify,
                    kref_result *res_batch, kref_result *res_planes)
 {
@@ -24,7 +25,7 @@ static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_resul
     float *soa = malloc((size_t)ref->K * 4 * stride * sizeof *soa);
     float *d = malloc(s->count * L * sizeof *d), *dp = malloc(s->count * L * sizeof *dp);
     float(*t)[4] = malloc(L * sizeof *t);
-    int batch_bad = 0;
+    int paths_differ = 0;
     for (p = 0; p < s->count; p++) {
         const float(*cp)[4] = (const float(*)[4])s->cp + p * (size_t)ref->K;
         size_t x;
@@ -44,7 +45,7 @@ static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_resul
             soa[k * stride + p] = ((const float *)s->cp)[p * (size_t)ref->K * 4 + k];
     FN(classify_soa)(soa, stride, s->count, s->eye, soa_cls);
     for (p = 0; p < s->count; p++)
-        batch_bad += (batch[p] != cls[p]) + (soa_cls[p] != cls[p]);
+        paths_differ += (batch[p] != cls[p]) + (soa_cls[p] != cls[p]);
     kref_check(res_classify, ref, s, cls, d);
     for (p = 0; p < s->count; p++)
         cls[p] = batch[p];
@@ -57,7 +58,7 @@ static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_resul
     free(d);
     free(dp);
     free(t);
-    return batch_bad;
+    return paths_differ;
 }
 
 int main(int argc, char **argv)
@@ -67,7 +68,7 @@ int main(int argc, char **argv)
     kref_ref ref;
     ptp_error err;
     char label[200];
-    int si, i, batch_bad = 0, ok = 1;
+    int si, i, paths_differ = 0, ok = 1;
     if (kref_parse_args(&o, argc, argv, "host_c", 0))
         return 2;
     memset(&res_classify, 0, sizeof res_classify);
@@ -87,7 +88,7 @@ int main(int argc, char **argv)
             return 1;
         }
         for (i = 0; i < o.src[si].nsets; i++)
-            batch_bad += run_set(&ref, &sets[i], o.space == KREF_WORLD, &res_classify, &res_batch,
+            paths_differ += run_set(&ref, &sets[i], o.space == KREF_WORLD, &res_classify, &res_batch,
                                  &res_planes);
         kref_free_sets(sets, (int)o.src[si].nsets);
     }
@@ -97,7 +98,7 @@ int main(int argc, char **argv)
     ok &= kref_report(&res_batch, label);
     snprintf(label, sizeof label, "%s classify_batch and classify_soa equal classify on every patch",
              o.label);
-    ok &= check(batch_bad == 0, label, "they differ %d times", batch_bad);
+    ok &= check(paths_differ == 0, label, "they differ %d times", paths_differ);
     snprintf(label, sizeof label, "%s planes (dotted with the eye)", o.label);
     ok &= kref_report(&res_planes, label);
     kref_clear(&ref);

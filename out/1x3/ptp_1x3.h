@@ -508,7 +508,7 @@ void ptp_1x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 {
     float soa[PTP_1X3_POINTS * 4 * PTP_1X3_LANES];
     size_t p, l, n;
-    unsigned k;
+    unsigned k, c;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_1X3_LANES ? patch_count - p : PTP_1X3_LANES;
         l = 0;
@@ -527,11 +527,9 @@ void ptp_1x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 #endif
         for (; l < n; l++)
             for (k = 0; k < PTP_1X3_POINTS; k++)
-            {
-                soa[(k * 4 + 0) * PTP_1X3_LANES + l] = cp[(p + l) * PTP_1X3_POINTS + k][0];
-                soa[(k * 4 + 1) * PTP_1X3_LANES + l] = cp[(p + l) * PTP_1X3_POINTS + k][1];
-                soa[(k * 4 + 3) * PTP_1X3_LANES + l] = cp[(p + l) * PTP_1X3_POINTS + k][3];
-            }
+                for (c = 0; c < 4; c++)
+                    if (c != 2) /* z: clip space never reads it */
+                        soa[(k * 4 + c) * PTP_1X3_LANES + l] = cp[(p + l) * PTP_1X3_POINTS + k][c];
 #if defined(__GNUC__) /* the next block into the caches while this one is classified */
         {
             const char *next = (const char *)(cp + (p + n) * PTP_1X3_POINTS);
