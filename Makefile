@@ -7,11 +7,13 @@ PREFIX ?= /usr/local
 STD = -std=c11 -Wall -Wextra -Werror -pedantic
 B = build/$(notdir $(CC))
 
-GEN_SRC = $(sort $(wildcard gen/*.c))
-GEN_HDR = $(sort $(wildcard gen/*.h))
+# The generator's layers (gen/README.md); gen/embed is a build tool, not part of ptpgen.
+GEN_LAYERS = core plan emit tools cli
+GEN_SRC = $(sort $(foreach l,$(GEN_LAYERS),$(wildcard gen/$(l)/*.c)))
+GEN_HDR = $(sort $(foreach l,$(GEN_LAYERS),$(wildcard gen/$(l)/*.h)))
 TEMPLATES = $(sort $(wildcard templates/*/*))
 # The library the tests link: the generator without main, and the embedded templates.
-LIB_SRC = $(filter-out gen/main.c,$(GEN_SRC)) $(B)/templates.c
+LIB_SRC = $(filter-out gen/cli/main.c,$(GEN_SRC)) $(B)/templates.c
 TESTS = $(patsubst tests/%.c,%,$(sort $(wildcard tests/test_*.c)))
 
 all: ptpgen
@@ -129,7 +131,7 @@ fuzz:
 	@$(MAKE) -s CC=clang build/clang/templates.c
 	@mkdir -p build/fuzz/corpus
 	clang $(STD) $(SAN) -fsanitize=fuzzer -Igen -o build/fuzz/fuzz_verify tests/fuzz_verify.c \
-	    $(filter-out gen/main.c,$(GEN_SRC)) build/clang/templates.c -lm
+	    $(filter-out gen/cli/main.c,$(GEN_SRC)) build/clang/templates.c -lm
 	build/fuzz/fuzz_verify -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 \
 	    build/fuzz/corpus tests/fuzz/verify tests/fuzz/regressions
 

@@ -1,7 +1,7 @@
 /* fuzz_verify.c: the libFuzzer target of verify_table (any bytes, inferred degree and 3x3).
  * With -DFUZZ_REPLAY it is a program that replays the files it is given, for sanitizer builds. */
-#include "verify.h"
-#include "verify_parse.h"
+#include "tools/verify.h"
+#include "tools/verify_parse.h"
 
 #include <stdint.h>
 #include <stdio.h>

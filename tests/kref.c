@@ -3,7 +3,7 @@
  * zeros (two equal points in every term of a plane) have bound 0. */
 #include "kref.h"
 #include "check.h"
-#include "i128.h"
+#include "core/i128.h"
 
 #include <errno.h>
 #include <limits.h>

@@ -3,7 +3,7 @@
 #ifndef KREF_H
 #define KREF_H
 
-#include "tplane.h"
+#include "core/tplane.h"
 
 #include <stddef.h>
 #include <stdint.h>

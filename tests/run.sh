@@ -52,6 +52,8 @@ for cc in $compilers; do
     fi
 done
 
+run tests/test_layers.sh bash tests/test_layers.sh
+
 if [ -x build/gcc/ptpgen ]; then
     run tests/test_cli.sh env PTPGEN=build/gcc/ptpgen PTPGEN_OTHER=build/clang/ptpgen bash tests/test_cli.sh
 fi

@@ -1,9 +1,9 @@
 /* test_form.c: randomized property tests of the sparse alternating forms (gen/form.c).
  * Keys and wedges against a naive reference, sums against per-key rat arithmetic. */
 #include "check.h"
-#include "form.h"
-#include "ptp.h"
-#include "rat.h"
+#include "core/form.h"
+#include "core/ptp.h"
+#include "core/rat.h"
 
 #include <stdarg.h>
 #include <stdint.h>

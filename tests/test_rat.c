@@ -1,8 +1,8 @@
 /* test_rat.c: randomized property tests of the exact rationals (gen/rat.c, gen/i128.h).
  * Every result is checked against an independent 512-bit reference; deterministic seed. */
 #include "check.h"
-#include "ptp.h"
-#include "rat.h"
+#include "core/ptp.h"
+#include "core/rat.h"
 
 #include <stdarg.h>
 #include <stdint.h>

@@ -3,8 +3,8 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "check.h"
-#include "sched.h"
-#include "tplane.h"
+#include "plan/sched.h"
+#include "core/tplane.h"
 
 #include <stdlib.h>
 #include <string.h>

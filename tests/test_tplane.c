@@ -1,8 +1,8 @@
 /* test_tplane.c: checks the derived control-plane tables against the mathematics.
  * Count matrix, closed forms, transposition, and numeric agreement with cross4(B, B_u, B_v). */
-#include "bez.h"
+#include "core/bez.h"
 #include "check.h"
-#include "tplane.h"
+#include "core/tplane.h"
 
 #include <math.h>
 #include <stdlib.h>

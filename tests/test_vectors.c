@@ -1,8 +1,8 @@
 /* test_vectors.c: checks the ptpgen-vectors/1 test vectors written by gen/vectors.c.
  * Determinism, values against a double evaluation, exact rounding, classes, edge cases, limits. */
 #include "check.h"
-#include "i128.h"
-#include "vectors.h"
+#include "core/i128.h"
+#include "tools/vectors.h"
 
 #include <math.h>
 #include <stdlib.h>

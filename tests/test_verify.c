@@ -1,8 +1,8 @@
 /* test_verify.c: checks `ptpgen verify` (verify_table) on generated tables and on wrong ones.
  * Every constructed mistake must get its diagnosis, and malformed input a usage error with a line. */
 #include "check.h"
-#include "out.h"
-#include "verify.h"
+#include "emit/out.h"
+#include "tools/verify.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -7,7 +7,7 @@ int main(int argc, char **argv)
 {
     int i, c;
     printf("/* Generated from templates/ by gen/embed/embed.c at build time: do not edit. */\n");
-    printf("#include \"template.h\"\n\nconst tpl_file tpl_files[] = {\n");
+    printf("#include \"emit/template.h\"\n\nconst tpl_file tpl_files[] = {\n");
     for (i = 1; i < argc; i++) {
         const char *name = strncmp(argv[i], "templates/", 10) == 0 ? argv[i] + 10 : argv[i];
         FILE *f = fopen(argv[i], "rb");

@@ -1,0 +1,556 @@
+/* emit_c.c: the C target: an stb-style single header (declarations, and the implementation
+ * where <PREFIX>IMPLEMENTATION is defined) with the paper's table-driven loop. */
+#include "emit/fmt.h"
+#include "emit/kern.h"
+#include "plan/cert.h"
+#include "plan/slp.h"
+#include "emit/template.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The implementation: cross4, planes, values, classify and classify_batch. */
+/* Appends component i of cross4(a, b, c) (Appendix A): +-det of the rows other than i, expanded
+ * along the first of them; cast (e.g. "(double)") converts the first factor of every product of
+ * a 2x2 minor, and ind is the indentation of continuation lines. */
+static void put_cross4_component(sbuf *o, int i, const char *cast, int ind)
+{
+    int p = i == 0 ? 1 : 0, q = i <= 1 ? 2 : 1, s = i == 3 ? 2 : 3, neg = i % 2;
+    sbuf_printf(o, "%sa[%d] * (%sb[%d] * c[%d] - %sb[%d] * c[%d]) -\n"
+                   "%*s%sb[%d] * (%sa[%d] * c[%d] - %sa[%d] * c[%d]) +\n"
+                   "%*s%sc[%d] * (%sa[%d] * b[%d] - %sa[%d] * b[%d])%s",
+                neg ? "-(" : "", p, cast, q, s, cast, s, q, ind, "", neg ? "  " : "", p, cast, q, s,
+                cast, s, q, ind, "", neg ? "  " : "", p, cast, q, s, cast, s, q, neg ? ")" : "");
+}
+
+static void put_functions(sbuf *o, const out_info *info, const char *up)
+{
+    const char *px = info->prefix;
+    int i;
+    sbuf_printf(o,
+                "/* From here through lanes gcc contracts no product into an FMA; one region, because gcc\n"
+                " * does not inline across optimize options (cross4 into planes and values). */\n"
+                "#if defined(__GNUC__) && !defined(__clang__)\n"
+                "#pragma GCC push_options\n#pragma GCC optimize(\"fp-contract=off\")\n#endif\n\n"
+                "/* cross4 of Appendix A of Loop, Niessner and Eisenacher (2011): r . x = -det[a b c x].\n"
+                " * Its products are never contracted into FMAs, so two equal points give exactly 0. */\n"
+                "static void %scross4(float r[4], const float a[4], const float b[4], const float c[4])\n{\n"
+                "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
+                px);
+    for (i = 0; i < 4; i++) {
+        sbuf_printf(o, "    r[%d] = ", i);
+        put_cross4_component(o, i, "", 11);
+        sbuf_puts(o, ";\n");
+    }
+    sbuf_puts(o, "}\n\n");
+    sbuf_printf(o,
+                "void %splanes(const float cp[][4], float t[][4])\n{\n"
+                "    unsigned x, c;\n"
+                "    for (x = 0; x < %sPLANES; x++)\n"
+                "        t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;\n"
+                "    for (x = 0; x < %sTERMS; x++) {\n"
+                "        float r[4];\n"
+                "        %scross4(r, cp[%sidx[x][1]], cp[%sidx[x][2]], cp[%sidx[x][3]]);\n"
+                "        for (c = 0; c < 4; c++)\n"
+                "            t[%sidx[x][0]][c] += %swgt[x] * r[c];\n"
+                "    }\n}\n\n",
+                px, up, up, px, px, px, px, px, px);
+    sbuf_printf(o, "void %svalues(const float cp[][4], const float eye[4], float d[])\n{\n"
+                   "    unsigned x;\n"
+                   "    for (x = 0; x < %sPLANES; x++)\n"
+                   "        d[x] = 0.0f;\n"
+                   "    for (x = 0; x < %sTERMS; x++) {\n"
+                   "        float r[4];\n"
+                   "        %scross4(r, cp[%sidx[x][1]], cp[%sidx[x][2]], cp[%sidx[x][3]]);\n",
+                px, up, up, px, px, px, px);
+    if (info->space == OUT_CLIP)
+        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt[x] * r[2];\n    }\n"
+                       "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n}\n\n",
+                    px, px, up);
+    else
+        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt[x] * (eye[0] * r[0] + eye[1] * r[1] + eye[2] * r[2] + eye[3] * r[3]);\n"
+                       "    }\n}\n\n",
+                    px, px);
+}
+
+/* One bracket of a term: ((G(b_j) M(k,l) - G(b_k) M(j,l)) + G(b_l) M(j,k)) for one kind, with G
+ * named g0, g1, ... and the minors m0_1, ... (letters g and m chosen by the caller). */
+static void put_bracket(sbuf *o, const slp_prog *p, const slp_term *x, char g, char m)
+{
+    const slp_pair *q = p->pairs;
+    sbuf_printf(o, "((%c%d * %c%d_%d - %c%d * %c%d_%d) + %c%d * %c%d_%d)", g, x->point[0], m,
+                q[x->pair[0]].k, q[x->pair[0]].l, g, x->point[1], m, q[x->pair[1]].k,
+                q[x->pair[1]].l, g, x->point[2], m, q[x->pair[2]].k, q[x->pair[2]].l);
+}
+
+/* Declares the minors term x needs that are not declared yet. */
+static void put_minors(sbuf *o, const slp_prog *p, const slp_term *x, int world, const char *px,
+                       unsigned char *done)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        const slp_pair *q = &p->pairs[x->pair[i]];
+        if (done[x->pair[i]])
+            continue;
+        done[x->pair[i]] = 1;
+        sbuf_printf(o, "        const %svf m%d_%d = x%d * y%d - y%d * x%d;\n", px, q->k, q->l, q->k,
+                    q->l, q->k, q->l);
+        if (world)
+            sbuf_printf(o, "        const %svf n%d_%d = z%d * w%d - w%d * z%d;\n", px, q->k, q->l,
+                        q->k, q->l, q->k, q->l);
+    }
+}
+
+/* The statements of term i: its group's sum u and, at the end of a group, the plane's v
+ * (assigned when the group is the plane's first, first_group). */
+static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_group)
+{
+    const slp_term *x = &p->terms[i];
+    int first = i == 0 || p->terms[i - 1].group != x->group;
+    int last = i + 1 == p->nterms || p->terms[i + 1].group != x->group;
+    if (first)
+        sbuf_printf(o, "        u = %s", x->neg ? "-" : "");
+    else
+        sbuf_printf(o, "        u %s ", x->neg ? "-=" : "+=");
+    if (world) {
+        sbuf_puts(o, "(");
+        put_bracket(o, p, x, 'a', 'n');
+        sbuf_puts(o, " + ");
+        put_bracket(o, p, x, 'b', 'm');
+        sbuf_puts(o, ")");
+    } else
+        put_bracket(o, p, x, 'g', 'm');
+    sbuf_puts(o, ";\n");
+    if (last) {
+        char sv[RAT_STRLEN];
+        rat one;
+        rat_set_si(&one, 1);
+        rat_get_str(sv, &p->s[x->group]);
+        sbuf_printf(o, "        v %s ", first_group ? "=" : "+=");
+        if (rat_equal(&p->s[x->group], &one))
+            sbuf_puts(o, "u;\n");
+        else
+            sbuf_printf(o, "%s.0f * u;\n", sv);
+    }
+}
+
+/* --refine K: the class of a silhouette patch from the scalar Bezier function e.T(u,v), whose
+ * control values are the plane values, split by de Casteljau into four while it has mixed signs. */
+static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const char *up)
+{
+    const char *px = info->prefix, *neg = info->rule == OUT_STRICT ? "< 0.0f" : "<= 0.0f";
+    const char *pos = info->rule == OUT_STRICT ? "> 0.0f" : ">= 0.0f";
+    sbuf_printf(o,
+                "/* --refine %d: the class of the scalar Bezier patch with control values d[I * %d + J] (bidegree\n"
+                " * %dx%d): back if all values are %s, front if all are %s, and otherwise, while levels\n"
+                " * remain and the four corners (values of the function itself) agree, the class the four\n"
+                " * quarters split at u = v = 1/2 (de Casteljau) agree on, else silhouette. */\n"
+                "static unsigned %ssplit_class(const float *d, int levels)\n{\n"
+                "    enum { U = %d, V = %d, N = (U + 1) * (V + 1) };\n"
+                "    float h[2][N], q[2][N], w[U > V ? U + 1 : V + 1];\n"
+                "    unsigned n = 0, p = 0, cn, cp, x, a, b, cls = 0;\n"
+                "    int i, j, k;\n"
+                "    for (x = 0; x < N; x++) {\n"
+                "        n += d[x] %s;\n        p += d[x] %s;\n    }\n"
+                "    if (n == N)\n        return %sBACK;\n"
+                "    if (p == N)\n        return %sFRONT;\n"
+                "    cn = (d[0] %s) + (d[V] %s) + (d[U * (V + 1)] %s) + (d[N - 1] %s);\n"
+                "    cp = (d[0] %s) + (d[V] %s) + (d[U * (V + 1)] %s) + (d[N - 1] %s);\n"
+                "    if (levels == 0 || (cn != 4 && cp != 4))\n"
+                "        return %sSILHOUETTE; /* the corners differ: a real sign change */\n"
+                "    for (j = 0; j <= V; j++) { /* along u: h[0] on u in [0, 1/2], h[1] on [1/2, 1] */\n"
+                "        for (i = 0; i <= U; i++)\n            w[i] = d[i * (V + 1) + j];\n"
+                "        for (i = 0; i <= U; i++) {\n"
+                "            h[0][i * (V + 1) + j] = w[0];\n"
+                "            h[1][(U - i) * (V + 1) + j] = w[U - i];\n"
+                "            for (k = 0; k < U - i; k++)\n                w[k] = 0.5f * (w[k] + w[k + 1]);\n"
+                "        }\n"
+                "    }\n"
+                "    for (a = 0; a < 2; a++) {\n"
+                "        for (i = 0; i <= U; i++) { /* h[a] along v into q[0] and q[1] */\n"
+                "            for (j = 0; j <= V; j++)\n                w[j] = h[a][i * (V + 1) + j];\n"
+                "            for (j = 0; j <= V; j++) {\n"
+                "                q[0][i * (V + 1) + j] = w[0];\n"
+                "                q[1][i * (V + 1) + V - j] = w[V - j];\n"
+                "                for (k = 0; k < V - j; k++)\n                    w[k] = 0.5f * (w[k] + w[k + 1]);\n"
+                "            }\n"
+                "        }\n"
+                "        for (b = 0; b < 2; b++) {\n"
+                "            unsigned c = %ssplit_class(q[b], levels - 1);\n"
+                "            if (c == %sSILHOUETTE || (a + b > 0 && c != cls))\n"
+                "                return %sSILHOUETTE;\n"
+                "            cls = c;\n"
+                "        }\n"
+                "    }\n"
+                "    return cls;\n}\n\n",
+                info->refine, t->pv + 1, t->pu, t->pv, neg, pos, px, t->pu, t->pv, neg, pos, up, up,
+                neg, neg, neg, neg, pos, pos, pos, pos, up, px, up, up);
+    sbuf_printf(o, "/* The refined class of a patch the plane values leave silhouette. */\n"
+                   "static unsigned %srefined(const float cp[][4], const float eye[4])\n{\n"
+                   "    float d[%sPLANES];\n"
+                   "    %svalues(cp, eye, d);\n"
+                   "    return %ssplit_class(d, %d);\n}\n\n",
+                px, up, px, px, info->refine);
+}
+
+/* Appends a constant double table NAME[n] (hex literals: exact). */
+static void put_double_table(sbuf *o, const char *px, const char *name, const double *v, int n)
+{
+    int i;
+    sbuf_printf(o, "static const double %s%s[%d] = {", px, name, n);
+    for (i = 0; i < n; i++)
+        sbuf_printf(o, "%s%a", i == 0 ? "\n    " : i % 4 ? ", " : ",\n    ", v[i]);
+    sbuf_puts(o, "\n};\n");
+}
+
+/* --certified: the second look at a patch float cannot certify, in double. The table loop with
+ * double weights and the bounds of cert_table for u = 2^-53, which are 2^29 times smaller. */
+static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const char *up,
+                         ptp_error *err)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD;
+    double *w = malloc((t->nterms + 1) * sizeof *w);
+    cert_bounds cb = {0};
+    size_t i;
+    int k, st = w ? cert_table(&cb, t, world, err)
+               : ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
+    if (st) {
+        free(w);
+        return st;
+    }
+    for (i = 0; i < t->nterms; i++)
+        w[i] = rat_get_d(&t->terms[i].w);
+    sbuf_puts(o, "/* --certified, second look: the weights in double, and each plane's bound in double. */\n");
+    put_double_table(o, px, "wgt64", w, (int)t->nterms);
+    put_double_table(o, px, "tau64_k", cb.k64, cb.nplanes);
+    put_double_table(o, px, "tau64_f", cb.k2_64, cb.nplanes);
+    sbuf_printf(o,
+                "\n/* The certified class of a patch whose plain float signs decide but whose bounds do not, from\n"
+                " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
+                "static unsigned %scertify64(const float cp[][4], const float eye[4])\n{\n"
+                "    double d[%sPLANES], R = 0, E = 0, ER3, F;\n"
+                "    unsigned x, k, notlt = 0, notgt = 0;\n"
+                "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
+                "    for (x = 0; x < %sPOINTS; x++)\n"
+                "        for (k = 0; k < 4; k++)\n"
+                "            if (%s)\n"
+                "                R = %sABSMAX(R, (double)cp[x][k]);\n"
+                "    for (k = 0; k < 4; k++)\n"
+                "        if (%s)\n"
+                "            E = %sABSMAX(E, (double)eye[k]);\n"
+                "    ER3 = E * (R * R * R);\n"
+                "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
+                "    for (x = 0; x < %sTERMS; x++) {\n"
+                "        const float *a = cp[%sidx[x][1]], *b = cp[%sidx[x][2]], *c = cp[%sidx[x][3]];\n",
+                px, up, up, up, world ? "1" : "k != 2", up, world ? "1" : "k == 2", up, up, px, px, px);
+    if (world) {
+        /* cross4 in double: the products of the minors are exact, as in the table's bound */
+        sbuf_puts(o, "        double r[4];\n");
+        for (k = 0; k < 4; k++) {
+            sbuf_printf(o, "        r[%d] = ", k);
+            put_cross4_component(o, k, "(double)", 15);
+            sbuf_puts(o, ";\n");
+        }
+        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt64[x] * ((double)eye[0] * r[0] + (double)eye[1] * r[1] +\n"
+                       "                                        (double)eye[2] * r[2] + (double)eye[3] * r[3]);\n"
+                       "    }\n",
+                    px, px);
+    } else {
+        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt64[x] * (", px, px);
+        put_cross4_component(o, 2, "(double)", 40);
+        sbuf_printf(o, ");\n    }\n"
+                       "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n",
+                    up);
+    }
+    sbuf_printf(o,
+                "    for (x = 0; x < %sPLANES; x++) {\n"
+                "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
+                "        notlt |= !(d[x] < -bound);\n"
+                "        notgt |= !(d[x] > bound);\n"
+                "    }\n"
+                "    return (1u - notlt) + 2u * (notlt & notgt);\n}\n\n",
+                up, px, px);
+    cert_clear(&cb);
+    free(w);
+    return PTP_OK;
+}
+
+/* The straight-line kernel over n patches in structure-of-arrays order, and the three entry
+ * points built on it: classify (one patch), classify_batch (patch-major) and classify_soa. */
+static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
+                     const out_info *info, const char *up, ptp_error *err)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD, k, first_group = 1;
+    const char *op;
+    int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
+    /* what silhouette patches get a second look from: refinement, or certification in double */
+    const char *second = info->refine ? "refined" : info->certified ? "certify64" : NULL;
+    /* the class the lanes leave for it: silhouette, or 3 (certified: only plain signs decide) */
+    const char *again = info->certified ? "3u" : "SILHOUETTE";
+    const char *again_px = info->certified ? "" : up;
+    int st;
+    unsigned char *done = calloc(p->npairs + 1, 1);
+    size_t i;
+    if (!done)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
+    sbuf_printf(o,
+                "/* The classification of n patches in structure-of-arrays order: coordinate c of point k\n"
+                " * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table\n"
+                " * (%sFLOPS per patch): each plane's value at a positive scale as the sum of its terms'\n"
+                " * Laplace expansions over shared 2x2 minors. An iteration classifies %sVW patches,\n"
+                " * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations\n"
+                " * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last\n"
+                " * one. Products are never contracted into FMAs: equal points give exact zeros. */\n"
+                "#if defined(__GNUC__) && !defined(__clang__)\n"
+                "__attribute__((noinline, noclone)) /* one copy: it is large */\n"
+                "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
+                "static void %slanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],\n"
+                "%*sunsigned char *restrict cls)\n{\n"
+                "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
+                up, up, px, (int)strlen(px) + 18, "");
+    if (world)
+        sbuf_puts(o, "    const float e0 = eye[0], e1 = eye[1], e2 = eye[2], e3 = eye[3];\n");
+    else
+        sbuf_puts(o, "    const float e2 = eye[2];\n");
+    if (info->certified) {
+        if (world)
+            sbuf_printf(o, "    float E = 0.0f;\n"
+                           "    E = %sABSMAX(E, e0);\n    E = %sABSMAX(E, e1);\n"
+                           "    E = %sABSMAX(E, e2);\n    E = %sABSMAX(E, e3);\n",
+                        up, up, up, up);
+        else
+            sbuf_printf(o, "    const float E = %sABSMAX(0.0f, e2);\n", up);
+    }
+    sbuf_printf(o, "    size_t l;\n    for (l = 0; l < n; l += %sVW) {\n"
+                   "        const float *q = soa + l;\n        size_t qs = stride;\n"
+                   "        %svm %s, %s%s;\n        %svf u, v%s;\n"
+                   "#if %sVW > 1\n"
+                   "        float tail[%sPOINTS * 4 * %sVW];\n"
+                   "        if (n - l < %sVW) {\n"
+                   "            size_t i, k;\n"
+                   "            for (k = 0; k < %sPOINTS * 4; k++)\n"
+                   "%s"
+                   "%*sfor (i = 0; i < %sVW; i++)\n"
+                   "%*s    tail[k * %sVW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];\n"
+                   "            q = tail;\n            qs = %sVW;\n        }\n#endif\n",
+                up, px, strict ? "notlt" : "lt", strict ? "notgt" : "gt",
+                info->certified ? ", plt, pgt" : strict ? "" : ", nan", px,
+                info->certified ? ", t" : "", up, up, up, up, up,
+                world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
+                world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
+    for (k = 0; k < t->npoints; k++) {
+        if (world)
+            sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
+                           "            z%d = %svload(q + %d * qs), w%d = %svload(q + %d * qs);\n"
+                           "        const %svf a%d = e0 * y%d - e1 * x%d, b%d = e2 * w%d - e3 * z%d;\n",
+                        px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 2, k, px, 4 * k + 3, px,
+                        k, k, k, k, k, k);
+        else
+            sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
+                           "            w%d = %svload(q + %d * qs), g%d = e2 * w%d;\n",
+                        px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 3, k, k);
+    }
+    if (info->certified) {
+        sbuf_printf(o, "        /* Certified: R, the largest |coordinate|, bounds every value's rounding error. */\n"
+                       "        %svf R = %svabsmax(x0, x0);\n", px, px);
+        for (k = 0; k < t->npoints; k++) {
+            if (k > 0)
+                sbuf_printf(o, "        R = %svabsmax(R, x%d);\n", px, k);
+            sbuf_printf(o, "        R = %svabsmax(R, y%d);\n", px, k);
+            if (world)
+                sbuf_printf(o, "        R = %svabsmax(R, z%d);\n", px, k);
+            sbuf_printf(o, "        R = %svabsmax(R, w%d);\n", px, k);
+        }
+        sbuf_printf(o, "        const %svf R3 = R * R * R, ER3 = E * R3;\n"
+                       "        const %svf F = (1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E);\n"
+                       "        /* Patches too large for the bound (or NaN) are never certified. */\n"
+                       "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %af) == 0;\n",
+                    px, px, (double)cb->q_max);
+    }
+    for (i = 0; i < p->nterms; i++) {
+        const slp_term *x = &p->terms[i];
+        int last = i + 1 == p->nterms || p->terms[i + 1].plane != x->plane;
+        put_minors(o, p, x, world, px, done);
+        if (i > 0 && p->terms[i - 1].group != x->group)
+            first_group = p->terms[i - 1].plane != x->plane;
+        put_term(o, p, i, world, first_group);
+        if (!last)
+            continue;
+        /* the masks: set by the first plane (certified: by the size guard), then or-ed */
+        op = x->plane == p->terms[0].plane ? "=" : "|=";
+        if (info->certified)
+            sbuf_printf(o, "        t = %af * ER3 + %af * F; /* the bound of plane %d */\n"
+                           "        notlt |= (v < -t) == 0;\n        notgt |= (v > t) == 0;\n"
+                           "        plt %s (v < 0.0f) == 0;\n        pgt %s (v > 0.0f) == 0;\n",
+                        (double)cb->k[x->plane], (double)cb->k2[x->plane], x->plane, op, op);
+        else if (strict)
+            sbuf_printf(o, "        notlt %s (v < 0.0f) == 0;\n        notgt %s (v > 0.0f) == 0; /* plane %d */\n",
+                        op, op, x->plane);
+        else
+            sbuf_printf(o, "        lt %s v < 0.0f;\n        gt %s v > 0.0f;\n"
+                           "        nan %s v != v; /* plane %d */\n",
+                        op, op, op, x->plane);
+    }
+    if (info->certified)
+        sbuf_puts(o, "        /* Certified: back (1) iff every value is below minus its bound, front (0) iff\n"
+                     "         * every value is above its bound; 3 where only the plain signs decide (a second\n"
+                     "         * look in double follows), else silhouette (2). Masks 0 or 1 first. */\n"
+                     "        notlt &= 1;\n        notgt &= 1;\n        plt &= 1;\n        pgt &= 1;\n");
+    else if (strict)
+        sbuf_puts(o, "        /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else\n"
+                     "         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */\n"
+                     "        notlt &= 1;\n        notgt &= 1;\n");
+    else
+        sbuf_puts(o, "        /* Degenerate: back (1) iff no value > 0, front (0) iff no value < 0, else\n"
+                     "         * silhouette (2), and NaN silhouette; arithmetic, not branches. Masks 0 or 1 first. */\n"
+                     "        lt &= 1;\n        gt &= 1;\n        nan &= 1;\n");
+    sbuf_printf(o, "        %svstore(cls + l, %s, n - l);\n", px,
+                info->certified ? "(1 - notlt) + 2 * (notlt & notgt) + (notlt & notgt & (1 - (plt & pgt)))"
+                : strict ? "(1 - notlt) + 2 * (notlt & notgt)"
+                         : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
+    sbuf_printf(o, "    }\n}\n"
+                   "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
+    if (info->refine)
+        put_refine(o, t, info, up);
+    else if (info->certified && (st = put_certify64(o, t, info, up, err)) != PTP_OK) {
+        free(done);
+        return st;
+    }
+    sbuf_printf(o, "unsigned %sclassify(const float cp[][4], const float eye[4])\n{\n"
+                   "    unsigned char c;\n"
+                   "    %slanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */\n",
+                px, px);
+    if (second)
+        sbuf_printf(o, "    if (c == %s%s)\n        c = (unsigned char)%s%s(cp, eye);\n", again_px, again,
+                    px, second);
+    sbuf_puts(o, "    return c;\n}\n\n");
+    sbuf_printf(o, "void %sclassify_soa(const float *soa, size_t stride, size_t patch_count,\n"
+                   "                  const float eye[4], unsigned char *cls)\n{\n"
+                   "    %slanes(soa, stride, patch_count, eye, cls);\n",
+                px, px);
+    if (second)
+        sbuf_printf(o, "    size_t p;\n    unsigned k, c;\n"
+                       "    for (p = 0; p < patch_count; p++)\n"
+                       "        if (cls[p] == %s%s) {\n"
+                       "            float cp[%sPOINTS][4];\n"
+                       "            for (k = 0; k < %sPOINTS; k++)\n"
+                       "                for (c = 0; c < 4; c++)\n"
+                       "                    cp[k][c] = soa[(k * 4 + c) * stride + p];\n"
+                       "            cls[p] = (unsigned char)%s%s((const float (*)[4])cp, eye);\n"
+                       "        }\n",
+                    again_px, again, up, up, px, second);
+    sbuf_puts(o, "}\n\n");
+    /* clip space never reads z: the transposition skips it */
+    sbuf_printf(o, "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
+                   "                    unsigned char *cls)\n{\n"
+                   "    float soa[%sPOINTS * 4 * %sLANES];\n"
+                   "    size_t p, l, n;\n"
+                   "    unsigned k, c;\n"
+                   "    for (p = 0; p < patch_count; p += n) {\n"
+                   "        n = patch_count - p < %sLANES ? patch_count - p : %sLANES;\n"
+                   "        l = 0;\n"
+                   "#if defined(__SSE2__) && !defined(%sNO_SSE)\n"
+                   "        for (; l + 4 <= n; l += 4) /* 4x4 transposes: one point of four patches */\n"
+                   "            for (k = 0; k < %sPOINTS; k++) {\n"
+                   "                __m128 r0 = _mm_loadu_ps(cp[(p + l) * %sPOINTS + k]);\n"
+                   "                __m128 r1 = _mm_loadu_ps(cp[(p + l + 1) * %sPOINTS + k]);\n"
+                   "                __m128 r2 = _mm_loadu_ps(cp[(p + l + 2) * %sPOINTS + k]);\n"
+                   "                __m128 r3 = _mm_loadu_ps(cp[(p + l + 3) * %sPOINTS + k]);\n"
+                   "                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);\n"
+                   "                _mm_storeu_ps(soa + (k * 4 + 0) * %sLANES + l, r0);\n"
+                   "                _mm_storeu_ps(soa + (k * 4 + 1) * %sLANES + l, r1);\n",
+                px, up, up, up, up, up, up, up, up, up, up, up, up);
+    if (world)
+        sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 2) * %sLANES + l, r2);\n", up);
+    sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 3) * %sLANES + l, r3);\n"
+                   "            }\n"
+                   "#endif\n"
+                   "        for (; l < n; l++)\n"
+                   "            for (k = 0; k < %sPOINTS; k++)\n"
+                   "                for (c = 0; c < 4; c++)\n"
+                   "%s"
+                   "%*ssoa[(k * 4 + c) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][c];\n",
+                up, up, world ? "" : "                    if (c != 2) /* z: clip space never reads it */\n",
+                world ? 20 : 24, "", up, up);
+    sbuf_printf(o, "#if defined(__GNUC__) /* the next block into the caches while this one is classified */\n"
+                   "        {\n"
+                   "            const char *next = (const char *)(cp + (p + n) * %sPOINTS);\n"
+                   "            size_t b, m = patch_count - p - n < %sLANES ? patch_count - p - n : %sLANES;\n"
+                   "            for (b = 0; b < m * %sPOINTS * sizeof *cp; b += 64)\n"
+                   "                __builtin_prefetch(next + b, 0, 0);\n"
+                   "        }\n"
+                   "#endif\n"
+                   "        %slanes(soa, %sLANES, n, eye, cls + p);\n",
+                up, up, up, up, px, up);
+    if (second)
+        sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
+                       "            if (cls[p + l] == %s%s)\n"
+                       "                cls[p + l] = (unsigned char)%s%s(cp + (p + l) * %sPOINTS, eye);\n",
+                    again_px, again, px, second, up);
+    sbuf_puts(o, "    }\n}\n");
+    free(done);
+    return PTP_OK;
+}
+
+int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
+{
+    sbuf banner, tables, funcs;
+    out_info plain;
+    char up[64], file[96], points[16], planes[16], count[80], flops[24];
+    tpl_slot slots[9];
+    slp_prog prog;
+    int st;
+    fmt_upper(up, sizeof up, info->prefix);
+    fmt_file_name(file, sizeof file, info->prefix, ".h");
+    snprintf(points, sizeof points, "%d", t->npoints);
+    snprintf(planes, sizeof planes, "%d", t->nplanes);
+    snprintf(count, sizeof count, "%sTERMS", up);
+    sbuf_init(&banner);
+    sbuf_init(&tables);
+    sbuf_init(&funcs);
+    plain = *info;
+    plain.sched = NULL; /* one thread per patch: no schedule */
+    fmt_banner(&banner, t, &plain, file, "C99 single header (stb style)",
+                " * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.\n"
+                " * Headers of several degrees (prefixes) may be included in one program.\n");
+    sbuf_printf(&tables, "\n#define %sTERMS %zu\n", up, t->nterms);
+    out_c_arrays(&tables, t, NULL, info->prefix, count, NULL, 0);
+    put_functions(&funcs, info, up);
+    st = slp_build(&prog, t, err);
+    if (!st) {
+        cert_bounds cb = {0};
+        snprintf(flops, sizeof flops, "%ld", slp_flops(&prog, info->space == OUT_WORLD));
+        if (info->certified)
+            st = cert_slp(&cb, &prog, info->space == OUT_WORLD, err);
+        if (!st)
+            st = put_lanes(&funcs, &prog, &cb, t, info, up, err);
+        cert_clear(&cb);
+        slp_clear(&prog);
+    }
+    if (st) {
+        sbuf_clear(&banner);
+        sbuf_clear(&tables);
+        sbuf_clear(&funcs);
+        return st;
+    }
+    slots[0] = (tpl_slot){"BANNER", banner.s};
+    slots[1] = (tpl_slot){"PREFIX", info->prefix};
+    slots[2] = (tpl_slot){"UPREFIX", up};
+    slots[3] = (tpl_slot){"POINTS", points};
+    slots[4] = (tpl_slot){"PLANES", planes};
+    slots[5] = (tpl_slot){"VALUE", info->space == OUT_CLIP ? "clip space: eye[2] * t_P.z"
+                                                         : "world space: eye . t_P"};
+    slots[6] = (tpl_slot){"TABLES", tables.s};
+    slots[7] = (tpl_slot){"FUNCTIONS", funcs.s};
+    slots[8] = (tpl_slot){"FLOPS", flops};
+    st = banner.failed || tables.failed || funcs.failed
+             ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
+             : tpl_fill(o, "c/kernel.h", slots, 9, err);
+    sbuf_clear(&banner);
+    sbuf_clear(&tables);
+    sbuf_clear(&funcs);
+    return st;
+}

@@ -1,0 +1,42 @@
+/* out.h: the machine-readable outputs of a control-plane table: json, table, stats.
+ * Each writes into an sbuf; nothing here touches files. */
+#ifndef OUT_H
+#define OUT_H
+
+#include "emit/sbuf.h"
+#include "plan/sched.h"
+#include "core/tplane.h"
+
+/* Clip space: control points already transformed, only z components needed; world space: the
+ * full planes dotted with a homogeneous eye point. */
+typedef enum { OUT_CLIP, OUT_WORLD } out_space;
+/* strict: back iff all values < 0, front iff all > 0; degenerate: the paper's count rule, back
+ * iff none > 0, front iff none < 0 (all zero counts as back). NaN makes a patch silhouette. */
+typedef enum { OUT_STRICT, OUT_DEGENERATE } out_rule;
+
+/* What every output names besides the table itself. */
+typedef struct {
+    const char *command; /* the normalized command line that makes this output */
+    const char *prefix;  /* identifier prefix of generated names, e.g. "ptp_3x3_" */
+    const sched *sched;  /* the schedule of the table's terms over a patch's threads */
+    out_space space;
+    out_rule rule;
+    int planes;          /* kernels also write the per-plane values */
+    int certified;       /* back or front only when every value clears its rounding bound */
+    int refine;          /* C: de Casteljau levels on e.T when the values have mixed signs */
+} out_info;
+
+/* The ptpgen-planes/1 JSON document of t. */
+int out_json(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
+/* A C header in the paper's idx/wgt format, with exact weights in comments and an
+ * integer form over one common denominator. */
+int out_table(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
+/* Writes C arrays NAMEidx[COUNT][4] = {plane, j, k, l} and NAMEwgt[COUNT] (float, the exact
+ * rational in a comment) and, when itype is not NULL, NAMEiwgt[COUNT] (D * wgt, of type itype):
+ * for the table's terms in order (s NULL) or the slots of schedule s, with padding rows. */
+void out_c_arrays(sbuf *o, const tp_table *t, const sched *s, const char *name,
+                  const char *count, const char *itype, ptp_i128 D);
+/* The term count of every plane as a matrix, and the total. */
+int out_stats(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
+
+#endif

@@ -1,0 +1,119 @@
+/* cert.c: per-plane constants of the certified classification, computed in double from the
+ * exact weights and rounded up to float; the derivation is in README (Certified classification). */
+#include "plan/cert.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* The smallest float >= x (x >= 0, finite). */
+static float float_up(double x)
+{
+    float f = (float)x;
+    if ((double)f < x) {
+        uint32_t bits;
+        memcpy(&bits, &f, sizeof bits);
+        bits++;
+        memcpy(&f, &bits, sizeof f);
+    }
+    return f;
+}
+
+/* Fills b from per-plane depth d, weight sum S and rounded-product count n (arrays of L). */
+static void fill(cert_bounds *b, const double *d, const double *S, const double *n, int world,
+                 double eta)
+{
+    const double u = 0x1p-24, m = world ? 24 : 6;
+    /* (1 - u)^-10 for the float evaluation of the bound, 1 + 2^-40 for this double arithmetic */
+    const double widen = 1.0000006 * (1 + 0x1p-40);
+    double smax = 0;
+    int i;
+    for (i = 0; i < b->nplanes; i++) {
+        double gamma = d[i] * u / (1 - d[i] * u), k = gamma * m * S[i] * widen;
+        b->k[i] = float_up(k);
+        /* eta per product, scaled by at most 2 (1 + R)^3 (1 + E) and the weights; doubled
+         * again for the rounding of a subnormal K2 * F. */
+        b->k2[i] = float_up(4 * eta * n[i] * (S[i] > 1 ? S[i] : 1) * widen);
+        smax = m * S[i] > smax ? m * S[i] : smax;
+        if (b->k64) {
+            /* The same evaluation in double (u = 2^-53), with two more roundings for the double
+             * weights; 1 + 2^-40 covers the double evaluation of the bound and of k itself. */
+            const double u64 = 0x1p-53, d64 = d[i] + 2;
+            b->k64[i] = d64 * u64 / (1 - d64 * u64) * m * S[i] * (1 + 0x1p-40);
+            b->k2_64[i] = 4 * 0x1p-1074 * n[i] * (S[i] > 1 ? S[i] : 1) * (1 + 0x1p-40);
+        }
+    }
+    /* Every intermediate is at most max(E, 1) R^3 m S (1 + gamma): certifying only patches with
+     * max(E, 1) R^3 < 2^120 / max(m S) keeps all of them below FLT_MAX. */
+    b->q_max = (float)(0x1p120 / (smax + 1));
+}
+
+static int alloc(cert_bounds *b, int nplanes, int with64, double **d, double **S, double **n,
+                 ptp_error *err)
+{
+    memset(b, 0, sizeof *b);
+    b->nplanes = nplanes;
+    b->k = malloc((size_t)nplanes * sizeof *b->k);
+    b->k2 = malloc((size_t)nplanes * sizeof *b->k2);
+    if (with64) {
+        b->k64 = malloc((size_t)nplanes * sizeof *b->k64);
+        b->k2_64 = malloc((size_t)nplanes * sizeof *b->k2_64);
+    }
+    *d = calloc((size_t)nplanes * 3, sizeof **d);
+    *S = *d ? *d + nplanes : NULL;
+    *n = *d ? *d + 2 * nplanes : NULL;
+    if (b->k && b->k2 && *d && (!with64 || (b->k64 && b->k2_64)))
+        return PTP_OK;
+    free(*d);
+    cert_clear(b);
+    return ptp_fail(err, PTP_ENOMEM, "out of memory computing the certified bounds");
+}
+
+int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
+{
+    double *d, *S, *n;
+    size_t i;
+    int st = alloc(b, t->nplanes, 1, &d, &S, &n, err);
+    if (st)
+        return st;
+    for (i = 0; i < t->nterms; i++) {
+        double w = rat_get_d(&t->terms[i].w);
+        d[t->terms[i].plane] += 1;
+        S[t->terms[i].plane] += (w < 0 ? -w : w) * (1 + 0x1p-50);
+        n[t->terms[i].plane] += world ? 44 : 12;
+    }
+    for (i = 0; i < (size_t)t->nplanes; i++)
+        d[i] += 16;
+    fill(b, d, S, n, world, 0x1p-126); /* GPUs may flush subnormals to zero */
+    free(d);
+    return PTP_OK;
+}
+
+int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)
+{
+    double *d, *S, *n;
+    size_t i;
+    int st = alloc(b, p->nplanes, 0, &d, &S, &n, err);
+    if (st)
+        return st;
+    for (i = 0; i < p->nterms; i++) {
+        const slp_term *x = &p->terms[i];
+        int first = i == 0 || p->terms[i - 1].group != x->group;
+        d[x->plane] += first ? 2 : 1; /* the term's sum, and the group's */
+        S[x->plane] += rat_get_d(&p->s[x->group]) * (1 + 0x1p-50);
+        n[x->plane] += world ? 32 : 12;
+    }
+    for (i = 0; i < (size_t)p->nplanes; i++)
+        d[i] += world ? 8 : 7;
+    fill(b, d, S, n, world, 0x1p-150); /* IEEE float with subnormals */
+    free(d);
+    return PTP_OK;
+}
+
+void cert_clear(cert_bounds *b)
+{
+    free(b->k);
+    free(b->k2);
+    free(b->k64);
+    free(b->k2_64);
+    memset(b, 0, sizeof *b);
+}

@@ -1,0 +1,25 @@
+/* cert.h: the constants of certified classification: per plane, a rigorous bound on the float
+ * rounding error of its value, as K * E R^3 + K2 * (1 + R)^3 (1 + E) (README: Certified). */
+#ifndef CERT_H
+#define CERT_H
+#include "plan/slp.h"
+/* R is the largest |coordinate| a value reads, E the largest |eye component| (clip: |eye[2]|).
+ * For the evaluation with d rounded operations on any path, the error of a plane's value is at
+ * most gamma_d times its absolute-value evaluation A <= m S E R^3 (m = 6 monomials per clip term,
+ * 24 in world space, S the sum of |weights|), plus at most eta per rounded product for
+ * underflow (2^-150 in C; 2^-126 on GPUs, which may flush subnormals to zero), scaled by at most
+ * three further factors. K and K2 come rounded up, widened for the
+ * float evaluation of the bound (ten roundings) and for their own double computation. */
+typedef struct {
+    float *k, *k2; /* per plane */
+    float q_max;   /* certify only patches with max(E, 1) R^3 < q_max: nothing overflows */
+    double *k64, *k2_64; /* cert_table: the same for the table loop in double (else NULL) */
+    int nplanes;
+} cert_bounds;
+/* The bounds of the table loop (the GPU kernels; in double, the C target's recheck): float
+ * weights, (terms + 16) roundings on a path as derived in README. PTP_ENOMEM on failure. */
+int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
+/* The bounds of the straight-line program p (the C target's classify), at its planes' scales. */
+int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err);
+void cert_clear(cert_bounds *b);
+#endif

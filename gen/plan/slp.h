@@ -1,0 +1,38 @@
+/* slp.h: the straight-line program behind the C target's classify: every plane's value up to a
+ * positive factor, from shared 2x2 minors and weight-scaled multipliers, exact zeros kept. */
+#ifndef SLP_H
+#define SLP_H
+#include "core/tplane.h"
+/* A plane's value at scale c_P > 0 (c_P makes its weights coprime integers s) is
+ *     sum over the distinct s of the plane of  s * (sum over its terms of weight +-s of
+ *         +-sum over kinds K of ((G_K(b_j) M_K(b_k, b_l) - G_K(b_k) M_K(b_j, b_l)) + G_K(b_l) M_K(b_j, b_k)))
+ * where each bracket is the generalized Laplace expansion of -det[b_j b_k b_l e] along rows
+ * {0, 1}, so every monomial of the determinant appears once. World space has two kinds:
+ *     G_0(x) = e0 x1 - e1 x0 with M_0 the (z, w) minor, G_1(x) = e2 x3 - e3 x2 with the (x, y) minor;
+ * clip space (e = (0, 0, e2, 0)) only kind 1 with G_1(x) = e2 x3. Two equal points in a term
+ * make its bracket exactly zero in float arithmetic without
+ * contracted multiply-adds, so a plane whose terms all vanish is exactly zero. */
+typedef struct {
+    int k, l; /* the minor M(b_k, b_l), k < l */
+} slp_pair;
+typedef struct {
+    int plane, neg;  /* the bracket is subtracted when neg */
+    int group;       /* terms of one plane with one s form a group, consecutive */
+    int point[3];    /* j < k < l */
+    int pair[3];     /* the minors (k, l), (j, l), (j, k) */
+} slp_term;
+typedef struct {
+    int npoints, nplanes;
+    size_t npairs, ngroups, nterms;
+    slp_pair *pairs; /* in order of first use */
+    rat *s;          /* the scale s > 0 of every group; s == 1 needs no product */
+    slp_term *terms; /* by plane, then group */
+} slp_prog;
+/* Builds the program of t. p is uninitialized on entry and on failure (PTP_ENOMEM,
+ * PTP_EOVERFLOW when a plane's scale does not fit). */
+int slp_build(slp_prog *p, const tp_table *t, ptp_error *err);
+/* Frees p's storage. */
+void slp_clear(slp_prog *p);
+/* Floating-point operations per patch (multiplies, adds, subtracts), clip or world space. */
+long slp_flops(const slp_prog *p, int world);
+#endif

@@ -1,0 +1,359 @@
+/* vectors.c: the ptpgen-vectors/1 document: random integer patches, exact values and classes.
+ * A splitmix64 stream draws every case; each value is summed exactly over a common denominator. */
+#include "tools/vectors.h"
+#include "core/i128.h"
+
+#include <inttypes.h>
+#include <stdlib.h>
+
+enum { KIND_NEAR, KIND_FLAT, KIND_COLLAPSED, KIND_EDGE_ON, KIND_CORNER };
+static const char *const kind_names[] = {"near-planar", "flat", "collapsed-edge", "edge-on",
+                                         "corner-tangent"};
+
+static const char conventions[] =
+    "point k = i*(m+1)+j and plane P = I*(3m-1)+J, with i and I along u; t_P is the sum of "
+    "weight*cross4(b_j, b_k, b_l) over the ptpgen-planes/1 terms of plane P, cross4 as in "
+    "Appendix A of Loop, Niessner and Eisenacher (2011); values d_P = eye.t_P in world space and "
+    "eye.z*t_P.z in clip space, exact and as the nearest double; classes 0 front, 1 back, "
+    "2 silhouette: strict, back iff every d_P < 0 and front iff every d_P > 0; degenerate, back "
+    "iff no d_P > 0 and front iff no d_P < 0 (all zero counts as back)";
+
+/* The next value of the splitmix64 stream s. */
+static uint64_t next(uint64_t *s)
+{
+    uint64_t z = (*s += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return z ^ (z >> 31);
+}
+
+/* An integer in [lo, hi] (the modulo bias does not matter here). */
+static int draw(uint64_t *s, int lo, int hi)
+{
+    return lo + (int)(next(s) % (uint64_t)(hi - lo + 1));
+}
+
+/* +1 or -1. */
+static int draw_sign(uint64_t *s)
+{
+    return draw(s, 0, 1) ? 1 : -1;
+}
+
+/* One case being drawn. */
+typedef struct {
+    int (*X)[3];     /* the integer 3-D points, before the weights */
+    int64_t (*b)[4]; /* the homogeneous control points */
+    int64_t eye[4];
+    int kind;
+} vcase;
+
+/* C, U, V in [-2, 2]^3 with N = U x V != 0; clip: the plane of U and V contains the z axis
+ * (edge-on) or does not (N_z != 0). */
+static void draw_frame(int C[3], int U[3], int V[3], int N[3], uint64_t *s, out_space space,
+                       int edge_on)
+{
+    int c, vertical = space == OUT_CLIP && edge_on;
+    for (c = 0; c < 3; c++)
+        C[c] = draw(s, -2, 2);
+    do {
+        for (c = 0; c < 3; c++) {
+            U[c] = draw(s, -2, 2);
+            V[c] = draw(s, -2, 2);
+        }
+        if (vertical)
+            V[0] = V[1] = 0;
+        N[0] = U[1] * V[2] - U[2] * V[1];
+        N[1] = U[2] * V[0] - U[0] * V[2];
+        N[2] = U[0] * V[1] - U[1] * V[0];
+    } while ((!N[0] && !N[1] && !N[2]) || (space == OUT_CLIP && !vertical && !N[2]));
+    if (vertical && draw(s, 0, 1))
+        for (c = 0; c < 3; c++) {
+            int x = U[c];
+            U[c] = V[c];
+            V[c] = x;
+            N[c] = -N[c];
+        }
+}
+
+/* v->X = the grid C + a_i U + b_j V plus noise in [-amp, amp]^3 per point. */
+static void draw_grid(vcase *v, const tp_table *t, uint64_t *s, const int C[3], const int U[3],
+                      const int V[3], int amp)
+{
+    int i, j, c;
+    for (i = 0; i <= t->n; i++)
+        for (j = 0; j <= t->m; j++) {
+            int *X = v->X[i * (t->m + 1) + j], a = 6 * i / t->n - 3, b = 6 * j / t->m - 3;
+            for (c = 0; c < 3; c++)
+                X[c] = C[c] + a * U[c] + b * V[c] + draw(s, -amp, amp);
+        }
+}
+
+/* Moves a random corner X_0 by noise in [-2, 2]^3 and puts the eye in its tangent plane (the
+ * corner plane becomes zero): world, eye = X_0 +- (X_1 - X_0) +- (X_2 - X_0) with X_1, X_2 its
+ * neighbours; clip, X_2 takes the x, y of X_0 or X_1. */
+static void corner_tangent(vcase *v, const tp_table *t, out_space space, uint64_t *s)
+{
+    int ci = draw(s, 0, 1) * t->n, cj = draw(s, 0, 1) * t->m, c;
+    int k0 = ci * (t->m + 1) + cj, k1 = k0 + (cj ? -1 : 1), k2 = k0 + (ci ? -1 : 1) * (t->m + 1);
+    for (c = 0; c < 3; c++)
+        v->X[k0][c] += draw(s, -2, 2);
+    if (space == OUT_CLIP) {
+        int from = draw(s, 0, 1) ? k1 : k0;
+        v->X[k2][0] = v->X[from][0];
+        v->X[k2][1] = v->X[from][1];
+    } else {
+        int s1 = draw_sign(s), s2 = draw_sign(s);
+        for (c = 0; c < 3; c++)
+            v->eye[c] = v->X[k0][c] + s1 * (v->X[k1][c] - v->X[k0][c]) +
+                        s2 * (v->X[k2][c] - v->X[k0][c]);
+    }
+}
+
+/* Replaces one random boundary row of control points by copies of its first point. */
+static void collapse_edge(vcase *v, const tp_table *t, uint64_t *s)
+{
+    int e = draw(s, 0, 3), k, c;
+    int first = e == 1 ? t->n * (t->m + 1) : e == 3 ? t->m : 0;
+    for (k = 0; k < t->npoints; k++) {
+        int i = k / (t->m + 1), j = k % (t->m + 1);
+        int on = e == 0 ? i == 0 : e == 1 ? i == t->n : e == 2 ? j == 0 : j == t->m;
+        for (c = 0; on && c < 4; c++)
+            v->b[k][c] = v->b[first][c];
+    }
+}
+
+/* Draws the next case from s (see vectors.h for the distribution). */
+static void draw_case(vcase *v, const tp_table *t, out_space space, uint64_t *s)
+{
+    int C[3], U[3], V[3], N[3], c, k, r = draw(s, 0, 19), rational = draw(s, 0, 2) == 0;
+    v->kind = r < 8 ? KIND_NEAR : r < 11 ? KIND_FLAT : r < 14 ? KIND_COLLAPSED
+            : r < 17 ? KIND_EDGE_ON : KIND_CORNER;
+    draw_frame(C, U, V, N, s, space, v->kind == KIND_EDGE_ON);
+    draw_grid(v, t, s, C, U, V,
+              v->kind == KIND_NEAR || v->kind == KIND_COLLAPSED ? draw(s, 1, 2) : 0);
+    if (space == OUT_CLIP) {
+        v->eye[0] = v->eye[1] = v->eye[3] = 0;
+        v->eye[2] = draw_sign(s);
+    } else {
+        int e = v->kind == KIND_EDGE_ON ? 0 : draw_sign(s) * draw(s, 1, 4);
+        int lim = v->kind == KIND_EDGE_ON ? 8 : 2, a = draw(s, -lim, lim), b = draw(s, -lim, lim);
+        for (c = 0; c < 3; c++)
+            v->eye[c] = C[c] + e * N[c] + a * U[c] + b * V[c];
+        v->eye[3] = 1;
+    }
+    if (v->kind == KIND_CORNER)
+        corner_tangent(v, t, space, s);
+    for (k = 0; k < t->npoints; k++) {
+        int w = rational ? draw(s, 1, VECTORS_W_MAX) : 1;
+        v->b[k][0] = w * v->X[k][0];
+        v->b[k][1] = w * v->X[k][1];
+        v->b[k][2] = space == OUT_CLIP ? w * v->X[k][2] / 17 : w * v->X[k][2];
+        v->b[k][3] = w;
+    }
+    if (v->kind == KIND_COLLAPSED)
+        collapse_edge(v, t, s);
+}
+
+/* e . cross4(a, b, c), exactly (|result| < 2^24 within the documented bounds). */
+static int64_t eye_cross4(const int64_t e[4], const int64_t a[4], const int64_t b[4],
+                          const int64_t c[4])
+{
+#define DET3(p, q, s)                                                                  \
+    (a[p] * (b[q] * c[s] - b[s] * c[q]) - b[p] * (a[q] * c[s] - a[s] * c[q]) +          \
+     c[p] * (a[q] * b[s] - a[s] * b[q]))
+    return e[0] * DET3(1, 2, 3) - e[1] * DET3(0, 2, 3) + e[2] * DET3(0, 1, 3) -
+           e[3] * DET3(0, 1, 2);
+#undef DET3
+}
+
+/* The double nearest to a (ties to even), exactly: a in normal double range. */
+static double nearest_double(const rat *a)
+{
+    ptp_u128 n = i128_abs(a->num), d = (ptp_u128)a->den, q = n / d, r = n % d;
+    int e = 0, sticky, low;
+    double x;
+    if (n == 0)
+        return 0.0;
+    while (!(q >> 54)) { /* long division until q has 55 bits */
+        r <<= 1;         /* r < d < 2^127 */
+        q = (q << 1) | (r >= d);
+        r -= r >= d ? d : 0;
+        e--;
+    }
+    sticky = r != 0;
+    for (; q >> 55; q >>= 1, e++)
+        sticky |= (int)(q & 1);
+    low = (int)(q & 3); /* the 2 bits below the 53 kept */
+    q >>= 2;
+    e += 2;
+    if (low > 2 || (low == 2 && (sticky || (q & 1))))
+        q++;
+    for (x = (double)(uint64_t)q; e > 0; e--)
+        x *= 2;
+    for (; e < 0; e++)
+        x *= 0.5;
+    return a->num < 0 ? -x : x;
+}
+
+/* Appends s as a JSON string. */
+static void put_string(sbuf *o, const char *s)
+{
+    sbuf_puts(o, "\"");
+    for (; *s; s++) {
+        unsigned char ch = (unsigned char)*s;
+        if (ch == '"' || ch == '\\')
+            sbuf_printf(o, "\\%c", ch);
+        else if (ch < 0x20)
+            sbuf_printf(o, "\\u%04x", ch);
+        else
+            sbuf_printf(o, "%c", ch);
+    }
+    sbuf_puts(o, "\"");
+}
+
+/* The class of a case from the counts of its positive and negative values under a rule. */
+static int classify(int pos, int neg, int nvalues, out_rule rule)
+{
+    if (rule == OUT_STRICT)
+        return neg == nvalues ? 1 : pos == nvalues ? 0 : 2;
+    return pos == 0 ? 1 : neg == 0 ? 0 : 2;
+}
+
+/* The state of one call: the table over common denominators, one case, its values. */
+typedef struct {
+    const tp_table *t;
+    ptp_i128 *iw;  /* per term: weight * den[plane], an integer */
+    ptp_i128 *den; /* per plane: the least common denominator of its weights */
+    ptp_i128 *num; /* per plane: the current case's d_P * den[plane] */
+    rat *val;      /* per plane: the current case's d_P */
+    vcase v;
+} vstate;
+
+/* Fills st->den and st->iw from the exact weights. */
+static int common_denominators(vstate *st, ptp_error *err)
+{
+    const tp_table *t = st->t;
+    size_t x;
+    int p;
+    for (p = 0; p < t->nplanes; p++)
+        st->den[p] = 1;
+    for (x = 0; x < t->nterms; x++) {
+        const tp_term *w = &t->terms[x];
+        ptp_i128 *D = &st->den[w->plane];
+        if (i128_mul_ovf(D, *D / (ptp_i128)u128_gcd((ptp_u128)*D, (ptp_u128)w->w.den), w->w.den))
+            return ptp_fail(err, PTP_EOVERFLOW, "overflow in the denominator of plane %d",
+                            w->plane);
+    }
+    for (x = 0; x < t->nterms; x++) {
+        const tp_term *w = &t->terms[x];
+        if (i128_mul_ovf(&st->iw[x], w->w.num, st->den[w->plane] / w->w.den))
+            return ptp_fail(err, PTP_EOVERFLOW, "overflow in a weight of plane %d", w->plane);
+    }
+    return PTP_OK;
+}
+
+/* Appends the current case: its values, summed exactly, and its classes. */
+static int put_case(sbuf *o, vstate *st, long index, ptp_error *err)
+{
+    const tp_table *t = st->t;
+    const vcase *v = &st->v;
+    char buf[RAT_STRLEN];
+    int p, k, pos = 0, neg = 0;
+    size_t x;
+    for (p = 0; p < t->nplanes; p++)
+        st->num[p] = 0;
+    for (x = 0; x < t->nterms; x++) {
+        const tp_term *w = &t->terms[x];
+        ptp_i128 y;
+        if (i128_mul_ovf(&y, st->iw[x], eye_cross4(v->eye, v->b[w->j], v->b[w->k], v->b[w->l])) ||
+            i128_add_ovf(&st->num[w->plane], st->num[w->plane], y))
+            return ptp_fail(err, PTP_EOVERFLOW, "overflow in plane %d of case %ld", w->plane,
+                            index);
+    }
+    for (p = 0; p < t->nplanes; p++) {
+        if (rat_set_frac(&st->val[p], st->num[p], st->den[p])) /* |num| <= I128_MAX, den > 0 */
+            return ptp_fail(err, PTP_EINTERNAL, "bad value of plane %d of case %ld", p, index);
+        pos += rat_sgn(&st->val[p]) > 0;
+        neg += rat_sgn(&st->val[p]) < 0;
+    }
+    sbuf_printf(o, "    {\"eye\": [%" PRId64 ", %" PRId64 ", %" PRId64 ", %" PRId64 "],\n",
+                v->eye[0], v->eye[1], v->eye[2], v->eye[3]);
+    sbuf_puts(o, "     \"points\": [");
+    for (k = 0; k < t->npoints; k++)
+        sbuf_printf(o, "%s[%" PRId64 ", %" PRId64 ", %" PRId64 ", %" PRId64 "]", k ? ", " : "",
+                    v->b[k][0], v->b[k][1], v->b[k][2], v->b[k][3]);
+    sbuf_puts(o, "],\n     \"values\": [");
+    for (p = 0; p < t->nplanes; p++)
+        sbuf_printf(o, "%s\"%s\"", p ? ", " : "", rat_get_str(buf, &st->val[p]));
+    sbuf_puts(o, "],\n     \"values_double\": [");
+    for (p = 0; p < t->nplanes; p++)
+        sbuf_printf(o, "%s%.17g", p ? ", " : "", nearest_double(&st->val[p]));
+    sbuf_printf(o, "],\n     \"class_strict\": %d, \"class_degenerate\": %d, \"kind\": \"%s\"}",
+                classify(pos, neg, t->nplanes, OUT_STRICT),
+                classify(pos, neg, t->nplanes, OUT_DEGENERATE), kind_names[v->kind]);
+    return PTP_OK;
+}
+
+/* Appends the whole document; out is restored by the caller on failure. */
+static int put_document(sbuf *out, vstate *st, long count, uint64_t seed, out_space space,
+                        const char *command, ptp_error *err)
+{
+    const tp_table *t = st->t;
+    uint64_t s = seed;
+    long c;
+    int status;
+    sbuf_printf(out, "{\n  \"format\": \"ptpgen-vectors/1\",\n  \"generator\": \"ptpgen %s\",\n",
+                PTP_VERSION);
+    sbuf_puts(out, "  \"command\": ");
+    put_string(out, command);
+    sbuf_printf(out, ",\n  \"degree\": [%d, %d],\n  \"space\": \"%s\",\n", t->n, t->m,
+                space == OUT_CLIP ? "clip" : "world");
+    sbuf_printf(out, "  \"seed\": %" PRIu64 ",\n  \"points\": %d,\n  \"planes\": %d,\n", seed,
+                t->npoints, t->nplanes);
+    sbuf_printf(out, "  \"conventions\": \"%s\",\n  \"cases\": [", conventions);
+    for (c = 0; c < count; c++) {
+        draw_case(&st->v, t, space, &s);
+        sbuf_puts(out, c ? ",\n" : "\n");
+        if ((status = put_case(out, st, c, err)))
+            return status;
+    }
+    sbuf_puts(out, count ? "\n  ]\n}\n" : "]\n}\n");
+    return out->failed ? ptp_fail(err, PTP_ENOMEM, "out of memory writing test vectors") : PTP_OK;
+}
+
+int vectors_write(sbuf *out, const tp_table *t, long count, uint64_t seed, out_space space,
+                  const char *command, ptp_error *err)
+{
+    const size_t len = out->len;
+    const int failed = out->failed;
+    vstate st;
+    int status;
+    if (count < 0)
+        return ptp_fail(err, PTP_EUSAGE, "the count of test vectors must not be negative");
+    if (count > VECTORS_MAX_COUNT)
+        return ptp_fail(err, PTP_ELIMIT, "at most %ld test vectors (asked for %ld)",
+                        VECTORS_MAX_COUNT, count);
+    st.t = t;
+    st.iw = malloc(t->nterms * sizeof *st.iw);
+    st.den = malloc((size_t)t->nplanes * sizeof *st.den);
+    st.num = malloc((size_t)t->nplanes * sizeof *st.num);
+    st.val = malloc((size_t)t->nplanes * sizeof *st.val);
+    st.v.X = malloc((size_t)t->npoints * sizeof *st.v.X);
+    st.v.b = malloc((size_t)t->npoints * sizeof *st.v.b);
+    if (!st.iw || !st.den || !st.num || !st.val || !st.v.X || !st.v.b)
+        status = ptp_fail(err, PTP_ENOMEM, "out of memory writing test vectors");
+    else if (!(status = common_denominators(&st, err)))
+        status = put_document(out, &st, count, seed, space, command, err);
+    free(st.iw);
+    free(st.den);
+    free(st.num);
+    free(st.val);
+    free(st.v.X);
+    free(st.v.b);
+    if (status && out->s) {
+        out->len = len;
+        out->s[len] = '\0';
+        out->failed = failed;
+    }
+    return status;
+}
