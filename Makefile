@@ -32,7 +32,7 @@ $(B)/embed: gen/embed/embed.c
 	@mkdir -p $(B)
 	$(CC) $(STD) -O1 -o $@ $<
 
-$(B)/test_%: tests/test_%.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
+$(B)/test_%: tests/test_%.c tests/check.h tests/float_widen.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lm
 
 # The generator library and kref as an archive, for test programs built around emitted headers.
