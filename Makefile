@@ -160,7 +160,8 @@ FORCE:
 
 # `make cullrate`: the average number of patches NCONE, TCONE and ptpgen's tangent-plane test
 # (strict, degenerate, certified) cull from 10,000 random eye points around each model of
-# $(CULLRATE_MODELS), with a bracket of the exact answer (CVis). CULLRATE_ARGS passes options, e.g. `make cullrate CULLRATE_ARGS=--quick`.
+# $(CULLRATE_MODELS), with a bracket of the exact answer (CVis). CULLRATE_ARGS passes options, e.g.
+# `make cullrate CULLRATE_ARGS=--quick`, or `CULLRATE_ARGS="--model my.bez"` to measure your own models.
 CULLRATE_MODELS ?= ../shared/models
 CULLRATE_ARGS ?=
 CR = $(B)/cullrate

@@ -44,8 +44,9 @@ static const char *const method_name[NMETHODS] = {
     "TCONE", "NCONE", "ptpgen strict", "ptpgen degenerate", "ptpgen certified", "ptpgen refine 1",
     "ptpgen refine 2", "ptpgen refine 3", "CVis lower bound", "CVis upper bound"};
 
-static const char *const model_names[] = {"bigguy", "teapot", "teacup", "teaspoon"};
-#define NMODELS (sizeof model_names / sizeof *model_names)
+/* The models run without --model: these names in the --models directory. */
+static const char *const default_models[] = {"bigguy", "teapot", "teacup", "teaspoon"};
+#define NDEFAULT (sizeof default_models / sizeof *default_models)
 static const double radius_factor[2] = {2, 5};
 
 /* Status -8: the double reference would not see the float model the kernels see. */
@@ -55,7 +56,7 @@ static const double radius_factor[2] = {2, 5};
 
 /* A model with everything that does not depend on the eye. */
 typedef struct model {
-    const char *name;
+    char name[128];     /* the file's base name without .bez */
     int npatches;
     float *soa;         /* the float model, ptpgen's input: coordinate c of point k of patch p at
                            soa[(k*4+c)*npatches+p] */
@@ -117,22 +118,23 @@ static void eye_point(const model *m, uint64_t seed, int stream, long e, double 
 }
 
 /* Reads a BEZ file (patch count, 16 one-based indices per patch, vertex count, x,y,z per
- * vertex) into m->npatches and the float model m->soa. Returns 0, or -1 (cannot open), -2 (not
- * a BEZ file of bicubic patches), -3 (out of memory); on failure m->soa is NULL. */
-static int read_bez(model *m, const char *path)
+ * vertex) into m->npatches and the float model m->soa. Returns NULL, or what is wrong (one
+ * line); on failure m->soa is NULL. */
+static const char *read_bez(model *m, const char *path)
 {
     FILE *f = fopen(path, "r");
-    int (*idx)[16] = NULL, p, k, c, nv, rc = -2;
+    int (*idx)[16] = NULL, p, k, c, nv;
     double (*v)[3] = NULL;
+    const char *err = "not a BEZ file of bicubic patches";
     size_t n;
     m->soa = NULL;
     if (!f)
-        return -1;
+        return strerror(errno);
     if (fscanf(f, "%d", &m->npatches) != 1 || m->npatches < 1 || m->npatches > 10000000)
         goto done;
     n = (size_t)m->npatches;
     if (!(idx = malloc(n * sizeof *idx))) {
-        rc = -3;
+        err = "out of memory";
         goto done;
     }
     for (p = 0; p < m->npatches; p++)
@@ -142,13 +144,15 @@ static int read_bez(model *m, const char *path)
     if (fscanf(f, "%d", &nv) != 1 || nv < 1 || nv > 100000000)
         goto done;
     if (!(v = malloc((size_t)nv * sizeof *v)) || !(m->soa = malloc(n * 64 * sizeof *m->soa))) {
-        rc = -3;
+        err = "out of memory";
         goto done;
     }
     for (k = 0; k < nv; k++)
         for (c = 0; c < 3; c++)
-            if (fscanf(f, c ? " ,%lf" : "%lf", &v[k][c]) != 1 || !isfinite(v[k][c]))
+            if (fscanf(f, c ? " ,%lf" : "%lf", &v[k][c]) != 1 || !isfinite(v[k][c]) ||
+                !isfinite((float)v[k][c]))
                 goto done;
+    err = "a vertex index is out of range";
     for (p = 0; p < m->npatches; p++)
         for (k = 0; k < 16; k++) {
             if (idx[p][k] < 1 || idx[p][k] > nv)
@@ -157,16 +161,16 @@ static int read_bez(model *m, const char *path)
                 m->soa[(size_t)(k * 4 + c) * n + (size_t)p] =
                     c < 3 ? (float)v[idx[p][k] - 1][c] : 1.0f;
         }
-    rc = 0;
+    err = NULL;
 done:
     fclose(f);
     free(idx);
     free(v);
-    if (rc) {
+    if (err) {
         free(m->soa);
         m->soa = NULL;
     }
-    return rc;
+    return err;
 }
 
 /* 1 if the double points m->b are the kernels' floats m->soa bit for bit, else 0 (a compiler
@@ -399,10 +403,12 @@ static double now(void)
 
 static void usage(FILE *f)
 {
-    fprintf(f, "usage: cullrate [--eyes N] [--quick] [--models DIR] [--seed S] [--threads T]\n"
-               "                [--depth D] [--samples S]\n"
+    fprintf(f, "usage: cullrate [--eyes N] [--quick] [--model FILE.bez]... [--models DIR]\n"
+               "                [--seed S] [--threads T] [--depth D] [--samples S]\n"
                "  --eyes N     eye points per model and radius (default 10000; --quick: 200)\n"
-               "  --models DIR the .bez files (default ../shared/models)\n"
+               "  --model F    a BEZ file of bicubic patches to measure, shown by its base name;\n"
+               "               repeat for more (default: bigguy, teapot, teacup and teaspoon\n"
+               "               in --models DIR, ../shared/models)\n"
                "  --seed S     the eye points' seed (default 1)\n"
                "  --threads T  worker threads (default: the online CPUs, at most 64)\n"
                "  --depth D    CVis lower bound: subdivision depth, 0..12 (default 6)\n"
@@ -461,34 +467,99 @@ static void print_model(const model *m, const tally t[2], long eyes)
     }
 }
 
+/* The shown name of a model file: its base name without .bez, at most size - 1 bytes. */
+static void model_name(char *name, size_t size, const char *path)
+{
+    const char *base = strrchr(path, '/');
+    size_t len;
+    base = base ? base + 1 : path;
+    len = strlen(base);
+    if (len > 4 && !strcmp(base + len - 4, ".bez"))
+        len -= 4;
+    snprintf(name, size, "%.*s", (int)len, base);
+}
+
+static void free_model(model *m)
+{
+    free(m->soa);
+    free(m->b);
+    free(m->ncone);
+    free(m->tcone);
+    free(m->t);
+}
+
+/* Reads, checks and runs one model (eye stream stream) and prints its table. Returns 0, or 1
+ * after printing one line on stderr. */
+static int run_model(const char *path, const settings *s, int stream)
+{
+    model m;
+    tally t[2];
+    double eye[3], t1 = now(), check;
+    const char *err;
+    int r, rc;
+    memset(&m, 0, sizeof m);
+    model_name(m.name, sizeof m.name, path);
+    if ((err = read_bez(&m, path))) {
+        fprintf(stderr, "cullrate: %s: %s\n", path, err);
+        return 1;
+    }
+    if ((rc = prepare(&m))) {
+        fprintf(stderr, "cullrate: %s: %s\n", path,
+                rc == -3   ? "out of memory"
+                : rc == -8 ? FLOAT_DROPPED
+                           : "a cone or plane computation failed");
+        free_model(&m);
+        return 1;
+    }
+    eye_point(&m, s->seed, stream, 0, 2 * m.radius, eye);
+    check = sign_check(&m, eye);
+    if (!(check < 1e-9)) {
+        fprintf(stderr, "cullrate: %s: the table's planes disagree with (E - B).(B_u x B_v) "
+                "(relative difference %g)\n", m.name, check);
+        rc = -7;
+    }
+    for (r = 0; r < 2 && !rc; r++)
+        if ((rc = run_radius(&m, s, stream, radius_factor[r] * m.radius, &t[r])))
+            fprintf(stderr, "cullrate: %s: %s (status %d)\n", m.name,
+                    rc == -8 ? FLOAT_DROPPED : "the run failed", rc);
+    if (!rc) {
+        print_model(&m, t, s->eyes);
+        printf("  sign check: the table's e.T matches (E - B).(B_u x B_v) to %.1e relative; "
+               "%.1f s\n", check, now() - t1);
+        fflush(stdout);
+    }
+    free_model(&m);
+    return rc ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
     settings s = {10000, 1, 0, 6, 33};
     const char *dir = "../shared/models";
-    model models[NMODELS];
+    const char **files = malloc((size_t)argc * sizeof *files);
+    char defaults[NDEFAULT][4096];
     long cpus = sysconf(_SC_NPROCESSORS_ONLN);
     double t0 = now();
-    size_t i;
-    int a, r, rc = 0;
+    int a, i, nfiles = 0, rc = 0;
+    if (!files) {
+        fprintf(stderr, "cullrate: out of memory\n");
+        return 1;
+    }
     s.threads = cpus < 1 ? 1 : cpus > 64 ? 64 : (int)cpus;
-    for (a = 1; a < argc; a++) {
+    for (a = 1; a < argc && !rc; a++) {
         long long v;
         const char *o = argv[a];
-        if (!strcmp(o, "--quick")) {
+        if (!strcmp(o, "--quick"))
             s.eyes = 200;
-            continue;
-        }
-        if (!strcmp(o, "-h") || !strcmp(o, "--help")) {
-            usage(stdout);
-            return 0;
-        }
-        if (a + 1 >= argc) {
+        else if (!strcmp(o, "-h") || !strcmp(o, "--help"))
+            rc = -1;
+        else if (a + 1 >= argc) {
             fprintf(stderr, "cullrate: unknown option or missing argument: %s\n", o);
-            usage(stderr);
-            return 2;
-        }
-        if (!strcmp(o, "--models"))
+            rc = 2;
+        } else if (!strcmp(o, "--models"))
             dir = argv[++a];
+        else if (!strcmp(o, "--model"))
+            files[nfiles++] = argv[++a];
         else if (!strcmp(o, "--eyes") && !parse_num(argv[a + 1], 1, 100000000, &v))
             s.eyes = (long)v, a++;
         else if (!strcmp(o, "--seed") && !parse_num(argv[a + 1], 0, INT64_MAX, &v))
@@ -501,65 +572,29 @@ int main(int argc, char **argv)
             s.samples = (int)v, a++;
         else {
             fprintf(stderr, "cullrate: bad option or value: %s %s\n", o, argv[a + 1]);
-            usage(stderr);
-            return 2;
+            rc = 2;
         }
     }
-    memset(models, 0, sizeof models);
+    if (rc) {
+        usage(rc < 0 ? stdout : stderr);
+        free(files);
+        return rc < 0 ? 0 : rc;
+    }
+    for (i = 0; !nfiles && i < (int)NDEFAULT; i++) {
+        snprintf(defaults[i], sizeof defaults[i], "%s/%s.bez", dir, default_models[i]);
+        files[i] = defaults[i];
+    }
+    nfiles = nfiles ? nfiles : (int)NDEFAULT;
     printf("cullrate: %ld eyes per model and radius, seed %llu, %d threads; CVis lower bound: "
            "subdivision to depth %d, upper bound: %dx%d samples per patch\n",
            s.eyes, (unsigned long long)s.seed, s.threads, s.depth, s.samples, s.samples);
     printf("A patch is culled when back-facing: (E - B).(B_u x B_v) < 0, which is e.T(u,v) for "
            "e = (E, 1).\n'unsafe': culls of a patch where a sample has e.T > 0; 'elev deg': the "
            "largest angle of the eye above the tangent plane at a sample of such a patch.\n");
-    for (i = 0; i < NMODELS && !rc; i++) {
-        model *m = &models[i];
-        char path[4096];
-        tally t[2];
-        double eye[3], t1 = now(), check;
-        m->name = model_names[i];
-        snprintf(path, sizeof path, "%s/%s.bez", dir, m->name);
-        if ((rc = read_bez(m, path))) {
-            fprintf(stderr, "cullrate: %s: %s\n", path,
-                    rc == -1 ? strerror(errno)
-                    : rc == -2 ? "not a BEZ file of bicubic patches"
-                               : "out of memory");
-            break;
-        }
-        if ((rc = prepare(m))) {
-            fprintf(stderr, "cullrate: %s: %s\n", path,
-                    rc == -3   ? "out of memory"
-                    : rc == -8 ? FLOAT_DROPPED
-                               : "a cone or plane computation failed");
-            break;
-        }
-        eye_point(m, s.seed, (int)i, 0, 2 * m->radius, eye);
-        check = sign_check(m, eye);
-        if (!(check < 1e-9)) {
-            fprintf(stderr, "cullrate: %s: the table's planes disagree with (E - B).(B_u x B_v) "
-                    "(relative difference %g)\n", m->name, check);
-            rc = -7;
-            break;
-        }
-        for (r = 0; r < 2 && !rc; r++)
-            if ((rc = run_radius(m, &s, (int)i, radius_factor[r] * m->radius, &t[r])))
-                fprintf(stderr, "cullrate: %s: %s (status %d)\n", m->name,
-                        rc == -8 ? FLOAT_DROPPED : "the run failed", rc);
-        if (rc)
-            break;
-        print_model(m, t, s.eyes);
-        printf("  sign check: the table's e.T matches (E - B).(B_u x B_v) to %.1e relative; "
-               "%.1f s\n", check, now() - t1);
-        fflush(stdout);
-    }
-    for (i = 0; i < NMODELS; i++) {
-        free(models[i].b);
-        free(models[i].soa);
-        free(models[i].ncone);
-        free(models[i].tcone);
-        free(models[i].t);
-    }
+    for (i = 0; i < nfiles && !rc; i++)
+        rc = run_model(files[i], &s, i);
+    free(files);
     if (!rc)
         printf("\nwall time %.1f s\n", now() - t0);
-    return rc ? 1 : 0;
+    return rc;
 }
