@@ -189,8 +189,9 @@ $(CR)/cr_t.h: $(B)/ptpgen
 	@mkdir -p $(CR)
 	$(B)/ptpgen --degree 3 --target table --prefix cr_t_ -o $@
 
-$(CR)/cullrate: bench/cullrate.c bench/cones.c bench/cones.h $(CR)/cr_s.h $(CR)/cr_d.h $(CR)/cr_c.h \
-    tests/float_widen.h $(CR)/cr_r1.h $(CR)/cr_r2.h $(CR)/cr_r3.h $(CR)/cr_t.h Makefile
-	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -pthread -Ibench -Itests -I$(CR) -o $@ bench/cullrate.c bench/cones.c -lm
+$(CR)/cullrate: bench/cullrate.c bench/cones.c bench/cones.h bench/exact.c bench/exact.h \
+    tests/float_widen.h $(CR)/cr_s.h $(CR)/cr_d.h $(CR)/cr_c.h $(CR)/cr_r1.h $(CR)/cr_r2.h \
+    $(CR)/cr_r3.h $(CR)/cr_t.h Makefile
+	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -pthread -Ibench -Itests -I$(CR) -o $@ bench/cullrate.c bench/cones.c bench/exact.c -lm
 
 .PHONY: cullrate
