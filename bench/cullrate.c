@@ -613,7 +613,7 @@ int main(int argc, char **argv)
 {
     settings s = {10000, 1, 0, 6, 33};
     const char *dir = "../shared/models";
-    const char **files = malloc((size_t)argc * sizeof *files);
+    const char **files = malloc((size_t)(argc + (int)NDEFAULT) * sizeof *files);
     char defaults[NDEFAULT][4096];
     long cpus = sysconf(_SC_NPROCESSORS_ONLN);
     double t0 = now();
