@@ -34,7 +34,7 @@ $(B)/embed: gen/embed/embed.c
 	@mkdir -p $(B)
 	$(CC) $(STD) -O1 -o $@ $<
 
-$(B)/test_%: tests/test_%.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
+$(B)/test_%: tests/test_%.c tests/check.h tests/float_widen.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lm
 
 # The generator library and kref as an archive, for test programs built around emitted headers.
@@ -162,7 +162,8 @@ FORCE:
 
 # `make cullrate`: the average number of patches NCONE, TCONE and ptpgen's tangent-plane test
 # (strict, degenerate, certified) cull from 10,000 random eye points around each model of
-# $(CULLRATE_MODELS), with a bracket of the exact answer (CVis). CULLRATE_ARGS passes options, e.g. `make cullrate CULLRATE_ARGS=--quick`.
+# $(CULLRATE_MODELS), with a bracket of the exact answer (CVis). CULLRATE_ARGS passes options, e.g.
+# `make cullrate CULLRATE_ARGS=--quick`, or `CULLRATE_ARGS="--model my.bez"` to measure your own models.
 CULLRATE_MODELS ?= ../shared/models
 CULLRATE_ARGS ?=
 CR = $(B)/cullrate
@@ -190,8 +191,9 @@ $(CR)/cr_t.h: $(B)/ptpgen
 	@mkdir -p $(CR)
 	$(B)/ptpgen --degree 3 --target table --prefix cr_t_ -o $@
 
-$(CR)/cullrate: bench/cullrate.c bench/cones.c bench/cones.h $(CR)/cr_s.h $(CR)/cr_d.h $(CR)/cr_c.h \
-    $(CR)/cr_r1.h $(CR)/cr_r2.h $(CR)/cr_r3.h $(CR)/cr_t.h Makefile
-	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -pthread -Ibench -I$(CR) -o $@ bench/cullrate.c bench/cones.c -lm
+$(CR)/cullrate: bench/cullrate.c bench/cones.c bench/cones.h bench/exact.c bench/exact.h \
+    tests/float_widen.h $(CR)/cr_s.h $(CR)/cr_d.h $(CR)/cr_c.h $(CR)/cr_r1.h $(CR)/cr_r2.h \
+    $(CR)/cr_r3.h $(CR)/cr_t.h Makefile
+	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -pthread -Ibench -Itests -I$(CR) -o $@ bench/cullrate.c bench/cones.c bench/exact.c -lm
 
 .PHONY: cullrate

@@ -58,6 +58,13 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/test_cli.sh env PTPGEN=build/gcc/ptpgen PTPGEN_OTHER=build/clang/ptpgen bash tests/test_cli.sh
 fi
 
+# bench/cullrate (make cullrate) on a small model, and its errors on bad input.
+if make -s CC=gcc build/gcc/cullrate/cullrate >build/make-cullrate.log 2>&1; then
+    run tests/test_cullrate.sh env CULLRATE=build/gcc/cullrate/cullrate bash tests/test_cullrate.sh
+else
+    echo "not ok - build of build/gcc/cullrate/cullrate failed: see build/make-cullrate.log" | tee -a "$log"
+fi
+
 # The hosts that execute emitted kernels (they need the OpenCL and Vulkan development files).
 for cc in $compilers; do
     for h in libptptest.a host_opencl host_vulkan; do
