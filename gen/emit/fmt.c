@@ -60,7 +60,8 @@ void fmt_upper(char *up, size_t size, const char *prefix)
 
 char *fmt_float_literal(char *buf, const rat *w)
 {
-    sprintf(buf, "%.9g", (double)(float)rat_get_d(w));
+    volatile float f = (float)rat_get_d(w); /* stored, so that no compiler skips the rounding */
+    sprintf(buf, "%.9g", (double)f);
     if (!strpbrk(buf, ".en"))
         strcat(buf, ".0");
     strcat(buf, "f");

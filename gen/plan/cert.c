@@ -5,10 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The smallest float >= x (x >= 0, finite). */
+/* The smallest float >= x (x >= 0, finite). The rounding to float goes through a volatile
+ * store: gcc 12 -O2 can keep a double's unrounded value for (double)(float)x in vectorized code. */
 static float float_up(double x)
 {
-    float f = (float)x;
+    volatile float rounded = (float)x;
+    float f = rounded;
     if ((double)f < x) {
         uint32_t bits;
         memcpy(&bits, &f, sizeof bits);
