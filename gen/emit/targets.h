@@ -15,7 +15,7 @@ enum {
     TGT_REFINE = 1 << 4,    /* --refine K: C only (a de Casteljau loop on the CPU) */
     TGT_PREFIX = 1 << 5,    /* --prefix: targets that declare names (table, C, kernels) */
     TGT_SCHEDULE = 1 << 6   /* --threads-per-patch, --patches-per-block: targets that write the
-                               schedule (json, table, stats, GPU kernels; C has one thread a patch) */
+                               schedule (json, table, stats, GPU kernels; C: a thread a patch) */
 };
 /* The number of TGT_ bits. */
 #define TGT_NOPTIONS 7
