@@ -1,5 +1,5 @@
 /* cli.c: parses and validates ptpgen's options.
- * Accepts "--opt value" and "--opt=value"; the last occurrence of an option wins. */
+ * Accepts "--opt value" and "--opt=value", each option once and only where it applies. */
 #include "cli/cli.h"
 
 #include "plan/sched.h"
@@ -301,8 +301,8 @@ static int parse_mode(cli_options *o, int argc, char **argv)
     return o->mode == CLI_GENERATE ? 1 : 2;
 }
 
-/* Parses argv[first..argc-1] into o, recording each option given in *seen (bit opt_id). Stops
- * at the first error. */
+/* Parses argv[first..argc-1] into o, recording each option given in *seen (bit opt_id); an
+ * option given twice is an error. Stops at the first error. */
 static int parse_args(cli_options *o, unsigned *seen, int first, int argc, char **argv,
                       ptp_error *err)
 {
@@ -311,7 +311,9 @@ static int parse_args(cli_options *o, unsigned *seen, int first, int argc, char 
         const char *a = argv[i], *v = NULL;
         if ((k = match(&v, argc, argv, &i, err)) == -2)
             return PTP_EUSAGE;
-        if (k >= 0) {
+        if (k >= 0 && *seen >> k & 1)
+            st = ptp_fail(err, PTP_EUSAGE, "option %s is given twice", opts[k].name);
+        else if (k >= 0) {
             *seen |= 1u << k;
             st = apply(o, (opt_id)k, v, err);
         } else if (o->mode == CLI_VERIFY && !o->input && (a[0] != '-' || a[1] == '\0'))
@@ -346,17 +348,21 @@ static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
     return PTP_OK;
 }
 
-/* Checks the generation options against the target's registry bits and each other. */
-static int check_target(const cli_options *o, ptp_error *err)
+/* Checks that every option in seen applies to o's target (its registry bit), else a usage error
+ * naming the targets it applies to; and that the options go together. */
+static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
 {
     char names[128] = "";
-    int i;
-    if (o->refine && !(o->target->options & TGT_REFINE)) {
+    int i, k, n = 0;
+    for (k = 0; k < OPT_N; k++) {
+        if (!(seen >> k & 1) || !opts[k].target || o->target->options & opts[k].target)
+            continue;
         for (i = 0; i < tgt_count; i++)
-            if (tgt_targets[i].options & TGT_REFINE)
+            if (tgt_targets[i].options & opts[k].target)
                 snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
-                         names[0] ? ", " : "", tgt_targets[i].name);
-        return ptp_fail(err, PTP_EUSAGE, "--refine applies to --target %s only", names);
+                         n++ ? ", " : "", tgt_targets[i].name);
+        return ptp_fail(err, PTP_EUSAGE, "%s applies to target%s %s (not %s)", opts[k].name,
+                        n == 1 ? "" : "s", names, o->target->name);
     }
     if (o->refine && o->certified)
         return ptp_fail(err, PTP_EUSAGE, "--refine and --certified do not go together: the "
@@ -406,7 +412,7 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         return st;
     if ((st = check_mode(o, seen, err)) || o->mode == CLI_VERIFY)
         return st;
-    if (o->mode == CLI_GENERATE && (st = check_target(o, err)))
+    if (o->mode == CLI_GENERATE && (st = check_target(o, seen, err)))
         return st;
     put_command(o);
     if (o->mode == CLI_GENERATE && !o->prefix[0])
