@@ -66,6 +66,13 @@ left=$(ls "$tmp" "$tmp/adir" | grep -c 'tmp-' || true)
 # Help and version.
 "$P" --help >"$tmp/out" 2>&1 && grep -q '^usage: ptpgen --degree' "$tmp/out" && ok "--help prints usage, exit 0" ||
     notok "--help prints usage, exit 0" "$(head -2 "$tmp/out")"
+"$P" --help >"$tmp/help"
+for a in "help" "help verify" "help vectors" "verify --help" "vectors -h"; do
+    "$P" $a >"$tmp/out" 2>"$tmp/err" && cmp -s "$tmp/out" "$tmp/help" && [ ! -s "$tmp/err" ] &&
+        ok "ptpgen $a prints the usage, exit 0" || notok "ptpgen $a prints the usage" "$(head -2 "$tmp/out" "$tmp/err")"
+done
+expect_fail "help with an unknown topic" 2 "help takes verify, vectors or nothing, not 'foo'" help foo
+expect_fail "help with two topics" 2 "help takes verify, vectors or nothing, not 'x'" help verify x
 "$P" --version >"$tmp/out" 2>&1 && grep -Eq '^ptpgen [0-9]+\.[0-9]+\.[0-9]+$' "$tmp/out" && ok "--version" ||
     notok "--version" "$(cat "$tmp/out")"
 

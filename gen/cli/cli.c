@@ -30,7 +30,7 @@ void cli_usage(sbuf *o)
         "              [-o FILE]\n"
         "       ptpgen verify FILE [--degree NxM] [-o REPORT]\n"
         "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world] [-o FILE]\n"
-        "       ptpgen --help | --version | --list-targets\n"
+        "       ptpgen --help | help [verify|vectors] | --version | --list-targets\n"
         "\n"
         "Derives the exact control planes of the parametric tangent plane\n"
         "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u) and\n"
@@ -290,6 +290,17 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     return st;
 }
 
+/* "ptpgen help [verify|vectors]": sets o->help; anything more is a usage error. */
+static int parse_help(cli_options *o, int argc, char **argv, ptp_error *err)
+{
+    o->help = 1;
+    if (argc == 2 || (argc == 3 && (strcmp(argv[2], "verify") == 0 ||
+                                     strcmp(argv[2], "vectors") == 0)))
+        return PTP_OK;
+    return ptp_fail(err, PTP_EUSAGE, "help takes verify, vectors or nothing, not '%s'",
+                    argv[argc == 3 ? 2 : 3]);
+}
+
 /* Sets o->mode from the first word ("verify", "vectors", else generation); returns the index of
  * the first option. */
 static int parse_mode(cli_options *o, int argc, char **argv)
@@ -407,6 +418,8 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
     memset(o, 0, sizeof *o);
     o->threads = o->patches = -1;
     o->target = &tgt_targets[0];
+    if (argc > 1 && strcmp(argv[1], "help") == 0)
+        return parse_help(o, argc, argv, err);
     st = parse_args(o, &seen, parse_mode(o, argc, argv), argc, argv, err);
     if (st || o->help || o->version || o->list)
         return st;
