@@ -28,9 +28,11 @@ expect_fail() {
 }
 
 # Bad degrees.
-for d in 0 -3 3x x3 3x0 0x3 abc 3x3x3 '' ' 3' 3.0 +3 3X3 '3 x3'; do
+for d in 0 -3 3x x3 3x0 0x3 abc 3x3x3 3X3x3 '' ' 3' 3.0 +3 '3 x3' 3Y3; do
     expect_fail "--degree '$d' is a usage error" 2 "degree" --degree "$d"
 done
+"$P" --degree 2X3 >"$tmp/a" && "$P" --degree 2x3 >"$tmp/b" && cmp -s "$tmp/a" "$tmp/b" &&
+    ok "--degree 2X3 is 2x3" || notok "--degree 2X3 is 2x3" "refused or differs"
 expect_fail "--degree 99999999999999999999 names the limit" 2 "largest supported degree is 16" --degree 99999999999999999999
 expect_fail "--degree 17 names the limit" 2 "largest supported degree is 16" --degree 17
 expect_fail "--degree 3x17 names the limit" 2 "largest supported degree is 16" --degree 3x17

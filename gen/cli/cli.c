@@ -107,7 +107,7 @@ static int parse_degree(cli_options *o, const char *arg, ptp_error *err)
         o->m = o->n;
         return PTP_OK;
     }
-    if (*p == 'x' && (st = parse_one(&o->m, p + 1, &p, arg, err)))
+    if ((*p == 'x' || *p == 'X') && (st = parse_one(&o->m, p + 1, &p, arg, err)))
         return st;
     if (*p != '\0')
         return ptp_fail(err, PTP_EUSAGE,
