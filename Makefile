@@ -138,18 +138,19 @@ fuzz:
 $(B)/replay_verify: tests/fuzz_verify.c $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(SAN) -DFUZZ_REPLAY -Igen -o $@ $< $(LIB_SRC) -lm
 
-# The vendored sources: every kernel target, json and table for common degrees (clip space,
-# the default schedule). `make out` regenerates out/; the tests regenerate into a temporary
-# OUTDIR with the gcc and the clang build and require identical bytes.
+# The vendored sources: every target with a file suffix in `ptpgen --list-targets` (all but
+# stats) for common degrees (clip space, the default schedule). `make out` regenerates out/; the
+# tests regenerate into a temporary OUTDIR with the gcc and the clang build and require identical bytes.
 OUT_DEGREES = 1x1 2x2 3x3 4x4 1x3 3x1 2x3 3x2
-OUT_FILES = c:.h glsl:.comp hlsl:.hlsl opencl:.cl cuda:.cu json:.json table:_table.h
 OUTDIR ?= out
 PTPGEN_BIN ?= ./ptpgen
 
 out: ptpgen
-	@for d in $(OUT_DEGREES); do \
+	@files=$$($(PTPGEN_BIN) --list-targets | awk '$$2 != "-" { print $$1 ":" $$2 }') && \
+	    [ -n "$$files" ] || exit 1; \
+	for d in $(OUT_DEGREES); do \
 	    mkdir -p $(OUTDIR)/$$d || exit 1; \
-	    for te in $(OUT_FILES); do \
+	    for te in $$files; do \
 	        $(PTPGEN_BIN) --degree $$d --target $${te%%:*} -o $(OUTDIR)/$$d/ptp_$$d$${te#*:} || exit 1; \
 	    done; \
 	done

@@ -52,6 +52,25 @@ done
 [ -x "$NVCC" ] || missing nvcc "CUDA kernels"
 ls "$models"/*.bez >/dev/null 2>&1 || missing "$models" "kernels on the shared models"
 
+# The files a configuration needs, as target:suffix (ptpgen --list-targets): json for the schedule,
+# and every target that takes --space (the C header and the kernels).
+files="json:.json $("$P" --list-targets | awk '$3 ~ /(^|,)space(,|$)/ { printf "%s:%s ", $1, $2 }')"
+
+# args_for TARGET DEGREE SPACE RULE FLAG...: the options of a configuration that TARGET takes
+# (ptpgen --list-targets refuses the others): json, read for its schedule, gets the degree alone.
+# RULE may be "" (the default).
+args_for() {
+    local a="--degree $2" opts f
+    opts=",$("$P" --list-targets | awk -v t="$1" '$1 == t { print $3 }'),"
+    [[ $opts == *,space,* ]] && a="$a --space $3"
+    [[ -n $4 && $opts == *,rule,* ]] && a="$a --rule $4"
+    shift 4
+    for f in "$@"; do
+        [[ $opts == *,${f#--},* ]] && a="$a $f"
+    done
+    echo "$a"
+}
+
 # schedule FILE.json: prints "PQ Q", the threads and the patches of a workgroup.
 schedule() {
     python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$1"
@@ -136,9 +155,8 @@ for d in 1x1 2x2 3x3 4x4 2x3 3x1; do
     for space in clip world; do
         for rule in strict degenerate; do
             seed=$((seed + 1))
-            cfg="--degree $d --space $space --rule $rule --planes"
-            for te in json:.json c:.h glsl:.comp hlsl:.hlsl opencl:.cl cuda:.cu; do
-                "$P" $cfg --target ${te%%:*} -o "$tmp/gen/ptp_$d${te#*:}" || notok "$d $space $rule ${te%%:*}" "ptpgen failed"
+            for te in $files; do
+                "$P" $(args_for ${te%%:*} $d $space $rule --planes) --target ${te%%:*} -o "$tmp/gen/ptp_$d${te#*:}" || notok "$d $space $rule ${te%%:*}" "ptpgen failed"
             done
             read -r PQ Q < <(schedule "$tmp/gen/ptp_$d.json")
             exercise "$tmp/gen" $d $space $rule 1 $PQ $Q "$d $space $rule"
@@ -294,8 +312,8 @@ for space in clip world; do
         [ $kind = certified ] && cflag=--certified data=$cert_data
         hcfg="--degree 3 3 --space $space --rule strict $cflag"
         mkdir -p "$dir"
-        for te in json:.json c:.h glsl:.comp hlsl:.hlsl opencl:.cl cuda:.cu; do
-            "$P" --degree 3 --space $space $cflag --target ${te%%:*} -o "$dir/ptp_3x3${te#*:}" ||
+        for te in $files; do
+            "$P" $(args_for ${te%%:*} 3 $space "" $cflag) --target ${te%%:*} -o "$dir/ptp_3x3${te#*:}" ||
                 notok "3x3 $space $kind ${te%%:*}" "ptpgen failed"
         done
         read -r PQ Q < <(schedule "$dir/ptp_3x3.json")

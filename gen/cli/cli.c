@@ -1,57 +1,74 @@
 /* cli.c: parses and validates ptpgen's options.
- * Accepts "--opt value" and "--opt=value"; the last occurrence of an option wins. */
+ * Accepts "--opt value" and "--opt=value", each option once and only where it applies. */
 #include "cli/cli.h"
+
+#include "plan/sched.h"
 
 #include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 
-const char *const cli_targets[] = {"json", "table", "stats", "c", "glsl", "hlsl", "opencl", "cuda"};
+/* Appends the --target lines: one per run of targets with the same description. */
+static void usage_targets(sbuf *o)
+{
+    int i, k;
+    for (i = 0; i < tgt_count; i = k) {
+        sbuf_puts(o, i == 0 ? "  --target T       " : "                   ");
+        for (k = i; k < tgt_count &&
+                    strcmp(tgt_targets[k].description, tgt_targets[i].description) == 0; k++)
+            sbuf_printf(o, "%s%s", k == i ? "" : ", ", tgt_targets[k].name);
+        sbuf_printf(o, "%s: %s\n", i == 0 ? " (default)" : "", tgt_targets[i].description);
+    }
+}
 
-const char cli_usage[] =
-    "usage: ptpgen --degree N|NxM [--target T] [--space clip|world] [--rule strict|degenerate]\n"
-    "              [--planes] [--certified] [--refine K] [--prefix NAME]\n"
-    "              [--threads-per-patch P] [--patches-per-block Q]\n"
-    "              [-o FILE]\n"
-    "       ptpgen verify FILE [--degree NxM] [-o REPORT]\n"
-    "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world] [-o FILE]\n"
-    "       ptpgen --help | --version\n"
-    "\n"
-    "Derives the exact control planes of the parametric tangent plane\n"
-    "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u) and\n"
-    "writes them, or a back-patch culling kernel built on them.\n"
-    "\n"
-    "  --degree N|NxM   patch bidegree, 1 <= N, M <= 16 (N alone means NxN)\n"
-    "  --target T       json (default): the exact terms and schedule, ptpgen-planes/1\n"
-    "                   table: a C header in the paper's idx/wgt format\n"
-    "                   stats: the term count of every plane and the schedule\n"
-    "                   c: a C99 single header (stb style)\n"
-    "                   glsl, hlsl, opencl, cuda: a compute kernel\n"
-    "  --space S        clip (default): points in clip space, eye (0, 0, alpha, 0);\n"
-    "                   world: the full planes dotted with a homogeneous eye point\n"
-    "  --rule R         strict (default): back iff all values < 0, front iff all > 0;\n"
-    "                   degenerate: back iff none > 0, front iff none < 0\n"
-    "  --planes         kernels also write the value of every plane\n"
-    "  --certified      call a patch back or front only when every value clears a rigorous\n"
-    "                   bound on its float rounding error (README: Certified classification)\n"
-    "  --refine K       C only: split the patch's scalar Bezier function e.T by de Casteljau,\n"
-    "                   up to K levels (1 to 6), while its control values have mixed signs\n"
-    "  --prefix NAME    prefix of generated names (default ptp_NxM_)\n"
-    "  --threads-per-patch P\n"
-    "                   threads that share one patch, 1..1024, at most the number of\n"
-    "                   planes (default 16 for 3x3; see README for other degrees)\n"
-    "  --patches-per-block Q\n"
-    "                   patches per thread block (default 128/P, at least 1)\n"
-    "  -o, --output F   write to F (atomically) instead of standard output\n"
-    "  -h, --help       show this help\n"
-    "  --version        show the version\n"
-    "\n"
-    "verify checks a table (the paper's idx/wgt C header or ptpgen's json) against the\n"
-    "exact derivation and names each problem with its line: exit 0 right, 1 wrong, 2 unreadable.\n"
-    "vectors writes K random patches (small integers) with their exact plane values and\n"
-    "classes under both rules, as JSON; the same seed gives the same bytes.\n"
-    "\n"
-    "Exit status: 0 success, 1 failure, 2 usage error.\n";
+void cli_usage(sbuf *o)
+{
+    sbuf_puts(o,
+        "usage: ptpgen --degree N|NxM [--target T] [--space clip|world] [--rule strict|degenerate]\n"
+        "              [--planes] [--certified] [--refine K] [--prefix NAME]\n"
+        "              [--threads-per-patch P] [--patches-per-block Q]\n"
+        "              [-o FILE]\n"
+        "       ptpgen verify FILE [--degree NxM] [-o REPORT]\n"
+        "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world] [-o FILE]\n"
+        "       ptpgen --help | help [verify|vectors] | --version | --list-targets\n"
+        "\n"
+        "Derives the exact control planes of the parametric tangent plane\n"
+        "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u) and\n"
+        "writes them, or a back-patch culling kernel built on them.\n"
+        "\n");
+    sbuf_printf(o, "  --degree N|NxM   patch bidegree, 1 <= N, M <= %d (N alone means NxN)\n",
+                PTP_MAX_DEGREE);
+    usage_targets(o);
+    sbuf_printf(o,
+        "  --space S        clip (default): points in clip space, eye (0, 0, alpha, 0);\n"
+        "                   world: the full planes dotted with a homogeneous eye point\n"
+        "  --rule R         strict (default): back iff all values < 0, front iff all > 0;\n"
+        "                   degenerate: back iff none > 0, front iff none < 0\n"
+        "  --planes         kernels also write the value of every plane\n"
+        "  --certified      call a patch back or front only when every value clears a rigorous\n"
+        "                   bound on its float rounding error (README: Certified classification)\n"
+        "  --refine K       C only: split the patch's scalar Bezier function e.T by de Casteljau,\n"
+        "                   up to K levels (1 to %d), while its control values have mixed signs\n"
+        "  --prefix NAME    prefix of generated names (default ptp_NxM_)\n"
+        "  --threads-per-patch P\n"
+        "                   threads that share one patch, 1..%d, at most the number of\n"
+        "                   planes (default 16 for 3x3; see README for other degrees)\n"
+        "  --patches-per-block Q\n"
+        "                   patches per thread block (default %d/P, at least 1)\n"
+        "  -o, --output F   write to F (atomically) instead of standard output\n"
+        "  -h, --help       show this help\n"
+        "  --version        show the version\n"
+        "  --list-targets   list the targets, one a line: name, file suffix (- for none),\n"
+        "                   the options it uses (comma-separated, - for none), description\n"
+        "\n"
+        "verify checks a table (the paper's idx/wgt C header or ptpgen's json) against the\n"
+        "exact derivation and names each problem with its line: exit 0 right, 1 wrong, 2 unreadable.\n"
+        "vectors writes K random patches (small integers) with their exact plane values and\n"
+        "classes under both rules, as JSON; the same seed gives the same bytes.\n"
+        "\n"
+        "Exit status: 0 success, 1 failure, 2 usage error.\n",
+        CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS);
+}
 
 /* Parses one degree: decimal digits only, 1..PTP_MAX_DEGREE. *end is where it stopped. */
 static int parse_one(int *d, const char *s, const char **end, const char *arg, ptp_error *err)
@@ -90,7 +107,7 @@ static int parse_degree(cli_options *o, const char *arg, ptp_error *err)
         o->m = o->n;
         return PTP_OK;
     }
-    if (*p == 'x' && (st = parse_one(&o->m, p + 1, &p, arg, err)))
+    if ((*p == 'x' || *p == 'X') && (st = parse_one(&o->m, p + 1, &p, arg, err)))
         return st;
     if (*p != '\0')
         return ptp_fail(err, PTP_EUSAGE,
@@ -146,29 +163,6 @@ static int parse_prefix(cli_options *o, const char *arg, ptp_error *err)
     return PTP_OK;
 }
 
-/* If argv[*i] is option name (long "--name" or short "-c"), sets *val to its argument,
- * taken from "--name=value" or the next word, and returns 1; returns 0 if it is not. */
-static int take(const char **val, int *st, const char *name, int argc, char **argv, int *i,
-                ptp_error *err)
-{
-    const char *a = argv[*i];
-    size_t n = strlen(name);
-    if (strncmp(a, name, n) != 0)
-        return 0;
-    if (a[n] == '=' && name[1] == '-') {
-        *val = a + n + 1;
-        return 1;
-    }
-    if (a[n] != '\0')
-        return 0;
-    if (*i + 1 >= argc) {
-        *st = ptp_fail(err, PTP_EUSAGE, "option %s needs an argument", name);
-        return 1;
-    }
-    *val = argv[++*i];
-    return 1;
-}
-
 /* Parses an unsigned decimal number up to max into *v (digits only). */
 static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t max, ptp_error *err)
 {
@@ -187,129 +181,254 @@ static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t m
     return PTP_OK;
 }
 
-/* The options that belong to one mode or another: bit i stands for opt_names[i]. */
-enum {
-    OPT_DEGREE = 1 << 0,
-    OPT_GENERATE = 0xCFE, /* --target, --space, --rule, --planes, --prefix, the thread counts,
-                             --certified, --refine */
-    OPT_SPACE = 1 << 2,
-    OPT_COUNT = 1 << 8,
-    OPT_SEED = 1 << 9
-};
-static const char *const opt_names[] = {"--degree", "--target", "--space", "--rule", "--planes",
-                                        "--prefix", "--threads-per-patch", "--patches-per-block",
-                                        "--count", "--seed", "--certified", "--refine"};
+/* The options, in the order the mode check names them. */
+typedef enum {
+    OPT_DEGREE, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
+    OPT_PATCHES, OPT_COUNT, OPT_SEED, OPT_CERTIFIED, OPT_REFINE, OPT_OUTPUT, OPT_HELP,
+    OPT_VERSION, OPT_LIST, OPT_N
+} opt_id;
 
-int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
+/* The modes an option belongs to, as bits 1 << cli_mode. */
+#define GEN (1u << CLI_GENERATE)
+#define VER (1u << CLI_VERIFY)
+#define VEC (1u << CLI_VECTORS)
+
+static const struct {
+    const char *name;  /* "--output"; "--name=value" is accepted too when it takes a value */
+    const char *alias; /* "-o", or NULL */
+    int arg;           /* it takes a value */
+    unsigned modes;    /* the modes it belongs to */
+    unsigned target;   /* the TGT_ bit a target needs for it, 0 for every target */
+} opts[OPT_N] = {
+    [OPT_DEGREE] = {"--degree", NULL, 1, GEN | VER | VEC, 0},
+    [OPT_TARGET] = {"--target", NULL, 1, GEN, 0},
+    [OPT_SPACE] = {"--space", NULL, 1, GEN | VEC, TGT_SPACE},
+    [OPT_RULE] = {"--rule", NULL, 1, GEN, TGT_RULE},
+    [OPT_PLANES] = {"--planes", NULL, 0, GEN, TGT_PLANES},
+    [OPT_PREFIX] = {"--prefix", NULL, 1, GEN, TGT_PREFIX},
+    [OPT_THREADS] = {"--threads-per-patch", NULL, 1, GEN, TGT_SCHEDULE},
+    [OPT_PATCHES] = {"--patches-per-block", NULL, 1, GEN, TGT_SCHEDULE},
+    [OPT_COUNT] = {"--count", NULL, 1, VEC, 0},
+    [OPT_SEED] = {"--seed", NULL, 1, VEC, 0},
+    [OPT_CERTIFIED] = {"--certified", NULL, 0, GEN, TGT_CERTIFIED},
+    [OPT_REFINE] = {"--refine", NULL, 1, GEN, TGT_REFINE},
+    [OPT_OUTPUT] = {"--output", "-o", 1, GEN | VER | VEC, 0},
+    [OPT_HELP] = {"--help", "-h", 0, GEN | VER | VEC, 0},
+    [OPT_VERSION] = {"--version", NULL, 0, GEN | VER | VEC, 0},
+    [OPT_LIST] = {"--list-targets", NULL, 0, GEN | VER | VEC, 0},
+};
+
+/* Finds the option argv[*i] names ("--name", its alias, or "--name=value" for one that takes a
+ * value) and sets *val to its value (advancing *i past a separate one). Returns its opt_id,
+ * -1 if argv[*i] is no option, or -2 with the usage error in err when the value is missing. */
+static int match(const char **val, int argc, char **argv, int *i, ptp_error *err)
+{
+    const char *a = argv[*i];
+    int k;
+    for (k = 0; k < OPT_N; k++) {
+        size_t n = strlen(opts[k].name);
+        if (opts[k].arg && strncmp(a, opts[k].name, n) == 0 && a[n] == '=') {
+            *val = a + n + 1;
+            return k;
+        }
+        if (strcmp(a, opts[k].name) != 0 && !(opts[k].alias && strcmp(a, opts[k].alias) == 0))
+            continue;
+        if (opts[k].arg && *i + 1 >= argc) {
+            ptp_fail(err, PTP_EUSAGE, "option %s needs an argument", a);
+            return -2;
+        }
+        *val = opts[k].arg ? argv[++*i] : NULL;
+        return k;
+    }
+    return -1;
+}
+
+/* Sets o->target to the registry's target named arg; a usage error naming them otherwise. */
+static int parse_target(cli_options *o, const char *arg, ptp_error *err)
+{
+    char choices[128] = "";
+    int i;
+    if ((o->target = tgt_find(arg)))
+        return PTP_OK;
+    for (i = 0; i < tgt_count; i++)
+        snprintf(choices + strlen(choices), sizeof choices - strlen(choices), "%s%s",
+                 i == 0 ? "" : i == tgt_count - 1 ? " or " : ", ", tgt_targets[i].name);
+    return ptp_fail(err, PTP_EUSAGE, "unknown target '%s' (expected %s)", arg, choices);
+}
+
+/* Sets the field of o that option k stands for from its value v (NULL for a flag). */
+static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
 {
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
-    static const char *const modes[] = {"code generation", "verify", "vectors"};
-    static const unsigned allowed[] = {OPT_DEGREE | OPT_GENERATE, OPT_DEGREE,
-                                       OPT_DEGREE | OPT_SPACE | OPT_COUNT | OPT_SEED};
-    unsigned seen = 0;
     uint64_t u = 0;
-    int i, k, st = PTP_OK, target = CLI_JSON, first = 1;
-    memset(o, 0, sizeof *o);
-    o->threads = o->patches = -1;
+    int st = PTP_OK;
+    switch (k) {
+    case OPT_DEGREE: return parse_degree(o, v, err);
+    case OPT_TARGET: return parse_target(o, v, err);
+    case OPT_SPACE: return parse_choice(&o->world, "space", v, spaces, 2, err);
+    case OPT_RULE: return parse_choice(&o->degenerate, "rule", v, rules, 2, err);
+    case OPT_PLANES: o->planes = 1; break;
+    case OPT_PREFIX: return parse_prefix(o, v, err);
+    case OPT_THREADS: return parse_count(&o->threads, "--threads-per-patch", v, err);
+    case OPT_PATCHES: return parse_count(&o->patches, "--patches-per-block", v, err);
+    case OPT_COUNT:
+        if (!(st = parse_ulong(&u, "--count", v, CLI_MAX_COUNT, err)))
+            o->count = (long)u;
+        break;
+    case OPT_SEED: return parse_ulong(&o->seed, "--seed", v, UINT64_MAX, err);
+    case OPT_CERTIFIED: o->certified = 1; break;
+    case OPT_REFINE:
+        if (!(st = parse_ulong(&u, "--refine", v, CLI_MAX_REFINE, err)))
+            o->refine = (int)u;
+        break;
+    case OPT_OUTPUT: o->output = v; break;
+    case OPT_HELP: o->help = 1; break;
+    case OPT_VERSION: o->version = 1; break;
+    case OPT_LIST: o->list = 1; break;
+    case OPT_N: break;
+    }
+    return st;
+}
+
+/* "ptpgen help [verify|vectors]": sets o->help; anything more is a usage error. */
+static int parse_help(cli_options *o, int argc, char **argv, ptp_error *err)
+{
+    o->help = 1;
+    if (argc == 2 || (argc == 3 && (strcmp(argv[2], "verify") == 0 ||
+                                     strcmp(argv[2], "vectors") == 0)))
+        return PTP_OK;
+    return ptp_fail(err, PTP_EUSAGE, "help takes verify, vectors or nothing, not '%s'",
+                    argv[argc == 3 ? 2 : 3]);
+}
+
+/* Sets o->mode from the first word ("verify", "vectors", else generation); returns the index of
+ * the first option. */
+static int parse_mode(cli_options *o, int argc, char **argv)
+{
     if (argc > 1 && strcmp(argv[1], "verify") == 0)
         o->mode = CLI_VERIFY;
     else if (argc > 1 && strcmp(argv[1], "vectors") == 0)
         o->mode = CLI_VECTORS;
-    first += o->mode != CLI_GENERATE;
-    /* Each option's branch also records it in seen ((seen |= bit) is never 0), for the check
-     * below that it belongs to the mode. */
+    return o->mode == CLI_GENERATE ? 1 : 2;
+}
+
+/* Parses argv[first..argc-1] into o, recording each option given in *seen (bit opt_id); an
+ * option given twice is an error. Stops at the first error. */
+static int parse_args(cli_options *o, unsigned *seen, int first, int argc, char **argv,
+                      ptp_error *err)
+{
+    int i, k, st = PTP_OK;
     for (i = first; i < argc && !st; i++) {
         const char *a = argv[i], *v = NULL;
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0)
-            o->help = 1;
-        else if (strcmp(a, "--version") == 0)
-            o->version = 1;
-        else if (strcmp(a, "--planes") == 0 && (seen |= 1u << 4))
-            o->planes = 1;
-        else if (strcmp(a, "--certified") == 0 && (seen |= 1u << 10))
-            o->certified = 1;
-        else if (take(&v, &st, "--degree", argc, argv, &i, err) && (seen |= 1u << 0))
-            st = st ? st : parse_degree(o, v, err);
-        else if (take(&v, &st, "--target", argc, argv, &i, err) && (seen |= 1u << 1))
-            st = st ? st : parse_choice(&target, "target", v, cli_targets, 8, err);
-        else if (take(&v, &st, "--space", argc, argv, &i, err) && (seen |= 1u << 2))
-            st = st ? st : parse_choice(&o->world, "space", v, spaces, 2, err);
-        else if (take(&v, &st, "--rule", argc, argv, &i, err) && (seen |= 1u << 3))
-            st = st ? st : parse_choice(&o->degenerate, "rule", v, rules, 2, err);
-        else if (take(&v, &st, "--prefix", argc, argv, &i, err) && (seen |= 1u << 5))
-            st = st ? st : parse_prefix(o, v, err);
-        else if (take(&v, &st, "--threads-per-patch", argc, argv, &i, err) && (seen |= 1u << 6))
-            st = st ? st : parse_count(&o->threads, "--threads-per-patch", v, err);
-        else if (take(&v, &st, "--patches-per-block", argc, argv, &i, err) && (seen |= 1u << 7))
-            st = st ? st : parse_count(&o->patches, "--patches-per-block", v, err);
-        else if (take(&v, &st, "--count", argc, argv, &i, err) && (seen |= 1u << 8)) {
-            if (!st && !(st = parse_ulong(&u, "--count", v, 1000000, err)))
-                o->count = (long)u;
-        } else if (take(&v, &st, "--refine", argc, argv, &i, err) && (seen |= 1u << 11)) {
-            if (!st && !(st = parse_ulong(&u, "--refine", v, CLI_MAX_REFINE, err)))
-                o->refine = (int)u;
-        } else if (take(&v, &st, "--seed", argc, argv, &i, err) && (seen |= 1u << 9))
-            st = st ? st : parse_ulong(&o->seed, "--seed", v, UINT64_MAX, err);
-        else if (take(&v, &st, "--output", argc, argv, &i, err) ||
-                 take(&v, &st, "-o", argc, argv, &i, err))
-            o->output = v;
-        else if (o->mode == CLI_VERIFY && !o->input && (a[0] != '-' || a[1] == '\0'))
+        if ((k = match(&v, argc, argv, &i, err)) == -2)
+            return PTP_EUSAGE;
+        if (k >= 0 && *seen >> k & 1)
+            st = ptp_fail(err, PTP_EUSAGE, "option %s is given twice", opts[k].name);
+        else if (k >= 0) {
+            *seen |= 1u << k;
+            st = apply(o, (opt_id)k, v, err);
+        } else if (o->mode == CLI_VERIFY && !o->input && (a[0] != '-' || a[1] == '\0'))
             o->input = a;
         else if (a[0] == '-')
             st = ptp_fail(err, PTP_EUSAGE, "unknown option '%s' (see ptpgen --help)", a);
         else
             st = ptp_fail(err, PTP_EUSAGE, "unexpected argument '%s' (see ptpgen --help)", a);
     }
-    o->target = (cli_target)target;
-    if (st || o->help || o->version)
-        return st;
-    for (k = 0; k < (int)(sizeof opt_names / sizeof *opt_names); k++)
-        if (seen >> k & 1 && !(allowed[o->mode] >> k & 1))
-            return ptp_fail(err, PTP_EUSAGE, "option %s does not apply to %s", opt_names[k],
+    return st;
+}
+
+/* Checks that the options in seen belong to o's mode and its requirements are met. */
+static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
+{
+    static const char *const modes[] = {"code generation", "verify", "vectors"};
+    int k;
+    for (k = 0; k < OPT_N; k++)
+        if (seen >> k & 1 && !(opts[k].modes >> o->mode & 1))
+            return ptp_fail(err, PTP_EUSAGE, "option %s does not apply to %s", opts[k].name,
                             modes[o->mode]);
-    if (o->mode == CLI_VERIFY) {
-        if (!o->input)
-            return ptp_fail(err, PTP_EUSAGE, "verify: missing the FILE to check (see ptpgen --help)");
-        return PTP_OK;
-    }
+    if (o->mode == CLI_VERIFY)
+        return o->input ? PTP_OK
+                        : ptp_fail(err, PTP_EUSAGE,
+                                   "verify: missing the FILE to check (see ptpgen --help)");
     if (!o->n)
         return ptp_fail(err, PTP_EUSAGE, "missing --degree N or --degree NxM (see ptpgen --help)");
-    if (o->mode == CLI_VECTORS) {
-        if (!(seen & OPT_COUNT) || !(seen & OPT_SEED) || o->count < 1)
-            return ptp_fail(err, PTP_EUSAGE, "vectors needs --count K (1 to 1000000) and --seed S");
-        snprintf(o->command, sizeof o->command,
-                 "ptpgen vectors --degree %dx%d --count %ld --seed %llu --space %s", o->n, o->m,
-                 o->count, (unsigned long long)o->seed, o->world ? "world" : "clip");
-        return PTP_OK;
+    if (o->mode == CLI_VECTORS &&
+        (!(seen >> OPT_COUNT & 1) || !(seen >> OPT_SEED & 1) || o->count < 1))
+        return ptp_fail(err, PTP_EUSAGE, "vectors needs --count K (1 to %d) and --seed S",
+                        CLI_MAX_COUNT);
+    return PTP_OK;
+}
+
+/* Checks that every option in seen applies to o's target (its registry bit), else a usage error
+ * naming the targets it applies to; and that the options go together. */
+static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
+{
+    char names[128] = "";
+    int i, k, n = 0;
+    for (k = 0; k < OPT_N; k++) {
+        if (!(seen >> k & 1) || !opts[k].target || o->target->options & opts[k].target)
+            continue;
+        for (i = 0; i < tgt_count; i++)
+            if (tgt_targets[i].options & opts[k].target)
+                snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
+                         n++ ? ", " : "", tgt_targets[i].name);
+        return ptp_fail(err, PTP_EUSAGE, "%s applies to target%s %s (not %s)", opts[k].name,
+                        n == 1 ? "" : "s", names, o->target->name);
     }
-    if (o->refine && o->target != CLI_C)
-        return ptp_fail(err, PTP_EUSAGE, "--refine applies to --target c only");
     if (o->refine && o->certified)
         return ptp_fail(err, PTP_EUSAGE, "--refine and --certified do not go together: the "
                                          "subdivision is not certified");
-    {
-        int n = snprintf(o->command, sizeof o->command, "ptpgen --degree %dx%d --target %s", o->n,
-                         o->m, cli_targets[o->target]);
-        if (o->world)
-            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --space world");
-        if (o->degenerate)
-            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --rule degenerate");
-        if (o->planes)
-            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --planes");
-        if (o->certified)
-            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --certified");
-        if (o->refine)
-            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --refine %d", o->refine);
-        if (o->prefix[0])
-            n += snprintf(o->command + n, sizeof o->command - (size_t)n, " --prefix %s", o->prefix);
-        if (o->threads >= 0)
-            n += snprintf(o->command + n, sizeof o->command - (size_t)n,
-                          " --threads-per-patch %d", o->threads);
-        if (o->patches >= 0)
-            snprintf(o->command + n, sizeof o->command - (size_t)n, " --patches-per-block %d",
-                     o->patches);
+    return PTP_OK;
+}
+
+/* Writes o->command, the normalized command line: every option that was given, in one order. */
+static void put_command(cli_options *o)
+{
+    char *c = o->command;
+    size_t size = sizeof o->command;
+    int n;
+    if (o->mode == CLI_VECTORS) {
+        snprintf(c, size, "ptpgen vectors --degree %dx%d --count %ld --seed %llu --space %s", o->n,
+                 o->m, o->count, (unsigned long long)o->seed, o->world ? "world" : "clip");
+        return;
     }
-    if (!o->prefix[0])
+    n = snprintf(c, size, "ptpgen --degree %dx%d --target %s", o->n, o->m, o->target->name);
+    if (o->world)
+        n += snprintf(c + n, size - (size_t)n, " --space world");
+    if (o->degenerate)
+        n += snprintf(c + n, size - (size_t)n, " --rule degenerate");
+    if (o->planes)
+        n += snprintf(c + n, size - (size_t)n, " --planes");
+    if (o->certified)
+        n += snprintf(c + n, size - (size_t)n, " --certified");
+    if (o->refine)
+        n += snprintf(c + n, size - (size_t)n, " --refine %d", o->refine);
+    if (o->prefix[0])
+        n += snprintf(c + n, size - (size_t)n, " --prefix %s", o->prefix);
+    if (o->threads >= 0)
+        n += snprintf(c + n, size - (size_t)n, " --threads-per-patch %d", o->threads);
+    if (o->patches >= 0)
+        snprintf(c + n, size - (size_t)n, " --patches-per-block %d", o->patches);
+}
+
+int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
+{
+    unsigned seen = 0;
+    int st;
+    memset(o, 0, sizeof *o);
+    o->threads = o->patches = -1;
+    o->target = &tgt_targets[0];
+    if (argc > 1 && strcmp(argv[1], "help") == 0)
+        return parse_help(o, argc, argv, err);
+    st = parse_args(o, &seen, parse_mode(o, argc, argv), argc, argv, err);
+    if (st || o->help || o->version || o->list)
+        return st;
+    if ((st = check_mode(o, seen, err)) || o->mode == CLI_VERIFY)
+        return st;
+    if (o->mode == CLI_GENERATE && (st = check_target(o, seen, err)))
+        return st;
+    put_command(o);
+    if (o->mode == CLI_GENERATE && !o->prefix[0])
         snprintf(o->prefix, sizeof o->prefix, "ptp_%dx%d_", o->n, o->m);
     return PTP_OK;
 }

@@ -4,25 +4,15 @@
 #define CLI_H
 
 #include "core/ptp.h"
+#include "emit/sbuf.h"
+#include "emit/targets.h"
 
 #include <stdint.h>
 
 /* The most de Casteljau levels --refine accepts. */
 #define CLI_MAX_REFINE 6
-
-typedef enum {
-    CLI_JSON,
-    CLI_TABLE,
-    CLI_STATS,
-    CLI_C,
-    CLI_GLSL,
-    CLI_HLSL,
-    CLI_OPENCL,
-    CLI_CUDA
-} cli_target;
-
-/* The target names, indexed by cli_target. */
-extern const char *const cli_targets[];
+/* The most test vectors --count accepts. */
+#define CLI_MAX_COUNT 1000000
 
 /* What ptpgen does: generate a target (the default), verify a table, or write test vectors. */
 typedef enum { CLI_GENERATE, CLI_VERIFY, CLI_VECTORS } cli_mode;
@@ -33,7 +23,7 @@ typedef struct {
     long count;           /* vectors: --count */
     uint64_t seed;        /* vectors: --seed */
     int n, m;             /* bidegree; 0 until --degree is given */
-    cli_target target;
+    const tgt_target *target; /* an entry of tgt_targets (default: the first) */
     const char *output;   /* -o path, or NULL for stdout */
     int threads, patches; /* --threads-per-patch, --patches-per-block; -1 when not given */
     int world;            /* --space world (else clip) */
@@ -42,13 +32,14 @@ typedef struct {
     int certified;        /* --certified */
     int refine;           /* --refine K (C only), 0 when not given */
     int help, version;    /* --help or --version was given */
+    int list;             /* --list-targets was given */
     char command[256];    /* the normalized command line, for banners */
     char prefix[64];      /* generated-name prefix: --prefix, or "ptp_<n>x<m>_" */
 } cli_options;
 
 /* Parses argv[1..argc-1] into o. Returns PTP_OK or PTP_EUSAGE with the message in err. */
 int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err);
-/* The --help text. */
-extern const char cli_usage[];
+/* Appends the --help text: the targets from the registry, the limits from their macros. */
+void cli_usage(sbuf *o);
 
 #endif

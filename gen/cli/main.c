@@ -2,7 +2,7 @@
  * The only place that prints errors and exits; output reaches -o only complete (temp + rename). */
 #define _POSIX_C_SOURCE 200809L
 #include "cli/cli.h"
-#include "emit/kern.h"
+#include "emit/targets.h"
 #include "tools/vectors.h"
 #include "tools/verify.h"
 
@@ -132,8 +132,6 @@ static int run_vectors(const cli_options *o, ptp_error *err)
 
 static int run(const cli_options *o, ptp_error *err)
 {
-    static int (*const render[])(sbuf *, const tp_table *, const out_info *, ptp_error *) = {
-        out_json, out_table, out_stats, emit_c, emit_glsl, emit_hlsl, emit_opencl, emit_cuda};
     out_info info = {0};
     tp_table t;
     sched s;
@@ -156,11 +154,28 @@ static int run(const cli_options *o, ptp_error *err)
     info.certified = o->certified;
     info.refine = o->refine;
     sbuf_init(&b);
-    if (!(st = render[o->target](&b, &t, &info, err)))
+    if (!(st = o->target->emit(&b, &t, &info, err)))
         st = write_output(o->output, &b, err);
     sbuf_clear(&b);
     sched_clear(&s);
     tp_clear(&t);
+    return st;
+}
+
+/* --help, --list-targets or --version (in that order of precedence): its text to standard output. */
+static int run_info(const cli_options *o, ptp_error *err)
+{
+    sbuf b;
+    int st;
+    sbuf_init(&b);
+    if (o->help)
+        cli_usage(&b);
+    else if (o->list)
+        tgt_write_list(&b);
+    else
+        sbuf_printf(&b, "ptpgen %s\n", PTP_VERSION);
+    st = write_output(NULL, &b, err);
+    sbuf_clear(&b);
     return st;
 }
 
@@ -169,15 +184,9 @@ int main(int argc, char **argv)
     cli_options o;
     ptp_error err;
     int st = cli_parse(&o, argc, argv, &err);
-    if (!st && o.help) {
-        fputs(cli_usage, stdout);
-        return 0;
-    }
-    if (!st && o.version) {
-        printf("ptpgen %s\n", PTP_VERSION);
-        return 0;
-    }
-    if (!st && o.mode == CLI_VERIFY) {
+    if (!st && (o.help || o.list || o.version)) {
+        st = run_info(&o, &err);
+    } else if (!st && o.mode == CLI_VERIFY) {
         /* exit 0 right, 1 wrong, 2 when the input cannot be read */
         int verdict = VERIFY_WRONG;
         if (!(st = run_verify(&o, &verdict, &err)))

@@ -1,0 +1,58 @@
+/* targets.c: the registry of ptpgen's targets, the one place a target is added.
+ * Options per target follow what each emitter reads from out_info. */
+#include "emit/targets.h"
+
+#include "emit/kern.h"
+
+#include <string.h>
+
+#define KERNEL (TGT_SPACE | TGT_RULE | TGT_PLANES | TGT_CERTIFIED | TGT_PREFIX | TGT_SCHEDULE)
+
+const tgt_target tgt_targets[] = {
+    {"json", ".json", "the exact terms and schedule, ptpgen-planes/1", out_json, TGT_SCHEDULE},
+    {"table", "_table.h", "a C header in the paper's idx/wgt format", out_table,
+     TGT_PREFIX | TGT_SCHEDULE},
+    {"stats", "", "the term count of every plane and the schedule", out_stats, TGT_SCHEDULE},
+    {"c", ".h", "a C99 single header (stb style)", emit_c,
+     TGT_SPACE | TGT_RULE | TGT_CERTIFIED | TGT_REFINE | TGT_PREFIX},
+    {"glsl", ".comp", "a compute kernel", emit_glsl, KERNEL},
+    {"hlsl", ".hlsl", "a compute kernel", emit_hlsl, KERNEL},
+    {"opencl", ".cl", "a compute kernel", emit_opencl, KERNEL},
+    {"cuda", ".cu", "a compute kernel", emit_cuda, KERNEL},
+};
+const int tgt_count = (int)(sizeof tgt_targets / sizeof *tgt_targets);
+
+static const char *const option_names[] = {"space",  "rule",   "planes",  "certified",
+                                           "refine", "prefix", "schedule"};
+_Static_assert(sizeof option_names / sizeof *option_names == TGT_NOPTIONS,
+               "one name per TGT_ bit");
+
+const tgt_target *tgt_find(const char *name)
+{
+    int i;
+    for (i = 0; i < tgt_count; i++)
+        if (strcmp(tgt_targets[i].name, name) == 0)
+            return &tgt_targets[i];
+    return NULL;
+}
+
+const char *tgt_option_name(int i)
+{
+    return option_names[i];
+}
+
+void tgt_write_list(sbuf *o)
+{
+    int i, k;
+    for (i = 0; i < tgt_count; i++) {
+        const tgt_target *g = &tgt_targets[i];
+        const char *sep = " ";
+        sbuf_printf(o, "%s %s", g->name, g->suffix[0] ? g->suffix : "-");
+        for (k = 0; k < TGT_NOPTIONS; k++)
+            if (g->options >> k & 1) {
+                sbuf_printf(o, "%s%s", sep, option_names[k]);
+                sep = ",";
+            }
+        sbuf_printf(o, "%s %s\n", g->options ? "" : " -", g->description);
+    }
+}
