@@ -37,7 +37,7 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
     sbuf_printf(o, "    \"patches_per_block\": %d,\n    \"rounds\": %d,\n", s->patches, s->rounds);
     sbuf_printf(o, "    \"lower_bound\": %d,\n    \"proven_optimal\": %s,\n", s->lower_bound,
                 s->proven ? "true" : "false");
-    put_ints(o, "owner", s->owner, s->nplanes, t->pv + 1);
+    put_ints(o, "owner", s->owner, s->nplanes, t->dom.pv + 1);
     put_ints(o, "loads", s->load, s->threads, 16);
     sbuf_puts(o, "    \"slots\": [");
     for (i = 0; i < nslots; i++) {
@@ -56,9 +56,9 @@ int out_json(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     sbuf_printf(o, "{\n  \"format\": \"ptpgen-planes/1\",\n");
     sbuf_printf(o, "  \"generator\": \"ptpgen %s\",\n  \"command\": \"%s\",\n", PTP_VERSION,
                 info->command);
-    sbuf_printf(o, "  \"degree\": [%d, %d],\n  \"plane_degree\": [%d, %d],\n", t->n, t->m,
-                t->pu, t->pv);
-    sbuf_printf(o, "  \"points\": %d,\n  \"planes\": %d,\n", t->npoints, t->nplanes);
+    sbuf_printf(o, "  \"degree\": [%d, %d],\n  \"plane_degree\": [%d, %d],\n", t->dom.n, t->dom.m,
+                t->dom.pu, t->dom.pv);
+    sbuf_printf(o, "  \"points\": %d,\n  \"planes\": %d,\n", t->dom.npoints, t->dom.nplanes);
     /* The kernels' values are d_P = eye . t_P times this positive constant (true scale). */
     sbuf_puts(o, "  \"plane_scale\": \"1\",\n  \"terms\": [");
     for (i = 0; i < t->nterms; i++) {

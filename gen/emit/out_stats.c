@@ -20,9 +20,9 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
     sbuf_printf(o, "\nschedule: %d threads per patch, %d patches per block (%d threads per block)\n",
                 s->threads, s->patches, s->threads * s->patches);
     sbuf_printf(o, "owning thread of each plane (row I along u, column J along v):\n");
-    for (I = 0; I <= t->pu; I++) {
-        for (J = 0; J <= t->pv; J++)
-            sbuf_printf(o, "%s%*d", J ? " " : "", w, s->owner[I * (t->pv + 1) + J]);
+    for (I = 0; I <= t->dom.pu; I++) {
+        for (J = 0; J <= t->dom.pv; J++)
+            sbuf_printf(o, "%s%*d", J ? " " : "", w, s->owner[I * (t->dom.pv + 1) + J]);
         sbuf_puts(o, "\n");
     }
     sbuf_printf(o, "terms per thread:\n");
@@ -37,20 +37,20 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
 
 int out_stats(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    int *counts = malloc((size_t)t->nplanes * sizeof *counts), I, J, width = 1, max = 0;
+    int *counts = malloc((size_t)t->dom.nplanes * sizeof *counts), I, J, width = 1, max = 0;
     if (!counts)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing stats");
     tp_plane_counts(counts, t);
-    for (I = 0; I < t->nplanes; I++)
+    for (I = 0; I < t->dom.nplanes; I++)
         max = counts[I] > max ? counts[I] : max;
     for (; max >= 10; max /= 10)
         width++;
     sbuf_printf(o, "bidegree %dx%d: %d points, planes of bidegree %dx%d: %d planes, %zu terms\n",
-                t->n, t->m, t->npoints, t->pu, t->pv, t->nplanes, t->nterms);
+                t->dom.n, t->dom.m, t->dom.npoints, t->dom.pu, t->dom.pv, t->dom.nplanes, t->nterms);
     sbuf_printf(o, "terms per plane (row I along u, column J along v):\n");
-    for (I = 0; I <= t->pu; I++) {
-        for (J = 0; J <= t->pv; J++)
-            sbuf_printf(o, "%s%*d", J ? " " : "", width, counts[I * (t->pv + 1) + J]);
+    for (I = 0; I <= t->dom.pu; I++) {
+        for (J = 0; J <= t->dom.pv; J++)
+            sbuf_printf(o, "%s%*d", J ? " " : "", width, counts[I * (t->dom.pv + 1) + J]);
         sbuf_puts(o, "\n");
     }
     sbuf_printf(o, "total %zu\n", t->nterms);

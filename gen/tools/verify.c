@@ -551,7 +551,7 @@ static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r
                 sbuf_printf(o, "%s%zu %s", first ? "" : ", ", count[k], names[k][count[k] != 1]);
                 first = 0;
             }
-        sbuf_printf(o, ") against the %zu terms of bidegree %dx%d", c->nx, t->n, t->m);
+        sbuf_printf(o, ") against the %zu terms of bidegree %dx%d", c->nx, t->dom.n, t->dom.m);
         if (r->which || !is_one(&r->s)) {
             sbuf_puts(o, ", read as ");
             reading_str(o, r);
@@ -563,12 +563,12 @@ static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r
         *verdict = VERIFY_RIGHT;
         if (is_one(&r->s))
             sbuf_printf(o, "RIGHT: exact: the %zu terms of bidegree %dx%d agree with the "
-                           "derivation\n", c->nx, t->n, t->m);
+                           "derivation\n", c->nx, t->dom.n, t->dom.m);
         else
             sbuf_printf(o, "RIGHT: correct up to a positive scale s = %s: every weight is s times "
                            "the exact one, so every sign, and so the classification, is unchanged "
-                           "(%zu terms, bidegree %dx%d)\n", scale_str(s, &r->s), c->nx, t->n,
-                        t->m);
+                           "(%zu terms, bidegree %dx%d)\n", scale_str(s, &r->s), c->nx, t->dom.n,
+                        t->dom.m);
         return;
     }
     sbuf_puts(o, r->which == 0 ? "WRONG: all weights negated"
@@ -582,17 +582,17 @@ static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r
         if (c->vfirst_negated)
             sbuf_printf(o, "; for a square patch that is also the exact table in the v-first "
                            "index convention (point (i, j) numbered j*%d+i), right only for code "
-                           "that numbers points v-first", t->n + 1);
+                           "that numbers points v-first", t->dom.n + 1);
     } else if (neg) {
         sbuf_printf(o, ": it is%s the exact table of bidegree %dx%d, the transposed patch (i "
                        "along v), which for a %dx%d patch has the opposite orientation",
-                    is_unit(&r->s) ? "" : ", up to the scale,", t->m, t->n, t->n, t->m);
+                    is_unit(&r->s) ? "" : ", up to the scale,", t->dom.m, t->dom.n, t->dom.n, t->dom.m);
     } else {
         sbuf_printf(o, ": the same planes, but point (i, j) numbered j*%d+i and plane (I, J) "
                        "numbered J*%d+I: right only for code that numbers points v-first; ptpgen "
-                       "numbers point (i, j) i*%d+j", t->n + 1, t->pu + 1, t->m + 1);
+                       "numbers point (i, j) i*%d+j", t->dom.n + 1, t->dom.pu + 1, t->dom.m + 1);
     }
-    sbuf_printf(o, " (%zu terms, bidegree %dx%d)\n", c->nx, t->n, t->m);
+    sbuf_printf(o, " (%zu terms, bidegree %dx%d)\n", c->nx, t->dom.n, t->dom.m);
 }
 
 /* Builds c->x[1], the exact table relabelled (i, j) -> (j, i) without negation, sorted. */
@@ -610,9 +610,9 @@ static int relabel(ctx *c, ptp_error *err)
         p[0] = e->j;
         p[1] = e->k;
         p[2] = e->l;
-        e->plane = (e->plane % (t->pv + 1)) * (t->pu + 1) + e->plane / (t->pv + 1);
+        e->plane = (e->plane % (t->dom.pv + 1)) * (t->dom.pu + 1) + e->plane / (t->dom.pv + 1);
         for (q = 0; q < 3; q++)
-            p[q] = (p[q] % (t->m + 1)) * (t->n + 1) + p[q] / (t->m + 1);
+            p[q] = (p[q] % (t->dom.m + 1)) * (t->dom.n + 1) + p[q] / (t->dom.m + 1);
         if (sort3(p))
             rat_neg(&e->w, &e->w);
         e->j = p[0];
@@ -679,19 +679,19 @@ static int check(sbuf *o, int *verdict, const verify_doc *d, const tp_table *t, 
         goto done;
     problems = classify(&c, &r, covered, extra, by);
     qsort(c.it, c.nit, sizeof *c.it, cmp_item);
-    if (d->degree_named && (d->n != t->n || d->m != t->m))
+    if (d->degree_named && (d->n != t->dom.n || d->m != t->dom.m))
         sbuf_printf(&rep, "%s:%d: note: the %s names bidegree %dx%d; checked as %dx%d\n", name,
                     d->degree_line, d->degree_named == 1 ? "document" : "array name", d->n,
-                    d->m, t->n, t->m);
+                    d->m, t->dom.n, t->dom.m);
     for (i = 0; i < c.nit; i++) {
         report_item(&rep, &c, &r, &c.it[i]);
         if (c.it[i].kind < NPROBLEMS)
             count[c.it[i].kind]++;
     }
     if (problems && verify_doc_fit(&a, &b, d) &&
-        !((a == t->n && b == t->m) || (a == t->m && b == t->n)))
+        !((a == t->dom.n && b == t->dom.m) || (a == t->dom.m && b == t->dom.n)))
         sbuf_printf(&rep, "%s: note: the indices fit bidegree %dx%d, not %dx%d\n", name, a, b,
-                    t->n, t->m);
+                    t->dom.n, t->dom.m);
     report_verdict(&rep, verdict, &c, &r, count, problems);
     if (rep.failed) {
         st = ptp_fail(err, PTP_ENOMEM, "out of memory writing the report on %s", name);
