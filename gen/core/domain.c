@@ -5,7 +5,7 @@
 #include <stdio.h>
 
 /* The numbering of one kind over a grid of degrees (a, b): points over (n, m), planes over
- * (pu, pv). Rows are contiguous in numbering order. */
+ * (pu, pv). */
 typedef struct {
     int ndeg;            /* degrees named by --degree: 2 is NxM */
     const char *tag;     /* between "ptp_" and the degree in the default prefix */
@@ -14,8 +14,7 @@ typedef struct {
     int (*count)(int a, int b);
     int (*index)(int a, int b, int i, int j);
     void (*coords)(int *i, int *j, int a, int b, int k);
-    int (*rows)(int a, int b);
-    int (*row)(int *count, int a, int b, int r);
+    int (*row_start)(int a, int b, int k);
     /* the index rule, e.g. "k = i*4 + j", with the letters k, i, j given */
     void (*rule)(char *buf, size_t size, const char *kij, int a, int b);
 } kind_ops;
@@ -44,17 +43,10 @@ static void quad_coords(int *i, int *j, int a, int b, int k)
     *j = k % (b + 1);
 }
 
-static int quad_rows(int a, int b)
-{
-    (void)b;
-    return a + 1;
-}
-
-static int quad_row(int *count, int a, int b, int r)
+static int quad_row_start(int a, int b, int k)
 {
     (void)a;
-    *count = b + 1;
-    return r * (b + 1);
+    return k % (b + 1) == 0;
 }
 
 static void quad_rule(char *buf, size_t size, const char *kij, int a, int b)
@@ -66,14 +58,14 @@ static void quad_rule(char *buf, size_t size, const char *kij, int a, int b)
 static const kind_ops kinds[] = {
     {2, "", "bidegree", "i along u", "I along u", "row I along u, column J along v",
      "point k = i*(m+1)+j and plane P = I*(3m-1)+J, with i and I along u", quad_plane_degrees,
-     quad_count, quad_index, quad_coords, quad_rows, quad_row, quad_rule},
+     quad_count, quad_index, quad_coords, quad_row_start, quad_rule},
 };
 
-/* Writes the degrees (a, b) of a kind the way --degree reads them. */
-static void put_degrees(char *buf, size_t size, const kind_ops *k, int a, int b)
+/* Writes the degrees (a, b) of a kind separated by sep ("x" the way --degree reads them). */
+static void put_degrees(char *buf, size_t size, const kind_ops *k, int a, int b, const char *sep)
 {
     if (k->ndeg > 1)
-        snprintf(buf, size, "%dx%d", a, b);
+        snprintf(buf, size, "%d%s%d", a, sep, b);
     else
         snprintf(buf, size, "%d", a);
 }
@@ -83,10 +75,10 @@ int tp_domain_init(tp_domain *d, tp_kind kind, int n, int m, ptp_error *err)
     const kind_ops *k = &kinds[kind];
     char deg[16], lim[16];
     m = k->ndeg > 1 ? m : n;
-    put_degrees(deg, sizeof deg, k, n, m);
+    put_degrees(deg, sizeof deg, k, n, m, "x");
     if (n < 1 || m < 1)
         return ptp_fail(err, PTP_EUSAGE, "%s %s: degrees must be at least 1", k->word, deg);
-    put_degrees(lim, sizeof lim, k, PTP_MAX_DEGREE, PTP_MAX_DEGREE);
+    put_degrees(lim, sizeof lim, k, PTP_MAX_DEGREE, PTP_MAX_DEGREE, "x");
     if (n > PTP_MAX_DEGREE || m > PTP_MAX_DEGREE)
         return ptp_fail(err, PTP_ELIMIT,
                         "%s %s is beyond the supported limit %s (exact weights in 128-bit "
@@ -172,19 +164,14 @@ void tp_domain_plane_ij(int *I, int *J, const tp_domain *d, int P)
     kinds[d->kind].coords(I, J, d->pu, d->pv, P);
 }
 
-int tp_domain_plane_rows(const tp_domain *d)
+int tp_domain_plane_row_start(const tp_domain *d, int P)
 {
-    return kinds[d->kind].rows(d->pu, d->pv);
-}
-
-int tp_domain_plane_row(int *count, const tp_domain *d, int r)
-{
-    return kinds[d->kind].row(count, d->pu, d->pv, r);
+    return kinds[d->kind].row_start(d->pu, d->pv, P);
 }
 
 char *tp_domain_format(char *buf, size_t size, const tp_domain *d)
 {
-    put_degrees(buf, size, &kinds[d->kind], d->n, d->m);
+    put_degrees(buf, size, &kinds[d->kind], d->n, d->m, "x");
     return buf;
 }
 
@@ -201,7 +188,9 @@ void tp_domain_text_get(tp_domain_text *x, const tp_domain *d)
     x->word = k->word;
     tp_domain_format(x->degree, sizeof x->degree, d);
     snprintf(x->name, sizeof x->name, "%s %s", k->word, x->degree);
-    put_degrees(x->plane_degree, sizeof x->plane_degree, k, d->pu, d->pv);
+    put_degrees(x->plane_degree, sizeof x->plane_degree, k, d->pu, d->pv, "x");
+    put_degrees(x->degrees, sizeof x->degrees, k, d->n, d->m, ", ");
+    put_degrees(x->plane_degrees, sizeof x->plane_degrees, k, d->pu, d->pv, ", ");
     snprintf(x->plane_name, sizeof x->plane_name, "%s %s", k->word, x->plane_degree);
     k->rule(x->point_rule, sizeof x->point_rule, "kij", d->n, d->m);
     k->rule(x->plane_rule, sizeof x->plane_rule, "PIJ", d->pu, d->pv);

@@ -10,7 +10,7 @@ typedef enum { TP_QUAD } tp_kind;
 
 /* A patch domain. Points and planes are both numbered over a grid: a point over the degrees
  * (n, m), a plane over the plane degrees (pu, pv), by the kind's rule (quad: row-major, the
- * first index along u). */
+ * first index along u: k = i*(m+1) + j, P = I*(pv+1) + J). */
 typedef struct {
     tp_kind kind;
     int n, m;            /* patch degrees (quad: n along u, m along v) */
@@ -25,6 +25,8 @@ typedef struct {
     char name[32];           /* "bidegree 3x3" */
     char plane_degree[16];   /* "7x7" */
     char plane_name[32];     /* "bidegree 7x7" */
+    char degrees[16];        /* "3, 3": the items of the JSON "degree" list */
+    char plane_degrees[16];  /* "7, 7": the items of the JSON "plane_degree" list */
     char point_rule[32];     /* "k = i*4 + j" */
     char plane_rule[32];     /* "P = I*8 + J" */
     const char *point_axes;  /* "i along u" */
@@ -50,10 +52,9 @@ void tp_domain_point_ij(int *i, int *j, const tp_domain *d, int k);
 /* The number of plane (I, J), 0 <= P < nplanes; and back. */
 int tp_domain_plane(const tp_domain *d, int I, int J);
 void tp_domain_plane_ij(int *I, int *J, const tp_domain *d, int P);
-/* The planes as rows, in numbering order (quad: row I along u): the number of rows, and the
- * first plane of row r, with *count the planes in it. */
-int tp_domain_plane_rows(const tp_domain *d);
-int tp_domain_plane_row(int *count, const tp_domain *d, int r);
+/* Nonzero when plane P starts a row of the plane matrix that stats and tables print, the
+ * planes in numbering order (quad: J == 0, a row per I along u). */
+int tp_domain_plane_row_start(const tp_domain *d, int P);
 
 /* Writes the degree as --degree reads it ("3x3") to buf (size bytes); returns buf. */
 char *tp_domain_format(char *buf, size_t size, const tp_domain *d);
