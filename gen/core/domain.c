@@ -92,6 +92,14 @@ int tp_domain_init(tp_domain *d, tp_kind kind, int n, int m, ptp_error *err)
     return PTP_OK;
 }
 
+/* PTP_EUSAGE: arg is not a degree of the accepted form. */
+static int bad_form(const char *arg, ptp_error *err)
+{
+    return ptp_fail(err, PTP_EUSAGE,
+                    "--degree '%s': expected N or NxM with whole numbers 1 to %d (e.g. 3 or 2x3)", arg,
+                    PTP_MAX_DEGREE);
+}
+
 /* Reads one degree at s: decimal digits only, 1..PTP_MAX_DEGREE; *end is where it stopped. */
 static int parse_one(int *v, const char *s, const char **end, const char *arg, ptp_error *err)
 {
@@ -106,9 +114,7 @@ static int parse_one(int *v, const char *s, const char **end, const char *arg, p
         }
     }
     if (p == s)
-        return ptp_fail(err, PTP_EUSAGE,
-                        "--degree '%s': expected N or NxM with whole numbers 1 to %d (e.g. 3 or 2x3)",
-                        arg, PTP_MAX_DEGREE);
+        return bad_form(arg, err);
     *end = p;
     if (big)
         return ptp_fail(err, PTP_EUSAGE, "--degree '%s': the largest supported degree is %d", arg,
@@ -126,12 +132,11 @@ int tp_domain_parse(tp_domain *d, tp_kind kind, const char *arg, ptp_error *err)
     if ((st = parse_one(&n, arg, &p, arg, err)))
         return st;
     m = n;
-    if (kinds[kind].ndeg > 1 && (*p == 'x' || *p == 'X') && (st = parse_one(&m, p + 1, &p, arg, err)))
+    if (kinds[kind].ndeg > 1 && (*p == 'x' || *p == 'X') &&
+        (st = parse_one(&m, p + 1, &p, arg, err)))
         return st;
     if (*p != '\0')
-        return ptp_fail(err, PTP_EUSAGE,
-                        "--degree '%s': expected N or NxM with whole numbers 1 to %d (e.g. 3 or 2x3)",
-                        arg, PTP_MAX_DEGREE);
+        return bad_form(arg, err);
     return tp_domain_init(d, kind, n, m, err);
 }
 

@@ -14,7 +14,7 @@ typedef enum { TP_QUAD } tp_kind;
 typedef struct {
     tp_kind kind;
     int n, m;            /* patch degrees (quad: n along u, m along v) */
-    int pu, pv;          /* degrees of the planes of T = cross4(B, dB/du, dB/dv) (quad: 3n-2, 3m-2) */
+    int pu, pv;          /* plane degrees of T = cross4(B, dB/du, dB/dv) (quad: 3n-2, 3m-2) */
     int npoints, nplanes;
 } tp_domain;
 
@@ -32,7 +32,7 @@ typedef struct {
     const char *point_axes;  /* "i along u" */
     const char *plane_axes;  /* "I along u" */
     const char *plane_rows;  /* "row I along u, column J along v": the layout of plane matrices */
-    const char *conventions; /* both numberings for any degree, e.g. "point k = i*(m+1)+j and ..." */
+    const char *conventions; /* both numberings in symbols: "point k = i*(m+1)+j and ..." */
 } tp_domain_text;
 
 /* d = the domain of the kind and degrees (m is ignored by kinds with one degree). Fails with

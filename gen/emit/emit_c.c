@@ -141,9 +141,11 @@ static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const c
 {
     const char *px = info->prefix, *neg = info->rule == OUT_STRICT ? "< 0.0f" : "<= 0.0f";
     const char *pos = info->rule == OUT_STRICT ? "> 0.0f" : ">= 0.0f";
+    tp_domain_text x;
+    tp_domain_text_get(&x, &t->dom);
     sbuf_printf(o,
-                "/* --refine %d: the class of the scalar Bezier patch with control values d[I * %d + J] (bidegree\n"
-                " * %dx%d): back if all values are %s, front if all are %s, and otherwise, while levels\n"
+                "/* --refine %d: the class of the scalar Bezier patch with control values d[I * %d + J] (%s\n"
+                " * %s): back if all values are %s, front if all are %s, and otherwise, while levels\n"
                 " * remain and the four corners (values of the function itself) agree, the class the four\n"
                 " * quarters split at u = v = 1/2 (de Casteljau) agree on, else silhouette. */\n"
                 "static unsigned %ssplit_class(const float *d, int levels)\n{\n"
@@ -184,7 +186,8 @@ static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const c
                 "        }\n"
                 "    }\n"
                 "    return cls;\n}\n\n",
-                info->refine, t->dom.pv + 1, t->dom.pu, t->dom.pv, neg, pos, px, t->dom.pu, t->dom.pv, neg, pos, up, up,
+                info->refine, t->dom.pv + 1, x.word, x.plane_degree, neg, pos, px, t->dom.pu,
+                t->dom.pv, neg, pos, up, up,
                 neg, neg, neg, neg, pos, pos, pos, pos, up, px, up, up);
     sbuf_printf(o, "/* The refined class of a patch the plane values leave silhouette. */\n"
                    "static unsigned %srefined(const float cp[][4], const float eye[4])\n{\n"

@@ -45,7 +45,8 @@ static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const ke
 {
     const sched *s = info->sched;
     int P = s->threads, th, p, r, k = 0;
-    unsigned long *v = malloc((size_t)(2 * P > t->dom.nplanes ? 2 * P : t->dom.nplanes + P + 1) * sizeof *v);
+    int L = t->dom.nplanes;
+    unsigned long *v = malloc((size_t)(2 * P > L ? 2 * P : L + P + 1) * sizeof *v);
     char lit[48];
     if (!v)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");

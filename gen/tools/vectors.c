@@ -10,8 +10,9 @@ enum { KIND_NEAR, KIND_FLAT, KIND_COLLAPSED, KIND_EDGE_ON, KIND_CORNER };
 static const char *const kind_names[] = {"near-planar", "flat", "collapsed-edge", "edge-on",
                                          "corner-tangent"};
 
+/* What follows the domain's numbering (tp_domain_text's conventions) in "conventions". */
 static const char conventions[] =
-    "point k = i*(m+1)+j and plane P = I*(3m-1)+J, with i and I along u; t_P is the sum of "
+    "t_P is the sum of "
     "weight*cross4(b_j, b_k, b_l) over the ptpgen-planes/1 terms of plane P, cross4 as in "
     "Appendix A of Loop, Niessner and Eisenacher (2011); values d_P = eye.t_P in world space and "
     "eye.z*t_P.z in clip space, exact and as the nearest double; classes 0 front, 1 back, "
@@ -82,7 +83,8 @@ static void draw_grid(vcase *v, const tp_table *t, uint64_t *s, const int C[3], 
     int i, j, c;
     for (i = 0; i <= t->dom.n; i++)
         for (j = 0; j <= t->dom.m; j++) {
-            int *X = v->X[i * (t->dom.m + 1) + j], a = 6 * i / t->dom.n - 3, b = 6 * j / t->dom.m - 3;
+            int *X = v->X[tp_domain_point(&t->dom, i, j)], a = 6 * i / t->dom.n - 3;
+            int b = 6 * j / t->dom.m - 3;
             for (c = 0; c < 3; c++)
                 X[c] = C[c] + a * U[c] + b * V[c] + draw(s, -amp, amp);
         }
@@ -94,7 +96,9 @@ static void draw_grid(vcase *v, const tp_table *t, uint64_t *s, const int C[3], 
 static void corner_tangent(vcase *v, const tp_table *t, out_space space, uint64_t *s)
 {
     int ci = draw(s, 0, 1) * t->dom.n, cj = draw(s, 0, 1) * t->dom.m, c;
-    int k0 = ci * (t->dom.m + 1) + cj, k1 = k0 + (cj ? -1 : 1), k2 = k0 + (ci ? -1 : 1) * (t->dom.m + 1);
+    int k0 = tp_domain_point(&t->dom, ci, cj);
+    int k1 = tp_domain_point(&t->dom, ci, cj + (cj ? -1 : 1));
+    int k2 = tp_domain_point(&t->dom, ci + (ci ? -1 : 1), cj);
     for (c = 0; c < 3; c++)
         v->X[k0][c] += draw(s, -2, 2);
     if (space == OUT_CLIP) {
@@ -112,11 +116,12 @@ static void corner_tangent(vcase *v, const tp_table *t, out_space space, uint64_
 /* Replaces one random boundary row of control points by copies of its first point. */
 static void collapse_edge(vcase *v, const tp_table *t, uint64_t *s)
 {
-    int e = draw(s, 0, 3), k, c;
-    int first = e == 1 ? t->dom.n * (t->dom.m + 1) : e == 3 ? t->dom.m : 0;
+    int e = draw(s, 0, 3), k, c, i, j;
+    int first = tp_domain_point(&t->dom, e == 1 ? t->dom.n : 0, e == 3 ? t->dom.m : 0);
     for (k = 0; k < t->dom.npoints; k++) {
-        int i = k / (t->dom.m + 1), j = k % (t->dom.m + 1);
-        int on = e == 0 ? i == 0 : e == 1 ? i == t->dom.n : e == 2 ? j == 0 : j == t->dom.m;
+        int on;
+        tp_domain_point_ij(&i, &j, &t->dom, k);
+        on = e == 0 ? i == 0 : e == 1 ? i == t->dom.n : e == 2 ? j == 0 : j == t->dom.m;
         for (c = 0; on && c < 4; c++)
             v->b[k][c] = v->b[first][c];
     }
@@ -299,6 +304,7 @@ static int put_document(sbuf *out, vstate *st, long count, uint64_t seed, out_sp
                         const char *command, ptp_error *err)
 {
     const tp_table *t = st->t;
+    tp_domain_text x;
     uint64_t s = seed;
     long c;
     int status;
@@ -306,11 +312,12 @@ static int put_document(sbuf *out, vstate *st, long count, uint64_t seed, out_sp
                 PTP_VERSION);
     sbuf_puts(out, "  \"command\": ");
     put_string(out, command);
-    sbuf_printf(out, ",\n  \"degree\": [%d, %d],\n  \"space\": \"%s\",\n", t->dom.n, t->dom.m,
+    tp_domain_text_get(&x, &t->dom);
+    sbuf_printf(out, ",\n  \"degree\": [%s],\n  \"space\": \"%s\",\n", x.degrees,
                 space == OUT_CLIP ? "clip" : "world");
     sbuf_printf(out, "  \"seed\": %" PRIu64 ",\n  \"points\": %d,\n  \"planes\": %d,\n", seed,
                 t->dom.npoints, t->dom.nplanes);
-    sbuf_printf(out, "  \"conventions\": \"%s\",\n  \"cases\": [", conventions);
+    sbuf_printf(out, "  \"conventions\": \"%s; %s\",\n  \"cases\": [", x.conventions, conventions);
     for (c = 0; c < count; c++) {
         draw_case(&st->v, t, space, &s);
         sbuf_puts(out, c ? ",\n" : "\n");
