@@ -84,7 +84,7 @@ static void run_set(tally *t, const kref_ref *ref, const kref_set *s)
             continue;
         t->refined++;
         /* Back must mean no sample above the rounding slack, front none below it. */
-        sample(&lo, &hi, d, ref->t.pu, ref->t.pv, 33);
+        sample(&lo, &hi, d, ref->t.dom.pu, ref->t.dom.pv, 33);
         if ((c == KREF_BACK && hi > slack) || (c == KREF_FRONT && lo < -slack)) {
             if (!t->unsafe++)
                 snprintf(t->first, sizeof t->first, "%s patch %zu: class %u but samples in [%g, %g]",

@@ -213,8 +213,8 @@ int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_e
     int st = tp_derive(&r->t, n, m, err);
     if (st)
         return st;
-    r->K = r->t.npoints;
-    r->L = r->t.nplanes;
+    r->K = r->t.dom.npoints;
+    r->L = r->t.dom.nplanes;
     r->space = space;
     r->rule = rule;
     r->certified = 0;
@@ -271,7 +271,7 @@ kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t 
 {
     static const double noise[] = {0, 0.003, 0.03, 0.1, 0.3, 1.0};
     kref_set *sets = alloc_sets(nsets, count, r->K);
-    int n = r->t.n, m = r->t.m, i, j, c, s;
+    int n = r->t.dom.n, m = r->t.dom.m, i, j, c, s;
     size_t p;
     if (!sets)
         return NULL;
@@ -637,7 +637,7 @@ kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t s
     size_t p;
     if (!r->wint) {
         ptp_fail(err, PTP_ELIMIT, "the %dx%d weights are too large for exact evaluation",
-                 r->t.n, r->t.m);
+                 r->t.dom.n, r->t.dom.m);
         return NULL;
     }
     sets = alloc_sets(nsets, count, r->K);
@@ -657,8 +657,8 @@ kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t s
         ptp_fail(err, PTP_ENOMEM, "out of memory");
         return NULL;
     }
-    pt->n = r->t.n;
-    pt->m = r->t.m;
+    pt->n = r->t.dom.n;
+    pt->m = r->t.dom.m;
     pt->K = r->K;
     pt->world = r->space == KREF_WORLD;
     for (s = 0; sets && s < nsets; s++) {
@@ -825,7 +825,7 @@ kref_set *kref_model_sets(const kref_ref *r, const char *path, int neyes, uint64
     double C[3] = {0, 0, 0}, R = 0;
     const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
     int e, p, k, c;
-    if (r->t.n != 3 || r->t.m != 3) {
+    if (r->t.dom.n != 3 || r->t.dom.m != 3) {
         ptp_fail(err, PTP_EUSAGE, "models are bicubic: use bidegree 3x3");
         return NULL;
     }

@@ -41,11 +41,11 @@ static const char *violation(const sched *s, const tp_table *t, const int *count
         snprintf(msg, sizeof msg, "out of memory in the test");
         goto done;
     }
-    if (s->nplanes != t->nplanes) {
-        snprintf(msg, sizeof msg, "nplanes %d, table has %d", s->nplanes, t->nplanes);
+    if (s->nplanes != t->dom.nplanes) {
+        snprintf(msg, sizeof msg, "nplanes %d, table has %d", s->nplanes, t->dom.nplanes);
         goto done;
     }
-    for (p = 0; p < t->nplanes; p++) {
+    for (p = 0; p < t->dom.nplanes; p++) {
         if (s->owner[p] < 0 || s->owner[p] >= P) {
             snprintf(msg, sizeof msg, "plane %d has owner %d", p, s->owner[p]);
             goto done;
@@ -149,16 +149,16 @@ static int by_size(const void *a, const void *b)
 /* Whether t's planes fit P threads of C terms each, by the independent search. */
 static int fits_plain(const tp_table *t, const int *count, int P, int C)
 {
-    int *w = malloc((size_t)t->nplanes * sizeof *w), *load = calloc((size_t)P, sizeof *load), r;
+    int *w = malloc((size_t)t->dom.nplanes * sizeof *w), *load = calloc((size_t)P, sizeof *load), r;
     long nodes = 2000000;
     if (!w || !load) {
         free(w);
         free(load);
         return -1;
     }
-    memcpy(w, count, (size_t)t->nplanes * sizeof *w);
-    qsort(w, (size_t)t->nplanes, sizeof *w, by_size);
-    r = fits(load, w, t->nplanes, P, C, 0, (long)t->nterms, &nodes);
+    memcpy(w, count, (size_t)t->dom.nplanes * sizeof *w);
+    qsort(w, (size_t)t->dom.nplanes, sizeof *w, by_size);
+    r = fits(load, w, t->dom.nplanes, P, C, 0, (long)t->nterms, &nodes);
     free(w);
     free(load);
     return r;
@@ -200,7 +200,7 @@ static void check_matrix(row *rows, int *nrows)
                 check(0, "derive for the schedule tests", "%dx%d: %s", n, m, err.msg);
                 continue;
             }
-            count = malloc((size_t)t.nplanes * sizeof *count);
+            count = malloc((size_t)t.dom.nplanes * sizeof *count);
             tp_plane_counts(count, &t);
             def = sched_default_threads(&t);
             for (i = 0; i < NPS; i++) {
@@ -210,7 +210,7 @@ static void check_matrix(row *rows, int *nrows)
                 const char *why;
                 char name[96];
                 row *x = &rows[*nrows];
-                if (P > t.nplanes)
+                if (P > t.dom.nplanes)
                     continue;
                 snprintf(name, sizeof name,
                          "schedule %dx%d with %d threads: valid, R == LB, < %.0f ms", n, m, P,
@@ -260,13 +260,13 @@ static void check_every_p(void)
                 check(0, "derive for the schedule tests", "%dx%d: %s", n, m, err.msg);
                 continue;
             }
-            if (t.nplanes > 40) {
+            if (t.dom.nplanes > 40) {
                 tp_clear(&t);
                 continue;
             }
-            count = malloc((size_t)t.nplanes * sizeof *count);
+            count = malloc((size_t)t.dom.nplanes * sizeof *count);
             tp_plane_counts(count, &t);
-            for (P = 1; P <= t.nplanes && !bad[0]; P++) {
+            for (P = 1; P <= t.dom.nplanes && !bad[0]; P++) {
                 sched s;
                 double ms;
                 const char *why;
@@ -292,7 +292,7 @@ static void check_every_p(void)
                 sched_clear(&s);
             }
             snprintf(name, sizeof name, "schedule %dx%d with every P from 1 to %d", n, m,
-                     t.nplanes);
+                     t.dom.nplanes);
             check(!bad[0], name, "%s", bad);
             free(count);
             tp_clear(&t);
@@ -314,7 +314,7 @@ static void check_usage(const tp_table *t, int P, int Q, const char *needle)
     st = sched_build(&s, t, P, Q, &err);
     if (!st)
         sched_clear(&s);
-    snprintf(name, sizeof name, "%dx%d with P=%d, Q=%d is refused", t->n, t->m, P, Q);
+    snprintf(name, sizeof name, "%dx%d with P=%d, Q=%d is refused", t->dom.n, t->dom.m, P, Q);
     check(st == PTP_EUSAGE && err.status == PTP_EUSAGE && strstr(err.msg, needle) &&
               !strchr(err.msg, '\n') && strncmp(err.msg, "ptpgen:", 7) != 0,
           name, "status %d, message \"%s\" (wanted \"%s\")", st, err.msg, needle);
@@ -373,7 +373,7 @@ static void check_deterministic(void)
     if (!sched_build(&a, &t, 64, 2, &err)) {
         if (!sched_build(&b, &t, 64, 2, &err)) {
             ok = a.rounds == b.rounds &&
-                 !memcmp(a.owner, b.owner, (size_t)t.nplanes * sizeof *a.owner) &&
+                 !memcmp(a.owner, b.owner, (size_t)t.dom.nplanes * sizeof *a.owner) &&
                  !memcmp(a.slot, b.slot, (size_t)a.rounds * 64 * sizeof *a.slot);
             sched_clear(&b);
         }

@@ -59,8 +59,8 @@ static void eval_patch(double r[4], const double (*b)[4], int n, int m, int deri
  * Bernstein evaluation of the planes of t applied to the points b. */
 static double worst_error(const tp_table *t, const double (*b)[4])
 {
-    double (*pl)[4] = calloc((size_t)t->nplanes, sizeof *pl);
-    double (*mg)[4] = calloc((size_t)t->nplanes, sizeof *mg);
+    double (*pl)[4] = calloc((size_t)t->dom.nplanes, sizeof *pl);
+    double (*mg)[4] = calloc((size_t)t->dom.nplanes, sizeof *mg);
     double worst = 0;
     size_t x;
     int s, c, I, J;
@@ -76,16 +76,16 @@ static double worst_error(const tp_table *t, const double (*b)[4])
     for (s = 0; s < 50; s++) {
         double u = uniform(0, 1), v = uniform(0, 1), B[4], Bu[4], Bv[4], T[4], P[4] = {0},
                M = 0;
-        eval_patch(B, b, t->n, t->m, 0, u, v);
-        eval_patch(Bu, b, t->n, t->m, 1, u, v);
-        eval_patch(Bv, b, t->n, t->m, 2, u, v);
+        eval_patch(B, b, t->dom.n, t->dom.m, 0, u, v);
+        eval_patch(Bu, b, t->dom.n, t->dom.m, 1, u, v);
+        eval_patch(Bv, b, t->dom.n, t->dom.m, 2, u, v);
         tp_cross4(T, B, Bu, Bv);
-        for (I = 0; I <= t->pu; I++)
-            for (J = 0; J <= t->pv; J++) {
-                double w = bernstein(t->pu, I, u) * bernstein(t->pv, J, v);
+        for (I = 0; I <= t->dom.pu; I++)
+            for (J = 0; J <= t->dom.pv; J++) {
+                double w = bernstein(t->dom.pu, I, u) * bernstein(t->dom.pv, J, v);
                 for (c = 0; c < 4; c++) {
-                    P[c] += w * pl[I * (t->pv + 1) + J][c];
-                    M = fmax(M, w * mg[I * (t->pv + 1) + J][c]);
+                    P[c] += w * pl[I * (t->dom.pv + 1) + J][c];
+                    M = fmax(M, w * mg[I * (t->dom.pv + 1) + J][c]);
                 }
             }
         for (c = 0; c < 4; c++)
@@ -124,7 +124,7 @@ static int table_is_wellformed(const tp_table *t, char *why)
     for (x = 0; x < t->nterms; x++) {
         const tp_term *e = &t->terms[x], *p = x ? e - 1 : NULL;
         if (!rat_is_canonical(&e->w) || e->w.num == 0 || !(e->j < e->k && e->k < e->l) ||
-            e->l >= t->npoints || e->plane < 0 || e->plane >= t->nplanes) {
+            e->l >= t->dom.npoints || e->plane < 0 || e->plane >= t->dom.nplanes) {
             sprintf(why, "term %zu malformed", x);
             return 0;
         }
@@ -136,7 +136,7 @@ static int table_is_wellformed(const tp_table *t, char *why)
         }
     }
     if (t->nterms < 1 || t->terms[0].plane != 0 || t->terms[0].j != 0 || t->terms[0].k != 1 ||
-        t->terms[0].l != t->m + 1 || t->terms[0].w.num != -(ptp_i128)(t->n * t->m) ||
+        t->terms[0].l != t->dom.m + 1 || t->terms[0].w.num != -(ptp_i128)(t->dom.n * t->dom.m) ||
         t->terms[0].w.den != 1 || (t->nterms > 1 && t->terms[1].plane == 0)) {
         sprintf(why, "plane 0 is not -nm cross4(b0, b1, b_{m+1})");
         return 0;
@@ -163,8 +163,8 @@ static void test_random_patches(void)
                     snprintf(first, sizeof first, "%dx%d: %s", n, m, why);
             }
             for (p = 0; p < 4; p++, cases++) {
-                double(*b)[4] = malloc((size_t)t.npoints * sizeof *b), e;
-                for (k = 0; k < t.npoints; k++) {
+                double(*b)[4] = malloc((size_t)t.dom.npoints * sizeof *b), e;
+                for (k = 0; k < t.dom.npoints; k++) {
                     for (c = 0; c < 3; c++)
                         b[k][c] = uniform(-1, 1);
                     b[k][3] = p < 2 ? 1.0 : uniform(0.25, 4); /* p >= 2: rational patches */
@@ -216,9 +216,9 @@ static void transpose(tp_table *t)
     for (x = 0; x < t->nterms; x++) {
         tp_term *e = &t->terms[x];
         int p[3] = {e->j, e->k, e->l}, a, b, sign = -1, tmp;
-        e->plane = (e->plane % (t->pv + 1)) * (t->pu + 1) + e->plane / (t->pv + 1);
+        e->plane = (e->plane % (t->dom.pv + 1)) * (t->dom.pu + 1) + e->plane / (t->dom.pv + 1);
         for (a = 0; a < 3; a++)
-            p[a] = (p[a] % (t->m + 1)) * (t->n + 1) + p[a] / (t->m + 1);
+            p[a] = (p[a] % (t->dom.m + 1)) * (t->dom.n + 1) + p[a] / (t->dom.m + 1);
         for (a = 0; a < 3; a++)
             for (b = a + 1; b < 3; b++)
                 if (p[b] < p[a]) {
@@ -266,6 +266,7 @@ static void test_transpose(void)
 static void test_limits(void)
 {
     tp_table t;
+    tp_domain d;
     ptp_error err;
     bez B, R;
     int st;
@@ -273,7 +274,8 @@ static void test_limits(void)
           "a degree beyond the limit is refused, naming the limit", "%s", err.msg);
     check(tp_derive(&t, 0, 2, &err) == PTP_EUSAGE, "degree 0 is refused", "%s", err.msg);
     /* The reduction check must fail loudly on a polynomial whose degree does not drop. */
-    bez_patch(&B, 3, 2, &err);
+    tp_domain_init(&d, TP_QUAD, 3, 2, &err);
+    bez_patch(&B, &d, &err);
     st = bez_reduce_u(&R, &B, &err);
     check(st == PTP_EINTERNAL && strstr(err.msg, "residual"),
           "degree reduction of a patch of full degree fails with a residual error", "status %d: %s",

@@ -67,12 +67,12 @@ static int parse_case(pcase *c, const char **p, const tp_table *t)
         c->eye[x] = next_int(p);
     if (!seek(p, "\"points\": ["))
         return 0;
-    for (k = 0; k < t->npoints; k++)
+    for (k = 0; k < t->dom.npoints; k++)
         for (x = 0; x < 4; x++)
             c->b[k][x] = next_int(p);
     if (!seek(p, "\"values\": ["))
         return 0;
-    for (k = 0; k < t->nplanes; k++) {
+    for (k = 0; k < t->dom.nplanes; k++) {
         size_t n;
         if (!seek(p, "\"") || (n = strcspn(*p, "\"")) >= sizeof buf)
             return 0;
@@ -84,7 +84,7 @@ static int parse_case(pcase *c, const char **p, const tp_table *t)
     }
     if (!seek(p, "\"values_double\": ["))
         return 0;
-    for (k = 0; k < t->nplanes; k++)
+    for (k = 0; k < t->dom.nplanes; k++)
         c->dbl[k] = next_double(p);
     if (!seek(p, "\"class_strict\": "))
         return 0;
@@ -191,15 +191,15 @@ static long verify(tally *ty, prop *bounds, prop *exact, prop *round, prop *cls,
     char buf[RAT_STRLEN];
     const char *p = doc;
     long bad_eval = 0;
-    c.b = malloc((size_t)ref->npoints * sizeof *c.b);
-    c.val = malloc((size_t)ref->nplanes * sizeof *c.val);
-    c.dbl = malloc((size_t)ref->nplanes * sizeof *c.dbl);
+    c.b = malloc((size_t)ref->dom.npoints * sizeof *c.b);
+    c.val = malloc((size_t)ref->dom.nplanes * sizeof *c.val);
+    c.dbl = malloc((size_t)ref->dom.nplanes * sizeof *c.dbl);
     memset(ty, 0, sizeof *ty);
     while (c.b && c.val && c.dbl && parse_case(&c, &p, ref)) {
         int k, x, ok = 1, zeros = 0, ki = kind_index(c.kind);
-        const int P[4] = {0, ref->pv, ref->pu * (ref->pv + 1), ref->nplanes - 1};
+        const int P[4] = {0, ref->dom.pv, ref->dom.pu * (ref->dom.pv + 1), ref->dom.nplanes - 1};
         ty->cases++;
-        for (k = 0; k < ref->npoints; k++) {
+        for (k = 0; k < ref->dom.npoints; k++) {
             const int64_t *b = c.b[k];
             ok &= llabs(b[0]) <= VECTORS_XYZ_MAX && llabs(b[1]) <= VECTORS_XYZ_MAX;
             ok &= b[3] >= 1 && b[3] <= VECTORS_W_MAX;
@@ -213,7 +213,7 @@ static long verify(tally *ty, prop *bounds, prop *exact, prop *round, prop *cls,
         bounds->tried++;
         if (!ok)
             prop_fail(bounds, "case %ld: a point or the eye out of bounds", ty->cases - 1);
-        for (k = 0, ok = 1; k < ref->nplanes; k++) {
+        for (k = 0, ok = 1; k < ref->dom.nplanes; k++) {
             double d, mag, want = rat_get_d(&c.val[k]);
             eval_plane(&d, &mag, ref, &c, k, space);
             if (fabs(d - want) > 1e-9 * mag || (mag == 0 && want != 0)) {
@@ -232,7 +232,7 @@ static long verify(tally *ty, prop *bounds, prop *exact, prop *round, prop *cls,
             exact->tried++;
         round->tried++;
         for (x = 0; x < 2; x++) {
-            int want = expected_class(c.val, ref->nplanes, x);
+            int want = expected_class(c.val, ref->dom.nplanes, x);
             cls->tried++;
             if (c.cls[x] != want)
                 prop_fail(cls, "case %ld: %s class %d, the signs say %d", ty->cases - 1,
@@ -241,7 +241,7 @@ static long verify(tally *ty, prop *bounds, prop *exact, prop *round, prop *cls,
         }
         /* What each kind promises: edge-on all zero, collapsed-edge and corner-tangent some. */
         kind->tried++;
-        if (ki < 0 || (ki == 3 && zeros != ref->nplanes) || (ki == 2 && zeros == 0) ||
+        if (ki < 0 || (ki == 3 && zeros != ref->dom.nplanes) || (ki == 2 && zeros == 0) ||
             (ki == 4 && c.val[P[0]].num && c.val[P[1]].num && c.val[P[2]].num && c.val[P[3]].num))
             prop_fail(kind, "case %ld: kind %s with %d zero values", ty->cases - 1, c.kind, zeros);
         else
@@ -302,7 +302,7 @@ static void check_degree(int n, int m, out_space space)
     snprintf(head, sizeof head,
              "\"degree\": [%d, %d],\n  \"space\": \"%s\",\n  \"seed\": %u,\n  \"points\": %d,\n"
              "  \"planes\": %d,\n",
-             n, m, sp, seed, t.npoints, t.nplanes);
+             n, m, sp, seed, t.dom.npoints, t.dom.nplanes);
     snprintf(name, sizeof name, "vectors %dx%d %s: header", n, m, sp);
     check(!strncmp(doc, "{\n  \"format\": \"ptpgen-vectors/1\",\n", 34) && strstr(doc, head),
           name, "want %s", head);
@@ -392,7 +392,7 @@ static void check_limits(void)
                 prop_fail(&bound, "%dx%d: %s", n, m, err.msg);
                 continue;
             }
-            for (p = 0; p < t.nplanes; p++) {
+            for (p = 0; p < t.dom.nplanes; p++) {
                 ptp_i128 D = 1;
                 double sum = 0;
                 size_t x;

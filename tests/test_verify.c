@@ -81,8 +81,8 @@ static int render(sbuf *b, const tp_table *t, int table)
     int P = sched_default_threads(t), st;
     if (sched_build(&s, t, P, sched_default_patches(P), &err))
         return 0;
-    snprintf(prefix, sizeof prefix, "ptp_%dx%d_", t->n, t->m);
-    snprintf(command, sizeof command, "ptpgen --degree %dx%d --target %s", t->n, t->m,
+    snprintf(prefix, sizeof prefix, "ptp_%dx%d_", t->dom.n, t->dom.m);
+    snprintf(command, sizeof command, "ptpgen --degree %dx%d --target %s", t->dom.n, t->dom.m,
              table ? "table" : "json");
     info.command = command;
     info.prefix = prefix;
@@ -196,9 +196,9 @@ static rows relabelled(const tp_table *t, int negate)
         row *e = &r.r[x];
         int q, a, b, sign = negate ? -1 : 1;
         rat w = t->terms[x].w;
-        e->plane = (e->plane % (t->pv + 1)) * (t->pu + 1) + e->plane / (t->pv + 1);
+        e->plane = (e->plane % (t->dom.pv + 1)) * (t->dom.pu + 1) + e->plane / (t->dom.pv + 1);
         for (q = 0; q < 3; q++)
-            e->p[q] = (e->p[q] % (t->m + 1)) * (t->n + 1) + e->p[q] / (t->m + 1);
+            e->p[q] = (e->p[q] % (t->dom.m + 1)) * (t->dom.n + 1) + e->p[q] / (t->dom.m + 1);
         for (a = 0; a < 3; a++)
             for (b = a + 1; b < 3; b++)
                 if (e->p[b] < e->p[a]) {

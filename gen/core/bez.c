@@ -41,16 +41,16 @@ void bez_clear(bez *p)
     p->c = NULL;
 }
 
-int bez_patch(bez *B, int n, int m, ptp_error *err)
+int bez_patch(bez *B, const tp_domain *d, ptp_error *err)
 {
     rat one;
     int i, j, st;
-    if ((st = bez_init(B, n, m, 1, err)))
+    if ((st = bez_init(B, d->n, d->m, 1, err)))
         return st;
     rat_set_si(&one, 1);
-    for (i = 0; i <= n; i++)
-        for (j = 0; j <= m; j++)
-            if ((st = form_set_point(bez_at(B, i, j), i * (m + 1) + j, &one, err))) {
+    for (i = 0; i <= d->n; i++)
+        for (j = 0; j <= d->m; j++)
+            if ((st = form_set_point(bez_at(B, i, j), tp_domain_point(d, i, j), &one, err))) {
                 bez_clear(B);
                 return st;
             }

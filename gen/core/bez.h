@@ -3,6 +3,7 @@
 #ifndef BEZ_H
 #define BEZ_H
 
+#include "core/domain.h"
 #include "core/form.h"
 
 /* sum_{I,J} B^du_I(u) B^dv_J(v) c[I*(dv+1)+J], every coefficient a form of the same rank. */
@@ -20,9 +21,9 @@ static inline form *bez_at(const bez *p, int I, int J)
 {
     return &p->c[I * (p->dv + 1) + J];
 }
-/* B = the symbolic patch of bidegree (n, m): coefficient (i, j) is the point b_k,
- * k = i*(m+1) + j. B must be uninitialized. */
-int bez_patch(bez *B, int n, int m, ptp_error *err);
+/* B = the symbolic patch of the quad domain d, bidegree (n, m): coefficient (i, j) is the
+ * point b_k, k = tp_domain_point(d, i, j). B must be uninitialized. */
+int bez_patch(bez *B, const tp_domain *d, ptp_error *err);
 /* D = dP/du (bidegree (du-1, dv)) or dP/dv (bidegree (du, dv-1)); D uninitialized, du or
  * dv at least 1. */
 int bez_diff_u(bez *D, const bez *P, ptp_error *err);

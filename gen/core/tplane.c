@@ -24,7 +24,7 @@ static int extract(tp_table *t, const bez *T, ptp_error *err)
                 int idx[3];
                 tp_term *x = &t->terms[n];
                 form_key_unpack(idx, f->t[i].key, 3);
-                x->plane = I * (T->dv + 1) + J;
+                x->plane = tp_domain_plane(&t->dom, I, J);
                 x->j = idx[0];
                 x->k = idx[1];
                 x->l = idx[2];
@@ -37,24 +37,23 @@ static int extract(tp_table *t, const bez *T, ptp_error *err)
 
 int tp_derive(tp_table *t, int n, int m, ptp_error *err)
 {
+    tp_domain d;
+    int st;
+    t->terms = NULL;
+    t->nterms = 0;
+    if ((st = tp_domain_init(&d, TP_QUAD, n, m, err)))
+        return st;
+    return tp_derive_domain(t, &d, err);
+}
+
+int tp_derive_domain(tp_table *t, const tp_domain *d, ptp_error *err)
+{
     bez B, Bu, Bv, BBu, T3, Tu, T;
     int st;
     t->terms = NULL;
     t->nterms = 0;
-    if (n < 1 || m < 1)
-        return ptp_fail(err, PTP_EUSAGE, "bidegree %dx%d: degrees must be at least 1", n, m);
-    if (n > PTP_MAX_DEGREE || m > PTP_MAX_DEGREE)
-        return ptp_fail(err, PTP_ELIMIT,
-                        "bidegree %dx%d is beyond the supported limit %dx%d (exact weights in "
-                        "128-bit rationals)",
-                        n, m, PTP_MAX_DEGREE, PTP_MAX_DEGREE);
-    t->n = n;
-    t->m = m;
-    t->pu = 3 * n - 2;
-    t->pv = 3 * m - 2;
-    t->npoints = (n + 1) * (m + 1);
-    t->nplanes = (t->pu + 1) * (t->pv + 1);
-    if ((st = bez_patch(&B, n, m, err)))
+    t->dom = *d;
+    if ((st = bez_patch(&B, d, err)))
         return st;
     if (!(st = bez_diff_u(&Bu, &B, err))) {
         if (!(st = bez_diff_v(&Bv, &B, err))) {
@@ -92,7 +91,7 @@ void tp_plane_counts(int *counts, const tp_table *t)
 {
     size_t i;
     int p;
-    for (p = 0; p < t->nplanes; p++)
+    for (p = 0; p < t->dom.nplanes; p++)
         counts[p] = 0;
     for (i = 0; i < t->nterms; i++)
         counts[t->terms[i].plane]++;

@@ -3,6 +3,7 @@
 #ifndef TPLANE_H
 #define TPLANE_H
 
+#include "core/domain.h"
 #include "core/rat.h"
 
 /* One weighted product: plane t_plane += w * cross4(b_j, b_k, b_l), j < k < l. */
@@ -12,21 +13,21 @@ typedef struct {
 } tp_term;
 
 typedef struct {
-    int n, m;           /* patch bidegree: n along u, m along v */
-    int pu, pv;         /* plane bidegree: 3n-2, 3m-2 */
-    int npoints;        /* (n+1)(m+1); point k = i*(m+1) + j */
-    int nplanes;        /* (pu+1)(pv+1); plane I*(pv+1) + J */
+    tp_domain dom;      /* the patch: degrees, counts, point and plane numbering */
     size_t nterms;
     tp_term *terms;     /* sorted by plane, then (j, k, l) */
 } tp_table;
 
-/* Derives the table of bidegree (n, m), 1 <= n, m <= PTP_MAX_DEGREE. Fails with
- * PTP_ELIMIT beyond that, PTP_EOVERFLOW if a weight does not fit, PTP_EINTERNAL if the
- * degree reduction check fails. t is uninitialized on entry and on failure. */
+/* Derives the table of the quad domain of bidegree (n, m), 1 <= n, m <= PTP_MAX_DEGREE.
+ * Fails with PTP_EUSAGE below that and PTP_ELIMIT beyond (tp_domain_init), PTP_EOVERFLOW if
+ * a weight does not fit, PTP_EINTERNAL if the degree reduction check fails. t is
+ * uninitialized on entry and on failure. */
 int tp_derive(tp_table *t, int n, int m, ptp_error *err);
+/* The same for the domain d (quad only for now). */
+int tp_derive_domain(tp_table *t, const tp_domain *d, ptp_error *err);
 /* Frees t's storage. */
 void tp_clear(tp_table *t);
-/* counts[p] = the number of terms of plane p (counts has t->nplanes entries). */
+/* counts[p] = the number of terms of plane p (counts has t->dom.nplanes entries). */
 void tp_plane_counts(int *counts, const tp_table *t);
 /* The cross4 of Appendix A of Loop, Niessner and Eisenacher, in double. */
 void tp_cross4(double r[4], const double a[4], const double b[4], const double c[4]);

@@ -141,9 +141,11 @@ static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const c
 {
     const char *px = info->prefix, *neg = info->rule == OUT_STRICT ? "< 0.0f" : "<= 0.0f";
     const char *pos = info->rule == OUT_STRICT ? "> 0.0f" : ">= 0.0f";
+    tp_domain_text x;
+    tp_domain_text_get(&x, &t->dom);
     sbuf_printf(o,
-                "/* --refine %d: the class of the scalar Bezier patch with control values d[I * %d + J] (bidegree\n"
-                " * %dx%d): back if all values are %s, front if all are %s, and otherwise, while levels\n"
+                "/* --refine %d: the class of the scalar Bezier patch with control values d[I * %d + J] (%s\n"
+                " * %s): back if all values are %s, front if all are %s, and otherwise, while levels\n"
                 " * remain and the four corners (values of the function itself) agree, the class the four\n"
                 " * quarters split at u = v = 1/2 (de Casteljau) agree on, else silhouette. */\n"
                 "static unsigned %ssplit_class(const float *d, int levels)\n{\n"
@@ -184,7 +186,8 @@ static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const c
                 "        }\n"
                 "    }\n"
                 "    return cls;\n}\n\n",
-                info->refine, t->pv + 1, t->pu, t->pv, neg, pos, px, t->pu, t->pv, neg, pos, up, up,
+                info->refine, t->dom.pv + 1, x.word, x.plane_degree, neg, pos, px, t->dom.pu,
+                t->dom.pv, neg, pos, up, up,
                 neg, neg, neg, neg, pos, pos, pos, pos, up, px, up, up);
     sbuf_printf(o, "/* The refined class of a patch the plane values leave silhouette. */\n"
                    "static unsigned %srefined(const float cp[][4], const float eye[4])\n{\n"
@@ -341,7 +344,7 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                 info->certified ? ", t" : "", up, up, up, up, up,
                 world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
                 world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
-    for (k = 0; k < t->npoints; k++) {
+    for (k = 0; k < t->dom.npoints; k++) {
         if (world)
             sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
                            "            z%d = %svload(q + %d * qs), w%d = %svload(q + %d * qs);\n"
@@ -356,7 +359,7 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     if (info->certified) {
         sbuf_printf(o, "        /* Certified: R, the largest |coordinate|, bounds every value's rounding error. */\n"
                        "        %svf R = %svabsmax(x0, x0);\n", px, px);
-        for (k = 0; k < t->npoints; k++) {
+        for (k = 0; k < t->dom.npoints; k++) {
             if (k > 0)
                 sbuf_printf(o, "        R = %svabsmax(R, x%d);\n", px, k);
             sbuf_printf(o, "        R = %svabsmax(R, y%d);\n", px, k);
@@ -505,8 +508,8 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     int st;
     fmt_upper(up, sizeof up, info->prefix);
     fmt_file_name(file, sizeof file, info->prefix, ".h");
-    snprintf(points, sizeof points, "%d", t->npoints);
-    snprintf(planes, sizeof planes, "%d", t->nplanes);
+    snprintf(points, sizeof points, "%d", t->dom.npoints);
+    snprintf(planes, sizeof planes, "%d", t->dom.nplanes);
     snprintf(count, sizeof count, "%sTERMS", up);
     sbuf_init(&banner);
     sbuf_init(&tables);

@@ -45,27 +45,28 @@ static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const ke
 {
     const sched *s = info->sched;
     int P = s->threads, th, p, r, k = 0;
-    unsigned long *v = malloc((size_t)(2 * P > t->nplanes ? 2 * P : t->nplanes + P + 1) * sizeof *v);
+    int L = t->dom.nplanes;
+    unsigned long *v = malloc((size_t)(2 * P > L ? 2 * P : L + P + 1) * sizeof *v);
     char lit[48];
     if (!v)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
     sbuf_printf(o, "#define %sP %du /* threads per patch */\n", up, P);
     sbuf_printf(o, "#define %sQ %du /* patches per workgroup */\n", up, s->patches);
-    sbuf_printf(o, "#define %sK %du /* control points per patch */\n", up, t->npoints);
-    sbuf_printf(o, "#define %sL %du /* control planes per patch */\n", up, t->nplanes);
+    sbuf_printf(o, "#define %sK %du /* control points per patch */\n", up, t->dom.npoints);
+    sbuf_printf(o, "#define %sL %du /* control planes per patch */\n", up, t->dom.nplanes);
     sbuf_printf(o, "/* %d rounds: the largest number of terms of one thread. */\n\n", s->rounds);
     for (th = 0; th <= P; th++) {
         v[th] = (unsigned long)k;
-        for (p = 0; th < P && p < t->nplanes; p++)
+        for (p = 0; th < P && p < t->dom.nplanes; p++)
             k += s->owner[p] == th;
     }
     sbuf_puts(o, "/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */\n");
     put_uint_table(o, g, info->prefix, "own_start", v, P + 1, 16, 0);
     for (th = 0, k = 0; th < P; th++)
-        for (p = 0; p < t->nplanes; p++)
+        for (p = 0; p < t->dom.nplanes; p++)
             if (s->owner[p] == th)
                 v[k++] = (unsigned long)p;
-    put_uint_table(o, g, info->prefix, "own_plane", v, t->nplanes, 16, 0);
+    put_uint_table(o, g, info->prefix, "own_plane", v, t->dom.nplanes, 16, 0);
     sbuf_puts(o, "\n");
     for (r = 0; r < s->rounds; r++) {
         /* Round r: one small table per field, indexed by the thread. Unrolled, so that no

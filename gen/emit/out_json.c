@@ -20,13 +20,15 @@ static void put_term(sbuf *o, const tp_term *x)
     sbuf_puts(o, "\"]");
 }
 
-/* Appends "name": [v_0, ..., v_{n-1}], breaking the line every `row` values. */
-static void put_ints(sbuf *o, const char *name, const int *v, int n, int row)
+/* Appends "name": [v_0, ..., v_{n-1}], breaking the line before each row of the planes of d
+ * (d not NULL: one value per plane) or else every `row` values. */
+static void put_ints(sbuf *o, const char *name, const int *v, int n, const tp_domain *d, int row)
 {
     int i;
     sbuf_printf(o, "    \"%s\": [", name);
     for (i = 0; i < n; i++)
-        sbuf_printf(o, "%s%d", i == 0 ? "" : i % row ? ", " : ",\n      ", v[i]);
+        sbuf_printf(o, "%s%d", i == 0 ? "" : (d ? tp_domain_plane_row_start(d, i) : i % row == 0)
+                                                 ? ",\n      " : ", ", v[i]);
     sbuf_puts(o, "],\n");
 }
 
@@ -37,8 +39,8 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
     sbuf_printf(o, "    \"patches_per_block\": %d,\n    \"rounds\": %d,\n", s->patches, s->rounds);
     sbuf_printf(o, "    \"lower_bound\": %d,\n    \"proven_optimal\": %s,\n", s->lower_bound,
                 s->proven ? "true" : "false");
-    put_ints(o, "owner", s->owner, s->nplanes, t->pv + 1);
-    put_ints(o, "loads", s->load, s->threads, 16);
+    put_ints(o, "owner", s->owner, s->nplanes, &t->dom, 0);
+    put_ints(o, "loads", s->load, s->threads, NULL, 16);
     sbuf_puts(o, "    \"slots\": [");
     for (i = 0; i < nslots; i++) {
         sbuf_puts(o, i ? ",\n      " : "\n      ");
@@ -53,12 +55,14 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
 int out_json(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
     size_t i;
+    tp_domain_text x;
+    tp_domain_text_get(&x, &t->dom);
     sbuf_printf(o, "{\n  \"format\": \"ptpgen-planes/1\",\n");
     sbuf_printf(o, "  \"generator\": \"ptpgen %s\",\n  \"command\": \"%s\",\n", PTP_VERSION,
                 info->command);
-    sbuf_printf(o, "  \"degree\": [%d, %d],\n  \"plane_degree\": [%d, %d],\n", t->n, t->m,
-                t->pu, t->pv);
-    sbuf_printf(o, "  \"points\": %d,\n  \"planes\": %d,\n", t->npoints, t->nplanes);
+    sbuf_printf(o, "  \"degree\": [%s],\n  \"plane_degree\": [%s],\n", x.degrees,
+                x.plane_degrees);
+    sbuf_printf(o, "  \"points\": %d,\n  \"planes\": %d,\n", t->dom.npoints, t->dom.nplanes);
     /* The kernels' values are d_P = eye . t_P times this positive constant (true scale). */
     sbuf_puts(o, "  \"plane_scale\": \"1\",\n  \"terms\": [");
     for (i = 0; i < t->nterms; i++) {

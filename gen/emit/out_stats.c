@@ -13,18 +13,27 @@ static int digits(int v)
     return d;
 }
 
+/* The per-plane values v as the plane matrix of d (tp_domain_plane_row_start), each printed
+ * w wide, under the title and the layout. */
+static void put_matrix(sbuf *o, const char *title, const tp_domain *d, const int *v, int w)
+{
+    tp_domain_text x;
+    int P;
+    tp_domain_text_get(&x, d);
+    sbuf_printf(o, "%s (%s):\n", title, x.plane_rows);
+    for (P = 0; P < d->nplanes; P++)
+        sbuf_printf(o, "%s%*d", P == 0 ? "" : tp_domain_plane_row_start(d, P) ? "\n" : " ", w,
+                    v[P]);
+    sbuf_puts(o, "\n");
+}
+
 /* The owner map, each thread's load, R, LB and the efficiency. */
 static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
 {
-    int I, J, th, w = digits(s->threads - 1), wl = digits(s->rounds);
+    int th, w = digits(s->threads - 1), wl = digits(s->rounds);
     sbuf_printf(o, "\nschedule: %d threads per patch, %d patches per block (%d threads per block)\n",
                 s->threads, s->patches, s->threads * s->patches);
-    sbuf_printf(o, "owning thread of each plane (row I along u, column J along v):\n");
-    for (I = 0; I <= t->pu; I++) {
-        for (J = 0; J <= t->pv; J++)
-            sbuf_printf(o, "%s%*d", J ? " " : "", w, s->owner[I * (t->pv + 1) + J]);
-        sbuf_puts(o, "\n");
-    }
+    put_matrix(o, "owning thread of each plane", &t->dom, s->owner, w);
     sbuf_printf(o, "terms per thread:\n");
     for (th = 0; th < s->threads; th++)
         sbuf_printf(o, "%s%*d", th == 0 ? "" : th % 16 ? " " : "\n", wl, s->load[th]);
@@ -37,22 +46,17 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
 
 int out_stats(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    int *counts = malloc((size_t)t->nplanes * sizeof *counts), I, J, width = 1, max = 0;
+    int *counts = malloc((size_t)t->dom.nplanes * sizeof *counts), P, max = 0;
+    tp_domain_text x;
     if (!counts)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing stats");
     tp_plane_counts(counts, t);
-    for (I = 0; I < t->nplanes; I++)
-        max = counts[I] > max ? counts[I] : max;
-    for (; max >= 10; max /= 10)
-        width++;
-    sbuf_printf(o, "bidegree %dx%d: %d points, planes of bidegree %dx%d: %d planes, %zu terms\n",
-                t->n, t->m, t->npoints, t->pu, t->pv, t->nplanes, t->nterms);
-    sbuf_printf(o, "terms per plane (row I along u, column J along v):\n");
-    for (I = 0; I <= t->pu; I++) {
-        for (J = 0; J <= t->pv; J++)
-            sbuf_printf(o, "%s%*d", J ? " " : "", width, counts[I * (t->pv + 1) + J]);
-        sbuf_puts(o, "\n");
-    }
+    for (P = 0; P < t->dom.nplanes; P++)
+        max = counts[P] > max ? counts[P] : max;
+    tp_domain_text_get(&x, &t->dom);
+    sbuf_printf(o, "%s: %d points, planes of %s: %d planes, %zu terms\n", x.name, t->dom.npoints,
+                x.plane_name, t->dom.nplanes, t->nterms);
+    put_matrix(o, "terms per plane", &t->dom, counts, digits(max));
     sbuf_printf(o, "total %zu\n", t->nterms);
     put_schedule(o, t, info->sched);
     free(counts);

@@ -74,7 +74,7 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
 {
     double *d, *S, *n;
     size_t i;
-    int st = alloc(b, t->nplanes, 1, &d, &S, &n, err);
+    int st = alloc(b, t->dom.nplanes, 1, &d, &S, &n, err);
     if (st)
         return st;
     for (i = 0; i < t->nterms; i++) {
@@ -83,7 +83,7 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
         S[t->terms[i].plane] += (w < 0 ? -w : w) * (1 + 0x1p-50);
         n[t->terms[i].plane] += world ? 44 : 12;
     }
-    for (i = 0; i < (size_t)t->nplanes; i++)
+    for (i = 0; i < (size_t)t->dom.nplanes; i++)
         d[i] += 16;
     fill(b, d, S, n, world, 0x1p-126); /* GPUs may flush subnormals to zero */
     free(d);

@@ -268,15 +268,17 @@ static int exact(plan *w, pack *k, int R, long steps)
 /* Checks P and Q against t. */
 static int check_args(const tp_table *t, int P, int Q, ptp_error *err)
 {
+    tp_domain_text x;
+    tp_domain_text_get(&x, &t->dom);
     if (P < 1 || P > SCHED_MAX_THREADS)
         return ptp_fail(err, PTP_EUSAGE,
                         "--threads-per-patch %d is out of range: it must be 1 to %d", P,
                         SCHED_MAX_THREADS);
-    if (P > t->nplanes)
+    if (P > t->dom.nplanes)
         return ptp_fail(err, PTP_EUSAGE,
-                        "--threads-per-patch %d exceeds the %d planes of bidegree %dx%d: a thread "
-                        "without a plane would idle",
-                        P, t->nplanes, t->n, t->m);
+                        "--threads-per-patch %d exceeds the %d planes of %s: a thread without a "
+                        "plane would idle",
+                        P, t->dom.nplanes, x.name);
     if (Q < 1)
         return ptp_fail(err, PTP_EUSAGE, "--patches-per-block %d must be at least 1", Q);
     if ((long long)P * Q > SCHED_MAX_THREADS)
@@ -285,23 +287,25 @@ static int check_args(const tp_table *t, int P, int Q, ptp_error *err)
                         "block, over the limit of %d",
                         P, Q, (long long)P * Q, SCHED_MAX_THREADS);
     if (t->nterms > INT_MAX)
-        return ptp_fail(err, PTP_ELIMIT, "bidegree %dx%d has %zu terms, over the limit of %d",
-                        t->n, t->m, t->nterms, INT_MAX);
+        return ptp_fail(err, PTP_ELIMIT, "%s has %zu terms, over the limit of %d", x.name,
+                        t->nterms, INT_MAX);
     return PTP_OK;
 }
 
 /* count[p] = the terms of plane p; fails unless t is sorted by plane. */
 static int count_planes(int *count, const tp_table *t, ptp_error *err)
 {
+    tp_domain_text x;
     size_t i;
     int p;
-    for (p = 0; p < t->nplanes; p++)
+    tp_domain_text_get(&x, &t->dom);
+    for (p = 0; p < t->dom.nplanes; p++)
         count[p] = 0;
     for (i = 0; i < t->nterms; i++) {
         p = t->terms[i].plane;
-        if (p < 0 || p >= t->nplanes || (i > 0 && p < t->terms[i - 1].plane))
-            return ptp_fail(err, PTP_EINTERNAL, "term %zu of bidegree %dx%d: plane %d out of order",
-                            i, t->n, t->m, p);
+        if (p < 0 || p >= t->dom.nplanes || (i > 0 && p < t->terms[i - 1].plane))
+            return ptp_fail(err, PTP_EINTERNAL, "term %zu of %s: plane %d out of order", i,
+                            x.name, p);
         count[p]++;
     }
     return PTP_OK;
@@ -385,7 +389,7 @@ int sched_build(sched *s, const tp_table *t, int P, int Q, ptp_error *err)
     plan w;
     pack k;
     item *order = NULL;
-    int *scratch = NULL, st, N, np = t->nplanes;
+    int *scratch = NULL, st, N, np = t->dom.nplanes;
     s->owner = s->load = NULL;
     s->slot = NULL;
     if ((st = check_args(t, P, Q, err)))
@@ -465,7 +469,7 @@ int sched_default_threads(const tp_table *t)
         if (run > largest)
             largest = run;
     }
-    for (P = 2; P <= 64 && P <= t->nplanes; P *= 2) {
+    for (P = 2; P <= 64 && P <= t->dom.nplanes; P *= 2) {
         lb = (N + P - 1) / P;
         if (lb < largest)
             lb = largest;

@@ -52,12 +52,12 @@ static int by_scale(const void *a, const void *b)
 int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
 {
     size_t a, b, i, n = t->nterms + 1;
-    int *pair_of = malloc((size_t)t->npoints * (size_t)t->npoints * sizeof *pair_of);
+    int *pair_of = malloc((size_t)t->dom.npoints * (size_t)t->dom.npoints * sizeof *pair_of);
     scaled *sc = malloc(n * sizeof *sc);
     int st = PTP_OK;
     memset(p, 0, sizeof *p);
-    p->npoints = t->npoints;
-    p->nplanes = t->nplanes;
+    p->npoints = t->dom.npoints;
+    p->nplanes = t->dom.nplanes;
     p->pairs = malloc(3 * n * sizeof *p->pairs);
     p->s = malloc(n * sizeof *p->s);
     p->terms = malloc(n * sizeof *p->terms);
@@ -65,7 +65,7 @@ int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
         st = ptp_fail(err, PTP_ENOMEM, "out of memory building the straight-line program");
         goto done;
     }
-    for (i = 0; i < (size_t)t->npoints * (size_t)t->npoints; i++)
+    for (i = 0; i < (size_t)t->dom.npoints * (size_t)t->dom.npoints; i++)
         pair_of[i] = -1;
     for (a = 0; a < t->nterms; a = b) {
         rat c;

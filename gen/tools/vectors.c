@@ -10,8 +10,9 @@ enum { KIND_NEAR, KIND_FLAT, KIND_COLLAPSED, KIND_EDGE_ON, KIND_CORNER };
 static const char *const kind_names[] = {"near-planar", "flat", "collapsed-edge", "edge-on",
                                          "corner-tangent"};
 
+/* What follows the domain's numbering (tp_domain_text's conventions) in "conventions". */
 static const char conventions[] =
-    "point k = i*(m+1)+j and plane P = I*(3m-1)+J, with i and I along u; t_P is the sum of "
+    "t_P is the sum of "
     "weight*cross4(b_j, b_k, b_l) over the ptpgen-planes/1 terms of plane P, cross4 as in "
     "Appendix A of Loop, Niessner and Eisenacher (2011); values d_P = eye.t_P in world space and "
     "eye.z*t_P.z in clip space, exact and as the nearest double; classes 0 front, 1 back, "
@@ -80,9 +81,10 @@ static void draw_grid(vcase *v, const tp_table *t, uint64_t *s, const int C[3], 
                       const int V[3], int amp)
 {
     int i, j, c;
-    for (i = 0; i <= t->n; i++)
-        for (j = 0; j <= t->m; j++) {
-            int *X = v->X[i * (t->m + 1) + j], a = 6 * i / t->n - 3, b = 6 * j / t->m - 3;
+    for (i = 0; i <= t->dom.n; i++)
+        for (j = 0; j <= t->dom.m; j++) {
+            int *X = v->X[tp_domain_point(&t->dom, i, j)], a = 6 * i / t->dom.n - 3;
+            int b = 6 * j / t->dom.m - 3;
             for (c = 0; c < 3; c++)
                 X[c] = C[c] + a * U[c] + b * V[c] + draw(s, -amp, amp);
         }
@@ -93,8 +95,10 @@ static void draw_grid(vcase *v, const tp_table *t, uint64_t *s, const int C[3], 
  * neighbours; clip, X_2 takes the x, y of X_0 or X_1. */
 static void corner_tangent(vcase *v, const tp_table *t, out_space space, uint64_t *s)
 {
-    int ci = draw(s, 0, 1) * t->n, cj = draw(s, 0, 1) * t->m, c;
-    int k0 = ci * (t->m + 1) + cj, k1 = k0 + (cj ? -1 : 1), k2 = k0 + (ci ? -1 : 1) * (t->m + 1);
+    int ci = draw(s, 0, 1) * t->dom.n, cj = draw(s, 0, 1) * t->dom.m, c;
+    int k0 = tp_domain_point(&t->dom, ci, cj);
+    int k1 = tp_domain_point(&t->dom, ci, cj + (cj ? -1 : 1));
+    int k2 = tp_domain_point(&t->dom, ci + (ci ? -1 : 1), cj);
     for (c = 0; c < 3; c++)
         v->X[k0][c] += draw(s, -2, 2);
     if (space == OUT_CLIP) {
@@ -112,11 +116,12 @@ static void corner_tangent(vcase *v, const tp_table *t, out_space space, uint64_
 /* Replaces one random boundary row of control points by copies of its first point. */
 static void collapse_edge(vcase *v, const tp_table *t, uint64_t *s)
 {
-    int e = draw(s, 0, 3), k, c;
-    int first = e == 1 ? t->n * (t->m + 1) : e == 3 ? t->m : 0;
-    for (k = 0; k < t->npoints; k++) {
-        int i = k / (t->m + 1), j = k % (t->m + 1);
-        int on = e == 0 ? i == 0 : e == 1 ? i == t->n : e == 2 ? j == 0 : j == t->m;
+    int e = draw(s, 0, 3), k, c, i, j;
+    int first = tp_domain_point(&t->dom, e == 1 ? t->dom.n : 0, e == 3 ? t->dom.m : 0);
+    for (k = 0; k < t->dom.npoints; k++) {
+        int on;
+        tp_domain_point_ij(&i, &j, &t->dom, k);
+        on = e == 0 ? i == 0 : e == 1 ? i == t->dom.n : e == 2 ? j == 0 : j == t->dom.m;
         for (c = 0; on && c < 4; c++)
             v->b[k][c] = v->b[first][c];
     }
@@ -143,7 +148,7 @@ static void draw_case(vcase *v, const tp_table *t, out_space space, uint64_t *s)
     }
     if (v->kind == KIND_CORNER)
         corner_tangent(v, t, space, s);
-    for (k = 0; k < t->npoints; k++) {
+    for (k = 0; k < t->dom.npoints; k++) {
         int w = rational ? draw(s, 1, VECTORS_W_MAX) : 1;
         v->b[k][0] = w * v->X[k][0];
         v->b[k][1] = w * v->X[k][1];
@@ -235,7 +240,7 @@ static int common_denominators(vstate *st, ptp_error *err)
     const tp_table *t = st->t;
     size_t x;
     int p;
-    for (p = 0; p < t->nplanes; p++)
+    for (p = 0; p < t->dom.nplanes; p++)
         st->den[p] = 1;
     for (x = 0; x < t->nterms; x++) {
         const tp_term *w = &t->terms[x];
@@ -260,7 +265,7 @@ static int put_case(sbuf *o, vstate *st, long index, ptp_error *err)
     char buf[RAT_STRLEN];
     int p, k, pos = 0, neg = 0;
     size_t x;
-    for (p = 0; p < t->nplanes; p++)
+    for (p = 0; p < t->dom.nplanes; p++)
         st->num[p] = 0;
     for (x = 0; x < t->nterms; x++) {
         const tp_term *w = &t->terms[x];
@@ -270,7 +275,7 @@ static int put_case(sbuf *o, vstate *st, long index, ptp_error *err)
             return ptp_fail(err, PTP_EOVERFLOW, "overflow in plane %d of case %ld", w->plane,
                             index);
     }
-    for (p = 0; p < t->nplanes; p++) {
+    for (p = 0; p < t->dom.nplanes; p++) {
         if (rat_set_frac(&st->val[p], st->num[p], st->den[p])) /* |num| <= I128_MAX, den > 0 */
             return ptp_fail(err, PTP_EINTERNAL, "bad value of plane %d of case %ld", p, index);
         pos += rat_sgn(&st->val[p]) > 0;
@@ -279,18 +284,18 @@ static int put_case(sbuf *o, vstate *st, long index, ptp_error *err)
     sbuf_printf(o, "    {\"eye\": [%" PRId64 ", %" PRId64 ", %" PRId64 ", %" PRId64 "],\n",
                 v->eye[0], v->eye[1], v->eye[2], v->eye[3]);
     sbuf_puts(o, "     \"points\": [");
-    for (k = 0; k < t->npoints; k++)
+    for (k = 0; k < t->dom.npoints; k++)
         sbuf_printf(o, "%s[%" PRId64 ", %" PRId64 ", %" PRId64 ", %" PRId64 "]", k ? ", " : "",
                     v->b[k][0], v->b[k][1], v->b[k][2], v->b[k][3]);
     sbuf_puts(o, "],\n     \"values\": [");
-    for (p = 0; p < t->nplanes; p++)
+    for (p = 0; p < t->dom.nplanes; p++)
         sbuf_printf(o, "%s\"%s\"", p ? ", " : "", rat_get_str(buf, &st->val[p]));
     sbuf_puts(o, "],\n     \"values_double\": [");
-    for (p = 0; p < t->nplanes; p++)
+    for (p = 0; p < t->dom.nplanes; p++)
         sbuf_printf(o, "%s%.17g", p ? ", " : "", nearest_double(&st->val[p]));
     sbuf_printf(o, "],\n     \"class_strict\": %d, \"class_degenerate\": %d, \"kind\": \"%s\"}",
-                classify(pos, neg, t->nplanes, OUT_STRICT),
-                classify(pos, neg, t->nplanes, OUT_DEGENERATE), kind_names[v->kind]);
+                classify(pos, neg, t->dom.nplanes, OUT_STRICT),
+                classify(pos, neg, t->dom.nplanes, OUT_DEGENERATE), kind_names[v->kind]);
     return PTP_OK;
 }
 
@@ -299,6 +304,7 @@ static int put_document(sbuf *out, vstate *st, long count, uint64_t seed, out_sp
                         const char *command, ptp_error *err)
 {
     const tp_table *t = st->t;
+    tp_domain_text x;
     uint64_t s = seed;
     long c;
     int status;
@@ -306,11 +312,12 @@ static int put_document(sbuf *out, vstate *st, long count, uint64_t seed, out_sp
                 PTP_VERSION);
     sbuf_puts(out, "  \"command\": ");
     put_string(out, command);
-    sbuf_printf(out, ",\n  \"degree\": [%d, %d],\n  \"space\": \"%s\",\n", t->n, t->m,
+    tp_domain_text_get(&x, &t->dom);
+    sbuf_printf(out, ",\n  \"degree\": [%s],\n  \"space\": \"%s\",\n", x.degrees,
                 space == OUT_CLIP ? "clip" : "world");
     sbuf_printf(out, "  \"seed\": %" PRIu64 ",\n  \"points\": %d,\n  \"planes\": %d,\n", seed,
-                t->npoints, t->nplanes);
-    sbuf_printf(out, "  \"conventions\": \"%s\",\n  \"cases\": [", conventions);
+                t->dom.npoints, t->dom.nplanes);
+    sbuf_printf(out, "  \"conventions\": \"%s; %s\",\n  \"cases\": [", x.conventions, conventions);
     for (c = 0; c < count; c++) {
         draw_case(&st->v, t, space, &s);
         sbuf_puts(out, c ? ",\n" : "\n");
@@ -335,11 +342,11 @@ int vectors_write(sbuf *out, const tp_table *t, long count, uint64_t seed, out_s
                         VECTORS_MAX_COUNT, count);
     st.t = t;
     st.iw = malloc(t->nterms * sizeof *st.iw);
-    st.den = malloc((size_t)t->nplanes * sizeof *st.den);
-    st.num = malloc((size_t)t->nplanes * sizeof *st.num);
-    st.val = malloc((size_t)t->nplanes * sizeof *st.val);
-    st.v.X = malloc((size_t)t->npoints * sizeof *st.v.X);
-    st.v.b = malloc((size_t)t->npoints * sizeof *st.v.b);
+    st.den = malloc((size_t)t->dom.nplanes * sizeof *st.den);
+    st.num = malloc((size_t)t->dom.nplanes * sizeof *st.num);
+    st.val = malloc((size_t)t->dom.nplanes * sizeof *st.val);
+    st.v.X = malloc((size_t)t->dom.npoints * sizeof *st.v.X);
+    st.v.b = malloc((size_t)t->dom.npoints * sizeof *st.v.b);
     if (!st.iw || !st.den || !st.num || !st.val || !st.v.X || !st.v.b)
         status = ptp_fail(err, PTP_ENOMEM, "out of memory writing test vectors");
     else if (!(status = common_denominators(&st, err)))

@@ -543,6 +543,11 @@ static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r
     const tp_table *t = c->t;
     char s[RAT_STRLEN + 32];
     int k, first = 1, neg = r->s.d < 0;
+    tp_domain tr;
+    tp_domain_text x, xt;
+    tp_domain_transpose(&tr, &t->dom);
+    tp_domain_text_get(&x, &t->dom);
+    tp_domain_text_get(&xt, &tr);
     sbuf_printf(o, "%s: ", c->name);
     if (problems) {
         sbuf_printf(o, "WRONG: %zu problem%s (", problems, problems == 1 ? "" : "s");
@@ -551,7 +556,7 @@ static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r
                 sbuf_printf(o, "%s%zu %s", first ? "" : ", ", count[k], names[k][count[k] != 1]);
                 first = 0;
             }
-        sbuf_printf(o, ") against the %zu terms of bidegree %dx%d", c->nx, t->n, t->m);
+        sbuf_printf(o, ") against the %zu terms of %s", c->nx, x.name);
         if (r->which || !is_one(&r->s)) {
             sbuf_puts(o, ", read as ");
             reading_str(o, r);
@@ -562,13 +567,12 @@ static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r
     if (r->which == 0 && !neg) {
         *verdict = VERIFY_RIGHT;
         if (is_one(&r->s))
-            sbuf_printf(o, "RIGHT: exact: the %zu terms of bidegree %dx%d agree with the "
-                           "derivation\n", c->nx, t->n, t->m);
+            sbuf_printf(o, "RIGHT: exact: the %zu terms of %s agree with the derivation\n", c->nx,
+                        x.name);
         else
             sbuf_printf(o, "RIGHT: correct up to a positive scale s = %s: every weight is s times "
                            "the exact one, so every sign, and so the classification, is unchanged "
-                           "(%zu terms, bidegree %dx%d)\n", scale_str(s, &r->s), c->nx, t->n,
-                        t->m);
+                           "(%zu terms, %s)\n", scale_str(s, &r->s), c->nx, x.name);
         return;
     }
     sbuf_puts(o, r->which == 0 ? "WRONG: all weights negated"
@@ -582,27 +586,40 @@ static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r
         if (c->vfirst_negated)
             sbuf_printf(o, "; for a square patch that is also the exact table in the v-first "
                            "index convention (point (i, j) numbered j*%d+i), right only for code "
-                           "that numbers points v-first", t->n + 1);
+                           "that numbers points v-first", t->dom.n + 1);
     } else if (neg) {
-        sbuf_printf(o, ": it is%s the exact table of bidegree %dx%d, the transposed patch (i "
-                       "along v), which for a %dx%d patch has the opposite orientation",
-                    is_unit(&r->s) ? "" : ", up to the scale,", t->m, t->n, t->n, t->m);
+        sbuf_printf(o, ": it is%s the exact table of %s, the transposed patch (i along v), which "
+                       "for a %s patch has the opposite orientation",
+                    is_unit(&r->s) ? "" : ", up to the scale,", xt.name, x.degree);
     } else {
         sbuf_printf(o, ": the same planes, but point (i, j) numbered j*%d+i and plane (I, J) "
                        "numbered J*%d+I: right only for code that numbers points v-first; ptpgen "
-                       "numbers point (i, j) i*%d+j", t->n + 1, t->pu + 1, t->m + 1);
+                       "numbers point (i, j) i*%d+j", t->dom.n + 1, t->dom.pu + 1, t->dom.m + 1);
     }
-    sbuf_printf(o, " (%zu terms, bidegree %dx%d)\n", c->nx, t->n, t->m);
+    sbuf_printf(o, " (%zu terms, %s)\n", c->nx, x.name);
+}
+
+/* The number in tr, d transposed, of point x of d (of plane x, if plane). */
+static int swap_uv(const tp_domain *d, const tp_domain *tr, int x, int plane)
+{
+    int a, b;
+    if (plane) {
+        tp_domain_plane_ij(&a, &b, d, x);
+        return tp_domain_plane(tr, b, a);
+    }
+    tp_domain_point_ij(&a, &b, d, x);
+    return tp_domain_point(tr, b, a);
 }
 
 /* Builds c->x[1], the exact table relabelled (i, j) -> (j, i) without negation, sorted. */
 static int relabel(ctx *c, ptp_error *err)
 {
-    const tp_table *t = c->t;
+    tp_domain tr;
     size_t i;
     if (!(c->x[1] = malloc((c->nx ? c->nx : 1) * sizeof *c->x[1])))
         return ptp_fail(err, PTP_ENOMEM, "out of memory checking %s", c->name);
     c->vfirst_negated = 1;
+    tp_domain_transpose(&tr, &c->t->dom);
     for (i = 0; i < c->nx; i++) {
         tp_term *e = &c->x[1][i];
         int p[3], q;
@@ -610,9 +627,9 @@ static int relabel(ctx *c, ptp_error *err)
         p[0] = e->j;
         p[1] = e->k;
         p[2] = e->l;
-        e->plane = (e->plane % (t->pv + 1)) * (t->pu + 1) + e->plane / (t->pv + 1);
+        e->plane = swap_uv(&c->t->dom, &tr, e->plane, 1);
         for (q = 0; q < 3; q++)
-            p[q] = (p[q] % (t->m + 1)) * (t->n + 1) + p[q] / (t->m + 1);
+            p[q] = swap_uv(&c->t->dom, &tr, p[q], 0);
         if (sort3(p))
             rat_neg(&e->w, &e->w);
         e->j = p[0];
@@ -637,6 +654,7 @@ static int check(sbuf *o, int *verdict, const verify_doc *d, const tp_table *t, 
     char *covered = NULL;
     size_t *extra = NULL, i, problems, count[NPROBLEMS] = {0};
     pkey *by = NULL;
+    char deg[16];
     int st, a, b;
     sbuf rep;
     memset(&c, 0, sizeof c);
@@ -679,19 +697,19 @@ static int check(sbuf *o, int *verdict, const verify_doc *d, const tp_table *t, 
         goto done;
     problems = classify(&c, &r, covered, extra, by);
     qsort(c.it, c.nit, sizeof *c.it, cmp_item);
-    if (d->degree_named && (d->n != t->n || d->m != t->m))
-        sbuf_printf(&rep, "%s:%d: note: the %s names bidegree %dx%d; checked as %dx%d\n", name,
+    if (d->degree_named && (d->n != t->dom.n || d->m != t->dom.m))
+        sbuf_printf(&rep, "%s:%d: note: the %s names bidegree %dx%d; checked as %s\n", name,
                     d->degree_line, d->degree_named == 1 ? "document" : "array name", d->n,
-                    d->m, t->n, t->m);
+                    d->m, tp_domain_format(deg, sizeof deg, &t->dom));
     for (i = 0; i < c.nit; i++) {
         report_item(&rep, &c, &r, &c.it[i]);
         if (c.it[i].kind < NPROBLEMS)
             count[c.it[i].kind]++;
     }
     if (problems && verify_doc_fit(&a, &b, d) &&
-        !((a == t->n && b == t->m) || (a == t->m && b == t->n)))
-        sbuf_printf(&rep, "%s: note: the indices fit bidegree %dx%d, not %dx%d\n", name, a, b,
-                    t->n, t->m);
+        !((a == t->dom.n && b == t->dom.m) || (a == t->dom.m && b == t->dom.n)))
+        sbuf_printf(&rep, "%s: note: the indices fit bidegree %dx%d, not %s\n", name, a, b,
+                    tp_domain_format(deg, sizeof deg, &t->dom));
     report_verdict(&rep, verdict, &c, &r, count, problems);
     if (rep.failed) {
         st = ptp_fail(err, PTP_ENOMEM, "out of memory writing the report on %s", name);
@@ -714,22 +732,25 @@ done:
     return st;
 }
 
-/* PTP_EUSAGE with the line of the first term whose index is out of range for (n, m). */
-static int check_range(const verify_doc *d, int n, int m, const char *name, ptp_error *err)
+/* PTP_EUSAGE with the line of the first term whose index is out of range for the domain. */
+static int check_range(const verify_doc *d, const tp_domain *dom, const char *name,
+                       ptp_error *err)
 {
-    int planes = (3 * n - 1) * (3 * m - 1), points = (n + 1) * (m + 1), q;
+    int planes = dom->nplanes, points = dom->npoints, q;
+    tp_domain_text t;
     size_t x;
+    tp_domain_text_get(&t, dom);
     for (x = 0; x < d->nterms; x++) {
         const verify_term *e = &d->terms[x];
         if (e->plane >= planes)
-            return ptp_fail(err, PTP_EUSAGE, "%s:%d: plane %d out of range: bidegree %dx%d has "
-                                             "%d planes (0..%d)", name, e->line, e->plane, n, m,
-                            planes, planes - 1);
+            return ptp_fail(err, PTP_EUSAGE, "%s:%d: plane %d out of range: %s has %d planes "
+                                             "(0..%d)", name, e->line, e->plane, t.name, planes,
+                            planes - 1);
         for (q = 0; q < 3; q++)
             if (e->p[q] >= points)
-                return ptp_fail(err, PTP_EUSAGE, "%s:%d: point %d out of range: bidegree %dx%d "
-                                                 "has %d points (0..%d)", name, e->line, e->p[q],
-                                n, m, points, points - 1);
+                return ptp_fail(err, PTP_EUSAGE, "%s:%d: point %d out of range: %s has %d "
+                                                 "points (0..%d)", name, e->line, e->p[q], t.name,
+                                points, points - 1);
     }
     return PTP_OK;
 }
@@ -738,6 +759,7 @@ int verify_table(sbuf *out, int *verdict, const char *text, size_t len, const ch
                  int m, ptp_error *err)
 {
     verify_doc d;
+    tp_domain dom;
     tp_table t;
     int st;
     *verdict = VERIFY_WRONG;
@@ -750,7 +772,8 @@ int verify_table(sbuf *out, int *verdict, const char *text, size_t len, const ch
     if ((st = verify_parse(&d, text, len, name, err)))
         return st;
     if (!(st = verify_doc_degree(&n, &m, &d, n, m, name, err)) &&
-        !(st = check_range(&d, n, m, name, err)) && !(st = tp_derive(&t, n, m, err))) {
+        !(st = tp_domain_init(&dom, TP_QUAD, n, m, err)) &&
+        !(st = check_range(&d, &dom, name, err)) && !(st = tp_derive_domain(&t, &dom, err))) {
         st = check(out, verdict, &d, &t, name, err);
         tp_clear(&t);
     }

@@ -1,6 +1,7 @@
 /* verify_parse.c: reads a control-plane table for `ptpgen verify`: C arrays or ptpgen's JSON.
  * Its own small C lexer and JSON reader: linear time, bounded depth, the line of every term. */
 #include "tools/verify_parse.h"
+#include "core/domain.h"
 #include "core/i128.h"
 
 #include <limits.h>
@@ -1049,6 +1050,7 @@ void verify_doc_clear(verify_doc *d)
 int verify_doc_fit(int *a, int *b, const verify_doc *d)
 {
     int planes = 0, points = 0, q;
+    tp_domain dom;
     size_t x;
     for (x = 0; x < d->nterms; x++) {
         const verify_term *e = &d->terms[x];
@@ -1058,7 +1060,8 @@ int verify_doc_fit(int *a, int *b, const verify_doc *d)
     }
     for (*a = 1; *a <= PTP_MAX_DEGREE; ++*a)
         for (*b = *a; *b <= PTP_MAX_DEGREE; ++*b)
-            if ((*a + 1) * (*b + 1) == points && (3 * *a - 1) * (3 * *b - 1) == planes)
+            if (!tp_domain_init(&dom, TP_QUAD, *a, *b, NULL) && dom.npoints == points &&
+                dom.nplanes == planes)
                 return 1;
     return 0;
 }
