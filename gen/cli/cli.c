@@ -70,50 +70,10 @@ void cli_usage(sbuf *o)
         CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS);
 }
 
-/* Parses one degree: decimal digits only, 1..PTP_MAX_DEGREE. *end is where it stopped. */
-static int parse_one(int *d, const char *s, const char **end, const char *arg, ptp_error *err)
-{
-    long v = 0;
-    const char *p = s;
-    int big = 0;
-    for (; *p >= '0' && *p <= '9'; p++) {
-        v = v * 10 + (*p - '0');
-        if (v > PTP_MAX_DEGREE) {
-            big = 1;
-            v = PTP_MAX_DEGREE + 1;
-        }
-    }
-    if (p == s)
-        return ptp_fail(err, PTP_EUSAGE,
-                        "--degree '%s': expected N or NxM with whole numbers 1 to %d (e.g. 3 or 2x3)",
-                        arg, PTP_MAX_DEGREE);
-    *end = p;
-    if (big)
-        return ptp_fail(err, PTP_EUSAGE, "--degree '%s': the largest supported degree is %d", arg,
-                        PTP_MAX_DEGREE);
-    if (v == 0)
-        return ptp_fail(err, PTP_EUSAGE, "--degree '%s': degrees must be at least 1", arg);
-    *d = (int)v;
-    return PTP_OK;
-}
-
+/* --degree: the patch domain (only tensor-product patches today), parsed by the domain. */
 static int parse_degree(cli_options *o, const char *arg, ptp_error *err)
 {
-    const char *p;
-    int st;
-    if ((st = parse_one(&o->n, arg, &p, arg, err)))
-        return st;
-    if (*p == '\0') {
-        o->m = o->n;
-        return PTP_OK;
-    }
-    if ((*p == 'x' || *p == 'X') && (st = parse_one(&o->m, p + 1, &p, arg, err)))
-        return st;
-    if (*p != '\0')
-        return ptp_fail(err, PTP_EUSAGE,
-                        "--degree '%s': expected N or NxM with whole numbers 1 to %d (e.g. 3 or 2x3)",
-                        arg, PTP_MAX_DEGREE);
-    return PTP_OK;
+    return tp_domain_parse(&o->dom, TP_QUAD, arg, err);
 }
 
 /* Parses a thread count: decimal digits only; values past 10^6 are kept as 10^6 + 1 so that
@@ -350,7 +310,7 @@ static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
         return o->input ? PTP_OK
                         : ptp_fail(err, PTP_EUSAGE,
                                    "verify: missing the FILE to check (see ptpgen --help)");
-    if (!o->n)
+    if (!o->dom.n)
         return ptp_fail(err, PTP_EUSAGE, "missing --degree N or --degree NxM (see ptpgen --help)");
     if (o->mode == CLI_VECTORS &&
         (!(seen >> OPT_COUNT & 1) || !(seen >> OPT_SEED & 1) || o->count < 1))
@@ -384,15 +344,16 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
 /* Writes o->command, the normalized command line: every option that was given, in one order. */
 static void put_command(cli_options *o)
 {
-    char *c = o->command;
+    char *c = o->command, degree[16];
     size_t size = sizeof o->command;
     int n;
+    tp_domain_format(degree, sizeof degree, &o->dom);
     if (o->mode == CLI_VECTORS) {
-        snprintf(c, size, "ptpgen vectors --degree %dx%d --count %ld --seed %llu --space %s", o->n,
-                 o->m, o->count, (unsigned long long)o->seed, o->world ? "world" : "clip");
+        snprintf(c, size, "ptpgen vectors --degree %s --count %ld --seed %llu --space %s", degree,
+                 o->count, (unsigned long long)o->seed, o->world ? "world" : "clip");
         return;
     }
-    n = snprintf(c, size, "ptpgen --degree %dx%d --target %s", o->n, o->m, o->target->name);
+    n = snprintf(c, size, "ptpgen --degree %s --target %s", degree, o->target->name);
     if (o->world)
         n += snprintf(c + n, size - (size_t)n, " --space world");
     if (o->degenerate)
@@ -429,6 +390,6 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         return st;
     put_command(o);
     if (o->mode == CLI_GENERATE && !o->prefix[0])
-        snprintf(o->prefix, sizeof o->prefix, "ptp_%dx%d_", o->n, o->m);
+        tp_domain_prefix(o->prefix, sizeof o->prefix, &o->dom);
     return PTP_OK;
 }

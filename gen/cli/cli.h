@@ -3,7 +3,7 @@
 #ifndef CLI_H
 #define CLI_H
 
-#include "core/ptp.h"
+#include "core/domain.h"
 #include "emit/sbuf.h"
 #include "emit/targets.h"
 
@@ -22,7 +22,7 @@ typedef struct {
     const char *input;    /* verify: the table to check ("-": standard input) */
     long count;           /* vectors: --count */
     uint64_t seed;        /* vectors: --seed */
-    int n, m;             /* bidegree; 0 until --degree is given */
+    tp_domain dom;        /* the patch domain of --degree; dom.n is 0 until it is given */
     const tgt_target *target; /* an entry of tgt_targets (default: the first) */
     const char *output;   /* -o path, or NULL for stdout */
     int threads, patches; /* --threads-per-patch, --patches-per-block; -1 when not given */

@@ -106,7 +106,7 @@ static int run_verify(const cli_options *o, int *verdict, ptp_error *err)
     if (st)
         return st;
     sbuf_init(&b);
-    if (!(st = verify_table(&b, verdict, text, len, o->input, o->n, o->m, err)))
+    if (!(st = verify_table(&b, verdict, text, len, o->input, o->dom.n, o->dom.m, err)))
         st = write_output(o->output, &b, err);
     sbuf_clear(&b);
     free(text);
@@ -118,7 +118,7 @@ static int run_vectors(const cli_options *o, ptp_error *err)
 {
     tp_table t;
     sbuf b;
-    int st = tp_derive(&t, o->n, o->m, err);
+    int st = tp_derive_domain(&t, &o->dom, err);
     if (st)
         return st;
     sbuf_init(&b);
@@ -137,7 +137,7 @@ static int run(const cli_options *o, ptp_error *err)
     sched s;
     sbuf b;
     int st, P, Q;
-    if ((st = tp_derive(&t, o->n, o->m, err)))
+    if ((st = tp_derive_domain(&t, &o->dom, err)))
         return st;
     P = o->threads >= 0 ? o->threads : sched_default_threads(&t);
     Q = o->patches >= 0 ? o->patches : sched_default_patches(P);
