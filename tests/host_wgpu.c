@@ -11,10 +11,12 @@
  * array<vec4<f32>>, point k of patch p at p*K + k), binding 1 the classes (var<storage,
  * read_write> array<u32>, one per patch), binding 2 the plane values (var<storage, read_write>
  * array<f32>, d[p*L + i]) only with --planes, binding 3 a var<uniform> struct { eye: vec4<f32>,
- * patch_count: u32 } (32 bytes). Entry point "main" with @workgroup_size(PQ) (or (PQ, 1, 1));
- * workgroup (x, y) handles the Q patches of block y * num_workgroups.x + x; the host dispatches
- * ceil(count/Q) groups as (gx, gy), gx = min(groups, 65535 or the device's limit),
- * gy = ceil(groups/gx). Invocations past patch_count write nothing.
+ * patch_count: u32 } (32 bytes; the host writes zeros after patch_count, which a kernel may
+ * declare as `zero: u32` to keep products out of FMA contraction: tests/README.md). Entry point
+ * "main" with @workgroup_size(PQ) (or (PQ, 1, 1)); workgroup (x, y) handles the Q patches of
+ * block y * num_workgroups.x + x; the host dispatches ceil(count/Q) groups as (gx, gy),
+ * gx = min(groups, 65535 or the device's limit), gy = ceil(groups/gx). Invocations past
+ * patch_count write nothing.
  *
  * The bind group layout is explicit, so a kernel whose bindings differ from the contract fails at
  * pipeline creation (wgpu's validation message is the "not ok" line). Sets whose buffers would
@@ -33,6 +35,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "check.h"
+#include "host_run.h"
 #include "kref.h"
 
 #include <webgpu.h>
@@ -47,44 +50,10 @@
 #include <string.h>
 #include <time.h>
 
-/* The largest storage binding the host creates; -DHOST_MAX_BUFFER=... exercises chunking. */
-#ifndef HOST_MAX_BUFFER
-#define HOST_MAX_BUFFER ((uint64_t)128 << 20)
-#endif
-/* The largest group count along x (lowered with -DHOST_MAX_GROUPS_X=... to exercise 2-D
- * dispatches with small sets). */
-#ifndef HOST_MAX_GROUPS_X
-#define HOST_MAX_GROUPS_X 65535u
-#endif
 /* How long one dispatch (or a request) may take before the run is declared hung. */
 #define HOST_TIMEOUT_MS (600.0 * 1000.0)
 /* The uniform block: eye, patch_count, padding. */
 #define HOST_PARAMS_BYTES 32u
-/* The classes and plane values buffers are filled with this before every dispatch. */
-#define HOST_UNWRITTEN 0xFFu
-#define HOST_ERRSZ 512
-
-/* Formats a message into err (size HOST_ERRSZ); returns -1. */
-static int fail(char *err, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-static int fail(char *err, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, HOST_ERRSZ, fmt, ap);
-    va_end(ap);
-    return -1;
-}
-
-static double now_ms(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec / 1e6;
-}
 
 /* A WGPUStringView as a printf precision and pointer: ("%.*s", SV(s)). */
 static int sv_len(WGPUStringView s)
@@ -111,19 +80,19 @@ static char *wgsl_read(const char *path, char *err)
     long len;
     char *s;
     if (!f) {
-        fail(err, "cannot open %s: %s", path, strerror(errno));
+        host_fail(err, "cannot open %s: %s", path, strerror(errno));
         return NULL;
     }
     if (fseek(f, 0, SEEK_END) || (len = ftell(f)) < 0 || fseek(f, 0, SEEK_SET)) {
         fclose(f);
-        fail(err, "cannot read %s", path);
+        host_fail(err, "cannot read %s", path);
         return NULL;
     }
     s = malloc((size_t)len + 1);
     if (!s || fread(s, 1, (size_t)len, f) != (size_t)len) {
         free(s);
         fclose(f);
-        fail(err, "cannot read %s", path);
+        host_fail(err, "cannot read %s", path);
         return NULL;
     }
     fclose(f);
@@ -141,24 +110,24 @@ static int wgsl_check_size(const char *src, const char *path, size_t pq, char *e
     int n = 0;
     char *end;
     if (!at)
-        return fail(err, "%s has no @workgroup_size", path);
+        return host_fail(err, "%s has no @workgroup_size", path);
     at += strlen("@workgroup_size(");
     for (;;) {
         while (*at == ' ')
             at++;
         d[n++] = strtoul(at, &end, 10);
         if (end == at)
-            return fail(err, "%s: @workgroup_size is not a list of integers", path);
+            return host_fail(err, "%s: @workgroup_size is not a list of integers", path);
         at = end;
         while (*at == ' ' || *at == 'u')
             at++;
         if (*at == ')' || n == 3)
             break;
         if (*at++ != ',')
-            return fail(err, "%s: @workgroup_size is not a list of integers", path);
+            return host_fail(err, "%s: @workgroup_size is not a list of integers", path);
     }
     if (d[0] != pq || d[1] != 1 || d[2] != 1)
-        return fail(err, "%s has workgroup size (%lu, %lu, %lu), --block-threads is %zu", path,
+        return host_fail(err, "%s has workgroup size (%lu, %lu, %lu), --block-threads is %zu", path,
                     d[0], d[1], d[2], pq);
     return 0;
 }
@@ -183,7 +152,6 @@ typedef struct {
     const void *mapped[3]; /* read[i]'s contents after wg_run, until wg_unmap */
     unsigned char *fill;   /* HOST_UNWRITTEN bytes, as many as size[1] and size[2] */
     int nbuf;              /* 2, or 3 with --planes */
-    size_t cap;            /* patches the control point buffer holds (0: no buffers yet) */
     char error[HOST_ERRSZ]; /* the first error wgpu reported through the device's callback */
     int hung;              /* a dispatch did not finish: leave the objects to process exit */
 } wgctx;
@@ -195,35 +163,34 @@ typedef struct {
     char msg[HOST_ERRSZ];
 } wgreq;
 
+/* Completes request r (the userdata1 of a callback). */
+static void req_done(void *r, int ok, void *object, WGPUStringView msg)
+{
+    wgreq *q = r;
+    q->ok = ok;
+    q->object = object;
+    snprintf(q->msg, sizeof q->msg, "%.*s", SV(msg));
+    q->done = 1;
+}
+
 static void on_adapter(WGPURequestAdapterStatus status, WGPUAdapter adapter, WGPUStringView msg,
                        void *u1, void *u2)
 {
-    wgreq *r = u1;
     (void)u2;
-    r->ok = status == WGPURequestAdapterStatus_Success;
-    r->object = adapter;
-    snprintf(r->msg, sizeof r->msg, "%.*s", SV(msg));
-    r->done = 1;
+    req_done(u1, status == WGPURequestAdapterStatus_Success, adapter, msg);
 }
 
 static void on_device(WGPURequestDeviceStatus status, WGPUDevice device, WGPUStringView msg,
                       void *u1, void *u2)
 {
-    wgreq *r = u1;
     (void)u2;
-    r->ok = status == WGPURequestDeviceStatus_Success;
-    r->object = device;
-    snprintf(r->msg, sizeof r->msg, "%.*s", SV(msg));
-    r->done = 1;
+    req_done(u1, status == WGPURequestDeviceStatus_Success, device, msg);
 }
 
 static void on_map(WGPUMapAsyncStatus status, WGPUStringView msg, void *u1, void *u2)
 {
-    wgreq *r = u1;
     (void)u2;
-    r->ok = status == WGPUMapAsyncStatus_Success;
-    snprintf(r->msg, sizeof r->msg, "%.*s", SV(msg));
-    r->done = 1;
+    req_done(u1, status == WGPUMapAsyncStatus_Success, NULL, msg);
 }
 
 /* Keeps the first error of the device (validation, out of memory, internal). */
@@ -241,7 +208,7 @@ static void on_error(WGPUDevice const *device, WGPUErrorType type, WGPUStringVie
  * 0, or -1 (message in err) on a timeout. */
 static int wg_wait(wgctx *v, wgreq *r, int n, const char *what, char *err)
 {
-    double deadline = now_ms() + HOST_TIMEOUT_MS;
+    double deadline = host_now_ms() + HOST_TIMEOUT_MS;
     struct timespec nap = {0, 20000};
     for (;;) {
         int all = 1;
@@ -252,9 +219,9 @@ static int wg_wait(wgctx *v, wgreq *r, int n, const char *what, char *err)
             all = all && r[i].done;
         if (all)
             return 0;
-        if (now_ms() > deadline) {
+        if (host_now_ms() > deadline) {
             v->hung = 1;
-            return fail(err, "%s did not finish in %.0f s", what, HOST_TIMEOUT_MS / 1e3);
+            return host_fail(err, "%s did not finish in %.0f s", what, HOST_TIMEOUT_MS / 1e3);
         }
         nanosleep(&nap, NULL);
     }
@@ -278,7 +245,7 @@ static int wg_setup_device(wgctx *v, char *err)
     extras.backends = WGPUInstanceBackend_Vulkan;
     idesc.nextInChain = &extras.chain;
     if (!(v->inst = wgpuCreateInstance(&idesc)))
-        return fail(err, "wgpuCreateInstance failed");
+        return host_fail(err, "wgpuCreateInstance failed");
 
     memset(&r, 0, sizeof r);
     acb.mode = WGPUCallbackMode_AllowProcessEvents;
@@ -288,10 +255,10 @@ static int wg_setup_device(wgctx *v, char *err)
     if (wg_wait(v, &r, 1, "wgpuInstanceRequestAdapter", err))
         return -1;
     if (!r.ok || !r.object)
-        return fail(err, "no WebGPU adapter (Vulkan): %s", r.msg);
+        return host_fail(err, "no WebGPU adapter (Vulkan): %s", r.msg);
     v->adapter = r.object;
     if (wgpuAdapterGetInfo(v->adapter, &info) != WGPUStatus_Success)
-        return fail(err, "wgpuAdapterGetInfo failed");
+        return host_fail(err, "wgpuAdapterGetInfo failed");
     printf("# device: %.*s (%.*s, wgpu-native %u.%u.%u.%u, backend %s)\n", SV(info.device),
            SV(info.description), ver >> 24, (ver >> 16) & 0xFFu, (ver >> 8) & 0xFFu,
            ver & 0xFFu, info.backendType == WGPUBackendType_Vulkan ? "Vulkan" : "not Vulkan");
@@ -301,7 +268,7 @@ static int wg_setup_device(wgctx *v, char *err)
     /* ask for everything the adapter allows: buffers and dispatches as large as it has */
     v->limits.nextInChain = NULL;
     if (wgpuAdapterGetLimits(v->adapter, &v->limits) != WGPUStatus_Success)
-        return fail(err, "wgpuAdapterGetLimits failed");
+        return host_fail(err, "wgpuAdapterGetLimits failed");
     memset(&r, 0, sizeof r);
     ddesc.requiredLimits = &v->limits;
     ddesc.uncapturedErrorCallbackInfo.callback = on_error;
@@ -313,7 +280,7 @@ static int wg_setup_device(wgctx *v, char *err)
     if (wg_wait(v, &r, 1, "wgpuAdapterRequestDevice", err))
         return -1;
     if (!r.ok || !r.object)
-        return fail(err, "wgpuAdapterRequestDevice failed: %s", r.msg);
+        return host_fail(err, "wgpuAdapterRequestDevice failed: %s", r.msg);
     v->dev = r.object;
     v->queue = wgpuDeviceGetQueue(v->dev);
     return 0;
@@ -346,7 +313,7 @@ static int wg_setup_layout(wgctx *v, char *err)
     pld.bindGroupLayouts = &v->bgl;
     v->layout = wgpuDeviceCreatePipelineLayout(v->dev, &pld);
     if (v->error[0] || !v->bgl || !v->layout)
-        return fail(err, "creating the pipeline layout: %s", v->error);
+        return host_fail(err, "creating the pipeline layout: %s", v->error);
     return 0;
 }
 
@@ -365,18 +332,18 @@ static int wg_setup_pipeline(wgctx *v, const char *src, const char *path, char *
     smd.label = sv(path);
     v->shader = wgpuDeviceCreateShaderModule(v->dev, &smd);
     if (v->error[0] || !v->shader)
-        return fail(err, "compiling %s: %s", path, v->error);
+        return host_fail(err, "compiling %s: %s", path, v->error);
     cpd.layout = v->layout;
     cpd.compute.module = v->shader;
     cpd.compute.entryPoint = sv("main");
     v->pipe = wgpuDeviceCreateComputePipeline(v->dev, &cpd);
     if (v->error[0] || !v->pipe)
-        return fail(err, "creating the pipeline of %s: %s", path, v->error);
+        return host_fail(err, "creating the pipeline of %s: %s", path, v->error);
     bd.usage = WGPUBufferUsage_Uniform | WGPUBufferUsage_CopyDst;
     bd.size = HOST_PARAMS_BYTES;
     v->params = wgpuDeviceCreateBuffer(v->dev, &bd);
     if (v->error[0] || !v->params)
-        return fail(err, "creating the uniform buffer: %s", v->error);
+        return host_fail(err, "creating the uniform buffer: %s", v->error);
     return 0;
 }
 
@@ -403,7 +370,6 @@ static void wg_free_buffers(wgctx *v)
     v->group = NULL;
     free(v->fill);
     v->fill = NULL;
-    v->cap = 0;
 }
 
 /* Creates the storage buffers (size[0..nbuf-1] bytes), their read-back copies and the bind
@@ -434,7 +400,7 @@ static int wg_bind_buffers(wgctx *v, char *err)
     bgd.entries = e;
     v->group = wgpuDeviceCreateBindGroup(v->dev, &bgd);
     if (v->error[0] || !v->group)
-        return fail(err, "creating buffers of %" PRIu64 ", %" PRIu64 " and %" PRIu64
+        return host_fail(err, "creating buffers of %" PRIu64 ", %" PRIu64 " and %" PRIu64
                     " bytes: %s", v->size[0], v->size[1], v->size[2], v->error);
     return 0;
 }
@@ -481,10 +447,10 @@ static int wg_map(wgctx *v, int nb, char *err)
         return -1;
     for (int i = 1; i < nb; i++) {
         if (!r[i].ok)
-            return fail(err, "mapping the read-back buffer failed: %s %s", r[i].msg, v->error);
+            return host_fail(err, "mapping the read-back buffer failed: %s %s", r[i].msg, v->error);
         v->mapped[i] = wgpuBufferGetConstMappedRange(v->read[i], 0, (size_t)v->size[i]);
         if (!v->mapped[i])
-            return fail(err, "wgpuBufferGetConstMappedRange failed: %s", v->error);
+            return host_fail(err, "wgpuBufferGetConstMappedRange failed: %s", v->error);
     }
     return 0;
 }
@@ -527,252 +493,87 @@ static int wg_run(wgctx *v, const float eye[4], uint32_t n, uint32_t gx, uint32_
     wgpuCommandBufferRelease(cmd);
     wgpuCommandEncoderRelease(enc);
     if (v->error[0])
-        return fail(err, "the dispatch (%" PRIu32 " x %" PRIu32 " groups): %s", gx, gy, v->error);
+        return host_fail(err, "the dispatch (%" PRIu32 " x %" PRIu32 " groups): %s", gx, gy,
+                         v->error);
     return wg_map(v, nb, err);
 }
 
-/* ---- running the sets ---- */
+/* ---- the device as host_run drives it ---- */
 
-/* The dispatch of count patches: groups = ceil(count / q) laid out as gx * gy. */
-static void dispatch_shape(size_t count, size_t q, uint64_t max_x, uint64_t *gx, uint64_t *gy)
+/* The largest storage binding: maxStorageBufferBindingSize, within maxBufferSize. */
+static uint64_t wg_max_binding(const wgctx *v)
 {
-    uint64_t groups = (count + q - 1) / q;
-    *gx = groups < max_x ? groups : max_x;
-    if (*gx == 0)
-        *gx = 1;
-    *gy = (groups + *gx - 1) / *gx;
-    if (*gy == 0)
-        *gy = 1;
+    uint64_t b = v->limits.maxStorageBufferBindingSize;
+    return b < v->limits.maxBufferSize ? b : v->limits.maxBufferSize;
 }
 
-/* What limits a chunk: the largest binding and dispatch. */
-typedef struct {
-    uint64_t max_bytes; /* of one storage binding */
-    uint64_t max_x;     /* groups along x */
-    size_t chunk;       /* the most patches of one dispatch */
-} limits;
-
-/* Makes the buffers hold a chunk of n patches: control points exactly; classes and plane
- * values as far as the dispatch of n patches reaches (and the binding limit allows), so that
- * writes past patch_count land in them and are seen. */
-static int ensure_buffers(wgctx *v, const kref_args *o, const limits *lim, size_t K, size_t L,
-                          size_t n, char *err)
+/* host_device.alloc: buffers of cp_bytes, cls_words and val_words, their read-back copies and
+ * the bind group. */
+static int wg_alloc(void *ctx, uint64_t cp_bytes, uint64_t cls_words, uint64_t val_words,
+                    char *err)
 {
-    uint64_t gx, gy, cover, ncls, npl;
-    if (n <= v->cap)
-        return 0;
+    wgctx *v = ctx;
+    size_t most = (size_t)(cls_words > val_words ? cls_words : val_words) * 4;
     wg_free_buffers(v);
-    dispatch_shape(n, o->q, lim->max_x, &gx, &gy);
-    cover = gx * gy * o->q;
-    ncls = cover < lim->max_bytes / 4 ? cover : lim->max_bytes / 4;
-    npl = cover < lim->max_bytes / (4 * L) ? cover : lim->max_bytes / (4 * L);
-    v->size[0] = (uint64_t)n * K * 16;
-    v->size[1] = ncls * 4;
-    v->size[2] = o->planes ? npl * L * 4 : 0;
-    v->fill = malloc((size_t)(v->size[1] > v->size[2] ? v->size[1] : v->size[2]));
+    v->size[0] = cp_bytes;
+    v->size[1] = cls_words * 4;
+    v->size[2] = val_words * 4;
+    v->fill = malloc(most);
     if (!v->fill)
-        return fail(err, "out of memory for %zu patches", n);
-    memset(v->fill, HOST_UNWRITTEN, (size_t)(v->size[1] > v->size[2] ? v->size[1] : v->size[2]));
-    if (wg_bind_buffers(v, err))
+        return host_fail(err, "out of memory for %zu bytes", most);
+    memset(v->fill, 0xFF, most);
+    return wg_bind_buffers(v, err);
+}
+
+/* host_device.upload: queue writes, ordered before the next dispatch. */
+static int wg_upload(void *ctx, const void *cp, size_t bytes, char *err)
+{
+    wgctx *v = ctx;
+    wgpuQueueWriteBuffer(v->queue, v->bufs[0], 0, cp, bytes);
+    for (int b = 1; b < v->nbuf; b++)
+        wgpuQueueWriteBuffer(v->queue, v->bufs[b], 0, v->fill, (size_t)v->size[b]);
+    return v->error[0] ? host_fail(err, "writing the buffers: %s", v->error) : 0;
+}
+
+/* host_device.run: the results are read from the mapped read-back buffers. */
+static int wg_run_mapped(void *ctx, const float eye[4], uint32_t n, uint32_t gx, uint32_t gy,
+                         int values, const uint32_t *out[2], char *err)
+{
+    wgctx *v = ctx;
+    if (wg_run(v, eye, n, gx, gy, values ? 3 : 2, err))
         return -1;
-    v->cap = n;
+    out[0] = v->mapped[1];
+    out[1] = values ? v->mapped[2] : NULL;
     return 0;
 }
 
-/* Tallies writes past patch_count (kref_check itself catches classes left unwritten). */
-typedef struct {
-    size_t bad;      /* 32-bit words written past patch_count */
-    size_t guarded;  /* words past patch_count checked */
-    size_t dispatches;
-    double ms;       /* in dispatches, the read-back included */
-    char first[300];
-} tally;
-
-/* Counts the words of mapped buffer b from word `from` on that are not HOST_UNWRITTEN. */
-static void guard(tally *t, const wgctx *v, int b, size_t from, const char *set, size_t n)
+static void wg_release(void *ctx)
 {
-    const uint32_t *w = v->mapped[b];
-    size_t words = (size_t)(v->size[b] / 4);
-    for (size_t x = from; x < words; x++, t->guarded++)
-        if (w[x] != 0xFFFFFFFFu && !t->bad++)
-            snprintf(t->first, sizeof t->first, "%.80s: %s %zu of a %zu-patch dispatch", set,
-                     b == 1 ? "class written at patch" : "plane value written at index", x, n);
-}
-
-/* Runs one set chunk by chunk into cls (and planes) and checks it; 0 or -1 (message in err). */
-static int run_set(wgctx *v, const kref_args *o, const limits *lim, const kref_ref *ref,
-                   const kref_set *s, unsigned *cls, float *planes, kref_result *res, tally *t,
-                   char *err)
-{
-    size_t K = (size_t)ref->K, L = (size_t)ref->L;
-    if (s->K != ref->K)
-        return fail(err, "%s: %d points per patch, the reference has %d", s->name, s->K, ref->K);
-    for (size_t off = 0; off < s->count;) {
-        size_t n = s->count - off < lim->chunk ? s->count - off : lim->chunk;
-        uint64_t gx, gy;
-        double t0;
-        if (ensure_buffers(v, o, lim, K, L, n, err))
-            return -1;
-        dispatch_shape(n, o->q, lim->max_x, &gx, &gy);
-        wgpuQueueWriteBuffer(v->queue, v->bufs[0], 0, s->cp + off * K, n * K * 16);
-        for (int b = 1; b < v->nbuf; b++)
-            wgpuQueueWriteBuffer(v->queue, v->bufs[b], 0, v->fill, (size_t)v->size[b]);
-        t0 = now_ms();
-        if (wg_run(v, s->eye, (uint32_t)n, (uint32_t)gx, (uint32_t)gy, v->nbuf, err)) {
-            size_t len = strlen(err);
-            snprintf(err + len, HOST_ERRSZ - len, " (%.80s, patches %zu..%zu)", s->name, off,
-                     off + n - 1);
-            return -1;
-        }
-        t->ms += now_ms() - t0;
-        t->dispatches++;
-        memcpy(cls + off, v->mapped[1], n * sizeof *cls);
-        guard(t, v, 1, n, s->name, n);
-        if (o->planes) {
-            memcpy(planes + off * L, v->mapped[2], n * L * sizeof *planes);
-            guard(t, v, 2, n * L, s->name, n);
-        }
-        wg_unmap(v);
-        off += n;
-    }
-    kref_check(res, ref, s, cls, planes);
-    return 0;
-}
-
-/* --bench: times runs repetitions of the dispatch of set s, whose control points run_set left in
- * the buffer, with the read-back of its classes into cls; prints the best as one "# bench: "
- * line. 0, or -1 (message in err). */
-static int bench_set(wgctx *v, const kref_args *o, const limits *lim, const kref_set *s,
-                     unsigned *cls, long runs, char *err)
-{
-    uint64_t gx, gy;
-    double best = 0;
-    if (s->count == 0)
-        return 0;
-    if (s->count > lim->chunk)
-        return fail(err, "%s: --bench needs a set that fits one dispatch (%zu patches), it has %zu",
-                    s->name, lim->chunk, s->count);
-    dispatch_shape(s->count, o->q, lim->max_x, &gx, &gy);
-    for (long r = 0; r < runs; r++) {
-        double t0 = now_ms(), ms;
-        if (wg_run(v, s->eye, (uint32_t)s->count, (uint32_t)gx, (uint32_t)gy, 2, err))
-            return -1;
-        memcpy(cls, v->mapped[1], s->count * sizeof *cls);
-        wg_unmap(v);
-        ms = now_ms() - t0;
-        if (r == 0 || ms < best)
-            best = ms;
-    }
-    printf("# bench: patches=%zu runs=%ld best_s=%.6f patches_per_s=%.0f\n", s->count, runs,
-           best * 1e-3, (double)s->count / (best * 1e-3));
-    return 0;
-}
-
-/* The largest chunk of patches whose buffers all fit and whose dispatch is allowed; 0 or -1. */
-static int chunk_limits(limits *lim, const wgctx *v, const kref_args *o, size_t K, size_t L,
-                        char *err)
-{
-    uint64_t per = K * 16, chunk, max_groups;
-    lim->max_bytes = HOST_MAX_BUFFER;
-    if (v->limits.maxStorageBufferBindingSize < lim->max_bytes)
-        lim->max_bytes = v->limits.maxStorageBufferBindingSize;
-    if (v->limits.maxBufferSize < lim->max_bytes)
-        lim->max_bytes = v->limits.maxBufferSize;
-    lim->max_x = v->limits.maxComputeWorkgroupsPerDimension;
-    if (lim->max_x > HOST_MAX_GROUPS_X)
-        lim->max_x = HOST_MAX_GROUPS_X;
-    if (o->planes && L * 4 > per)
-        per = L * 4;
-    chunk = lim->max_bytes / per;
-    if (chunk == 0)
-        return fail(err, "one patch needs %" PRIu64 " bytes, more than a storage binding may "
-                    "hold (%" PRIu64 ")", per, lim->max_bytes);
-    max_groups = lim->max_x * v->limits.maxComputeWorkgroupsPerDimension;
-    if (chunk > max_groups * o->q)
-        chunk = max_groups * o->q;
-    if (chunk > UINT32_MAX)
-        chunk = UINT32_MAX;
-    if (chunk >= o->q)
-        chunk -= chunk % o->q; /* whole blocks in every chunk but a set's last */
-    lim->chunk = (size_t)chunk;
-    return 0;
+    wg_unmap(ctx);
 }
 
 /* ---- main ---- */
-
-/* Runs every set of every source; 0, or -1 after a "not ok" line (or with a message in err). */
-static int run_sources(wgctx *v, const kref_args *o, const limits *lim, const kref_ref *ref,
-                       long runs, kref_result *res, tally *t, char *err)
-{
-    unsigned *cls = NULL;
-    float *planes = NULL;
-    size_t have = 0, total = 0, L = (size_t)ref->L;
-    int nsets_total = 0, failed = 0;
-    for (int si = 0; si < o->nsources && !failed; si++) {
-        int nsets = (int)o->src[si].nsets;
-        kref_set *sets = kref_source_sets(ref, &o->src[si], o->label);
-        if (!sets) {
-            failed = 1;
-            err[0] = '\0';
-            break;
-        }
-        for (int i = 0; i < nsets && !failed; i++) {
-            if (sets[i].count > have) {
-                free(cls);
-                free(planes);
-                have = sets[i].count;
-                cls = malloc(have * sizeof *cls);
-                planes = o->planes ? malloc(have * L * sizeof *planes) : NULL;
-                if (!cls || (o->planes && !planes)) {
-                    failed = fail(err, "out of memory for %zu patches", have);
-                    break;
-                }
-            }
-            failed = run_set(v, o, lim, ref, &sets[i], cls, planes, res, t, err) != 0 ||
-                     (runs && bench_set(v, o, lim, &sets[i], cls, runs, err) != 0);
-            total += sets[i].count;
-        }
-        kref_free_sets(sets, nsets);
-        nsets_total += nsets;
-    }
-    free(cls);
-    free(planes);
-    if (!failed)
-        printf("# %s: %d sets, %zu patches, %zu dispatches (chunks of at most %zu patches), "
-               "%.1f ms in dispatches\n",
-               o->label, nsets_total, total, t->dispatches, lim->chunk, t->ms);
-    return failed ? -1 : 0;
-}
 
 int main(int argc, char **argv)
 {
     kref_args o;
     char msg[HOST_ERRSZ];
-    ptp_error perr;
     kref_ref ref;
-    kref_result res;
-    tally t;
-    limits lim;
+    host_limits lim;
     wgctx v;
     char *src = NULL;
-    int have_ref = 0, ok = 0;
-    const char *bench = kref_take_bench(&argc, argv);
-    long runs = 0;
+    int ok = 0, rc;
+    long runs;
 
-    if (kref_parse_args(&o, argc, argv, "host_wgpu", KREF_NEED_FILE | KREF_NEED_BLOCK))
-        return 2;
-    if (bench && !(runs = kref_bench_runs(bench))) {
-        check(0, o.label, "--bench takes RUNS, 1 to 1000");
-        return 2;
-    }
+    rc = host_start(&o, &ref, &runs, argc, argv, "host_wgpu", KREF_NEED_FILE | KREF_NEED_BLOCK);
+    if (rc)
+        return rc;
     if (o.groups_x_constant) {
         check(0, o.label, "--groups-x-constant: WGSL kernels read @builtin(num_workgroups)");
+        kref_clear(&ref);
         return 2;
     }
     memset(&v, 0, sizeof v);
-    memset(&res, 0, sizeof res);
-    memset(&t, 0, sizeof t);
-    memset(&perr, 0, sizeof perr);
     memset(&lim, 0, sizeof lim);
     v.nbuf = o.planes ? 3 : 2;
 
@@ -782,10 +583,6 @@ int main(int argc, char **argv)
         goto done;                                                                             \
     } while (0)
 
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &perr))
-        SETUP_FAIL("kref_init(%dx%d): %s", o.n, o.m, perr.msg);
-    have_ref = 1;
-    ref.certified = o.certified;
     if (!(src = wgsl_read(o.file, msg)) || wgsl_check_size(src, o.file, o.pq, msg))
         SETUP_FAIL("%s", msg);
     if (wg_setup_device(&v, msg))
@@ -800,19 +597,14 @@ int main(int argc, char **argv)
            o.file, o.n, o.m, o.space == KREF_CLIP ? "clip" : "world",
            o.rule == KREF_STRICT ? "strict" : "degenerate", o.pq, o.q,
            o.planes ? "planes" : "no planes");
-    if (chunk_limits(&lim, &v, &o, (size_t)ref.K, (size_t)ref.L, msg))
+    /* the largest chunk of patches whose buffers all fit and whose dispatch is allowed */
+    if (host_chunk_limits(&lim, &o, (size_t)ref.K, (size_t)ref.L, wg_max_binding(&v),
+                          v.limits.maxComputeWorkgroupsPerDimension,
+                          v.limits.maxComputeWorkgroupsPerDimension, msg))
         SETUP_FAIL("%s", msg);
-    if (run_sources(&v, &o, &lim, &ref, runs, &res, &t, msg)) {
-        if (msg[0])
-            SETUP_FAIL("%s", msg);
-        goto done;
-    }
     {
-        char name[400];
-        snprintf(name, sizeof name, "%s: nothing written past patch_count (%zu words checked)",
-                 o.label, t.guarded);
-        ok = check(!t.bad, name, "%zu words written, first: %s", t.bad, t.first);
-        ok = kref_report(&res, o.label) && ok;
+        host_device d = {&v, wg_alloc, wg_upload, wg_run_mapped, wg_release};
+        ok = host_run(&d, &o, &lim, &ref, runs);
     }
 
 done:
@@ -820,7 +612,6 @@ done:
     fflush(stdout);
     wg_teardown(&v);
     free(src);
-    if (have_ref)
-        kref_clear(&ref);
+    kref_clear(&ref);
     return ok && !check_exit() ? 0 : 1;
 }
