@@ -4,16 +4,18 @@
 //
 // Back-patch culling of bidegree 1x1 Bezier patches in clip space: points in clip space, eye
 // (0, 0, alpha, 0), values d_P = eye.z * t_P.z of the 4 control planes of
-// T = cross4(B, dB/du, dB/dv), written to binding 2 as d[p*L + P]; rule strict (back iff every value
-// < 0, front iff every value > 0, a NaN makes the patch silhouette). Classes: 0 front, 1 back,
-// 2 silhouette. Schedule as the GLSL kernel's: 4 threads per patch (one plane each), 32 patches
-// per workgroup of 128 invocations, 1 round.
-// Bindings (group 0): 0 control points, 1 classes, 2 values, 3 { eye, patch_count }. Workgroup (x, y)
-// handles the patches of block y * num_workgroups.x + x.
+// T = cross4(B, dB/du, dB/dv), written to binding 2 as d[p*L + P]; rule strict (back iff every
+// value < 0, front iff every value > 0, a NaN makes the patch silhouette). Classes: 0 front,
+// 1 back, 2 silhouette. Schedule as the GLSL kernel's: 4 threads per patch (one plane each),
+// 32 patches per workgroup of 128 invocations, 1 round. Unlike the GLSL kernel (and the world
+// fixture), cross4's products go through mul(), which keeps them out of FMA contraction.
+// Bindings (group 0): 0 control points, 1 classes, 2 values, 3 { eye, patch_count, zero }.
+// Workgroup (x, y) handles the patches of block y * num_workgroups.x + x.
 
 struct Params {
     eye: vec4<f32>,
     patch_count: u32,
+    zero: u32, // the host's zero padding: an integer zero the compiler cannot see
 }
 
 @group(0) @binding(0) var<storage, read> cp: array<vec4<f32>>;
@@ -38,11 +40,16 @@ var<workgroup> pts: array<vec4<f32>, 128>; // Q * K
 var<workgroup> acc: array<f32, 128>; // Q * L
 var<workgroup> flags: array<u32, 128>; // Q * P
 
-// The z component of cross4(a, b, c): det of rows x, y, w. WGSL has no `precise`: see
-// tests/README.md (exact zeros) for why the products may be contracted on other drivers.
+// x * y rounded to float for certain: through an integer XOR with a zero known only at run time,
+// which no FMA contraction can cross (WGSL has no `precise`: tests/README.md, exact zeros).
+fn mul(x: f32, y: f32) -> f32 {
+    return bitcast<f32>(bitcast<u32>(x * y) ^ params.zero);
+}
+
+// The z component of cross4(a, b, c): det of rows x, y, w; exactly 0 for two equal points.
 fn cross4z(a: vec4<f32>, b: vec4<f32>, c: vec4<f32>) -> f32 {
-    return a.x * (b.y * c.w - b.w * c.y) - b.x * (a.y * c.w - a.w * c.y) +
-        c.x * (a.y * b.w - a.w * b.y);
+    return mul(a.x, mul(b.y, c.w) - mul(b.w, c.y)) - mul(b.x, mul(a.y, c.w) - mul(a.w, c.y)) +
+        mul(c.x, mul(a.y, b.w) - mul(a.w, b.y));
 }
 
 // Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both).
