@@ -13,7 +13,8 @@
  * array<f32>, d[p*L + i]) only with --planes, binding 3 a var<uniform> struct { eye: vec4<f32>,
  * patch_count: u32 } (32 bytes; the host writes zeros after patch_count, which a kernel may
  * declare as `zero: u32` to keep products out of FMA contraction: tests/README.md). Entry point
- * "main" with @workgroup_size(PQ) (or (PQ, 1, 1)); workgroup (x, y) handles the Q patches of
+ * "main" with @workgroup_size(PQ) (or (PQ, 1, 1); literals or module-scope constants' names,
+ * which the host reads from the text to check PQ against --block-threads); workgroup (x, y) handles the Q patches of
  * block y * num_workgroups.x + x; the host dispatches ceil(count/Q) groups as (gx, gy),
  * gx = min(groups, 65535 or the device's limit), gy = ceil(groups/gx). Invocations past
  * patch_count write nothing.
@@ -100,35 +101,65 @@ static char *wgsl_read(const char *path, char *err)
     return s;
 }
 
-/* Checks the first @workgroup_size(...) of src: (pq), (pq, 1) or (pq, 1, 1); 0 or -1. WebGPU has
- * no reflection, so this reads the text: a kernel whose size is an override or a constant's name
- * is refused here. */
+/* The value of one @workgroup_size argument at *at: an integer literal, or the name of a
+ * module-scope `const NAME = 128u;` (or `const NAME: u32 = 128u;`) of src. Moves *at past it;
+ * 0 (and *v) or -1 when it is neither. */
+static int wgsl_size_arg(const char *src, const char **at, unsigned long *v)
+{
+    const char *p = *at, *def;
+    char *end;
+    size_t len = 0;
+    while (*p == ' ')
+        p++;
+    while (p[len] == '_' || (p[len] >= 'A' && p[len] <= 'Z') || (p[len] >= 'a' && p[len] <= 'z') ||
+           (len && p[len] >= '0' && p[len] <= '9'))
+        len++;
+    if (len) { /* a constant's name: find its definition */
+        for (def = strstr(src, "const "); def; def = strstr(def + 1, "const "))
+            if (!strncmp(def + 6, p, len) && def[6 + len] && strchr(" :=", def[6 + len]))
+                break;
+        if (!def || !(def = strchr(def, '=')))
+            return -1;
+        *v = strtoul(def + 1, &end, 10);
+        if (end == def + 1)
+            return -1;
+        *at = p + len;
+        return 0;
+    }
+    *v = strtoul(p, &end, 10);
+    if (end == p)
+        return -1;
+    for (*at = end; **at == 'u' || **at == 'i' || **at == ' '; (*at)++)
+        ;
+    return 0;
+}
+
+/* Checks the first @workgroup_size(...) of src: (pq), (pq, 1) or (pq, 1, 1), each an integer
+ * literal or a module-scope constant's name; 0 or -1. WebGPU has no reflection, so this reads
+ * the text: a size given by an override or an expression is refused here. */
 static int wgsl_check_size(const char *src, const char *path, size_t pq, char *err)
 {
     const char *at = strstr(src, "@workgroup_size(");
     unsigned long d[3] = {1, 1, 1};
     int n = 0;
-    char *end;
     if (!at)
         return host_fail(err, "%s has no @workgroup_size", path);
     at += strlen("@workgroup_size(");
     for (;;) {
+        if (wgsl_size_arg(src, &at, &d[n++]))
+            return host_fail(err, "%s: an argument of @workgroup_size is neither an integer nor "
+                             "a constant's name", path);
         while (*at == ' ')
-            at++;
-        d[n++] = strtoul(at, &end, 10);
-        if (end == at)
-            return host_fail(err, "%s: @workgroup_size is not a list of integers", path);
-        at = end;
-        while (*at == ' ' || *at == 'u')
             at++;
         if (*at == ')' || n == 3)
             break;
         if (*at++ != ',')
-            return host_fail(err, "%s: @workgroup_size is not a list of integers", path);
+            return host_fail(err, "%s: @workgroup_size is not a list of integers and constants' "
+                             "names", path);
     }
     if (d[0] != pq || d[1] != 1 || d[2] != 1)
-        return host_fail(err, "%s has workgroup size (%lu, %lu, %lu), --block-threads is %zu", path,
-                    d[0], d[1], d[2], pq);
+        return host_fail(err, "%s has workgroup size (%lu, %lu, %lu), --block-threads is %zu",
+                         path, d[0], d[1], d[2], pq);
     return 0;
 }
 
