@@ -14,10 +14,10 @@
  * patch_count: u32 } (32 bytes; the host writes zeros after patch_count, which a kernel may
  * declare as `zero: u32` to keep products out of FMA contraction: tests/README.md). Entry point
  * "main" with @workgroup_size(PQ) (or (PQ, 1, 1); literals or module-scope constants' names,
- * which the host reads from the text to check PQ against --block-threads); workgroup (x, y) handles the Q patches of
- * block y * num_workgroups.x + x; the host dispatches ceil(count/Q) groups as (gx, gy),
- * gx = min(groups, 65535 or the device's limit), gy = ceil(groups/gx). Invocations past
- * patch_count write nothing.
+ * which the host reads from the text to check PQ against --block-threads); workgroup (x, y)
+ * handles the Q patches of block y * num_workgroups.x + x; the host dispatches ceil(count/Q)
+ * groups as (gx, gy), gx = min(groups, 65535 or the device's limit), gy = ceil(groups/gx).
+ * Invocations past patch_count write nothing.
  *
  * The bind group layout is explicit, so a kernel whose bindings differ from the contract fails at
  * pipeline creation (wgpu's validation message is the "not ok" line). Sets whose buffers would
