@@ -44,12 +44,10 @@
 #include <errno.h>
 #include <inttypes.h>
 #include <limits.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 /* How long one dispatch may take before the run is declared hung. */
 #define HOST_FENCE_TIMEOUT_NS (600ull * 1000000000ull)
