@@ -1,5 +1,5 @@
-/* emit_c.c: the C target, an stb-style single header: the term table, planes and values, and
- * classify (one patch, batch, SoA) as straight-line code, plus --certified's or --refine's look. */
+/* emit_c.c: the C target, an stb-style header: the term table, planes, values, and classify (one
+ * patch, batch, SoA) as straight-line code, with the second look of --certified or --refine. */
 #include "emit/fmt.h"
 #include "emit/kern.h"
 #include "plan/cert.h"
