@@ -472,9 +472,10 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     return PTP_OK;
 }
 
-/* classify: one patch, the SoA layout with stride 1; second names the second look (or NULL) at
- * the patches the lanes leave as again. */
-static void put_classify(sbuf *o, const out_info *info, const char *second, const char *again)
+/* classify (one patch, the SoA layout with stride 1) and classify_soa (the caller's SoA array):
+ * the lanes, then the second look named second (or NULL) at the patches they leave as again. */
+static void put_classify(sbuf *o, const out_info *info, const char *up, const char *second,
+                         const char *again)
 {
     const char *px = info->prefix;
     sbuf_printf(o, "unsigned %sclassify(const float cp[][4], const float eye[4])\n{\n"
@@ -485,13 +486,6 @@ static void put_classify(sbuf *o, const out_info *info, const char *second, cons
         sbuf_printf(o, "    if (c == %s)\n        c = (unsigned char)%s%s(cp, eye);\n", again,
                     px, second);
     sbuf_puts(o, "    return c;\n}\n\n");
-}
-
-/* classify_soa: the lanes on the caller's SoA array, then the second look. */
-static void put_classify_soa(sbuf *o, const out_info *info, const char *up, const char *second,
-                             const char *again)
-{
-    const char *px = info->prefix;
     sbuf_printf(o, "void %sclassify_soa(const float *soa, size_t stride, size_t patch_count,\n"
                    "                  const float eye[4], unsigned char *cls)\n{\n"
                    "    %slanes(soa, stride, patch_count, eye, cls);\n",
@@ -582,8 +576,7 @@ static int put_entries(sbuf *o, const tp_table *t, const out_info *info, const c
         put_refine(o, t, info, up);
     else if (info->certified && (st = put_certify64(o, t, info, up, err)) != PTP_OK)
         return st;
-    put_classify(o, info, second, again);
-    put_classify_soa(o, info, up, second, again);
+    put_classify(o, info, up, second, again);
     put_classify_batch(o, info, up, second, again);
     return PTP_OK;
 }
