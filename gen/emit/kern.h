@@ -59,7 +59,10 @@ typedef struct {
 } kern_syntax;
 
 /* What differs between the GPU targets: one table per target (kern_glsl in emit_glsl.c, ...).
- * A string field documented "or NULL" may be left out of the initializer. */
+ * A string field documented "or NULL" may be left out of the initializer. The kernel's text
+ * names what its template declares: cp (the points, vec4), cls (the classes), planes, eye and
+ * patch_count. A new target is a file with its table (and, outside the C family, its
+ * kern_syntax), its template templates/<name>/, and an entry where the targets are listed. */
 struct kern_target {
     const char *name;          /* "glsl" */
     const char *language;      /* for the banner: "GLSL 4.50 compute shader" */
