@@ -3,6 +3,7 @@
 #include "core/bez.h"
 #include "core/i128.h"
 
+#include <assert.h>
 #include <stdlib.h>
 
 /* C(n, k) for 0 <= k <= n <= 3*PTP_MAX_DEGREE (exact: the running product stays below
@@ -223,8 +224,8 @@ static int reduce(bez *R, const bez *P, int along_u, ptp_error *err)
         if ((st = form_lincomb(CELL(R, 0), &one, CELL(P, 0), &zero, CELL(P, 0), err)))
             break;
         for (i = 1; i < d && !st; i++) {
-            rat_set_frac(&a, d, d - i);
-            rat_set_frac(&b, -i, d - i);
+            st = rat_set_frac(&a, d, d - i) | rat_set_frac(&b, -i, d - i);
+            assert(st == PTP_OK); /* small integers over d - i > 0 */
             st = form_lincomb(CELL(R, i), &a, CELL(P, i), &b, CELL(R, i - 1), err);
         }
         if (!st && !form_equal(CELL(P, d), CELL(R, d - 1)))

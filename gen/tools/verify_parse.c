@@ -277,7 +277,8 @@ static int skip_directive(rd *r)
             while ((c = at(r, r->pos)) >= 0 && c != '\n')
                 r->pos++;
         } else if (c == '"' || c == '\'') {
-            skip_quoted(r, 1);
+            if ((st = skip_quoted(r, 1)))
+                return st;
         } else {
             r->pos++;
         }
