@@ -186,8 +186,7 @@ static int integer_weights(kref_ref *r, ptp_error *err)
         r->den[x] = 1;
     for (x = 0; x < r->t.nterms && !ovf; x++) { /* den = lcm(den, w.den) */
         const tp_term *e = &r->t.terms[x];
-        ptp_i128 g = (ptp_i128)u128_gcd((ptp_u128)r->den[e->plane], (ptp_u128)e->w.den);
-        ovf = i128_mul_ovf(&r->den[e->plane], r->den[e->plane] / g, e->w.den);
+        ovf = rat_lcm_den(&r->den[e->plane], &e->w);
     }
     for (x = 0; x < r->t.nterms && !ovf; x++) {
         const tp_term *e = &r->t.terms[x];

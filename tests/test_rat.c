@@ -1242,6 +1242,39 @@ static void misc(void)
     prop_report(&pd);
 }
 
+/* rat_lcm_den against Euclid's gcd on random denominators, and its overflow. */
+static void lcm_den(void)
+{
+    prop pl;
+    long i;
+    rat a;
+    ptp_i128 D = (ptp_i128)1 << 100;
+    int st;
+    prop_init(&pl, "rat: rat_lcm_den is the lcm of D and the denominator (%ld random pairs)",
+              PAIRS);
+    for (i = 0; i < PAIRS; i++) {
+        ptp_u128 d = rnd_bits(1 + (int)rnd_below(60)) | 1, e = rnd_bits(1 + (int)rnd_below(60)) | 1;
+        ptp_u128 ref = d / my_gcd(d, e) * e; /* below 2^120 */
+        ptp_i128 L = (ptp_i128)d;
+        a.num = 1;
+        a.den = (ptp_i128)e;
+        pl.tried++;
+        if (rat_lcm_den(&L, &a) || (ptp_u128)L != ref)
+            prop_fail(&pl, "lcm(%s, %s) = %s", SI((ptp_i128)d), SI((ptp_i128)e), SI(L));
+    }
+    prop_report(&pl);
+    a.num = 1;
+    a.den = 3 * ((ptp_i128)1 << 60);
+    st = rat_lcm_den(&D, &a);
+    check(st == PTP_OK && D == 3 * ((ptp_i128)1 << 100),
+          "rat: rat_lcm_den(2^100, 3*2^60) = 3*2^100", "status %d, %s", st, SI(D));
+    a.den = 244140625; /* 5^12: 3 * 5^12 * 2^100 > 2^127 */
+    st = rat_lcm_den(&D, &a);
+    check(st == PTP_EOVERFLOW && D == 3 * ((ptp_i128)1 << 100),
+          "rat: rat_lcm_den past 127 bits is PTP_EOVERFLOW and leaves D unchanged", "status %d, %s",
+          st, SI(D));
+}
+
 int main(void)
 {
     construction();
@@ -1249,5 +1282,6 @@ int main(void)
     explicit_cases();
     strings();
     misc();
+    lcm_den();
     return check_exit();
 }

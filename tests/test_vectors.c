@@ -398,8 +398,8 @@ static void check_limits(void)
                 size_t x;
                 for (x = 0; x < t.nterms; x++)
                     if (t.terms[x].plane == p) {
-                        D = D / (ptp_i128)u128_gcd((ptp_u128)D, (ptp_u128)t.terms[x].w.den) *
-                            t.terms[x].w.den;
+                        if (rat_lcm_den(&D, &t.terms[x].w))
+                            prop_fail(&bound, "%dx%d plane %d: lcm overflow", n, m, p);
                         sum += fabs(rat_get_d(&t.terms[x].w));
                     }
                 bound.tried++;

@@ -126,11 +126,7 @@ static int mul_cell(bez *R, const bez *A, const bez *B, const binom_rows *c, int
     for (ia = ilo; ia <= ihi; ia++)
         for (ja = jlo; ja <= jhi; ja++, np++) {
             rat *f = &factors[np];
-            ptp_i128 g;
-            if (pair_factor(f, A, B, c, ia, ja, I - ia, J - ja))
-                return mul_overflow(err);
-            g = (ptp_i128)u128_gcd((ptp_u128)L, (ptp_u128)f->den);
-            if (i128_mul_ovf(&L, L / g, f->den))
+            if (pair_factor(f, A, B, c, ia, ja, I - ia, J - ja) || rat_lcm_den(&L, f))
                 return mul_overflow(err);
         }
     /* Pass 2: every product of a term of A's cell with a term of B's cell, over L. */

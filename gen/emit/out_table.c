@@ -29,9 +29,8 @@ static int common_den(ptp_i128 *D, const tp_table *t)
     size_t i;
     *D = 1;
     for (i = 0; i < t->nterms; i++) {
-        ptp_i128 g = (ptp_i128)u128_gcd((ptp_u128)*D, (ptp_u128)t->terms[i].w.den);
         ptp_u128 bound = 0;
-        if (i128_mul_ovf(D, *D / g, t->terms[i].w.den) ||
+        if (rat_lcm_den(D, &t->terms[i].w) ||
             u128_mul_ovf(&bound, i128_abs(t->terms[i].w.num), (ptp_u128)(*D / t->terms[i].w.den)) ||
             bound > (ptp_u128)I128_MAX)
             return PTP_EOVERFLOW;

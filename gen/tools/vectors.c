@@ -240,7 +240,7 @@ static int common_denominators(vstate *st, ptp_error *err)
     for (x = 0; x < t->nterms; x++) {
         const tp_term *w = &t->terms[x];
         ptp_i128 *D = &st->den[w->plane];
-        if (i128_mul_ovf(D, *D / (ptp_i128)u128_gcd((ptp_u128)*D, (ptp_u128)w->w.den), w->w.den))
+        if (rat_lcm_den(D, &w->w))
             return ptp_fail(err, PTP_EOVERFLOW, "overflow in the denominator of plane %d",
                             w->plane);
     }
