@@ -234,7 +234,7 @@ void kref_clear(kref_ref *r)
 /* A uniform double in [lo, hi) from the stream *s. */
 static double uniform(uint64_t *s, double lo, double hi)
 {
-    return lo + (hi - lo) * (double)(check_rand(s) >> 11) / 9007199254740992.0;
+    return lo + (hi - lo) * (double)(ptp_splitmix64(s) >> 11) / 9007199254740992.0;
 }
 
 static kref_set *alloc_sets(int nsets, size_t count, int K)
@@ -339,7 +339,7 @@ static const char *const exact_kind[EX_KINDS] = {"random", "collapsed edge", "pl
  * negligible for test data). */
 static int64_t irand(uint64_t *s, int64_t lo, int64_t hi)
 {
-    return lo + (int64_t)(check_rand(s) % (uint64_t)(hi - lo + 1));
+    return lo + (int64_t)(ptp_splitmix64(s) % (uint64_t)(hi - lo + 1));
 }
 
 /* Returns g = gcd(|a|, |b|) and sets *x, *y to integers with a x + b y = g (extended Euclid;

@@ -22,7 +22,7 @@ static uint64_t rng_state = 0x13198A2E03707344u;
 
 static uint64_t rnd(void)
 {
-    return check_rand(&rng_state);
+    return ptp_splitmix64(&rng_state);
 }
 
 static unsigned rnd_below(unsigned n)
@@ -33,31 +33,10 @@ static unsigned rnd_below(unsigned n)
 /* A uniform value of at most bits bits (0 < bits < 128). */
 static ptp_u128 rnd_bits(int bits)
 {
-    ptp_u128 u = rnd();
-    u = (u << 64) | rnd();
-    return u & (((ptp_u128)1 << bits) - 1);
+    return check_rand_bits(&rng_state, bits);
 }
 
 /* ---- printing ---- */
-
-static char *i128_str(char *buf, ptp_i128 v)
-{
-    const uint64_t e19 = 10000000000000000000u;
-    ptp_u128 u = v < 0 ? (ptp_u128)0 - (ptp_u128)v : (ptp_u128)v;
-    uint64_t parts[3];
-    int n = 0, i;
-    char *p = buf;
-    do {
-        parts[n++] = (uint64_t)(u % e19);
-        u /= e19;
-    } while (u);
-    if (v < 0)
-        *p++ = '-';
-    p += sprintf(p, "%llu", (unsigned long long)parts[n - 1]);
-    for (i = n - 2; i >= 0; i--)
-        p += sprintf(p, "%019llu", (unsigned long long)parts[i]);
-    return buf;
-}
 
 static const char *SR(const rat *a)
 {
@@ -93,10 +72,10 @@ static const char *SF(const form *f)
     int n = sprintf(b, "r%d{", f->rank);
     for (i = 0; i < f->len && i < 6; i++)
         n += sprintf(b + n, "%s%s:%s", i ? " " : "", SK(f->t[i].key, f->rank),
-                     i128_str(nb, f->t[i].num));
+                     check_i128_str(nb, f->t[i].num));
     if (f->len > 6)
         n += sprintf(b + n, " ...+%zu", f->len - 6);
-    sprintf(b + n, "}/%s", i128_str(nb, f->den));
+    sprintf(b + n, "}/%s", check_i128_str(nb, f->den));
     return b;
 }
 

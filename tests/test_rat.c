@@ -20,7 +20,7 @@ static uint64_t rng_state = 0x243F6A8885A308D3u;
 
 static uint64_t rnd(void)
 {
-    return check_rand(&rng_state);
+    return ptp_splitmix64(&rng_state);
 }
 
 static unsigned rnd_below(unsigned n)
@@ -28,17 +28,10 @@ static unsigned rnd_below(unsigned n)
     return (unsigned)(rnd() % n);
 }
 
-static ptp_u128 rnd_u128(void)
-{
-    ptp_u128 hi = rnd();
-    return (hi << 64) | rnd();
-}
-
 /* A uniform value of at most bits bits (0 < bits <= 128). */
 static ptp_u128 rnd_bits(int bits)
 {
-    ptp_u128 u = rnd_u128();
-    return bits >= 128 ? u : u & (((ptp_u128)1 << bits) - 1);
+    return check_rand_bits(&rng_state, bits);
 }
 
 /* ---- independent helpers on plain 128-bit integers ---- */
@@ -80,33 +73,13 @@ static int my_canonical(const rat *a)
     return my_gcd(uabs(a->num), (ptp_u128)a->den) == 1;
 }
 
-/* Decimal text of a 128-bit integer, independent of i128_to_str. */
-static char *my_i128_str(char *buf, ptp_i128 v)
-{
-    const uint64_t e19 = 10000000000000000000u;
-    ptp_u128 u = uabs(v);
-    uint64_t parts[3];
-    int n = 0, i;
-    char *p = buf;
-    do {
-        parts[n++] = (uint64_t)(u % e19);
-        u /= e19;
-    } while (u);
-    if (v < 0)
-        *p++ = '-';
-    p += sprintf(p, "%llu", (unsigned long long)parts[n - 1]);
-    for (i = n - 2; i >= 0; i--)
-        p += sprintf(p, "%019llu", (unsigned long long)parts[i]);
-    return buf;
-}
-
 static char *my_rat_str(char *buf, const rat *a)
 {
-    my_i128_str(buf, a->num);
+    check_i128_str(buf, a->num);
     if (a->den != 1) {
         size_t n = strlen(buf);
         buf[n] = '/';
-        my_i128_str(buf + n + 1, a->den);
+        check_i128_str(buf + n + 1, a->den);
     }
     return buf;
 }
@@ -123,7 +96,7 @@ static const char *SI(ptp_i128 v)
 {
     static char pool[8][48];
     static int k;
-    return my_i128_str(pool[k++ % 8], v);
+    return check_i128_str(pool[k++ % 8], v);
 }
 
 static rat mk(ptp_i128 num, ptp_i128 den)
@@ -1122,8 +1095,8 @@ static void strings(void)
         int st;
         if (uabs(a.num) > (ptp_u128)MAXI / k || (ptp_u128)a.den > (ptp_u128)MAXI / k)
             k = 1;
-        my_i128_str(nbuf, a.num * (ptp_i128)k);
-        my_i128_str(dbuf, a.den * (ptp_i128)k);
+        check_i128_str(nbuf, a.num * (ptp_i128)k);
+        check_i128_str(dbuf, a.den * (ptp_i128)k);
         snprintf(buf, sizeof buf, "%s/%s", nbuf, dbuf);
         p.tried++;
         st = rat_set_str(&r, buf);
