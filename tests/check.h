@@ -65,11 +65,26 @@ static inline void prop_report(const prop *p)
           p->tried ? p->detail : "no case was tried", p->bad, p->tried);
 }
 
-/* A uniform value of at most bits bits (0 < bits <= 128) from the stream *state. */
-static inline ptp_u128 check_rand_bits(uint64_t *state, int bits)
+/* The test program's deterministic pseudo-random stream (ptp_splitmix64): a program seeds it by
+ * assigning check_rng before its first draw. */
+static uint64_t check_rng = 1;
+
+static inline uint64_t check_rnd(void)
 {
-    ptp_u128 u = ptp_splitmix64(state);
-    u = (u << 64) | ptp_splitmix64(state);
+    return ptp_splitmix64(&check_rng);
+}
+
+/* A value below n (> 0; the modulo bias does not matter here). */
+static inline unsigned check_rnd_below(unsigned n)
+{
+    return (unsigned)(check_rnd() % n);
+}
+
+/* A uniform value of at most bits bits (0 < bits <= 128). */
+static inline ptp_u128 check_rnd_bits(int bits)
+{
+    ptp_u128 u = check_rnd();
+    u = (u << 64) | check_rnd();
     return bits >= 128 ? u : u & (((ptp_u128)1 << bits) - 1);
 }
 
