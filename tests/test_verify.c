@@ -797,6 +797,17 @@ static void test_several(void)
     tp_clear(&t);
 }
 
+/* Removes every occurrence of word from b's text. */
+static void drop_all(sbuf *b, const char *word)
+{
+    size_t k = strlen(word);
+    char *p;
+    while ((p = strstr(b->s, word)) != NULL) {
+        memmove(p, p + k, strlen(p + k) + 1);
+        b->len -= k;
+    }
+}
+
 /* A 2x2 table checked as 3x3: many problems, and a note that the indices fit 2x2. */
 static void test_wrong_degree(void)
 {
@@ -810,6 +821,10 @@ static void test_wrong_degree(void)
                        verify_str(&b, "t.h", 3, 3), VERIFY_WRONG,
                        "t.h: note: the indices fit bidegree 2x2, not 3x3");
         expect_verdict("... and that its name says 2x2", verify_str(&b, "t.h", 3, 3), VERIFY_WRONG,
+                       "note: the array name names bidegree 2x2; checked as 3x3");
+        drop_all(&b, "table_"); /* the names of earlier tables: ptp_2x2_idx */
+        expect_verdict("... also from the name ptp_2x2_idx (without table_)",
+                       verify_str(&b, "t.h", 3, 3), VERIFY_WRONG,
                        "note: the array name names bidegree 2x2; checked as 3x3");
         sbuf_clear(&b);
     }

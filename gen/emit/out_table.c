@@ -95,12 +95,14 @@ void out_c_arrays(sbuf *o, const tp_table *t, const sched *s, const char *name,
 
 int out_table(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    char up[64], name[80], count[80], num[48];
+    char up[64], arrays[80], name[96], count[80], num[48];
     const sched *s = info->sched;
     const char *itype = NULL;
     ptp_i128 D;
     int p;
     fmt_upper(up, sizeof up, info->prefix);
+    /* The arrays are <prefix>table_*, apart from the C header's <prefix>idx and <prefix>wgt. */
+    snprintf(arrays, sizeof arrays, "%stable_", info->prefix);
     if (common_den(&D, t) == PTP_OK)
         itype = int_type(t, D);
     sbuf_printf(o, "/* %stable.h: the control planes of the parametric tangent plane, bidegree %dx%d.\n",
@@ -131,12 +133,12 @@ int out_table(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
                 s->threads, up, s->patches, up, s->rounds);
     sbuf_printf(o, "#define %sSLOTS (%sROUNDS * %sTHREADS)\n", up, up, up);
     snprintf(count, sizeof count, "%sTERMS", up);
-    out_c_arrays(o, t, NULL, info->prefix, count, itype, D);
-    sbuf_printf(o, "\nstatic const unsigned short %sowner[%sPLANES] = {", info->prefix, up);
+    out_c_arrays(o, t, NULL, arrays, count, itype, D);
+    sbuf_printf(o, "\nstatic const unsigned short %sowner[%sPLANES] = {", arrays, up);
     for (p = 0; p < t->nplanes; p++)
         sbuf_printf(o, "%s%d", p == 0 ? "\n    " : p % (t->pv + 1) ? ", " : ",\n    ", s->owner[p]);
     sbuf_puts(o, "\n};\n");
-    snprintf(name, sizeof name, "%ssched_", info->prefix);
+    snprintf(name, sizeof name, "%ssched_", arrays);
     snprintf(count, sizeof count, "%sSLOTS", up);
     out_c_arrays(o, t, s, name, count, itype, D);
     sbuf_printf(o, "\n#endif\n");
