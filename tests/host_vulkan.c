@@ -747,6 +747,44 @@ static int bench_set(vkctx *v, const kref_args *o, const limits *lim, const kref
     return 0;
 }
 
+/* What every set of a run shares: kref_each_set's context. cls and planes grow to the largest
+ * set; the caller frees them. */
+typedef struct {
+    vkctx *v;
+    const kref_args *o;
+    const limits *lim;
+    kref_result *res;
+    tally *t;
+    long runs; /* --bench RUNS, or 0 */
+    unsigned *cls;
+    float *planes;
+    size_t have, total; /* patches cls holds room for; patches run */
+    char *msg;          /* HOST_ERRSZ bytes: why a set failed */
+} run;
+
+/* Runs and checks one set (ctx: a run), and times it under --bench; 0, or 1 (message in msg). */
+static int each_set(void *ctx, const kref_ref *ref, const kref_set *s)
+{
+    run *r = ctx;
+    if (s->count > r->have) {
+        free(r->cls);
+        free(r->planes);
+        r->planes = NULL;
+        r->have = 0;
+        r->cls = malloc(s->count * sizeof *r->cls);
+        if (r->o->planes)
+            r->planes = malloc(s->count * (size_t)ref->L * sizeof *r->planes);
+        if (!r->cls || (r->o->planes && !r->planes)) {
+            snprintf(r->msg, HOST_ERRSZ, "out of memory for %zu patches", s->count);
+            return 1;
+        }
+        r->have = s->count;
+    }
+    r->total += s->count;
+    return run_set(r->v, r->o, r->lim, ref, s, r->cls, r->planes, r->res, r->t, r->msg) != 0 ||
+           (r->runs && bench_set(r->v, r->o, r->lim, s, r->cls, r->runs, r->msg) != 0);
+}
+
 /* ---- main ---- */
 
 int main(int argc, char **argv)
@@ -761,19 +799,15 @@ int main(int argc, char **argv)
     spirv code = {NULL, 0};
     spv_info info;
     vkctx v;
-    unsigned *cls = NULL;
-    float *planes = NULL;
-    size_t K, L, have = 0, total = 0;
-    int have_ref = 0, nsets_total = 0, ok = 0;
-    const char *bench = kref_take_bench(&argc, argv);
-    long runs = 0;
+    run r;
+    size_t K, L;
+    int have_ref = 0, nsets_total = 0, ok = 0, st;
+    long runs;
 
-    if (kref_parse_args(&o, argc, argv, "host_vulkan", KREF_NEED_FILE | KREF_NEED_BLOCK))
+    if (kref_parse_bench_args(&o, &runs, argc, argv, "host_vulkan",
+                              KREF_NEED_FILE | KREF_NEED_BLOCK))
         return 2;
-    if (bench && !(runs = kref_bench_runs(bench))) {
-        check(0, o.label, "--bench takes RUNS, 1 to 1000");
-        return 2;
-    }
+    memset(&r, 0, sizeof r);
     memset(&v, 0, sizeof v);
     memset(&res, 0, sizeof res);
     memset(&t, 0, sizeof t);
@@ -853,40 +887,21 @@ int main(int argc, char **argv)
     }
 
     /* every set of every source */
-    for (int si = 0; si < o.nsources; si++) {
-        int nsets = (int)o.src[si].nsets, failed = 0;
-        kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);
-        if (!sets)
-            goto done;
-        for (int i = 0; i < nsets && !failed; i++) {
-            if (sets[i].count > have) {
-                free(cls);
-                free(planes);
-                planes = NULL;
-                have = 0;
-                cls = malloc(sets[i].count * sizeof *cls);
-                if (o.planes)
-                    planes = malloc(sets[i].count * L * sizeof *planes);
-                if (!cls || (o.planes && !planes)) {
-                    snprintf(msg, sizeof msg, "out of memory for %zu patches", sets[i].count);
-                    failed = 1;
-                    break;
-                }
-                have = sets[i].count;
-            }
-            failed = run_set(&v, &o, &lim, &ref, &sets[i], cls, planes, &res, &t, msg) != 0 ||
-                     (runs && bench_set(&v, &o, &lim, &sets[i], cls, runs, msg) != 0);
-            total += sets[i].count;
-        }
-        kref_free_sets(sets, nsets);
-        if (failed)
-            SETUP_FAIL("%s", msg);
-        nsets_total += nsets;
-    }
+    r.v = &v;
+    r.o = &o;
+    r.lim = &lim;
+    r.res = &res;
+    r.t = &t;
+    r.runs = runs;
+    r.msg = msg;
+    if ((st = kref_each_set(&ref, &o, each_set, &r, &nsets_total)) < 0)
+        goto done;
+    if (st)
+        SETUP_FAIL("%s", msg);
 
     printf("# %s: %d sets, %zu patches, %zu dispatches (chunks of at most %zu patches), "
            "%.1f ms in dispatches\n",
-           o.label, nsets_total, total, t.dispatches, lim.chunk, t.ms);
+           o.label, nsets_total, r.total, t.dispatches, lim.chunk, t.ms);
     {
         char name[400];
         snprintf(name, sizeof name, "%s: nothing written past patch_count (%zu words checked)",
@@ -900,8 +915,8 @@ done:
     fflush(stdout);
     vk_teardown(&v);
     free(code.words);
-    free(cls);
-    free(planes);
+    free(r.cls);
+    free(r.planes);
     if (have_ref)
         kref_clear(&ref);
     return ok && !check_exit() ? 0 : 1;

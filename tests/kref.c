@@ -165,6 +165,25 @@ kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char
     return sets;
 }
 
+int kref_each_set(const kref_ref *r, const kref_args *a, kref_set_fn fn, void *ctx, int *nsets)
+{
+    int si, i, st = 0;
+    if (nsets)
+        *nsets = 0;
+    for (si = 0; si < a->nsources && !st; si++) {
+        int n = (int)a->src[si].nsets;
+        kref_set *sets = kref_source_sets(r, &a->src[si], a->label);
+        if (!sets)
+            return -1;
+        for (i = 0; i < n && !st; i++)
+            st = fn(ctx, r, &sets[i]);
+        kref_free_sets(sets, n);
+        if (nsets)
+            *nsets += n;
+    }
+    return st;
+}
+
 /* r->den (the lcm of each plane's denominators) and r->wint (den * w per term), or both NULL
  * when a scale overflows 128 bits or a plane's sum of |den * w| reaches 2^47 (exact sets are
  * then refused: exact_values relies on it); PTP_ENOMEM on failure. */
@@ -1167,7 +1186,9 @@ int kref_report(const kref_result *res, const char *name)
     return ok;
 }
 
-const char *kref_take_bench(int *argc, char **argv)
+/* Removes "--bench RUNS", which kref_parse_args does not know, from argv and returns RUNS as
+ * given; NULL when absent. A "--bench" without a value stays, for kref_parse_args to refuse. */
+static const char *take_bench(int *argc, char **argv)
 {
     const char *runs = NULL;
     int i, j = 1;
@@ -1182,11 +1203,26 @@ const char *kref_take_bench(int *argc, char **argv)
     return runs;
 }
 
-long kref_bench_runs(const char *s)
+/* RUNS of --bench, 1 to 1000; 0 if s is not such a number. */
+static long bench_runs(const char *s)
 {
     char *end;
     long r;
     errno = 0;
     r = strtol(s, &end, 10);
     return !errno && end != s && !*end && r >= 1 && r <= 1000 ? r : 0;
+}
+
+int kref_parse_bench_args(kref_args *a, long *runs, int argc, char **argv, const char *host,
+                          unsigned need)
+{
+    const char *bench = take_bench(&argc, argv);
+    *runs = 0;
+    if (kref_parse_args(a, argc, argv, host, need))
+        return 2;
+    if (bench && !(*runs = bench_runs(bench))) {
+        check(0, a->label, "--bench takes RUNS, 1 to 1000");
+        return 2;
+    }
+    return 0;
 }
