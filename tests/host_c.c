@@ -73,16 +73,14 @@ int main(int argc, char **argv)
     results r;
     kref_args o;
     kref_ref ref;
-    ptp_error err;
     char label[200];
     int ok = 1;
     if (kref_parse_args(&o, argc, argv, "host_c", 0))
         return 2;
     memset(&r, 0, sizeof r);
     r.world = o.space == KREF_WORLD;
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
-        return !check(0, o.label, "%s", err.msg);
-    ref.certified = o.certified;
+    if (kref_init_args(&ref, &o))
+        return 1;
     if (ref.K != MACRO(POINTS) || ref.L != MACRO(PLANES)) {
         kref_clear(&ref);
         return !check(0, o.label, "the header's bidegree differs from --degree");

@@ -67,7 +67,6 @@ int main(int argc, char **argv)
     kref_args o;
     kref_ref ref;
     run r;
-    ptp_error err;
     int ndev = 0, failed;
     if (kref_parse_args(&o, argc, argv, "host_cuda", KREF_NEED_BLOCK))
         return 2;
@@ -75,9 +74,8 @@ int main(int argc, char **argv)
         printf("# %s: no CUDA device here: built, not run\n", o.label);
         return 0;
     }
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
-        return !check(0, o.label, "%s", err.msg);
-    ref.certified = o.certified;
+    if (kref_init_args(&ref, &o))
+        return 1;
     memset(&r, 0, sizeof r);
     r.o = &o;
     failed = kref_each_set(&ref, &o, run_set, &r, NULL) != 0;

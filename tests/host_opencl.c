@@ -496,7 +496,6 @@ int main(int argc, char **argv)
     kref_ref ref;
     kref_result res;
     hygiene h;
-    ptp_error err;
     cl_platform_id plat;
     cl_device_id dev;
     cl_int e;
@@ -510,14 +509,10 @@ int main(int argc, char **argv)
     memset(&st, 0, sizeof st);
     memset(&res, 0, sizeof res);
     memset(&h, 0, sizeof h);
-    memset(&err, 0, sizeof err);
 
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err)) {
-        check(0, o.label, "kref_init(%dx%d): %s", o.n, o.m, err.msg);
+    if (kref_init_args(&ref, &o))
         goto done;
-    }
     have_ref = 1;
-    ref.certified = o.certified;
     if (pick_device(o.label, &plat, &dev))
         goto done;
     {

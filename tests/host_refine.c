@@ -102,15 +102,14 @@ int main(int argc, char **argv)
 {
     kref_args o;
     kref_ref ref;
-    ptp_error err;
     tally t;
     char name[300];
     int ok = 1;
     if (kref_parse_args(&o, argc, argv, "host_refine", 0))
         return 2;
     memset(&t, 0, sizeof t);
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
-        return !check(0, o.label, "%s", err.msg);
+    if (kref_init_args(&ref, &o))
+        return 1;
     if (kref_each_set(&ref, &o, run_set, &t, NULL)) {
         kref_clear(&ref);
         return 1;

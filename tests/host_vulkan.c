@@ -791,7 +791,6 @@ int main(int argc, char **argv)
 {
     kref_args o;
     char msg[HOST_ERRSZ];
-    ptp_error perr;
     kref_ref ref;
     kref_result res;
     tally t;
@@ -811,7 +810,6 @@ int main(int argc, char **argv)
     memset(&v, 0, sizeof v);
     memset(&res, 0, sizeof res);
     memset(&t, 0, sizeof t);
-    memset(&perr, 0, sizeof perr);
 
 #define SETUP_FAIL(...)                                                                        \
     do {                                                                                       \
@@ -819,10 +817,9 @@ int main(int argc, char **argv)
         goto done;                                                                             \
     } while (0)
 
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &perr))
-        SETUP_FAIL("kref_init(%dx%d): %s", o.n, o.m, perr.msg);
+    if (kref_init_args(&ref, &o))
+        goto done;
     have_ref = 1;
-    ref.certified = o.certified;
     K = (size_t)ref.K;
     L = (size_t)ref.L;
 

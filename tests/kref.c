@@ -241,6 +241,15 @@ int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_e
     return st;
 }
 
+int kref_init_args(kref_ref *r, const kref_args *a)
+{
+    ptp_error err;
+    if (kref_init(r, a->n, a->m, a->space, a->rule, &err))
+        return !check(0, a->label, "kref_init(%dx%d): %s", a->n, a->m, err.msg);
+    r->certified = a->certified;
+    return 0;
+}
+
 void kref_clear(kref_ref *r)
 {
     tp_clear(&r->t);

@@ -114,6 +114,9 @@ int kref_each_set(const kref_ref *r, const kref_args *a, kref_set_fn fn, void *c
 /* Derives the table for the reference; 0 on success (messages go to err). The kernel is taken
  * as not certified: a host sets r->certified after this call. */
 int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_error *err);
+/* kref_init for the degree, space and rule of a host's command line a, with its --certified;
+ * 0, or 1 after a "not ok" line. */
+int kref_init_args(kref_ref *r, const kref_args *a);
 void kref_clear(kref_ref *r);
 
 /* nsets sets of count random patches each (deterministic in seed): near-planar patches with
