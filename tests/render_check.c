@@ -1,6 +1,7 @@
 /* render_check.c: checks build/render's cull passes from its --dump-clip files: the ptp kernels'
  * classes against ptpgen's C header (classify_batch) on the same clip-space floats, and the
- * TCONE / NCONE shader's culled set against bench/cones.c on the same model and eye.
+ * TCONE / NCONE shader's culled set against bench/cones.c on the same model and eye (the cone's
+ * axis negated for --orientation in).
  *
  *   render_check ptp|ptp-certified DUMP          (compiled with rc_s.h and rc_c.h: ptpgen's
  *   render_check tcone|ncone DUMP MODEL.bez       clip-space C headers, strict and certified)
@@ -24,6 +25,7 @@
 typedef struct dump {
     uint32_t n;
     float alpha;
+    uint32_t inward;
     double eye[3];
     float (*cp)[4];
     uint32_t *cls;
@@ -35,7 +37,8 @@ static int read_dump(dump *d, const char *path)
     char magic[8];
     int ok = f && fread(magic, 1, 8, f) == 8 && !memcmp(magic, "PTPCLIP1", 8) &&
              fread(&d->n, 4, 1, f) == 1 && d->n > 0 && d->n < 100000000 &&
-             fread(&d->alpha, 4, 1, f) == 1 && fread(d->eye, 8, 3, f) == 3;
+             fread(&d->alpha, 4, 1, f) == 1 && fread(&d->inward, 4, 1, f) == 1 &&
+             fread(d->eye, 8, 3, f) == 3;
     d->cp = NULL;
     d->cls = NULL;
     if (ok) {
@@ -107,6 +110,8 @@ static int check_cone(const dump *d, const char *model, int tcone)
             for (int i = 0; i < 3; i++)
                 b.p[k][i] = m.pts[(p * 16 + (size_t)k) * 3 + (size_t)i];
         bad = (tcone ? cone_tcone(&b, &c) : cone_ncone(&b, &c)) != CONE_OK;
+        for (int i = 0; i < 3 && d->inward; i++)
+            c.axis[i] = -c.axis[i];
         ref[p] = cone_cull(&c, d->eye) ? 1 : 2;
     }
     if (!bad)

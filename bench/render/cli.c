@@ -10,8 +10,9 @@
 
 static const char usage[] =
     "usage: render --model FILE.bez --eye X,Y,Z [--target X,Y,Z] [--up X,Y,Z] [--fov DEG]\n"
-    "              --tess F --cull none|tcone|ncone|ptp|ptp-certified [--size WxH] [--frames K]\n"
-    "              [--png FILE] [--overview FILE.png] [--dump-clip FILE] [--device N]\n";
+    "              --tess F --cull none|tcone|ncone|ptp|ptp-certified [--orientation out|in]\n"
+    "              [--size WxH] [--frames K] [--png FILE] [--overview FILE.png]\n"
+    "              [--dump-clip FILE] [--device N]\n";
 
 static const char *const method_names[] = {"none", "tcone", "ncone", "ptp", "ptp-certified"};
 
@@ -85,7 +86,10 @@ static int option(cli_opts *o, const char *name, const char *s)
         return parse_ulong(w, 1, 8192, &o->w) || parse_ulong(x + 1, 1, 8192, &o->h) ? -1 : 0;
     } else if (!strcmp(name, "--frames"))
         return parse_ulong(s, 1, 10000, &o->frames);
-    else if (!strcmp(name, "--png"))
+    else if (!strcmp(name, "--orientation")) {
+        o->inward = !strcmp(s, "in");
+        return o->inward || !strcmp(s, "out") ? 0 : -1;
+    } else if (!strcmp(name, "--png"))
         o->png = s;
     else if (!strcmp(name, "--overview"))
         o->overview = s;

@@ -15,6 +15,7 @@ typedef struct cli_opts {
     const char *method_name;
     unsigned w, h, frames;
     int device;                /* -1: choose */
+    int inward;                /* --orientation in: dB/dv x dB/du faces out (the Utah teapot) */
     int flip_alpha;            /* debug: negate the kernels' alpha (a broken cull pass) */
 } cli_opts;
 

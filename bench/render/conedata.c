@@ -4,7 +4,7 @@
 
 #include "cones.h"
 
-int conedata_fill(float *out, const bez_model *m, render_method method)
+int conedata_fill(float *out, const bez_model *m, render_method method, int inward)
 {
     for (size_t p = 0; p < m->npatches; p++) {
         cone_patch b;
@@ -16,7 +16,7 @@ int conedata_fill(float *out, const bez_model *m, render_method method)
         if ((method == RENDER_TCONE ? cone_tcone(&b, &c) : cone_ncone(&b, &c)) != CONE_OK)
             return -1;
         for (int i = 0; i < 3; i++) {
-            o[i] = (float)c.axis[i];
+            o[i] = (float)(inward ? -c.axis[i] : c.axis[i]);
             o[4 + i] = (float)c.center[i];
         }
         o[3] = c.usable ? (float)c.alpha : -1.0f;

@@ -85,11 +85,12 @@ static void draw(render_gpu *g, const render_cam *view, float tess, int overview
     VkRenderPassBeginInfo rb;
     VkBuffer vb[2] = {g->clip.buf, g->world.buf};
     VkBufferImageCopy copy;
-    struct { float mvp[16], eye[4], tess; uint32_t mode; } gp;
+    struct { float mvp[16], eye[4], tess; uint32_t mode; float orient; } gp;
     memcpy(gp.mvp, view->mvp, sizeof gp.mvp);
     memcpy(gp.eye, view->eye, sizeof gp.eye);
     gp.tess = tess;
     gp.mode = overview ? 1u : 0u;
+    gp.orient = g->inward ? -1.0f : 1.0f;
     memset(clear, 0, sizeof clear);
     clear[0].color.float32[0] = clear[0].color.float32[1] = clear[0].color.float32[2] = 1.0f;
     clear[0].color.float32[3] = 1.0f;

@@ -4,9 +4,10 @@
 
 #include <string.h>
 
-/* The triangles the tessellator emits for layout(quads, ccw) face the eye, in framebuffer
- * coordinates, when dB/du x dB/dv does (Vulkan's tessellation domain origin is upper left). */
-#define RENDER_FRONT_FACE VK_FRONT_FACE_CLOCKWISE
+/* The triangles the tessellator emits for layout(quads, ccw) are clockwise in framebuffer
+ * coordinates where dB/du x dB/dv faces the eye (Vulkan's tessellation domain origin is upper
+ * left); the other way round for inward models. */
+#define RENDER_FRONT_FACE(inward) ((inward) ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE)
 
 /* The vertex input: binding 0 the clip-space points, binding 1 the world points, one vec4 each. */
 static void vertex_input(VkPipelineVertexInputStateCreateInfo *vi,
@@ -47,7 +48,7 @@ typedef struct gfx_state {
     VkPipelineColorBlendStateCreateInfo cb;
 } gfx_state;
 
-static void fixed_state(gfx_state *s, uint32_t w, uint32_t h)
+static void fixed_state(gfx_state *s, uint32_t w, uint32_t h, int inward)
 {
     memset(s, 0, sizeof *s);
     vertex_input(&s->vi, s->vb, s->va);
@@ -68,7 +69,7 @@ static void fixed_state(gfx_state *s, uint32_t w, uint32_t h)
     s->rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
     s->rs.polygonMode = VK_POLYGON_MODE_FILL;
     s->rs.cullMode = VK_CULL_MODE_BACK_BIT;
-    s->rs.frontFace = RENDER_FRONT_FACE;
+    s->rs.frontFace = RENDER_FRONT_FACE(inward);
     s->rs.lineWidth = 1.0f;
     s->ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
     s->ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
@@ -91,7 +92,7 @@ int render_gfx_pipeline(render_gpu *g, const VkShaderModule mod[4], char *err)
     VkPipelineShaderStageCreateInfo st[4];
     VkGraphicsPipelineCreateInfo ci;
     gfx_state s;
-    fixed_state(&s, g->w, g->h);
+    fixed_state(&s, g->w, g->h, g->inward);
     memset(st, 0, sizeof st);
     for (int i = 0; i < 4; i++) {
         st[i].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;

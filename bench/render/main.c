@@ -28,7 +28,7 @@ static int cameras(const cli_opts *o, const bez_model *m, render_cam *cam, rende
         ov->eye[i] = (float)w.eye[i];
     }
     cam->eye[3] = ov->eye[3] = 1.0f;
-    cam->alpha = (float)(o->flip_alpha ? -v.alpha : v.alpha);
+    cam->alpha = (float)((o->flip_alpha != o->inward) ? -v.alpha : v.alpha);
     ov->alpha = (float)w.alpha;
     return 0;
 }
@@ -47,14 +47,15 @@ static double median(double *v, unsigned n)
 }
 
 /* Writes the clip-space points and classes of the last frame: "PTPCLIP1", uint32 patches,
- * float alpha, double eye[3], float points[patches*16*4], uint32 classes[patches]. */
+ * float alpha, uint32 inward, double eye[3], float points[patches*16*4],
+ * uint32 classes[patches]. */
 static int dump(const render_gpu *g, const render_cam *cam, const char *path, char *err)
 {
     FILE *f = fopen(path, "wb");
-    uint32_t n = g->npatches;
+    uint32_t n = g->npatches, inward = (uint32_t)g->inward;
     double eye[3] = {cam->eye[0], cam->eye[1], cam->eye[2]};
     int ok = f && fwrite("PTPCLIP1", 1, 8, f) == 8 && fwrite(&n, 4, 1, f) == 1 &&
-             fwrite(&cam->alpha, 4, 1, f) == 1 && fwrite(eye, 8, 3, f) == 3 &&
+             fwrite(&cam->alpha, 4, 1, f) == 1 && fwrite(&inward, 4, 1, f) == 1 && fwrite(eye, 8, 3, f) == 3 &&
              fwrite(g->clip.map, 16 * 16, n, f) == n && fwrite(g->cls.map, 4, n, f) == n;
     if (f && fclose(f))
         ok = 0;
@@ -83,9 +84,9 @@ static void times_of(const render_stats *s, double t[MAIN_NTIMES])
 static void print_line(const render_gpu *g, const cli_opts *o, const render_cam *cam,
                        const render_stats *s, unsigned culled, double *t)
 {
-    printf("model=%s method=%s%s tess=%g size=%ux%u frames=%u patches=%u culled=%u "
+    printf("model=%s method=%s%s orientation=%s tess=%g size=%ux%u frames=%u patches=%u culled=%u "
            "tcs_patches=%llu tes_invocations=%llu clip_primitives=%llu",
-           o->model, o->method_name, o->flip_alpha ? "+flip-alpha" : "", o->tess, g->w, g->h,
+           o->model, o->method_name, o->flip_alpha ? "+flip-alpha" : "", o->inward ? "in" : "out", o->tess, g->w, g->h,
            o->frames, g->npatches, culled, (unsigned long long)s->tcs_patches,
            (unsigned long long)s->tes_invocations, (unsigned long long)s->clip_primitives);
     for (int k = 0; k < MAIN_NTIMES; k++)
@@ -136,7 +137,7 @@ static float *cones(const cli_opts *o, const bez_model *m, char *err)
     float *c;
     if (o->method != RENDER_TCONE && o->method != RENDER_NCONE)
         return NULL;
-    if (!(c = malloc(m->npatches * 8 * sizeof *c)) || conedata_fill(c, m, o->method)) {
+    if (!(c = malloc(m->npatches * 8 * sizeof *c)) || conedata_fill(c, m, o->method, o->inward)) {
         free(c);
         vkx_fail(err, "cannot compute the cones of %s", o->model);
         return NULL;
@@ -167,6 +168,7 @@ int main(int argc, char **argv)
     g.w = o.w;
     g.h = o.h;
     g.method = o.method;
+    g.inward = o.inward;
     if (cameras(&o, &m, &cam, &ov, err) ||
         ((o.method == RENDER_TCONE || o.method == RENDER_NCONE) && !(cd = cones(&o, &m, err))) ||
         vkx_open(&g.vk, o.device, err) || render_resources(&g, &m, cd, err) ||

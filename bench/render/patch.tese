@@ -1,6 +1,6 @@
 /* patch.tese: evaluates the bicubic patch (point k = i*4 + j, i along u = gl_TessCoord.x): the
  * position from the clip-space points (the frame) or from the world points and the overview's
- * mvp, and the normal dB/du x dB/dv from the world points. */
+ * mvp, and the normal dB/du x dB/dv (negated for inward models) from the world points. */
 #version 450
 #extension GL_GOOGLE_include_directive : require
 layout(quads, equal_spacing, ccw) in;
@@ -38,7 +38,7 @@ void main()
             pv += bu[i] * dv[j] * c_world[k];
         }
     gl_Position = mode == 0u ? clip : ov_mvp * vec4(p, 1.0);
-    e_normal = cross(pu, pv);
+    e_normal = orient * cross(pu, pv);
     e_pos = p;
     e_decision = c_decision;
     e_exact = c_exact;

@@ -17,13 +17,13 @@ typedef enum render_method {
 
 /* Bytes of the compute and of the graphics push constants. */
 #define RENDER_CPUSH 80u
-#define RENDER_GPUSH 88u
+#define RENDER_GPUSH 92u
 
 /* One camera's per-draw inputs. */
 typedef struct render_cam {
     float mvp[16];   /* column-major, clip = mvp * world */
     float eye[4];    /* world eye (w = 1), for the headlight and the cone test */
-    float alpha;     /* the ptp kernels' clip-space eye (0, 0, alpha, 0) */
+    float alpha;     /* the ptp kernels' clip-space eye (0, 0, alpha, 0), negated for inward */
 } render_cam;
 
 /* Everything on the GPU. Zero-initialise, then render_resources and render_pipelines. */
@@ -31,6 +31,7 @@ typedef struct render_gpu {
     vkx vk;
     uint32_t w, h, npatches;
     render_method method;
+    int inward;           /* dB/dv x dB/du faces out: front faces wound the other way */
     vkx_buf world, clip, cls, exact, cones, pixels;
     VkImage color, depth;
     VkDeviceMemory color_mem, depth_mem;
