@@ -1,27 +1,31 @@
-/* render_check.c: checks build/render's cull passes from its --dump-clip files: the ptp kernels'
- * classes against ptpgen's C header (classify_batch) on the same clip-space floats, and the
- * TCONE / NCONE shader's culled set against bench/cones.c on the same model and eye (the cone's
- * axis negated for --orientation in).
+/* render_check.c: checks build/render's cull passes on its --dump-clip files: the ptp kernels'
+ * classes against the kernel tests' double reference (kref) and against ptpgen's C header
+ * (classify_batch) on the same clip-space floats, and the TCONE / NCONE shader's culled set
+ * against bench/cones.c on the same model and eye (the axis negated for --orientation in).
  *
- *   render_check ptp|ptp-certified DUMP          (compiled with rc_s.h and rc_c.h: ptpgen's
- *   render_check tcone|ncone DUMP MODEL.bez       clip-space C headers, strict and certified)
+ *   render_check ptp|ptp-certified DUMP LABEL      (compiled with rc_s.h and rc_c.h, ptpgen's
+ *   render_check tcone|ncone DUMP MODEL.bez LABEL   clip-space C headers, strict and certified,
+ *                                                   and linked with libptptest.a)
  *
- * Prints "# ..." with the counts and exits 0 when the culled sets agree, 1 otherwise, 2 for
- * bad input. */
+ * Prints "ok - LABEL: ..." / "not ok - ..." lines; exits 0 when every check passed, 1 when one
+ * failed, 2 for bad input. */
 #include "bez.h"
+#include "check.h"
 #include "cones.h"
+#include "kref.h"
 
 #define RC_S_IMPLEMENTATION
 #include "rc_s.h"
 #define RC_C_IMPLEMENTATION
 #include "rc_c.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* A dump of build/render (main.c's format). */
+/* A dump of build/render (bench/render/main.c's format). */
 typedef struct dump {
     uint32_t n;
     float alpha;
@@ -52,91 +56,131 @@ static int read_dump(dump *d, const char *path)
     return ok ? 0 : -1;
 }
 
-/* Compares the culled sets (class 1) of the renderer (gpu) and the reference (ref); prints
- * the counts; returns the number of patches where they differ. */
-static size_t compare(const char *what, const uint32_t *gpu, const unsigned char *ref,
-                      uint32_t n)
+/* 1 when some plane of patch p has its double reference value within its float bound of zero
+ * (the kernel tests' ambiguity: either class is a correct float answer). */
+static int ambiguous(const kref_ref *r, const kref_set *s, size_t p)
 {
-    size_t g = 0, r = 0, only_gpu = 0, only_ref = 0;
-    for (uint32_t p = 0; p < n; p++) {
-        g += gpu[p] == 1;
-        r += ref[p] == 1;
-        only_gpu += gpu[p] == 1 && ref[p] != 1;
-        only_ref += gpu[p] != 1 && ref[p] == 1;
-        if ((gpu[p] == 1) != (ref[p] == 1) && only_gpu + only_ref <= 5)
-            printf("# %s: patch %u: renderer class %u, reference %u\n", what, p, gpu[p], ref[p]);
-    }
-    printf("# %s: patches=%u renderer_culled=%zu reference_culled=%zu only_renderer=%zu "
-           "only_reference=%zu\n",
-           what, n, g, r, only_gpu, only_ref);
-    return only_gpu + only_ref;
+    double d[64], bound[64];
+    kref_values(r, s, p, d, bound);
+    for (int i = 0; i < r->L; i++)
+        if (bound[i] > 0 && fabs(d[i]) <= bound[i])
+            return 1;
+    return 0;
 }
 
-static int check_ptp(const dump *d, int certified)
+/* The renderer's classes against classify_batch: culls the same patches, or (certified: the
+ * header also certifies in double, the GPU in float only) among the header's culls; every other
+ * difference must be ambiguous. */
+static int against_header(const kref_ref *r, const kref_set *s, const unsigned *cls,
+                          int certified, const char *label)
 {
-    const float eye[4] = {0, 0, d->alpha, 0};
-    unsigned char *ref = malloc(d->n);
-    size_t bad;
+    unsigned char *ref = malloc(s->count);
+    size_t g = 0, h = 0, differ = 0, unexplained = 0, first = SIZE_MAX;
     if (!ref)
-        return 2;
-    if (certified)
-        rc_c_classify_batch((const float(*)[4])d->cp, d->n, eye, ref);
-    else
-        rc_s_classify_batch((const float(*)[4])d->cp, d->n, eye, ref);
-    bad = compare(certified ? "ptp-certified vs classify_batch --certified"
-                            : "ptp vs classify_batch",
-                  d->cls, ref, d->n);
+        return check(0, label, "out of memory");
+    (certified ? rc_c_classify_batch : rc_s_classify_batch)((const float(*)[4])s->cp, s->count,
+                                                            s->eye, ref);
+    for (size_t p = 0; p < s->count; p++) {
+        int mine = cls[p] == 1, theirs = ref[p] == 1;
+        g += mine;
+        h += theirs;
+        if (mine == theirs || (certified && !mine))
+            continue;
+        differ++;
+        if (!ambiguous(r, s, p) && !unexplained++)
+            first = p;
+    }
     free(ref);
-    return bad ? 1 : 0;
+    return check(!unexplained, label,
+                 "renderer %zu, header %zu, %zu differ, %zu not within float ambiguity (first: "
+                 "patch %zu)",
+                 g, h, differ, unexplained, first) &&
+           printf("# culled: renderer %zu, classify_batch%s %zu; %zu differ, all within float "
+                  "ambiguity\n",
+                  g, certified ? " --certified" : "", h, differ) > 0;
 }
 
-static int check_cone(const dump *d, const char *model, int tcone)
+static int check_ptp(const dump *dm, int certified, const char *label)
+{
+    kref_ref r;
+    kref_result res;
+    ptp_error err;
+    kref_set s;
+    unsigned *cls = malloc((size_t)dm->n * sizeof *cls);
+    char name[400];
+    int ok;
+    memset(&err, 0, sizeof err);
+    memset(&res, 0, sizeof res);
+    if (!cls || kref_init(&r, 3, 3, KREF_CLIP, KREF_STRICT, &err))
+        return check(0, label, "kref_init: %s", err.msg);
+    r.certified = certified;
+    memset(&s, 0, sizeof s);
+    snprintf(s.name, sizeof s.name, "dump");
+    s.count = dm->n;
+    s.K = 16;
+    s.cp = dm->cp;
+    s.eye[2] = dm->alpha;
+    for (uint32_t p = 0; p < dm->n; p++)
+        cls[p] = dm->cls[p];
+    kref_check(&res, &r, &s, cls, NULL);
+    ok = kref_report(&res, label);
+    snprintf(name, sizeof name, "%s: culls what classify_batch%s culls on the same points", label,
+             certified ? " --certified" : "");
+    ok = against_header(&r, &s, cls, certified, name) && ok;
+    kref_clear(&r);
+    free(cls);
+    return ok;
+}
+
+static int check_cone(const dump *d, const char *model, int tcone, const char *label)
 {
     bez_model m;
-    char err[512];
-    unsigned char *ref;
-    size_t bad = 0;
+    char err[512], name[400];
+    size_t g = 0, c = 0, differ = 0, first = SIZE_MAX;
     if (bez_read(&m, model, err, sizeof err) || m.npatches != d->n) {
-        fprintf(stderr, "render_check: %s\n", m.pts ? "patch count differs" : err);
         bez_free(&m);
-        return 2;
+        return check(0, label, "%s", m.pts ? "the patch count differs from the dump's" : err);
     }
-    if (!(ref = malloc(m.npatches * sizeof *ref)))
-        return 2;
-    for (size_t p = 0; p < m.npatches && !bad; p++) {
+    for (size_t p = 0; p < m.npatches; p++) {
         cone_patch b;
-        cone_bound c;
+        cone_bound cb;
+        int mine = d->cls[p] == 1, theirs;
         for (int k = 0; k < 16; k++)
             for (int i = 0; i < 3; i++)
                 b.p[k][i] = m.pts[(p * 16 + (size_t)k) * 3 + (size_t)i];
-        bad = (tcone ? cone_tcone(&b, &c) : cone_ncone(&b, &c)) != CONE_OK;
+        if ((tcone ? cone_tcone(&b, &cb) : cone_ncone(&b, &cb)) != CONE_OK)
+            cb.usable = 0;
         for (int i = 0; i < 3 && d->inward; i++)
-            c.axis[i] = -c.axis[i];
-        ref[p] = cone_cull(&c, d->eye) ? 1 : 2;
+            cb.axis[i] = -cb.axis[i];
+        theirs = cone_cull(&cb, d->eye);
+        g += mine;
+        c += theirs;
+        if (mine != theirs && !differ++)
+            first = p;
     }
-    if (!bad)
-        bad = compare(tcone ? "tcone vs bench/cones.c" : "ncone vs bench/cones.c", d->cls, ref,
-                      d->n);
-    free(ref);
     bez_free(&m);
-    return bad ? 1 : 0;
+    snprintf(name, sizeof name, "%s: culls what bench/cones.c's %s culls (%zu of %u)", label,
+             tcone ? "TCONE" : "NCONE", c, d->n);
+    return check(!differ, name, "renderer %zu, cones.c %zu, %zu differ (first: patch %zu)", g, c,
+                 differ, first);
 }
 
 int main(int argc, char **argv)
 {
     dump d;
-    int rc;
-    if (argc < 3 || read_dump(&d, argv[2])) {
-        fprintf(stderr, "usage: render_check ptp|ptp-certified DUMP | tcone|ncone DUMP MODEL "
-                        "(a readable build/render --dump-clip file)\n");
+    int ok = 0, rc = 2;
+    if (argc < 4 || read_dump(&d, argv[2])) {
+        fprintf(stderr, "usage: render_check ptp|ptp-certified DUMP LABEL | tcone|ncone DUMP "
+                        "MODEL LABEL (DUMP: a build/render --dump-clip file)\n");
         return 2;
     }
-    if (!strcmp(argv[1], "ptp") || !strcmp(argv[1], "ptp-certified"))
-        rc = check_ptp(&d, argv[1][3] == '-');
-    else if ((!strcmp(argv[1], "tcone") || !strcmp(argv[1], "ncone")) && argc == 4)
-        rc = check_cone(&d, argv[3], argv[1][0] == 't');
-    else
-        rc = 2;
+    if ((!strcmp(argv[1], "ptp") || !strcmp(argv[1], "ptp-certified")) && argc == 4) {
+        ok = check_ptp(&d, argv[1][3] == '-', argv[3]);
+        rc = ok ? 0 : 1;
+    } else if ((!strcmp(argv[1], "tcone") || !strcmp(argv[1], "ncone")) && argc == 5) {
+        ok = check_cone(&d, argv[3], argv[1][0] == 't', argv[4]);
+        rc = ok ? 0 : 1;
+    }
     free(d.cp);
     free(d.cls);
     return rc;

@@ -73,6 +73,9 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/test_kernels.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_kernels.sh
 fi
 
+# build/render: the GLSL kernels culling patches before a tessellation pipeline on lavapipe.
+run tests/test_render.sh env CC=gcc bash tests/test_render.sh
+
 passed=$(grep -c '^ok - ' "$log")
 failed=$(grep -c '^not ok - ' "$log")
 echo "$passed passed, $failed failed"

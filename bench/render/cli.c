@@ -58,10 +58,22 @@ static int parse_method(cli_opts *o, const char *s)
     return -1;
 }
 
-/* The value of one option (name, its argument s) into o; -1 when s is malformed. */
+static const char *const option_names[] = {
+    "--model", "--eye", "--target", "--up", "--fov", "--tess", "--cull", "--orientation",
+    "--size", "--frames", "--png", "--overview", "--dump-clip", "--device"};
+
+/* The value of one option (name, its argument s) into o: 0, or -1 when s is malformed, -2 for
+ * an unknown option, -3 for a missing argument (s NULL). */
 static int option(cli_opts *o, const char *name, const char *s)
 {
     unsigned dev;
+    size_t known = 0;
+    while (known < sizeof option_names / sizeof *option_names && strcmp(name, option_names[known]))
+        known++;
+    if (known == sizeof option_names / sizeof *option_names)
+        return -2;
+    if (!s)
+        return -3;
     if (!strcmp(name, "--model"))
         o->model = s;
     else if (!strcmp(name, "--eye"))
@@ -95,10 +107,8 @@ static int option(cli_opts *o, const char *name, const char *s)
         o->overview = s;
     else if (!strcmp(name, "--dump-clip"))
         o->dump = s;
-    else if (!strcmp(name, "--device"))
+    else /* --device */
         return parse_ulong(s, 0, 1000, &dev) ? -1 : (o->device = (int)dev, 0);
-    else
-        return -2;
     return 0;
 }
 
@@ -127,10 +137,9 @@ int cli_parse(cli_opts *o, int argc, char **argv, char *err, size_t errsz)
             o->flip_alpha = 1;
             continue;
         }
-        if (i + 1 >= argc || (r = option(o, argv[i], argv[i + 1])) == -2) {
-            snprintf(err, errsz, i + 1 >= argc && !strncmp(argv[i], "--", 2)
-                                     ? "option %s needs a value"
-                                     : "unknown option %s",
+        r = option(o, argv[i], i + 1 < argc ? argv[i + 1] : NULL);
+        if (r == -2 || r == -3) {
+            snprintf(err, errsz, r == -2 ? "unknown option %s" : "option %s needs a value",
                      argv[i]);
             return 2;
         }

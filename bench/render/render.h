@@ -73,8 +73,8 @@ int render_gfx_pipeline(render_gpu *g, const VkShaderModule mod[4], char *err);
 
 /* Records and runs one frame from cam with factor tess (mode 0) or the overview from ov
  * classified for cam (mode 1) as three submissions, each waited for: the transform pass, the
- * cull pass, the draw (lavapipe's timestamps do not see compute work, so each pass is also
- * timed on the wall clock). Fills *s. The image is then in g->pixels, the classes in g->cls
+ * cull pass, the draw (on lavapipe, timestamps in one submission with the draw did not bracket
+ * the compute work before it; each submission is also timed on the wall clock). Fills *s. The image is then in g->pixels, the classes in g->cls
  * (and g->exact after the overview). */
 int render_frame(render_gpu *g, const render_cam *cam, const render_cam *ov, float tess,
                  int overview, render_stats *s, char *err);
