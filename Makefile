@@ -165,7 +165,20 @@ $(RB)/ptp_groups.h: $(RB)/ptp.comp $(RB)/ptp_cert.comp
 	@test "$$(wc -l <$@.tmp)" = 2 || { echo "no PTP_3X3_Q in $(RB)/ptp*.comp"; exit 1; }
 	@mv $@.tmp $@
 
-.PHONY: render
+# `make figures`: build/render over tessellation factors 1 to 64 for every cull method on BigGuy
+# and the teapot (bench/render/figures.py): bench/figures/ gets the Figure-1 images, gnuplot plots
+# of frame time and tessellation work against the factor, and table.md. gnuplot comes from Debian
+# (installed when missing and run as root). FIGURES_ARGS=--quick for a short run.
+FIGURES_MODELS ?= ../shared/models
+FIGURES_ARGS ?=
+
+figures: build/render
+	@command -v gnuplot >/dev/null 2>&1 || { [ "$$(id -u)" = 0 ] && \
+	    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq gnuplot-nox >/dev/null; } || \
+	    { echo "figures: gnuplot is missing (apt-get install gnuplot-nox)"; exit 1; }
+	python3 bench/render/figures.py build/render $(FIGURES_MODELS) bench/figures $(FIGURES_ARGS)
+
+.PHONY: render figures
 
 # Fuzzing verify's parsers with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs
 # collect in build/fuzz/corpus; copy an input that fails into tests/fuzz/regressions/, which the

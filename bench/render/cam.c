@@ -47,7 +47,8 @@ static void mat_mul(cam_mat *r, const cam_mat *a, const cam_mat *b)
         }
 }
 
-double cam_det(const cam_mat *a)
+/* The determinant of a. */
+static double det4(const cam_mat *a)
 {
     double det = 0;
     for (int c = 0; c < 4; c++) { /* Laplace along row 0, 3x3 minors by the rule of Sarrus */
@@ -117,7 +118,7 @@ int cam_look(cam_view *c, const double eye[3], const double target[3], const dou
     proj_matrix(&c->proj, fov_deg, aspect, c->near, c->far);
     mat_mul(&c->mvp, &c->proj, &c->view);
     memcpy(c->eye, eye, sizeof c->eye);
-    det = cam_det(&c->proj);
+    det = det4(&c->proj);
     c->alpha = (det > 0 ? 1 : -1) * c->proj.m[2][3];
     return 0;
 }
@@ -135,7 +136,7 @@ int cam_overview(cam_view *ov, const cam_view *c, const double up[3], double asp
     if (unit3(side))
         memcpy(side, d, sizeof side);
     for (int i = 0; i < 3; i++)
-        eye[i] = 0.8 * side[i] + 0.2 * d[i] + 0.35 * u[i];
+        eye[i] = 0.8 * side[i] - 0.3 * d[i] + 0.35 * u[i];
     if (unit3(eye))
         return -1;
     if (aspect < 1)
@@ -150,10 +151,4 @@ void cam_to_gl(float out[16], const cam_mat *m)
     for (int c = 0; c < 4; c++)
         for (int r = 0; r < 4; r++)
             out[c * 4 + r] = (float)m->m[r][c];
-}
-
-void cam_apply(double out[4], const cam_mat *m, const double p[3])
-{
-    for (int r = 0; r < 4; r++)
-        out[r] = m->m[r][0] * p[0] + m->m[r][1] * p[1] + m->m[r][2] * p[2] + m->m[r][3];
 }

@@ -24,17 +24,12 @@ int cam_look(cam_view *c, const double eye[3], const double target[3], const dou
              double fov_deg, double aspect, const double center[3], double radius);
 
 /* The overview camera: looks at the sphere (center, radius) from the side of c's view
- * direction (a quarter turn about up, a little above), far enough to see the whole sphere. */
+ * direction (a quarter turn about up, a little behind and above), far enough to see the whole
+ * sphere. */
 int cam_overview(cam_view *ov, const cam_view *c, const double up[3], double aspect,
                  const double center[3], double radius);
 
-/* The determinant of m. */
-double cam_det(const cam_mat *m);
-
 /* out = m stored column-major as floats, the layout of a GLSL mat4. */
 void cam_to_gl(float out[16], const cam_mat *m);
-
-/* out = m * (p, 1), a clip-space point, in double. */
-void cam_apply(double out[4], const cam_mat *m, const double p[3]);
 
 #endif

@@ -13,7 +13,8 @@
 /* Dispatches enough workgroups of per items each for count items, in 2-D past the x limit. */
 static void dispatch(render_gpu *g, uint32_t count, uint32_t per)
 {
-    uint32_t groups = (count + per - 1) / per, maxx = g->vk.props.limits.maxComputeWorkGroupCount[0];
+    uint32_t groups = (count + per - 1) / per;
+    uint32_t maxx = g->vk.props.limits.maxComputeWorkGroupCount[0];
     uint32_t gx = groups < maxx ? groups : maxx;
     vkCmdDispatch(g->cmd, gx ? gx : 1, gx ? (groups + gx - 1) / gx : 1, 1);
 }
@@ -146,10 +147,12 @@ static void draw(render_gpu *g, const render_cam *view, float tess, int overview
             VK_ACCESS_HOST_READ_BIT);
 }
 
-static double now_ms(void)
+/* Milliseconds on clock (CLOCK_MONOTONIC, or CLOCK_PROCESS_CPUTIME_ID: every thread's CPU
+ * time, lavapipe's included). */
+static double clock_ms(clockid_t clock)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(clock, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec / 1e6;
 }
 
@@ -187,43 +190,47 @@ static int begin(render_gpu *g, char *err)
                : 0;
 }
 
-/* Ends g->cmd, submits it, waits for it; *ms = the wall time of submission and wait. */
-static int submit(render_gpu *g, double *ms, char *err)
+/* Ends g->cmd, submits it, waits for it; *ms and *cpu = the wall and CPU time of submission
+ * and wait. */
+static int submit(render_gpu *g, double *ms, double *cpu, char *err)
 {
     VkSubmitInfo si;
-    double t0;
+    double t0, c0;
     if (vkx_check(vkEndCommandBuffer(g->cmd), "vkEndCommandBuffer", err))
         return -1;
     memset(&si, 0, sizeof si);
     si.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
     si.commandBufferCount = 1;
     si.pCommandBuffers = &g->cmd;
-    t0 = now_ms();
+    t0 = clock_ms(CLOCK_MONOTONIC);
+    c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
     if (vkx_check(vkQueueSubmit(g->vk.queue, 1, &si, g->fence), "vkQueueSubmit", err) ||
         vkx_check(vkWaitForFences(g->vk.dev, 1, &g->fence, VK_TRUE, FRAME_TIMEOUT_NS),
                   "waiting for the frame (vkWaitForFences)", err))
         return -1;
-    *ms = now_ms() - t0;
+    *ms = clock_ms(CLOCK_MONOTONIC) - t0;
+    *cpu = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
     return vkx_check(vkResetFences(g->vk.dev, 1, &g->fence), "vkResetFences", err);
 }
 
 int render_frame(render_gpu *g, const render_cam *cam, const render_cam *ov, float tess,
                  int overview, render_stats *s, char *err)
 {
-    double t0 = now_ms();
+    double t0 = clock_ms(CLOCK_MONOTONIC), c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID), xform_cpu;
     if (begin(g, err))
         return -1;
     vkCmdResetQueryPool(g->cmd, g->ts, 0, 4);
     vkCmdResetQueryPool(g->cmd, g->stats, 0, 1);
     transform(g, cam);
-    if (submit(g, &s->xform_wall_ms, err) || begin(g, err))
+    if (submit(g, &s->xform_wall_ms, &xform_cpu, err) || begin(g, err))
         return -1;
     cull(g, cam, overview);
-    if (submit(g, &s->cull_wall_ms, err) || begin(g, err))
+    if (submit(g, &s->cull_wall_ms, &s->cull_cpu_ms, err) || begin(g, err))
         return -1;
     draw(g, overview ? ov : cam, tess, overview);
-    if (submit(g, &s->draw_wall_ms, err))
+    if (submit(g, &s->draw_wall_ms, &s->draw_cpu_ms, err))
         return -1;
-    s->frame_ms = now_ms() - t0;
+    s->frame_ms = clock_ms(CLOCK_MONOTONIC) - t0;
+    s->frame_cpu_ms = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
     return results(g, s, err);
 }

@@ -7,7 +7,8 @@
 /* The triangles the tessellator emits for layout(quads, ccw) are clockwise in framebuffer
  * coordinates where dB/du x dB/dv faces the eye (Vulkan's tessellation domain origin is upper
  * left); the other way round for inward models. */
-#define RENDER_FRONT_FACE(inward) ((inward) ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE)
+#define RENDER_FRONT_FACE(inward)                                                              \
+    ((inward) ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE)
 
 /* The vertex input: binding 0 the clip-space points, binding 1 the world points, one vec4 each. */
 static void vertex_input(VkPipelineVertexInputStateCreateInfo *vi,

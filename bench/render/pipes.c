@@ -25,10 +25,14 @@ static int modules(render_gpu *g, char *err)
         const uint32_t *code;
         size_t bytes;
     } spv[8] = {
-        {render_spv_xform, sizeof render_spv_xform}, {render_spv_cone, sizeof render_spv_cone},
-        {render_spv_ptp, sizeof render_spv_ptp},     {render_spv_ptp_cert, sizeof render_spv_ptp_cert},
-        {render_spv_vert, sizeof render_spv_vert},   {render_spv_tesc, sizeof render_spv_tesc},
-        {render_spv_tese, sizeof render_spv_tese},   {render_spv_frag, sizeof render_spv_frag},
+        {render_spv_xform, sizeof render_spv_xform},
+        {render_spv_cone, sizeof render_spv_cone},
+        {render_spv_ptp, sizeof render_spv_ptp},
+        {render_spv_ptp_cert, sizeof render_spv_ptp_cert},
+        {render_spv_vert, sizeof render_spv_vert},
+        {render_spv_tesc, sizeof render_spv_tesc},
+        {render_spv_tese, sizeof render_spv_tese},
+        {render_spv_frag, sizeof render_spv_frag},
     };
     for (int i = 0; i < 8; i++)
         if (vkx_shader(&g->vk, &g->mod[i], spv[i].code, spv[i].bytes, err))

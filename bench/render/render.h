@@ -56,6 +56,8 @@ typedef struct render_stats {
     double cull_ms, draw_ms;           /* GPU timestamps (-1 without them) */
     double xform_wall_ms, cull_wall_ms, draw_wall_ms; /* wall time of each submission */
     double frame_ms;                   /* wall time of the frame, recording included */
+    double cull_cpu_ms, draw_cpu_ms, frame_cpu_ms; /* the process's CPU time: on lavapipe, the
+                                                      work, whatever else the machine runs */
     uint64_t clip_primitives, tcs_patches, tes_invocations;
 } render_stats;
 
@@ -73,9 +75,9 @@ int render_gfx_pipeline(render_gpu *g, const VkShaderModule mod[4], char *err);
 
 /* Records and runs one frame from cam with factor tess (mode 0) or the overview from ov
  * classified for cam (mode 1) as three submissions, each waited for: the transform pass, the
- * cull pass, the draw (on lavapipe, timestamps in one submission with the draw did not bracket
- * the compute work before it; each submission is also timed on the wall clock). Fills *s. The image is then in g->pixels, the classes in g->cls
- * (and g->exact after the overview). */
+ * cull pass, the draw. Each is timed on the wall clock as well as by timestamps, because
+ * lavapipe's timestamps around a compute dispatch mostly read the same time. Fills *s. The
+ * image is then in g->pixels, the classes in g->cls (and g->exact after the overview). */
 int render_frame(render_gpu *g, const render_cam *cam, const render_cam *ov, float tess,
                  int overview, render_stats *s, char *err);
 

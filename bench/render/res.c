@@ -163,9 +163,10 @@ static int queries(render_gpu *g, char *err)
         return -1;
     q.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
     q.queryCount = 1;
-    q.pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT |
-                           VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT |
-                           VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT;
+    q.pipelineStatistics =
+        VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT |
+        VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT |
+        VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT;
     return vkx_check(vkCreateQueryPool(g->vk.dev, &q, NULL, &g->stats), "vkCreateQueryPool",
                      err) ||
                    vkx_check(vkAllocateCommandBuffers(g->vk.dev, &cbai, &g->cmd),
