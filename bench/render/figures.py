@@ -7,8 +7,10 @@ table.md with the numbers, and raw.txt with every output line.
   figures.py RENDER MODELS_DIR OUT_DIR [--quick]   (--quick: factors 1, 4, 16; one view; 1 frame)
 """
 import os
+import struct
 import subprocess
 import sys
+import zlib
 
 METHODS = ["none", "tcone", "ncone", "ptp", "ptp-certified"]
 FACTORS = [1, 2, 4, 8, 16, 32, 64]
@@ -64,8 +66,8 @@ def plot(rows, out, factors, frames):
                 cols = ("%.3f %.0f" % (rows[(name, m, t)]["frame_cpu_ms"],
                                        rows[(name, m, t)]["tes_invocations"]) for m in METHODS)
                 f.write("%d %s\n" % (t, " ".join(cols)))
-        for what, col, ylabel in (("frame_ms", 0, "CPU time of a frame (ms, median of %d)" % frames),
-                                  ("tes", 1, "tessellation evaluation invocations")):
+        for what, col, ylabel in (("frame_ms", 0, "CPU time of a frame (ms, median of %d)"
+                                   % frames), ("tes", 1, "tessellation evaluation invocations")):
             curves = ", ".join("'%s' using 1:%d with linespoints title '%s'"
                                % (dat, 2 + 2 * i + col, m) for i, m in enumerate(METHODS))
             script = ("set terminal pngcairo size 720,480 noenhanced\n"
@@ -109,15 +111,35 @@ def table(rows, out, factors, views, frames):
         f.write("\n".join(lines))
 
 
+def compress_png(path):
+    """Rewrites build/render's PNG (stored zlib blocks) with its IDAT deflated: the same pixels,
+    a twentieth of the bytes in the repository."""
+    data = open(path, "rb").read()
+    pos, chunks = 8, []
+    while pos < len(data):
+        (n,) = struct.unpack(">I", data[pos:pos + 4])
+        chunks.append((data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]))
+        pos += 12 + n
+    idat = zlib.compress(zlib.decompress(b"".join(b for k, b in chunks if k == b"IDAT")), 9)
+    with open(path, "wb") as f:
+        f.write(data[:8])
+        for kind, body in [c for c in chunks if c[0] == b"IHDR"] + [(b"IDAT", idat),
+                                                                      (b"IEND", b"")]:
+            f.write(struct.pack(">I", len(body)) + kind + body +
+                    struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF))
+
+
 def figure1(render, models, out):
     """BigGuy from its first view at factor 8: the image, and per method the overview."""
     path, extra, eyes = MODELS["bigguy"]
     base = ["--model", os.path.join(models, path), "--eye", eyes[0], "--tess", "8",
             "--size", SIZE, "--frames", "1"] + extra
-    run(render, base + ["--cull", "none", "--png", os.path.join(out, "fig1_bigguy_image.png")])
-    for m in METHODS[1:]:
-        run(render, base + ["--cull", m, "--overview",
-                            os.path.join(out, "fig1_bigguy_%s.png" % m)])
+    paths = [os.path.join(out, "fig1_bigguy_%s.png" % m) for m in ["image"] + METHODS[1:]]
+    run(render, base + ["--cull", "none", "--png", paths[0]])
+    for m, path in zip(METHODS[1:], paths[1:]):
+        run(render, base + ["--cull", m, "--overview", path])
+    for path in paths:
+        compress_png(path)
 
 
 def main():
