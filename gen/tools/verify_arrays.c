@@ -215,11 +215,10 @@ static void match_slots(chk *c, long *row, rkey *by, char *used)
     }
 }
 
-/* sched_iwgt[s] is iwgt of the slot's term (DENOM times its weight without iwgt), 0 for padding. */
+/* sched_iwgt[s] / DENOM is the weight of slot s: its term's (row[s]), else its sched_wgt. */
 static void check_sched_iwgt(chk *c, const long *row)
 {
-    const verify_array *a = arr(c, VERIFY_SCHED_IWGT), *iw = arr(c, VERIFY_IWGT);
-    const verify_array *sw = &c->d->arr[VERIFY_SCHED_WGT];
+    const verify_array *a = arr(c, VERIFY_SCHED_IWGT), *sw = &c->d->arr[VERIFY_SCHED_WGT];
     char g[RAT_STRLEN + 32], h[RAT_STRLEN + 32];
     size_t s;
     if (!a)
@@ -237,13 +236,10 @@ static void check_sched_iwgt(chk *c, const long *row)
         const verify_weight *want = row[s] >= 0 ? &c->d->terms[row[s]].w : &sw->e[s].w;
         int ok = iwgt_value(&q.r, c, &a->e[s]);
         q.d = rat_get_d(&q.r);
-        if (ok && row[s] >= 0 && iw && iw->n == c->d->nterms)
-            ok = same_weight(&a->e[s].w, &iw->e[row[s]].w);
-        else if (ok)
-            ok = same_weight(&q, want);
-        if (!ok)
-            problem(c, a->e[s].line, "wrong sched_iwgt[%zu] = %s: expected DENOM * %s", s,
-                    verify_weight_str(g, &a->e[s].w), verify_weight_str(h, want));
+        if (!ok || !same_weight(&q, want))
+            problem(c, a->e[s].line, "wrong sched_iwgt[%zu] = %s: expected DENOM %ld times the "
+                                     "slot's weight %s", s, verify_weight_str(g, &a->e[s].w),
+                    c->d->denom.v, verify_weight_str(h, want));
     }
 }
 
