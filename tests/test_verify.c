@@ -930,6 +930,12 @@ static void test_arrays(void)
                    "(the arrays only: the code of its functions is not checked)");
     sbuf_clear(&c);
     sbuf_clear(&b);
+    if (check(render(&b, &t, 0), "render json", "2x2"))
+        expect_verdict("ptpgen's json: the terms checked, the other keys listed as ignored",
+                       verify_str(&b, "t.json", 0, 0), VERIFY_RIGHT, "t.json: checked: terms (76 "
+                       "terms); ignored: plane_degree, points, planes, plane_scale, schedule (JSON "
+                       "keys)\n");
+    sbuf_clear(&b);
     tp_clear(&t);
 }
 

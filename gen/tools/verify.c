@@ -332,6 +332,51 @@ static int is_unit(const scale *s)
     return s->exact && (s->r.num == 1 || s->r.num == -1) && s->r.den == 1;
 }
 
+/* Classifies the terms extra[0..nextra) without a counterpart, in the document's order: in the
+ * wrong plane when the same points with the same weight are missing from another plane, else
+ * extra; then the expected terms still not covered, missing. Returns the problem count. */
+static size_t classify_extra(ctx *c, const reading *r, char *covered, const size_t *extra,
+                             size_t nextra, pkey *by)
+{
+    const tp_term *x = c->x[r->which];
+    size_t i, problems = 0;
+    for (i = 0; i < c->nx; i++) {
+        by[i].q[0] = x[i].j;
+        by[i].q[1] = x[i].k;
+        by[i].q[2] = x[i].l;
+        by[i].plane = x[i].plane;
+        by[i].v = (long)i;
+    }
+    qsort(by, c->nx, sizeof *by, cmp_pkey);
+    for (i = 0; i < nextra; i++) {
+        const gterm *e = &c->g[extra[i]];
+        size_t lo = 0, hi = c->nx;
+        long found = -1;
+        if (e->g.d == 0) {
+            add_item(c, N_ZERO, line_of(c, extra[i]), extra[i], -1, 0);
+            continue;
+        }
+        while (lo < hi) { /* the first term with these points */
+            size_t mid = lo + (hi - lo) / 2;
+            if (cmp_key(0, by[mid].q, 0, e->q) < 0)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        for (; lo < c->nx && found < 0 && !cmp_key(0, by[lo].q, 0, e->q); lo++)
+            if (!covered[by[lo].v] && weight_is(&e->g, &x[by[lo].v].w, &r->s))
+                found = by[lo].v;
+        if (found >= 0)
+            covered[found] = 1;
+        problems += add_item(c, found >= 0 ? P_PLANE : P_EXTRA, line_of(c, extra[i]), extra[i],
+                             found, 0);
+    }
+    for (i = 0; i < c->nx; i++)
+        if (!covered[i])
+            problems += add_item(c, P_MISSING, INT_MAX, 0, (long)i, 0);
+    return problems;
+}
+
 /* Classifies every term of the table under reading r into c->it; returns the problem count. */
 static size_t classify(ctx *c, const reading *r, char *covered, size_t *extra, pkey *by)
 {
@@ -372,44 +417,9 @@ static size_t classify(ctx *c, const reading *r, char *covered, size_t *extra, p
         covered[v] = 1;
         i = j;
     }
-    /* Terms without a counterpart, in the document's order: in the wrong plane when the same
-     * points with the same weight are missing from another plane, else extra. */
-    for (i = 0; i < c->nx; i++) {
-        by[i].q[0] = x[i].j;
-        by[i].q[1] = x[i].k;
-        by[i].q[2] = x[i].l;
-        by[i].plane = x[i].plane;
-        by[i].v = (long)i;
-    }
-    qsort(by, c->nx, sizeof *by, cmp_pkey);
-    for (i = 0; i < nextra; i++) {
-        const gterm *e = &c->g[extra[i]];
-        size_t lo = 0, hi = c->nx;
-        long found = -1;
-        if (e->g.d == 0) {
-            add_item(c, N_ZERO, line_of(c, extra[i]), extra[i], -1, 0);
-            continue;
-        }
-        while (lo < hi) { /* the first term with these points */
-            size_t mid = lo + (hi - lo) / 2;
-            if (cmp_key(0, by[mid].q, 0, e->q) < 0)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        for (; lo < c->nx && found < 0 && !cmp_key(0, by[lo].q, 0, e->q); lo++)
-            if (!covered[by[lo].v] && weight_is(&e->g, &x[by[lo].v].w, &r->s))
-                found = by[lo].v;
-        if (found >= 0)
-            covered[found] = 1;
-        problems += add_item(c, found >= 0 ? P_PLANE : P_EXTRA, line_of(c, extra[i]), extra[i],
-                             found, 0);
-    }
-    for (i = 0; i < c->nx; i++)
-        if (!covered[i])
-            problems += add_item(c, P_MISSING, INT_MAX, 0, (long)i, 0);
-    return problems;
+    return problems + classify_extra(c, r, covered, extra, nextra, by);
 }
+
 
 /* Writes sign * s * v, exact where s is; with its decimal too when decimal is set and it is a
  * fraction. */

@@ -326,8 +326,8 @@ static void summary(chk *c)
     const verify_doc *d = c->d;
     char s[VERIFY_IGNORED_LEN + 64];
     if (d->ignored[0]) {
-        snprintf(s, sizeof s, "%s (unknown array%s)", d->ignored, strchr(d->ignored, ',') ? "s"
-                                                                                          : "");
+        snprintf(s, sizeof s, "%s (%s%s)", d->ignored, d->c_source ? "unknown array" : "JSON key",
+                 strchr(d->ignored, ',') ? "s" : "");
         list_add(&c->ignored, s);
     }
     if (d->nfunctions) {

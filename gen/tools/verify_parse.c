@@ -137,41 +137,17 @@ static void acc(ptp_u128 *u, int *ovf, unsigned base, unsigned v)
         *u += v;
 }
 
-/* Reads the literal s[0..n): a C integer literal (decimal, octal or hex, u/l suffixes; *integer
- * set) or a decimal floating literal (an optional f/l suffix). Returns 0, 1 when s is not such a
- * literal, 2 when it is longer than MAX_LITERAL. */
-static int number(verify_weight *w, int *integer, const char *s, size_t n)
+/* Sets w from the decimal floating literal s[0..n) (digits [. digits] [e[+-]digits] [fFlL],
+ * with '.' or an exponent; at most MAX_LITERAL characters); returns 0, or 1 when s is no such
+ * literal. Exact when every digit from the point position (after the exponent) on is 0 and the
+ * value is below EXACT_FLOAT_LIMIT. */
+static int float_literal(verify_weight *w, const char *s, size_t n)
 {
     ptp_u128 u = 0;
-    int ovf = 0, base = 10, point = 0, ndig = 0, any = 0;
+    int ovf = 0, point = 0, ndig = 0, any = 0;
     long e = 0, pp;
-    size_t i = 0, d0, k;
+    size_t i, k;
     char copy[MAX_LITERAL + 1];
-    double d = 0;
-    w->r.num = 0;
-    w->r.den = 1;
-    if (n > MAX_LITERAL)
-        return 2;
-    if (n >= 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X'))
-        base = 16, i = 2;
-    else if (n >= 1 && s[0] == '0')
-        base = 8;
-    d0 = i;
-    for (; i < n && digit_value(s[i]) < base; i++) {
-        acc(&u, &ovf, (unsigned)base, (unsigned)digit_value(s[i]));
-        d = d * base + digit_value(s[i]);
-    }
-    for (k = i; k < n && k - i < 3 && in_set(s[k], "uUlL"); k++)
-        ;
-    if (i > d0 && k == n) {
-        *integer = 1;
-        w->d = d;
-        w->exact = !ovf && !i128_from_mag(&w->r.num, 0, u);
-        w->r.den = 1;
-        return 0;
-    }
-    /* A decimal floating literal: digits [. digits] [e[+-]digits] [fFlL], with '.' or e. */
-    *integer = 0;
     for (i = 0; i < n && (is_digit(s[i]) || (s[i] == '.' && !point)); i++) {
         point |= s[i] == '.';
         any |= is_digit(s[i]);
@@ -199,12 +175,9 @@ static int number(verify_weight *w, int *integer, const char *s, size_t n)
     memcpy(copy, s, n);
     copy[n] = '\0';
     w->d = strtod(copy, NULL);
-    /* Exact when every digit from the point position pp (after the exponent) on is 0. */
     for (k = 0; k < n && s[k] != '.' && is_digit(s[k]); k++)
         ;
-    pp = (long)k + e;
-    u = 0;
-    ovf = 0;
+    pp = (long)k + e; /* the point position, after the exponent */
     w->exact = 1;
     for (k = 0; k < n && (is_digit(s[k]) || s[k] == '.'); k++) {
         if (s[k] == '.')
@@ -218,10 +191,40 @@ static int number(verify_weight *w, int *integer, const char *s, size_t n)
         acc(&u, &ovf, 10, 0);
     if (ovf || (double)u >= EXACT_FLOAT_LIMIT)
         w->exact = 0;
-    if (w->exact) {
+    if (w->exact)
         w->r.num = (ptp_i128)u;
-        w->r.den = 1;
+    return 0;
+}
+
+/* Reads the literal s[0..n): a C integer literal (decimal, octal or hex, u/l suffixes; *integer
+ * set) or a decimal floating literal (an optional f/l suffix). Returns 0, 1 when s is not such a
+ * literal, 2 when it is longer than MAX_LITERAL. */
+static int number(verify_weight *w, int *integer, const char *s, size_t n)
+{
+    ptp_u128 u = 0;
+    int ovf = 0, base = 10;
+    size_t i = 0, d0, k;
+    double d = 0;
+    w->r.num = 0;
+    w->r.den = 1;
+    if (n > MAX_LITERAL)
+        return 2;
+    if (n >= 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X'))
+        base = 16, i = 2;
+    else if (n >= 1 && s[0] == '0')
+        base = 8;
+    d0 = i;
+    for (; i < n && digit_value(s[i]) < base; i++) {
+        acc(&u, &ovf, (unsigned)base, (unsigned)digit_value(s[i]));
+        d = d * base + digit_value(s[i]);
     }
+    for (k = i; k < n && k - i < 3 && in_set(s[k], "uUlL"); k++)
+        ;
+    *integer = i > d0 && k == n;
+    if (!*integer)
+        return float_literal(w, s, n);
+    w->d = d;
+    w->exact = !ovf && !i128_from_mag(&w->r.num, 0, u);
     return 0;
 }
 
@@ -1045,78 +1048,88 @@ static int json_terms(rd *r, vec *terms)
     }
 }
 
+/* Reads the value of "degree" ([n, m]) into d. */
+static int json_degree(verify_doc *d, rd *r)
+{
+    int st;
+    d->degree_line = r->line;
+    d->degree_named = 1;
+    if (!(st = json_expect(r, '[', "opening \"degree\": [n, m]")) &&
+        !(st = json_int(r, &d->n, PTP_MAX_DEGREE, "the degree n")) &&
+        !(st = json_expect(r, ',', "in \"degree\": [n, m]")) &&
+        !(st = json_int(r, &d->m, PTP_MAX_DEGREE, "the degree m")) &&
+        !(st = json_expect(r, ']', "closing \"degree\": [n, m]")) && (d->n < 1 || d->m < 1))
+        st = fail_at(r, d->degree_line, "\"degree\" must be [n, m] with 1 <= n, m <= %d",
+                     PTP_MAX_DEGREE);
+    return st;
+}
+
+/* Reads one member "key": value of the document object at pos ('"'); seen[0] and seen[1]
+ * count the "terms" and "degree" members so far. Other keys are skipped and noted in d. */
+static int json_member(verify_doc *d, rd *r, vec *terms, int *seen)
+{
+    int st, kline = r->line;
+    char key[16];
+    size_t n;
+    if (at(r, r->pos) != '"')
+        return fail_at(r, kline, "expected a key string in the object");
+    if ((st = json_string(r, key, sizeof key, &n)) || (st = json_expect(r, ':', "after a key")))
+        return st;
+    json_ws(r);
+    if (n == 5 && !strcmp(key, "terms")) {
+        if (seen[0]++)
+            return fail_at(r, kline, "a second \"terms\"");
+        if (at(r, r->pos) != '[')
+            return fail_at(r, r->line, "\"terms\" must be an array");
+        return json_terms(r, terms);
+    }
+    if (n == 6 && !strcmp(key, "degree"))
+        return seen[1]++ ? fail_at(r, kline, "a second \"degree\"") : json_degree(d, r);
+    if (strcmp(key, "format") && strcmp(key, "generator") && strcmp(key, "command"))
+        note_ignored(d, key, strlen(key));
+    return json_skip(r, 1);
+}
+
+/* Reads the document object at pos ('{'). */
+static int json_object(verify_doc *d, rd *r, vec *terms, int *seen)
+{
+    int st;
+    r->pos++;
+    json_ws(r);
+    if (at(r, r->pos) == '}') {
+        r->pos++;
+        return PTP_OK;
+    }
+    for (;;) {
+        json_ws(r);
+        if ((st = json_member(d, r, terms, seen)))
+            return st;
+        json_ws(r);
+        if (at(r, r->pos) == '}') {
+            r->pos++;
+            return PTP_OK;
+        }
+        if ((st = json_expect(r, ',', "or '}' in the object")))
+            return st;
+    }
+}
+
 /* Reads a JSON document: an object with "terms" (and maybe "degree"), or the terms array. */
 static int parse_json(verify_doc *d, rd *r)
 {
     vec terms = {NULL, 0, 0};
-    int st = PTP_OK, seen_terms = 0, seen_degree = 0, line;
-    char key[16];
-    size_t n;
+    int st, seen[2] = {0, 0}, line;
     json_ws(r);
     line = r->line;
     if (at(r, r->pos) == '[') {
-        seen_terms = 1;
+        seen[0] = 1;
         st = json_terms(r, &terms);
     } else if (at(r, r->pos) != '{') {
         st = fail_at(r, line, "expected a JSON document");
     } else {
-        r->pos++;
-        json_ws(r);
-        if (at(r, r->pos) == '}')
-            r->pos++;
-        else
-            for (;;) {
-                int kline;
-                json_ws(r);
-                kline = r->line;
-                if (at(r, r->pos) != '"') {
-                    st = fail_at(r, kline, "expected a key string in the object");
-                    break;
-                }
-                if ((st = json_string(r, key, sizeof key, &n)) ||
-                    (st = json_expect(r, ':', "after a key")))
-                    break;
-                json_ws(r);
-                if (n == 5 && !strcmp(key, "terms")) {
-                    if (seen_terms++) {
-                        st = fail_at(r, kline, "a second \"terms\"");
-                        break;
-                    }
-                    if (at(r, r->pos) != '[') {
-                        st = fail_at(r, r->line, "\"terms\" must be an array");
-                        break;
-                    }
-                    st = json_terms(r, &terms);
-                } else if (n == 6 && !strcmp(key, "degree")) {
-                    if (seen_degree++) {
-                        st = fail_at(r, kline, "a second \"degree\"");
-                        break;
-                    }
-                    d->degree_line = r->line;
-                    d->degree_named = 1;
-                    if (!(st = json_expect(r, '[', "opening \"degree\": [n, m]")) &&
-                        !(st = json_int(r, &d->n, PTP_MAX_DEGREE, "the degree n")) &&
-                        !(st = json_expect(r, ',', "in \"degree\": [n, m]")) &&
-                        !(st = json_int(r, &d->m, PTP_MAX_DEGREE, "the degree m")) &&
-                        !(st = json_expect(r, ']', "closing \"degree\": [n, m]")) &&
-                        (d->n < 1 || d->m < 1))
-                        st = fail_at(r, d->degree_line, "\"degree\" must be [n, m] with 1 <= n, m "
-                                                        "<= %d", PTP_MAX_DEGREE);
-                } else {
-                    st = json_skip(r, 1);
-                }
-                if (st)
-                    break;
-                json_ws(r);
-                if (at(r, r->pos) == '}') {
-                    r->pos++;
-                    break;
-                }
-                if ((st = json_expect(r, ',', "or '}' in the object")))
-                    break;
-            }
+        st = json_object(d, r, &terms, seen);
     }
-    if (!st && !seen_terms)
+    if (!st && !seen[0])
         st = fail_at(r, line, "the JSON document has no \"terms\" array");
     if (!st) {
         json_ws(r);

@@ -64,7 +64,9 @@ typedef struct {
     int c_source;      /* read as C (else JSON) */
     verify_array arr[VERIFY_NARRAYS];
     verify_macro denom, threads;
-    char ignored[VERIFY_IGNORED_LEN]; /* the other arrays defined: "foo, bar" (cut short) */
+    char ignored[VERIFY_IGNORED_LEN]; /* the other arrays defined, or the JSON keys other than
+                                         terms, degree, format, generator and command: "foo, bar"
+                                         (cut short with "...") */
     int nfunctions, function_line;    /* function definitions, and the line of the first */
     int n, m;          /* the bidegree the document names, 0 when it names none: JSON "degree",
                           or an idx array named like ptp_2x3_idx */
