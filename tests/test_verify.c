@@ -861,6 +861,28 @@ static int replace_line(sbuf *out, const sbuf *b, const char *decl, int k, const
     return line;
 }
 
+/* out = b with every "from" (and its upper case, for the macros) replaced by "to". */
+static void rename_arrays(sbuf *out, const sbuf *b, const char *from, const char *to)
+{
+    char uf[32], ut[32];
+    const char *p = b->s;
+    size_t k, n = strlen(from);
+    for (k = 0; k <= n && k < sizeof uf; k++)
+        uf[k] = (char)(from[k] >= 'a' && from[k] <= 'z' ? from[k] - 32 : from[k]);
+    for (k = 0; k <= strlen(to) && k < sizeof ut; k++)
+        ut[k] = (char)(to[k] >= 'a' && to[k] <= 'z' ? to[k] - 32 : to[k]);
+    sbuf_init(out);
+    while (*p) {
+        int lower = !strncmp(p, from, n), upper = !strncmp(p, uf, n);
+        if (lower || upper) {
+            sbuf_puts(out, lower ? to : ut);
+            p += n;
+        } else {
+            sbuf_printf(out, "%c", *p++);
+        }
+    }
+}
+
 /* The generated table of (n, m) with everything appended. */
 static int render_plus(sbuf *b, const tp_table *t, const char *more)
 {
@@ -928,6 +950,12 @@ static void test_arrays(void)
     expect_verdict("... and the verdict says the functions are not checked",
                    verify_str(&c, "t.h", 0, 0), VERIFY_RIGHT,
                    "(the arrays only: the code of its functions is not checked)");
+    sbuf_clear(&c);
+    rename_arrays(&c, &b, "ptp_2x2_", "ptp_2x2_table_");
+    expect_verdict("arrays named ptp_2x2_table_idx and so on: matched by suffix, all checked",
+                   verify_str(&c, "t.h", 2, 2), VERIFY_RIGHT, "t.h: checked: idx, wgt (76 terms), "
+                   "iwgt with DENOM 12, sched_idx/sched_wgt/sched_iwgt (80 slots), owner (8 "
+                   "threads); ignored: nothing\n");
     sbuf_clear(&c);
     sbuf_clear(&b);
     if (check(render(&b, &t, 0), "render json", "2x2"))
