@@ -933,7 +933,8 @@ static void test_arrays(void)
     replace_line(&c, &b, "#define PTP_2X2_DENOM", 0, "");
     expect_verdict("no DENOM: iwgt is listed as ignored, the floats right to float precision",
                    verify_str(&c, "t.h", 0, 0), VERIFY_RIGHT,
-                   "ignored: iwgt (no DENOM macro to divide it by), sched_iwgt (no DENOM macro)\n"
+                   "ignored: iwgt (no DENOM macro of 1 or more to divide it by), sched_iwgt (no "
+                   "DENOM macro of 1 or more)\n"
                    "t.h: RIGHT: right to float precision (|error| <= 1/2 ulp)");
     sbuf_clear(&c);
     replace_line(&c, &b, "#define PTP_2X2_THREADS", 0, "");
@@ -965,6 +966,28 @@ static void test_arrays(void)
                        "keys)\n");
     sbuf_clear(&b);
     tp_clear(&t);
+}
+
+/* A schedule that runs a term twice, and one with padding that is right. */
+static void test_schedule(void)
+{
+    static const char twice[] =
+        "#define T_THREADS 2\nint t_idx[][4] = {{0, 0, 1, 2}, {1, 0, 1, 3}, {2, 0, 2, 3}, "
+        "{3, 1, 2, 3}};\nfloat t_wgt[] = {-1, -1, 1, 1};\nint t_owner[4] = {0, 1, 0, 1};\n"
+        "int t_sched_idx[][4] = {{0, 0, 1, 2}, {1, 0, 1, 3}, {2, 0, 2, 3}, {3, 1, 2, 3},\n"
+        "{0, 0, 1, 2}, {1, 0, 0, 0}};\nfloat t_sched_wgt[] = {-1, -1, 1, 1, -1, 0};\n";
+    char padded[sizeof twice];
+    char *p;
+    expect_line("a term scheduled twice", run_verify(twice, strlen(twice), "s.h", 0, 0), "s.h", 6,
+                "sched slot 4 {0, 0, 1, 2} repeats a slot before it: the term (line 2) is "
+                "scheduled twice");
+    memcpy(padded, twice, sizeof twice);
+    p = strstr(padded, "-1, 0};");
+    memcpy(p, " 0, 0};", 7);
+    expect_verdict("... and with that slot padding (weight 0, its thread's plane): right",
+                   run_verify(padded, strlen(padded), "s.h", 0, 0), VERIFY_RIGHT,
+                   "checked: idx, wgt (4 terms), sched_idx/sched_wgt (6 slots), owner (2 threads); "
+                   "ignored: nothing\ns.h: RIGHT: exact");
 }
 
 /* Straight-line code cannot be checked from its text: verify says so and names the vectors. */
@@ -1070,6 +1093,7 @@ int main(void)
     test_several();
     test_wrong_degree();
     test_arrays();
+    test_schedule();
     test_code();
     test_weights();
     test_convention();

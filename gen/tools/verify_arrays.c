@@ -75,11 +75,11 @@ static int iwgt_value(rat *q, const chk *c, const verify_term *e)
 static int check_iwgt_entry(chk *c, size_t x, const verify_term *e, const rat *want,
                             const char *known)
 {
-    char a[RAT_STRLEN + 32], b[RAT_STRLEN + 32];
+    char a[RAT_STRLEN + 32], b[RAT_STRLEN + 32], w[RAT_STRLEN];
     const verify_term *t = &c->d->terms[x];
     verify_weight q = {0, {0, 1}, 1, 0};
     if (!iwgt_value(&q.r, c, e)) {
-        problem(c, e->line, "iwgt[%zu] = %s is not an integer literal", x,
+        problem(c, e->line, "iwgt[%zu] = %s is not an integer literal of at most 10^9", x,
                 verify_weight_str(a, &e->w));
         return 0;
     }
@@ -87,7 +87,7 @@ static int check_iwgt_entry(chk *c, size_t x, const verify_term *e, const rat *w
     if (known[x] && !rat_equal(&q.r, &want[x])) {
         problem(c, e->line, "wrong iwgt[%zu]: got %s, so iwgt/DENOM = %s, but the exact weight of "
                             "the term on line %d is %s", x, verify_weight_str(a, &e->w),
-                rat_get_str(b, &q.r), t->line, rat_get_str(b + RAT_STRLEN / 2, &want[x]));
+                rat_get_str(b, &q.r), t->line, rat_get_str(w, &want[x]));
         return 0;
     }
     if (!same_weight(&q, &t->w)) {
@@ -110,8 +110,8 @@ static void check_iwgt(chk *c, int *exact, const rat *want, const char *known)
     *exact = 0;
     if (!a)
         return;
-    if (!c->d->denom.line) {
-        list_add(&c->ignored, "iwgt (no DENOM macro to divide it by)");
+    if (!c->d->denom.line || c->d->denom.v < 1) {
+        list_add(&c->ignored, "iwgt (no DENOM macro of 1 or more to divide it by)");
         return;
     }
     if (a->n != c->d->nterms) {
@@ -175,24 +175,31 @@ static long match_slot(chk *c, size_t s, const rkey *by, char *used)
     const verify_term *terms = c->d->terms, *e = &c->d->arr[VERIFY_SCHED_IDX].e[s];
     const verify_term *w = &c->d->arr[VERIFY_SCHED_WGT].e[s];
     char a[RAT_STRLEN + 32], b[RAT_STRLEN + 32];
-    size_t n = c->d->nterms, k, first;
+    size_t n = c->d->nterms, k, first, twice = n;
     rkey key;
     key_of(&key, e, 0);
-    for (k = first = lower(by, n, &key); k < n && !cmp_key4(&by[k], &key); k++)
-        if (!used[by[k].x] && same_weight(&terms[by[k].x].w, &w->w)) {
+    for (k = first = lower(by, n, &key); k < n && !cmp_key4(&by[k], &key); k++) {
+        if (!same_weight(&terms[by[k].x].w, &w->w))
+            continue;
+        if (!used[by[k].x]) {
             used[by[k].x] = 1;
             return (long)by[k].x;
         }
-    if (first == n || cmp_key4(&by[first], &key))
+        twice = by[k].x;
+    }
+    if (twice < n)
+        problem(c, e->line, "sched slot %zu {%d, %d, %d, %d} repeats a slot before it: the term "
+                            "(line %d) is scheduled twice", s, e->plane, e->p[0], e->p[1],
+                e->p[2], terms[twice].line);
+    else if (first == n || cmp_key4(&by[first], &key))
         problem(c, e->line, "sched slot %zu {%d, %d, %d, %d} with weight %s is no term of the idx "
                             "array", s, e->plane, e->p[0], e->p[1], e->p[2],
                 verify_weight_str(a, &w->w));
     else
         problem(c, w->line, "sched slot %zu {%d, %d, %d, %d}: weight %s, but the term (line %d) "
-                            "has weight %s%s", s, e->plane, e->p[0], e->p[1], e->p[2],
+                            "has weight %s", s, e->plane, e->p[0], e->p[1], e->p[2],
                 verify_weight_str(a, &w->w), terms[by[first].x].line,
-                verify_weight_str(b, &terms[by[first].x].w),
-                used[by[first].x] ? " and is scheduled already" : "");
+                verify_weight_str(b, &terms[by[first].x].w));
     return -1;
 }
 
@@ -223,8 +230,8 @@ static void check_sched_iwgt(chk *c, const long *row)
     size_t s;
     if (!a)
         return;
-    if (!c->d->denom.line) {
-        list_add(&c->ignored, "sched_iwgt (no DENOM macro)");
+    if (!c->d->denom.line || c->d->denom.v < 1) {
+        list_add(&c->ignored, "sched_iwgt (no DENOM macro of 1 or more)");
         return;
     }
     if (a->n != sw->n) {
@@ -271,7 +278,7 @@ static int check_sched(chk *c, long **row, ptp_error *err)
         return ptp_fail(err, PTP_ENOMEM, "out of memory checking %s", c->name);
     check_sched_iwgt(c, *row);
     snprintf(s, sizeof s, "sched_idx/sched_wgt%s (%zu slots)", arr(c, VERIFY_SCHED_IWGT) &&
-             c->d->denom.line ? "/sched_iwgt" : "", si->n);
+             c->d->denom.line && c->d->denom.v > 0 ? "/sched_iwgt" : "", si->n);
     list_add(&c->checked, s);
     return PTP_OK;
 }
