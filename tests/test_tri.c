@@ -1,6 +1,7 @@
 /* test_tri.c: the triangular patch tables against the mathematics, exactly.
  * cross4(B, B_u, B_v) of random integer patches at random rational (u, v) against the planes. */
 #include "check.h"
+#include "core/bez.h"
 #include "core/tplane.h"
 
 #include <stdlib.h>
@@ -225,16 +226,34 @@ static void test_counts(void)
                 "and (d+1)(d+2)/2 points", "%s", why);
 }
 
-/* Beyond the limit: PTP_ELIMIT with the limit named. */
-static void test_limit(void)
+/* Beyond the limit: PTP_ELIMIT with the limit named. The reduction fails loudly on a
+ * polynomial whose degree does not drop, and on a quad. */
+static void test_limits(void)
 {
     tp_domain dom;
     ptp_error err;
     char lim[16];
+    bez B, R;
     int st = tp_domain_init(&dom, TP_TRI, PTP_MAX_TRI_DEGREE + 1, 0, &err);
     snprintf(lim, sizeof lim, "limit %d ", PTP_MAX_TRI_DEGREE);
     check(st == PTP_ELIMIT && strstr(err.msg, lim), "a degree beyond PTP_MAX_TRI_DEGREE is refused",
           "status %d: %s", st, err.msg);
+    tp_domain_init(&dom, TP_TRI, 3, 3, &err);
+    bez_patch(&B, &dom, &err);
+    st = bez_reduce_tri(&R, &B, &err);
+    check(st == PTP_EINTERNAL && strstr(err.msg, "residual"),
+          "triangular degree reduction of a patch of full degree fails with a residual error",
+          "status %d: %s", st, err.msg);
+    if (st == PTP_OK)
+        bez_clear(&R);
+    bez_clear(&B);
+    tp_domain_init(&dom, TP_QUAD, 2, 2, &err);
+    bez_patch(&B, &dom, &err);
+    st = bez_reduce_tri(&R, &B, &err);
+    check(st == PTP_EINTERNAL, "triangular degree reduction refuses a quad", "status %d", st);
+    if (st == PTP_OK)
+        bez_clear(&R);
+    bez_clear(&B);
 }
 
 int main(void)
@@ -242,6 +261,6 @@ int main(void)
     test_degree1();
     test_exact();
     test_counts();
-    test_limit();
+    test_limits();
     return check_exit();
 }

@@ -24,20 +24,24 @@ static void usage_targets(sbuf *o)
 void cli_usage(sbuf *o)
 {
     sbuf_puts(o,
-        "usage: ptpgen --degree N|NxM [--target T] [--space clip|world] [--rule strict|degenerate]\n"
-        "              [--planes] [--certified] [--refine K] [--prefix NAME]\n"
-        "              [--threads-per-patch P] [--patches-per-block Q]\n"
+        "usage: ptpgen --degree N|NxM [--domain quad|triangle] [--target T] [--space clip|world]\n"
+        "              [--rule strict|degenerate] [--planes] [--certified] [--refine K]\n"
+        "              [--prefix NAME] [--threads-per-patch P] [--patches-per-block Q]\n"
         "              [-o FILE]\n"
         "       ptpgen verify FILE [--degree NxM] [-o REPORT]\n"
         "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world] [-o FILE]\n"
         "       ptpgen --help | help [verify|vectors] | --version | --list-targets\n"
         "\n"
         "Derives the exact control planes of the parametric tangent plane\n"
-        "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u) and\n"
-        "writes them, or a back-patch culling kernel built on them.\n"
-        "\n");
-    sbuf_printf(o, "  --degree N|NxM   patch bidegree, 1 <= N, M <= %d (N alone means NxN)\n",
-                PTP_MAX_DEGREE);
+        "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u) or of a\n"
+        "triangular Bezier patch of degree N, and writes them, or a back-patch culling kernel\n"
+        "built on them.\n"
+        "\n"
+        "  --domain D       quad (default): tensor-product patches; triangle: triangular\n"
+        "                   patches (targets: ptpgen --list-targets --domain triangle)\n");
+    sbuf_printf(o, "  --degree N|NxM   patch bidegree, 1 <= N, M <= %d (N alone means NxN);\n"
+                   "                   triangles: the degree N, 1 <= N <= %d\n",
+                PTP_MAX_DEGREE, PTP_MAX_TRI_DEGREE);
     usage_targets(o);
     sbuf_printf(o,
         "  --space S        clip (default): points in clip space, eye (0, 0, alpha, 0);\n"
@@ -49,7 +53,7 @@ void cli_usage(sbuf *o)
         "                   bound on its float rounding error (README: Certified classification)\n"
         "  --refine K       C only: split the patch's scalar Bezier function e.T by de Casteljau,\n"
         "                   up to K levels (1 to %d), while its control values have mixed signs\n"
-        "  --prefix NAME    prefix of generated names (default ptp_NxM_)\n"
+        "  --prefix NAME    prefix of generated names (default ptp_NxM_, triangles ptp_triN_)\n"
         "  --threads-per-patch P\n"
         "                   threads that share one patch, 1..%d, at most the number of\n"
         "                   planes (default 16 for 3x3; see README for other degrees)\n"
@@ -68,12 +72,6 @@ void cli_usage(sbuf *o)
         "\n"
         "Exit status: 0 success, 1 failure, 2 usage error.\n",
         CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS);
-}
-
-/* --degree: the patch domain (only tensor-product patches today), parsed by the domain. */
-static int parse_degree(cli_options *o, const char *arg, ptp_error *err)
-{
-    return tp_domain_parse(&o->dom, TP_QUAD, arg, err);
 }
 
 /* Parses a thread count: decimal digits only; values past 10^6 are kept as 10^6 + 1 so that
@@ -143,7 +141,7 @@ static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t m
 
 /* The options, in the order the mode check names them. */
 typedef enum {
-    OPT_DEGREE, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
+    OPT_DEGREE, OPT_DOMAIN, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
     OPT_PATCHES, OPT_COUNT, OPT_SEED, OPT_CERTIFIED, OPT_REFINE, OPT_OUTPUT, OPT_HELP,
     OPT_VERSION, OPT_LIST, OPT_N
 } opt_id;
@@ -161,6 +159,7 @@ static const struct {
     unsigned target;   /* the TGT_ bit a target needs for it, 0 for every target */
 } opts[OPT_N] = {
     [OPT_DEGREE] = {"--degree", NULL, 1, GEN | VER | VEC, 0},
+    [OPT_DOMAIN] = {"--domain", NULL, 1, GEN | VER | VEC, 0},
     [OPT_TARGET] = {"--target", NULL, 1, GEN, 0},
     [OPT_SPACE] = {"--space", NULL, 1, GEN | VEC, TGT_SPACE},
     [OPT_RULE] = {"--rule", NULL, 1, GEN, TGT_RULE},
@@ -220,10 +219,15 @@ static int parse_target(cli_options *o, const char *arg, ptp_error *err)
 static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
 {
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
+    const char *kinds[] = {tp_kind_name(TP_QUAD), tp_kind_name(TP_TRI)};
     uint64_t u = 0;
-    int st = PTP_OK;
+    int st = PTP_OK, x = 0;
     switch (k) {
-    case OPT_DEGREE: return parse_degree(o, v, err);
+    case OPT_DEGREE: o->degree = v; break;
+    case OPT_DOMAIN:
+        if (!(st = parse_choice(&x, "domain", v, kinds, 2, err)))
+            o->kind = (tp_kind)x;
+        break;
     case OPT_TARGET: return parse_target(o, v, err);
     case OPT_SPACE: return parse_choice(&o->world, "space", v, spaces, 2, err);
     case OPT_RULE: return parse_choice(&o->degenerate, "rule", v, rules, 2, err);
@@ -306,17 +310,43 @@ static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
         if (seen >> k & 1 && !(opts[k].modes >> o->mode & 1))
             return ptp_fail(err, PTP_EUSAGE, "option %s does not apply to %s", opts[k].name,
                             modes[o->mode]);
+    if (o->mode == CLI_VERIFY && o->kind != TP_QUAD)
+        return ptp_fail(err, PTP_EUSAGE, "verify does not support --domain %s yet",
+                        tp_kind_name(o->kind));
     if (o->mode == CLI_VERIFY)
         return o->input ? PTP_OK
                         : ptp_fail(err, PTP_EUSAGE,
                                    "verify: missing the FILE to check (see ptpgen --help)");
     if (!o->dom.n)
-        return ptp_fail(err, PTP_EUSAGE, "missing --degree N or --degree NxM (see ptpgen --help)");
+        return ptp_fail(err, PTP_EUSAGE, "missing --degree N%s (see ptpgen --help)",
+                        o->kind == TP_QUAD ? " or --degree NxM" : "");
+    if (o->mode == CLI_VECTORS && o->kind != TP_QUAD)
+        return ptp_fail(err, PTP_EUSAGE, "vectors does not support --domain %s yet",
+                        tp_kind_name(o->kind));
     if (o->mode == CLI_VECTORS &&
         (!(seen >> OPT_COUNT & 1) || !(seen >> OPT_SEED & 1) || o->count < 1))
         return ptp_fail(err, PTP_EUSAGE, "vectors needs --count K (1 to %d) and --seed S",
                         CLI_MAX_COUNT);
     return PTP_OK;
+}
+
+/* Checks that o's target supports o's patch kind, else a usage error naming the targets that
+ * do; and that --refine (a quad subdivision) is not asked of triangles. */
+static int check_kind(const cli_options *o, ptp_error *err)
+{
+    char names[128] = "";
+    int i;
+    if (o->kind != TP_QUAD && o->refine)
+        return ptp_fail(err, PTP_EUSAGE, "--refine does not apply to --domain %s (it subdivides "
+                                         "quads)", tp_kind_name(o->kind));
+    if (tgt_supports(o->target, o->kind))
+        return PTP_OK;
+    for (i = 0; i < tgt_count; i++)
+        if (tgt_supports(&tgt_targets[i], o->kind))
+            snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
+                     names[0] ? ", " : "", tgt_targets[i].name);
+    return ptp_fail(err, PTP_EUSAGE, "--domain %s applies to targets %s (not %s)",
+                    tp_kind_name(o->kind), names, o->target->name);
 }
 
 /* Checks that every option in seen applies to o's target (its registry bit), else a usage error
@@ -338,7 +368,7 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
     if (o->refine && o->certified)
         return ptp_fail(err, PTP_EUSAGE, "--refine and --certified do not go together: the "
                                          "subdivision is not certified");
-    return PTP_OK;
+    return check_kind(o, err);
 }
 
 /* Writes o->command, the normalized command line: every option that was given, in one order. */
@@ -353,7 +383,8 @@ static void put_command(cli_options *o)
                  o->count, (unsigned long long)o->seed, o->world ? "world" : "clip");
         return;
     }
-    n = snprintf(c, size, "ptpgen --degree %s --target %s", degree, o->target->name);
+    n = snprintf(c, size, "ptpgen%s%s --degree %s --target %s", o->kind ? " --domain " : "",
+                 o->kind ? tp_kind_name(o->kind) : "", degree, o->target->name);
     if (o->world)
         n += snprintf(c + n, size - (size_t)n, " --space world");
     if (o->degenerate)
@@ -383,6 +414,8 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         return parse_help(o, argc, argv, err);
     st = parse_args(o, &seen, parse_mode(o, argc, argv), argc, argv, err);
     if (st || o->help || o->version || o->list)
+        return st;
+    if (o->degree && (st = tp_domain_parse(&o->dom, o->kind, o->degree, err)))
         return st;
     if ((st = check_mode(o, seen, err)) || o->mode == CLI_VERIFY)
         return st;

@@ -303,6 +303,13 @@ void tp_domain_text_get(tp_domain_text *x, const tp_domain *d)
     snprintf(x->plane_name, sizeof x->plane_name, "%s %s", k->word, x->plane_degree);
     k->rule(x->point_rule, sizeof x->point_rule, "kij", d->n, d->m);
     k->rule(x->plane_rule, sizeof x->plane_rule, "PIJ", d->pu, d->pv);
+    if (d->kind == TP_QUAD)
+        snprintf(x->json, sizeof x->json, "\"degree\": [%s],\n  \"plane_degree\": [%s]",
+                 x->degrees, x->plane_degrees);
+    else
+        snprintf(x->json, sizeof x->json,
+                 "\"domain\": \"%s\",\n  \"degree\": %s,\n  \"plane_degree\": %s", k->name,
+                 x->degrees, x->plane_degrees);
     x->point_axes = k->point_axes;
     x->plane_axes = k->plane_axes;
     x->plane_rows = k->plane_rows;

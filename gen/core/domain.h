@@ -33,6 +33,10 @@ typedef struct {
     char plane_name[32];     /* "bidegree 7x7" */
     char degrees[16];        /* "3, 3": the items of the JSON "degree" list */
     char plane_degrees[16];  /* "7, 7": the items of the JSON "plane_degree" list */
+    char json[80];           /* the JSON members naming the domain: "\"degree\": [3, 3],
+                                \"plane_degree\": [7, 7]" for quads, "\"domain\": \"triangle\",
+                                \"degree\": 3, \"plane_degree\": 6" for triangles (one a line,
+                                the lines after the first indented by two spaces) */
     char point_rule[32];     /* "k = i*4 + j" */
     char plane_rule[32];     /* "P = I*8 + J" */
     const char *point_axes;  /* "i along u" */
