@@ -188,12 +188,15 @@ for t, r in zip(doc["terms"], rows):
     nearest = struct.unpack("f", struct.pack("f", float(w)))[0]
     assert float.fromhex(r[5]) == nearest, ("float weight", t, r)
 PY
-for d in 1x1 2x2 3x3 4x4 2x3 3x1; do
-    n=${d%x*}; m=${d#*x}
-    "$P" --degree $d --target table -o "$tmp/t.h" && "$P" --degree $d -o "$tmp/t.json" || notok "table $d" "ptpgen failed"
+for d in 1x1 2x2 3x3 4x4 2x3 3x1 tri1 tri2 tri3 tri4; do
+    case $d in
+    tri*) args="--domain triangle --degree ${d#tri}" lo=ptp_${d}_ ;;
+    *) args="--degree $d" lo=ptp_${d}_ ;;
+    esac
+    "$P" $args --target table -o "$tmp/t.h" && "$P" $args -o "$tmp/t.json" || notok "table $d" "ptpgen failed"
     for cc in gcc clang; do
         command -v $cc >/dev/null || continue
-        if $cc -std=c99 -Wall -Wextra -pedantic -Werror -include "$tmp/t.h" -DUP=PTP_${n}X${m}_ -DLO=ptp_${n}x${m}_ \
+        if $cc -std=c99 -Wall -Wextra -pedantic -Werror -include "$tmp/t.h" -DUP=$(echo $lo | tr a-z A-Z) -DLO=$lo \
             "$tmp/dump.c" -o "$tmp/dump" 2>"$tmp/err" && "$tmp/dump" >"$tmp/dump.txt" &&
             python3 "$tmp/cmp_table.py" "$tmp/t.json" "$tmp/dump.txt" 2>"$tmp/err"; then
             ok "table $d compiles with $cc -std=c99 -pedantic -Werror; idx, exact integer and nearest-float weights match"
