@@ -47,8 +47,17 @@ $(B)/libptptest.a: $(LIB_SRC) $(GEN_HDR) tests/kref.c tests/kref.h tests/check.h
 $(B)/host_opencl: tests/host_opencl.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lOpenCL -lm
 
-$(B)/host_vulkan: tests/host_vulkan.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
-	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lvulkan -lm
+$(B)/host_vulkan: tests/host_vulkan.c tests/check.h tests/host_run.c tests/host_run.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/host_run.c tests/kref.c $(LIB_SRC) -lvulkan -lm
+
+# The WGSL host links wgpu-native (WebGPU's C API), from the wheel of the PyPI package wgpu that
+# tests/deps.sh installs into build/venv; WGPU_DIR holds webgpu.h, wgpu.h and the library.
+WGPU_DIR ?= $(firstword $(wildcard $(CURDIR)/build/venv/lib/python3*/site-packages/wgpu/resources))
+
+$(B)/host_wgpu: tests/host_wgpu.c tests/check.h tests/host_run.c tests/host_run.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
+	@test -n "$(WGPU_DIR)" || { echo "host_wgpu: no wgpu-native (WGPU_DIR): run tests/deps.sh's ptp_ensure_wgpu" >&2; exit 1; }
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -isystem $(WGPU_DIR) -o $@ $< tests/host_run.c \
+	    tests/kref.c $(LIB_SRC) -L$(WGPU_DIR) -l:libwgpu_native-release.so -Wl,-rpath,$(WGPU_DIR) -lm
 
 # Everything one compiler builds for the tests.
 build-tests: $(B)/ptpgen $(addprefix $(B)/,$(TESTS))

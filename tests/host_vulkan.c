@@ -36,6 +36,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "check.h"
+#include "host_run.h"
 #include "kref.h"
 
 #include <vulkan/vulkan.h>
@@ -43,29 +44,15 @@
 #include <errno.h>
 #include <inttypes.h>
 #include <limits.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
-/* The largest storage buffer the host creates (lavapipe's limit); compile with
- * -DHOST_MAX_BUFFER=... to exercise chunking with small sets. */
-#ifndef HOST_MAX_BUFFER
-#define HOST_MAX_BUFFER ((VkDeviceSize)128 << 20)
-#endif
-/* The largest group count along x of one dispatch (lavapipe's limit; lowered with
- * -DHOST_MAX_GROUPS_X=... to exercise 2-D dispatches with small sets). */
-#ifndef HOST_MAX_GROUPS_X
-#define HOST_MAX_GROUPS_X 65535u
-#endif
 /* How long one dispatch may take before the run is declared hung. */
 #define HOST_FENCE_TIMEOUT_NS (600ull * 1000000000ull)
 /* The push-constant block: eye, patch_count, groups_x, padding. */
 #define HOST_PUSH_BYTES 32u
-/* The classes and plane values buffers are filled with this before every dispatch. */
-#define HOST_UNWRITTEN 0xFFFFFFFFu
 
 /* ---- errors ---- */
 
@@ -92,28 +79,12 @@ static const char *vk_result_str(VkResult r)
     }
 }
 
-/* Formats a message into err (size HOST_ERRSZ); returns -1. */
-#define HOST_ERRSZ 512
-static int fail(char *err, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-static int fail(char *err, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, HOST_ERRSZ, fmt, ap);
-    va_end(ap);
-    return -1;
-}
-
 #define VK_TRY(call, what)                                                                     \
     do {                                                                                       \
         VkResult vk_try_r = (call);                                                            \
         if (vk_try_r != VK_SUCCESS)                                                            \
-            return fail(err, "%s failed: %s (%d)", (what), vk_result_str(vk_try_r),            \
-                        (int)vk_try_r);                                                        \
+            return host_fail(err, "%s failed: %s (%d)", (what), vk_result_str(vk_try_r),      \
+                             (int)vk_try_r);                                                        \
     } while (0)
 
 /* ---- the SPIR-V module ---- */
@@ -131,13 +102,13 @@ static int spv_read(spirv *s, const char *path, char *err)
     s->words = NULL;
     s->nwords = 0;
     if (!f)
-        return fail(err, "cannot open %s: %s", path, strerror(errno));
+        return host_fail(err, "cannot open %s: %s", path, strerror(errno));
     buf = malloc(cap);
     for (;;) {
         size_t got;
         if (!buf) {
             fclose(f);
-            return fail(err, "out of memory reading %s", path);
+            return host_fail(err, "out of memory reading %s", path);
         }
         got = fread(buf + len, 1, cap - len, f);
         len += got;
@@ -145,7 +116,7 @@ static int spv_read(spirv *s, const char *path, char *err)
             if (ferror(f)) {
                 free(buf);
                 fclose(f);
-                return fail(err, "cannot read %s", path);
+                return host_fail(err, "cannot read %s", path);
             }
             break;
         }
@@ -160,13 +131,13 @@ static int spv_read(spirv *s, const char *path, char *err)
     fclose(f);
     if (len < 20 || len % 4) {
         free(buf);
-        return fail(err, "%s is not SPIR-V (%zu bytes)", path, len);
+        return host_fail(err, "%s is not SPIR-V (%zu bytes)", path, len);
     }
     s->nwords = len / 4;
     s->words = malloc(len);
     if (!s->words) {
         free(buf);
-        return fail(err, "out of memory reading %s", path);
+        return host_fail(err, "out of memory reading %s", path);
     }
     memcpy(s->words, buf, len);
     free(buf);
@@ -174,7 +145,7 @@ static int spv_read(spirv *s, const char *path, char *err)
         uint32_t magic = s->words[0];
         free(s->words);
         s->words = NULL;
-        return fail(err, "%s is not SPIR-V (magic 0x%08" PRIx32 ")", path, magic);
+        return host_fail(err, "%s is not SPIR-V (magic 0x%08" PRIx32 ")", path, magic);
     }
     return 0;
 }
@@ -202,7 +173,7 @@ static int spv_scan(const spirv *s, spv_info *info, char *err)
     for (size_t i = 5; i < s->nwords;) {
         uint32_t w = s->words[i], wc = w >> 16, op = w & 0xFFFFu;
         if (wc == 0 || i + wc > s->nwords)
-            return fail(err, "malformed SPIR-V (instruction at word %zu)", i);
+            return host_fail(err, "malformed SPIR-V (instruction at word %zu)", i);
         if (op == OP_ENTRY_POINT && wc >= 4 && s->words[i + 1] == MODEL_GLCOMPUTE) {
             const char *name = (const char *)&s->words[i + 3];
             size_t maxlen = (wc - 3) * 4;
@@ -276,7 +247,6 @@ typedef struct {
     VkFence fence;
     int nbindings;  /* 2, or 3 with --planes */
     hbuf bufs[3];   /* control points, classes, plane values */
-    size_t cap;     /* patches the control point buffer holds (0: no buffers yet) */
     int hung;     /* a dispatch did not finish: do not wait for the device when cleaning up */
 } vkctx;
 
@@ -300,14 +270,14 @@ static int vk_setup_device(vkctx *v, char *err)
 
     VK_TRY(vkEnumeratePhysicalDevices(v->inst, &ndev, NULL), "vkEnumeratePhysicalDevices");
     if (ndev == 0)
-        return fail(err, "no Vulkan device");
+        return host_fail(err, "no Vulkan device");
     devs = malloc(ndev * sizeof *devs);
     if (!devs)
-        return fail(err, "out of memory");
+        return host_fail(err, "out of memory");
     r = vkEnumeratePhysicalDevices(v->inst, &ndev, devs);
     if (r != VK_SUCCESS && r != VK_INCOMPLETE) {
         free(devs);
-        return fail(err, "vkEnumeratePhysicalDevices failed: %s", vk_result_str(r));
+        return host_fail(err, "vkEnumeratePhysicalDevices failed: %s", vk_result_str(r));
     }
     for (uint32_t d = 0; d < ndev && !v->phys; d++) {
         uint32_t nq = 0;
@@ -316,7 +286,7 @@ static int vk_setup_device(vkctx *v, char *err)
         qp = malloc((nq ? nq : 1) * sizeof *qp);
         if (!qp) {
             free(devs);
-            return fail(err, "out of memory");
+            return host_fail(err, "out of memory");
         }
         vkGetPhysicalDeviceQueueFamilyProperties(devs[d], &nq, qp);
         for (uint32_t q = 0; q < nq; q++)
@@ -329,7 +299,7 @@ static int vk_setup_device(vkctx *v, char *err)
     }
     free(devs);
     if (!v->phys)
-        return fail(err, "no Vulkan device with a compute queue (%" PRIu32 " devices)", ndev);
+        return host_fail(err, "no Vulkan device with a compute queue (%" PRIu32 " devices)", ndev);
     vkGetPhysicalDeviceProperties(v->phys, &v->props);
     vkGetPhysicalDeviceMemoryProperties(v->phys, &v->memprops);
     printf("# device: %s (Vulkan %u.%u.%u, driver 0x%08" PRIx32 ")\n", v->props.deviceName,
@@ -387,7 +357,7 @@ static int vk_setup_pipeline(vkctx *v, const spirv *code, int nbindings, char *e
         VkPushConstantRange pcr;
         VkPipelineLayoutCreateInfo plci;
         if (v->props.limits.maxPushConstantsSize < HOST_PUSH_BYTES)
-            return fail(err, "device allows only %" PRIu32 " bytes of push constants",
+            return host_fail(err, "device allows only %" PRIu32 " bytes of push constants",
                         v->props.limits.maxPushConstantsSize);
         pcr.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
         pcr.offset = 0;
@@ -477,7 +447,7 @@ static int vk_buffer(vkctx *v, hbuf *h, VkDeviceSize size, const char *what, cha
             break;
         }
     if (type == UINT32_MAX)
-        return fail(err, "no host-visible coherent memory for the %s buffer", what);
+        return host_fail(err, "no host-visible coherent memory for the %s buffer", what);
     memset(&mai, 0, sizeof mai);
     mai.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
     mai.allocationSize = req.size;
@@ -485,7 +455,7 @@ static int vk_buffer(vkctx *v, hbuf *h, VkDeviceSize size, const char *what, cha
     {
         VkResult r = vkAllocateMemory(v->dev, &mai, NULL, &h->mem);
         if (r != VK_SUCCESS)
-            return fail(err, "vkAllocateMemory of %llu bytes for the %s buffer failed: %s",
+            return host_fail(err, "vkAllocateMemory of %llu bytes for the %s buffer failed: %s",
                         (unsigned long long)req.size, what, vk_result_str(r));
     }
     VK_TRY(vkBindBufferMemory(v->dev, h->buf, h->mem, 0), "vkBindBufferMemory");
@@ -505,7 +475,6 @@ static void vk_free_buffers(vkctx *v)
             vkFreeMemory(v->dev, v->bufs[i].mem, NULL);
         memset(&v->bufs[i], 0, sizeof v->bufs[i]);
     }
-    v->cap = 0;
 }
 
 static void vk_teardown(vkctx *v)
@@ -580,171 +549,69 @@ static int vk_run(vkctx *v, const float eye[4], uint32_t n, uint32_t gx, uint32_
     r = vkWaitForFences(v->dev, 1, &v->fence, VK_TRUE, HOST_FENCE_TIMEOUT_NS);
     if (r != VK_SUCCESS) {
         v->hung = 1;
-        return fail(err, "the dispatch (%" PRIu32 " x %" PRIu32 " groups) did not finish: %s",
+        return host_fail(err, "the dispatch (%" PRIu32 " x %" PRIu32 " groups) did not finish: %s",
                     gx, gy, vk_result_str(r));
     }
     VK_TRY(vkResetFences(v->dev, 1, &v->fence), "vkResetFences");
     return 0;
 }
 
-/* ---- running the sets ---- */
+/* ---- the device as host_run drives it ---- */
 
-/* The dispatch of count patches: groups = ceil(count / q) laid out as gx * gy. */
-static void dispatch_shape(size_t count, size_t q, uint64_t max_x, uint64_t *gx, uint64_t *gy)
+/* host_device.alloc: buffers of cp_bytes, cls_words and val_words, bound to the descriptors. */
+static int vk_alloc(void *ctx, uint64_t cp_bytes, uint64_t cls_words, uint64_t val_words,
+                    char *err)
 {
-    uint64_t groups = (count + q - 1) / q;
-    *gx = groups < max_x ? groups : max_x;
-    if (*gx == 0)
-        *gx = 1;
-    *gy = (groups + *gx - 1) / *gx;
-    if (*gy == 0)
-        *gy = 1;
-}
-
-/* What limits a chunk: the largest buffer and dispatch. */
-typedef struct {
-    uint64_t max_bytes; /* of one storage buffer */
-    uint64_t max_x;     /* groups along x */
-    size_t chunk;       /* the most patches of one dispatch */
-} limits;
-
-/* Makes the buffers hold a chunk of n patches: control points exactly; classes and plane
- * values as far as the dispatch of n patches reaches (and the buffer limit allows), so that
- * writes past patch_count land in them and are seen. Rebinds the descriptors if it grows. */
-static int ensure_buffers(vkctx *v, const kref_args *o, const limits *lim, size_t K, size_t L,
-                          size_t n, char *err)
-{
-    uint64_t gx, gy, cover, ncls, npl;
-    if (n <= v->cap)
-        return 0;
+    vkctx *v = ctx;
+    VkDescriptorBufferInfo dbi[3];
+    VkWriteDescriptorSet w[3];
     vk_free_buffers(v);
-    dispatch_shape(n, o->q, lim->max_x, &gx, &gy);
-    cover = gx * gy * o->q;
-    ncls = cover < lim->max_bytes / 4 ? cover : lim->max_bytes / 4;
-    npl = cover < lim->max_bytes / (4 * L) ? cover : lim->max_bytes / (4 * L);
-    if (vk_buffer(v, &v->bufs[0], (VkDeviceSize)n * K * 16, "control point", err) ||
-        vk_buffer(v, &v->bufs[1], ncls * 4, "class", err) ||
-        (o->planes && vk_buffer(v, &v->bufs[2], npl * L * 4, "plane value", err)))
+    if (vk_buffer(v, &v->bufs[0], cp_bytes, "control point", err) ||
+        vk_buffer(v, &v->bufs[1], cls_words * 4, "class", err) ||
+        (val_words && vk_buffer(v, &v->bufs[2], val_words * 4, "plane value", err)))
         return -1;
-    v->cap = n;
-    {
-        VkDescriptorBufferInfo dbi[3];
-        VkWriteDescriptorSet w[3];
-        memset(w, 0, sizeof w);
-        for (int i = 0; i < v->nbindings; i++) {
-            dbi[i].buffer = v->bufs[i].buf;
-            dbi[i].offset = 0;
-            dbi[i].range = VK_WHOLE_SIZE;
-            w[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-            w[i].dstSet = v->dset;
-            w[i].dstBinding = (uint32_t)i;
-            w[i].descriptorCount = 1;
-            w[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-            w[i].pBufferInfo = &dbi[i];
-        }
-        vkUpdateDescriptorSets(v->dev, (uint32_t)v->nbindings, w, 0, NULL);
+    memset(w, 0, sizeof w);
+    for (int i = 0; i < v->nbindings; i++) {
+        dbi[i].buffer = v->bufs[i].buf;
+        dbi[i].offset = 0;
+        dbi[i].range = VK_WHOLE_SIZE;
+        w[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        w[i].dstSet = v->dset;
+        w[i].dstBinding = (uint32_t)i;
+        w[i].descriptorCount = 1;
+        w[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        w[i].pBufferInfo = &dbi[i];
     }
+    vkUpdateDescriptorSets(v->dev, (uint32_t)v->nbindings, w, 0, NULL);
     return 0;
 }
 
-static double now_ms(void)
+/* host_device.upload: into the mapped memory. */
+static int vk_upload(void *ctx, const void *cp, size_t bytes, char *err)
 {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec / 1e6;
-}
-
-/* Tallies writes past patch_count (kref_check itself catches classes left unwritten). */
-typedef struct {
-    size_t bad;      /* 32-bit words written past patch_count */
-    size_t guarded;  /* words past patch_count checked */
-    size_t dispatches;
-    double ms;       /* in dispatches, waiting included */
-    char first[300];
-} tally;
-
-static void stray(tally *t, const char *set, const char *what, size_t index, size_t n)
-{
-    if (!t->bad++)
-        snprintf(t->first, sizeof t->first, "%.80s: %s %zu of a %zu-patch dispatch", set, what,
-                 index, n);
-}
-
-/* Runs one set chunk by chunk into cls (and planes) and checks it; 0 or -1 (message in err). */
-static int run_set(vkctx *v, const kref_args *o, const limits *lim, const kref_ref *ref,
-                   const kref_set *s, unsigned *cls, float *planes, kref_result *res, tally *t,
-                   char *err)
-{
-    size_t K = (size_t)ref->K, L = (size_t)ref->L;
-    if (s->K != ref->K)
-        return fail(err, "%s: %d points per patch, the reference has %d", s->name, s->K, ref->K);
-    for (size_t off = 0; off < s->count;) {
-        size_t n = s->count - off < lim->chunk ? s->count - off : lim->chunk, ncls;
-        uint64_t gx, gy;
-        const uint32_t *rc;
-        double t0;
-        if (ensure_buffers(v, o, lim, K, L, n, err))
-            return -1;
-        dispatch_shape(n, o->q, lim->max_x, &gx, &gy);
-        memcpy(v->bufs[0].map, s->cp + off * K, n * K * 16);
-        memset(v->bufs[1].map, 0xFF, (size_t)v->bufs[1].size);
-        if (o->planes)
-            memset(v->bufs[2].map, 0xFF, (size_t)v->bufs[2].size);
-        t0 = now_ms();
-        if (vk_run(v, s->eye, (uint32_t)n, (uint32_t)gx, (uint32_t)gy, err)) {
-            size_t len = strlen(err);
-            snprintf(err + len, HOST_ERRSZ - len, " (%.80s, patches %zu..%zu)", s->name, off,
-                     off + n - 1);
-            return -1;
-        }
-        t->ms += now_ms() - t0;
-        t->dispatches++;
-        rc = v->bufs[1].map;
-        ncls = (size_t)(v->bufs[1].size / 4);
-        memcpy(cls + off, rc, n * sizeof *cls);
-        for (size_t p = n; p < ncls; p++, t->guarded++)
-            if (rc[p] != HOST_UNWRITTEN)
-                stray(t, s->name, "class written at patch", p, n);
-        if (o->planes) {
-            const uint32_t *rp = v->bufs[2].map;
-            size_t npl = (size_t)(v->bufs[2].size / 4);
-            memcpy(planes + off * L, rp, n * L * sizeof *planes);
-            for (size_t x = n * L; x < npl; x++, t->guarded++)
-                if (rp[x] != HOST_UNWRITTEN)
-                    stray(t, s->name, "plane value written at index", x, n);
-        }
-        off += n;
-    }
-    kref_check(res, ref, s, cls, planes);
+    vkctx *v = ctx;
+    (void)err;
+    memcpy(v->bufs[0].map, cp, bytes);
+    for (int i = 1; i < v->nbindings; i++)
+        memset(v->bufs[i].map, 0xFF, (size_t)v->bufs[i].size);
     return 0;
 }
 
-/* --bench: times runs repetitions of the dispatch of set s, whose control points run_set left in
- * the buffer, and of the copy of its classes into cls; prints the best as one "# bench: " line.
- * 0, or -1 (message in err). */
-static int bench_set(vkctx *v, const kref_args *o, const limits *lim, const kref_set *s,
-                     unsigned *cls, long runs, char *err)
+/* host_device.run: the results are read from the mapped memory. */
+static int vk_run_mapped(void *ctx, const float eye[4], uint32_t n, uint32_t gx, uint32_t gy,
+                         int values, const uint32_t *out[2], char *err)
 {
-    uint64_t gx, gy;
-    double best = 0;
-    if (s->count == 0)
-        return 0;
-    if (s->count > lim->chunk)
-        return fail(err, "%s: --bench needs a set that fits one dispatch (%zu patches), it has %zu",
-                    s->name, lim->chunk, s->count);
-    dispatch_shape(s->count, o->q, lim->max_x, &gx, &gy);
-    for (long r = 0; r < runs; r++) {
-        double t0 = now_ms(), ms;
-        if (vk_run(v, s->eye, (uint32_t)s->count, (uint32_t)gx, (uint32_t)gy, err))
-            return -1;
-        memcpy(cls, v->bufs[1].map, s->count * sizeof *cls);
-        ms = now_ms() - t0;
-        if (r == 0 || ms < best)
-            best = ms;
-    }
-    printf("# bench: patches=%zu runs=%ld best_s=%.6f patches_per_s=%.0f\n", s->count, runs,
-           best * 1e-3, (double)s->count / (best * 1e-3));
+    vkctx *v = ctx;
+    if (vk_run(v, eye, n, gx, gy, err))
+        return -1;
+    out[0] = v->bufs[1].map;
+    out[1] = values ? v->bufs[2].map : NULL;
     return 0;
+}
+
+static void vk_release(void *ctx)
+{
+    (void)ctx;
 }
 
 /* ---- main ---- */
@@ -753,31 +620,19 @@ int main(int argc, char **argv)
 {
     kref_args o;
     char msg[HOST_ERRSZ];
-    ptp_error perr;
     kref_ref ref;
-    kref_result res;
-    tally t;
-    limits lim;
+    host_limits lim;
     spirv code = {NULL, 0};
     spv_info info;
     vkctx v;
-    unsigned *cls = NULL;
-    float *planes = NULL;
-    size_t K, L, have = 0, total = 0;
-    int have_ref = 0, nsets_total = 0, ok = 0;
-    const char *bench = kref_take_bench(&argc, argv);
-    long runs = 0;
+    int ok = 0, rc;
+    long runs;
 
-    if (kref_parse_args(&o, argc, argv, "host_vulkan", KREF_NEED_FILE | KREF_NEED_BLOCK))
-        return 2;
-    if (bench && !(runs = kref_bench_runs(bench))) {
-        check(0, o.label, "--bench takes RUNS, 1 to 1000");
-        return 2;
-    }
+    rc = host_start(&o, &ref, &runs, argc, argv, "host_vulkan", KREF_NEED_FILE | KREF_NEED_BLOCK);
+    if (rc)
+        return rc;
     memset(&v, 0, sizeof v);
-    memset(&res, 0, sizeof res);
-    memset(&t, 0, sizeof t);
-    memset(&perr, 0, sizeof perr);
+    memset(&lim, 0, sizeof lim);
 
 #define SETUP_FAIL(...)                                                                        \
     do {                                                                                       \
@@ -785,12 +640,6 @@ int main(int argc, char **argv)
         goto done;                                                                             \
     } while (0)
 
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &perr))
-        SETUP_FAIL("kref_init(%dx%d): %s", o.n, o.m, perr.msg);
-    have_ref = 1;
-    ref.certified = o.certified;
-    K = (size_t)ref.K;
-    L = (size_t)ref.L;
 
     /* the module: an entry point main, its workgroup size, its bindings */
     if (spv_read(&code, o.file, msg) || spv_scan(&code, &info, msg))
@@ -827,72 +676,14 @@ int main(int argc, char **argv)
            o.groups_x_constant ? ", groups_x read from the push constants" : "");
 
     /* the largest chunk of patches whose buffers all fit and whose dispatch is allowed */
+    if (host_chunk_limits(&lim, &o, (size_t)ref.K, (size_t)ref.L,
+                          v.props.limits.maxStorageBufferRange,
+                          v.props.limits.maxComputeWorkGroupCount[0],
+                          v.props.limits.maxComputeWorkGroupCount[1], msg))
+        SETUP_FAIL("%s", msg);
     {
-        uint64_t per = K * 16, chunk, max_groups;
-        lim.max_bytes = HOST_MAX_BUFFER;
-        if (v.props.limits.maxStorageBufferRange < lim.max_bytes)
-            lim.max_bytes = v.props.limits.maxStorageBufferRange;
-        lim.max_x = v.props.limits.maxComputeWorkGroupCount[0];
-        if (lim.max_x > HOST_MAX_GROUPS_X)
-            lim.max_x = HOST_MAX_GROUPS_X;
-        if (o.planes && L * 4 > per)
-            per = L * 4;
-        chunk = lim.max_bytes / per;
-        if (chunk == 0)
-            SETUP_FAIL("one patch needs %" PRIu64 " bytes, more than a storage buffer may "
-                       "hold (%" PRIu64 ")",
-                       per, lim.max_bytes);
-        max_groups = lim.max_x * v.props.limits.maxComputeWorkGroupCount[1];
-        if (chunk > max_groups * o.q)
-            chunk = max_groups * o.q;
-        if (chunk > UINT32_MAX)
-            chunk = UINT32_MAX;
-        if (chunk >= o.q)
-            chunk -= chunk % o.q; /* whole blocks in every chunk but a set's last */
-        lim.chunk = (size_t)chunk;
-    }
-
-    /* every set of every source */
-    for (int si = 0; si < o.nsources; si++) {
-        int nsets = (int)o.src[si].nsets, failed = 0;
-        kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);
-        if (!sets)
-            goto done;
-        for (int i = 0; i < nsets && !failed; i++) {
-            if (sets[i].count > have) {
-                free(cls);
-                free(planes);
-                planes = NULL;
-                have = 0;
-                cls = malloc(sets[i].count * sizeof *cls);
-                if (o.planes)
-                    planes = malloc(sets[i].count * L * sizeof *planes);
-                if (!cls || (o.planes && !planes)) {
-                    snprintf(msg, sizeof msg, "out of memory for %zu patches", sets[i].count);
-                    failed = 1;
-                    break;
-                }
-                have = sets[i].count;
-            }
-            failed = run_set(&v, &o, &lim, &ref, &sets[i], cls, planes, &res, &t, msg) != 0 ||
-                     (runs && bench_set(&v, &o, &lim, &sets[i], cls, runs, msg) != 0);
-            total += sets[i].count;
-        }
-        kref_free_sets(sets, nsets);
-        if (failed)
-            SETUP_FAIL("%s", msg);
-        nsets_total += nsets;
-    }
-
-    printf("# %s: %d sets, %zu patches, %zu dispatches (chunks of at most %zu patches), "
-           "%.1f ms in dispatches\n",
-           o.label, nsets_total, total, t.dispatches, lim.chunk, t.ms);
-    {
-        char name[400];
-        snprintf(name, sizeof name, "%s: nothing written past patch_count (%zu words checked)",
-                 o.label, t.guarded);
-        ok = check(!t.bad, name, "%zu words written, first: %s", t.bad, t.first);
-        ok = kref_report(&res, o.label) && ok;
+        host_device d = {&v, vk_alloc, vk_upload, vk_run_mapped, vk_release};
+        ok = host_run(&d, &o, &lim, &ref, runs);
     }
 
 done:
@@ -900,9 +691,6 @@ done:
     fflush(stdout);
     vk_teardown(&v);
     free(code.words);
-    free(cls);
-    free(planes);
-    if (have_ref)
-        kref_clear(&ref);
+    kref_clear(&ref);
     return ok && !check_exit() ? 0 : 1;
 }

@@ -22,6 +22,9 @@ run() {
 }
 
 ptp_ensure_deps | tee -a "$log"
+# Not in a pipe: it exports WGPU_DIR (wgpu-native) for the Makefile and test_wgpu.sh.
+ptp_ensure_wgpu >build/wgpu.out
+tee -a "$log" <build/wgpu.out
 
 compilers=""
 for cc in gcc clang; do
@@ -65,9 +68,12 @@ else
     echo "not ok - build of build/gcc/cullrate/cullrate failed: see build/make-cullrate.log" | tee -a "$log"
 fi
 
-# The hosts that execute emitted kernels (they need the OpenCL and Vulkan development files).
+# The hosts that execute emitted kernels (they need the OpenCL and Vulkan development files, and
+# wgpu-native for the WGSL host).
+hosts="libptptest.a host_opencl host_vulkan"
+[ -n "${WGPU_DIR:-}" ] && hosts="$hosts host_wgpu"
 for cc in $compilers; do
-    for h in libptptest.a host_opencl host_vulkan; do
+    for h in $hosts; do
         if make -s CC=$cc build/$cc/$h >build/make-$cc-$h.log 2>&1; then
             echo "ok - builds build/$cc/$h" | tee -a "$log"
         else
@@ -79,6 +85,7 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/test_refine.sh env PTPGEN=build/gcc/ptpgen bash tests/test_refine.sh
     run tests/test_kernels.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_kernels.sh
 fi
+run tests/test_wgpu.sh env BUILD=build/gcc bash tests/test_wgpu.sh
 
 passed=$(grep -c '^ok - ' "$log")
 failed=$(grep -c '^not ok - ' "$log")

@@ -14,24 +14,7 @@ export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_
 mkdir -p "$POCL_CACHE_DIR" "$MESA_SHADER_CACHE_DIR"
 NVCC=${NVCC:-/usr/local/cuda/bin/nvcc}
 
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1: $2"; }
-# missing TOOL WHAT: under CI a missing tool is a failure; elsewhere a skip note.
-missing() {
-    if [ "${CI:-}" = true ]; then notok "$2" "$1 is not available"; else echo "# skip: $2 ($1 is not available)"; fi
-}
-# run_host NAME CMD...: runs a host, passes its check lines through, and turns a silent failure
-# into a "not ok" line.
-run_host() {
-    local name=$1 out rc
-    shift
-    out=$("$@" 2>&1)
-    rc=$?
-    printf '%s\n' "$out" | grep -E '^(ok|not ok|#) ' || true
-    if [ $rc -ne 0 ] && ! printf '%s\n' "$out" | grep -q '^not ok - '; then
-        notok "$name" "exit $rc: $(printf '%s\n' "$out" | tail -3 | tr '\n' ' ')"
-    fi
-}
+. tests/host_lib.sh
 # data_args DEGREE: the patch sets of a configuration: 10,000 random patches, and for bicubic
 # each model with random eyes (one host run per line).
 data_args() {

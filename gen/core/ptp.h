@@ -1,5 +1,5 @@
-/* ptp.h: definitions shared by every ptpgen module.
- * Status codes with a message (library code never exits), the 128-bit integer type, limits. */
+/* ptp.h: definitions shared by every ptpgen module. Status codes with a message (library code
+ * never exits), the 128-bit integer type, limits, and the numbers of the classes of a patch. */
 #ifndef PTP_H
 #define PTP_H
 
@@ -14,6 +14,9 @@
 
 __extension__ typedef __int128 ptp_i128;
 __extension__ typedef unsigned __int128 ptp_u128;
+
+/* The class of a patch, as every output numbers it (kernels, the C header, test vectors). */
+typedef enum { PTP_FRONT = 0, PTP_BACK = 1, PTP_SILHOUETTE = 2 } ptp_class;
 
 /* Status codes returned by library functions; 0 is success. */
 enum {

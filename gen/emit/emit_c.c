@@ -1,5 +1,5 @@
-/* emit_c.c: the C target: an stb-style single header (declarations, and the implementation
- * where <PREFIX>IMPLEMENTATION is defined) with the paper's table-driven loop. */
+/* emit_c.c: the C target, an stb-style header: the term table, planes, values, and classify (one
+ * patch, batch, SoA) as straight-line code, with the second look of --certified or --refine. */
 #include "emit/fmt.h"
 #include "emit/kern.h"
 #include "plan/cert.h"
@@ -10,7 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The implementation: cross4, planes, values, classify and classify_batch. */
 /* Appends component i of cross4(a, b, c) (Appendix A): +-det of the rows other than i, expanded
  * along the first of them; cast (e.g. "(double)") converts the first factor of every product of
  * a 2x2 minor, and ind is the indentation of continuation lines. */
@@ -24,6 +23,8 @@ static void put_cross4_component(sbuf *o, int i, const char *cast, int ind)
                 cast, s, q, ind, "", neg ? "  " : "", p, cast, q, s, cast, s, q, neg ? ")" : "");
 }
 
+/* The table loop (the paper's): cross4, planes and values; opens the region where gcc contracts
+ * no product, which the lanes function closes. */
 static void put_functions(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
@@ -207,47 +208,32 @@ static void put_double_table(sbuf *o, const char *px, const char *name, const do
     sbuf_puts(o, "\n};\n");
 }
 
-/* --certified: the second look at a patch float cannot certify, in double. The table loop with
- * double weights and the bounds of cert_table for u = 2^-53, which are 2^29 times smaller. */
-static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const char *up,
-                         ptp_error *err)
+/* --certified, second look: the weights and each plane's bounds, as double tables. */
+static int put_tables64(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
     const char *px = info->prefix;
-    int world = info->space == OUT_WORLD;
     double *w = malloc((t->nterms + 1) * sizeof *w);
     cert_bounds cb = {0};
     size_t i;
-    int k, st = w ? cert_table(&cb, t, world, err)
+    int st = w ? cert_table(&cb, t, info->space == OUT_WORLD, err)
                : ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-    if (st) {
-        free(w);
-        return st;
+    if (!st) {
+        for (i = 0; i < t->nterms; i++)
+            w[i] = rat_get_d(&t->terms[i].w);
+        sbuf_puts(o, "/* --certified, second look: the weights in double, and each plane's bound in double. */\n");
+        put_double_table(o, px, "wgt64", w, (int)t->nterms);
+        put_double_table(o, px, "tau64_k", cb.k64, cb.nplanes);
+        put_double_table(o, px, "tau64_f", cb.k2_64, cb.nplanes);
+        cert_clear(&cb);
     }
-    for (i = 0; i < t->nterms; i++)
-        w[i] = rat_get_d(&t->terms[i].w);
-    sbuf_puts(o, "/* --certified, second look: the weights in double, and each plane's bound in double. */\n");
-    put_double_table(o, px, "wgt64", w, (int)t->nterms);
-    put_double_table(o, px, "tau64_k", cb.k64, cb.nplanes);
-    put_double_table(o, px, "tau64_f", cb.k2_64, cb.nplanes);
-    sbuf_printf(o,
-                "\n/* The certified class of a patch whose plain float signs decide but whose bounds do not, from\n"
-                " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
-                "static unsigned %scertify64(const float cp[][4], const float eye[4])\n{\n"
-                "    double d[%sPLANES], R = 0, E = 0, ER3, F;\n"
-                "    unsigned x, k, notlt = 0, notgt = 0;\n"
-                "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
-                "    for (x = 0; x < %sPOINTS; x++)\n"
-                "        for (k = 0; k < 4; k++)\n"
-                "            if (%s)\n"
-                "                R = %sABSMAX(R, (double)cp[x][k]);\n"
-                "    for (k = 0; k < 4; k++)\n"
-                "        if (%s)\n"
-                "            E = %sABSMAX(E, (double)eye[k]);\n"
-                "    ER3 = E * (R * R * R);\n"
-                "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
-                "    for (x = 0; x < %sTERMS; x++) {\n"
-                "        const float *a = cp[%sidx[x][1]], *b = cp[%sidx[x][2]], *c = cp[%sidx[x][3]];\n",
-                px, up, up, up, world ? "1" : "k != 2", up, world ? "1" : "k == 2", up, up, px, px, px);
+    free(w);
+    return st;
+}
+
+/* certify64's sum of the weighted terms in double, into d. */
+static void put_terms64(sbuf *o, int world, const char *px, const char *up)
+{
+    int k;
     if (world) {
         /* cross4 in double: the products of the minors are exact, as in the table's bound */
         sbuf_puts(o, "        double r[4];\n");
@@ -267,6 +253,37 @@ static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const
                        "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n",
                     up);
     }
+}
+
+/* --certified: the second look at a patch float cannot certify, in double. The table loop with
+ * double weights and the bounds of cert_table for u = 2^-53, which are 2^29 times smaller. */
+static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const char *up,
+                         ptp_error *err)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD, st = put_tables64(o, t, info, err);
+    if (st)
+        return st;
+    sbuf_printf(o,
+                "\n/* The certified class of a patch whose plain float signs decide but whose bounds do not, from\n"
+                " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
+                "static unsigned %scertify64(const float cp[][4], const float eye[4])\n{\n"
+                "    double d[%sPLANES], R = 0, E = 0, ER3, F;\n"
+                "    unsigned x, k, notlt = 0, notgt = 0;\n"
+                "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
+                "    for (x = 0; x < %sPOINTS; x++)\n"
+                "        for (k = 0; k < 4; k++)\n"
+                "            if (%s)\n"
+                "                R = %sABSMAX(R, (double)cp[x][k]);\n"
+                "    for (k = 0; k < 4; k++)\n"
+                "        if (%s)\n"
+                "            E = %sABSMAX(E, (double)eye[k]);\n"
+                "    ER3 = E * (R * R * R);\n"
+                "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
+                "    for (x = 0; x < %sTERMS; x++) {\n"
+                "        const float *a = cp[%sidx[x][1]], *b = cp[%sidx[x][2]], *c = cp[%sidx[x][3]];\n",
+                px, up, up, up, world ? "1" : "k != 2", up, world ? "1" : "k == 2", up, up, px, px, px);
+    put_terms64(o, world, px, up);
     sbuf_printf(o,
                 "    for (x = 0; x < %sPLANES; x++) {\n"
                 "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
@@ -275,30 +292,14 @@ static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const
                 "    }\n"
                 "    return (1u - notlt) + 2u * (notlt & notgt);\n}\n\n",
                 up, px, px);
-    cert_clear(&cb);
-    free(w);
     return PTP_OK;
 }
 
-/* The straight-line kernel over n patches in structure-of-arrays order, and the three entry
- * points built on it: classify (one patch), classify_batch (patch-major) and classify_soa. */
-static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
-                     const out_info *info, const char *up, ptp_error *err)
+/* The lanes function's comment, attributes and head, and the eye's values (certified: E). */
+static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, k, first_group = 1;
-    const char *op;
-    int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
-    /* what silhouette patches get a second look from: refinement, or certification in double */
-    const char *second = info->refine ? "refined" : info->certified ? "certify64" : NULL;
-    /* the class the lanes leave for it: silhouette, or 3 (certified: only plain signs decide) */
-    const char *again = info->certified ? "3u" : "SILHOUETTE";
-    const char *again_px = info->certified ? "" : up;
-    int st;
-    unsigned char *done = calloc(p->npairs + 1, 1);
-    size_t i;
-    if (!done)
-        return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
+    int world = info->space == OUT_WORLD;
     sbuf_printf(o,
                 "/* The classification of n patches in structure-of-arrays order: coordinate c of point k\n"
                 " * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table\n"
@@ -327,6 +328,15 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
         else
             sbuf_printf(o, "    const float E = %sABSMAX(0.0f, e2);\n", up);
     }
+}
+
+/* The loop over blocks of VW patches: the masks and sums, and the last block padded with copies
+ * of the last patch. */
+static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD;
+    int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
     sbuf_printf(o, "    size_t l;\n    for (l = 0; l < n; l += %sVW) {\n"
                    "        const float *q = soa + l;\n        size_t qs = stride;\n"
                    "        %svm %s, %s%s;\n        %svf u, v%s;\n"
@@ -344,6 +354,14 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                 info->certified ? ", t" : "", up, up, up, up, up,
                 world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
                 world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
+}
+
+/* The loads of every point's coordinates (world: with the eye's products a, b; clip: g = e2 w)
+ * and, certified, R and the size guard. */
+static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const cert_bounds *cb)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD, k;
     for (k = 0; k < t->dom.npoints; k++) {
         if (world)
             sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
@@ -373,6 +391,19 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                        "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %af) == 0;\n",
                     px, px, (double)cb->q_max);
     }
+}
+
+/* The straight-line program: every term and, after a plane's last, its value into the masks. */
+static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
+                       ptp_error *err)
+{
+    const char *px = info->prefix, *op;
+    int world = info->space == OUT_WORLD, first_group = 1;
+    int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
+    unsigned char *done = calloc(p->npairs + 1, 1);
+    size_t i;
+    if (!done)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
     for (i = 0; i < p->nterms; i++) {
         const slp_term *x = &p->terms[i];
         int last = i + 1 == p->nterms || p->terms[i + 1].plane != x->plane;
@@ -397,6 +428,18 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                            "        nan %s v != v; /* plane %d */\n",
                         op, op, op, x->plane);
     }
+    free(done);
+    return PTP_OK;
+}
+
+/* The lanes and certify64 compute a class arithmetically from 0/1 masks, in these numbers. */
+_Static_assert(PTP_FRONT == 0 && PTP_BACK == 1 && PTP_SILHOUETTE == 2, "ptp_class's numbers");
+
+/* The end of the lanes function: each lane's class from the masks, stored. */
+static void put_lanes_class(sbuf *o, const out_info *info)
+{
+    const char *px = info->prefix;
+    int strict = info->rule == OUT_STRICT || info->certified;
     if (info->certified)
         sbuf_puts(o, "        /* Certified: back (1) iff every value is below minus its bound, front (0) iff\n"
                      "         * every value is above its bound; 3 where only the plain signs decide (a second\n"
@@ -416,18 +459,34 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                          : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
     sbuf_printf(o, "    }\n}\n"
                    "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
-    if (info->refine)
-        put_refine(o, t, info, up);
-    else if (info->certified && (st = put_certify64(o, t, info, up, err)) != PTP_OK) {
-        free(done);
+}
+
+/* The straight-line kernel over n patches in structure-of-arrays order (the lanes function). */
+static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
+                     const out_info *info, const char *up, ptp_error *err)
+{
+    int st;
+    put_lanes_head(o, info, up);
+    put_lanes_loop(o, info, up);
+    put_loads(o, t, info, cb);
+    if ((st = put_program(o, p, cb, info, err)) != PTP_OK)
         return st;
-    }
+    put_lanes_class(o, info);
+    return PTP_OK;
+}
+
+/* classify (one patch, the SoA layout with stride 1) and classify_soa (the caller's SoA array):
+ * the lanes, then the second look named second (or NULL) at the patches they leave as again. */
+static void put_classify(sbuf *o, const out_info *info, const char *up, const char *second,
+                         const char *again)
+{
+    const char *px = info->prefix;
     sbuf_printf(o, "unsigned %sclassify(const float cp[][4], const float eye[4])\n{\n"
                    "    unsigned char c;\n"
                    "    %slanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */\n",
                 px, px);
     if (second)
-        sbuf_printf(o, "    if (c == %s%s)\n        c = (unsigned char)%s%s(cp, eye);\n", again_px, again,
+        sbuf_printf(o, "    if (c == %s)\n        c = (unsigned char)%s%s(cp, eye);\n", again,
                     px, second);
     sbuf_puts(o, "    return c;\n}\n\n");
     sbuf_printf(o, "void %sclassify_soa(const float *soa, size_t stride, size_t patch_count,\n"
@@ -437,15 +496,24 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     if (second)
         sbuf_printf(o, "    size_t p;\n    unsigned k, c;\n"
                        "    for (p = 0; p < patch_count; p++)\n"
-                       "        if (cls[p] == %s%s) {\n"
+                       "        if (cls[p] == %s) {\n"
                        "            float cp[%sPOINTS][4];\n"
                        "            for (k = 0; k < %sPOINTS; k++)\n"
                        "                for (c = 0; c < 4; c++)\n"
                        "                    cp[k][c] = soa[(k * 4 + c) * stride + p];\n"
                        "            cls[p] = (unsigned char)%s%s((const float (*)[4])cp, eye);\n"
                        "        }\n",
-                    again_px, again, up, up, px, second);
+                    again, up, up, px, second);
     sbuf_puts(o, "}\n\n");
+}
+
+/* classify_batch: blocks of LANES patches transposed to SoA (SSE2 where it may), the next block
+ * prefetched, the lanes, then the second look. */
+static void put_classify_batch(sbuf *o, const out_info *info, const char *up, const char *second,
+                               const char *again)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD;
     /* clip space never reads z: the transposition skips it */
     sbuf_printf(o, "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
                    "                    unsigned char *cls)\n{\n"
@@ -490,12 +558,52 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
                 up, up, up, up, px, up);
     if (second)
         sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
-                       "            if (cls[p + l] == %s%s)\n"
+                       "            if (cls[p + l] == %s)\n"
                        "                cls[p + l] = (unsigned char)%s%s(cp + (p + l) * %sPOINTS, eye);\n",
-                    again_px, again, px, second, up);
+                    again, px, second, up);
     sbuf_puts(o, "    }\n}\n");
-    free(done);
+}
+
+/* The second look, if any, and the three entry points on the lanes: classify (one patch),
+ * classify_soa and classify_batch (patch-major). */
+static int put_entries(sbuf *o, const tp_table *t, const out_info *info, const char *up,
+                       ptp_error *err)
+{
+    /* what silhouette patches get a second look from: refinement, or certification in double */
+    const char *second = info->refine ? "refined" : info->certified ? "certify64" : NULL;
+    char again[96]; /* the class the lanes leave for it: silhouette, or 3 (only plain signs decide) */
+    int st;
+    snprintf(again, sizeof again, "%s%s", info->certified ? "" : up,
+             info->certified ? "3u" : "SILHOUETTE");
+    if (info->refine)
+        put_refine(o, t, info, up);
+    else if (info->certified && (st = put_certify64(o, t, info, up, err)) != PTP_OK)
+        return st;
+    put_classify(o, info, up, second, again);
+    put_classify_batch(o, info, up, second, again);
     return PTP_OK;
+}
+
+/* The code from the straight-line program: the lanes function, the second look and the entry
+ * points; writes the program's flops per patch to flops (24 bytes). */
+static int put_code(sbuf *o, char *flops, const tp_table *t, const out_info *info, const char *up,
+                    ptp_error *err)
+{
+    slp_prog prog;
+    cert_bounds cb = {0};
+    int st = slp_build(&prog, t, err);
+    if (st)
+        return st;
+    snprintf(flops, 24, "%ld", slp_flops(&prog, info->space == OUT_WORLD));
+    if (info->certified)
+        st = cert_slp(&cb, &prog, info->space == OUT_WORLD, err);
+    if (!st)
+        st = put_lanes(o, &prog, &cb, t, info, up, err);
+    if (!st)
+        st = put_entries(o, t, info, up, err);
+    cert_clear(&cb);
+    slp_clear(&prog);
+    return st;
 }
 
 int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
@@ -504,7 +612,6 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     out_info plain;
     char up[64], file[96], points[16], planes[16], count[80], flops[24];
     tpl_slot slots[9];
-    slp_prog prog;
     int st;
     fmt_upper(up, sizeof up, info->prefix);
     fmt_file_name(file, sizeof file, info->prefix, ".h");
@@ -522,17 +629,7 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     sbuf_printf(&tables, "\n#define %sTERMS %zu\n", up, t->nterms);
     out_c_arrays(&tables, t, NULL, info->prefix, count, NULL, 0);
     put_functions(&funcs, info, up);
-    st = slp_build(&prog, t, err);
-    if (!st) {
-        cert_bounds cb = {0};
-        snprintf(flops, sizeof flops, "%ld", slp_flops(&prog, info->space == OUT_WORLD));
-        if (info->certified)
-            st = cert_slp(&cb, &prog, info->space == OUT_WORLD, err);
-        if (!st)
-            st = put_lanes(&funcs, &prog, &cb, t, info, up, err);
-        cert_clear(&cb);
-        slp_clear(&prog);
-    }
+    st = put_code(&funcs, flops, t, info, up, err);
     if (st) {
         sbuf_clear(&banner);
         sbuf_clear(&tables);

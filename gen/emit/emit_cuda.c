@@ -2,16 +2,30 @@
  * What is CUDA's own is this table; the kernel itself comes from kern_gpu.c and the template. */
 #include "emit/kern.h"
 
-static const kern_target cuda = {
-    "cuda", "CUDA kernel", "cuda/kernel.cu", ".cu", 1,
-    "unsigned", "float4", "__constant__", "static __device__ ", "__shared__", 1, "__syncthreads();", "", "__fmul_rn(%s, %s)",
-    "threadIdx.x", "blockIdx.x", "blockIdx.y", "gridDim.x", NULL,
-    " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count), extern \"C\": planes receives\n"
-    " * d[p*L + P] when not NULL. Launch P*Q threads per block and ceil(patch_count / Q) blocks,\n"
-    " * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.\n",
-    "fabsf", "fmaxf"};
+const kern_target kern_cuda = {
+    .name = "cuda",
+    .language = "CUDA kernel",
+    .template_name = "cuda/kernel.cu",
+    .file_ext = ".cu",
+    .named_kernel = 1,
+    .syntax = &kern_c_syntax,
+    .uint = "unsigned", .real = "float", .vec4 = "float4",
+    .table_qual = "__constant__",
+    .func_qual = "static __device__ ",
+    .shared_qual = "__shared__",
+    .shared_in_body = 1,
+    .barrier = "__syncthreads();",
+    .mul = "__fmul_rn(%s, %s)", /* not contracted into an FMA */
+    .local_id = "threadIdx.x",
+    .group_x = "blockIdx.x", .group_y = "blockIdx.y", .groups_x = "gridDim.x",
+    .interface =
+        " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count), extern \"C\": planes receives\n"
+        " * d[p*L + P] when not NULL. Launch P*Q threads per block and ceil(patch_count / Q) blocks,\n"
+        " * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.\n",
+    .fabs = "fabsf", .fmax = "fmaxf",
+};
 
 int emit_cuda(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    return kern_emit_gpu(o, t, info, &cuda, err);
+    return kern_emit_gpu(o, t, info, &kern_cuda, err);
 }

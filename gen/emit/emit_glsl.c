@@ -2,18 +2,30 @@
  * What is GLSL's own is this table; the kernel itself comes from kern_gpu.c and the template. */
 #include "emit/kern.h"
 
-static const kern_target glsl = {
-    "glsl", "GLSL 4.50 compute shader for Vulkan", "glsl/kernel.comp", ".comp", 0,
-    "uint", "vec4", "const", "", "shared", 0, "barrier();", "precise ", "%s * %s",
-    "gl_LocalInvocationID.x", "gl_WorkGroupID.x", "gl_WorkGroupID.y", "gl_NumWorkGroups.x",
-    "layout(std430, set = 0, binding = 2) writeonly buffer Planes { float planes[]; };\n",
-    " * Bindings (set 0, std430): 0 control points (readonly vec4[]), 1 classes (uint[]), 2 values\n"
-    " * d[p*L + P] (float[], with --planes). Push constants: { vec4 eye; uint patch_count; }.\n"
-    " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
-    " * workgroup (x, y) handles the patches of block y * num_groups_x + x.\n",
-    "abs", "max"};
+const kern_target kern_glsl = {
+    .name = "glsl",
+    .language = "GLSL 4.50 compute shader for Vulkan",
+    .template_name = "glsl/kernel.comp",
+    .file_ext = ".comp",
+    .syntax = &kern_c_syntax,
+    .uint = "uint", .real = "float", .vec4 = "vec4",
+    .table_qual = "const",
+    .shared_qual = "shared",
+    .barrier = "barrier();",
+    .precise = "precise ",
+    .mul = "%s * %s",
+    .local_id = "gl_LocalInvocationID.x",
+    .group_x = "gl_WorkGroupID.x", .group_y = "gl_WorkGroupID.y", .groups_x = "gl_NumWorkGroups.x",
+    .planes_buffer = "layout(std430, set = 0, binding = 2) writeonly buffer Planes { float planes[]; };\n",
+    .interface =
+        " * Bindings (set 0, std430): 0 control points (readonly vec4[]), 1 classes (uint[]), 2 values\n"
+        " * d[p*L + P] (float[], with --planes). Push constants: { vec4 eye; uint patch_count; }.\n"
+        " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
+        " * workgroup (x, y) handles the patches of block y * num_groups_x + x.\n",
+    .fabs = "abs", .fmax = "max",
+};
 
 int emit_glsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    return kern_emit_gpu(o, t, info, &glsl, err);
+    return kern_emit_gpu(o, t, info, &kern_glsl, err);
 }

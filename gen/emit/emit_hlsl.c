@@ -2,21 +2,32 @@
  * What is HLSL's own is this table; the kernel itself comes from kern_gpu.c and the template. */
 #include "emit/kern.h"
 
-static const kern_target hlsl = {
-    "hlsl", "HLSL compute shader (Direct3D 11/12; Vulkan via glslangValidator -D or DXC)",
-    "hlsl/kernel.hlsl", ".hlsl", 0,
-    "uint", "float4", "static const", "", "groupshared", 0, "GroupMemoryBarrierWithGroupSync();", "precise ", "%s * %s",
-    "lid3.x", "gid.x", "gid.y", "groups_x",
-    "[[vk::binding(2, 0)]] RWStructuredBuffer<float> planes : register(u2);\n",
-    " * Entry point main. Resources: t0 / Vulkan binding 0 the control points (StructuredBuffer<float4>),\n"
-    " * u1 / binding 1 the classes (RWStructuredBuffer<uint>), u2 / binding 2 the values d[p*L + P]\n"
-    " * (with --planes); constants in b0 / Vulkan push constants: { float4 eye; uint patch_count;\n"
-    " * uint groups_x; }, groups_x = the number of workgroups dispatched along x.\n"
-    " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
-    " * workgroup (x, y) handles the patches of block y * groups_x + x.\n",
-    "abs", "max"};
+const kern_target kern_hlsl = {
+    .name = "hlsl",
+    .language = "HLSL compute shader (Direct3D 11/12; Vulkan via glslangValidator -D or DXC)",
+    .template_name = "hlsl/kernel.hlsl",
+    .file_ext = ".hlsl",
+    .syntax = &kern_c_syntax,
+    .uint = "uint", .real = "float", .vec4 = "float4",
+    .table_qual = "static const",
+    .shared_qual = "groupshared",
+    .barrier = "GroupMemoryBarrierWithGroupSync();",
+    .precise = "precise ",
+    .mul = "%s * %s",
+    .local_id = "lid3.x",
+    .group_x = "gid.x", .group_y = "gid.y", .groups_x = "groups_x",
+    .planes_buffer = "[[vk::binding(2, 0)]] RWStructuredBuffer<float> planes : register(u2);\n",
+    .interface =
+        " * Entry point main. Resources: t0 / Vulkan binding 0 the control points (StructuredBuffer<float4>),\n"
+        " * u1 / binding 1 the classes (RWStructuredBuffer<uint>), u2 / binding 2 the values d[p*L + P]\n"
+        " * (with --planes); constants in b0 / Vulkan push constants: { float4 eye; uint patch_count;\n"
+        " * uint groups_x; }, groups_x = the number of workgroups dispatched along x.\n"
+        " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
+        " * workgroup (x, y) handles the patches of block y * groups_x + x.\n",
+    .fabs = "abs", .fmax = "max",
+};
 
 int emit_hlsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    return kern_emit_gpu(o, t, info, &hlsl, err);
+    return kern_emit_gpu(o, t, info, &kern_hlsl, err);
 }

@@ -2,17 +2,30 @@
  * What is OpenCL's own is this table; the kernel itself comes from kern_gpu.c and the template. */
 #include "emit/kern.h"
 
-static const kern_target opencl = {
-    "opencl", "OpenCL C 1.2 kernel", "opencl/kernel.cl", ".cl", 1,
-    "uint", "float4", "constant", "", "local", 1, "barrier(CLK_LOCAL_MEM_FENCE);", "", "%s * %s",
-    "(uint)get_local_id(0)", "(uint)get_group_id(0)", "(uint)get_group_id(1)",
-    "(uint)get_num_groups(0)", NULL,
-    " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count): planes receives d[p*L + P] when not\n"
-    " * NULL. Work-group size exactly P*Q; ceil(patch_count / Q) work-groups, 1-D or 2-D:\n"
-    " * work-group (x, y) handles the patches of block y * num_groups(0) + x.\n",
-    "fabs", "fmax"};
+const kern_target kern_opencl = {
+    .name = "opencl",
+    .language = "OpenCL C 1.2 kernel",
+    .template_name = "opencl/kernel.cl",
+    .file_ext = ".cl",
+    .named_kernel = 1,
+    .syntax = &kern_c_syntax,
+    .uint = "uint", .real = "float", .vec4 = "float4",
+    .table_qual = "constant",
+    .shared_qual = "local",
+    .shared_in_body = 1,
+    .barrier = "barrier(CLK_LOCAL_MEM_FENCE);",
+    .mul = "%s * %s", /* not contracted: the template sets FP_CONTRACT OFF */
+    .local_id = "(uint)get_local_id(0)",
+    .group_x = "(uint)get_group_id(0)", .group_y = "(uint)get_group_id(1)",
+    .groups_x = "(uint)get_num_groups(0)",
+    .interface =
+        " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count): planes receives d[p*L + P] when not\n"
+        " * NULL. Work-group size exactly P*Q; ceil(patch_count / Q) work-groups, 1-D or 2-D:\n"
+        " * work-group (x, y) handles the patches of block y * num_groups(0) + x.\n",
+    .fabs = "fabs", .fmax = "fmax",
+};
 
 int emit_opencl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    return kern_emit_gpu(o, t, info, &opencl, err);
+    return kern_emit_gpu(o, t, info, &kern_opencl, err);
 }

@@ -1,24 +1,83 @@
-/* kern.h: the compute-kernel targets: what differs between them, as data, and the emitters.
- * All logic (tables, schedule, classification) is computed in C; templates hold boilerplate. */
+/* kern.h: the kernel emitters (the GPU targets' and the C header's) and kern_target, the data
+ * table that specializes the one GPU emitter, with kern_syntax, its hooks for a language's form. */
 #ifndef KERN_H
 #define KERN_H
 
 #include "emit/out.h"
 
-/* What differs between the GPU targets: one table per target (emit_glsl.c, ...). */
+typedef struct kern_target kern_target;
+
+/* A variable of a local declaration: its name, its initializer (NULL: none; the kernel assigns
+ * the variable before it reads it), and whether it is assigned again after its declaration. */
 typedef struct {
+    const char *name, *init;
+    int assigned;
+} kern_var;
+
+/* A parameter of a helper function. */
+typedef struct {
+    const char *type, *name;
+} kern_param;
+
+/* How a family of languages writes what differs in structure. kern_gpu.c writes everything else
+ * in one syntax every target accepts: the operators + - * / % & | >> == != < > ! && (operands of
+ * & and | parenthesized), indexing, .x .y .z .w components, calls, the assignments = += |= and
+ * i++, `for (init; cond; step)` and `if (cond)` with braced or single-statement bodies (see
+ * braces), `return`, slash-star comments, and literals that carry their type (16u, 0xffffu, 1.0f),
+ * with no implicit conversion between integers and floats. Type names passed to the hooks are
+ * the target's uint, real or vec4, or "bool". kern_c_syntax is the C family's. */
+typedef struct {
+    /* Appends a whole line declaring the compile-time constant name of the given type, with
+     * value (a literal) and comment (words, or NULL). C: #define NAME VALUE and the comment. */
+    void (*constant)(sbuf *o, const kern_target *g, const char *name, const char *type,
+                     const char *value, const char *comment);
+    /* Appends the start of a file-scope constant table name of n values of type, up to the first
+     * value; the caller then writes the values (the first after "\n    ", the others after ", "
+     * or ",\n    ") and table_close. C: `table_qual type name[n] = {`. */
+    void (*table_open)(sbuf *o, const kern_target *g, const char *type, const char *name, long n);
+    const char *table_close; /* ends a table after its last value, with the newline; C "\n};\n" */
+    /* Appends a whole line, starting with indent, declaring the workgroup-shared array name of
+     * count values of type; count is an expression of constants. C: `shared_qual type name[count];` */
+    void (*shared)(sbuf *o, const kern_target *g, const char *indent, const char *type,
+                   const char *name, const char *count);
+    /* Appends the head of a helper function through the line with its opening brace: the result
+     * type ret, the name and the n parameters p. The body follows; the caller closes it with "}".
+     * C: `func_qual ret name(type a, type b)` and "{" on its own line. */
+    void (*function)(sbuf *o, const kern_target *g, const char *ret, const char *name,
+                     const kern_param *p, int n);
+    /* Appends whole lines, starting with indent, declaring the n local variables v of one type.
+     * exact: no product of the initializers may be contracted into an FMA (where the language can
+     * say so: C family, the target's precise qualifier). C: `type a = x, b;` on one line. */
+    void (*locals)(sbuf *o, const kern_target *g, const char *indent, const char *type,
+                   const kern_var *v, int n, int exact);
+    /* Writes to out (size bytes, truncating as snprintf) the expression "t if cond, else f", with
+     * no parentheses around it (the caller adds them where an operator follows); f may itself be
+     * a select. C: `cond ? t : f`. */
+    void (*select)(char *out, size_t size, const char *cond, const char *t, const char *f);
+    const char *isnan; /* printf format of whether the float %s is NaN, a bool; C "isnan(%s)" */
+    int braces;        /* 1: bodies of for and if are always braced; 0: a single statement is not */
+} kern_syntax;
+
+/* What differs between the GPU targets: one table per target (kern_glsl in emit_glsl.c, ...).
+ * A string field documented "or NULL" may be left out of the initializer. The kernel's text
+ * names what its template declares: cp (the points, vec4), cls (the classes), planes, eye and
+ * patch_count. A new target is a file with its table (and, outside the C family, its
+ * kern_syntax), its template templates/<name>/, and an entry where the targets are listed. */
+struct kern_target {
     const char *name;          /* "glsl" */
     const char *language;      /* for the banner: "GLSL 4.50 compute shader" */
     const char *template_name; /* "glsl/kernel.comp" */
     const char *file_ext;      /* ".comp" */
     int named_kernel;          /* the kernel is <prefix>classify (else the entry point is main) */
-    const char *uint, *vec4;   /* the scalar and vector type names */
+    const kern_syntax *syntax; /* the language's structure */
+    const char *uint, *real, *vec4; /* the type names: 32-bit unsigned, float, 4 floats */
     const char *table_qual;    /* qualifier of constant tables */
-    const char *func_qual;     /* qualifier of helper functions */
+    const char *func_qual;     /* qualifier of helper functions, with its space, or NULL */
     const char *shared_qual;   /* qualifier of workgroup-shared arrays */
     int shared_in_body;        /* shared arrays are declared inside the kernel (else at file scope) */
     const char *barrier;       /* a workgroup barrier with shared-memory ordering, as a statement */
-    const char *precise;       /* qualifier that forbids contracting a*b - c*d into an FMA, or "" */
+    const char *precise;       /* qualifier that forbids contracting a*b - c*d into an FMA, with
+                                  its space, or NULL */
     const char *mul;           /* a product of two operands, printf format ("%s * %s") */
     const char *local_id;      /* the invocation's index in its workgroup */
     const char *group_x, *group_y, *groups_x; /* workgroup ids and the number along x */
@@ -26,7 +85,12 @@ typedef struct {
                                   NULL when it is a kernel parameter that may be null */
     const char *interface;     /* the banner's description of bindings / signature and dispatch */
     const char *fabs, *fmax;   /* absolute value and maximum of floats (--certified) */
-} kern_target;
+};
+
+/* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */
+extern const kern_syntax kern_c_syntax;
+/* The GPU targets' tables. */
+extern const kern_target kern_glsl, kern_hlsl, kern_opencl, kern_cuda;
 
 /* Writes a GPU kernel for target g: P threads per patch accumulate the planes they own in
  * shared memory from the scheduled tables, then one thread per patch combines the signs. */

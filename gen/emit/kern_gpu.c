@@ -1,4 +1,4 @@
-/* kern_gpu.c: the one GPU kernel emitter, specialized by a target's data table.
+/* kern_gpu.c: the one GPU kernel emitter, specialized by a target's data table and syntax hooks.
  * Computes the banner, constant tables, helper functions and body, then fills the template. */
 #include "plan/cert.h"
 #include "emit/fmt.h"
@@ -9,51 +9,152 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Appends a constant table: `qual type NAME[n] = { ... };`, `per_line` values to a line, in hex
- * (packed fields) or decimal. */
+/* s, or "" for NULL (a string field left out of a table). */
+static const char *opt(const char *s)
+{
+    return s ? s : "";
+}
+
+/* The C family's hooks: the contracts are kern_syntax's (kern.h). */
+static void c_constant(sbuf *o, const kern_target *g, const char *name, const char *type,
+                       const char *value, const char *comment)
+{
+    (void)g, (void)type;
+    if (comment)
+        sbuf_printf(o, "#define %s %s /* %s */\n", name, value, comment);
+    else
+        sbuf_printf(o, "#define %s %s\n", name, value);
+}
+
+static void c_table_open(sbuf *o, const kern_target *g, const char *type, const char *name, long n)
+{
+    sbuf_printf(o, "%s %s %s[%ld] = {", g->table_qual, type, name, n);
+}
+
+static void c_shared(sbuf *o, const kern_target *g, const char *indent, const char *type,
+                     const char *name, const char *count)
+{
+    sbuf_printf(o, "%s%s %s %s[%s];\n", indent, g->shared_qual, type, name, count);
+}
+
+static void c_function(sbuf *o, const kern_target *g, const char *ret, const char *name,
+                       const kern_param *p, int n)
+{
+    int i;
+    sbuf_printf(o, "%s%s %s(", opt(g->func_qual), ret, name);
+    for (i = 0; i < n; i++)
+        sbuf_printf(o, "%s%s %s", i == 0 ? "" : ", ", p[i].type, p[i].name);
+    sbuf_puts(o, ")\n{\n");
+}
+
+static void c_locals(sbuf *o, const kern_target *g, const char *indent, const char *type,
+                     const kern_var *v, int n, int exact)
+{
+    int i;
+    sbuf_printf(o, "%s%s%s ", indent, exact ? opt(g->precise) : "", type);
+    for (i = 0; i < n; i++)
+        sbuf_printf(o, "%s%s%s%s", i == 0 ? "" : ", ", v[i].name, v[i].init ? " = " : "",
+                    opt(v[i].init));
+    sbuf_puts(o, ";\n");
+}
+
+static void c_select(char *out, size_t size, const char *cond, const char *t, const char *f)
+{
+    snprintf(out, size, "%s ? %s : %s", cond, t, f);
+}
+
+const kern_syntax kern_c_syntax = {
+    .constant = c_constant,
+    .table_open = c_table_open,
+    .table_close = "\n};\n",
+    .shared = c_shared,
+    .function = c_function,
+    .locals = c_locals,
+    .select = c_select,
+    .isnan = "isnan(%s)",
+    .braces = 0,
+};
+
+/* Ends the head of a for or an if whose body, one statement, follows on the next line. */
+static void put_then(sbuf *o, const kern_target *g)
+{
+    sbuf_puts(o, g->syntax->braces ? " {\n" : "\n");
+}
+
+/* Closes the body put_then opened, at the head's indent. */
+static void put_end(sbuf *o, const kern_target *g, const char *indent)
+{
+    if (g->syntax->braces)
+        sbuf_printf(o, "%s}\n", indent);
+}
+
+/* Declares one local variable (see kern_syntax.locals). */
+static void put_local(sbuf *o, const kern_target *g, const char *type, const char *name,
+                      const char *init, int assigned)
+{
+    kern_var v = {name, init, assigned};
+    g->syntax->locals(o, g, "    ", type, &v, 1, 0);
+}
+
+/* The separator before value i of a table with per_line values to a line. */
+static const char *table_sep(long i, int per_line)
+{
+    return i == 0 ? "\n    " : i % per_line ? ", " : ",\n    ";
+}
+
+/* Appends a constant table prefix+name of n uints, `per_line` values to a line, in hex (packed
+ * fields) or decimal. */
 static void put_uint_table(sbuf *o, const kern_target *g, const char *prefix, const char *name,
                            const unsigned long *v, long n, int per_line, int hex)
 {
+    char full[128];
     long i;
-    sbuf_printf(o, "%s %s %s%s[%ld] = {", g->table_qual, g->uint, prefix, name, n);
+    snprintf(full, sizeof full, "%s%s", prefix, name);
+    g->syntax->table_open(o, g, g->uint, full, n);
     for (i = 0; i < n; i++)
-        sbuf_printf(o, hex ? "%s0x%05lxu" : "%s%luu", i == 0 ? "\n    " : i % per_line ? ", " : ",\n    ",
-                    v[i]);
-    sbuf_puts(o, "\n};\n");
+        sbuf_printf(o, hex ? "%s0x%05lxu" : "%s%luu", table_sep(i, per_line), v[i]);
+    sbuf_puts(o, g->syntax->table_close);
 }
 
-/* The constant tables: the owned planes of each thread (CSR), and per round the slots of the
- * P threads (packed indices and weights); padding slots name an owned plane with weight 0. */
-/* Appends a constant float table NAME[n] = { ... } (values rounded to floats exactly, 9 digits). */
+/* Appends a constant float table prefix+name of n values (rounded to floats exactly, 9 digits). */
 static void put_float_table(sbuf *o, const kern_target *g, const char *prefix, const char *name,
                             const float *v, int n)
 {
+    char full[128];
     int i;
-    sbuf_printf(o, "%s float %s%s[%d] = {", g->table_qual, prefix, name, n);
+    snprintf(full, sizeof full, "%s%s", prefix, name);
+    g->syntax->table_open(o, g, g->real, full, n);
     for (i = 0; i < n; i++) {
         char lit[48];
         sprintf(lit, "%.9g", (double)v[i]);
         if (!strpbrk(lit, ".en"))
             strcat(lit, ".0");
-        sbuf_printf(o, "%s%sf", i == 0 ? "\n    " : i % 6 ? ", " : ",\n    ", lit);
+        sbuf_printf(o, "%s%sf", table_sep(i, 6), lit);
     }
-    sbuf_puts(o, "\n};\n");
+    sbuf_puts(o, g->syntax->table_close);
 }
 
-static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
-                      const char *up, ptp_error *err)
+/* Declares the constant up+name = value (a uint) with its comment. */
+static void put_uint_constant(sbuf *o, const kern_target *g, const char *up, const char *name,
+                              long value, const char *comment)
+{
+    char full[128], lit[32];
+    snprintf(full, sizeof full, "%s%s", up, name);
+    snprintf(lit, sizeof lit, "%ldu", value);
+    g->syntax->constant(o, g, full, g->uint, lit, comment);
+}
+
+/* The constants P, Q, K, L and the planes each thread owns (CSR: own_start, own_plane); v has
+ * room for nplanes + P + 1 values. */
+static void put_owners(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                       const char *up, unsigned long *v)
 {
     const sched *s = info->sched;
-    int P = s->threads, th, p, r, k = 0;
-    int L = t->dom.nplanes;
-    unsigned long *v = malloc((size_t)(2 * P > L ? 2 * P : L + P + 1) * sizeof *v);
-    char lit[48];
-    if (!v)
-        return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
-    sbuf_printf(o, "#define %sP %du /* threads per patch */\n", up, P);
-    sbuf_printf(o, "#define %sQ %du /* patches per workgroup */\n", up, s->patches);
-    sbuf_printf(o, "#define %sK %du /* control points per patch */\n", up, t->dom.npoints);
-    sbuf_printf(o, "#define %sL %du /* control planes per patch */\n", up, t->dom.nplanes);
+    int P = s->threads, th, p, k = 0;
+    put_uint_constant(o, g, up, "P", P, "threads per patch");
+    put_uint_constant(o, g, up, "Q", s->patches, "patches per workgroup");
+    put_uint_constant(o, g, up, "K", t->dom.npoints, "control points per patch");
+    put_uint_constant(o, g, up, "L", t->dom.nplanes, "control planes per patch");
     sbuf_printf(o, "/* %d rounds: the largest number of terms of one thread. */\n\n", s->rounds);
     for (th = 0; th <= P; th++) {
         v[th] = (unsigned long)k;
@@ -68,162 +169,230 @@ static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const ke
                 v[k++] = (unsigned long)p;
     put_uint_table(o, g, info->prefix, "own_plane", v, t->dom.nplanes, 16, 0);
     sbuf_puts(o, "\n");
-    for (r = 0; r < s->rounds; r++) {
-        /* Round r: one small table per field, indexed by the thread. Unrolled, so that no
-         * shader indexes a large constant array dynamically (lavapipe copies such an array
-         * on every access; GPUs prefer small tables too). */
-        char name[32];
-        for (th = 0; th < P; th++) {
-            long x = s->slot[(long)r * P + th];
-            int plane = x >= 0 ? t->terms[x].plane : sched_padding_plane(s, th);
-            v[th] = (unsigned long)plane | (unsigned long)(x >= 0 ? t->terms[x].j : 0) << 16;
-            v[P + th] = x >= 0 ? (unsigned long)t->terms[x].k | (unsigned long)t->terms[x].l << 16 : 0;
-        }
-        sbuf_printf(o, "/* Round %d: thread t adds w%d[t] * term(plane | j << 16 = pj%d[t], k | l << 16 = kl%d[t]). */\n",
-                    r, r, r, r);
-        snprintf(name, sizeof name, "pj%d", r);
-        put_uint_table(o, g, info->prefix, name, v, P, 8, 1);
-        snprintf(name, sizeof name, "kl%d", r);
-        put_uint_table(o, g, info->prefix, name, v + P, P, 8, 1);
-        sbuf_printf(o, "%s float %sw%d[%d] = {", g->table_qual, info->prefix, r, P);
-        for (th = 0; th < P; th++) {
-            long x = s->slot[(long)r * P + th];
-            rat zero;
-            rat_set_si(&zero, 0);
-            fmt_float_literal(lit, x >= 0 ? &t->terms[x].w : &zero);
-            sbuf_printf(o, "%s%s", th == 0 ? "\n    " : th % 8 ? ", " : ",\n    ", lit);
-        }
-        sbuf_puts(o, "\n};\n\n");
+}
+
+/* Round r's tables: the slots of the P threads (packed indices pj, kl and weights w); padding
+ * slots name an owned plane with weight 0. One small table per field, indexed by the thread:
+ * no shader indexes a large constant array dynamically (lavapipe copies such an array on every
+ * access; GPUs prefer small tables too). v has room for 2 P values. */
+static void put_round(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                      int r, unsigned long *v)
+{
+    const sched *s = info->sched;
+    int P = s->threads, th;
+    char name[32], lit[48];
+    for (th = 0; th < P; th++) {
+        long x = s->slot[(long)r * P + th];
+        int plane = x >= 0 ? t->terms[x].plane : sched_padding_plane(s, th);
+        v[th] = (unsigned long)plane | (unsigned long)(x >= 0 ? t->terms[x].j : 0) << 16;
+        v[P + th] = x >= 0 ? (unsigned long)t->terms[x].k | (unsigned long)t->terms[x].l << 16 : 0;
     }
-    free(v);
-    if (info->certified) {
-        cert_bounds cb;
-        int st = cert_table(&cb, t, info->space == OUT_WORLD, err);
-        if (st)
-            return st;
-        sbuf_printf(o, "/* Certified: |d_P - exact| <= tau_k[P] * E R^3 + tau_f[P] * (1 + R)^3 (1 + E), R the\n"
-                       " * patch's largest |coordinate|, E the eye's; for max(E, 1) R^3 < %sQMAX. */\n"
-                       "#define %sQMAX %.9gf\n",
-                    up, up, (double)cb.q_max);
-        put_float_table(o, g, info->prefix, "tau_k", cb.k, cb.nplanes);
-        put_float_table(o, g, info->prefix, "tau_f", cb.k2, cb.nplanes);
-        sbuf_puts(o, "\n");
-        cert_clear(&cb);
+    sbuf_printf(o, "/* Round %d: thread t adds w%d[t] * term(plane | j << 16 = pj%d[t], k | l << 16 = kl%d[t]). */\n",
+                r, r, r, r);
+    snprintf(name, sizeof name, "pj%d", r);
+    put_uint_table(o, g, info->prefix, name, v, P, 8, 1);
+    snprintf(name, sizeof name, "kl%d", r);
+    put_uint_table(o, g, info->prefix, name, v + P, P, 8, 1);
+    snprintf(name, sizeof name, "%sw%d", info->prefix, r);
+    g->syntax->table_open(o, g, g->real, name, P);
+    for (th = 0; th < P; th++) {
+        long x = s->slot[(long)r * P + th];
+        rat zero;
+        rat_set_si(&zero, 0);
+        fmt_float_literal(lit, x >= 0 ? &t->terms[x].w : &zero);
+        sbuf_printf(o, "%s%s", table_sep(th, 8), lit);
     }
+    sbuf_puts(o, g->syntax->table_close);
+    sbuf_puts(o, "\n");
+}
+
+/* --certified: QMAX and the bounds' factors tau_k, tau_f of every plane. */
+static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                           const char *up, ptp_error *err)
+{
+    cert_bounds cb;
+    char name[128], lit[48];
+    int st = cert_table(&cb, t, info->space == OUT_WORLD, err);
+    if (st)
+        return st;
+    sbuf_printf(o, "/* Certified: |d_P - exact| <= tau_k[P] * E R^3 + tau_f[P] * (1 + R)^3 (1 + E), R the\n"
+                   " * patch's largest |coordinate|, E the eye's; for max(E, 1) R^3 < %sQMAX. */\n",
+                up);
+    snprintf(name, sizeof name, "%sQMAX", up);
+    snprintf(lit, sizeof lit, "%.9gf", (double)cb.q_max);
+    g->syntax->constant(o, g, name, g->real, lit, NULL);
+    put_float_table(o, g, info->prefix, "tau_k", cb.k, cb.nplanes);
+    put_float_table(o, g, info->prefix, "tau_f", cb.k2, cb.nplanes);
+    sbuf_puts(o, "\n");
+    cert_clear(&cb);
     return PTP_OK;
 }
 
-/* Appends det[a b c] of rows p, q, s (components "xyzw"[i]) with the target's products. */
-static void put_det(sbuf *o, const kern_target *g, int p, int q, int s)
+/* The constants and the constant tables: the owned planes of each thread, per round the slots of
+ * the P threads and, certified, the bounds. */
+static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                      const char *up, ptp_error *err)
+{
+    int P = info->sched->threads, r;
+    unsigned long *v = malloc((size_t)(2 * P > t->dom.nplanes ? 2 * P : t->dom.nplanes + P + 1) * sizeof *v);
+    if (!v)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
+    put_owners(o, t, info, g, up, v);
+    for (r = 0; r < info->sched->rounds; r++)
+        put_round(o, t, info, g, r, v);
+    free(v);
+    return info->certified ? put_cert_tables(o, t, info, g, up, err) : PTP_OK;
+}
+
+/* Writes to d (512 bytes) det[a b c] of rows p, q, s (components "xyzw"[i]) with the target's
+ * products, its lines after the first indented by 8. */
+static void put_det(char *d, const kern_target *g, int p, int q, int s)
 {
     static const char comp[] = "xyzw";
     const char *col = "abc";
+    size_t n = 0;
     int i;
     for (i = 0; i < 3; i++) {
         /* cofactor expansion along row p: +a.p (b c), -b.p (a c), +c.p (a b) */
-        char u = col[i == 0 ? 1 : 0], v = col[i == 2 ? 1 : 2], x[16], y[16], m1[48], m2[48], d[128];
+        char u = col[i == 0 ? 1 : 0], v = col[i == 2 ? 1 : 2], x[16], y[16], m1[48], m2[48], e[128];
         snprintf(x, sizeof x, "%c.%c", u, comp[q]);
         snprintf(y, sizeof y, "%c.%c", v, comp[s]);
         snprintf(m1, sizeof m1, g->mul, x, y);
         snprintf(x, sizeof x, "%c.%c", u, comp[s]);
         snprintf(y, sizeof y, "%c.%c", v, comp[q]);
         snprintf(m2, sizeof m2, g->mul, x, y);
-        snprintf(d, sizeof d, "(%s - %s)", m1, m2);
+        snprintf(e, sizeof e, "(%s - %s)", m1, m2);
         snprintf(x, sizeof x, "%c.%c", col[i], comp[p]);
-        sbuf_puts(o, i == 0 ? "" : i == 1 ? " -\n        " : " +\n        ");
-        sbuf_printf(o, g->mul, x, d);
+        n += (size_t)snprintf(d + n, 512 - n, "%s", i == 0 ? "" : i == 1 ? " -\n        " : " +\n        ");
+        n += (size_t)snprintf(d + n, 512 - n, g->mul, x, e); /* at most 3 * 170 bytes in all */
     }
 }
 
-/* The helper functions: the term (cross4's z, or eye . cross4), the flags of one value and the
- * class of a patch's flags, per space and rule. The products are never contracted into FMAs, so
- * a term with two equal points (a collapsed edge) is exactly zero, as the degenerate rule needs. */
-static void put_functions(sbuf *o, const out_info *info, const kern_target *g)
+/* The term: cross4's z (clip space) or eye . cross4 (world). Its products are never contracted
+ * into FMAs, so a term with two equal points (a collapsed edge) is exactly zero, as the
+ * degenerate rule needs. */
+static void put_cross4(sbuf *o, const out_info *info, const kern_target *g)
 {
-    const char *f = g->func_qual, *u = g->uint, *v = g->vec4, *px = info->prefix;
+    const char *v = g->vec4;
+    kern_param p[4] = {{v, "a"}, {v, "b"}, {v, "c"}, {v, "e"}};
+    kern_var x = {"z", NULL, 0};
+    char name[128], det[512];
     if (info->space == OUT_CLIP) {
-        sbuf_printf(o, "/* The z component of cross4(a, b, c): det of rows x, y, w. */\n"
-                       "%sfloat %scross4z(%s a, %s b, %s c)\n{\n    %sfloat z = ",
-                    f, px, v, v, v, g->precise);
-        put_det(o, g, 0, 1, 3);
-        sbuf_puts(o, ";\n    return z;\n}\n\n");
+        sbuf_puts(o, "/* The z component of cross4(a, b, c): det of rows x, y, w. */\n");
+        snprintf(name, sizeof name, "%scross4z", info->prefix);
+        g->syntax->function(o, g, g->real, name, p, 3);
+        put_det(det, g, 0, 1, 3);
+        x.init = det;
+        g->syntax->locals(o, g, "    ", g->real, &x, 1, 1);
+        sbuf_puts(o, "    return z;\n}\n\n");
     } else {
         static const int rows[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+        static const char *const names[4] = {"x", "y", "z", "w"};
         int c;
-        sbuf_printf(o, "/* e . cross4(a, b, c), cross4 as in Appendix A of Loop, Niessner and Eisenacher:\n"
-                       " * (det yzw, -det xzw, det xyw, -det xyz) of the columns a, b, c. */\n"
-                       "%sfloat %seye_cross4(%s a, %s b, %s c, %s e)\n{\n", f, px, v, v, v, v);
+        sbuf_puts(o, "/* e . cross4(a, b, c), cross4 as in Appendix A of Loop, Niessner and Eisenacher:\n"
+                     " * (det yzw, -det xzw, det xyw, -det xyz) of the columns a, b, c. */\n");
+        snprintf(name, sizeof name, "%seye_cross4", info->prefix);
+        g->syntax->function(o, g, g->real, name, p, 4);
         for (c = 0; c < 4; c++) {
-            sbuf_printf(o, "    %sfloat %c = ", g->precise, "xyzw"[c]);
-            put_det(o, g, rows[c][0], rows[c][1], rows[c][2]);
-            sbuf_puts(o, ";\n");
+            put_det(det, g, rows[c][0], rows[c][1], rows[c][2]);
+            x.name = names[c];
+            x.init = det;
+            g->syntax->locals(o, g, "    ", g->real, &x, 1, 1);
         }
         sbuf_puts(o, "    return e.x * x - e.y * y + e.z * z - e.w * w;\n}\n\n");
     }
-    if (info->certified)
-        sbuf_printf(o,
-                    "/* Bit 0: d is not certainly < 0 (d >= -bound); bit 1: not certainly > 0 (NaN sets both). */\n"
-                    "%s%s %sflags(float d, float bound)\n{\n"
-                    "    return (d < -bound ? 0u : 1u) | (d > bound ? 0u : 2u);\n}\n\n"
-                    "/* Certified: back iff every value is certainly < 0, front iff every value is certainly > 0. */\n"
-                    "%s%s %sclass_of(%s f)\n{\n"
-                    "    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;\n}\n\n",
-                    f, u, px, f, u, px, u);
-    else if (info->rule == OUT_STRICT)
-        sbuf_printf(o,
-                    "/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */\n"
-                    "%s%s %sflags(float d)\n{\n"
-                    "    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);\n}\n\n"
-                    "/* Strict rule: back iff every value < 0, front iff every value > 0. */\n"
-                    "%s%s %sclass_of(%s f)\n{\n"
-                    "    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;\n}\n\n",
-                    f, u, px, f, u, px, u);
-    else
-        sbuf_printf(o,
-                    "/* Bit 0: d > 0; bit 1: d < 0; bit 2: d is NaN. */\n"
-                    "%s%s %sflags(float d)\n{\n"
-                    "    return (d > 0.0f ? 1u : 0u) | (d < 0.0f ? 2u : 0u) | (isnan(d) ? 4u : 0u);\n}\n\n"
-                    "/* Degenerate rule: back iff no value > 0, front iff no value < 0, NaN: silhouette. */\n"
-                    "%s%s %sclass_of(%s f)\n{\n"
-                    "    return (f & 4u) != 0u ? 2u : (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;\n}\n\n",
-                    f, u, px, f, u, px, u);
+}
+
+/* The flags of one value and the class of a patch's flags, per rule: flags sets bit b where
+ * bits[b][0] holds; class_of is the class of the first condition that holds, as selects. */
+static void put_classify(sbuf *o, const out_info *info, const kern_target *g)
+{
+    static const char *const doc[3][2] = {
+        {"Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both).",
+         "Strict rule: back iff every value < 0, front iff every value > 0."},
+        {"Bit 0: d > 0; bit 1: d < 0; bit 2: d is NaN.",
+         "Degenerate rule: back iff no value > 0, front iff no value < 0, NaN: silhouette."},
+        {"Bit 0: d is not certainly < 0 (d >= -bound); bit 1: not certainly > 0 (NaN sets both).",
+         "Certified: back iff every value is certainly < 0, front iff every value is certainly > 0."}};
+    static const char *const cond[3] = {"(f & 4u) != 0u", "(f & 1u) == 0u", "(f & 2u) == 0u"};
+    static const ptp_class cls[3] = {PTP_SILHOUETTE, PTP_BACK, PTP_FRONT};
+    int m = info->certified ? 2 : info->rule == OUT_STRICT ? 0 : 1, i, k = 0;
+    char nan[64], name[128], e[2][256], c[16];
+    const char *bits[3][3][3] = {{{"d < 0.0f", "0u", "1u"}, {"d > 0.0f", "0u", "2u"}, {NULL}},
+                                 {{"d > 0.0f", "1u", "0u"}, {"d < 0.0f", "2u", "0u"}, {nan, "4u", "0u"}},
+                                 {{"d < -bound", "0u", "1u"}, {"d > bound", "0u", "2u"}, {NULL}}};
+    kern_param p[2] = {{g->real, "d"}, {g->real, "bound"}}, pf = {g->uint, "f"};
+    snprintf(nan, sizeof nan, g->syntax->isnan, "d");
+    snprintf(name, sizeof name, "%sflags", info->prefix);
+    sbuf_printf(o, "/* %s */\n", doc[m][0]);
+    g->syntax->function(o, g, g->uint, name, p, m == 2 ? 2 : 1);
+    sbuf_puts(o, "    return ");
+    for (i = 0; i < 3 && bits[m][i][0]; i++) {
+        g->syntax->select(e[0], sizeof e[0], bits[m][i][0], bits[m][i][1], bits[m][i][2]);
+        sbuf_printf(o, "%s(%s)", i == 0 ? "" : " | ", e[0]);
+    }
+    snprintf(e[0], sizeof e[0], "%uu", (unsigned)PTP_SILHOUETTE); /* when no condition holds */
+    for (i = 2; i >= (m == 1 ? 0 : 1); i--, k = !k) { /* NaN first, under the degenerate rule */
+        snprintf(c, sizeof c, "%uu", (unsigned)cls[i]);
+        g->syntax->select(e[!k], sizeof e[0], cond[i], c, e[k]);
+    }
+    snprintf(name, sizeof name, "%sclass_of", info->prefix);
+    sbuf_printf(o, ";\n}\n\n/* %s */\n", doc[m][1]);
+    g->syntax->function(o, g, g->uint, name, &pf, 1);
+    sbuf_printf(o, "    return %s;\n}\n\n", e[k]);
 }
 
 /* The workgroup-shared arrays: the patches' points, the planes' accumulators, the flags. */
 static void put_shared(sbuf *o, const kern_target *g, const char *up, const char *indent)
 {
-    sbuf_printf(o, "%s%s %s pts[%sQ * %sK];\n", indent, g->shared_qual, g->vec4, up, up);
-    sbuf_printf(o, "%s%s float acc[%sQ * %sL];\n", indent, g->shared_qual, up, up);
-    sbuf_printf(o, "%s%s %s flags[%sQ * %sP];\n", indent, g->shared_qual, g->uint, up, up);
+    char count[160];
+    snprintf(count, sizeof count, "%sQ * %sK", up, up);
+    g->syntax->shared(o, g, indent, g->vec4, "pts", count);
+    snprintf(count, sizeof count, "%sQ * %sL", up, up);
+    g->syntax->shared(o, g, indent, g->real, "acc", count);
+    snprintf(count, sizeof count, "%sQ * %sP", up, up);
+    g->syntax->shared(o, g, indent, g->uint, "flags", count);
 }
 
-/* The kernel body, in the syntax every GPU target shares, with the target's names. */
-static void put_body(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+/* The body's start: the thread's place (lid, q, t), its patch (pid, live), the loop variables
+ * and the flags f; then the patch's control points into shared memory. */
+static void put_load(sbuf *o, const kern_target *g, const char *up)
 {
-    const char *u = g->uint, *px = info->prefix;
-    const char *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
+    char q[96], t[96], pid[256];
+    kern_var v[6] = {{"lid", g->local_id, 0}, {"q", q, 0}, {"t", t, 0},
+                     {"i", NULL, 1}, {"pj", NULL, 1}, {"kl", NULL, 1}};
+    snprintf(q, sizeof q, "lid / %sP", up);
+    snprintf(t, sizeof t, "lid %% %sP", up);
+    snprintf(pid, sizeof pid, "(%s * %s + %s) * %sQ + q", g->group_y, g->groups_x, g->group_x, up);
+    g->syntax->locals(o, g, "    ", g->uint, v, 6, 0);
+    put_local(o, g, g->uint, "pid", pid, 0);
+    put_local(o, g, g->uint, "f", "0u", 1);
+    put_local(o, g, "bool", "live", "pid < patch_count", 0);
+    sbuf_printf(o, "\n    /* The patch's control points into shared memory, P threads cooperating. */\n"
+                   "    for (i = t; i < %sK; i += %sP)",
+                up, up);
+    put_then(o, g);
+    sbuf_puts(o, "        if (live)");
+    put_then(o, g);
+    sbuf_printf(o, "            pts[q * %sK + i] = cp[pid * %sK + i];\n", up, up);
+    put_end(o, g, "        ");
+    put_end(o, g, "    ");
+    sbuf_printf(o, "    %s\n\n", g->barrier);
+}
+
+/* The accumulation of the planes this thread owns, one round at a time. */
+static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
     int r;
-    if (g->shared_in_body)
-        put_shared(o, g, up, "    ");
-    sbuf_printf(o,
-                "    %s lid = %s, q = lid / %sP, t = lid %% %sP, i, pj, kl;\n"
-                "    %s pid = (%s * %s + %s) * %sQ + q;\n"
-                "    %s f = 0u;\n"
-                "    bool live = pid < patch_count;\n\n",
-                u, g->local_id, up, up, u, g->group_y, g->groups_x, g->group_x, up, u);
-    sbuf_printf(o,
-                "    /* The patch's control points into shared memory, P threads cooperating. */\n"
-                "    for (i = t; i < %sK; i += %sP)\n"
-                "        if (live)\n"
-                "            pts[q * %sK + i] = cp[pid * %sK + i];\n"
-                "    %s\n\n",
-                up, up, up, up, g->barrier);
     sbuf_printf(o,
                 "    /* Accumulate the planes this thread owns, one round at a time: no other thread\n"
                 "     * touches them. */\n"
-                "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++)\n"
-                "        acc[q * %sL + %sown_plane[i]] = 0.0f;\n",
-                px, px, up, px);
+                "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++)",
+                px, px);
+    put_then(o, g);
+    sbuf_printf(o, "        acc[q * %sL + %sown_plane[i]] = 0.0f;\n", up, px);
+    put_end(o, g, "    ");
     for (r = 0; r < info->sched->rounds; r++) {
         sbuf_printf(o, "    pj = %spj%d[t];\n    kl = %skl%d[t];\n"
                        "    acc[q * %sL + (pj & 0xffffu)] += %sw%d[t] *\n",
@@ -234,53 +403,94 @@ static void put_body(sbuf *o, const out_info *info, const kern_target *g, const 
                     info->space == OUT_CLIP ? "" : ", eye");
     }
     sbuf_puts(o, "\n");
-    if (info->certified) {
-        const char *ab = g->fabs, *mx = g->fmax;
-        sbuf_printf(o, "    /* Certified: R, the patch's largest |coordinate|, and E, the eye's, bound the errors. */\n"
-                       "    float R = 0.0f;\n"
-                       "    for (i = 0u; i < %sK; i++) {\n"
-                       "        %s a = pts[q * %sK + i];\n",
-                    up, g->vec4, up);
-        if (info->space == OUT_CLIP)
-            sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(a.w)));\n    }\n", mx, mx, mx, ab,
-                        ab, ab);
-        else
-            sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(%s(a.z), %s(a.w))));\n    }\n", mx,
-                        mx, mx, ab, ab, mx, ab, ab);
-        if (info->space == OUT_CLIP)
-            sbuf_printf(o, "    float E = %s(eye.z);\n", ab);
-        else
-            sbuf_printf(o, "    float E = %s(%s(%s(eye.x), %s(eye.y)), %s(%s(eye.z), %s(eye.w)));\n", mx, mx,
-                        ab, ab, mx, ab, ab);
-        sbuf_printf(o, "    float R3 = R * R * R, ER3 = E * R3;\n"
-                       "    float F = (1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E);\n"
-                       "    if (!(%s(E, 1.0f) * R3 < %sQMAX))\n"
-                       "        f = 3u; /* too large for the bound, or NaN: never certified */\n",
-                    mx, up);
-    }
+}
+
+/* --certified: R, the patch's largest |coordinate|, E, the eye's, and the terms of the bounds;
+ * patches too large for the bound get flags 3 (never certified). */
+static void put_scale(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *ab = g->fabs, *mx = g->fmax, *f = g->real;
+    char e[256];
+    kern_var r3[2] = {{"R3", "R * R * R", 0}, {"ER3", "E * R3", 0}};
+    sbuf_puts(o, "    /* Certified: R, the patch's largest |coordinate|, and E, the eye's, bound the errors. */\n");
+    put_local(o, g, f, "R", "0.0f", 1);
+    sbuf_printf(o, "    for (i = 0u; i < %sK; i++) {\n", up);
+    snprintf(e, sizeof e, "pts[q * %sK + i]", up);
+    g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"a", e, 0}, 1, 0);
+    if (info->space == OUT_CLIP)
+        sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(a.w)));\n    }\n", mx, mx, mx, ab,
+                    ab, ab);
+    else
+        sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(%s(a.z), %s(a.w))));\n    }\n", mx,
+                    mx, mx, ab, ab, mx, ab, ab);
+    if (info->space == OUT_CLIP)
+        snprintf(e, sizeof e, "%s(eye.z)", ab);
+    else
+        snprintf(e, sizeof e, "%s(%s(%s(eye.x), %s(eye.y)), %s(%s(eye.z), %s(eye.w)))", mx, mx, ab, ab,
+                 mx, ab, ab);
+    put_local(o, g, f, "E", e, 0);
+    g->syntax->locals(o, g, "    ", f, r3, 2, 0);
+    put_local(o, g, f, "F", "(1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E)", 0);
+    sbuf_printf(o, "    if (!(%s(E, 1.0f) * R3 < %sQMAX))", mx, up);
+    put_then(o, g);
+    sbuf_puts(o, "        f = 3u; /* too large for the bound, or NaN: never certified */\n");
+    put_end(o, g, "    ");
+}
+
+/* The values and flags of the owned planes (and with --planes, the values written out). */
+static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *px = info->prefix;
+    char e[256];
     sbuf_printf(o,
                 "    /* The values and signs of the owned planes; then one thread combines the patch's. */\n"
-                "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n"
-                "        %s plane = %sown_plane[i];\n"
-                "        float d = %sacc[q * %sL + plane];\n",
-                px, px, u, px, info->space == OUT_CLIP ? "eye.z * " : "", up);
-    if (info->planes)
-        sbuf_printf(o, "        if (%slive)\n            planes[pid * %sL + plane] = d;\n",
-                    g->planes_buffer ? "" : "planes && ", up);
+                "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n",
+                px, px);
+    snprintf(e, sizeof e, "%sown_plane[i]", px);
+    g->syntax->locals(o, g, "        ", g->uint, &(kern_var){"plane", e, 0}, 1, 0);
+    snprintf(e, sizeof e, "%sacc[q * %sL + plane]", info->space == OUT_CLIP ? "eye.z * " : "", up);
+    g->syntax->locals(o, g, "        ", g->real, &(kern_var){"d", e, 0}, 1, 0);
+    if (info->planes) {
+        sbuf_printf(o, "        if (%slive)", g->planes_buffer ? "" : "planes && ");
+        put_then(o, g);
+        sbuf_printf(o, "            planes[pid * %sL + plane] = d;\n", up);
+        put_end(o, g, "        ");
+    }
     if (info->certified)
         sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * ER3 + %stau_f[plane] * F);\n", px, px, px);
     else
         sbuf_printf(o, "        f |= %sflags(d);\n", px);
+    sbuf_puts(o, "    }\n");
+}
+
+/* The end: the threads' flags through shared memory, and thread 0 of a patch writes its class. */
+static void put_combine(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
     sbuf_printf(o,
-                "    }\n"
                 "    flags[q * %sP + t] = f;\n"
                 "    %s\n"
                 "    if (live && t == 0u) {\n"
-                "        for (i = 1u; i < %sP; i++)\n"
-                "            f |= flags[q * %sP + i];\n"
-                "        cls[pid] = %sclass_of(f);\n"
-                "    }\n",
-                up, g->barrier, up, up, px);
+                "        for (i = 1u; i < %sP; i++)",
+                up, g->barrier, up);
+    put_then(o, g);
+    sbuf_printf(o, "            f |= flags[q * %sP + i];\n", up);
+    put_end(o, g, "        ");
+    sbuf_printf(o, "        cls[pid] = %sclass_of(f);\n"
+                   "    }\n",
+                info->prefix);
+}
+
+/* The kernel body, with the target's names and syntax. */
+static void put_body(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    if (g->shared_in_body)
+        put_shared(o, g, up, "    ");
+    put_load(o, g, up);
+    put_accumulate(o, info, g, up);
+    if (info->certified)
+        put_scale(o, info, g, up);
+    put_signs(o, info, g, up);
+    put_combine(o, info, g, up);
 }
 
 int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
@@ -301,7 +511,8 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     sbuf_init(&body);
     fmt_banner(&banner, t, info, file, g->language, g->interface);
     st = put_tables(&tables, t, info, g, up, err);
-    put_functions(&funcs, info, g);
+    put_cross4(&funcs, info, g);
+    put_classify(&funcs, info, g);
     put_body(&body, info, g, up);
     slots[n++] = (tpl_slot){"BANNER", banner.s};
     if (g->named_kernel)

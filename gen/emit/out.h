@@ -1,5 +1,5 @@
-/* out.h: the machine-readable outputs of a control-plane table: json, table, stats.
- * Each writes into an sbuf; nothing here touches files. */
+/* out.h: what every output is told (out_info) and the machine-readable outputs of a table: json,
+ * table, stats, and the C arrays the C header shares. Each writes into an sbuf, never a file. */
 #ifndef OUT_H
 #define OUT_H
 

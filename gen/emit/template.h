@@ -1,5 +1,5 @@
-/* template.h: the kernel templates compiled into ptpgen, and filling their named slots.
- * A slot is {{NAME}}; every slot a template names must be given, and every slot given used. */
+/* template.h: the templates compiled into ptpgen (the boilerplate of the C header and kernels,
+ * templates/<target>/), and filling their slots {{NAME}}, each given and used exactly as named. */
 #ifndef TEMPLATE_H
 #define TEMPLATE_H
 
@@ -20,8 +20,10 @@ typedef struct {
     const char *value;
 } tpl_slot;
 
-/* Appends template `name` to o with every {{NAME}} replaced by its slot's value. Fails with
- * PTP_EINTERNAL if the template is missing, names an unknown slot, or leaves a slot unused. */
+/* Appends template `name` to o with every {{NAME}} replaced by its slot's value, verbatim. Fails
+ * with PTP_EINTERNAL if the template is missing, has an unclosed {{ or names an unknown slot,
+ * a slot given is unused, or more slots are given than bits in an unsigned long; PTP_ENOMEM
+ * if o failed. */
 int tpl_fill(sbuf *o, const char *name, const tpl_slot *slots, size_t nslots, ptp_error *err);
 
 #endif

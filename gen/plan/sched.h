@@ -31,7 +31,7 @@ typedef struct {
  * search aim at LB; a branch and bound tries to pack below R, proving R optimal when it finds
  * no packing and leaving proven = 0 when its work cap (counted, not timed: the result is
  * deterministic) runs out first.
- * Fails with PTP_EUSAGE when P is outside 1..SCHED_MAX_THREADS, when P exceeds t->nplanes (a
+ * Fails with PTP_EUSAGE when P is outside 1..SCHED_MAX_THREADS, when P exceeds t->dom.nplanes (a
  * thread without a plane would idle, so it is refused rather than padded), when Q < 1 or when
  * P*Q exceeds SCHED_MAX_THREADS; PTP_ELIMIT when nterms does not fit an int, PTP_ENOMEM, and
  * PTP_EINTERNAL if t is not sorted by plane. s is uninitialized on entry; on failure it holds

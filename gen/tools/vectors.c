@@ -220,8 +220,8 @@ static void put_string(sbuf *o, const char *s)
 static int classify(int pos, int neg, int nvalues, out_rule rule)
 {
     if (rule == OUT_STRICT)
-        return neg == nvalues ? 1 : pos == nvalues ? 0 : 2;
-    return pos == 0 ? 1 : neg == 0 ? 0 : 2;
+        return neg == nvalues ? PTP_BACK : pos == nvalues ? PTP_FRONT : PTP_SILHOUETTE;
+    return pos == 0 ? PTP_BACK : neg == 0 ? PTP_FRONT : PTP_SILHOUETTE;
 }
 
 /* The state of one call: the table over common denominators, one case, its values. */

@@ -16,7 +16,7 @@
 #define VECTORS_W_MAX 4
 #define VECTORS_EYE_MAX 48
 
-/* Appends the JSON test vectors: count cases of bidegree (t->n, t->m) from seed, in space.
+/* Appends the JSON test vectors: count cases of bidegree (t->dom.n, t->dom.m) from seed, in space.
  *
  * The document (format "ptpgen-vectors/1"; fixed key order, two-space indents, one case per
  * five lines, no timestamps, so the same arguments give the same bytes):
