@@ -74,7 +74,7 @@ int main(int argc, char **argv)
     memset(&res_classify, 0, sizeof res_classify);
     memset(&res_batch, 0, sizeof res_batch);
     memset(&res_planes, 0, sizeof res_planes);
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
+    if (kref_init(&ref, o.kind, o.n, o.m, o.space, o.rule, &err))
         return !check(0, o.label, "%s", err.msg);
     ref.certified = o.certified;
     if (ref.K != MACRO(POINTS) || ref.L != MACRO(PLANES)) {

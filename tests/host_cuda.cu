@@ -67,7 +67,7 @@ int main(int argc, char **argv)
         printf("# %s: no CUDA device here: built, not run\n", o.label);
         return 0;
     }
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
+    if (kref_init(&ref, o.kind, o.n, o.m, o.space, o.rule, &err))
         return !check(0, o.label, "%s", err.msg);
     ref.certified = o.certified;
     memset(&res, 0, sizeof res);

@@ -498,7 +498,7 @@ int main(int argc, char **argv)
     memset(&h, 0, sizeof h);
     memset(&err, 0, sizeof err);
 
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err)) {
+    if (kref_init(&ref, o.kind, o.n, o.m, o.space, o.rule, &err)) {
         check(0, o.label, "kref_init(%dx%d): %s", o.n, o.m, err.msg);
         goto done;
     }

@@ -106,7 +106,7 @@ int main(int argc, char **argv)
     if (kref_parse_args(&o, argc, argv, "host_refine", 0))
         return 2;
     memset(&t, 0, sizeof t);
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
+    if (kref_init(&ref, o.kind, o.n, o.m, o.space, o.rule, &err))
         return !check(0, o.label, "%s", err.msg);
     for (si = 0; si < o.nsources; si++) {
         kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);

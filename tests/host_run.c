@@ -61,7 +61,7 @@ int host_start(kref_args *o, kref_ref *ref, long *runs, int argc, char **argv, c
         return 2;
     }
     memset(&perr, 0, sizeof perr);
-    if (kref_init(ref, o->n, o->m, o->space, o->rule, &perr)) {
+    if (kref_init(ref, o->kind, o->n, o->m, o->space, o->rule, &perr)) {
         check(0, o->label, "kref_init(%dx%d): %s", o->n, o->m, perr.msg);
         return 1;
     }

@@ -467,16 +467,20 @@ rc=$?
     [ "$(sed -n '/^terms per plane/,/^total/p' "$tmp/s" | sed '1d;$d' | awk '{ printf "%d", NF }')" = 1234567 ] &&
     grep -q '^degree 3: 10 points, planes of degree 6: 28 planes, 105 terms$' "$tmp/s" &&
     ok "--domain triangle --target stats: 105 terms, the counts printed as a triangle" || notok "triangle stats" "$(head -9 "$tmp/s")"
-"$P" --list-targets --domain triangle | awk '{ printf "%s ", $1 }' | grep -qx 'json table stats ' &&
-    ok "--list-targets --domain triangle lists the targets that take triangles" ||
-    notok "--list-targets --domain triangle" "$("$P" --list-targets --domain triangle)"
+bad=""
+while read -r t suffix opts desc; do
+    "$P" --domain triangle --degree 2 --target $t >"$tmp/o" 2>"$tmp/err" && [ -s "$tmp/o" ] || bad="$bad $t"
+    case ",$opts," in *,space,*)
+        head -1 "$tmp/o" | grep -q "^/\* ptp_tri2$suffix: back-patch culling of degree 2 Bezier patches" &&
+            grep -q 'k = (2-i)(3-i)/2 + 2-i-j with b_ijk weighted by u^i v^j w^k' "$tmp/o" || bad="$bad $t(banner)" ;;
+    esac
+done <"$tmp/targets"
+[ -z "$bad" ] && ok "--domain triangle: every target generates; the C and kernel banners name ptp_tri2<suffix> and the triangular numbering" ||
+    notok "--domain triangle targets" "failed:$bad"
 expect_fail "--domain triangle --degree 3x3 is a usage error" 2 "--degree for triangles takes one degree" --domain triangle --degree 3x3
 expect_fail "--domain triangle --degree 29 names the limit" 2 "largest supported degree is 28" --domain triangle --degree 29
 expect_fail "--domain hexagon is a usage error" 2 "unknown domain 'hexagon' \(expected quad or triangle\)" --domain hexagon --degree 3
 expect_fail "--domain triangle without --degree" 2 "missing --degree N \(" --domain triangle
-for t in c glsl hlsl opencl cuda; do
-    expect_fail "--domain triangle --target $t is refused" 2 "--domain triangle applies to targets json, table, stats \(not $t\)" --domain triangle --degree 2 --target $t
-done
 expect_fail "--domain triangle --refine is refused" 2 "--refine does not apply to --domain triangle" --domain triangle --degree 2 --target c --refine 2
 expect_fail "verify --domain triangle is refused" 2 "verify does not support --domain triangle" verify "$tmp/t3.json" --domain triangle
 expect_fail "vectors --domain triangle is refused" 2 "vectors does not support --domain triangle" vectors --domain triangle --degree 2 --count 3 --seed 1

@@ -38,7 +38,7 @@ void cli_usage(sbuf *o)
         "built on them.\n"
         "\n"
         "  --domain D       quad (default): tensor-product patches; triangle: triangular\n"
-        "                   patches (targets: ptpgen --list-targets --domain triangle)\n");
+        "                   patches (every target; not --refine)\n");
     sbuf_printf(o, "  --degree N|NxM   patch bidegree, 1 <= N, M <= %d (N alone means NxN);\n"
                    "                   triangles: the degree N, 1 <= N <= %d\n",
                 PTP_MAX_DEGREE, PTP_MAX_TRI_DEGREE);
@@ -330,23 +330,13 @@ static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
     return PTP_OK;
 }
 
-/* Checks that o's target supports o's patch kind, else a usage error naming the targets that
- * do; and that --refine (a quad subdivision) is not asked of triangles. */
+/* Checks the options against o's patch kind: --refine subdivides quads only. */
 static int check_kind(const cli_options *o, ptp_error *err)
 {
-    char names[128] = "";
-    int i;
     if (o->kind != TP_QUAD && o->refine)
         return ptp_fail(err, PTP_EUSAGE, "--refine does not apply to --domain %s (it subdivides "
                                          "quads)", tp_kind_name(o->kind));
-    if (tgt_supports(o->target, o->kind))
-        return PTP_OK;
-    for (i = 0; i < tgt_count; i++)
-        if (tgt_supports(&tgt_targets[i], o->kind))
-            snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
-                     names[0] ? ", " : "", tgt_targets[i].name);
-    return ptp_fail(err, PTP_EUSAGE, "--domain %s applies to targets %s (not %s)",
-                    tp_kind_name(o->kind), names, o->target->name);
+    return PTP_OK;
 }
 
 /* Checks that every option in seen applies to o's target (its registry bit), else a usage error

@@ -171,7 +171,7 @@ static int run_info(const cli_options *o, ptp_error *err)
     if (o->help)
         cli_usage(&b);
     else if (o->list)
-        tgt_write_list(&b, o->kind);
+        tgt_write_list(&b);
     else
         sbuf_printf(&b, "ptpgen %s\n", PTP_VERSION);
     st = write_output(NULL, &b, err);

@@ -7,21 +7,18 @@
 #include <string.h>
 
 #define KERNEL (TGT_SPACE | TGT_RULE | TGT_PLANES | TGT_CERTIFIED | TGT_PREFIX | TGT_SCHEDULE)
-/* The patch kinds: every target takes quads; triangles where their output is tested. */
-#define QUAD (1u << TP_QUAD)
-#define BOTH (QUAD | 1u << TP_TRI)
 
 const tgt_target tgt_targets[] = {
-    {"json", ".json", "the exact terms and schedule, ptpgen-planes/1", out_json, TGT_SCHEDULE, BOTH},
+    {"json", ".json", "the exact terms and schedule, ptpgen-planes/1", out_json, TGT_SCHEDULE},
     {"table", "_table.h", "a C header in the paper's idx/wgt format", out_table,
-     TGT_PREFIX | TGT_SCHEDULE, BOTH},
-    {"stats", "", "the term count of every plane and the schedule", out_stats, TGT_SCHEDULE, BOTH},
+     TGT_PREFIX | TGT_SCHEDULE},
+    {"stats", "", "the term count of every plane and the schedule", out_stats, TGT_SCHEDULE},
     {"c", ".h", "a C99 single header (stb style)", emit_c,
-     TGT_SPACE | TGT_RULE | TGT_CERTIFIED | TGT_REFINE | TGT_PREFIX, QUAD},
-    {"glsl", ".comp", "a compute kernel", emit_glsl, KERNEL, QUAD},
-    {"hlsl", ".hlsl", "a compute kernel", emit_hlsl, KERNEL, QUAD},
-    {"opencl", ".cl", "a compute kernel", emit_opencl, KERNEL, QUAD},
-    {"cuda", ".cu", "a compute kernel", emit_cuda, KERNEL, QUAD},
+     TGT_SPACE | TGT_RULE | TGT_CERTIFIED | TGT_REFINE | TGT_PREFIX},
+    {"glsl", ".comp", "a compute kernel", emit_glsl, KERNEL},
+    {"hlsl", ".hlsl", "a compute kernel", emit_hlsl, KERNEL},
+    {"opencl", ".cl", "a compute kernel", emit_opencl, KERNEL},
+    {"cuda", ".cu", "a compute kernel", emit_cuda, KERNEL},
 };
 const int tgt_count = (int)(sizeof tgt_targets / sizeof *tgt_targets);
 
@@ -44,19 +41,12 @@ const char *tgt_option_name(int i)
     return option_names[i];
 }
 
-int tgt_supports(const tgt_target *g, tp_kind kind)
-{
-    return (int)(g->kinds >> kind & 1);
-}
-
-void tgt_write_list(sbuf *o, tp_kind kind)
+void tgt_write_list(sbuf *o)
 {
     int i, k;
     for (i = 0; i < tgt_count; i++) {
         const tgt_target *g = &tgt_targets[i];
         const char *sep = " ";
-        if (!tgt_supports(g, kind))
-            continue;
         sbuf_printf(o, "%s %s", g->name, g->suffix[0] ? g->suffix : "-");
         for (k = 0; k < TGT_NOPTIONS; k++)
             if (g->options >> k & 1) {

@@ -30,7 +30,6 @@ typedef struct {
     const char *description; /* one line, for the usage text */
     tgt_emit emit;
     unsigned options;        /* the TGT_ bits of the options its output depends on */
-    unsigned kinds;          /* the patch kinds it supports, bits 1 << tp_kind */
 } tgt_target;
 
 /* The targets, tgt_targets[0] the default; tgt_count of them. */
@@ -41,11 +40,8 @@ extern const int tgt_count;
 const tgt_target *tgt_find(const char *name);
 /* The option name of TGT_ bit number i (0 <= i < TGT_NOPTIONS): "space", ..., "schedule". */
 const char *tgt_option_name(int i);
-/* Nonzero when target g supports patches of the kind. */
-int tgt_supports(const tgt_target *g, tp_kind kind);
-/* Appends the registry's targets that support the kind, one a line: "name suffix options
- * description", suffix "-" when empty, options the comma-separated names of its bits ("-" when
- * none). */
-void tgt_write_list(sbuf *o, tp_kind kind);
+/* Appends the registry, one target a line: "name suffix options description", suffix "-" when
+ * empty, options the comma-separated names of its bits ("-" when none). */
+void tgt_write_list(sbuf *o);
 
 #endif
