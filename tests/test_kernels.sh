@@ -167,7 +167,7 @@ for d in 1x1 2x2 3x3 4x4 2x3 3x1 tri1 tri2 tri3; do
 done
 
 # The vendored kernels in out/ (clip space, strict rule, no values), exactly like fresh ones.
-for dir in out/*x*/; do
+for dir in out/*x*/ out/tri*/; do
     d=$(basename "$dir")
     seed=$((seed + 1))
     read -r PQ Q < <(schedule "out/$d/ptp_$d.json")
