@@ -242,26 +242,18 @@ void kref_clear(kref_ref *r)
     r->den = NULL;
 }
 
-/* Nonzero when cell (i, j) of domain d is on edge e (0..3). Quad edges: 0 i = 0, 1 i = n,
- * 2 j = 0, 3 j = m; triangle edges: 1 i + j = d (k = 0), 2 j = 0, 0 and 3 i = 0. */
-static int on_edge(const tp_domain *d, int e, int i, int j)
-{
-    if (d->kind == TP_TRI)
-        return e == 1 ? i + j == d->n : e == 2 ? j == 0 : i == 0;
-    return e == 0 ? i == 0 : e == 1 ? i == d->n : e == 2 ? j == 0 : j == d->m;
-}
-
-/* The point that collapsing edge e copies onto point k: the first point on the edge, or -1
- * when k is not on it. */
+/* The point that collapsing edge e (0..3, taken modulo the domain's edges) copies onto point
+ * k: the first point on the edge, or -1 when k is not on it. */
 static int edge_first(const tp_domain *d, int e, int k)
 {
     int x, i, j;
+    e %= tp_domain_edges(d);
     tp_domain_point_ij(&i, &j, d, k);
-    if (!on_edge(d, e, i, j))
+    if (!tp_domain_on_edge(d, e, i, j))
         return -1;
     for (x = 0;; x++) {
         tp_domain_point_ij(&i, &j, d, x);
-        if (on_edge(d, e, i, j))
+        if (tp_domain_on_edge(d, e, i, j))
             return x;
     }
 }
@@ -568,7 +560,7 @@ static int exact_lattice(ipatch *pt, uint64_t *rng, int kind, int bits)
     return 0;
 }
 
-/* Collapses edge `edge` (on_edge) to its first point. */
+/* Collapses edge `edge` (edge_first) to its first point. */
 static void collapse_edge(ipatch *pt, int edge)
 {
     int k, first;

@@ -436,7 +436,7 @@ expect_fail "--count outside vectors" 2 "option --count does not apply to code g
 
 # verify accepts every vendored table and json, and names a wrong one (exit 1).
 bad=""
-for f in out/*/ptp_*_table.h out/*/ptp_*.json; do
+for f in out/*x*/ptp_*_table.h out/*x*/ptp_*.json; do
     d=$(basename "$(dirname "$f")")
     "$P" verify "$f" --degree "$d" >"$tmp/out" 2>&1 || bad="$bad $f"
 done
@@ -483,7 +483,16 @@ expect_fail "--domain hexagon is a usage error" 2 "unknown domain 'hexagon' \(ex
 expect_fail "--domain triangle without --degree" 2 "missing --degree N \(" --domain triangle
 expect_fail "--domain triangle --refine is refused" 2 "--refine does not apply to --domain triangle" --domain triangle --degree 2 --target c --refine 2
 expect_fail "verify --domain triangle is refused" 2 "verify does not support --domain triangle" verify "$tmp/t3.json" --domain triangle
-expect_fail "vectors --domain triangle is refused" 2 "vectors does not support --domain triangle" vectors --domain triangle --degree 2 --count 3 --seed 1
+expect_fail "verify of a triangle json is refused" 2 "t3.json:5: \"domain\": \"triangle\": verify checks quad tables only" verify "$tmp/t3.json"
+for c in "1 clip" "2 world" "3 clip" "3 world"; do
+    set -- $c
+    "$P" vectors --domain triangle --degree $1 --count 200 --seed 5 --space $2 >"$tmp/v.json" &&
+        "$P" --domain triangle --degree $1 >"$tmp/t.json" &&
+        grep -q "^  \"domain\": \"triangle\",\$" "$tmp/v.json" &&
+        python3 tests/check_vectors.py "$tmp/v.json" "$tmp/t.json" >"$tmp/out" 2>&1 &&
+        ok "vectors triangle $1 $2: values and classes recomputed exactly by tests/check_vectors.py ($(tail -1 "$tmp/out"))" ||
+        notok "vectors triangle $1 $2 independent check" "$(tail -2 "$tmp/out")"
+done
 
 # vectors: the same seed gives the same bytes, another seed other bytes; an independent check.
 "$P" vectors --degree 2x3 --count 50 --seed 7 >"$tmp/v1.json" && "$P" vectors --degree 2x3 --count 50 --seed 7 -o "$tmp/v2.json" &&

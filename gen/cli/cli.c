@@ -29,7 +29,8 @@ void cli_usage(sbuf *o)
         "              [--prefix NAME] [--threads-per-patch P] [--patches-per-block Q]\n"
         "              [-o FILE]\n"
         "       ptpgen verify FILE [--degree NxM] [-o REPORT]\n"
-        "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world] [-o FILE]\n"
+        "       ptpgen vectors --degree NxM [--domain quad|triangle] --count K --seed S\n"
+        "              [--space clip|world] [-o FILE]\n"
         "       ptpgen --help | help [verify|vectors] | --version | --list-targets\n"
         "\n"
         "Derives the exact control planes of the parametric tangent plane\n"
@@ -320,9 +321,6 @@ static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
     if (!o->dom.n)
         return ptp_fail(err, PTP_EUSAGE, "missing --degree N%s (see ptpgen --help)",
                         o->kind == TP_QUAD ? " or --degree NxM" : "");
-    if (o->mode == CLI_VECTORS && o->kind != TP_QUAD)
-        return ptp_fail(err, PTP_EUSAGE, "vectors does not support --domain %s yet",
-                        tp_kind_name(o->kind));
     if (o->mode == CLI_VECTORS &&
         (!(seen >> OPT_COUNT & 1) || !(seen >> OPT_SEED & 1) || o->count < 1))
         return ptp_fail(err, PTP_EUSAGE, "vectors needs --count K (1 to %d) and --seed S",
@@ -369,7 +367,8 @@ static void put_command(cli_options *o)
     int n;
     tp_domain_format(degree, sizeof degree, &o->dom);
     if (o->mode == CLI_VECTORS) {
-        snprintf(c, size, "ptpgen vectors --degree %s --count %ld --seed %llu --space %s", degree,
+        snprintf(c, size, "ptpgen vectors%s%s --degree %s --count %ld --seed %llu --space %s",
+                 o->kind ? " --domain " : "", o->kind ? tp_kind_name(o->kind) : "", degree,
                  o->count, (unsigned long long)o->seed, o->world ? "world" : "clip");
         return;
     }

@@ -278,6 +278,18 @@ int tp_domain_plane_row_start(const tp_domain *d, int P)
     return kinds[d->kind].row_start(d->pu, d->pv, P);
 }
 
+int tp_domain_edges(const tp_domain *d)
+{
+    return d->kind == TP_TRI ? 3 : 4;
+}
+
+int tp_domain_on_edge(const tp_domain *d, int e, int i, int j)
+{
+    if (d->kind == TP_TRI)
+        return e == 0 ? i == 0 : e == 1 ? j == 0 : i + j == d->n;
+    return e == 0 ? i == 0 : e == 1 ? i == d->n : e == 2 ? j == 0 : j == d->m;
+}
+
 char *tp_domain_format(char *buf, size_t size, const tp_domain *d)
 {
     put_degrees(buf, size, &kinds[d->kind], d->n, d->m, "x");

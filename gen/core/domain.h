@@ -78,6 +78,12 @@ void tp_domain_plane_ij(int *I, int *J, const tp_domain *d, int P);
  * planes in numbering order (both kinds: J == 0, a row per I). */
 int tp_domain_plane_row_start(const tp_domain *d, int P);
 
+/* The number of boundary edges of d's patch (quad 4, triangle 3), and whether point (i, j) is
+ * on edge e (quad: 0 i = 0, 1 i = n, 2 j = 0, 3 j = m; triangle: 0 i = 0, 1 j = 0,
+ * 2 k = 0 (i + j = d)). */
+int tp_domain_edges(const tp_domain *d);
+int tp_domain_on_edge(const tp_domain *d, int e, int i, int j);
+
 /* Writes the degree as --degree reads it ("3x3") to buf (size bytes); returns buf. */
 char *tp_domain_format(char *buf, size_t size, const tp_domain *d);
 /* Writes the default prefix of generated names ("ptp_3x3_") to buf (size bytes); returns buf. */

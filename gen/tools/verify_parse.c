@@ -974,6 +974,12 @@ static int parse_json(verify_doc *d, rd *r)
                         break;
                     }
                     st = json_terms(r, &terms);
+                } else if (n == 6 && !strcmp(key, "domain")) {
+                    /* ptpgen's json names the domain only for triangles */
+                    if (!(st = json_string(r, key, sizeof key, &n)) && strcmp(key, "quad"))
+                        st = fail_at(r, kline, "\"domain\": \"%s\": verify checks quad tables "
+                                               "only (triangular tables are not supported yet)",
+                                     key);
                 } else if (n == 6 && !strcmp(key, "degree")) {
                     if (seen_degree++) {
                         st = fail_at(r, kline, "a second \"degree\"");
