@@ -90,7 +90,7 @@ struct kern_target {
 /* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */
 extern const kern_syntax kern_c_syntax;
 /* The GPU targets' tables. */
-extern const kern_target kern_glsl, kern_hlsl, kern_opencl, kern_cuda;
+extern const kern_target kern_glsl, kern_hlsl, kern_opencl, kern_cuda, kern_wgsl;
 
 /* Writes a GPU kernel for target g: P threads per patch accumulate the planes they own in
  * shared memory from the scheduled tables, then one thread per patch combines the signs. */
@@ -102,6 +102,7 @@ int emit_glsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 int emit_hlsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 int emit_opencl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 int emit_cuda(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
+int emit_wgsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 
 #endif
