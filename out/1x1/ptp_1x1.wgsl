@@ -43,21 +43,21 @@ const PTP_1X1_L: u32 = 4u; /* control planes per patch */
 /* 1 rounds: the largest number of terms of one thread. */
 
 /* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-var<private> ptp_1x1_own_start: array<u32, 5> = array<u32, 5>(
+const ptp_1x1_own_start: array<u32, 5> = array<u32, 5>(
     0u, 1u, 2u, 3u, 4u
 );
-var<private> ptp_1x1_own_plane: array<u32, 4> = array<u32, 4>(
+const ptp_1x1_own_plane: array<u32, 4> = array<u32, 4>(
     0u, 1u, 2u, 3u
 );
 
 /* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-var<private> ptp_1x1_pj0: array<u32, 4> = array<u32, 4>(
+const ptp_1x1_pj0: array<u32, 4> = array<u32, 4>(
     0x00000u, 0x00001u, 0x00002u, 0x10003u
 );
-var<private> ptp_1x1_kl0: array<u32, 4> = array<u32, 4>(
+const ptp_1x1_kl0: array<u32, 4> = array<u32, 4>(
     0x20001u, 0x30001u, 0x30002u, 0x30002u
 );
-var<private> ptp_1x1_w0: array<f32, 4> = array<f32, 4>(
+const ptp_1x1_w0: array<f32, 4> = array<f32, 4>(
     -1.0f, -1.0f, 1.0f, 1.0f
 );
 

@@ -43,121 +43,121 @@ const PTP_2X2_L: u32 = 25u; /* control planes per patch */
 /* 10 rounds: the largest number of terms of one thread. */
 
 /* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-var<private> ptp_2x2_own_start: array<u32, 9> = array<u32, 9>(
+const ptp_2x2_own_start: array<u32, 9> = array<u32, 9>(
     0u, 3u, 6u, 9u, 13u, 16u, 19u, 22u, 25u
 );
-var<private> ptp_2x2_own_plane: array<u32, 25> = array<u32, 25>(
+const ptp_2x2_own_plane: array<u32, 25> = array<u32, 25>(
     7u, 20u, 22u, 1u, 11u, 21u, 3u, 13u, 23u, 0u, 5u, 17u, 24u, 4u, 6u, 18u,
     2u, 8u, 9u, 10u, 12u, 15u, 14u, 16u, 19u
 );
 
 /* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-var<private> ptp_2x2_pj0: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj0: array<u32, 8> = array<u32, 8>(
     0x00007u, 0x00001u, 0x00003u, 0x00000u, 0x10004u, 0x00002u, 0x0000au, 0x1000eu
 );
-var<private> ptp_2x2_kl0: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl0: array<u32, 8> = array<u32, 8>(
     0x80001u, 0x40001u, 0x50002u, 0x30001u, 0x50002u, 0x50001u, 0x70003u, 0x80005u
 );
-var<private> ptp_2x2_w0: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w0: array<f32, 8> = array<f32, 8>(
     -0.166666672f, -2.0f, -1.0f, -4.0f, -4.0f, -0.666666687f, 0.666666687f, -0.666666687f
 );
 
 /* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-var<private> ptp_2x2_pj1: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj1: array<u32, 8> = array<u32, 8>(
     0x00007u, 0x00001u, 0x10003u, 0x00005u, 0x00006u, 0x00002u, 0x0000au, 0x2000eu
 );
-var<private> ptp_2x2_kl1: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl1: array<u32, 8> = array<u32, 8>(
     0x70002u, 0x30002u, 0x40002u, 0x60001u, 0x70001u, 0x40002u, 0x60004u, 0x80004u
 );
-var<private> ptp_2x2_w1: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w1: array<f32, 8> = array<f32, 8>(
     -0.333333343f, -1.0f, -2.0f, -1.0f, -0.5f, -1.33333337f, -1.33333337f, 1.33333337f
 );
 
 /* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-var<private> ptp_2x2_pj2: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj2: array<u32, 8> = array<u32, 8>(
     0x00007u, 0x0000bu, 0x0000du, 0x00005u, 0x00006u, 0x10002u, 0x1000au, 0x2000eu
 );
-var<private> ptp_2x2_kl2: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl2: array<u32, 8> = array<u32, 8>(
     0x50004u, 0x80003u, 0x80005u, 0x40003u, 0x60002u, 0x30002u, 0x60003u, 0x70005u
 );
-var<private> ptp_2x2_w2: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w2: array<f32, 8> = array<f32, 8>(
     0.333333343f, 0.166666672f, -0.166666672f, 2.0f, -0.25f, -0.666666687f, 0.666666687f, -0.666666687f
 );
 
 /* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-var<private> ptp_2x2_pj3: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj3: array<u32, 8> = array<u32, 8>(
     0x10007u, 0x0000bu, 0x1000du, 0x00011u, 0x00006u, 0x00008u, 0x0000cu, 0x00010u
 );
-var<private> ptp_2x2_kl3: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl3: array<u32, 8> = array<u32, 8>(
     0x60002u, 0x70004u, 0x80004u, 0x80007u, 0x50003u, 0x80002u, 0x70005u, 0x80006u
 );
-var<private> ptp_2x2_w3: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w3: array<f32, 8> = array<f32, 8>(
     -0.166666672f, -0.333333343f, 0.333333343f, 0.166666672f, 0.5f, -0.25f, -0.333333343f, 0.25f
 );
 
 /* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-var<private> ptp_2x2_pj4: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj4: array<u32, 8> = array<u32, 8>(
     0x10007u, 0x0000bu, 0x1000du, 0x10011u, 0x10006u, 0x10008u, 0x1000cu, 0x10010u
 );
-var<private> ptp_2x2_kl4: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl4: array<u32, 8> = array<u32, 8>(
     0x50003u, 0x60005u, 0x70005u, 0x80006u, 0x40003u, 0x70002u, 0x80003u, 0x70006u
 );
-var<private> ptp_2x2_w4: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w4: array<f32, 8> = array<f32, 8>(
     0.666666687f, -0.333333343f, -0.666666687f, 0.333333343f, 1.0f, -0.5f, 0.333333343f, 0.5f
 );
 
 /* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-var<private> ptp_2x2_pj5: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj5: array<u32, 8> = array<u32, 8>(
     0x20007u, 0x1000bu, 0x2000du, 0x20011u, 0x10012u, 0x10008u, 0x1000cu, 0x30010u
 );
-var<private> ptp_2x2_kl5: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl5: array<u32, 8> = array<u32, 8>(
     0x40003u, 0x70003u, 0x80003u, 0x70006u, 0x80007u, 0x50004u, 0x60005u, 0x70004u
 );
-var<private> ptp_2x2_w5: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w5: array<f32, 8> = array<f32, 8>(
     0.333333343f, 0.666666687f, 0.333333343f, 0.166666672f, 0.5f, 1.0f, -0.333333343f, -1.0f
 );
 
 /* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-var<private> ptp_2x2_pj6: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj6: array<u32, 8> = array<u32, 8>(
     0x30014u, 0x1000bu, 0x2000du, 0x30011u, 0x20012u, 0x20008u, 0x2000cu, 0x30010u
 );
-var<private> ptp_2x2_kl6: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl6: array<u32, 8> = array<u32, 8>(
     0x70006u, 0x60004u, 0x70004u, 0x80004u, 0x80006u, 0x50003u, 0x70003u, 0x60005u
 );
-var<private> ptp_2x2_w6: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w6: array<f32, 8> = array<f32, 8>(
     4.0f, -0.333333343f, 0.333333343f, -0.333333343f, 0.25f, 0.5f, 0.333333343f, -0.5f
 );
 
 /* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-var<private> ptp_2x2_pj7: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj7: array<u32, 8> = array<u32, 8>(
     0x30016u, 0x2000bu, 0x2000du, 0x30011u, 0x30012u, 0x10009u, 0x0000fu, 0x20013u
 );
-var<private> ptp_2x2_kl7: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl7: array<u32, 8> = array<u32, 8>(
     0x80007u, 0x60003u, 0x60005u, 0x70005u, 0x80005u, 0x80002u, 0x70006u, 0x80007u
 );
-var<private> ptp_2x2_w7: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w7: array<f32, 8> = array<f32, 8>(
     0.666666687f, 0.166666672f, -0.166666672f, -0.666666687f, -0.5f, -1.0f, 1.0f, 1.0f
 );
 
 /* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-var<private> ptp_2x2_pj8: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj8: array<u32, 8> = array<u32, 8>(
     0x40016u, 0x30015u, 0x40017u, 0x40011u, 0x40012u, 0x20009u, 0x3000fu, 0x40013u
 );
-var<private> ptp_2x2_kl8: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl8: array<u32, 8> = array<u32, 8>(
     0x80006u, 0x80006u, 0x80007u, 0x60005u, 0x70005u, 0x50004u, 0x60004u, 0x80005u
 );
-var<private> ptp_2x2_w8: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w8: array<f32, 8> = array<f32, 8>(
     1.33333337f, 1.0f, 2.0f, -0.333333343f, -1.0f, 2.0f, -2.0f, -2.0f
 );
 
 /* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-var<private> ptp_2x2_pj9: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_pj9: array<u32, 8> = array<u32, 8>(
     0x50016u, 0x40015u, 0x50017u, 0x50018u, 0x00004u, 0x00002u, 0x0000au, 0x0000eu
 );
-var<private> ptp_2x2_kl9: array<u32, 8> = array<u32, 8>(
+const ptp_2x2_kl9: array<u32, 8> = array<u32, 8>(
     0x70006u, 0x70006u, 0x80006u, 0x80007u, 0x00000u, 0x00000u, 0x00000u, 0x00000u
 );
-var<private> ptp_2x2_w9: array<f32, 8> = array<f32, 8>(
+const ptp_2x2_w9: array<f32, 8> = array<f32, 8>(
     0.666666687f, 2.0f, 1.0f, 4.0f, 0.0f, 0.0f, 0.0f, 0.0f
 );
 

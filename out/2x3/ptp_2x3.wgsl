@@ -43,194 +43,194 @@ const PTP_2X3_L: u32 = 40u; /* control planes per patch */
 /* 13 rounds: the largest number of terms of one thread. */
 
 /* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-var<private> ptp_2x3_own_start: array<u32, 17> = array<u32, 17>(
+const ptp_2x3_own_start: array<u32, 17> = array<u32, 17>(
     0u, 2u, 4u, 6u, 8u, 11u, 14u, 16u, 18u, 20u, 22u, 25u, 28u, 31u, 34u, 37u,
     40u
 );
-var<private> ptp_2x3_own_plane: array<u32, 40> = array<u32, 40>(
+const ptp_2x3_own_plane: array<u32, 40> = array<u32, 40>(
     0u, 19u, 7u, 20u, 11u, 16u, 12u, 23u, 1u, 27u, 32u, 6u, 28u, 39u, 10u, 25u,
     13u, 30u, 26u, 34u, 29u, 37u, 9u, 18u, 33u, 14u, 21u, 38u, 2u, 8u, 17u, 5u,
     15u, 22u, 3u, 24u, 35u, 4u, 31u, 36u
 );
 
 /* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-var<private> ptp_2x3_pj0: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj0: array<u32, 16> = array<u32, 16>(
     0x00000u, 0x20007u, 0x0000bu, 0x0000cu, 0x00001u, 0x10006u, 0x0000au, 0x0000du,
     0x0001au, 0x1001du, 0x00009u, 0x1000eu, 0x00002u, 0x00005u, 0x00003u, 0x00004u
 );
-var<private> ptp_2x3_kl0: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl0: array<u32, 16> = array<u32, 16>(
     0x40001u, 0x70003u, 0xb0001u, 0xb0002u, 0x50001u, 0x70003u, 0xa0001u, 0xb0003u,
     0xb0008u, 0xb000au, 0x90001u, 0xb0003u, 0x60001u, 0x70003u, 0x70001u, 0x70002u
 );
-var<private> ptp_2x3_w0: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w0: array<f32, 16> = array<f32, 16>(
     -6.0f, -6.0f, -0.042857144f, -0.0857142881f, -2.57142854f, -1.71428573f, -0.214285716f, -0.0714285746f,
     0.0714285746f, 0.214285716f, -0.642857134f, -0.428571433f, -0.857142866f, -0.285714298f, -0.171428576f, -0.342857152f
 );
 
 /* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-var<private> ptp_2x3_pj1: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj1: array<u32, 16> = array<u32, 16>(
     0x00013u, 0x00014u, 0x0000bu, 0x0000cu, 0x00001u, 0x20006u, 0x0000au, 0x1000du,
     0x0001au, 0x2001du, 0x00009u, 0x2000eu, 0x00002u, 0x10005u, 0x00003u, 0x00004u
 );
-var<private> ptp_2x3_kl1: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl1: array<u32, 16> = array<u32, 16>(
     0xb0005u, 0xb0006u, 0xa0002u, 0xa0003u, 0x40002u, 0x60003u, 0x90002u, 0xb0002u,
     0xa0009u, 0xb0009u, 0x80002u, 0xa0003u, 0x50002u, 0x70002u, 0x60002u, 0x60003u
 );
-var<private> ptp_2x3_w1: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w1: array<f32, 16> = array<f32, 16>(
     0.0285714287f, -0.0285714287f, -0.257142872f, -0.128571436f, -1.71428573f, -2.57142854f, -0.428571433f, -0.214285716f,
     0.214285716f, 0.428571433f, -0.428571433f, -0.642857134f, -1.71428573f, -0.857142866f, -1.02857149f, -0.514285743f
 );
 
 /* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-var<private> ptp_2x3_pj2: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj2: array<u32, 16> = array<u32, 16>(
     0x00013u, 0x00014u, 0x0000bu, 0x0000cu, 0x0001bu, 0x0001cu, 0x0000au, 0x1000du,
     0x1001au, 0x3001du, 0x00009u, 0x2000eu, 0x00002u, 0x10005u, 0x00003u, 0x10004u
 );
-var<private> ptp_2x3_kl2: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl2: array<u32, 16> = array<u32, 16>(
     0xa0006u, 0xa0007u, 0x90003u, 0x70006u, 0xb0009u, 0xb000au, 0x80003u, 0xa0003u,
     0xa0008u, 0xb0008u, 0x60004u, 0x70006u, 0x40003u, 0x60003u, 0x50003u, 0x60002u
 );
-var<private> ptp_2x3_w2: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w2: array<f32, 16> = array<f32, 16>(
     -0.171428576f, -0.114285715f, -0.128571436f, 0.0857142881f, 0.0857142881f, 0.042857144f, -0.0714285746f, -0.428571433f,
     0.428571433f, 0.0714285746f, 0.857142866f, 1.28571427f, -0.285714298f, -1.71428573f, -0.514285743f, -1.54285717f
 );
 
 /* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-var<private> ptp_2x3_pj3: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj3: array<u32, 16> = array<u32, 16>(
     0x00013u, 0x10014u, 0x0000bu, 0x1000cu, 0x1001bu, 0x1001cu, 0x0000au, 0x1000du,
     0x2001au, 0x3001du, 0x10009u, 0x3000eu, 0x10002u, 0x20005u, 0x10003u, 0x10004u
 );
-var<private> ptp_2x3_kl3: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl3: array<u32, 16> = array<u32, 16>(
     0x90007u, 0xb0005u, 0x70005u, 0xa0002u, 0xb0008u, 0xb0009u, 0x70004u, 0x70006u,
     0x90008u, 0xa0009u, 0x50004u, 0x70005u, 0x40002u, 0x50003u, 0x50002u, 0x50003u
 );
-var<private> ptp_2x3_w3: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w3: array<f32, 16> = array<f32, 16>(
     -0.142857149f, 0.171428576f, 0.171428576f, -0.385714293f, 0.128571436f, 0.257142872f, 0.142857149f, 0.428571433f,
     0.214285716f, 0.214285716f, 1.28571427f, 0.857142866f, -0.857142866f, -0.857142866f, -1.54285717f, -1.02857149f
 );
 
 /* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-var<private> ptp_2x3_pj4: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj4: array<u32, 16> = array<u32, 16>(
     0x10013u, 0x10014u, 0x1000bu, 0x1000cu, 0x1001bu, 0x2001cu, 0x0000au, 0x2000du,
     0x4001au, 0x4001du, 0x00012u, 0x00015u, 0x00008u, 0x2000fu, 0x10003u, 0x20004u
 );
-var<private> ptp_2x3_kl4: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl4: array<u32, 16> = array<u32, 16>(
     0xb0004u, 0xa0006u, 0x90002u, 0x90003u, 0xa0009u, 0xb0008u, 0x60005u, 0x90003u,
     0xa0005u, 0xb0007u, 0xb0004u, 0xb0007u, 0x80001u, 0xb0003u, 0x40003u, 0x40003u
 );
-var<private> ptp_2x3_w4: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w4: array<f32, 16> = array<f32, 16>(
     0.114285715f, -0.257142872f, -0.385714293f, -0.257142872f, 0.385714293f, 0.128571436f, 0.428571433f, -0.214285716f,
     -0.428571433f, -0.142857149f, 0.0476190485f, -0.0476190485f, -1.5f, -1.5f, -0.342857152f, -0.171428576f
 );
 
 /* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-var<private> ptp_2x3_pj5: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj5: array<u32, 16> = array<u32, 16>(
     0x10013u, 0x10014u, 0x1000bu, 0x1000cu, 0x2001bu, 0x2001cu, 0x1000au, 0x2000du,
     0x4001au, 0x5001du, 0x00012u, 0x10015u, 0x00008u, 0x3000fu, 0x00018u, 0x3001fu
 );
-var<private> ptp_2x3_kl5: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl5: array<u32, 16> = array<u32, 16>(
     0xa0005u, 0x90007u, 0x80003u, 0x70005u, 0xa0008u, 0xa0009u, 0x80002u, 0x70005u,
     0x90006u, 0xb0006u, 0x90006u, 0xa0007u, 0x50004u, 0x70006u, 0x90008u, 0xb000au
 );
-var<private> ptp_2x3_w5: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w5: array<f32, 16> = array<f32, 16>(
     0.257142872f, -0.342857152f, -0.0857142881f, 0.514285743f, 0.257142872f, 0.385714293f, -0.214285716f, 0.857142866f,
     -0.857142866f, -0.428571433f, -0.428571433f, -0.428571433f, 3.0f, 3.0f, 1.5f, 1.5f
 );
 
 /* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-var<private> ptp_2x3_pj6: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj6: array<u32, 16> = array<u32, 16>(
     0x10013u, 0x20014u, 0x1000bu, 0x2000cu, 0x3001bu, 0x3001cu, 0x1000au, 0x3000du,
     0x4001au, 0x5001du, 0x00012u, 0x20015u, 0x00011u, 0x10016u, 0x40018u, 0x6001fu
 );
-var<private> ptp_2x3_kl6: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl6: array<u32, 16> = array<u32, 16>(
     0x90006u, 0xb0004u, 0x70004u, 0x80003u, 0x90008u, 0xa0008u, 0x60004u, 0x70004u,
     0x80007u, 0xa0007u, 0x80007u, 0xb0005u, 0xa0004u, 0xb0007u, 0x80005u, 0xb0007u
 );
-var<private> ptp_2x3_w6: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w6: array<f32, 16> = array<f32, 16>(
     -0.514285743f, 0.142857149f, 0.257142872f, -0.042857144f, 0.042857144f, 0.0857142881f, 0.857142866f, 0.142857149f,
     -0.142857149f, -0.857142866f, -0.095238097f, 0.428571433f, 0.285714298f, -0.285714298f, -3.0f, -3.0f
 );
 
 /* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-var<private> ptp_2x3_pj7: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj7: array<u32, 16> = array<u32, 16>(
     0x10013u, 0x20014u, 0x1000bu, 0x2000cu, 0x4001bu, 0x4001cu, 0x2000au, 0x3000du,
     0x5001au, 0x6001du, 0x10012u, 0x20015u, 0x00011u, 0x20016u, 0x40023u, 0x40024u
 );
-var<private> ptp_2x3_kl7: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl7: array<u32, 16> = array<u32, 16>(
     0x80007u, 0xa0005u, 0x60005u, 0x70004u, 0xb0005u, 0xb0006u, 0x50004u, 0x60005u,
     0x80006u, 0x90007u, 0xa0004u, 0x90007u, 0x90005u, 0xb0006u, 0xb0009u, 0xb000au
 );
-var<private> ptp_2x3_w7: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w7: array<f32, 16> = array<f32, 16>(
     -0.142857149f, 0.514285743f, 0.771428585f, 0.257142872f, -0.0857142881f, -0.171428576f, 0.428571433f, 0.428571433f,
     -0.428571433f, -0.428571433f, 0.428571433f, -0.428571433f, -0.428571433f, 0.428571433f, 0.342857152f, 0.171428576f
 );
 
 /* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-var<private> ptp_2x3_pj8: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj8: array<u32, 16> = array<u32, 16>(
     0x20013u, 0x20014u, 0x2000bu, 0x2000cu, 0x4001bu, 0x4001cu, 0x00019u, 0x2001eu,
     0x40022u, 0x50025u, 0x10012u, 0x30015u, 0x00011u, 0x20016u, 0x50023u, 0x50024u
 );
-var<private> ptp_2x3_kl8: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl8: array<u32, 16> = array<u32, 16>(
     0xa0004u, 0x90006u, 0x60004u, 0x60005u, 0xa0006u, 0xa0007u, 0xa0008u, 0xb000au,
     0xb0008u, 0xb000au, 0x80006u, 0xb0004u, 0x80006u, 0xa0007u, 0xb0008u, 0xb0009u
 );
-var<private> ptp_2x3_w8: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w8: array<f32, 16> = array<f32, 16>(
     0.342857152f, -0.257142872f, 0.514285743f, 0.771428585f, -0.514285743f, -0.257142872f, 0.428571433f, 0.642857134f,
     0.285714298f, 0.857142866f, -0.428571433f, 0.095238097f, -0.571428597f, -0.857142866f, 0.514285743f, 1.02857149f
 );
 
 /* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-var<private> ptp_2x3_pj9: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj9: array<u32, 16> = array<u32, 16>(
     0x20013u, 0x20014u, 0x3000bu, 0x3000cu, 0x4001bu, 0x5001cu, 0x10019u, 0x3001eu,
     0x40022u, 0x60025u, 0x20012u, 0x30015u, 0x10011u, 0x30016u, 0x50023u, 0x60024u
 );
-var<private> ptp_2x3_kl9: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl9: array<u32, 16> = array<u32, 16>(
     0x90005u, 0x80007u, 0x50004u, 0x60004u, 0x90007u, 0xa0006u, 0x90008u, 0xb0009u,
     0xa0009u, 0xb0009u, 0x90004u, 0xa0005u, 0x90004u, 0xb0005u, 0xa0009u, 0xb0008u
 );
-var<private> ptp_2x3_w9: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w9: array<f32, 16> = array<f32, 16>(
     0.257142872f, -0.114285715f, 0.0857142881f, 0.171428576f, -0.257142872f, -0.771428585f, 0.642857134f, 0.428571433f,
     0.857142866f, 1.71428573f, 0.428571433f, 0.428571433f, 0.857142866f, 0.571428597f, 1.54285717f, 0.514285743f
 );
 
 /* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-var<private> ptp_2x3_pj10: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj10: array<u32, 16> = array<u32, 16>(
     0x20013u, 0x30014u, 0x00010u, 0x20017u, 0x5001bu, 0x5001cu, 0x40019u, 0x5001eu,
     0x50022u, 0x70025u, 0x30012u, 0x30015u, 0x10011u, 0x30016u, 0x60023u, 0x60024u
 );
-var<private> ptp_2x3_kl10: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl10: array<u32, 16> = array<u32, 16>(
     0x80006u, 0xa0004u, 0x90004u, 0xb0007u, 0x90006u, 0x90007u, 0x90005u, 0xb0007u,
     0xa0008u, 0xb0008u, 0x80004u, 0x80007u, 0x80005u, 0xa0006u, 0xa0008u, 0xa0009u
 );
-var<private> ptp_2x3_w10: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w10: array<f32, 16> = array<f32, 16>(
     -0.171428576f, 0.142857149f, 1.0f, -1.0f, -0.771428585f, -0.514285743f, -1.28571427f, -0.857142866f,
     1.71428573f, 0.285714298f, 0.0476190485f, -0.0476190485f, -0.428571433f, 0.428571433f, 1.02857149f, 1.54285717f
 );
 
 /* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-var<private> ptp_2x3_pj11: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj11: array<u32, 16> = array<u32, 16>(
     0x30013u, 0x30014u, 0x00010u, 0x30017u, 0x5001bu, 0x6001cu, 0x40019u, 0x6001eu,
     0x60022u, 0x70025u, 0x40021u, 0x60026u, 0x20011u, 0x30016u, 0x70023u, 0x70024u
 );
-var<private> ptp_2x3_kl11: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl11: array<u32, 16> = array<u32, 16>(
     0x90004u, 0x90005u, 0x80005u, 0xb0006u, 0x80007u, 0x80007u, 0x80006u, 0xa0007u,
     0x90008u, 0xa0009u, 0xa0008u, 0xb000au, 0x80004u, 0x90007u, 0x90008u, 0xa0008u
 );
-var<private> ptp_2x3_w11: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w11: array<f32, 16> = array<f32, 16>(
     0.114285715f, 0.171428576f, -2.0f, 2.0f, -0.171428576f, -0.0857142881f, -0.857142866f, -1.28571427f,
     0.857142866f, 0.857142866f, 1.71428573f, 2.57142854f, 0.285714298f, -0.285714298f, 0.171428576f, 0.342857152f
 );
 
 /* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-var<private> ptp_2x3_pj12: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_pj12: array<u32, 16> = array<u32, 16>(
     0x30013u, 0x30014u, 0x10010u, 0x30017u, 0x40020u, 0x70027u, 0x0000au, 0x0000du,
     0x0001au, 0x0001du, 0x50021u, 0x70026u, 0x00002u, 0x00005u, 0x00003u, 0x00004u
 );
-var<private> ptp_2x3_kl12: array<u32, 16> = array<u32, 16>(
+const ptp_2x3_kl12: array<u32, 16> = array<u32, 16>(
     0x80005u, 0x80006u, 0x80004u, 0xa0007u, 0x90008u, 0xb000au, 0x00000u, 0x00000u,
     0x00000u, 0x00000u, 0x90008u, 0xb0009u, 0x00000u, 0x00000u, 0x00000u, 0x00000u
 );
-var<private> ptp_2x3_w12: array<f32, 16> = array<f32, 16>(
+const ptp_2x3_w12: array<f32, 16> = array<f32, 16>(
     0.0285714287f, -0.0285714287f, 1.0f, -1.0f, 6.0f, 6.0f, 0.0f, 0.0f,
     0.0f, 0.0f, 2.57142854f, 1.71428573f, 0.0f, 0.0f, 0.0f, 0.0f
 );

@@ -43,76 +43,76 @@ const PTP_3X1_L: u32 = 16u; /* control planes per patch */
 /* 6 rounds: the largest number of terms of one thread. */
 
 /* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-var<private> ptp_3x1_own_start: array<u32, 9> = array<u32, 9>(
+const ptp_3x1_own_start: array<u32, 9> = array<u32, 9>(
     0u, 2u, 4u, 6u, 8u, 10u, 12u, 14u, 16u
 );
-var<private> ptp_3x1_own_plane: array<u32, 16> = array<u32, 16>(
+const ptp_3x1_own_plane: array<u32, 16> = array<u32, 16>(
     0u, 6u, 1u, 7u, 8u, 14u, 9u, 15u, 2u, 4u, 3u, 5u, 10u, 12u, 11u, 13u
 );
 
 /* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-var<private> ptp_3x1_pj0: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_pj0: array<u32, 8> = array<u32, 8>(
     0x00000u, 0x00001u, 0x00008u, 0x00009u, 0x00002u, 0x00003u, 0x0000au, 0x1000bu
 );
-var<private> ptp_3x1_kl0: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_kl0: array<u32, 8> = array<u32, 8>(
     0x20001u, 0x30001u, 0x70004u, 0x70005u, 0x40001u, 0x50001u, 0x70006u, 0x70006u
 );
-var<private> ptp_3x1_w0: array<f32, 8> = array<f32, 8>(
+const ptp_3x1_w0: array<f32, 8> = array<f32, 8>(
     -3.0f, -3.0f, 0.171428576f, -0.0857142881f, -0.857142866f, -0.857142866f, 0.142857149f, 0.142857149f
 );
 
 /* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-var<private> ptp_3x1_pj1: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_pj1: array<u32, 8> = array<u32, 8>(
     0x00006u, 0x00007u, 0x00008u, 0x10009u, 0x00002u, 0x10003u, 0x2000au, 0x2000bu
 );
-var<private> ptp_3x1_kl1: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_kl1: array<u32, 8> = array<u32, 8>(
     0x70002u, 0x70003u, 0x60005u, 0x70004u, 0x30002u, 0x30002u, 0x70004u, 0x70005u
 );
-var<private> ptp_3x1_w1: array<f32, 8> = array<f32, 8>(
+const ptp_3x1_w1: array<f32, 8> = array<f32, 8>(
     0.0857142881f, -0.171428576f, -0.257142872f, 0.257142872f, 1.28571427f, 1.28571427f, 0.428571433f, -0.428571433f
 );
 
 /* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-var<private> ptp_3x1_pj2: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_pj2: array<u32, 8> = array<u32, 8>(
     0x00006u, 0x10007u, 0x10008u, 0x10009u, 0x00004u, 0x00005u, 0x2000au, 0x3000bu
 );
-var<private> ptp_3x1_kl2: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_kl2: array<u32, 8> = array<u32, 8>(
     0x60003u, 0x70002u, 0x60004u, 0x60005u, 0x60001u, 0x70001u, 0x60005u, 0x70004u
 );
-var<private> ptp_3x1_w2: array<f32, 8> = array<f32, 8>(
+const ptp_3x1_w2: array<f32, 8> = array<f32, 8>(
     -0.257142872f, 0.257142872f, 0.0857142881f, -0.171428576f, -0.142857149f, -0.142857149f, -0.857142866f, 0.857142866f
 );
 
 /* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-var<private> ptp_3x1_pj3: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_pj3: array<u32, 8> = array<u32, 8>(
     0x00006u, 0x10007u, 0x20008u, 0x20009u, 0x00004u, 0x00005u, 0x3000au, 0x3000bu
 );
-var<private> ptp_3x1_kl3: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_kl3: array<u32, 8> = array<u32, 8>(
     0x50004u, 0x60003u, 0x60003u, 0x70003u, 0x50002u, 0x50003u, 0x60004u, 0x60005u
 );
-var<private> ptp_3x1_w3: array<f32, 8> = array<f32, 8>(
+const ptp_3x1_w3: array<f32, 8> = array<f32, 8>(
     0.514285743f, -0.0857142881f, -0.514285743f, -0.514285743f, 0.428571433f, -0.428571433f, 0.428571433f, -0.428571433f
 );
 
 /* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-var<private> ptp_3x1_pj4: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_pj4: array<u32, 8> = array<u32, 8>(
     0x10006u, 0x10007u, 0x20008u, 0x30009u, 0x00004u, 0x10005u, 0x2000cu, 0x3000du
 );
-var<private> ptp_3x1_kl4: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_kl4: array<u32, 8> = array<u32, 8>(
     0x60002u, 0x50004u, 0x50004u, 0x50004u, 0x40003u, 0x50002u, 0x70006u, 0x70006u
 );
-var<private> ptp_3x1_w4: array<f32, 8> = array<f32, 8>(
+const ptp_3x1_w4: array<f32, 8> = array<f32, 8>(
     0.171428576f, 0.514285743f, 0.771428585f, 0.771428585f, -0.857142866f, 0.857142866f, 0.857142866f, 0.857142866f
 );
 
 /* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-var<private> ptp_3x1_pj5: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_pj5: array<u32, 8> = array<u32, 8>(
     0x20006u, 0x20007u, 0x4000eu, 0x5000fu, 0x10004u, 0x10005u, 0x4000cu, 0x4000du
 );
-var<private> ptp_3x1_kl5: array<u32, 8> = array<u32, 8>(
+const ptp_3x1_kl5: array<u32, 8> = array<u32, 8>(
     0x40003u, 0x50003u, 0x70006u, 0x70006u, 0x40002u, 0x40003u, 0x60005u, 0x70005u
 );
-var<private> ptp_3x1_w5: array<f32, 8> = array<f32, 8>(
+const ptp_3x1_w5: array<f32, 8> = array<f32, 8>(
     -0.771428585f, -0.771428585f, 3.0f, 3.0f, 0.428571433f, -0.428571433f, -1.28571427f, -1.28571427f
 );
 

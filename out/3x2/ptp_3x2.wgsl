@@ -43,194 +43,194 @@ const PTP_3X2_L: u32 = 40u; /* control planes per patch */
 /* 13 rounds: the largest number of terms of one thread. */
 
 /* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-var<private> ptp_3x2_own_start: array<u32, 17> = array<u32, 17>(
+const ptp_3x2_own_start: array<u32, 17> = array<u32, 17>(
     0u, 2u, 4u, 6u, 8u, 11u, 14u, 16u, 18u, 20u, 22u, 25u, 28u, 31u, 34u, 37u,
     40u
 );
-var<private> ptp_3x2_own_plane: array<u32, 40> = array<u32, 40>(
+const ptp_3x2_own_plane: array<u32, 40> = array<u32, 40>(
     0u, 17u, 4u, 22u, 2u, 16u, 18u, 37u, 1u, 21u, 35u, 3u, 23u, 39u, 11u, 25u,
     13u, 29u, 26u, 31u, 28u, 33u, 10u, 12u, 36u, 14u, 27u, 38u, 5u, 6u, 7u, 8u,
     9u, 32u, 15u, 20u, 30u, 19u, 24u, 34u
 );
 
 /* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-var<private> ptp_3x2_pj0: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj0: array<u32, 16> = array<u32, 16>(
     0x00000u, 0x10004u, 0x00002u, 0x00012u, 0x00001u, 0x00003u, 0x0000bu, 0x0000du,
     0x0001au, 0x1001cu, 0x0000au, 0x1000eu, 0x00005u, 0x00008u, 0x0000fu, 0x10013u
 );
-var<private> ptp_3x2_kl0: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl0: array<u32, 16> = array<u32, 16>(
     0x30001u, 0x50002u, 0x50001u, 0xb0005u, 0x40001u, 0x50002u, 0xa0001u, 0xb0002u,
     0xb0009u, 0xb000au, 0x90001u, 0xb0002u, 0x60001u, 0x80002u, 0xa0003u, 0xb0005u
 );
-var<private> ptp_3x2_w0: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w0: array<f32, 16> = array<f32, 16>(
     -6.0f, -6.0f, -1.0f, -0.0857142881f, -3.0f, -1.5f, -0.142857149f, -0.0714285746f,
     0.0714285746f, 0.142857149f, -0.285714298f, -0.285714298f, -1.71428573f, -0.428571433f, 0.171428576f, -0.342857152f
 );
 
 /* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-var<private> ptp_3x2_pj1: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj1: array<u32, 16> = array<u32, 16>(
     0x00011u, 0x00016u, 0x00002u, 0x10012u, 0x00001u, 0x10003u, 0x0000bu, 0x0000du,
     0x1001au, 0x2001cu, 0x0000au, 0x1000eu, 0x00005u, 0x10008u, 0x0000fu, 0x20013u
 );
-var<private> ptp_3x2_kl1: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl1: array<u32, 16> = array<u32, 16>(
     0xb0004u, 0xb0007u, 0x40002u, 0xb0004u, 0x30002u, 0x40002u, 0x90002u, 0x80005u,
     0xa0009u, 0xb0009u, 0x70003u, 0x80005u, 0x40003u, 0x70002u, 0x90004u, 0xb0004u
 );
-var<private> ptp_3x2_w1: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w1: array<f32, 16> = array<f32, 16>(
     -0.0285714287f, 0.0285714287f, -2.0f, 0.0857142881f, -1.5f, -3.0f, -0.0714285746f, -0.214285716f,
     0.142857149f, 0.0714285746f, 0.857142866f, -0.857142866f, 2.57142854f, -0.857142866f, -0.514285743f, 0.514285743f
 );
 
 /* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-var<private> ptp_3x2_pj2: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj2: array<u32, 16> = array<u32, 16>(
     0x00011u, 0x00016u, 0x10002u, 0x10012u, 0x00015u, 0x00017u, 0x0000bu, 0x1000du,
     0x3001au, 0x3001cu, 0x0000au, 0x2000eu, 0x00006u, 0x10008u, 0x0000fu, 0x20013u
 );
-var<private> ptp_3x2_kl2: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl2: array<u32, 16> = array<u32, 16>(
     0xa0005u, 0xa0008u, 0x30002u, 0xa0005u, 0xb0006u, 0xb0008u, 0x80003u, 0xa0002u,
     0xb0006u, 0xb0008u, 0x60004u, 0x80004u, 0x70001u, 0x50004u, 0x70006u, 0xa0005u
 );
-var<private> ptp_3x2_w2: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w2: array<f32, 16> = array<f32, 16>(
     -0.142857149f, -0.114285715f, -1.0f, -0.257142872f, 0.0857142881f, -0.042857144f, 0.214285716f, -0.142857149f,
     0.214285716f, -0.214285716f, -1.71428573f, 1.71428573f, -0.857142866f, 1.28571427f, 1.02857149f, -0.171428576f
 );
 
 /* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-var<private> ptp_3x2_pj3: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj3: array<u32, 16> = array<u32, 16>(
     0x00011u, 0x10016u, 0x00010u, 0x10012u, 0x00015u, 0x10017u, 0x0000bu, 0x1000du,
     0x3001au, 0x4001cu, 0x1000au, 0x2000eu, 0x00006u, 0x20008u, 0x1000fu, 0x20013u
 );
-var<private> ptp_3x2_kl3: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl3: array<u32, 16> = array<u32, 16>(
     0x80007u, 0xb0006u, 0xb0003u, 0x80007u, 0xa0007u, 0xb0007u, 0x70004u, 0x80004u,
     0xa0007u, 0xb0007u, 0x60003u, 0x70005u, 0x60002u, 0x50003u, 0x90003u, 0x80007u
 );
-var<private> ptp_3x2_w3: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w3: array<f32, 16> = array<f32, 16>(
     0.171428576f, 0.142857149f, 0.042857144f, 0.514285743f, -0.0857142881f, 0.171428576f, -0.428571433f, 0.428571433f,
     -0.428571433f, 0.428571433f, 0.857142866f, -0.857142866f, -0.428571433f, 0.642857134f, 0.342857152f, 1.02857149f
 );
 
 /* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-var<private> ptp_3x2_pj4: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj4: array<u32, 16> = array<u32, 16>(
     0x10011u, 0x10016u, 0x00010u, 0x20012u, 0x00015u, 0x10017u, 0x0000bu, 0x1000du,
     0x3001au, 0x4001cu, 0x0000cu, 0x0001bu, 0x00006u, 0x10009u, 0x3000fu, 0x40013u
 );
-var<private> ptp_3x2_kl4: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl4: array<u32, 16> = array<u32, 16>(
     0xb0003u, 0x90008u, 0xa0004u, 0xb0003u, 0x90008u, 0xa0008u, 0x60005u, 0x70005u,
     0x90008u, 0xa0008u, 0xb0001u, 0xb000au, 0x50003u, 0x80002u, 0x60004u, 0x80005u
 );
-var<private> ptp_3x2_w4: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w4: array<f32, 16> = array<f32, 16>(
     0.114285715f, -0.142857149f, -0.171428576f, 0.128571436f, -0.128571436f, -0.257142872f, -0.428571433f, -0.857142866f,
     -0.428571433f, -0.857142866f, -0.0476190485f, 0.0476190485f, 0.642857134f, -1.71428573f, -1.54285717f, -1.54285717f
 );
 
 /* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-var<private> ptp_3x2_pj5: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj5: array<u32, 16> = array<u32, 16>(
     0x10011u, 0x20016u, 0x00010u, 0x20012u, 0x10015u, 0x20017u, 0x1000bu, 0x2000du,
     0x4001au, 0x5001cu, 0x0000cu, 0x1001bu, 0x10006u, 0x20009u, 0x00014u, 0x10018u
 );
-var<private> ptp_3x2_kl5: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl5: array<u32, 16> = array<u32, 16>(
     0x90005u, 0xa0006u, 0x90005u, 0xa0004u, 0xa0006u, 0xb0006u, 0x70003u, 0x80003u,
     0xa0006u, 0xb0006u, 0xa0002u, 0xb0009u, 0x40003u, 0x50004u, 0xa0006u, 0xb0008u
 );
-var<private> ptp_3x2_w5: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w5: array<f32, 16> = array<f32, 16>(
     -0.114285715f, 0.114285715f, -0.128571436f, 0.171428576f, 0.257142872f, 0.128571436f, 0.857142866f, 0.428571433f,
     0.857142866f, 0.428571433f, -0.095238097f, 0.095238097f, 1.28571427f, 2.57142854f, 0.342857152f, -0.171428576f
 );
 
 /* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-var<private> ptp_3x2_pj6: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj6: array<u32, 16> = array<u32, 16>(
     0x10011u, 0x20016u, 0x00010u, 0x20012u, 0x10015u, 0x20017u, 0x1000bu, 0x2000du,
     0x4001au, 0x5001cu, 0x0000cu, 0x2001bu, 0x00007u, 0x30020u, 0x00014u, 0x20018u
 );
-var<private> ptp_3x2_kl6: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl6: array<u32, 16> = array<u32, 16>(
     0x80006u, 0x90007u, 0x80006u, 0x90005u, 0x90007u, 0xa0007u, 0x60004u, 0x70004u,
     0x90007u, 0xa0007u, 0x70005u, 0xa0009u, 0x80001u, 0xb000au, 0x90007u, 0xb0007u
 );
-var<private> ptp_3x2_w6: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w6: array<f32, 16> = array<f32, 16>(
     0.342857152f, -0.0285714287f, 0.257142872f, -0.042857144f, -0.171428576f, 0.0857142881f, -0.428571433f, 0.428571433f,
     -0.428571433f, 0.428571433f, -0.428571433f, 0.0476190485f, -0.285714298f, 0.285714298f, -0.514285743f, 0.514285743f
 );
 
 /* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-var<private> ptp_3x2_pj7: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj7: array<u32, 16> = array<u32, 16>(
     0x20011u, 0x30016u, 0x10010u, 0x20012u, 0x20015u, 0x20017u, 0x2000bu, 0x2000du,
     0x5001au, 0x5001cu, 0x1000cu, 0x3001bu, 0x00007u, 0x40020u, 0x10014u, 0x20018u
 );
-var<private> ptp_3x2_kl7: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl7: array<u32, 16> = array<u32, 16>(
     0xa0003u, 0xb0004u, 0xa0003u, 0x80006u, 0x90006u, 0x90008u, 0x60003u, 0x60005u,
     0x90006u, 0x90008u, 0x90002u, 0xa0008u, 0x70002u, 0xb0009u, 0x90006u, 0xa0008u
 );
-var<private> ptp_3x2_w7: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w7: array<f32, 16> = array<f32, 16>(
     0.142857149f, -0.171428576f, 0.257142872f, 0.257142872f, 0.042857144f, -0.0857142881f, 0.214285716f, -0.214285716f,
     0.214285716f, -0.214285716f, -0.0476190485f, -0.428571433f, -0.571428597f, 0.571428597f, 0.171428576f, -0.342857152f
 );
 
 /* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-var<private> ptp_3x2_pj8: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj8: array<u32, 16> = array<u32, 16>(
     0x20011u, 0x30016u, 0x10010u, 0x30012u, 0x30015u, 0x30017u, 0x00019u, 0x2001du,
     0x3001fu, 0x40021u, 0x1000cu, 0x4001bu, 0x00007u, 0x50020u, 0x30014u, 0x40018u
 );
-var<private> ptp_3x2_kl8: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl8: array<u32, 16> = array<u32, 16>(
     0x90004u, 0xa0005u, 0x90004u, 0x80005u, 0xa0004u, 0xb0005u, 0xa0009u, 0xb000au,
     0xb0009u, 0xb000au, 0x80003u, 0xb0006u, 0x50004u, 0xa0009u, 0x90004u, 0xb0005u
 );
-var<private> ptp_3x2_w8: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w8: array<f32, 16> = array<f32, 16>(
     0.0285714287f, -0.342857152f, -0.0857142881f, -0.385714293f, -0.514285743f, -0.257142872f, 0.285714298f, 0.285714298f,
     0.428571433f, 0.857142866f, 0.428571433f, 0.428571433f, 0.428571433f, 0.285714298f, -1.02857149f, -1.02857149f
 );
 
 /* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-var<private> ptp_3x2_pj9: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj9: array<u32, 16> = array<u32, 16>(
     0x20011u, 0x30016u, 0x10010u, 0x40012u, 0x30015u, 0x40017u, 0x30019u, 0x4001du,
     0x4001fu, 0x50021u, 0x1000cu, 0x4001bu, 0x10007u, 0x60020u, 0x30014u, 0x50018u
 );
-var<private> ptp_3x2_kl9: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl9: array<u32, 16> = array<u32, 16>(
     0x70006u, 0x80007u, 0x70006u, 0x70005u, 0x90005u, 0xa0005u, 0xa0006u, 0xb0008u,
     0xa0009u, 0xb0009u, 0x60005u, 0x90008u, 0x60002u, 0xb0007u, 0x70006u, 0x80007u
 );
-var<private> ptp_3x2_w9: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w9: array<f32, 16> = array<f32, 16>(
     0.171428576f, 0.257142872f, 0.514285743f, -0.771428585f, -0.257142872f, -0.514285743f, 0.857142866f, -0.857142866f,
     0.857142866f, 0.428571433f, -0.428571433f, -0.428571433f, -0.285714298f, -0.428571433f, 1.54285717f, 1.54285717f
 );
 
 /* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-var<private> ptp_3x2_pj10: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj10: array<u32, 16> = array<u32, 16>(
     0x30011u, 0x40016u, 0x20010u, 0x60025u, 0x30015u, 0x40017u, 0x30019u, 0x5001du,
     0x6001fu, 0x60021u, 0x2000cu, 0x5001bu, 0x10007u, 0x60020u, 0x3001eu, 0x50022u
 );
-var<private> ptp_3x2_kl10: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl10: array<u32, 16> = array<u32, 16>(
     0x80004u, 0x90005u, 0x90003u, 0xb000au, 0x80006u, 0x80007u, 0x90007u, 0xb0007u,
     0xa0007u, 0xb0008u, 0x70003u, 0xa0006u, 0x50003u, 0xa0008u, 0xa0009u, 0xb000au
 );
-var<private> ptp_3x2_w10: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w10: array<f32, 16> = array<f32, 16>(
     -0.257142872f, -0.171428576f, 0.0857142881f, 1.0f, 0.385714293f, 0.771428585f, -1.71428573f, 1.71428573f,
     -1.28571427f, -0.642857134f, 0.428571433f, 0.428571433f, 0.857142866f, -0.857142866f, 1.71428573f, 1.71428573f
 );
 
 /* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-var<private> ptp_3x2_pj11: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj11: array<u32, 16> = array<u32, 16>(
     0x30011u, 0x40016u, 0x30010u, 0x70025u, 0x40015u, 0x50017u, 0x40019u, 0x5001du,
     0x6001fu, 0x70021u, 0x60024u, 0x70026u, 0x20007u, 0x70020u, 0x6001eu, 0x70022u
 );
-var<private> ptp_3x2_kl11: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl11: array<u32, 16> = array<u32, 16>(
     0x70005u, 0x80006u, 0x70004u, 0xb0009u, 0x70006u, 0x80006u, 0x90006u, 0xa0008u,
     0x90008u, 0xa0008u, 0xb0009u, 0xb000au, 0x40003u, 0x90008u, 0x90007u, 0xb0008u
 );
-var<private> ptp_3x2_w11: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w11: array<f32, 16> = array<f32, 16>(
     -0.514285743f, 0.514285743f, -0.771428585f, 2.0f, 0.771428585f, 0.385714293f, 0.857142866f, -0.857142866f,
     -0.642857134f, -1.28571427f, 1.5f, 3.0f, 0.428571433f, -0.428571433f, -2.57142854f, -2.57142854f
 );
 
 /* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-var<private> ptp_3x2_pj12: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_pj12: array<u32, 16> = array<u32, 16>(
     0x40011u, 0x50016u, 0x30010u, 0x80025u, 0x60023u, 0x80027u, 0x0000bu, 0x0000du,
     0x0001au, 0x0001cu, 0x70024u, 0x80026u, 0x00005u, 0x00008u, 0x0000fu, 0x00013u
 );
-var<private> ptp_3x2_kl12: array<u32, 16> = array<u32, 16>(
+const ptp_3x2_kl12: array<u32, 16> = array<u32, 16>(
     0x60005u, 0x70006u, 0x60005u, 0xa0009u, 0xa0009u, 0xb000au, 0x00000u, 0x00000u,
     0x00000u, 0x00000u, 0xa0009u, 0xb0009u, 0x00000u, 0x00000u, 0x00000u, 0x00000u
 );
-var<private> ptp_3x2_w12: array<f32, 16> = array<f32, 16>(
+const ptp_3x2_w12: array<f32, 16> = array<f32, 16>(
     -0.257142872f, 0.257142872f, -0.385714293f, 1.0f, 6.0f, 6.0f, 0.0f, 0.0f,
     0.0f, 0.0f, 3.0f, 1.5f, 0.0f, 0.0f, 0.0f, 0.0f
 );

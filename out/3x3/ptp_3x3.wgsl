@@ -43,11 +43,11 @@ const PTP_3X3_L: u32 = 64u; /* control planes per patch */
 /* 33 rounds: the largest number of terms of one thread. */
 
 /* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-var<private> ptp_3x3_own_start: array<u32, 17> = array<u32, 17>(
+const ptp_3x3_own_start: array<u32, 17> = array<u32, 17>(
     0u, 3u, 6u, 9u, 12u, 16u, 20u, 24u, 28u, 32u, 36u, 40u, 44u, 49u, 54u, 59u,
     64u
 );
-var<private> ptp_3x3_own_plane: array<u32, 64> = array<u32, 64>(
+const ptp_3x3_own_plane: array<u32, 64> = array<u32, 64>(
     27u, 41u, 49u, 28u, 46u, 54u, 35u, 50u, 58u, 36u, 53u, 61u, 0u, 16u, 19u, 33u,
     7u, 20u, 23u, 38u, 26u, 40u, 51u, 56u, 29u, 47u, 52u, 63u, 1u, 10u, 32u, 34u,
     6u, 13u, 37u, 39u, 8u, 17u, 43u, 59u, 15u, 22u, 44u, 60u, 2u, 3u, 11u, 18u,
@@ -55,463 +55,463 @@ var<private> ptp_3x3_own_plane: array<u32, 64> = array<u32, 64>(
 );
 
 /* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-var<private> ptp_3x3_pj0: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj0: array<u32, 16> = array<u32, 16>(
     0x0001bu, 0x0001cu, 0x00023u, 0x00024u, 0x00000u, 0x20007u, 0x0001au, 0x0001du,
     0x00001u, 0x10006u, 0x00008u, 0x2000fu, 0x00002u, 0x00004u, 0x00009u, 0x1000eu
 );
-var<private> ptp_3x3_kl0: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl0: array<u32, 16> = array<u32, 16>(
     0xe0006u, 0xf0006u, 0xf0009u, 0xe000bu, 0x40001u, 0x70003u, 0xf0004u, 0xf0007u,
     0x50001u, 0x70003u, 0x80001u, 0xb0003u, 0x60001u, 0x70002u, 0x90001u, 0xb0003u
 );
-var<private> ptp_3x3_w0: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w0: array<f32, 16> = array<f32, 16>(
     -0.0881632641f, -0.022040816f, 0.022040816f, -0.0367346928f, -9.0f, -9.0f, 0.0122448979f, -0.0244897958f,
     -3.85714293f, -2.57142854f, -2.57142854f, -2.57142854f, -1.28571427f, -0.514285743f, -1.10204077f, -0.734693885f
 );
 
 /* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-var<private> ptp_3x3_pj1: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj1: array<u32, 16> = array<u32, 16>(
     0x0001bu, 0x0001cu, 0x00023u, 0x10024u, 0x00010u, 0x00014u, 0x0001au, 0x1001du,
     0x00001u, 0x20006u, 0x00008u, 0x3000fu, 0x00002u, 0x00004u, 0x00009u, 0x2000eu
 );
-var<private> ptp_3x3_kl1: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl1: array<u32, 16> = array<u32, 16>(
     0xd0007u, 0xe0007u, 0xe000au, 0xf0009u, 0xc0001u, 0xf0002u, 0xe0005u, 0xf0006u,
     0x40002u, 0x60003u, 0x50004u, 0x70006u, 0x50002u, 0x60003u, 0x80002u, 0xa0003u
 );
-var<private> ptp_3x3_w1: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w1: array<f32, 16> = array<f32, 16>(
     -0.0587755106f, -0.0514285713f, -0.044081632f, 0.0881632641f, -0.428571433f, -0.0244897958f, -0.0367346928f, -0.0367346928f,
     -2.57142854f, -3.85714293f, 3.85714293f, 3.85714293f, -2.57142854f, -0.771428585f, -0.734693885f, -1.10204077f
 );
 
 /* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-var<private> ptp_3x3_pj2: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj2: array<u32, 16> = array<u32, 16>(
     0x0001bu, 0x0001cu, 0x00023u, 0x10024u, 0x00010u, 0x00014u, 0x0001au, 0x1001du,
     0x0000au, 0x0000du, 0x00011u, 0x10016u, 0x00002u, 0x10004u, 0x00009u, 0x2000eu
 );
-var<private> ptp_3x3_kl2: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl2: array<u32, 16> = array<u32, 16>(
     0xb0009u, 0xb000au, 0xd000bu, 0xe000au, 0x90004u, 0xe0003u, 0xd0006u, 0xe0007u,
     0xa0001u, 0xb0003u, 0xd0001u, 0xf0003u, 0x40003u, 0x60002u, 0x60004u, 0x70006u
 );
-var<private> ptp_3x3_w2: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w2: array<f32, 16> = array<f32, 16>(
     0.0881632641f, 0.044081632f, -0.0514285713f, -0.0661224499f, 1.28571427f, -0.0367346928f, -0.183673471f, -0.183673471f,
     -0.367346942f, -0.122448981f, -0.183673471f, -0.122448981f, -0.428571433f, -2.31428576f, 1.10204077f, 1.65306127f
 );
 
 /* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-var<private> ptp_3x3_pj3: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj3: array<u32, 16> = array<u32, 16>(
     0x1001bu, 0x1001cu, 0x10023u, 0x10024u, 0x00010u, 0x00014u, 0x0001au, 0x1001du,
     0x0000au, 0x1000du, 0x00011u, 0x10016u, 0x10002u, 0x10004u, 0x10009u, 0x3000eu
 );
-var<private> ptp_3x3_kl3: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl3: array<u32, 16> = array<u32, 16>(
     0xf0004u, 0xf0005u, 0xf0008u, 0xd000bu, 0x80005u, 0xb0006u, 0xc0007u, 0xb000au,
     0x90002u, 0xb0002u, 0xc0002u, 0xb0007u, 0x40002u, 0x50003u, 0x50004u, 0x70005u
 );
-var<private> ptp_3x3_w3: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w3: array<f32, 16> = array<f32, 16>(
     0.0367346928f, 0.044081632f, 0.0514285713f, -0.1322449f, -2.57142854f, -0.0367346928f, -0.0367346928f, 0.220408157f,
     -0.734693885f, -0.367346942f, -0.122448981f, -0.367346942f, -1.28571427f, -1.54285717f, 1.65306127f, 1.10204077f
 );
 
 /* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-var<private> ptp_3x3_pj4: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj4: array<u32, 16> = array<u32, 16>(
     0x1001bu, 0x1001cu, 0x10023u, 0x20024u, 0x10010u, 0x00014u, 0x0001au, 0x2001du,
     0x0000au, 0x1000du, 0x00011u, 0x20016u, 0x00003u, 0x20004u, 0x00018u, 0x1001eu
 );
-var<private> ptp_3x3_kl4: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl4: array<u32, 16> = array<u32, 16>(
     0xe0005u, 0xe0006u, 0xe0009u, 0xf0008u, 0x80004u, 0xa0007u, 0xb0008u, 0xf0005u,
     0x80003u, 0xa0003u, 0xa0004u, 0xe0003u, 0x70001u, 0x40003u, 0xd0004u, 0xf0007u
 );
-var<private> ptp_3x3_w4: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w4: array<f32, 16> = array<f32, 16>(
     0.0661224499f, -0.1322449f, 0.1322449f, 0.0587755106f, 1.28571427f, -0.146938771f, 0.0734693855f, 0.146938771f,
     -0.122448981f, -0.734693885f, 0.367346942f, -0.183673471f, -0.257142872f, -0.257142872f, 0.257142872f, -0.146938771f
 );
 
 /* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-var<private> ptp_3x3_pj5: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj5: array<u32, 16> = array<u32, 16>(
     0x1001bu, 0x1001cu, 0x10023u, 0x20024u, 0x00013u, 0x10014u, 0x0001au, 0x2001du,
     0x0000au, 0x1000du, 0x00011u, 0x20016u, 0x00003u, 0x00005u, 0x00018u, 0x2001eu
 );
-var<private> ptp_3x3_kl5: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl5: array<u32, 16> = array<u32, 16>(
     0xd0006u, 0xd0007u, 0xd000au, 0xe0009u, 0xf0001u, 0xe0002u, 0xa0009u, 0xd0007u,
     0x70004u, 0x70006u, 0x90005u, 0xb0006u, 0x60002u, 0x70003u, 0xc0005u, 0xf0006u
 );
-var<private> ptp_3x3_w5: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w5: array<f32, 16> = array<f32, 16>(
     -0.198367342f, -0.1322449f, -0.198367342f, 0.198367342f, -0.0122448979f, -0.110204078f, 0.220408157f, -0.146938771f,
     0.183673471f, 0.551020384f, -0.551020384f, 0.551020384f, -1.54285717f, -0.428571433f, -0.771428585f, 0.110204078f
 );
 
 /* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-var<private> ptp_3x3_pj6: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj6: array<u32, 16> = array<u32, 16>(
     0x1001bu, 0x1001cu, 0x10023u, 0x20024u, 0x00013u, 0x10014u, 0x1001au, 0x2001du,
     0x0000au, 0x2000du, 0x00011u, 0x20016u, 0x00003u, 0x10005u, 0x00018u, 0x2001eu
 );
-var<private> ptp_3x3_kl6: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl6: array<u32, 16> = array<u32, 16>(
     0xc0007u, 0xb0009u, 0xc000bu, 0xd000au, 0xe0002u, 0xd0003u, 0xe0004u, 0xb0009u,
     0x60005u, 0x90003u, 0x80006u, 0xa0007u, 0x50003u, 0x70002u, 0x90008u, 0xe0007u
 );
-var<private> ptp_3x3_w6: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w6: array<f32, 16> = array<f32, 16>(
     -0.0514285713f, 0.2644898f, -0.0587755106f, -0.1322449f, -0.0734693855f, -0.0734693855f, 0.146938771f, 0.440816313f,
     0.551020384f, -0.367346942f, -0.734693885f, -1.10204077f, -0.771428585f, -1.28571427f, 1.54285717f, -0.330612242f
 );
 
 /* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-var<private> ptp_3x3_pj7: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj7: array<u32, 16> = array<u32, 16>(
     0x1001bu, 0x2001cu, 0x20023u, 0x20024u, 0x00013u, 0x10014u, 0x1001au, 0x3001du,
     0x1000au, 0x2000du, 0x10011u, 0x30016u, 0x10003u, 0x10005u, 0x10018u, 0x2001eu
 );
-var<private> ptp_3x3_kl7: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl7: array<u32, 16> = array<u32, 16>(
     0xb0008u, 0xf0004u, 0xe0008u, 0xc000bu, 0xd0003u, 0xb0005u, 0xc0006u, 0xf0004u,
     0x80002u, 0x70005u, 0x90004u, 0xb0005u, 0x50002u, 0x60003u, 0xc0004u, 0xb000au
 );
-var<private> ptp_3x3_w7: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w7: array<f32, 16> = array<f32, 16>(
     0.1322449f, 0.0514285713f, 0.1322449f, -0.0514285713f, -0.0367346928f, 0.220408157f, -0.146938771f, 0.0367346928f,
     -0.367346942f, 1.10204077f, 1.10204077f, 0.734693885f, -2.31428576f, -2.57142854f, 0.514285743f, 0.661224484f
 );
 
 /* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-var<private> ptp_3x3_pj8: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj8: array<u32, 16> = array<u32, 16>(
     0x1001bu, 0x2001cu, 0x20023u, 0x30024u, 0x00013u, 0x10014u, 0x1001au, 0x3001du,
     0x1000au, 0x3000du, 0x10011u, 0x30016u, 0x10003u, 0x20005u, 0x40018u, 0x3001eu
 );
-var<private> ptp_3x3_kl8: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl8: array<u32, 16> = array<u32, 16>(
     0xa0009u, 0xe0005u, 0xd0009u, 0xe0008u, 0xb0005u, 0xa0006u, 0xa0008u, 0xe0005u,
     0x60004u, 0x70004u, 0x80005u, 0xa0006u, 0x40003u, 0x50003u, 0x80005u, 0xf0005u
 );
-var<private> ptp_3x3_w8: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w8: array<f32, 16> = array<f32, 16>(
     0.396734685f, 0.198367342f, 0.0661224499f, 0.0514285713f, 0.0367346928f, -0.330612242f, 0.440816313f, 0.183673471f,
     1.10204077f, 0.183673471f, -0.551020384f, 0.551020384f, -0.514285743f, -1.28571427f, -2.31428576f, 0.220408157f
 );
 
 /* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-var<private> ptp_3x3_pj9: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj9: array<u32, 16> = array<u32, 16>(
     0x2001bu, 0x2001cu, 0x20023u, 0x30024u, 0x00013u, 0x10014u, 0x2001au, 0x3001du,
     0x2000au, 0x3000du, 0x20011u, 0x30016u, 0x0000bu, 0x0000cu, 0x00019u, 0x3001eu
 );
-var<private> ptp_3x3_kl9: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl9: array<u32, 16> = array<u32, 16>(
     0xe0004u, 0xd0006u, 0xc000au, 0xd0009u, 0xa0006u, 0x90007u, 0xd0004u, 0xd0006u,
     0x50004u, 0x60005u, 0x80004u, 0x90007u, 0xb0001u, 0xb0002u, 0xe0004u, 0xe0006u
 );
-var<private> ptp_3x3_w9: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w9: array<f32, 16> = array<f32, 16>(
     0.1322449f, -0.0661224499f, -0.0881632641f, 0.044081632f, -0.220408157f, -0.440816313f, 0.183673471f, 0.0367346928f,
     0.551020384f, 0.551020384f, 0.367346942f, -0.367346942f, -0.0734693855f, -0.146938771f, 0.0734693855f, 0.220408157f
 );
 
 /* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-var<private> ptp_3x3_pj10: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj10: array<u32, 16> = array<u32, 16>(
     0x2001bu, 0x2001cu, 0x30023u, 0x30024u, 0x00013u, 0x20014u, 0x2001au, 0x3001du,
     0x00020u, 0x00025u, 0x0002bu, 0x0002cu, 0x0000bu, 0x0000cu, 0x00019u, 0x3001eu
 );
-var<private> ptp_3x3_kl10: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl10: array<u32, 16> = array<u32, 16>(
     0xd0005u, 0xc0007u, 0xd0008u, 0xc000au, 0x90007u, 0xc0003u, 0xc0005u, 0xc0007u,
     0xd0008u, 0xf000bu, 0xf000du, 0xf000eu, 0xa0002u, 0xa0003u, 0xd0005u, 0xd0007u
 );
-var<private> ptp_3x3_w10: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w10: array<f32, 16> = array<f32, 16>(
     0.1322449f, -0.0367346928f, 0.0367346928f, -0.022040816f, -0.183673471f, -0.0122448979f, 0.0367346928f, -0.0122448979f,
     0.514285743f, -0.0122448979f, 0.0244897958f, 0.0122448979f, -0.440816313f, -0.220408157f, -0.220408157f, -0.0734693855f
 );
 
 /* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-var<private> ptp_3x3_pj11: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj11: array<u32, 16> = array<u32, 16>(
     0x2001bu, 0x2001cu, 0x40023u, 0x40024u, 0x10013u, 0x20014u, 0x2001au, 0x3001du,
     0x00020u, 0x10025u, 0x1002bu, 0x1002cu, 0x0000bu, 0x0000cu, 0x00019u, 0x3001eu
 );
-var<private> ptp_3x3_kl11: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl11: array<u32, 16> = array<u32, 16>(
     0xc0006u, 0xb0008u, 0xf0005u, 0xf0006u, 0xd0002u, 0xb0004u, 0x90008u, 0xb0008u,
     0xc0009u, 0xf000au, 0xf000cu, 0xf000du, 0x90003u, 0x70006u, 0xc0006u, 0xb0009u
 );
-var<private> ptp_3x3_w11: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w11: array<f32, 16> = array<f32, 16>(
     -0.044081632f, 0.1322449f, -0.044081632f, -0.0881632641f, -0.110204078f, 0.183673471f, 0.220408157f, 0.0734693855f,
     -0.771428585f, 0.0367346928f, 0.0367346928f, 0.0734693855f, -0.220408157f, 0.110204078f, -0.220408157f, 0.440816313f
 );
 
 /* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-var<private> ptp_3x3_pj12: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj12: array<u32, 16> = array<u32, 16>(
     0x2001bu, 0x2001cu, 0x40023u, 0x40024u, 0x10013u, 0x20014u, 0x3001au, 0x3001du,
     0x10020u, 0x10025u, 0x1002bu, 0x2002cu, 0x0000bu, 0x1000cu, 0x00019u, 0x5001eu
 );
-var<private> ptp_3x3_kl12: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl12: array<u32, 16> = array<u32, 16>(
     0xa0008u, 0xa0009u, 0xe0006u, 0xe0007u, 0xc0003u, 0xa0005u, 0xc0004u, 0xa0009u,
     0xc0008u, 0xe000bu, 0xe000du, 0xf000cu, 0x70005u, 0xa0002u, 0xa0008u, 0xb0007u
 );
-var<private> ptp_3x3_w12: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w12: array<f32, 16> = array<f32, 16>(
     0.2644898f, 0.396734685f, -0.2644898f, -0.1322449f, -0.0244897958f, 0.661224484f, 0.0244897958f, 0.220408157f,
     0.257142872f, -0.146938771f, 0.110204078f, 0.0367346928f, 0.220408157f, -0.661224484f, 0.440816313f, -0.661224484f
 );
 
 /* Round 13: thread t adds w13[t] * term(plane | j << 16 = pj13[t], k | l << 16 = kl13[t]). */
-var<private> ptp_3x3_pj13: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj13: array<u32, 16> = array<u32, 16>(
     0x3001bu, 0x3001cu, 0x40023u, 0x40024u, 0x10013u, 0x20014u, 0x4001au, 0x4001du,
     0x40020u, 0x20025u, 0x2002bu, 0x2002cu, 0x1000bu, 0x1000cu, 0x10019u, 0x6001eu
 );
-var<private> ptp_3x3_kl13: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl13: array<u32, 16> = array<u32, 16>(
     0xd0004u, 0xe0004u, 0xd0007u, 0xb000au, 0xb0004u, 0x90006u, 0xa0005u, 0xb0007u,
     0xc0005u, 0xf0009u, 0xe000cu, 0xe000du, 0x90002u, 0x90003u, 0xd0004u, 0xa0007u
 );
-var<private> ptp_3x3_w13: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w13: array<f32, 16> = array<f32, 16>(
     0.0514285713f, 0.0587755106f, -0.1322449f, 0.0661224499f, 0.146938771f, -0.330612242f, -0.330612242f, -0.110204078f,
     -1.54285717f, 0.183673471f, 0.0734693855f, 0.110204078f, -0.661224484f, -0.440816313f, 0.330612242f, -0.991836727f
 );
 
 /* Round 14: thread t adds w14[t] * term(plane | j << 16 = pj14[t], k | l << 16 = kl14[t]). */
-var<private> ptp_3x3_pj14: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj14: array<u32, 16> = array<u32, 16>(
     0x3001bu, 0x3001cu, 0x40023u, 0x50024u, 0x10013u, 0x20014u, 0x4001au, 0x5001du,
     0x40020u, 0x20025u, 0x3002bu, 0x3002cu, 0x1000bu, 0x1000cu, 0x10019u, 0x2001fu
 );
-var<private> ptp_3x3_kl14: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl14: array<u32, 16> = array<u32, 16>(
     0xc0005u, 0xd0005u, 0xb0009u, 0xe0006u, 0xa0005u, 0x80007u, 0x90006u, 0xb0006u,
     0x90008u, 0xd000bu, 0xd000cu, 0xe000cu, 0x80003u, 0x70005u, 0xc0005u, 0xf0007u
 );
-var<private> ptp_3x3_w14: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w14: array<f32, 16> = array<f32, 16>(
     0.022040816f, 0.0881632641f, 0.1322449f, -0.396734685f, 0.330612242f, -0.146938771f, -0.661224484f, -0.330612242f,
     2.31428576f, -0.183673471f, 0.0122448979f, 0.0244897958f, -0.146938771f, 0.661224484f, -0.110204078f, -0.514285743f
 );
 
 /* Round 15: thread t adds w15[t] * term(plane | j << 16 = pj15[t], k | l << 16 = kl15[t]). */
-var<private> ptp_3x3_pj15: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj15: array<u32, 16> = array<u32, 16>(
     0x3001bu, 0x3001cu, 0x50023u, 0x50024u, 0x10013u, 0x30014u, 0x4001au, 0x5001du,
     0x00022u, 0x30025u, 0x4002bu, 0x4002cu, 0x1000bu, 0x2000cu, 0x10019u, 0x3001fu
 );
-var<private> ptp_3x3_kl15: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl15: array<u32, 16> = array<u32, 16>(
     0x90008u, 0xa0008u, 0xd0006u, 0xd0007u, 0x90006u, 0xa0004u, 0x80007u, 0xa0007u,
     0xf0008u, 0xf0008u, 0xf0009u, 0xf000au, 0x70004u, 0x80003u, 0x90008u, 0xf0006u
 );
-var<private> ptp_3x3_w15: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w15: array<f32, 16> = array<f32, 16>(
     0.044081632f, 0.0881632641f, -0.396734685f, -0.2644898f, -0.661224484f, 0.183673471f, -0.110204078f, -0.661224484f,
     0.0244897958f, 0.0367346928f, 0.0367346928f, -0.0367346928f, 0.330612242f, -0.0734693855f, 0.661224484f, 0.771428585f
 );
 
 /* Round 16: thread t adds w16[t] * term(plane | j << 16 = pj16[t], k | l << 16 = kl16[t]). */
-var<private> ptp_3x3_pj16: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj16: array<u32, 16> = array<u32, 16>(
     0x4001bu, 0x4001cu, 0x50023u, 0x50024u, 0x10013u, 0x30014u, 0x5001au, 0x6001du,
     0x00022u, 0x30025u, 0x4002bu, 0x4002cu, 0x1000bu, 0x2000cu, 0x20019u, 0x3001fu
 );
-var<private> ptp_3x3_kl16: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl16: array<u32, 16> = array<u32, 16>(
     0xb0005u, 0xb0006u, 0xc0007u, 0xb0009u, 0x80007u, 0x90005u, 0x80006u, 0x90007u,
     0xe0009u, 0xe0009u, 0xe000au, 0xe000bu, 0x60005u, 0x70004u, 0xc0004u, 0xe0007u
 );
-var<private> ptp_3x3_w16: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w16: array<f32, 16> = array<f32, 16>(
     -0.0661224499f, -0.1322449f, -0.0881632641f, 0.396734685f, -0.183673471f, 0.220408157f, -0.330612242f, -0.330612242f,
     0.0367346928f, 0.146938771f, -0.220408157f, -0.146938771f, 0.991836727f, 0.330612242f, 0.146938771f, -0.257142872f
 );
 
 /* Round 17: thread t adds w17[t] * term(plane | j << 16 = pj17[t], k | l << 16 = kl17[t]). */
-var<private> ptp_3x3_pj17: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj17: array<u32, 16> = array<u32, 16>(
     0x4001bu, 0x4001cu, 0x50023u, 0x60024u, 0x20013u, 0x30014u, 0x00028u, 0x3002fu,
     0x00022u, 0x30025u, 0x4002bu, 0x5002cu, 0x2000bu, 0x2000cu, 0x40019u, 0x3001fu
 );
-var<private> ptp_3x3_kl17: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl17: array<u32, 16> = array<u32, 16>(
     0xa0006u, 0xa0007u, 0xb0008u, 0xc0007u, 0xa0004u, 0x80006u, 0xd000cu, 0xf000eu,
     0xd000au, 0xd000au, 0xd000bu, 0xf0009u, 0x60004u, 0x60005u, 0x90005u, 0xb000au
 );
-var<private> ptp_3x3_w17: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w17: array<f32, 16> = array<f32, 16>(
     -0.396734685f, -0.198367342f, 0.198367342f, -0.044081632f, 0.440816313f, -0.0367346928f, 0.428571433f, 0.428571433f,
     -0.146938771f, -0.0367346928f, -0.183673471f, 0.220408157f, 0.661224484f, 0.991836727f, -0.991836727f, 1.54285717f
 );
 
 /* Round 18: thread t adds w18[t] * term(plane | j << 16 = pj18[t], k | l << 16 = kl18[t]). */
-var<private> ptp_3x3_pj18: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj18: array<u32, 16> = array<u32, 16>(
     0x4001bu, 0x5001cu, 0x50023u, 0x60024u, 0x20013u, 0x20017u, 0x40028u, 0x6002fu,
     0x00022u, 0x30025u, 0x5002bu, 0x5002cu, 0x3000bu, 0x3000cu, 0x40019u, 0x6001fu
 );
-var<private> ptp_3x3_kl18: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl18: array<u32, 16> = array<u32, 16>(
     0x90007u, 0xa0006u, 0xa0009u, 0xb0008u, 0x90005u, 0xf0003u, 0xd0008u, 0xf000bu,
     0xc000bu, 0xc000bu, 0xf0008u, 0xe000au, 0x50004u, 0x60004u, 0x80006u, 0xb0007u
 );
-var<private> ptp_3x3_w18: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w18: array<f32, 16> = array<f32, 16>(
     -0.198367342f, -0.595102012f, 0.595102012f, 0.198367342f, 0.330612242f, -0.428571433f, 1.28571427f, -1.28571427f,
     -0.0367346928f, -0.0244897958f, 0.146938771f, -0.330612242f, 0.110204078f, 0.220408157f, -0.661224484f, -2.31428576f
 );
 
 /* Round 19: thread t adds w19[t] * term(plane | j << 16 = pj19[t], k | l << 16 = kl19[t]). */
-var<private> ptp_3x3_pj19: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj19: array<u32, 16> = array<u32, 16>(
     0x5001bu, 0x5001cu, 0x60023u, 0x60024u, 0x20013u, 0x20017u, 0x40028u, 0x7002fu,
     0x10022u, 0x40025u, 0x5002bu, 0x5002cu, 0x00012u, 0x00015u, 0x0002au, 0x1002du
 );
-var<private> ptp_3x3_kl19: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl19: array<u32, 16> = array<u32, 16>(
     0x90006u, 0x90007u, 0xa0008u, 0xa0009u, 0x80006u, 0xb0007u, 0xc0009u, 0xf000au,
     0xe0008u, 0xf0007u, 0xe0009u, 0xd000bu, 0xe0001u, 0xf0003u, 0xf000cu, 0xf000eu
 );
-var<private> ptp_3x3_w19: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w19: array<f32, 16> = array<f32, 16>(
     -0.595102012f, -0.396734685f, 0.396734685f, 0.595102012f, -0.220408157f, -1.28571427f, -2.57142854f, 2.57142854f,
     0.183673471f, -0.0734693855f, 0.330612242f, -0.440816313f, -0.0612244904f, -0.0204081628f, 0.0204081628f, 0.0612244904f
 );
 
 /* Round 20: thread t adds w20[t] * term(plane | j << 16 = pj20[t], k | l << 16 = kl20[t]). */
-var<private> ptp_3x3_pj20: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj20: array<u32, 16> = array<u32, 16>(
     0x5001bu, 0x6001cu, 0x70023u, 0x70024u, 0x30013u, 0x30017u, 0x50028u, 0x7002fu,
     0x10022u, 0x50025u, 0x5002bu, 0x6002cu, 0x00012u, 0x00015u, 0x0002au, 0x2002du
 );
-var<private> ptp_3x3_kl20: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl20: array<u32, 16> = array<u32, 16>(
     0x80007u, 0x80007u, 0x90008u, 0xa0008u, 0x90004u, 0xb0006u, 0xc0008u, 0xe000bu,
     0xc000au, 0xf0006u, 0xd000au, 0xf0008u, 0xd0002u, 0xb0007u, 0xe000du, 0xf000du
 );
-var<private> ptp_3x3_w20: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w20: array<f32, 16> = array<f32, 16>(
     -0.1322449f, -0.0661224499f, 0.0661224499f, 0.1322449f, 0.146938771f, 2.57142854f, 1.28571427f, -1.28571427f,
     -0.183673471f, -0.220408157f, -0.661224484f, 0.183673471f, -0.122448981f, -0.0612244904f, 0.0612244904f, 0.122448981f
 );
 
 /* Round 21: thread t adds w21[t] * term(plane | j << 16 = pj21[t], k | l << 16 = kl21[t]). */
-var<private> ptp_3x3_pj21: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj21: array<u32, 16> = array<u32, 16>(
     0x00029u, 0x2002eu, 0x40032u, 0x50035u, 0x30013u, 0x30017u, 0x40033u, 0x40034u,
     0x20022u, 0x50025u, 0x5002bu, 0x6002cu, 0x00012u, 0x10015u, 0x1002au, 0x3002du
 );
-var<private> ptp_3x3_kl21: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl21: array<u32, 16> = array<u32, 16>(
     0xe000cu, 0xf000eu, 0xf000cu, 0xf000eu, 0x80005u, 0xa0007u, 0xf000du, 0xf000eu,
     0xd0008u, 0xe0007u, 0xc000bu, 0xe0009u, 0xc0003u, 0xf0002u, 0xe000cu, 0xf000cu
 );
-var<private> ptp_3x3_w21: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w21: array<f32, 16> = array<f32, 16>(
     0.122448981f, 0.183673471f, 0.122448981f, 0.367346942f, 0.0367346928f, -1.28571427f, 0.146938771f, 0.0734693855f,
     0.146938771f, -0.440816313f, -0.183673471f, 0.661224484f, -0.0204081628f, -0.0612244904f, 0.122448981f, 0.0204081628f
 );
 
 /* Round 22: thread t adds w22[t] * term(plane | j << 16 = pj22[t], k | l << 16 = kl22[t]). */
-var<private> ptp_3x3_pj22: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj22: array<u32, 16> = array<u32, 16>(
     0x10029u, 0x3002eu, 0x40032u, 0x60035u, 0x00021u, 0x10026u, 0x50033u, 0x50034u,
     0x20022u, 0x50025u, 0x6002bu, 0x6002cu, 0x00012u, 0x10015u, 0x2002au, 0x3002du
 );
-var<private> ptp_3x3_kl22: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl22: array<u32, 16> = array<u32, 16>(
     0xd000cu, 0xf000du, 0xe000du, 0xf000du, 0xe0008u, 0xf000bu, 0xf000cu, 0xf000du,
     0xc0009u, 0xb000au, 0xe0008u, 0xd000au, 0xb0004u, 0xe0003u, 0xd000cu, 0xe000du
 );
-var<private> ptp_3x3_w22: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w22: array<f32, 16> = array<f32, 16>(
     0.183673471f, 0.122448981f, 0.367346942f, 0.734693885f, 0.146938771f, -0.0734693855f, 0.220408157f, 0.440816313f,
     -0.0367346928f, 0.330612242f, 0.440816313f, -0.330612242f, 0.0612244904f, -0.122448981f, 0.0612244904f, 0.0612244904f
 );
 
 /* Round 23: thread t adds w23[t] * term(plane | j << 16 = pj23[t], k | l << 16 = kl23[t]). */
-var<private> ptp_3x3_pj23: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj23: array<u32, 16> = array<u32, 16>(
     0x40029u, 0x5002eu, 0x50032u, 0x70035u, 0x00021u, 0x20026u, 0x50033u, 0x60034u,
     0x30022u, 0x60025u, 0x6002bu, 0x6002cu, 0x00012u, 0x10015u, 0x4002au, 0x4002du
 );
-var<private> ptp_3x3_kl23: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl23: array<u32, 16> = array<u32, 16>(
     0xe0008u, 0xf000bu, 0xe000cu, 0xf000cu, 0xd0009u, 0xf000au, 0xe000du, 0xf000cu,
     0xc0008u, 0xd0007u, 0xd0009u, 0xc000bu, 0x90006u, 0xa0007u, 0xf0008u, 0xf000bu
 );
-var<private> ptp_3x3_w23: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w23: array<f32, 16> = array<f32, 16>(
     0.367346942f, -0.367346942f, 0.734693885f, 0.122448981f, -0.110204078f, 0.220408157f, 0.661224484f, 0.220408157f,
     0.0122448979f, -0.220408157f, 0.330612242f, -0.146938771f, -0.551020384f, -0.551020384f, 0.0612244904f, -0.0612244904f
 );
 
 /* Round 24: thread t adds w24[t] * term(plane | j << 16 = pj24[t], k | l << 16 = kl24[t]). */
-var<private> ptp_3x3_pj24: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj24: array<u32, 16> = array<u32, 16>(
     0x40029u, 0x6002eu, 0x60032u, 0x70035u, 0x00021u, 0x20026u, 0x60033u, 0x60034u,
     0x40022u, 0x60025u, 0x6002bu, 0x7002cu, 0x00012u, 0x20015u, 0x4002au, 0x5002du
 );
-var<private> ptp_3x3_kl24: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl24: array<u32, 16> = array<u32, 16>(
     0xd0009u, 0xf000au, 0xd000cu, 0xe000du, 0xc000au, 0xe000bu, 0xe000cu, 0xe000du,
     0xe0005u, 0xb0009u, 0xc000au, 0xe0008u, 0x80007u, 0xd0003u, 0xd000au, 0xe000bu
 );
-var<private> ptp_3x3_w24: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w24: array<f32, 16> = array<f32, 16>(
     -0.551020384f, 0.551020384f, 0.367346942f, 0.367346942f, -0.220408157f, -0.330612242f, 0.440816313f, 0.661224484f,
     -0.220408157f, 0.661224484f, -0.220408157f, 0.183673471f, -0.122448981f, -0.0612244904f, -0.551020384f, -0.551020384f
 );
 
 /* Round 25: thread t adds w25[t] * term(plane | j << 16 = pj25[t], k | l << 16 = kl25[t]). */
-var<private> ptp_3x3_pj25: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj25: array<u32, 16> = array<u32, 16>(
     0x40029u, 0x6002eu, 0x80032u, 0x80035u, 0x10021u, 0x30026u, 0x70033u, 0x70034u,
     0x40022u, 0x70025u, 0x7002bu, 0x7002cu, 0x10012u, 0x20015u, 0x4002au, 0x6002du
 );
-var<private> ptp_3x3_kl25: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl25: array<u32, 16> = array<u32, 16>(
     0xc000au, 0xe000bu, 0xe0009u, 0xf000bu, 0xd0008u, 0xf0009u, 0xd000cu, 0xe000cu,
     0xd0006u, 0xb0008u, 0xd0008u, 0xd0009u, 0xc0002u, 0xb0005u, 0xc000bu, 0xf0009u
 );
-var<private> ptp_3x3_w25: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w25: array<f32, 16> = array<f32, 16>(
     -0.734693885f, -1.10204077f, -0.551020384f, -0.183673471f, 0.330612242f, 0.220408157f, 0.0734693855f, 0.146938771f,
     -0.440816313f, 0.110204078f, 0.146938771f, 0.220408157f, -0.0612244904f, 0.551020384f, -0.122448981f, 0.551020384f
 );
 
 /* Round 26: thread t adds w26[t] * term(plane | j << 16 = pj26[t], k | l << 16 = kl26[t]). */
-var<private> ptp_3x3_pj26: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj26: array<u32, 16> = array<u32, 16>(
     0x50029u, 0x7002eu, 0x80032u, 0x90035u, 0x10021u, 0x30026u, 0x80033u, 0x80034u,
     0x40022u, 0x70025u, 0x7002bu, 0x7002cu, 0x10012u, 0x20015u, 0x5002au, 0x6002du
 );
-var<private> ptp_3x3_kl26: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl26: array<u32, 16> = array<u32, 16>(
     0xd0008u, 0xf0009u, 0xd000au, 0xf000au, 0xc0009u, 0xe000au, 0xf0009u, 0xf000au,
     0xc0007u, 0xa0009u, 0xc0009u, 0xc000au, 0xa0004u, 0x90007u, 0xe0008u, 0xd000bu
 );
-var<private> ptp_3x3_w26: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w26: array<f32, 16> = array<f32, 16>(
     1.10204077f, 0.734693885f, -1.10204077f, -0.551020384f, -0.220408157f, 0.110204078f, -0.110204078f, -0.220408157f,
     -0.0734693855f, 0.330612242f, 0.0367346928f, -0.0367346928f, 0.551020384f, -0.551020384f, 0.551020384f, -0.551020384f
 );
 
 /* Round 27: thread t adds w27[t] * term(plane | j << 16 = pj27[t], k | l << 16 = kl27[t]). */
-var<private> ptp_3x3_pj27: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj27: array<u32, 16> = array<u32, 16>(
     0x50029u, 0x7002eu, 0x80032u, 0x90035u, 0x20021u, 0x30026u, 0x80033u, 0x80034u,
     0x40022u, 0x20027u, 0x8003bu, 0x8003cu, 0x10012u, 0x30015u, 0x5002au, 0x7002du
 );
-var<private> ptp_3x3_kl27: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl27: array<u32, 16> = array<u32, 16>(
     0xc0009u, 0xe000au, 0xc000bu, 0xe000bu, 0xc0008u, 0xd000bu, 0xe000au, 0xe000bu,
     0xb0008u, 0xf000bu, 0xf000du, 0xf000eu, 0x80006u, 0xb0004u, 0xc000au, 0xf0008u
 );
-var<private> ptp_3x3_w27: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w27: array<f32, 16> = array<f32, 16>(
     -0.551020384f, 0.551020384f, -0.183673471f, -1.10204077f, 0.0734693855f, -0.146938771f, -0.661224484f, -0.330612242f,
     0.110204078f, -0.257142872f, 0.514285743f, 0.257142872f, -0.551020384f, 0.122448981f, -0.551020384f, 0.122448981f
 );
 
 /* Round 28: thread t adds w28[t] * term(plane | j << 16 = pj28[t], k | l << 16 = kl28[t]). */
-var<private> ptp_3x3_pj28: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj28: array<u32, 16> = array<u32, 16>(
     0x60029u, 0x7002eu, 0x90032u, 0xa0035u, 0x40021u, 0x50026u, 0x80033u, 0x90034u,
     0x40022u, 0x30027u, 0x9003bu, 0x9003cu, 0x20012u, 0x30015u, 0x6002au, 0x7002du
 );
-var<private> ptp_3x3_kl28: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl28: array<u32, 16> = array<u32, 16>(
     0xc0008u, 0xd000bu, 0xc000au, 0xd000bu, 0xd0005u, 0xf0007u, 0xd000bu, 0xe000au,
     0xa0009u, 0xf000au, 0xf000cu, 0xf000du, 0x90004u, 0xa0005u, 0xd0008u, 0xe0009u
 );
-var<private> ptp_3x3_w28: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w28: array<f32, 16> = array<f32, 16>(
     0.367346942f, -0.367346942f, -0.551020384f, -0.551020384f, -0.661224484f, -0.440816313f, -0.330612242f, -0.991836727f,
     0.330612242f, 0.771428585f, 0.771428585f, 1.54285717f, 0.551020384f, 0.551020384f, 0.551020384f, 0.551020384f
 );
 
 /* Round 29: thread t adds w29[t] * term(plane | j << 16 = pj29[t], k | l << 16 = kl29[t]). */
-var<private> ptp_3x3_pj29: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj29: array<u32, 16> = array<u32, 16>(
     0x40031u, 0x60036u, 0x8003au, 0x9003du, 0x40021u, 0x60026u, 0x90033u, 0x90034u,
     0x50022u, 0x30027u, 0x9003bu, 0xa003cu, 0x30012u, 0x30015u, 0x7002au, 0x7002du
 );
-var<private> ptp_3x3_kl29: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl29: array<u32, 16> = array<u32, 16>(
     0xe000cu, 0xf000eu, 0xf000cu, 0xf000eu, 0xc0006u, 0xe0007u, 0xd000au, 0xd000bu,
     0xc0006u, 0xe000bu, 0xe000du, 0xf000cu, 0x80004u, 0x80007u, 0xc0008u, 0xc000bu
 );
-var<private> ptp_3x3_w29: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w29: array<f32, 16> = array<f32, 16>(
     0.734693885f, 1.10204077f, 0.428571433f, 1.28571427f, -0.440816313f, -0.661224484f, -0.991836727f, -0.661224484f,
     -0.220408157f, -0.514285743f, 2.31428576f, 0.771428585f, 0.0612244904f, -0.0612244904f, 0.0612244904f, -0.0612244904f
 );
 
 /* Round 30: thread t adds w30[t] * term(plane | j << 16 = pj30[t], k | l << 16 = kl30[t]). */
-var<private> ptp_3x3_pj30: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj30: array<u32, 16> = array<u32, 16>(
     0x50031u, 0x70036u, 0x8003au, 0xa003du, 0x40021u, 0x60026u, 0x90033u, 0xa0034u,
     0x50022u, 0x60027u, 0xa003bu, 0xa003cu, 0x40030u, 0x70037u, 0x80039u, 0xa003eu
 );
-var<private> ptp_3x3_kl30: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl30: array<u32, 16> = array<u32, 16>(
     0xd000cu, 0xf000du, 0xe000du, 0xf000du, 0xa0008u, 0xb000au, 0xc000bu, 0xc000bu,
     0xa0008u, 0xf0007u, 0xe000cu, 0xe000du, 0xd000cu, 0xf000eu, 0xe000cu, 0xf000eu
 );
-var<private> ptp_3x3_w30: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w30: array<f32, 16> = array<f32, 16>(
     1.10204077f, 0.734693885f, 1.28571427f, 2.57142854f, 0.661224484f, 0.991836727f, -0.220408157f, -0.110204078f,
     0.661224484f, -1.54285717f, 1.54285717f, 2.31428576f, 2.57142854f, 2.57142854f, 2.57142854f, 3.85714293f
 );
 
 /* Round 31: thread t adds w31[t] * term(plane | j << 16 = pj31[t], k | l << 16 = kl31[t]). */
-var<private> ptp_3x3_pj31: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj31: array<u32, 16> = array<u32, 16>(
     0x80031u, 0x90036u, 0x9003au, 0xb003du, 0x50021u, 0x70026u, 0x80038u, 0xb003fu,
     0x60022u, 0x70027u, 0xb003bu, 0xb003cu, 0x80030u, 0xa0037u, 0x90039u, 0xb003eu
 );
-var<private> ptp_3x3_kl31: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl31: array<u32, 16> = array<u32, 16>(
     0xd0009u, 0xf000bu, 0xe000cu, 0xf000cu, 0x90008u, 0xb0009u, 0xd000cu, 0xf000eu,
     0x90008u, 0xb000au, 0xd000cu, 0xe000cu, 0xc0009u, 0xf000bu, 0xd000cu, 0xf000du
 );
-var<private> ptp_3x3_w31: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w31: array<f32, 16> = array<f32, 16>(
     -1.65306127f, -1.10204077f, 2.57142854f, 0.428571433f, 0.991836727f, 0.661224484f, 9.0f, 9.0f,
     0.330612242f, 2.31428576f, 0.257142872f, 0.514285743f, -3.85714293f, -3.85714293f, 3.85714293f, 2.57142854f
 );
 
 /* Round 32: thread t adds w32[t] * term(plane | j << 16 = pj32[t], k | l << 16 = kl32[t]). */
-var<private> ptp_3x3_pj32: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_pj32: array<u32, 16> = array<u32, 16>(
     0x80031u, 0xa0036u, 0xa003au, 0xb003du, 0x00000u, 0x00007u, 0x0001au, 0x0001du,
     0x00001u, 0x00006u, 0x00008u, 0x0000fu, 0x00002u, 0x00004u, 0x00009u, 0x0000eu
 );
-var<private> ptp_3x3_kl32: array<u32, 16> = array<u32, 16>(
+const ptp_3x3_kl32: array<u32, 16> = array<u32, 16>(
     0xc000au, 0xe000bu, 0xd000cu, 0xe000du, 0x00000u, 0x00000u, 0x00000u, 0x00000u,
     0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u
 );
-var<private> ptp_3x3_w32: array<f32, 16> = array<f32, 16>(
+const ptp_3x3_w32: array<f32, 16> = array<f32, 16>(
     -1.10204077f, -1.65306127f, 1.28571427f, 1.28571427f, 0.0f, 0.0f, 0.0f, 0.0f,
     0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f
 );
