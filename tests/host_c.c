@@ -1,7 +1,14 @@
 /* host_c.c: runs an emitted C header (--target c) over patch sets and checks it with kref.
- * Built per header: cc -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix> -DUPFX=<PREFIX> ... */
+ * Built per header: cc -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix> -DUPFX=<PREFIX> ...
+ * C and C++ alike (c++ -x c++ host_c.c -x none libptptest.a): the header is used from both. */
 #include "check.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
 #include "kref.h"
+#ifdef __cplusplus
+}
+#endif
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,13 +25,15 @@ static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_resul
                    kref_result *res_batch, kref_result *res_planes)
 {
     size_t p, L = (size_t)ref->L;
-    unsigned *cls = malloc(s->count * sizeof *cls);
-    unsigned char *batch = malloc(s->count), *soa_cls = malloc(s->count);
+    unsigned *cls = (unsigned *)malloc(s->count * sizeof *cls);
+    unsigned char *batch = (unsigned char *)malloc(s->count);
+    unsigned char *soa_cls = (unsigned char *)malloc(s->count);
     /* the SoA copy, at a stride that is not the count (nor a power of two) */
     size_t stride = s->count + 3, k;
-    float *soa = malloc((size_t)ref->K * 4 * stride * sizeof *soa);
-    float *d = malloc(s->count * L * sizeof *d), *dp = malloc(s->count * L * sizeof *dp);
-    float(*t)[4] = malloc(L * sizeof *t);
+    float *soa = (float *)malloc((size_t)ref->K * 4 * stride * sizeof *soa);
+    float *d = (float *)malloc(s->count * L * sizeof *d);
+    float *dp = (float *)malloc(s->count * L * sizeof *dp);
+    float(*t)[4] = (float(*)[4])malloc(L * sizeof *t);
     int paths_differ = 0;
     for (p = 0; p < s->count; p++) {
         const float(*cp)[4] = (const float(*)[4])s->cp + p * (size_t)ref->K;

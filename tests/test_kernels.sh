@@ -251,6 +251,52 @@ for cc in gcc clang; do
         notok "C headers of two degrees in one program ($cc)" "$(grep -m1 error "$tmp/err")"
 done
 
+# C++: bicubic headers (clip, world, certified, refine 2) with their implementations compile as
+# C++11 to C++20 with g++ and clang++, -pedantic -Werror, and the hosts (C and C++ alike) pass
+# at C++11 and C++20; -ffast-math and its parts are refused by #error saying why.
+for cfg in "clip" "world" "clip --certified" "world --refine 2"; do
+    set -- $cfg
+    space=$1 host=host_c cflag=""
+    shift
+    case "$*" in *refine*) host=host_refine ;; *certified*) cflag=--certified ;; esac
+    "$P" --degree 3 --target c --space $space "$@" --prefix ptp_3x3_ -o "$tmp/x.h" || notok "c++ 3x3 $cfg" "ptpgen failed"
+    for cxx in g++ clang++; do
+        command -v $cxx >/dev/null || { missing $cxx "C++ builds of the C header"; continue; }
+        cc=gcc
+        [ $cxx = clang++ ] && cc=clang
+        for std in c++11 c++14 c++17 c++20; do
+            if ! $cxx -std=$std -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/x.h" \
+                -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ -x c++ tests/$host.c -x none \
+                "build/$cc/libptptest.a" -lm -o "$tmp/host_cxx" 2>"$tmp/err"; then
+                notok "c++ 3x3 $cfg compiles with $cxx -std=$std" "$(grep -m3 error "$tmp/err")"
+            elif [ $std = c++11 ] || [ $std = c++20 ]; then
+                run_host "c++ 3x3 $cfg ($cxx -std=$std)" "$tmp/host_cxx" --degree 3 3 --space $space \
+                    --rule strict $cflag --random 1 3000 23 --name "c++/$cxx -std=$std 3x3 $cfg"
+            else
+                ok "c++ 3x3 $cfg compiles with $cxx -std=$std -pedantic -Werror"
+            fi
+        done
+    done
+done
+"$P" --degree 3 --target c -o "$tmp/x.h"
+for cc in gcc clang g++ clang++; do
+    command -v $cc >/dev/null || continue
+    for flag in -ffast-math -ffinite-math-only "-fassociative-math -fno-signed-zeros -fno-trapping-math"; do
+        # clang defines no macro for -fassociative-math alone: only gcc's __ASSOCIATIVE_MATH__ is seen
+        [[ $cc == clang* && $flag == -fassoc* ]] && continue
+        lang=c
+        [[ $cc == *++ ]] && lang=c++
+        if printf '#define PTP_3X3_IMPLEMENTATION\n#include "x.h"\nint main(void) { return 0; }\n' |
+            $cc -x $lang $flag -I"$tmp" -c - -o "$tmp/fm.o" 2>"$tmp/err"; then
+            notok "c header refuses $cc $flag" "it compiled"
+        elif grep -q 'error.*do not compile this header.*-ffast-math.*NaN checks' "$tmp/err"; then
+            ok "c header refuses $cc $flag with #error saying why"
+        else
+            notok "c header refuses $cc $flag with its #error" "$(grep -m1 error "$tmp/err")"
+        fi
+    done
+done
+
 # Certified kernels (--certified) against exact classes. kref's --exact data are integer patches
 # built to sit on the edge between the classes (planar through the eye, the eye on a corner's
 # tangent plane, collapsed edges, +-1 noise), classified exactly in 128-bit integers. A

@@ -198,13 +198,14 @@ static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const c
                 px, up, px, px, info->refine);
 }
 
-/* Appends a constant double table NAME[n] (hex literals: exact). */
+/* Appends a constant double table NAME[n] (17 digits: each literal rounds back to its double;
+ * not hex, which C++ lacks before C++17). */
 static void put_double_table(sbuf *o, const char *px, const char *name, const double *v, int n)
 {
     int i;
     sbuf_printf(o, "static const double %s%s[%d] = {", px, name, n);
     for (i = 0; i < n; i++)
-        sbuf_printf(o, "%s%a", i == 0 ? "\n    " : i % 4 ? ", " : ",\n    ", v[i]);
+        sbuf_printf(o, "%s%.16e", i == 0 ? "\n    " : i % 4 ? ", " : ",\n    ", v[i]);
     sbuf_puts(o, "\n};\n");
 }
 
@@ -311,10 +312,10 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
                 "#if defined(__GNUC__) && !defined(__clang__)\n"
                 "__attribute__((noinline, noclone)) /* one copy: it is large */\n"
                 "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
-                "static void %slanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],\n"
-                "%*sunsigned char *restrict cls)\n{\n"
+                "static void %slanes(const float *%sRESTRICT soa, size_t stride, size_t n, const float eye[4],\n"
+                "%*sunsigned char *%sRESTRICT cls)\n{\n"
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
-                up, up, px, (int)strlen(px) + 18, "");
+                up, up, px, up, (int)strlen(px) + 18, "", up);
     if (world)
         sbuf_puts(o, "    const float e0 = eye[0], e1 = eye[1], e2 = eye[2], e3 = eye[3];\n");
     else
@@ -388,7 +389,7 @@ static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const ce
         sbuf_printf(o, "        const %svf R3 = R * R * R, ER3 = E * R3;\n"
                        "        const %svf F = (1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E);\n"
                        "        /* Patches too large for the bound (or NaN) are never certified. */\n"
-                       "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %af) == 0;\n",
+                       "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n",
                     px, px, (double)cb->q_max);
     }
 }
@@ -416,7 +417,7 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
         /* the masks: set by the first plane (certified: by the size guard), then or-ed */
         op = x->plane == p->terms[0].plane ? "=" : "|=";
         if (info->certified)
-            sbuf_printf(o, "        t = %af * ER3 + %af * F; /* the bound of plane %d */\n"
+            sbuf_printf(o, "        t = %.8ef * ER3 + %.8ef * F; /* the bound of plane %d */\n"
                            "        notlt |= (v < -t) == 0;\n        notgt |= (v > t) == 0;\n"
                            "        plt %s (v < 0.0f) == 0;\n        pgt %s (v > 0.0f) == 0;\n",
                         (double)cb->k[x->plane], (double)cb->k2[x->plane], x->plane, op, op);
@@ -624,7 +625,8 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     plain = *info;
     plain.sched = NULL; /* one thread per patch: no schedule */
     fmt_banner(&banner, t, &plain, file, "C99 single header (stb style)",
-                " * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.\n"
+                " * In exactly one C or C++ file, #define <PREFIX>IMPLEMENTATION before including this header.\n"
+                " * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).\n"
                 " * Headers of several degrees (prefixes) may be included in one program.\n");
     sbuf_printf(&tables, "\n#define %sTERMS %zu\n", up, t->nterms);
     out_c_arrays(&tables, t, NULL, info->prefix, count, NULL, 0);

@@ -11,7 +11,8 @@
  * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule strict: back iff every d_P < 0, front iff every d_P > 0.
  * A NaN value makes a patch silhouette. Values are at true scale (plane_scale 1).
  *
- * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * In exactly one C or C++ file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).
  * Headers of several degrees (prefixes) may be included in one program.
  */
 
@@ -57,6 +58,20 @@ void ptp_1x3_classify_soa(const float *soa, size_t stride, size_t patch_count, c
 
 #if defined(PTP_1X3_IMPLEMENTATION) && !defined(PTP_1X3_IMPLEMENTED)
 #define PTP_1X3_IMPLEMENTED
+/* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
+ * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
+    defined(__ASSOCIATIVE_MATH__)
+#error "ptp_1x3_: do not compile this header's implementation with -ffast-math, -ffinite-math-only or -fassociative-math: they drop the NaN checks and regroup the sums whose signs are the classes"
+#endif
+/* restrict: C99's, GNU C++'s and MSVC's __restrict, else nothing. */
+#if defined(__cplusplus) && (defined(__GNUC__) || defined(_MSC_VER))
+#define PTP_1X3_RESTRICT __restrict
+#elif !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define PTP_1X3_RESTRICT restrict
+#else
+#define PTP_1X3_RESTRICT
+#endif
 #if defined(__SSE2__) && !defined(PTP_1X3_NO_SSE)
 #include <emmintrin.h>
 #endif
@@ -286,8 +301,8 @@ __attribute__((noinline, noclone)) /* one copy: it is large */
 #elif defined(__clang__)
 __attribute__((noinline))
 #endif
-static void ptp_1x3_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *restrict cls)
+static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_1X3_RESTRICT cls)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF

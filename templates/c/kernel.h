@@ -41,6 +41,20 @@ void {{PREFIX}}classify_soa(const float *soa, size_t stride, size_t patch_count,
 
 #if defined({{UPREFIX}}IMPLEMENTATION) && !defined({{UPREFIX}}IMPLEMENTED)
 #define {{UPREFIX}}IMPLEMENTED
+/* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
+ * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
+    defined(__ASSOCIATIVE_MATH__)
+#error "{{PREFIX}}: do not compile this header's implementation with -ffast-math, -ffinite-math-only or -fassociative-math: they drop the NaN checks and regroup the sums whose signs are the classes"
+#endif
+/* restrict: C99's, GNU C++'s and MSVC's __restrict, else nothing. */
+#if defined(__cplusplus) && (defined(__GNUC__) || defined(_MSC_VER))
+#define {{UPREFIX}}RESTRICT __restrict
+#elif !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define {{UPREFIX}}RESTRICT restrict
+#else
+#define {{UPREFIX}}RESTRICT
+#endif
 #if defined(__SSE2__) && !defined({{UPREFIX}}NO_SSE)
 #include <emmintrin.h>
 #endif
