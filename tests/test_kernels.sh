@@ -41,10 +41,13 @@ files="json:.json $("$P" --list-targets | awk '$3 ~ /(^|,)space(,|$)/ { printf "
 
 # args_for TARGET DEGREE SPACE RULE FLAG...: the options of a configuration that TARGET takes
 # (ptpgen --list-targets refuses the others): json, read for its schedule, gets the degree alone.
-# RULE may be "" (the default).
+# RULE may be "" (the default). Targets that name things get the prefix ptp_NxM_ of the default
+# variant, which the hosts are built for (a variant's default prefix adds world_, certified_ ...).
 args_for() {
-    local a="--degree $2" opts f
+    local a="--degree $2" opts f d=$2
     opts=",$("$P" --list-targets | awk -v t="$1" '$1 == t { print $3 }'),"
+    [[ $d == *x* ]] || d=${d}x$d
+    [[ $opts == *,prefix,* ]] && a="$a --prefix ptp_${d}_"
     [[ $opts == *,space,* ]] && a="$a --space $3"
     [[ -n $4 && $opts == *,rule,* ]] && a="$a --rule $4"
     shift 4
@@ -204,7 +207,7 @@ for variant in "clang -O3 -march=native" "clang -O3 -march=native -DPTP_3X3_NO_S
         echo "ok - c $variant # SKIP this CPU has no AVX2"
         continue
     } ;; esac
-    "$P" --degree $d --target c --space $space --rule $rule -o "$tmp/k.h" &&
+    "$P" --degree $d --target c --space $space --rule $rule --prefix ptp_${d}_ -o "$tmp/k.h" &&
         $variant -std=c11 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/k.h" \
             -DPTP_${n}X${n}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${n}_ tests/host_c.c \
             build/$cc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
@@ -249,6 +252,57 @@ for cc in gcc clang; do
     $cc -std=c99 -Wall -Wextra -pedantic -Werror -I"$tmp" "$tmp/multi.c" -o "$tmp/multi" 2>"$tmp/err" && "$tmp/multi" &&
         ok "C headers of two degrees (one with --prefix cull_), one included twice, in one program ($cc)" ||
         notok "C headers of two degrees in one program ($cc)" "$(grep -m1 error "$tmp/err")"
+done
+
+# Variants side by side: the bicubic clip, world and certified C headers and the table header,
+# under their default names (ptp_3x3_, ptp_3x3_world_, ptp_3x3_certified_, ptp_3x3_ table), in one
+# translation unit with every implementation, as C and C++; each records its variant in macros.
+# The patch (3i, 3j, 0, 1) has dB/du x dB/dv along +z: front for an eye above it (w > 0), back
+# below, and back above when the eye's w is negative (the negated eye).
+"$P" --degree 3 --target c -o "$tmp/ptp_3x3.h" && "$P" --degree 3 --target c --space world -o "$tmp/ptp_3x3_world.h" &&
+    "$P" --degree 3 --target c --certified -o "$tmp/ptp_3x3_certified.h" &&
+    "$P" --degree 3 --target table -o "$tmp/ptp_3x3_table.h" || notok "variant headers" "ptpgen failed"
+cat >"$tmp/variants.c" <<'C'
+#define PTP_3X3_IMPLEMENTATION
+#define PTP_3X3_WORLD_IMPLEMENTATION
+#define PTP_3X3_CERTIFIED_IMPLEMENTATION
+#include "ptp_3x3.h"
+#include "ptp_3x3_world.h"
+#include "ptp_3x3_certified.h"
+#include "ptp_3x3_table.h"
+#if !(PTP_3X3_SPACE_CLIP && PTP_3X3_RULE_STRICT && !PTP_3X3_CERTIFIED && PTP_3X3_REFINE == 0 &&         \
+      PTP_3X3_WORLD_SPACE_WORLD && PTP_3X3_WORLD_DEGREE_U == 3 && PTP_3X3_WORLD_DEGREE_V == 3 &&         \
+      PTP_3X3_CERTIFIED_CERTIFIED == 1 && PTP_3X3_CERTIFIED_SPACE_CLIP && PTP_3X3_TERMS == 516) ||       \
+    defined(PTP_3X3_SPACE_WORLD) || defined(PTP_3X3_WORLD_SPACE_CLIP) || defined(PTP_3X3_RULE_DEGENERATE)
+#error "the variant macros"
+#endif
+int main(void)
+{
+    static float cp[16][4];
+    const float up[4] = {0, 0, 1, 0}, above[4] = {1, 1, 5, 1}, below[4] = {1, 1, -5, 1};
+    const float negw[4] = {-1, -1, -5, -1}; /* the point (1, 1, 5) with w = -1 */
+    float d[64];
+    int k, ok;
+    for (k = 0; k < 16; k++) {
+        cp[k][0] = (float)(3 * (k / 4));
+        cp[k][1] = (float)(3 * (k % 4));
+        cp[k][3] = 1;
+    }
+    ptp_3x3_values((const float (*)[4])cp, up, d);
+    ok = ptp_3x3_classify((const float (*)[4])cp, up) == PTP_3X3_FRONT && d[0] > 0 &&
+         ptp_3x3_certified_classify((const float (*)[4])cp, up) == PTP_3X3_CERTIFIED_FRONT &&
+         ptp_3x3_world_classify((const float (*)[4])cp, above) == PTP_3X3_WORLD_FRONT &&
+         ptp_3x3_world_classify((const float (*)[4])cp, below) == PTP_3X3_WORLD_BACK &&
+         ptp_3x3_world_classify((const float (*)[4])cp, negw) == PTP_3X3_WORLD_BACK &&
+         ptp_3x3_idx[0][0] == 0;
+    return !ok;
+}
+C
+for cc in "gcc -std=c99" "clang -std=c99" "g++ -std=c++11 -x c++" "clang++ -std=c++11 -x c++"; do
+    command -v ${cc%% *} >/dev/null || continue
+    $cc -Wall -Wextra -pedantic -Werror -I"$tmp" "$tmp/variants.c" -o "$tmp/variants" 2>"$tmp/err" && "$tmp/variants" &&
+        ok "bicubic clip, world, certified and table headers in one program, default names, orientation ($cc)" ||
+        notok "bicubic clip, world, certified and table headers in one program ($cc)" "$(grep -m2 error "$tmp/err")"
 done
 
 # C++: bicubic headers (clip, world, certified, refine 2) with their implementations compile as
@@ -397,7 +451,7 @@ for space in clip world; do
 done
 # The exact check can fail: a certified header whose bounds are 2^10 times too small must be
 # caught calling patches back or front that are not.
-"$P" --degree 3 --space clip --certified --target c -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /' "$tmp/k.h"
+"$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /' "$tmp/k.h"
 if grep -q 'ER3 \* 0x1p-10f' "$tmp/k.h" &&
     gcc -std=c11 -O2 -Igen -Itests -include "$tmp/k.h" -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ \
         tests/host_c.c build/gcc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&

@@ -52,9 +52,9 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
                 "        t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;\n"
                 "    for (x = 0; x < %sTERMS; x++) {\n"
                 "        float r[4];\n"
-                "        %scross4(r, cp[%sidx[x][1]], cp[%sidx[x][2]], cp[%sidx[x][3]]);\n"
+                "        %scross4(r, cp[%sterm_idx[x][1]], cp[%sterm_idx[x][2]], cp[%sterm_idx[x][3]]);\n"
                 "        for (c = 0; c < 4; c++)\n"
-                "            t[%sidx[x][0]][c] += %swgt[x] * r[c];\n"
+                "            t[%sterm_idx[x][0]][c] += %sterm_wgt[x] * r[c];\n"
                 "    }\n}\n\n",
                 px, up, up, px, px, px, px, px, px);
     sbuf_printf(o, "void %svalues(const float cp[][4], const float eye[4], float d[])\n{\n"
@@ -63,14 +63,14 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
                    "        d[x] = 0.0f;\n"
                    "    for (x = 0; x < %sTERMS; x++) {\n"
                    "        float r[4];\n"
-                   "        %scross4(r, cp[%sidx[x][1]], cp[%sidx[x][2]], cp[%sidx[x][3]]);\n",
+                   "        %scross4(r, cp[%sterm_idx[x][1]], cp[%sterm_idx[x][2]], cp[%sterm_idx[x][3]]);\n",
                 px, up, up, px, px, px, px);
     if (info->space == OUT_CLIP)
-        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt[x] * r[2];\n    }\n"
+        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %sterm_wgt[x] * r[2];\n    }\n"
                        "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n}\n\n",
                     px, px, up);
     else
-        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt[x] * (eye[0] * r[0] + eye[1] * r[1] + eye[2] * r[2] + eye[3] * r[3]);\n"
+        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %sterm_wgt[x] * (eye[0] * r[0] + eye[1] * r[1] + eye[2] * r[2] + eye[3] * r[3]);\n"
                        "    }\n}\n\n",
                     px, px);
 }
@@ -243,12 +243,12 @@ static void put_terms64(sbuf *o, int world, const char *px, const char *up)
             put_cross4_component(o, k, "(double)", 15);
             sbuf_puts(o, ";\n");
         }
-        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt64[x] * ((double)eye[0] * r[0] + (double)eye[1] * r[1] +\n"
+        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %swgt64[x] * ((double)eye[0] * r[0] + (double)eye[1] * r[1] +\n"
                        "                                        (double)eye[2] * r[2] + (double)eye[3] * r[3]);\n"
                        "    }\n",
                     px, px);
     } else {
-        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt64[x] * (", px, px);
+        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %swgt64[x] * (", px, px);
         put_cross4_component(o, 2, "(double)", 40);
         sbuf_printf(o, ");\n    }\n"
                        "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n",
@@ -282,7 +282,7 @@ static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const
                 "    ER3 = E * (R * R * R);\n"
                 "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
                 "    for (x = 0; x < %sTERMS; x++) {\n"
-                "        const float *a = cp[%sidx[x][1]], *b = cp[%sidx[x][2]], *c = cp[%sidx[x][3]];\n",
+                "        const float *a = cp[%sterm_idx[x][1]], *b = cp[%sterm_idx[x][2]], *c = cp[%sterm_idx[x][3]];\n",
                 px, up, up, up, world ? "1" : "k != 2", up, world ? "1" : "k == 2", up, up, px, px, px);
     put_terms64(o, world, px, up);
     sbuf_printf(o,
@@ -607,12 +607,23 @@ static int put_code(sbuf *o, char *flops, const tp_table *t, const out_info *inf
     return st;
 }
 
+/* The macros that record the header's variant (the options it was generated with). */
+static void put_variant(sbuf *o, const tp_table *t, const out_info *info, const char *up)
+{
+    sbuf_printf(o, "#define %sDEGREE_U %d\n#define %sDEGREE_V %d\n"
+                   "#define %sSPACE_%s 1\n#define %sRULE_%s 1\n"
+                   "#define %sCERTIFIED %d\n#define %sREFINE %d\n",
+                up, t->dom.n, up, t->dom.m, up, info->space == OUT_WORLD ? "WORLD" : "CLIP", up,
+                info->rule == OUT_DEGENERATE ? "DEGENERATE" : "STRICT", up, info->certified != 0,
+                up, info->refine);
+}
+
 int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    sbuf banner, tables, funcs;
+    sbuf banner, tables, funcs, variant;
     out_info plain;
-    char up[64], file[96], points[16], planes[16], count[80], flops[24];
-    tpl_slot slots[9];
+    char up[64], file[96], points[16], planes[16], count[80], flops[24], name[80];
+    tpl_slot slots[10];
     int st;
     fmt_upper(up, sizeof up, info->prefix);
     fmt_file_name(file, sizeof file, info->prefix, ".h");
@@ -622,6 +633,8 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     sbuf_init(&banner);
     sbuf_init(&tables);
     sbuf_init(&funcs);
+    sbuf_init(&variant);
+    put_variant(&variant, t, info, up);
     plain = *info;
     plain.sched = NULL; /* one thread per patch: no schedule */
     fmt_banner(&banner, t, &plain, file, "C99 single header (stb style)",
@@ -629,13 +642,16 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
                 " * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).\n"
                 " * Headers of several degrees (prefixes) may be included in one program.\n");
     sbuf_printf(&tables, "\n#define %sTERMS %zu\n", up, t->nterms);
-    out_c_arrays(&tables, t, NULL, info->prefix, count, NULL, 0);
+    /* <prefix>term_idx and term_wgt: not the table target's names, so both headers go together */
+    snprintf(name, sizeof name, "%sterm_", info->prefix);
+    out_c_arrays(&tables, t, NULL, name, count, NULL, 0);
     put_functions(&funcs, info, up);
     st = put_code(&funcs, flops, t, info, up, err);
     if (st) {
         sbuf_clear(&banner);
         sbuf_clear(&tables);
         sbuf_clear(&funcs);
+        sbuf_clear(&variant);
         return st;
     }
     slots[0] = (tpl_slot){"BANNER", banner.s};
@@ -648,11 +664,13 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     slots[6] = (tpl_slot){"TABLES", tables.s};
     slots[7] = (tpl_slot){"FUNCTIONS", funcs.s};
     slots[8] = (tpl_slot){"FLOPS", flops};
-    st = banner.failed || tables.failed || funcs.failed
+    slots[9] = (tpl_slot){"VARIANT", variant.s};
+    st = banner.failed || tables.failed || funcs.failed || variant.failed
              ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
-             : tpl_fill(o, "c/kernel.h", slots, 9, err);
+             : tpl_fill(o, "c/kernel.h", slots, 10, err);
     sbuf_clear(&banner);
     sbuf_clear(&tables);
     sbuf_clear(&funcs);
+    sbuf_clear(&variant);
     return st;
 }

@@ -25,6 +25,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_1X1_DEGREE_U 1
+#define PTP_1X1_DEGREE_V 1
+#define PTP_1X1_SPACE_CLIP 1
+#define PTP_1X1_RULE_STRICT 1
+#define PTP_1X1_CERTIFIED 0
+#define PTP_1X1_REFINE 0
 #define PTP_1X1_POINTS 4
 #define PTP_1X1_PLANES 4
 #define PTP_1X1_FRONT 0u
@@ -132,14 +141,14 @@ static inline ptp_1x1_vf ptp_1x1_vabsmax(ptp_1x1_vf r, ptp_1x1_vf x)
 
 #define PTP_1X1_TERMS 4
 
-static const unsigned short ptp_1x1_idx[PTP_1X1_TERMS][4] = {
+static const unsigned short ptp_1x1_term_idx[PTP_1X1_TERMS][4] = {
     {0, 0, 1, 2},
     {1, 0, 1, 3},
     {2, 0, 2, 3},
     {3, 1, 2, 3},
 };
 
-static const float ptp_1x1_wgt[PTP_1X1_TERMS] = {
+static const float ptp_1x1_term_wgt[PTP_1X1_TERMS] = {
     -1.0f,           /* -1 */
     -1.0f,           /* -1 */
     1.0f,            /* 1 */
@@ -181,9 +190,9 @@ void ptp_1x1_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_1X1_TERMS; x++) {
         float r[4];
-        ptp_1x1_cross4(r, cp[ptp_1x1_idx[x][1]], cp[ptp_1x1_idx[x][2]], cp[ptp_1x1_idx[x][3]]);
+        ptp_1x1_cross4(r, cp[ptp_1x1_term_idx[x][1]], cp[ptp_1x1_term_idx[x][2]], cp[ptp_1x1_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_1x1_idx[x][0]][c] += ptp_1x1_wgt[x] * r[c];
+            t[ptp_1x1_term_idx[x][0]][c] += ptp_1x1_term_wgt[x] * r[c];
     }
 }
 
@@ -194,8 +203,8 @@ void ptp_1x1_values(const float cp[][4], const float eye[4], float d[])
         d[x] = 0.0f;
     for (x = 0; x < PTP_1X1_TERMS; x++) {
         float r[4];
-        ptp_1x1_cross4(r, cp[ptp_1x1_idx[x][1]], cp[ptp_1x1_idx[x][2]], cp[ptp_1x1_idx[x][3]]);
-        d[ptp_1x1_idx[x][0]] += ptp_1x1_wgt[x] * r[2];
+        ptp_1x1_cross4(r, cp[ptp_1x1_term_idx[x][1]], cp[ptp_1x1_term_idx[x][2]], cp[ptp_1x1_term_idx[x][3]]);
+        d[ptp_1x1_term_idx[x][0]] += ptp_1x1_term_wgt[x] * r[2];
     }
     for (x = 0; x < PTP_1X1_PLANES; x++)
         d[x] *= eye[2];

@@ -25,6 +25,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_1X3_DEGREE_U 1
+#define PTP_1X3_DEGREE_V 3
+#define PTP_1X3_SPACE_CLIP 1
+#define PTP_1X3_RULE_STRICT 1
+#define PTP_1X3_CERTIFIED 0
+#define PTP_1X3_REFINE 0
 #define PTP_1X3_POINTS 8
 #define PTP_1X3_PLANES 16
 #define PTP_1X3_FRONT 0u
@@ -132,7 +141,7 @@ static inline ptp_1x3_vf ptp_1x3_vabsmax(ptp_1x3_vf r, ptp_1x3_vf x)
 
 #define PTP_1X3_TERMS 48
 
-static const unsigned short ptp_1x3_idx[PTP_1X3_TERMS][4] = {
+static const unsigned short ptp_1x3_term_idx[PTP_1X3_TERMS][4] = {
     {0, 0, 1, 4},
     {1, 0, 1, 5},
     {1, 0, 2, 4},
@@ -183,7 +192,7 @@ static const unsigned short ptp_1x3_idx[PTP_1X3_TERMS][4] = {
     {15, 3, 6, 7},
 };
 
-static const float ptp_1x3_wgt[PTP_1X3_TERMS] = {
+static const float ptp_1x3_term_wgt[PTP_1X3_TERMS] = {
     -3.0f,           /* -3 */
     -1.28571427f,    /* -9/7 */
     -0.857142866f,   /* -6/7 */
@@ -269,9 +278,9 @@ void ptp_1x3_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_1X3_TERMS; x++) {
         float r[4];
-        ptp_1x3_cross4(r, cp[ptp_1x3_idx[x][1]], cp[ptp_1x3_idx[x][2]], cp[ptp_1x3_idx[x][3]]);
+        ptp_1x3_cross4(r, cp[ptp_1x3_term_idx[x][1]], cp[ptp_1x3_term_idx[x][2]], cp[ptp_1x3_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_1x3_idx[x][0]][c] += ptp_1x3_wgt[x] * r[c];
+            t[ptp_1x3_term_idx[x][0]][c] += ptp_1x3_term_wgt[x] * r[c];
     }
 }
 
@@ -282,8 +291,8 @@ void ptp_1x3_values(const float cp[][4], const float eye[4], float d[])
         d[x] = 0.0f;
     for (x = 0; x < PTP_1X3_TERMS; x++) {
         float r[4];
-        ptp_1x3_cross4(r, cp[ptp_1x3_idx[x][1]], cp[ptp_1x3_idx[x][2]], cp[ptp_1x3_idx[x][3]]);
-        d[ptp_1x3_idx[x][0]] += ptp_1x3_wgt[x] * r[2];
+        ptp_1x3_cross4(r, cp[ptp_1x3_term_idx[x][1]], cp[ptp_1x3_term_idx[x][2]], cp[ptp_1x3_term_idx[x][3]]);
+        d[ptp_1x3_term_idx[x][0]] += ptp_1x3_term_wgt[x] * r[2];
     }
     for (x = 0; x < PTP_1X3_PLANES; x++)
         d[x] *= eye[2];

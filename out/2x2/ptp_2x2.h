@@ -25,6 +25,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_2X2_DEGREE_U 2
+#define PTP_2X2_DEGREE_V 2
+#define PTP_2X2_SPACE_CLIP 1
+#define PTP_2X2_RULE_STRICT 1
+#define PTP_2X2_CERTIFIED 0
+#define PTP_2X2_REFINE 0
 #define PTP_2X2_POINTS 9
 #define PTP_2X2_PLANES 25
 #define PTP_2X2_FRONT 0u
@@ -132,7 +141,7 @@ static inline ptp_2x2_vf ptp_2x2_vabsmax(ptp_2x2_vf r, ptp_2x2_vf x)
 
 #define PTP_2X2_TERMS 76
 
-static const unsigned short ptp_2x2_idx[PTP_2X2_TERMS][4] = {
+static const unsigned short ptp_2x2_term_idx[PTP_2X2_TERMS][4] = {
     {0, 0, 1, 3},
     {1, 0, 1, 4},
     {1, 0, 2, 3},
@@ -211,7 +220,7 @@ static const unsigned short ptp_2x2_idx[PTP_2X2_TERMS][4] = {
     {24, 5, 7, 8},
 };
 
-static const float ptp_2x2_wgt[PTP_2X2_TERMS] = {
+static const float ptp_2x2_term_wgt[PTP_2X2_TERMS] = {
     -4.0f,           /* -4 */
     -2.0f,           /* -2 */
     -1.0f,           /* -1 */
@@ -325,9 +334,9 @@ void ptp_2x2_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_2X2_TERMS; x++) {
         float r[4];
-        ptp_2x2_cross4(r, cp[ptp_2x2_idx[x][1]], cp[ptp_2x2_idx[x][2]], cp[ptp_2x2_idx[x][3]]);
+        ptp_2x2_cross4(r, cp[ptp_2x2_term_idx[x][1]], cp[ptp_2x2_term_idx[x][2]], cp[ptp_2x2_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_2x2_idx[x][0]][c] += ptp_2x2_wgt[x] * r[c];
+            t[ptp_2x2_term_idx[x][0]][c] += ptp_2x2_term_wgt[x] * r[c];
     }
 }
 
@@ -338,8 +347,8 @@ void ptp_2x2_values(const float cp[][4], const float eye[4], float d[])
         d[x] = 0.0f;
     for (x = 0; x < PTP_2X2_TERMS; x++) {
         float r[4];
-        ptp_2x2_cross4(r, cp[ptp_2x2_idx[x][1]], cp[ptp_2x2_idx[x][2]], cp[ptp_2x2_idx[x][3]]);
-        d[ptp_2x2_idx[x][0]] += ptp_2x2_wgt[x] * r[2];
+        ptp_2x2_cross4(r, cp[ptp_2x2_term_idx[x][1]], cp[ptp_2x2_term_idx[x][2]], cp[ptp_2x2_term_idx[x][3]]);
+        d[ptp_2x2_term_idx[x][0]] += ptp_2x2_term_wgt[x] * r[2];
     }
     for (x = 0; x < PTP_2X2_PLANES; x++)
         d[x] *= eye[2];

@@ -25,6 +25,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_2X3_DEGREE_U 2
+#define PTP_2X3_DEGREE_V 3
+#define PTP_2X3_SPACE_CLIP 1
+#define PTP_2X3_RULE_STRICT 1
+#define PTP_2X3_CERTIFIED 0
+#define PTP_2X3_REFINE 0
 #define PTP_2X3_POINTS 12
 #define PTP_2X3_PLANES 40
 #define PTP_2X3_FRONT 0u
@@ -132,7 +141,7 @@ static inline ptp_2x3_vf ptp_2x3_vabsmax(ptp_2x3_vf r, ptp_2x3_vf x)
 
 #define PTP_2X3_TERMS 200
 
-static const unsigned short ptp_2x3_idx[PTP_2X3_TERMS][4] = {
+static const unsigned short ptp_2x3_term_idx[PTP_2X3_TERMS][4] = {
     {0, 0, 1, 4},
     {1, 0, 1, 5},
     {1, 0, 2, 4},
@@ -335,7 +344,7 @@ static const unsigned short ptp_2x3_idx[PTP_2X3_TERMS][4] = {
     {39, 7, 10, 11},
 };
 
-static const float ptp_2x3_wgt[PTP_2X3_TERMS] = {
+static const float ptp_2x3_term_wgt[PTP_2X3_TERMS] = {
     -6.0f,           /* -6 */
     -2.57142854f,    /* -18/7 */
     -1.71428573f,    /* -12/7 */
@@ -573,9 +582,9 @@ void ptp_2x3_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_2X3_TERMS; x++) {
         float r[4];
-        ptp_2x3_cross4(r, cp[ptp_2x3_idx[x][1]], cp[ptp_2x3_idx[x][2]], cp[ptp_2x3_idx[x][3]]);
+        ptp_2x3_cross4(r, cp[ptp_2x3_term_idx[x][1]], cp[ptp_2x3_term_idx[x][2]], cp[ptp_2x3_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_2x3_idx[x][0]][c] += ptp_2x3_wgt[x] * r[c];
+            t[ptp_2x3_term_idx[x][0]][c] += ptp_2x3_term_wgt[x] * r[c];
     }
 }
 
@@ -586,8 +595,8 @@ void ptp_2x3_values(const float cp[][4], const float eye[4], float d[])
         d[x] = 0.0f;
     for (x = 0; x < PTP_2X3_TERMS; x++) {
         float r[4];
-        ptp_2x3_cross4(r, cp[ptp_2x3_idx[x][1]], cp[ptp_2x3_idx[x][2]], cp[ptp_2x3_idx[x][3]]);
-        d[ptp_2x3_idx[x][0]] += ptp_2x3_wgt[x] * r[2];
+        ptp_2x3_cross4(r, cp[ptp_2x3_term_idx[x][1]], cp[ptp_2x3_term_idx[x][2]], cp[ptp_2x3_term_idx[x][3]]);
+        d[ptp_2x3_term_idx[x][0]] += ptp_2x3_term_wgt[x] * r[2];
     }
     for (x = 0; x < PTP_2X3_PLANES; x++)
         d[x] *= eye[2];

@@ -25,6 +25,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_3X1_DEGREE_U 3
+#define PTP_3X1_DEGREE_V 1
+#define PTP_3X1_SPACE_CLIP 1
+#define PTP_3X1_RULE_STRICT 1
+#define PTP_3X1_CERTIFIED 0
+#define PTP_3X1_REFINE 0
 #define PTP_3X1_POINTS 8
 #define PTP_3X1_PLANES 16
 #define PTP_3X1_FRONT 0u
@@ -132,7 +141,7 @@ static inline ptp_3x1_vf ptp_3x1_vabsmax(ptp_3x1_vf r, ptp_3x1_vf x)
 
 #define PTP_3X1_TERMS 48
 
-static const unsigned short ptp_3x1_idx[PTP_3X1_TERMS][4] = {
+static const unsigned short ptp_3x1_term_idx[PTP_3X1_TERMS][4] = {
     {0, 0, 1, 2},
     {1, 0, 1, 3},
     {2, 0, 1, 4},
@@ -183,7 +192,7 @@ static const unsigned short ptp_3x1_idx[PTP_3X1_TERMS][4] = {
     {15, 5, 6, 7},
 };
 
-static const float ptp_3x1_wgt[PTP_3X1_TERMS] = {
+static const float ptp_3x1_term_wgt[PTP_3X1_TERMS] = {
     -3.0f,           /* -3 */
     -3.0f,           /* -3 */
     -0.857142866f,   /* -6/7 */
@@ -269,9 +278,9 @@ void ptp_3x1_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_3X1_TERMS; x++) {
         float r[4];
-        ptp_3x1_cross4(r, cp[ptp_3x1_idx[x][1]], cp[ptp_3x1_idx[x][2]], cp[ptp_3x1_idx[x][3]]);
+        ptp_3x1_cross4(r, cp[ptp_3x1_term_idx[x][1]], cp[ptp_3x1_term_idx[x][2]], cp[ptp_3x1_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_3x1_idx[x][0]][c] += ptp_3x1_wgt[x] * r[c];
+            t[ptp_3x1_term_idx[x][0]][c] += ptp_3x1_term_wgt[x] * r[c];
     }
 }
 
@@ -282,8 +291,8 @@ void ptp_3x1_values(const float cp[][4], const float eye[4], float d[])
         d[x] = 0.0f;
     for (x = 0; x < PTP_3X1_TERMS; x++) {
         float r[4];
-        ptp_3x1_cross4(r, cp[ptp_3x1_idx[x][1]], cp[ptp_3x1_idx[x][2]], cp[ptp_3x1_idx[x][3]]);
-        d[ptp_3x1_idx[x][0]] += ptp_3x1_wgt[x] * r[2];
+        ptp_3x1_cross4(r, cp[ptp_3x1_term_idx[x][1]], cp[ptp_3x1_term_idx[x][2]], cp[ptp_3x1_term_idx[x][3]]);
+        d[ptp_3x1_term_idx[x][0]] += ptp_3x1_term_wgt[x] * r[2];
     }
     for (x = 0; x < PTP_3X1_PLANES; x++)
         d[x] *= eye[2];

@@ -25,6 +25,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_4X4_DEGREE_U 4
+#define PTP_4X4_DEGREE_V 4
+#define PTP_4X4_SPACE_CLIP 1
+#define PTP_4X4_RULE_STRICT 1
+#define PTP_4X4_CERTIFIED 0
+#define PTP_4X4_REFINE 0
 #define PTP_4X4_POINTS 25
 #define PTP_4X4_PLANES 121
 #define PTP_4X4_FRONT 0u
@@ -132,7 +141,7 @@ static inline ptp_4x4_vf ptp_4x4_vabsmax(ptp_4x4_vf r, ptp_4x4_vf x)
 
 #define PTP_4X4_TERMS 2148
 
-static const unsigned short ptp_4x4_idx[PTP_4X4_TERMS][4] = {
+static const unsigned short ptp_4x4_term_idx[PTP_4X4_TERMS][4] = {
     {0, 0, 1, 5},
     {1, 0, 1, 6},
     {1, 0, 2, 5},
@@ -2283,7 +2292,7 @@ static const unsigned short ptp_4x4_idx[PTP_4X4_TERMS][4] = {
     {120, 19, 23, 24},
 };
 
-static const float ptp_4x4_wgt[PTP_4X4_TERMS] = {
+static const float ptp_4x4_term_wgt[PTP_4X4_TERMS] = {
     -16.0f,          /* -16 */
     -6.4000001f,     /* -32/5 */
     -4.80000019f,    /* -24/5 */
@@ -4469,9 +4478,9 @@ void ptp_4x4_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_4X4_TERMS; x++) {
         float r[4];
-        ptp_4x4_cross4(r, cp[ptp_4x4_idx[x][1]], cp[ptp_4x4_idx[x][2]], cp[ptp_4x4_idx[x][3]]);
+        ptp_4x4_cross4(r, cp[ptp_4x4_term_idx[x][1]], cp[ptp_4x4_term_idx[x][2]], cp[ptp_4x4_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_4x4_idx[x][0]][c] += ptp_4x4_wgt[x] * r[c];
+            t[ptp_4x4_term_idx[x][0]][c] += ptp_4x4_term_wgt[x] * r[c];
     }
 }
 
@@ -4482,8 +4491,8 @@ void ptp_4x4_values(const float cp[][4], const float eye[4], float d[])
         d[x] = 0.0f;
     for (x = 0; x < PTP_4X4_TERMS; x++) {
         float r[4];
-        ptp_4x4_cross4(r, cp[ptp_4x4_idx[x][1]], cp[ptp_4x4_idx[x][2]], cp[ptp_4x4_idx[x][3]]);
-        d[ptp_4x4_idx[x][0]] += ptp_4x4_wgt[x] * r[2];
+        ptp_4x4_cross4(r, cp[ptp_4x4_term_idx[x][1]], cp[ptp_4x4_term_idx[x][2]], cp[ptp_4x4_term_idx[x][3]]);
+        d[ptp_4x4_term_idx[x][0]] += ptp_4x4_term_wgt[x] * r[2];
     }
     for (x = 0; x < PTP_4X4_PLANES; x++)
         d[x] *= eye[2];

@@ -8,7 +8,10 @@
 extern "C" {
 #endif
 
-#define {{UPREFIX}}POINTS {{POINTS}}
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+{{VARIANT}}#define {{UPREFIX}}POINTS {{POINTS}}
 #define {{UPREFIX}}PLANES {{PLANES}}
 #define {{UPREFIX}}FRONT 0u
 #define {{UPREFIX}}BACK 1u
