@@ -19,10 +19,23 @@ extern "C" {
 #define FN(name) CAT(PFX, name)
 #define MACRO(name) CAT(UPFX, name)
 
+/* Nonzero when class c is not the one values d (L of them, from values()) give under the rule:
+ * certified, a class other than silhouette must be the strict rule's. v: L doubles of scratch. */
+static int class_not_of_values(double *v, unsigned c, const float *d, int L, const kref_ref *ref)
+{
+    int x;
+    for (x = 0; x < L; x++)
+        v[x] = d[x]; /* exact: the signs, zeros and NaNs are the floats' */
+    if (ref->certified)
+        return c != MACRO(SILHOUETTE) && (int)c != kref_classify(v, L, KREF_STRICT);
+    return (int)c != kref_classify(v, L, ref->rule);
+}
+
 /* Runs the header's functions over one set and accumulates the three comparisons; returns how
- * often classify_batch or classify_soa differs from classify. */
+ * often classify_batch or classify_soa differs from classify, and adds to *values_differ how often
+ * classify is not the class of values() under the rule. */
 static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_result *res_classify,
-                   kref_result *res_batch, kref_result *res_planes)
+                   kref_result *res_batch, kref_result *res_planes, size_t *values_differ)
 {
     size_t p, L = (size_t)ref->L;
     unsigned *cls = (unsigned *)malloc(s->count * sizeof *cls);
@@ -34,14 +47,16 @@ static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_resul
     float *d = (float *)malloc(s->count * L * sizeof *d);
     float *dp = (float *)malloc(s->count * L * sizeof *dp);
     float(*t)[4] = (float(*)[4])malloc(L * sizeof *t);
+    double *v = (double *)malloc(L * sizeof *v);
     int paths_differ = 0;
     for (p = 0; p < s->count; p++) {
         const float(*cp)[4] = (const float(*)[4])s->cp + p * (size_t)ref->K;
         size_t x;
         cls[p] = FN(classify)(cp, s->eye);
+        FN(values)(cp, s->eye, d + p * L);
+        *values_differ += (size_t)class_not_of_values(v, cls[p], d + p * L, ref->L, ref);
         if (s->exact && p % KREF_EXACT_SAMPLE)
             continue; /* kref_check reads the values of exact sets on this sample only */
-        FN(values)(cp, s->eye, d + p * L);
         FN(planes)(cp, t);
         for (x = 0; x < L; x++)
             dp[p * L + x] = world ? s->eye[0] * t[x][0] + s->eye[1] * t[x][1] +
@@ -67,6 +82,7 @@ static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_resul
     free(d);
     free(dp);
     free(t);
+    free(v);
     return paths_differ;
 }
 
@@ -78,6 +94,7 @@ int main(int argc, char **argv)
     ptp_error err;
     char label[200];
     int si, i, paths_differ = 0, ok = 1;
+    size_t values_differ = 0, patches = 0;
     if (kref_parse_args(&o, argc, argv, "host_c", 0))
         return 2;
     memset(&res_classify, 0, sizeof res_classify);
@@ -96,9 +113,11 @@ int main(int argc, char **argv)
             kref_clear(&ref);
             return 1;
         }
-        for (i = 0; i < o.src[si].nsets; i++)
+        for (i = 0; i < o.src[si].nsets; i++) {
             paths_differ += run_set(&ref, &sets[i], o.space == KREF_WORLD, &res_classify, &res_batch,
-                                 &res_planes);
+                                    &res_planes, &values_differ);
+            patches += sets[i].count;
+        }
         kref_free_sets(sets, (int)o.src[si].nsets);
     }
     snprintf(label, sizeof label, "%s classify and values", o.label);
@@ -108,6 +127,9 @@ int main(int argc, char **argv)
     snprintf(label, sizeof label, "%s classify_batch and classify_soa equal classify on every patch",
              o.label);
     ok &= check(paths_differ == 0, label, "they differ %d times", paths_differ);
+    snprintf(label, sizeof label, "%s classify is the class of values() under the rule on all %zu patches%s",
+             o.label, patches, o.certified ? " (certified: or silhouette)" : "");
+    ok &= check(values_differ == 0, label, "it is not on %zu", values_differ);
     snprintf(label, sizeof label, "%s planes (dotted with the eye)", o.label);
     ok &= kref_report(&res_planes, label);
     kref_clear(&ref);

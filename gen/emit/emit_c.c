@@ -23,15 +23,15 @@ static void put_cross4_component(sbuf *o, int i, const char *cast, int ind)
                 cast, s, q, ind, "", neg ? "  " : "", p, cast, q, s, cast, s, q, neg ? ")" : "");
 }
 
-/* The table loop (the paper's): cross4, planes and values; opens the region where gcc contracts
- * no product, which the lanes function closes. */
+/* The table loop (the paper's): cross4 and planes; opens the region where gcc contracts no
+ * product, which the lanes functions close. */
 static void put_functions(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
     int i;
     sbuf_printf(o,
-                "/* From here through lanes gcc contracts no product into an FMA; one region, because gcc\n"
-                " * does not inline across optimize options (cross4 into planes and values). */\n"
+                "/* From here through values gcc contracts no product into an FMA; one region, because gcc\n"
+                " * does not inline across optimize options (cross4 into planes, the lanes into values). */\n"
                 "#if defined(__GNUC__) && !defined(__clang__)\n"
                 "#pragma GCC push_options\n#pragma GCC optimize(\"fp-contract=off\")\n#endif\n\n"
                 "/* cross4 of Appendix A of Loop, Niessner and Eisenacher (2011): r . x = -det[a b c x].\n"
@@ -57,22 +57,6 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
                 "            t[%sterm_idx[x][0]][c] += %sterm_wgt[x] * r[c];\n"
                 "    }\n}\n\n",
                 px, up, up, px, px, px, px, px, px);
-    sbuf_printf(o, "void %svalues(const float cp[][4], const float eye[4], float d[])\n{\n"
-                   "    unsigned x;\n"
-                   "    for (x = 0; x < %sPLANES; x++)\n"
-                   "        d[x] = 0.0f;\n"
-                   "    for (x = 0; x < %sTERMS; x++) {\n"
-                   "        float r[4];\n"
-                   "        %scross4(r, cp[%sterm_idx[x][1]], cp[%sterm_idx[x][2]], cp[%sterm_idx[x][3]]);\n",
-                px, up, up, px, px, px, px);
-    if (info->space == OUT_CLIP)
-        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %sterm_wgt[x] * r[2];\n    }\n"
-                       "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n}\n\n",
-                    px, px, up);
-    else
-        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %sterm_wgt[x] * (eye[0] * r[0] + eye[1] * r[1] + eye[2] * r[2] + eye[3] * r[3]);\n"
-                       "    }\n}\n\n",
-                    px, px);
 }
 
 /* One bracket of a term: ((G(b_j) M(k,l) - G(b_k) M(j,l)) + G(b_l) M(j,k)) for one kind, with G
@@ -308,14 +292,16 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
                 " * Laplace expansions over shared 2x2 minors. An iteration classifies %sVW patches,\n"
                 " * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations\n"
                 " * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last\n"
-                " * one. Products are never contracted into FMAs: equal points give exact zeros. */\n"
-                "#if defined(__GNUC__) && !defined(__clang__)\n"
-                "__attribute__((noinline, noclone)) /* one copy: it is large */\n"
-                "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
-                "static void %slanes(const float *%sRESTRICT soa, size_t stride, size_t n, const float eye[4],\n"
-                "%*sunsigned char *%sRESTRICT cls)\n{\n"
+                " * one. Products are never contracted into FMAs: equal points give exact zeros.\n"
+                " * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a\n"
+                " * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)\n"
+                " * and values. */\n"
+                "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
+                "static inline void %slanes_body(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
+                "%*sconst float eye[4], unsigned char *%sRESTRICT cls,\n"
+                "%*sfloat *%sRESTRICT d)\n{\n"
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
-                up, up, px, up, (int)strlen(px) + 18, "", up);
+                up, up, px, up, (int)strlen(px) + 31, "", up, (int)strlen(px) + 31, "", up);
     if (world)
         sbuf_puts(o, "    const float e0 = eye[0], e1 = eye[1], e2 = eye[2], e3 = eye[3];\n");
     else
@@ -394,7 +380,20 @@ static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const ce
     }
 }
 
-/* The straight-line program: every term and, after a plane's last, its value into the masks. */
+/* With d: d[P] = lane 0 of the value v of plane P times 1/c_P (its scale), which keeps v's sign. */
+static void put_value_store(sbuf *o, const slp_prog *p, int plane, const char *px)
+{
+    char k[40];
+    rat one, inv;
+    rat_set_si(&one, 1);
+    sbuf_printf(o, "        if (d)\n            d[%d] = %svfirst(v)", plane, px);
+    if (!rat_equal(&p->c[plane], &one) && !rat_div(&inv, &one, &p->c[plane]))
+        sbuf_printf(o, " * %s", fmt_float_literal(k, &inv));
+    sbuf_puts(o, ";\n");
+}
+
+/* The straight-line program: every term and, after a plane's last, its value into the masks
+ * (and into d). */
 static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
                        ptp_error *err)
 {
@@ -414,6 +413,7 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
         put_term(o, p, i, world, first_group);
         if (!last)
             continue;
+        put_value_store(o, p, x->plane, px);
         /* the masks: set by the first plane (certified: by the size guard), then or-ed */
         op = x->plane == p->terms[0].plane ? "=" : "|=";
         if (info->certified)
@@ -436,8 +436,9 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
 /* The lanes and certify64 compute a class arithmetically from 0/1 masks, in these numbers. */
 _Static_assert(PTP_FRONT == 0 && PTP_BACK == 1 && PTP_SILHOUETTE == 2, "ptp_class's numbers");
 
-/* The end of the lanes function: each lane's class from the masks, stored. */
-static void put_lanes_class(sbuf *o, const out_info *info)
+/* The end of the lanes body: each lane's class from the masks, stored; then lanes and values,
+ * which inline it. */
+static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
     int strict = info->rule == OUT_STRICT || info->certified;
@@ -458,8 +459,19 @@ static void put_lanes_class(sbuf *o, const out_info *info)
                 info->certified ? "(1 - notlt) + 2 * (notlt & notgt) + (notlt & notgt & (1 - (plt & pgt)))"
                 : strict ? "(1 - notlt) + 2 * (notlt & notgt)"
                          : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
-    sbuf_printf(o, "    }\n}\n"
-                   "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
+    sbuf_printf(o, "    }\n}\n\n"
+                   "/* The classes of n patches: lanes_body without values (one copy: it is large). */\n"
+                   "#if defined(__GNUC__) && !defined(__clang__)\n"
+                   "__attribute__((noinline, noclone))\n"
+                   "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
+                   "static void %slanes(const float *%sRESTRICT soa, size_t stride, size_t n, const float eye[4],\n"
+                   "%*sunsigned char *%sRESTRICT cls)\n{\n"
+                   "    %slanes_body(soa, stride, n, eye, cls, NULL);\n}\n\n"
+                   "void %svalues(const float cp[][4], const float eye[4], float d[])\n{\n"
+                   "    unsigned char c;\n"
+                   "    %slanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */\n}\n"
+                   "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n",
+                px, up, (int)strlen(px) + 18, "", up, px, px, px);
 }
 
 /* The straight-line kernel over n patches in structure-of-arrays order (the lanes function). */
@@ -472,7 +484,7 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     put_loads(o, t, info, cb);
     if ((st = put_program(o, p, cb, info, err)) != PTP_OK)
         return st;
-    put_lanes_class(o, info);
+    put_lanes_class(o, info, up);
     return PTP_OK;
 }
 

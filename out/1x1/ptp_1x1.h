@@ -48,7 +48,8 @@ extern "C" {
 
 /* The 4 control planes of one patch, all four components, at true scale. */
 void ptp_1x1_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_1x1_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_1X1_FRONT, PTP_1X1_BACK or PTP_1X1_SILHOUETTE. */
 unsigned ptp_1x1_classify(const float cp[][4], const float eye[4]);
@@ -114,6 +115,11 @@ static inline void ptp_1x1_vstore(unsigned char *cls, ptp_1x1_vm c, size_t count
     for (i = 0; i < count && i < PTP_1X1_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_1x1_vfirst(ptp_1x1_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_1x1_vf ptp_1x1_vabsmax(ptp_1x1_vf r, ptp_1x1_vf x)
 {
@@ -137,6 +143,10 @@ static inline ptp_1x1_vf ptp_1x1_vabsmax(ptp_1x1_vf r, ptp_1x1_vf x)
 {
     return PTP_1X1_ABSMAX(r, x);
 }
+static inline float ptp_1x1_vfirst(ptp_1x1_vf v)
+{
+    return v;
+}
 #endif
 
 #define PTP_1X1_TERMS 4
@@ -155,8 +165,8 @@ static const float ptp_1x1_term_wgt[PTP_1X1_TERMS] = {
     1.0f,            /* 1 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -196,34 +206,22 @@ void ptp_1x1_planes(const float cp[][4], float t[][4])
     }
 }
 
-void ptp_1x1_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_1X1_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_1X1_TERMS; x++) {
-        float r[4];
-        ptp_1x1_cross4(r, cp[ptp_1x1_term_idx[x][1]], cp[ptp_1x1_term_idx[x][2]], cp[ptp_1x1_term_idx[x][3]]);
-        d[ptp_1x1_term_idx[x][0]] += ptp_1x1_term_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_1X1_PLANES; x++)
-        d[x] *= eye[2];
-}
-
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_1X1_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_1X1_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_1x1_lanes(const float *PTP_1X1_RESTRICT soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *PTP_1X1_RESTRICT cls)
+static inline void ptp_1x1_lanes_body(const float *PTP_1X1_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_1X1_RESTRICT cls,
+                                       float *PTP_1X1_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -260,21 +258,29 @@ static void ptp_1x1_lanes(const float *PTP_1X1_RESTRICT soa, size_t stride, size
         const ptp_1x1_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_1x1_vfirst(v);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_1x1_vf m1_3 = x1 * y3 - y1 * x3;
         const ptp_1x1_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
+        if (d)
+            d[1] = ptp_1x1_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_1x1_vf m2_3 = x2 * y3 - y2 * x3;
         u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
+        if (d)
+            d[2] = ptp_1x1_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
         v = u;
+        if (d)
+            d[3] = ptp_1x1_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -283,6 +289,24 @@ static void ptp_1x1_lanes(const float *PTP_1X1_RESTRICT soa, size_t stride, size
         notgt &= 1;
         ptp_1x1_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_1x1_lanes(const float *PTP_1X1_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_1X1_RESTRICT cls)
+{
+    ptp_1x1_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_1x1_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_1x1_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -48,7 +48,8 @@ extern "C" {
 
 /* The 16 control planes of one patch, all four components, at true scale. */
 void ptp_1x3_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_1x3_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_1X3_FRONT, PTP_1X3_BACK or PTP_1X3_SILHOUETTE. */
 unsigned ptp_1x3_classify(const float cp[][4], const float eye[4]);
@@ -114,6 +115,11 @@ static inline void ptp_1x3_vstore(unsigned char *cls, ptp_1x3_vm c, size_t count
     for (i = 0; i < count && i < PTP_1X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_1x3_vfirst(ptp_1x3_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_1x3_vf ptp_1x3_vabsmax(ptp_1x3_vf r, ptp_1x3_vf x)
 {
@@ -136,6 +142,10 @@ static inline void ptp_1x3_vstore(unsigned char *cls, ptp_1x3_vm c, size_t count
 static inline ptp_1x3_vf ptp_1x3_vabsmax(ptp_1x3_vf r, ptp_1x3_vf x)
 {
     return PTP_1X3_ABSMAX(r, x);
+}
+static inline float ptp_1x3_vfirst(ptp_1x3_vf v)
+{
+    return v;
 }
 #endif
 
@@ -243,8 +253,8 @@ static const float ptp_1x3_term_wgt[PTP_1X3_TERMS] = {
     3.0f,            /* 3 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -284,34 +294,22 @@ void ptp_1x3_planes(const float cp[][4], float t[][4])
     }
 }
 
-void ptp_1x3_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_1X3_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_1X3_TERMS; x++) {
-        float r[4];
-        ptp_1x3_cross4(r, cp[ptp_1x3_term_idx[x][1]], cp[ptp_1x3_term_idx[x][2]], cp[ptp_1x3_term_idx[x][3]]);
-        d[ptp_1x3_term_idx[x][0]] += ptp_1x3_term_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_1X3_PLANES; x++)
-        d[x] *= eye[2];
-}
-
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_1X3_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_1X3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *PTP_1X3_RESTRICT cls)
+static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_1X3_RESTRICT cls,
+                                       float *PTP_1X3_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -356,6 +354,8 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         const ptp_1x3_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_1x3_vfirst(v) * 3.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_1x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -366,6 +366,8 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         const ptp_1x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v += 3.0f * u;
+        if (d)
+            d[1] = ptp_1x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_1x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -381,6 +383,8 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         const ptp_1x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v += 6.0f * u;
+        if (d)
+            d[2] = ptp_1x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_1x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -398,6 +402,8 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v += 9.0f * u;
+        if (d)
+            d[3] = ptp_1x3_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_1x3_vf m2_3 = x2 * y3 - y2 * x3;
@@ -413,6 +419,8 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v += 9.0f * u;
+        if (d)
+            d[4] = ptp_1x3_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_1x3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -423,21 +431,29 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
         v += 6.0f * u;
+        if (d)
+            d[5] = ptp_1x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = 2.0f * u;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v += 3.0f * u;
+        if (d)
+            d[6] = ptp_1x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
+        if (d)
+            d[7] = ptp_1x3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_1x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = u;
+        if (d)
+            d[8] = ptp_1x3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_1x3_vf m4_6 = x4 * y6 - y4 * x6;
@@ -445,6 +461,8 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         v = 2.0f * u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v += 3.0f * u;
+        if (d)
+            d[9] = ptp_1x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_1x3_vf m4_7 = x4 * y7 - y4 * x7;
@@ -456,6 +474,8 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += 6.0f * u;
+        if (d)
+            d[10] = ptp_1x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
@@ -469,6 +489,8 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v += 9.0f * u;
+        if (d)
+            d[11] = ptp_1x3_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_1x3_vf m6_7 = x6 * y7 - y6 * x7;
@@ -482,6 +504,8 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v += 9.0f * u;
+        if (d)
+            d[12] = ptp_1x3_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
@@ -491,16 +515,22 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         v += 6.0f * u;
+        if (d)
+            d[13] = ptp_1x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
         v = 2.0f * u;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v += 3.0f * u;
+        if (d)
+            d[14] = ptp_1x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
+        if (d)
+            d[15] = ptp_1x3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -509,6 +539,24 @@ static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size
         notgt &= 1;
         ptp_1x3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_1X3_RESTRICT cls)
+{
+    ptp_1x3_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_1x3_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_1x3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -48,7 +48,8 @@ extern "C" {
 
 /* The 25 control planes of one patch, all four components, at true scale. */
 void ptp_2x2_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_2x2_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_2X2_FRONT, PTP_2X2_BACK or PTP_2X2_SILHOUETTE. */
 unsigned ptp_2x2_classify(const float cp[][4], const float eye[4]);
@@ -114,6 +115,11 @@ static inline void ptp_2x2_vstore(unsigned char *cls, ptp_2x2_vm c, size_t count
     for (i = 0; i < count && i < PTP_2X2_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_2x2_vfirst(ptp_2x2_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_2x2_vf ptp_2x2_vabsmax(ptp_2x2_vf r, ptp_2x2_vf x)
 {
@@ -136,6 +142,10 @@ static inline void ptp_2x2_vstore(unsigned char *cls, ptp_2x2_vm c, size_t count
 static inline ptp_2x2_vf ptp_2x2_vabsmax(ptp_2x2_vf r, ptp_2x2_vf x)
 {
     return PTP_2X2_ABSMAX(r, x);
+}
+static inline float ptp_2x2_vfirst(ptp_2x2_vf v)
+{
+    return v;
 }
 #endif
 
@@ -299,8 +309,8 @@ static const float ptp_2x2_term_wgt[PTP_2X2_TERMS] = {
     4.0f,            /* 4 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -340,34 +350,22 @@ void ptp_2x2_planes(const float cp[][4], float t[][4])
     }
 }
 
-void ptp_2x2_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_2X2_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_2X2_TERMS; x++) {
-        float r[4];
-        ptp_2x2_cross4(r, cp[ptp_2x2_term_idx[x][1]], cp[ptp_2x2_term_idx[x][2]], cp[ptp_2x2_term_idx[x][3]]);
-        d[ptp_2x2_term_idx[x][0]] += ptp_2x2_term_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_2X2_PLANES; x++)
-        d[x] *= eye[2];
-}
-
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_2X2_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_2X2_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *PTP_2X2_RESTRICT cls)
+static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_2X2_RESTRICT cls,
+                                       float *PTP_2X2_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -414,6 +412,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         const ptp_2x2_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_2x2_vfirst(v) * 4.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_2x2_vf m2_3 = x2 * y3 - y2 * x3;
@@ -424,6 +424,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         const ptp_2x2_vf m0_4 = x0 * y4 - y0 * x4;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v += 2.0f * u;
+        if (d)
+            d[1] = ptp_2x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_2x2_vf m1_5 = x1 * y5 - y1 * x5;
@@ -435,6 +437,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         const ptp_2x2_vf m2_4 = x2 * y4 - y2 * x4;
         u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v += 2.0f * u;
+        if (d)
+            d[2] = ptp_2x2_vfirst(v) * 0.666666687f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_2x2_vf m2_5 = x2 * y5 - y2 * x5;
@@ -442,10 +446,14 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v = u;
         u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
         v += 2.0f * u;
+        if (d)
+            d[3] = ptp_2x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v = u;
+        if (d)
+            d[4] = ptp_2x2_vfirst(v) * 4.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_2x2_vf m1_6 = x1 * y6 - y1 * x6;
@@ -455,6 +463,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         const ptp_2x2_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v += 2.0f * u;
+        if (d)
+            d[5] = ptp_2x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_2x2_vf m2_6 = x2 * y6 - y2 * x6;
@@ -468,6 +478,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v += 2.0f * u;
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v += 4.0f * u;
+        if (d)
+            d[6] = ptp_2x2_vfirst(v) * 0.25f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_2x2_vf m1_8 = x1 * y8 - y1 * x8;
@@ -483,6 +495,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v += 2.0f * u;
         u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         v += 4.0f * u;
+        if (d)
+            d[7] = ptp_2x2_vfirst(v) * 0.166666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_2x2_vf m2_8 = x2 * y8 - y2 * x8;
@@ -493,12 +507,16 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v += 2.0f * u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v += 4.0f * u;
+        if (d)
+            d[8] = ptp_2x2_vfirst(v) * 0.25f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
         v = u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v += 2.0f * u;
+        if (d)
+            d[9] = ptp_2x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_2x2_vf m3_7 = x3 * y7 - y3 * x7;
@@ -509,6 +527,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         const ptp_2x2_vf m4_6 = x4 * y6 - y4 * x6;
         u = -((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
         v += 2.0f * u;
+        if (d)
+            d[10] = ptp_2x2_vfirst(v) * 0.666666687f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_2x2_vf m3_8 = x3 * y8 - y3 * x8;
@@ -523,6 +543,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v += 2.0f * u;
         u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v += 4.0f * u;
+        if (d)
+            d[11] = ptp_2x2_vfirst(v) * 0.166666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_2x2_vf m5_7 = x5 * y7 - y5 * x7;
@@ -531,6 +553,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         u -= ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
+        if (d)
+            d[12] = ptp_2x2_vfirst(v) * 0.333333343f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_2x2_vf m5_8 = x5 * y8 - y5 * x8;
@@ -544,6 +568,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v += 2.0f * u;
         u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
         v += 4.0f * u;
+        if (d)
+            d[13] = ptp_2x2_vfirst(v) * 0.166666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
@@ -551,6 +577,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v = u;
         u = ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         v += 2.0f * u;
+        if (d)
+            d[14] = ptp_2x2_vfirst(v) * 0.666666687f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_2x2_vf m6_7 = x6 * y7 - y6 * x7;
@@ -558,6 +586,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v = u;
         u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v += 2.0f * u;
+        if (d)
+            d[15] = ptp_2x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_2x2_vf m6_8 = x6 * y8 - y6 * x8;
@@ -568,6 +598,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v += 2.0f * u;
         u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v += 4.0f * u;
+        if (d)
+            d[16] = ptp_2x2_vfirst(v) * 0.25f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_2x2_vf m7_8 = x7 * y8 - y7 * x8;
@@ -580,6 +612,8 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v += 2.0f * u;
         u = -((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
         v += 4.0f * u;
+        if (d)
+            d[17] = ptp_2x2_vfirst(v) * 0.166666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
@@ -589,22 +623,30 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v += 2.0f * u;
         u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
         v += 4.0f * u;
+        if (d)
+            d[18] = ptp_2x2_vfirst(v) * 0.25f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         v = u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += 2.0f * u;
+        if (d)
+            d[19] = ptp_2x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
+        if (d)
+            d[20] = ptp_2x2_vfirst(v) * 4.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
         v = u;
         u = ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v += 2.0f * u;
+        if (d)
+            d[21] = ptp_2x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
@@ -612,16 +654,22 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         v = u;
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
         v += 2.0f * u;
+        if (d)
+            d[22] = ptp_2x2_vfirst(v) * 0.666666687f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
         v = u;
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
         v += 2.0f * u;
+        if (d)
+            d[23] = ptp_2x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
         v = u;
+        if (d)
+            d[24] = ptp_2x2_vfirst(v) * 4.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -630,6 +678,24 @@ static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size
         notgt &= 1;
         ptp_2x2_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_2X2_RESTRICT cls)
+{
+    ptp_2x2_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_2x2_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_2x2_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

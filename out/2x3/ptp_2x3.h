@@ -48,7 +48,8 @@ extern "C" {
 
 /* The 40 control planes of one patch, all four components, at true scale. */
 void ptp_2x3_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_2x3_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_2X3_FRONT, PTP_2X3_BACK or PTP_2X3_SILHOUETTE. */
 unsigned ptp_2x3_classify(const float cp[][4], const float eye[4]);
@@ -114,6 +115,11 @@ static inline void ptp_2x3_vstore(unsigned char *cls, ptp_2x3_vm c, size_t count
     for (i = 0; i < count && i < PTP_2X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_2x3_vfirst(ptp_2x3_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_2x3_vf ptp_2x3_vabsmax(ptp_2x3_vf r, ptp_2x3_vf x)
 {
@@ -136,6 +142,10 @@ static inline void ptp_2x3_vstore(unsigned char *cls, ptp_2x3_vm c, size_t count
 static inline ptp_2x3_vf ptp_2x3_vabsmax(ptp_2x3_vf r, ptp_2x3_vf x)
 {
     return PTP_2X3_ABSMAX(r, x);
+}
+static inline float ptp_2x3_vfirst(ptp_2x3_vf v)
+{
+    return v;
 }
 #endif
 
@@ -547,8 +557,8 @@ static const float ptp_2x3_term_wgt[PTP_2X3_TERMS] = {
     6.0f,            /* 6 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -588,34 +598,22 @@ void ptp_2x3_planes(const float cp[][4], float t[][4])
     }
 }
 
-void ptp_2x3_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_2X3_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_2X3_TERMS; x++) {
-        float r[4];
-        ptp_2x3_cross4(r, cp[ptp_2x3_term_idx[x][1]], cp[ptp_2x3_term_idx[x][2]], cp[ptp_2x3_term_idx[x][3]]);
-        d[ptp_2x3_term_idx[x][0]] += ptp_2x3_term_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_2X3_PLANES; x++)
-        d[x] *= eye[2];
-}
-
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_2X3_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_2X3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *PTP_2X3_RESTRICT cls)
+static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_2X3_RESTRICT cls,
+                                       float *PTP_2X3_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -668,6 +666,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         const ptp_2x3_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_2x3_vfirst(v) * 6.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_2x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -678,6 +678,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         const ptp_2x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v += 3.0f * u;
+        if (d)
+            d[1] = ptp_2x3_vfirst(v) * 0.857142866f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_2x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -693,6 +695,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         const ptp_2x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v += 6.0f * u;
+        if (d)
+            d[2] = ptp_2x3_vfirst(v) * 0.285714298f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_2x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -710,6 +714,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v += 9.0f * u;
+        if (d)
+            d[3] = ptp_2x3_vfirst(v) * 0.171428576f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_2x3_vf m2_3 = x2 * y3 - y2 * x3;
@@ -725,6 +731,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v += 9.0f * u;
+        if (d)
+            d[4] = ptp_2x3_vfirst(v) * 0.171428576f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_2x3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -735,16 +743,22 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
         v += 6.0f * u;
+        if (d)
+            d[5] = ptp_2x3_vfirst(v) * 0.285714298f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = 2.0f * u;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v += 3.0f * u;
+        if (d)
+            d[6] = ptp_2x3_vfirst(v) * 0.857142866f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
+        if (d)
+            d[7] = ptp_2x3_vfirst(v) * 6.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_2x3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -754,6 +768,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         const ptp_2x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v += 2.0f * u;
+        if (d)
+            d[8] = ptp_2x3_vfirst(v) * 1.5f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_2x3_vf m2_8 = x2 * y8 - y2 * x8;
@@ -768,6 +784,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v += 6.0f * u;
+        if (d)
+            d[9] = ptp_2x3_vfirst(v) * 0.214285716f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_2x3_vf m3_8 = x3 * y8 - y3 * x8;
@@ -789,6 +807,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += 12.0f * u;
+        if (d)
+            d[10] = ptp_2x3_vfirst(v) * 0.0714285746f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_2x3_vf m1_11 = x1 * y11 - y1 * x11;
@@ -814,6 +834,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v += 18.0f * u;
+        if (d)
+            d[11] = ptp_2x3_vfirst(v) * 0.042857144f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         u = -((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
@@ -837,6 +859,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v += 18.0f * u;
+        if (d)
+            d[12] = ptp_2x3_vfirst(v) * 0.042857144f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_2x3_vf m3_11 = x3 * y11 - y3 * x11;
@@ -853,6 +877,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         v += 12.0f * u;
+        if (d)
+            d[13] = ptp_2x3_vfirst(v) * 0.0714285746f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = -((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
@@ -863,12 +889,16 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v += 6.0f * u;
+        if (d)
+            d[14] = ptp_2x3_vfirst(v) * 0.214285716f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
         v = u;
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v += 2.0f * u;
+        if (d)
+            d[15] = ptp_2x3_vfirst(v) * 1.5f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_2x3_vf m4_9 = x4 * y9 - y4 * x9;
@@ -879,6 +909,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         const ptp_2x3_vf m5_8 = x5 * y8 - y5 * x8;
         u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
         v += 2.0f * u;
+        if (d)
+            d[16] = ptp_2x3_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_2x3_vf m4_10 = x4 * y10 - y4 * x10;
@@ -894,6 +926,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
         v += 6.0f * u;
+        if (d)
+            d[17] = ptp_2x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_2x3_vf m4_11 = x4 * y11 - y4 * x11;
@@ -909,6 +943,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         u -= ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
         u += ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v += 9.0f * u;
+        if (d)
+            d[18] = ptp_2x3_vfirst(v) * 0.0476190485f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         const ptp_2x3_vf m5_11 = x5 * y11 - y5 * x11;
@@ -934,6 +970,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
         v += 18.0f * u;
+        if (d)
+            d[19] = ptp_2x3_vfirst(v) * 0.0285714287f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         const ptp_2x3_vf m6_11 = x6 * y11 - y6 * x11;
@@ -957,6 +995,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
         v += 18.0f * u;
+        if (d)
+            d[20] = ptp_2x3_vfirst(v) * 0.0285714287f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         const ptp_2x3_vf m7_11 = x7 * y11 - y7 * x11;
@@ -970,6 +1010,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         u -= ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
         u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
         v += 9.0f * u;
+        if (d)
+            d[21] = ptp_2x3_vfirst(v) * 0.0476190485f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = -((g1 * m7_11 - g7 * m1_11) + g11 * m1_7);
@@ -982,6 +1024,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = -((g2 * m7_10 - g7 * m2_10) + g10 * m2_7);
         v += 6.0f * u;
+        if (d)
+            d[22] = ptp_2x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = -((g2 * m7_11 - g7 * m2_11) + g11 * m2_7);
@@ -989,6 +1033,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v = u;
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
         v += 2.0f * u;
+        if (d)
+            d[23] = ptp_2x3_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_2x3_vf m8_9 = x8 * y9 - y8 * x9;
@@ -996,6 +1042,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v = u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += 2.0f * u;
+        if (d)
+            d[24] = ptp_2x3_vfirst(v) * 1.5f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_2x3_vf m8_10 = x8 * y10 - y8 * x10;
@@ -1007,6 +1055,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
         v += 6.0f * u;
+        if (d)
+            d[25] = ptp_2x3_vfirst(v) * 0.214285716f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_2x3_vf m8_11 = x8 * y11 - y8 * x11;
@@ -1024,6 +1074,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
         v += 12.0f * u;
+        if (d)
+            d[26] = ptp_2x3_vfirst(v) * 0.0714285746f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
@@ -1045,6 +1097,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
         v += 18.0f * u;
+        if (d)
+            d[27] = ptp_2x3_vfirst(v) * 0.042857144f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         const ptp_2x3_vf m10_11 = x10 * y11 - y10 * x11;
@@ -1066,6 +1120,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
         v += 18.0f * u;
+        if (d)
+            d[28] = ptp_2x3_vfirst(v) * 0.042857144f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         u = ((g3 * m8_11 - g8 * m3_11) + g11 * m3_8);
@@ -1081,6 +1137,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g5 * m7_10 - g7 * m5_10) + g10 * m5_7);
         v += 12.0f * u;
+        if (d)
+            d[29] = ptp_2x3_vfirst(v) * 0.0714285746f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = ((g3 * m9_11 - g9 * m3_11) + g11 * m3_9);
@@ -1091,22 +1149,30 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = -((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
         v += 6.0f * u;
+        if (d)
+            d[30] = ptp_2x3_vfirst(v) * 0.214285716f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         v = u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         v += 2.0f * u;
+        if (d)
+            d[31] = ptp_2x3_vfirst(v) * 1.5f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v = u;
+        if (d)
+            d[32] = ptp_2x3_vfirst(v) * 6.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = ((g4 * m8_10 - g8 * m4_10) + g10 * m4_8);
         v = 2.0f * u;
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v += 3.0f * u;
+        if (d)
+            d[33] = ptp_2x3_vfirst(v) * 0.857142866f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = ((g4 * m8_11 - g8 * m4_11) + g11 * m4_8);
@@ -1116,6 +1182,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g5 * m8_10 - g8 * m5_10) + g10 * m5_8);
         v += 6.0f * u;
+        if (d)
+            d[34] = ptp_2x3_vfirst(v) * 0.285714298f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         u = ((g7 * m8_9 - g8 * m7_9) + g9 * m7_8);
@@ -1128,6 +1196,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g5 * m9_10 - g9 * m5_10) + g10 * m5_9);
         v += 9.0f * u;
+        if (d)
+            d[35] = ptp_2x3_vfirst(v) * 0.171428576f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = ((g4 * m10_11 - g10 * m4_11) + g11 * m4_10);
@@ -1140,6 +1210,8 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
         v += 9.0f * u;
+        if (d)
+            d[36] = ptp_2x3_vfirst(v) * 0.171428576f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         u = ((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
@@ -1149,16 +1221,22 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
         v += 6.0f * u;
+        if (d)
+            d[37] = ptp_2x3_vfirst(v) * 0.285714298f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
         v = 2.0f * u;
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v += 3.0f * u;
+        if (d)
+            d[38] = ptp_2x3_vfirst(v) * 0.857142866f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = u;
+        if (d)
+            d[39] = ptp_2x3_vfirst(v) * 6.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -1167,6 +1245,24 @@ static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size
         notgt &= 1;
         ptp_2x3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_2X3_RESTRICT cls)
+{
+    ptp_2x3_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_2x3_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_2x3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -48,7 +48,8 @@ extern "C" {
 
 /* The 16 control planes of one patch, all four components, at true scale. */
 void ptp_3x1_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_3x1_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_3X1_FRONT, PTP_3X1_BACK or PTP_3X1_SILHOUETTE. */
 unsigned ptp_3x1_classify(const float cp[][4], const float eye[4]);
@@ -114,6 +115,11 @@ static inline void ptp_3x1_vstore(unsigned char *cls, ptp_3x1_vm c, size_t count
     for (i = 0; i < count && i < PTP_3X1_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_3x1_vfirst(ptp_3x1_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_3x1_vf ptp_3x1_vabsmax(ptp_3x1_vf r, ptp_3x1_vf x)
 {
@@ -136,6 +142,10 @@ static inline void ptp_3x1_vstore(unsigned char *cls, ptp_3x1_vm c, size_t count
 static inline ptp_3x1_vf ptp_3x1_vabsmax(ptp_3x1_vf r, ptp_3x1_vf x)
 {
     return PTP_3X1_ABSMAX(r, x);
+}
+static inline float ptp_3x1_vfirst(ptp_3x1_vf v)
+{
+    return v;
 }
 #endif
 
@@ -243,8 +253,8 @@ static const float ptp_3x1_term_wgt[PTP_3X1_TERMS] = {
     3.0f,            /* 3 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -284,34 +294,22 @@ void ptp_3x1_planes(const float cp[][4], float t[][4])
     }
 }
 
-void ptp_3x1_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_3X1_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_3X1_TERMS; x++) {
-        float r[4];
-        ptp_3x1_cross4(r, cp[ptp_3x1_term_idx[x][1]], cp[ptp_3x1_term_idx[x][2]], cp[ptp_3x1_term_idx[x][3]]);
-        d[ptp_3x1_term_idx[x][0]] += ptp_3x1_term_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_3X1_PLANES; x++)
-        d[x] *= eye[2];
-}
-
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_3X1_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_3X1_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *PTP_3X1_RESTRICT cls)
+static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_3X1_RESTRICT cls,
+                                       float *PTP_3X1_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -356,12 +354,16 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         const ptp_3x1_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_3x1_vfirst(v) * 3.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_3x1_vf m1_3 = x1 * y3 - y1 * x3;
         const ptp_3x1_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
+        if (d)
+            d[1] = ptp_3x1_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_3x1_vf m1_4 = x1 * y4 - y1 * x4;
@@ -371,6 +373,8 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         const ptp_3x1_vf m2_3 = x2 * y3 - y2 * x3;
         u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v += 3.0f * u;
+        if (d)
+            d[2] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_3x1_vf m1_5 = x1 * y5 - y1 * x5;
@@ -379,6 +383,8 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         v = 2.0f * u;
         u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
         v += 3.0f * u;
+        if (d)
+            d[3] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_3x1_vf m1_6 = x1 * y6 - y1 * x6;
@@ -393,6 +399,8 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         const ptp_3x1_vf m3_4 = x3 * y4 - y3 * x4;
         u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v += 6.0f * u;
+        if (d)
+            d[4] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_3x1_vf m1_7 = x1 * y7 - y1 * x7;
@@ -405,6 +413,8 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v += 6.0f * u;
+        if (d)
+            d[5] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_3x1_vf m2_7 = x2 * y7 - y2 * x7;
@@ -421,6 +431,8 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v += 9.0f * u;
+        if (d)
+            d[6] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
@@ -434,6 +446,8 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
         v += 9.0f * u;
+        if (d)
+            d[7] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_3x1_vf m4_6 = x4 * y6 - y4 * x6;
@@ -449,6 +463,8 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v += 9.0f * u;
+        if (d)
+            d[8] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_3x1_vf m5_7 = x5 * y7 - y5 * x7;
@@ -462,6 +478,8 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
         v += 9.0f * u;
+        if (d)
+            d[9] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_3x1_vf m6_7 = x6 * y7 - y6 * x7;
@@ -472,6 +490,8 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = -((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v += 6.0f * u;
+        if (d)
+            d[10] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
@@ -481,26 +501,36 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v += 6.0f * u;
+        if (d)
+            d[11] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v = 2.0f * u;
         u = -((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
         v += 3.0f * u;
+        if (d)
+            d[12] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = 2.0f * u;
         u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
         v += 3.0f * u;
+        if (d)
+            d[13] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v = u;
+        if (d)
+            d[14] = ptp_3x1_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
         v = u;
+        if (d)
+            d[15] = ptp_3x1_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -509,6 +539,24 @@ static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size
         notgt &= 1;
         ptp_3x1_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_3X1_RESTRICT cls)
+{
+    ptp_3x1_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_3x1_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_3x1_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -48,7 +48,8 @@ extern "C" {
 
 /* The 40 control planes of one patch, all four components, at true scale. */
 void ptp_3x2_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_3x2_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_3X2_FRONT, PTP_3X2_BACK or PTP_3X2_SILHOUETTE. */
 unsigned ptp_3x2_classify(const float cp[][4], const float eye[4]);
@@ -114,6 +115,11 @@ static inline void ptp_3x2_vstore(unsigned char *cls, ptp_3x2_vm c, size_t count
     for (i = 0; i < count && i < PTP_3X2_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_3x2_vfirst(ptp_3x2_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_3x2_vf ptp_3x2_vabsmax(ptp_3x2_vf r, ptp_3x2_vf x)
 {
@@ -136,6 +142,10 @@ static inline void ptp_3x2_vstore(unsigned char *cls, ptp_3x2_vm c, size_t count
 static inline ptp_3x2_vf ptp_3x2_vabsmax(ptp_3x2_vf r, ptp_3x2_vf x)
 {
     return PTP_3X2_ABSMAX(r, x);
+}
+static inline float ptp_3x2_vfirst(ptp_3x2_vf v)
+{
+    return v;
 }
 #endif
 
@@ -547,8 +557,8 @@ static const float ptp_3x2_term_wgt[PTP_3X2_TERMS] = {
     6.0f,            /* 6 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -588,34 +598,22 @@ void ptp_3x2_planes(const float cp[][4], float t[][4])
     }
 }
 
-void ptp_3x2_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_3X2_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_3X2_TERMS; x++) {
-        float r[4];
-        ptp_3x2_cross4(r, cp[ptp_3x2_term_idx[x][1]], cp[ptp_3x2_term_idx[x][2]], cp[ptp_3x2_term_idx[x][3]]);
-        d[ptp_3x2_term_idx[x][0]] += ptp_3x2_term_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_3X2_PLANES; x++)
-        d[x] *= eye[2];
-}
-
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_3X2_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_3X2_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *PTP_3X2_RESTRICT cls)
+static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_3X2_RESTRICT cls,
+                                       float *PTP_3X2_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -668,6 +666,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         const ptp_3x2_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_3x2_vfirst(v) * 6.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_3x2_vf m2_3 = x2 * y3 - y2 * x3;
@@ -678,6 +678,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         const ptp_3x2_vf m0_4 = x0 * y4 - y0 * x4;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v += 2.0f * u;
+        if (d)
+            d[1] = ptp_3x2_vfirst(v) * 1.5f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_3x2_vf m1_5 = x1 * y5 - y1 * x5;
@@ -689,6 +691,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         const ptp_3x2_vf m2_4 = x2 * y4 - y2 * x4;
         u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v += 2.0f * u;
+        if (d)
+            d[2] = ptp_3x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_3x2_vf m2_5 = x2 * y5 - y2 * x5;
@@ -696,10 +700,14 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v = u;
         u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
         v += 2.0f * u;
+        if (d)
+            d[3] = ptp_3x2_vfirst(v) * 1.5f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v = u;
+        if (d)
+            d[4] = ptp_3x2_vfirst(v) * 6.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_3x2_vf m1_6 = x1 * y6 - y1 * x6;
@@ -709,6 +717,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         const ptp_3x2_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v += 3.0f * u;
+        if (d)
+            d[5] = ptp_3x2_vfirst(v) * 0.857142866f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_3x2_vf m2_6 = x2 * y6 - y2 * x6;
@@ -723,6 +733,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v += 6.0f * u;
+        if (d)
+            d[6] = ptp_3x2_vfirst(v) * 0.214285716f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_3x2_vf m1_8 = x1 * y8 - y1 * x8;
@@ -739,6 +751,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         v += 6.0f * u;
+        if (d)
+            d[7] = ptp_3x2_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_3x2_vf m2_8 = x2 * y8 - y2 * x8;
@@ -750,12 +764,16 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v += 6.0f * u;
+        if (d)
+            d[8] = ptp_3x2_vfirst(v) * 0.214285716f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
         v = 2.0f * u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v += 3.0f * u;
+        if (d)
+            d[9] = ptp_3x2_vfirst(v) * 0.857142866f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_3x2_vf m1_9 = x1 * y9 - y1 * x9;
@@ -770,6 +788,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         const ptp_3x2_vf m4_6 = x4 * y6 - y4 * x6;
         u = -((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
         v += 6.0f * u;
+        if (d)
+            d[10] = ptp_3x2_vfirst(v) * 0.285714298f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_3x2_vf m2_9 = x2 * y9 - y2 * x9;
@@ -791,6 +811,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v += 12.0f * u;
+        if (d)
+            d[11] = ptp_3x2_vfirst(v) * 0.0714285746f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_3x2_vf m1_11 = x1 * y11 - y1 * x11;
@@ -807,6 +829,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         u -= ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v += 9.0f * u;
+        if (d)
+            d[12] = ptp_3x2_vfirst(v) * 0.0476190485f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_3x2_vf m2_11 = x2 * y11 - y2 * x11;
@@ -825,6 +849,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
         v += 12.0f * u;
+        if (d)
+            d[13] = ptp_3x2_vfirst(v) * 0.0714285746f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = -((g1 * m2_11 - g2 * m1_11) + g11 * m1_2);
@@ -834,6 +860,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         v += 6.0f * u;
+        if (d)
+            d[14] = ptp_3x2_vfirst(v) * 0.285714298f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_3x2_vf m3_10 = x3 * y10 - y3 * x10;
@@ -850,6 +878,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v += 9.0f * u;
+        if (d)
+            d[15] = ptp_3x2_vfirst(v) * 0.171428576f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_3x2_vf m3_11 = x3 * y11 - y3 * x11;
@@ -874,6 +904,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v += 18.0f * u;
+        if (d)
+            d[16] = ptp_3x2_vfirst(v) * 0.042857144f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_3x2_vf m4_11 = x4 * y11 - y4 * x11;
@@ -898,6 +930,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
         v += 18.0f * u;
+        if (d)
+            d[17] = ptp_3x2_vfirst(v) * 0.0285714287f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         u = -((g2 * m5_9 - g5 * m2_9) + g9 * m2_5);
@@ -919,6 +953,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
         v += 18.0f * u;
+        if (d)
+            d[18] = ptp_3x2_vfirst(v) * 0.042857144f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = -((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
@@ -931,6 +967,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += 9.0f * u;
+        if (d)
+            d[19] = ptp_3x2_vfirst(v) * 0.171428576f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         const ptp_3x2_vf m6_9 = x6 * y9 - y6 * x9;
@@ -946,6 +984,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v += 9.0f * u;
+        if (d)
+            d[20] = ptp_3x2_vfirst(v) * 0.171428576f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = ((g2 * m6_9 - g6 * m2_9) + g9 * m2_6);
@@ -969,6 +1009,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v += 18.0f * u;
+        if (d)
+            d[21] = ptp_3x2_vfirst(v) * 0.042857144f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         const ptp_3x2_vf m7_11 = x7 * y11 - y7 * x11;
@@ -992,6 +1034,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
         v += 18.0f * u;
+        if (d)
+            d[22] = ptp_3x2_vfirst(v) * 0.0285714287f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         const ptp_3x2_vf m8_11 = x8 * y11 - y8 * x11;
@@ -1013,6 +1057,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
         v += 18.0f * u;
+        if (d)
+            d[23] = ptp_3x2_vfirst(v) * 0.042857144f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         u = -((g1 * m8_11 - g8 * m1_11) + g11 * m1_8);
@@ -1025,6 +1071,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
         v += 9.0f * u;
+        if (d)
+            d[24] = ptp_3x2_vfirst(v) * 0.171428576f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_3x2_vf m9_10 = x9 * y10 - y9 * x10;
@@ -1035,6 +1083,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = -((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
         v += 6.0f * u;
+        if (d)
+            d[25] = ptp_3x2_vfirst(v) * 0.285714298f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_3x2_vf m9_11 = x9 * y11 - y9 * x11;
@@ -1051,6 +1101,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g4 * m6_10 - g6 * m4_10) + g10 * m4_6);
         v += 12.0f * u;
+        if (d)
+            d[26] = ptp_3x2_vfirst(v) * 0.0714285746f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         const ptp_3x2_vf m10_11 = x10 * y11 - y10 * x11;
@@ -1064,6 +1116,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         u -= ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         u += ((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
         v += 9.0f * u;
+        if (d)
+            d[27] = ptp_3x2_vfirst(v) * 0.0476190485f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         u = ((g2 * m9_11 - g9 * m2_11) + g11 * m2_9);
@@ -1079,6 +1133,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g4 * m8_10 - g8 * m4_10) + g10 * m4_8);
         v += 12.0f * u;
+        if (d)
+            d[28] = ptp_3x2_vfirst(v) * 0.0714285746f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         u = ((g2 * m10_11 - g10 * m2_11) + g11 * m2_10);
@@ -1088,12 +1144,16 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g5 * m7_11 - g7 * m5_11) + g11 * m5_7);
         v += 6.0f * u;
+        if (d)
+            d[29] = ptp_3x2_vfirst(v) * 0.285714298f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = ((g3 * m9_10 - g9 * m3_10) + g10 * m3_9);
         v = 2.0f * u;
         u = -((g6 * m7_9 - g7 * m6_9) + g9 * m6_7);
         v += 3.0f * u;
+        if (d)
+            d[30] = ptp_3x2_vfirst(v) * 0.857142866f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = ((g3 * m9_11 - g9 * m3_11) + g11 * m3_9);
@@ -1104,6 +1164,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = -((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
         v += 6.0f * u;
+        if (d)
+            d[31] = ptp_3x2_vfirst(v) * 0.214285716f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
@@ -1116,6 +1178,8 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = -((g6 * m8_10 - g8 * m6_10) + g10 * m6_8);
         v += 6.0f * u;
+        if (d)
+            d[32] = ptp_3x2_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = ((g5 * m9_11 - g9 * m5_11) + g11 * m5_9);
@@ -1126,22 +1190,30 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v += 4.0f * u;
         u = -((g7 * m8_10 - g8 * m7_10) + g10 * m7_8);
         v += 6.0f * u;
+        if (d)
+            d[33] = ptp_3x2_vfirst(v) * 0.214285716f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
         v = 2.0f * u;
         u = -((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
         v += 3.0f * u;
+        if (d)
+            d[34] = ptp_3x2_vfirst(v) * 0.857142866f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         u = ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
         v = u;
+        if (d)
+            d[35] = ptp_3x2_vfirst(v) * 6.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
         v = u;
         u = ((g7 * m9_10 - g9 * m7_10) + g10 * m7_9);
         v += 2.0f * u;
+        if (d)
+            d[36] = ptp_3x2_vfirst(v) * 1.5f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
@@ -1149,16 +1221,22 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         v = u;
         u = ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
         v += 2.0f * u;
+        if (d)
+            d[37] = ptp_3x2_vfirst(v);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = ((g8 * m9_11 - g9 * m8_11) + g11 * m8_9);
         v = u;
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v += 2.0f * u;
+        if (d)
+            d[38] = ptp_3x2_vfirst(v) * 1.5f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = ((g8 * m10_11 - g10 * m8_11) + g11 * m8_10);
         v = u;
+        if (d)
+            d[39] = ptp_3x2_vfirst(v) * 6.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -1167,6 +1245,24 @@ static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size
         notgt &= 1;
         ptp_3x2_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_3X2_RESTRICT cls)
+{
+    ptp_3x2_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_3x2_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_3x2_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -48,7 +48,8 @@ extern "C" {
 
 /* The 64 control planes of one patch, all four components, at true scale. */
 void ptp_3x3_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_3x3_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_3X3_FRONT, PTP_3X3_BACK or PTP_3X3_SILHOUETTE. */
 unsigned ptp_3x3_classify(const float cp[][4], const float eye[4]);
@@ -114,6 +115,11 @@ static inline void ptp_3x3_vstore(unsigned char *cls, ptp_3x3_vm c, size_t count
     for (i = 0; i < count && i < PTP_3X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_3x3_vfirst(ptp_3x3_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_3x3_vf ptp_3x3_vabsmax(ptp_3x3_vf r, ptp_3x3_vf x)
 {
@@ -136,6 +142,10 @@ static inline void ptp_3x3_vstore(unsigned char *cls, ptp_3x3_vm c, size_t count
 static inline ptp_3x3_vf ptp_3x3_vabsmax(ptp_3x3_vf r, ptp_3x3_vf x)
 {
     return PTP_3X3_ABSMAX(r, x);
+}
+static inline float ptp_3x3_vfirst(ptp_3x3_vf v)
+{
+    return v;
 }
 #endif
 
@@ -1179,8 +1189,8 @@ static const float ptp_3x3_term_wgt[PTP_3X3_TERMS] = {
     9.0f,            /* 9 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -1220,34 +1230,22 @@ void ptp_3x3_planes(const float cp[][4], float t[][4])
     }
 }
 
-void ptp_3x3_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_3X3_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_3X3_TERMS; x++) {
-        float r[4];
-        ptp_3x3_cross4(r, cp[ptp_3x3_term_idx[x][1]], cp[ptp_3x3_term_idx[x][2]], cp[ptp_3x3_term_idx[x][3]]);
-        d[ptp_3x3_term_idx[x][0]] += ptp_3x3_term_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_3X3_PLANES; x++)
-        d[x] *= eye[2];
-}
-
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_3X3_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_3X3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *PTP_3X3_RESTRICT cls)
+static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_3X3_RESTRICT cls,
+                                       float *PTP_3X3_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -1308,6 +1306,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         const ptp_3x3_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_3x3_vfirst(v) * 9.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_3x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -1318,6 +1318,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         const ptp_3x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v += 3.0f * u;
+        if (d)
+            d[1] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_3x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -1333,6 +1335,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         const ptp_3x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v += 6.0f * u;
+        if (d)
+            d[2] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_3x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -1350,6 +1354,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v += 9.0f * u;
+        if (d)
+            d[3] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_3x3_vf m2_3 = x2 * y3 - y2 * x3;
@@ -1365,6 +1371,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v += 9.0f * u;
+        if (d)
+            d[4] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_3x3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -1375,16 +1383,22 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
         v += 6.0f * u;
+        if (d)
+            d[5] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = 2.0f * u;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v += 3.0f * u;
+        if (d)
+            d[6] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
+        if (d)
+            d[7] = ptp_3x3_vfirst(v) * 9.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_3x3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -1394,6 +1408,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         const ptp_3x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v += 3.0f * u;
+        if (d)
+            d[8] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_3x3_vf m2_8 = x2 * y8 - y2 * x8;
@@ -1407,6 +1423,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v += 9.0f * u;
+        if (d)
+            d[9] = ptp_3x3_vfirst(v) * 0.183673471f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_3x3_vf m3_8 = x3 * y8 - y3 * x8;
@@ -1429,6 +1447,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += 18.0f * u;
+        if (d)
+            d[10] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_3x3_vf m1_11 = x1 * y11 - y1 * x11;
@@ -1454,6 +1474,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 18.0f * u;
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v += 27.0f * u;
+        if (d)
+            d[11] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         u = -((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
@@ -1477,6 +1499,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 18.0f * u;
         u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v += 27.0f * u;
+        if (d)
+            d[12] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_3x3_vf m3_11 = x3 * y11 - y3 * x11;
@@ -1494,6 +1518,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         v += 18.0f * u;
+        if (d)
+            d[13] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = -((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
@@ -1503,12 +1529,16 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v += 9.0f * u;
+        if (d)
+            d[14] = ptp_3x3_vfirst(v) * 0.183673471f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
         v = 2.0f * u;
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v += 3.0f * u;
+        if (d)
+            d[15] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_3x3_vf m1_12 = x1 * y12 - y1 * x12;
@@ -1523,6 +1553,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         const ptp_3x3_vf m5_8 = x5 * y8 - y5 * x8;
         u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
         v += 6.0f * u;
+        if (d)
+            d[16] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_3x3_vf m2_12 = x2 * y12 - y2 * x12;
@@ -1545,6 +1577,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
         v += 18.0f * u;
+        if (d)
+            d[17] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_3x3_vf m3_12 = x3 * y12 - y3 * x12;
@@ -1569,6 +1603,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         u -= ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
         u += ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v += 27.0f * u;
+        if (d)
+            d[18] = ptp_3x3_vfirst(v) * 0.0204081628f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         const ptp_3x3_vf m1_15 = x1 * y15 - y1 * x15;
@@ -1607,6 +1643,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 36.0f * u;
         u = -((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
         v += 54.0f * u;
+        if (d)
+            d[19] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = -((g2 * m3_12 - g3 * m2_12) + g12 * m2_3);
@@ -1641,6 +1679,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 36.0f * u;
         u = ((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
         v += 54.0f * u;
+        if (d)
+            d[20] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         const ptp_3x3_vf m3_15 = x3 * y15 - y3 * x15;
@@ -1660,6 +1700,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         u -= ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
         u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
         v += 27.0f * u;
+        if (d)
+            d[21] = ptp_3x3_vfirst(v) * 0.0204081628f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = -((g1 * m3_15 - g3 * m1_15) + g15 * m1_3);
@@ -1676,6 +1718,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g2 * m7_10 - g7 * m2_10) + g10 * m2_7);
         v += 18.0f * u;
+        if (d)
+            d[22] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = -((g2 * m3_15 - g3 * m2_15) + g15 * m2_3);
@@ -1685,6 +1729,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
         v += 6.0f * u;
+        if (d)
+            d[23] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_3x3_vf m4_13 = x4 * y13 - y4 * x13;
@@ -1701,6 +1747,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += 9.0f * u;
+        if (d)
+            d[24] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_3x3_vf m4_14 = x4 * y14 - y4 * x14;
@@ -1725,6 +1773,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 18.0f * u;
         u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
         v += 27.0f * u;
+        if (d)
+            d[25] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_3x3_vf m4_15 = x4 * y15 - y4 * x15;
@@ -1761,6 +1811,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 36.0f * u;
         u = -((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
         v += 54.0f * u;
+        if (d)
+            d[26] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         u = ((g3 * m5_12 - g5 * m3_12) + g12 * m3_5);
@@ -1799,6 +1851,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 54.0f * u;
         u = -((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
         v += 81.0f * u;
+        if (d)
+            d[27] = ptp_3x3_vfirst(v) * 0.00734693883f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         const ptp_3x3_vf m6_15 = x6 * y15 - y6 * x15;
@@ -1838,6 +1892,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 54.0f * u;
         u = -((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
         v += 81.0f * u;
+        if (d)
+            d[28] = ptp_3x3_vfirst(v) * 0.00734693883f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         u = -((g3 * m7_12 - g7 * m3_12) + g12 * m3_7);
@@ -1869,6 +1925,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 36.0f * u;
         u = -((g5 * m7_10 - g7 * m5_10) + g10 * m5_7);
         v += 54.0f * u;
+        if (d)
+            d[29] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = -((g3 * m7_13 - g7 * m3_13) + g13 * m3_7);
@@ -1889,6 +1947,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 18.0f * u;
         u = -((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
         v += 27.0f * u;
+        if (d)
+            d[30] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = -((g3 * m7_14 - g7 * m3_14) + g14 * m3_7);
@@ -1901,6 +1961,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         v += 9.0f * u;
+        if (d)
+            d[31] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         const ptp_3x3_vf m8_12 = x8 * y12 - y8 * x12;
@@ -1916,6 +1978,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v += 9.0f * u;
+        if (d)
+            d[32] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = ((g2 * m8_12 - g8 * m2_12) + g12 * m2_8);
@@ -1939,6 +2003,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 18.0f * u;
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v += 27.0f * u;
+        if (d)
+            d[33] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = ((g3 * m8_12 - g8 * m3_12) + g12 * m3_8);
@@ -1973,6 +2039,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 36.0f * u;
         u = ((g5 * m8_10 - g8 * m5_10) + g10 * m5_8);
         v += 54.0f * u;
+        if (d)
+            d[34] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         const ptp_3x3_vf m9_15 = x9 * y15 - y9 * x15;
@@ -2011,6 +2079,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 54.0f * u;
         u = ((g5 * m9_10 - g9 * m5_10) + g10 * m5_9);
         v += 81.0f * u;
+        if (d)
+            d[35] = ptp_3x3_vfirst(v) * 0.00734693883f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = -((g3 * m10_12 - g10 * m3_12) + g12 * m3_10);
@@ -2047,6 +2117,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 54.0f * u;
         u = ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
         v += 81.0f * u;
+        if (d)
+            d[36] = ptp_3x3_vfirst(v) * 0.00734693883f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         const ptp_3x3_vf m11_15 = x11 * y15 - y11 * x15;
@@ -2079,6 +2151,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 36.0f * u;
         u = ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
         v += 54.0f * u;
+        if (d)
+            d[37] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = -((g1 * m11_15 - g11 * m1_15) + g15 * m1_11);
@@ -2099,6 +2173,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 18.0f * u;
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v += 27.0f * u;
+        if (d)
+            d[38] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = -((g2 * m11_15 - g11 * m2_15) + g15 * m2_11);
@@ -2111,6 +2187,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v += 9.0f * u;
+        if (d)
+            d[39] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         const ptp_3x3_vf m12_13 = x12 * y13 - y12 * x13;
@@ -2121,6 +2199,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = -((g4 * m9_12 - g9 * m4_12) + g12 * m4_9);
         v += 6.0f * u;
+        if (d)
+            d[40] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 40 */
         const ptp_3x3_vf m12_14 = x12 * y14 - y12 * x14;
@@ -2138,6 +2218,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = ((g5 * m8_13 - g8 * m5_13) + g13 * m5_8);
         v += 18.0f * u;
+        if (d)
+            d[41] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 41 */
         const ptp_3x3_vf m12_15 = x12 * y15 - y12 * x15;
@@ -2157,6 +2239,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         u -= ((g5 * m10_12 - g10 * m5_12) + g12 * m5_10);
         u += ((g6 * m8_13 - g8 * m6_13) + g13 * m6_8);
         v += 27.0f * u;
+        if (d)
+            d[42] = ptp_3x3_vfirst(v) * 0.0204081628f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 42 */
         u = ((g3 * m12_13 - g12 * m3_13) + g13 * m3_12);
@@ -2188,6 +2272,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 36.0f * u;
         u = -((g5 * m10_13 - g10 * m5_13) + g13 * m5_10);
         v += 54.0f * u;
+        if (d)
+            d[43] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 43 */
         const ptp_3x3_vf m14_15 = x14 * y15 - y14 * x15;
@@ -2219,6 +2305,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 36.0f * u;
         u = ((g6 * m9_14 - g9 * m6_14) + g14 * m6_9);
         v += 54.0f * u;
+        if (d)
+            d[44] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 44 */
         u = ((g3 * m12_15 - g12 * m3_15) + g15 * m3_12);
@@ -2236,6 +2324,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         u -= ((g6 * m11_13 - g11 * m6_13) + g13 * m6_11);
         u += ((g7 * m9_14 - g9 * m7_14) + g14 * m7_9);
         v += 27.0f * u;
+        if (d)
+            d[45] = ptp_3x3_vfirst(v) * 0.0204081628f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 45 */
         u = ((g3 * m13_15 - g13 * m3_15) + g15 * m3_13);
@@ -2252,6 +2342,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g6 * m11_14 - g11 * m6_14) + g14 * m6_11);
         v += 18.0f * u;
+        if (d)
+            d[46] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 46 */
         u = ((g3 * m14_15 - g14 * m3_15) + g15 * m3_14);
@@ -2261,12 +2353,16 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g7 * m10_15 - g10 * m7_15) + g15 * m7_10);
         v += 6.0f * u;
+        if (d)
+            d[47] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 47 */
         u = ((g4 * m12_13 - g12 * m4_13) + g13 * m4_12);
         v = 2.0f * u;
         u = -((g8 * m9_12 - g9 * m8_12) + g12 * m8_9);
         v += 3.0f * u;
+        if (d)
+            d[48] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 48 */
         u = ((g4 * m12_14 - g12 * m4_14) + g14 * m4_12);
@@ -2276,6 +2372,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g8 * m9_13 - g9 * m8_13) + g13 * m8_9);
         v += 9.0f * u;
+        if (d)
+            d[49] = ptp_3x3_vfirst(v) * 0.183673471f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 49 */
         u = ((g4 * m12_15 - g12 * m4_15) + g15 * m4_12);
@@ -2292,6 +2390,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g8 * m10_13 - g10 * m8_13) + g13 * m8_10);
         v += 18.0f * u;
+        if (d)
+            d[50] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 50 */
         u = ((g7 * m12_13 - g12 * m7_13) + g13 * m7_12);
@@ -2312,6 +2412,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 18.0f * u;
         u = -((g9 * m10_13 - g10 * m9_13) + g13 * m9_10);
         v += 27.0f * u;
+        if (d)
+            d[51] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 51 */
         u = ((g4 * m14_15 - g14 * m4_15) + g15 * m4_14);
@@ -2332,6 +2434,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 18.0f * u;
         u = -((g9 * m10_14 - g10 * m9_14) + g14 * m9_10);
         v += 27.0f * u;
+        if (d)
+            d[52] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 52 */
         u = ((g7 * m12_15 - g12 * m7_15) + g15 * m7_12);
@@ -2348,6 +2452,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 12.0f * u;
         u = -((g9 * m11_14 - g11 * m9_14) + g14 * m9_11);
         v += 18.0f * u;
+        if (d)
+            d[53] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 53 */
         u = ((g7 * m13_15 - g13 * m7_15) + g15 * m7_13);
@@ -2357,22 +2463,30 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = -((g10 * m11_14 - g11 * m10_14) + g14 * m10_11);
         v += 9.0f * u;
+        if (d)
+            d[54] = ptp_3x3_vfirst(v) * 0.183673471f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 54 */
         u = ((g7 * m14_15 - g14 * m7_15) + g15 * m7_14);
         v = 2.0f * u;
         u = -((g10 * m11_15 - g11 * m10_15) + g15 * m10_11);
         v += 3.0f * u;
+        if (d)
+            d[55] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 55 */
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
         v = u;
+        if (d)
+            d[56] = ptp_3x3_vfirst(v) * 9.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 56 */
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
         v = 2.0f * u;
         u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
         v += 3.0f * u;
+        if (d)
+            d[57] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 57 */
         u = ((g8 * m12_15 - g12 * m8_15) + g15 * m8_12);
@@ -2382,6 +2496,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
         v += 6.0f * u;
+        if (d)
+            d[58] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 58 */
         u = ((g11 * m12_13 - g12 * m11_13) + g13 * m11_12);
@@ -2394,6 +2510,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v += 9.0f * u;
+        if (d)
+            d[59] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 59 */
         u = ((g8 * m14_15 - g14 * m8_15) + g15 * m8_14);
@@ -2406,6 +2524,8 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 6.0f * u;
         u = ((g10 * m13_14 - g13 * m10_14) + g14 * m10_13);
         v += 9.0f * u;
+        if (d)
+            d[60] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 60 */
         u = ((g11 * m12_15 - g12 * m11_15) + g15 * m11_12);
@@ -2415,16 +2535,22 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         v += 3.0f * u;
         u = ((g10 * m13_15 - g13 * m10_15) + g15 * m10_13);
         v += 6.0f * u;
+        if (d)
+            d[61] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 61 */
         u = ((g11 * m13_15 - g13 * m11_15) + g15 * m11_13);
         v = 2.0f * u;
         u = ((g10 * m14_15 - g14 * m10_15) + g15 * m10_14);
         v += 3.0f * u;
+        if (d)
+            d[62] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 62 */
         u = ((g11 * m14_15 - g14 * m11_15) + g15 * m11_14);
         v = u;
+        if (d)
+            d[63] = ptp_3x3_vfirst(v) * 9.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 63 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -2433,6 +2559,24 @@ static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size
         notgt &= 1;
         ptp_3x3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_3X3_RESTRICT cls)
+{
+    ptp_3x3_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_3x3_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_3x3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

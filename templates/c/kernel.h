@@ -25,7 +25,8 @@ extern "C" {
 
 /* The {{PLANES}} control planes of one patch, all four components, at true scale. */
 void {{PREFIX}}planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P ({{VALUE}}) for every plane. */
+/* d[P] = the value of plane P ({{VALUE}}) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void {{PREFIX}}values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: {{UPREFIX}}FRONT, {{UPREFIX}}BACK or {{UPREFIX}}SILHOUETTE. */
 unsigned {{PREFIX}}classify(const float cp[][4], const float eye[4]);
@@ -91,6 +92,11 @@ static inline void {{PREFIX}}vstore(unsigned char *cls, {{PREFIX}}vm c, size_t c
     for (i = 0; i < count && i < {{UPREFIX}}VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float {{PREFIX}}vfirst({{PREFIX}}vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline {{PREFIX}}vf {{PREFIX}}vabsmax({{PREFIX}}vf r, {{PREFIX}}vf x)
 {
@@ -113,6 +119,10 @@ static inline void {{PREFIX}}vstore(unsigned char *cls, {{PREFIX}}vm c, size_t c
 static inline {{PREFIX}}vf {{PREFIX}}vabsmax({{PREFIX}}vf r, {{PREFIX}}vf x)
 {
     return {{UPREFIX}}ABSMAX(r, x);
+}
+static inline float {{PREFIX}}vfirst({{PREFIX}}vf v)
+{
+    return v;
 }
 #endif
 {{TABLES}}
