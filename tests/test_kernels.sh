@@ -305,6 +305,21 @@ for cc in "gcc -std=c99" "clang -std=c99" "g++ -std=c++11 -x c++" "clang++ -std=
         notok "bicubic clip, world, certified and table headers in one program ($cc)" "$(grep -m2 error "$tmp/err")"
 done
 
+# alpha(): projections stored as glm (OpenGL, Vulkan, reversed Z) and DirectXMath (LH, RH,
+# reversed Z) store them give clip-space classes equal to the world-space header's on the models
+# (tests/host_alpha.c, with the default-named headers above), built as C and as C++.
+for cc in "gcc -std=c11" "g++ -std=c++11 -x c++"; do
+    command -v ${cc%% *} >/dev/null || continue
+    if ! ls "$models"/bigguy.bez "$models"/teapot.bez >/dev/null 2>&1; then
+        missing "$models" "alpha() on the models"
+    elif $cc -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -I"$tmp" tests/host_alpha.c -x none \
+        build/gcc/libptptest.a -lm -o "$tmp/host_alpha" 2>"$tmp/err"; then
+        run_host "alpha ($cc)" "$tmp/host_alpha" "$models"/bigguy.bez "$models"/teapot.bez
+    else
+        notok "host_alpha compiles with $cc" "$(grep -m2 error "$tmp/err")"
+    fi
+done
+
 # C++: bicubic headers (clip, world, certified, refine 2) with their implementations compile as
 # C++11 to C++20 with g++ and clang++, -pedantic -Werror, and the hosts (C and C++ alike) pass
 # at C++11 and C++20; -ffast-math and its parts are refused by #error saying why.

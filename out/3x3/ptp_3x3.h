@@ -6,8 +6,11 @@
  * k = i*4 + j with i along u. The 64 control planes t_P of the tangent plane
  * T = cross4(B, dB/du, dB/dv) have bidegree 7x7, P = I*8 + J with I along u.
  * Clip space: the points are in clip space and eye = (0, 0, alpha, 0); the values are
- * d_P = eye.z * t_P.z. alpha = sign(det Proj) * Proj[2][3]: > 0 for OpenGL and < 0 for
- * Direct3D projections (reversed Z included); negate it to flip the orientation.
+ * d_P = eye.z * t_P.z. alpha = sign(det P) * P(2, 3), P(2, 3) the element in row 2,
+ * column 3 of the projection P for column vectors (clip = P * view), which carries
+ * view w into clip z: > 0 for glm's OpenGL and DirectXMath's RH projections, < 0 for
+ * Vulkan's y flip and DirectXMath's LH (reversed Z keeps the sign); negate it to flip
+ * the orientation. The C header's <prefix>alpha() computes it from a matrix.
  * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule strict: back iff every d_P < 0, front iff every d_P > 0.
  * A NaN value makes a patch silhouette. Values are at true scale (plane_scale 1).
  *
@@ -60,6 +63,20 @@ void ptp_3x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
  * soa[(k * 4 + c) * stride + p], stride >= patch_count. */
 void ptp_3x3_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
+
+/* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
+ * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
+ * OpenGL, glm and Vulkan programs hold it; DirectXMath's XMMATRIX and XMFLOAT4X4 too: they hold
+ * M = P^T for row vectors (clip = view * M) row by row, the same 16 floats. ROW_MAJOR: P(r, c) at
+ * proj[r * 4 + c] (P written row by row, as on paper). */
+#define PTP_3X3_COLUMN_MAJOR 0
+#define PTP_3X3_ROW_MAJOR 1
+/* alpha of the clip-space eye (0, 0, alpha, 0) for a perspective projection proj in layout:
+ * sign(det P) * P(2, 3). The view-space eye (0, 0, 0, 1) maps to column 3 of P, (0, 0, P(2, 3),
+ * 0), and cross4 of transformed points is det(P) P^-T cross4, so the sign of det P keeps the
+ * world-space classes (for a model-view matrix of positive determinant; negate alpha for a
+ * mirroring one). 0 if det P is 0. */
+float ptp_3x3_alpha(const float proj[16], int layout);
 
 #ifdef __cplusplus
 }
@@ -148,6 +165,30 @@ static inline float ptp_3x3_vfirst(ptp_3x3_vf v)
     return v;
 }
 #endif
+
+float ptp_3x3_alpha(const float proj[16], int layout)
+{
+    double m[4][4], s[6], c[6], det;
+    int r, k;
+    for (r = 0; r < 4; r++)
+        for (k = 0; k < 4; k++)
+            m[r][k] = proj[layout == PTP_3X3_ROW_MAJOR ? r * 4 + k : k * 4 + r];
+    /* det P by Laplace along rows 0 and 1: their 2x2 minors s times the complementary c */
+    s[0] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    s[1] = m[0][0] * m[1][2] - m[0][2] * m[1][0];
+    s[2] = m[0][0] * m[1][3] - m[0][3] * m[1][0];
+    s[3] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    s[4] = m[0][1] * m[1][3] - m[0][3] * m[1][1];
+    s[5] = m[0][2] * m[1][3] - m[0][3] * m[1][2];
+    c[0] = m[2][2] * m[3][3] - m[2][3] * m[3][2];
+    c[1] = m[2][1] * m[3][3] - m[2][3] * m[3][1];
+    c[2] = m[2][1] * m[3][2] - m[2][2] * m[3][1];
+    c[3] = m[2][0] * m[3][3] - m[2][3] * m[3][0];
+    c[4] = m[2][0] * m[3][2] - m[2][2] * m[3][0];
+    c[5] = m[2][0] * m[3][1] - m[2][1] * m[3][0];
+    det = s[0] * c[0] - s[1] * c[1] + s[2] * c[2] + s[3] * c[3] - s[4] * c[4] + s[5] * c[5];
+    return det > 0 ? (float)m[2][3] : det < 0 ? (float)-m[2][3] : 0.0f;
+}
 
 #define PTP_3X3_TERMS 516
 
