@@ -1,4 +1,4 @@
-/* embed.c: a build step, not part of ptpgen: turns the files of templates/ into C strings.
+/* embed.c: a build step, not part of ptpgen: turns the files of templates/ into C arrays.
  * Usage: embed templates/T/FILE... > templates.c; each is named by its path below templates/. */
 #include <stdio.h>
 #include <string.h>
