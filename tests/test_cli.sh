@@ -522,6 +522,12 @@ rc=$?
 "$P" --degree 3 >"$tmp/q.json" && "$P" --domain quad --degree 3 >"$tmp/q2.json" && cmp -s "$tmp/q.json" "$tmp/q2.json" &&
     ! grep -q '"domain"' "$tmp/q.json" && ok "--domain quad is the default, byte for byte, and its json names no domain" ||
     notok "--domain quad" "differs"
+"$P" --domain triangle --degree 3 --target c >"$tmp/c3.h" && "$P" --degree 2x3 --target c >"$tmp/q23.h" &&
+    grep -q '^#define PTP_TRI3_DOMAIN_TRIANGLE 1$' "$tmp/c3.h" && grep -q '^#define PTP_TRI3_DEGREE 3$' "$tmp/c3.h" &&
+    ! grep -q '^#define .*\(DEGREE_U\|DOMAIN_QUAD\)' "$tmp/c3.h" && grep -q '^#define PTP_2X3_DOMAIN_QUAD 1$' "$tmp/q23.h" &&
+    grep -q '^#define PTP_2X3_DEGREE_V 3$' "$tmp/q23.h" && ! grep -q '^#define .*DOMAIN_TRIANGLE' "$tmp/q23.h" &&
+    ok "C headers record their domain: DOMAIN_TRIANGLE and DEGREE, or DOMAIN_QUAD and DEGREE_U, DEGREE_V" ||
+    notok "C header domain macros" "$(grep -h 'DOMAIN\|DEGREE' "$tmp/c3.h" "$tmp/q23.h" | tr '\n' ' ')"
 "$P" --domain triangle --degree 3 --target table >"$tmp/t3.h" && grep -q 'static const unsigned short ptp_tri3_table_idx\[PTP_TRI3_TERMS\]' "$tmp/t3.h" &&
     grep -q 'Control point k = (3-i)(4-i)/2 + 3-i-j' "$tmp/t3.h" &&
     ok "--domain triangle --target table: prefix ptp_tri3_, the triangular numbering" || notok "triangle table" "$(head -5 "$tmp/t3.h")"

@@ -622,10 +622,14 @@ static int put_code(sbuf *o, char *flops, const tp_table *t, const out_info *inf
 /* The macros that record the header's variant (the options it was generated with). */
 static void put_variant(sbuf *o, const tp_table *t, const out_info *info, const char *up)
 {
-    sbuf_printf(o, "#define %sDEGREE_U %d\n#define %sDEGREE_V %d\n"
-                   "#define %sSPACE_%s 1\n#define %sRULE_%s 1\n"
-                   "#define %sCERTIFIED %d\n#define %sREFINE %d\n",
-                up, t->dom.n, up, t->dom.m, up, info->space == OUT_WORLD ? "WORLD" : "CLIP", up,
+    if (t->dom.kind == TP_TRI)
+        sbuf_printf(o, "#define %sDOMAIN_TRIANGLE 1\n#define %sDEGREE %d\n", up, up, t->dom.n);
+    else
+        sbuf_printf(o, "#define %sDOMAIN_QUAD 1\n#define %sDEGREE_U %d\n#define %sDEGREE_V %d\n",
+                    up, up, t->dom.n, up, t->dom.m);
+    sbuf_printf(o, "#define %sSPACE_%s 1\n#define %sRULE_%s 1\n#define %sCERTIFIED %d\n"
+                   "#define %sREFINE %d\n",
+                up, info->space == OUT_WORLD ? "WORLD" : "CLIP", up,
                 info->rule == OUT_DEGENERATE ? "DEGENERATE" : "STRICT", up, info->certified != 0,
                 up, info->refine);
 }

@@ -28,9 +28,10 @@
 extern "C" {
 #endif
 
-/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
- * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+/* The variant: DOMAIN_QUAD with bidegree DEGREE_U x DEGREE_V, or DOMAIN_TRIANGLE with DEGREE
+ * (POINTS control points, PLANES control planes); SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
  * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_1X3_DOMAIN_QUAD 1
 #define PTP_1X3_DEGREE_U 1
 #define PTP_1X3_DEGREE_V 3
 #define PTP_1X3_SPACE_CLIP 1

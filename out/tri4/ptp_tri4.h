@@ -28,11 +28,11 @@
 extern "C" {
 #endif
 
-/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
- * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+/* The variant: DOMAIN_QUAD with bidegree DEGREE_U x DEGREE_V, or DOMAIN_TRIANGLE with DEGREE
+ * (POINTS control points, PLANES control planes); SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
  * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
-#define PTP_TRI4_DEGREE_U 4
-#define PTP_TRI4_DEGREE_V 4
+#define PTP_TRI4_DOMAIN_TRIANGLE 1
+#define PTP_TRI4_DEGREE 4
 #define PTP_TRI4_SPACE_CLIP 1
 #define PTP_TRI4_RULE_STRICT 1
 #define PTP_TRI4_CERTIFIED 0
