@@ -218,7 +218,7 @@ static int prepare(model *m)
                 hi[c] = fmax(hi[c], m->b[p].p[k][c]);
             }
         if (cone_ncone(&m->b[p], &m->ncone[p]) || cone_tcone(&m->b[p], &m->tcone[p]) ||
-            cone_planes(&m->b[p], CR_T_TERMS, cr_t_idx, cr_t_iwgt, CR_T_DENOM, &m->t[p]))
+            cone_planes(&m->b[p], CR_T_TERMS, cr_t_table_idx, cr_t_table_iwgt, CR_T_DENOM, &m->t[p]))
             return -4;
     }
     for (c = 0; c < 3; c++)
@@ -292,7 +292,7 @@ static int exact_unsafe(const model *m, size_t p, const float eyef[3], int sampl
     float b[16][3];
     exact_int c[64];
     patch_floats(m, p, b);
-    if (exact_values((const float(*)[3])b, eyef, CR_T_TERMS, cr_t_idx, cr_t_iwgt, c))
+    if (exact_values((const float(*)[3])b, eyef, CR_T_TERMS, cr_t_table_idx, cr_t_table_iwgt, c))
         return -1;
     return exact_sample_positive(c, samples);
 }
@@ -315,7 +315,7 @@ static long exact_check(const model *m, const float eyef[3], long *checked)
         exact_int c[64];
         double cd[64], scale = 0;
         patch_floats(m, p, b);
-        if (exact_values((const float(*)[3])b, eyef, CR_T_TERMS, cr_t_idx, cr_t_iwgt, c))
+        if (exact_values((const float(*)[3])b, eyef, CR_T_TERMS, cr_t_table_idx, cr_t_table_iwgt, c))
             return -1;
         cone_values(&m->t[p], eye, cd);
         for (k = 0; k < 64; k++)

@@ -3,6 +3,8 @@
 #ifndef CHECK_H
 #define CHECK_H
 
+#include "core/ptp.h"
+
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -63,13 +65,48 @@ static inline void prop_report(const prop *p)
           p->tried ? p->detail : "no case was tried", p->bad, p->tried);
 }
 
-/* splitmix64: the next value of the deterministic pseudo-random stream *state. */
-static inline uint64_t check_rand(uint64_t *state)
+/* The test program's deterministic pseudo-random stream (ptp_splitmix64): a program seeds it by
+ * assigning check_rng before its first draw. */
+static uint64_t check_rng = 1;
+
+static inline uint64_t check_rnd(void)
 {
-    uint64_t z = (*state += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return z ^ (z >> 31);
+    return ptp_splitmix64(&check_rng);
+}
+
+/* A value below n (> 0; the modulo bias does not matter here). */
+static inline unsigned check_rnd_below(unsigned n)
+{
+    return (unsigned)(check_rnd() % n);
+}
+
+/* A uniform value of at most bits bits (0 < bits <= 128). */
+static inline ptp_u128 check_rnd_bits(int bits)
+{
+    ptp_u128 u = check_rnd();
+    u = (u << 64) | check_rnd();
+    return bits >= 128 ? u : u & (((ptp_u128)1 << bits) - 1);
+}
+
+/* Writes v in decimal to buf (at least 41 bytes), independently of the library's i128_to_str;
+ * returns buf. */
+static inline char *check_i128_str(char *buf, ptp_i128 v)
+{
+    const uint64_t e19 = 10000000000000000000u;
+    ptp_u128 u = v < 0 ? (ptp_u128)0 - (ptp_u128)v : (ptp_u128)v;
+    uint64_t parts[3];
+    int n = 0, i;
+    char *p = buf;
+    do {
+        parts[n++] = (uint64_t)(u % e19);
+        u /= e19;
+    } while (u);
+    if (v < 0)
+        *p++ = '-';
+    p += sprintf(p, "%llu", (unsigned long long)parts[n - 1]);
+    for (i = n - 2; i >= 0; i--)
+        p += sprintf(p, "%019llu", (unsigned long long)parts[i]);
+    return buf;
 }
 
 /* The exit status of a test program: 0 when every check passed. */

@@ -12,20 +12,27 @@
 #define FN(name) CAT(PFX, name)
 #define MACRO(name) CAT(UPFX, name)
 
-/* Runs the header's functions over one set and accumulates the three comparisons; returns how
- * often classify_batch or classify_soa differs from classify. */
-static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_result *res_classify,
-                   kref_result *res_batch, kref_result *res_planes)
+/* The three comparisons over all sets, and how often classify_batch or classify_soa differs
+ * from classify. */
+typedef struct {
+    int world;
+    kref_result classify, batch, planes;
+    int paths_differ;
+} results;
+
+/* Runs the header's functions over one set and accumulates into ctx (results); returns 0. */
+static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
 {
+    results *r = ctx;
     size_t p, L = (size_t)ref->L;
     unsigned *cls = malloc(s->count * sizeof *cls);
     unsigned char *batch = malloc(s->count), *soa_cls = malloc(s->count);
-    /* the SoA copy, at a stride that is not the count (nor a power of two) */
+    /* the SoA copy, at a stride that is not the count (nor a power of two); zeroed, as gcc
+     * cannot see the copy below fill what classify_soa reads */
     size_t stride = s->count + 3, k;
-    float *soa = malloc((size_t)ref->K * 4 * stride * sizeof *soa);
+    float *soa = calloc((size_t)ref->K * 4 * stride, sizeof *soa);
     float *d = malloc(s->count * L * sizeof *d), *dp = malloc(s->count * L * sizeof *dp);
     float(*t)[4] = malloc(L * sizeof *t);
-    int paths_differ = 0;
     for (p = 0; p < s->count; p++) {
         const float(*cp)[4] = (const float(*)[4])s->cp + p * (size_t)ref->K;
         size_t x;
@@ -35,7 +42,7 @@ static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_resul
         FN(values)(cp, s->eye, d + p * L);
         FN(planes)(cp, t);
         for (x = 0; x < L; x++)
-            dp[p * L + x] = world ? s->eye[0] * t[x][0] + s->eye[1] * t[x][1] +
+            dp[p * L + x] = r->world ? s->eye[0] * t[x][0] + s->eye[1] * t[x][1] +
                                         s->eye[2] * t[x][2] + s->eye[3] * t[x][3]
                                   : s->eye[2] * t[x][2];
     }
@@ -45,12 +52,12 @@ static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_resul
             soa[k * stride + p] = ((const float *)s->cp)[p * (size_t)ref->K * 4 + k];
     FN(classify_soa)(soa, stride, s->count, s->eye, soa_cls);
     for (p = 0; p < s->count; p++)
-        paths_differ += (batch[p] != cls[p]) + (soa_cls[p] != cls[p]);
-    kref_check(res_classify, ref, s, cls, d);
+        r->paths_differ += (batch[p] != cls[p]) + (soa_cls[p] != cls[p]);
+    kref_check(&r->classify, ref, s, cls, d);
     for (p = 0; p < s->count; p++)
         cls[p] = batch[p];
-    kref_check(res_batch, ref, s, cls, NULL);
-    kref_check(res_planes, ref, s, cls, dp);
+    kref_check(&r->batch, ref, s, cls, NULL);
+    kref_check(&r->planes, ref, s, cls, dp);
     free(cls);
     free(batch);
     free(soa_cls);
@@ -58,49 +65,39 @@ static int run_set(const kref_ref *ref, const kref_set *s, int world, kref_resul
     free(d);
     free(dp);
     free(t);
-    return paths_differ;
+    return 0;
 }
 
 int main(int argc, char **argv)
 {
-    kref_result res_classify, res_batch, res_planes;
+    results r;
     kref_args o;
     kref_ref ref;
-    ptp_error err;
     char label[200];
-    int si, i, paths_differ = 0, ok = 1;
+    int ok = 1;
     if (kref_parse_args(&o, argc, argv, "host_c", 0))
         return 2;
-    memset(&res_classify, 0, sizeof res_classify);
-    memset(&res_batch, 0, sizeof res_batch);
-    memset(&res_planes, 0, sizeof res_planes);
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
-        return !check(0, o.label, "%s", err.msg);
-    ref.certified = o.certified;
+    memset(&r, 0, sizeof r);
+    r.world = o.space == KREF_WORLD;
+    if (kref_init_args(&ref, &o))
+        return 1;
     if (ref.K != MACRO(POINTS) || ref.L != MACRO(PLANES)) {
         kref_clear(&ref);
         return !check(0, o.label, "the header's bidegree differs from --degree");
     }
-    for (si = 0; si < o.nsources; si++) {
-        kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);
-        if (!sets) {
-            kref_clear(&ref);
-            return 1;
-        }
-        for (i = 0; i < o.src[si].nsets; i++)
-            paths_differ += run_set(&ref, &sets[i], o.space == KREF_WORLD, &res_classify, &res_batch,
-                                 &res_planes);
-        kref_free_sets(sets, (int)o.src[si].nsets);
+    if (kref_each_set(&ref, &o, run_set, &r, NULL)) {
+        kref_clear(&ref);
+        return 1;
     }
     snprintf(label, sizeof label, "%s classify and values", o.label);
-    ok &= kref_report(&res_classify, label);
+    ok &= kref_report(&r.classify, label);
     snprintf(label, sizeof label, "%s classify_batch", o.label);
-    ok &= kref_report(&res_batch, label);
+    ok &= kref_report(&r.batch, label);
     snprintf(label, sizeof label, "%s classify_batch and classify_soa equal classify on every patch",
              o.label);
-    ok &= check(paths_differ == 0, label, "they differ %d times", paths_differ);
+    ok &= check(r.paths_differ == 0, label, "they differ %d times", r.paths_differ);
     snprintf(label, sizeof label, "%s planes (dotted with the eye)", o.label);
-    ok &= kref_report(&res_planes, label);
+    ok &= kref_report(&r.planes, label);
     kref_clear(&ref);
     return check_exit() || !ok;
 }

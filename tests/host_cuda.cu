@@ -11,9 +11,17 @@ extern "C" {
 #include <stdlib.h>
 #include <string.h>
 
-/* Runs the kernel over one set; 0 on success, else a "not ok" line was printed. */
-static int run_set(const kref_args *o, const kref_ref *ref, const kref_set *s, kref_result *res)
+/* The command line and the comparisons over all sets. */
+typedef struct {
+    const kref_args *o;
+    kref_result res;
+} run;
+
+/* Runs the kernel over one set (ctx: a run); 0 on success, else a "not ok" line was printed. */
+static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
 {
+    const kref_args *o = ((run *)ctx)->o;
+    kref_result *res = &((run *)ctx)->res;
     size_t K = (size_t)ref->K, L = (size_t)ref->L, groups = (s->count + o->q - 1) / o->q;
     size_t gx = groups < 65535 ? groups : 65535, gy = (groups + gx - 1) / gx;
     unsigned *cls = (unsigned *)malloc(s->count * sizeof *cls);
@@ -58,31 +66,21 @@ int main(int argc, char **argv)
 {
     kref_args o;
     kref_ref ref;
-    kref_result res;
-    ptp_error err;
-    int ndev = 0, si, i, failed = 0;
+    run r;
+    int ndev = 0, failed;
     if (kref_parse_args(&o, argc, argv, "host_cuda", KREF_NEED_BLOCK))
         return 2;
     if (cudaGetDeviceCount(&ndev) != cudaSuccess || ndev == 0) {
         printf("# %s: no CUDA device here: built, not run\n", o.label);
         return 0;
     }
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
-        return !check(0, o.label, "%s", err.msg);
-    ref.certified = o.certified;
-    memset(&res, 0, sizeof res);
-    for (si = 0; si < o.nsources && !failed; si++) {
-        kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);
-        if (!sets) {
-            failed = 1;
-            break;
-        }
-        for (i = 0; i < o.src[si].nsets && !failed; i++)
-            failed = run_set(&o, &ref, &sets[i], &res);
-        kref_free_sets(sets, (int)o.src[si].nsets);
-    }
+    if (kref_init_args(&ref, &o))
+        return 1;
+    memset(&r, 0, sizeof r);
+    r.o = &o;
+    failed = kref_each_set(&ref, &o, run_set, &r, NULL) != 0;
     if (!failed)
-        failed = !kref_report(&res, o.label);
+        failed = !kref_report(&r.res, o.label);
     kref_clear(&ref);
     return failed || check_exit();
 }

@@ -472,6 +472,23 @@ static void release(state *st)
     free(st->src_text);
 }
 
+/* What every set of a run shares: kref_each_set's context. */
+typedef struct {
+    state *st;
+    const kref_args *o;
+    kref_result *res;
+    hygiene *h;
+    long runs; /* --bench RUNS, or 0 */
+} run;
+
+/* Runs and checks one set (ctx: a run), and times it under --bench; 0 on success. */
+static int each_set(void *ctx, const kref_ref *ref, const kref_set *s)
+{
+    const run *r = ctx;
+    return run_set(r->st, r->o, ref, s, r->res, r->h) != 0 ||
+           (r->runs && bench_set(r->st, r->o, s, r->runs) != 0);
+}
+
 int main(int argc, char **argv)
 {
     kref_args o;
@@ -479,31 +496,23 @@ int main(int argc, char **argv)
     kref_ref ref;
     kref_result res;
     hygiene h;
-    ptp_error err;
     cl_platform_id plat;
     cl_device_id dev;
     cl_int e;
-    int si, ok = 0, have_ref = 0, nsets_total = 0;
-    const char *bench = kref_take_bench(&argc, argv);
-    long runs = 0;
+    int ok = 0, have_ref = 0, nsets_total = 0;
+    long runs;
+    run r;
 
-    if (kref_parse_args(&o, argc, argv, "host_opencl", KREF_NEED_FILE | KREF_NEED_KERNEL | KREF_NEED_BLOCK))
+    if (kref_parse_bench_args(&o, &runs, argc, argv, "host_opencl",
+                              KREF_NEED_FILE | KREF_NEED_KERNEL | KREF_NEED_BLOCK))
         return 2;
-    if (bench && !(runs = kref_bench_runs(bench))) {
-        check(0, o.label, "--bench takes RUNS, 1 to 1000");
-        return 2;
-    }
     memset(&st, 0, sizeof st);
     memset(&res, 0, sizeof res);
     memset(&h, 0, sizeof h);
-    memset(&err, 0, sizeof err);
 
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err)) {
-        check(0, o.label, "kref_init(%dx%d): %s", o.n, o.m, err.msg);
+    if (kref_init_args(&ref, &o))
         goto done;
-    }
     have_ref = 1;
-    ref.certified = o.certified;
     if (pick_device(o.label, &plat, &dev))
         goto done;
     {
@@ -528,19 +537,13 @@ int main(int argc, char **argv)
            o.rule == KREF_STRICT ? "strict" : "degenerate", o.pq, o.q,
            o.planes ? ", planes" : "");
 
-    for (si = 0; si < o.nsources; si++) {
-        int nsets = (int)o.src[si].nsets, i, failed = 0;
-        kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);
-        if (!sets)
-            goto done;
-        for (i = 0; i < nsets && !failed; i++)
-            failed = run_set(&st, &o, &ref, &sets[i], &res, &h) != 0 ||
-                     (runs && bench_set(&st, &o, &sets[i], runs) != 0);
-        kref_free_sets(sets, nsets);
-        if (failed)
-            goto done;
-        nsets_total += nsets;
-    }
+    r.st = &st;
+    r.o = &o;
+    r.res = &res;
+    r.h = &h;
+    r.runs = runs;
+    if (kref_each_set(&ref, &o, each_set, &r, &nsets_total))
+        goto done;
 
     {
         char name[400];

@@ -56,8 +56,10 @@ static void sample(double *lo, double *hi, const double *d, int pu, int pv, int 
     }
 }
 
-static void run_set(tally *t, const kref_ref *ref, const kref_set *s)
+/* Classifies one set and counts into ctx (a tally); returns 0. */
+static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
 {
+    tally *t = ctx;
     size_t p, L = (size_t)ref->L;
     double *d = malloc(2 * L * sizeof *d), *bound = d + L;
     unsigned char *batch = malloc(s->count);
@@ -93,30 +95,24 @@ static void run_set(tally *t, const kref_ref *ref, const kref_set *s)
     }
     free(d);
     free(batch);
+    return 0;
 }
 
 int main(int argc, char **argv)
 {
     kref_args o;
     kref_ref ref;
-    ptp_error err;
     tally t;
     char name[300];
-    int si, i, ok = 1;
+    int ok = 1;
     if (kref_parse_args(&o, argc, argv, "host_refine", 0))
         return 2;
     memset(&t, 0, sizeof t);
-    if (kref_init(&ref, o.n, o.m, o.space, o.rule, &err))
-        return !check(0, o.label, "%s", err.msg);
-    for (si = 0; si < o.nsources; si++) {
-        kref_set *sets = kref_source_sets(&ref, &o.src[si], o.label);
-        if (!sets) {
-            kref_clear(&ref);
-            return 1;
-        }
-        for (i = 0; i < o.src[si].nsets; i++)
-            run_set(&t, &ref, &sets[i]);
-        kref_free_sets(sets, (int)o.src[si].nsets);
+    if (kref_init_args(&ref, &o))
+        return 1;
+    if (kref_each_set(&ref, &o, run_set, &t, NULL)) {
+        kref_clear(&ref);
+        return 1;
     }
     printf("# %s: %zu patches, %zu refined from silhouette to back or front\n", o.label, t.patches,
            t.refined);

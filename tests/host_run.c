@@ -51,22 +51,9 @@ double host_now_ms(void)
 int host_start(kref_args *o, kref_ref *ref, long *runs, int argc, char **argv, const char *host,
                unsigned need)
 {
-    const char *bench = kref_take_bench(&argc, argv);
-    ptp_error perr;
-    if (kref_parse_args(o, argc, argv, host, need))
+    if (kref_parse_bench_args(o, runs, argc, argv, host, need))
         return 2;
-    *runs = 0;
-    if (bench && !(*runs = kref_bench_runs(bench))) {
-        check(0, o->label, "--bench takes RUNS, 1 to 1000");
-        return 2;
-    }
-    memset(&perr, 0, sizeof perr);
-    if (kref_init(ref, o->n, o->m, o->space, o->rule, &perr)) {
-        check(0, o->label, "kref_init(%dx%d): %s", o->n, o->m, perr.msg);
-        return 1;
-    }
-    ref->certified = o->certified;
-    return 0;
+    return kref_init_args(ref, o) ? 1 : 0;
 }
 
 void host_dispatch_shape(uint64_t *gx, uint64_t *gy, size_t count, size_t q, uint64_t max_x)

@@ -165,6 +165,25 @@ kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char
     return sets;
 }
 
+int kref_each_set(const kref_ref *r, const kref_args *a, kref_set_fn fn, void *ctx, int *nsets)
+{
+    int si, i, st = 0;
+    if (nsets)
+        *nsets = 0;
+    for (si = 0; si < a->nsources && !st; si++) {
+        int n = (int)a->src[si].nsets;
+        kref_set *sets = kref_source_sets(r, &a->src[si], a->label);
+        if (!sets)
+            return -1;
+        for (i = 0; i < n && !st; i++)
+            st = fn(ctx, r, &sets[i]);
+        kref_free_sets(sets, n);
+        if (nsets)
+            *nsets += n;
+    }
+    return st;
+}
+
 /* r->den (the lcm of each plane's denominators) and r->wint (den * w per term), or both NULL
  * when a scale overflows 128 bits or a plane's sum of |den * w| reaches 2^47 (exact sets are
  * then refused: exact_values relies on it); PTP_ENOMEM on failure. */
@@ -186,8 +205,7 @@ static int integer_weights(kref_ref *r, ptp_error *err)
         r->den[x] = 1;
     for (x = 0; x < r->t.nterms && !ovf; x++) { /* den = lcm(den, w.den) */
         const tp_term *e = &r->t.terms[x];
-        ptp_i128 g = (ptp_i128)u128_gcd((ptp_u128)r->den[e->plane], (ptp_u128)e->w.den);
-        ovf = i128_mul_ovf(&r->den[e->plane], r->den[e->plane] / g, e->w.den);
+        ovf = rat_lcm_den(&r->den[e->plane], &e->w);
     }
     for (x = 0; x < r->t.nterms && !ovf; x++) {
         const tp_term *e = &r->t.terms[x];
@@ -223,6 +241,15 @@ int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_e
     return st;
 }
 
+int kref_init_args(kref_ref *r, const kref_args *a)
+{
+    ptp_error err;
+    if (kref_init(r, a->n, a->m, a->space, a->rule, &err))
+        return !check(0, a->label, "kref_init(%dx%d): %s", a->n, a->m, err.msg);
+    r->certified = a->certified;
+    return 0;
+}
+
 void kref_clear(kref_ref *r)
 {
     tp_clear(&r->t);
@@ -235,7 +262,7 @@ void kref_clear(kref_ref *r)
 /* A uniform double in [lo, hi) from the stream *s. */
 static double uniform(uint64_t *s, double lo, double hi)
 {
-    return lo + (hi - lo) * (double)(check_rand(s) >> 11) / 9007199254740992.0;
+    return lo + (hi - lo) * (double)(ptp_splitmix64(s) >> 11) / 9007199254740992.0;
 }
 
 static kref_set *alloc_sets(int nsets, size_t count, int K)
@@ -340,7 +367,7 @@ static const char *const exact_kind[EX_KINDS] = {"random", "collapsed edge", "pl
  * negligible for test data). */
 static int64_t irand(uint64_t *s, int64_t lo, int64_t hi)
 {
-    return lo + (int64_t)(check_rand(s) % (uint64_t)(hi - lo + 1));
+    return lo + (int64_t)(ptp_splitmix64(s) % (uint64_t)(hi - lo + 1));
 }
 
 /* Returns g = gcd(|a|, |b|) and sets *x, *y to integers with a x + b y = g (extended Euclid;
@@ -1168,7 +1195,9 @@ int kref_report(const kref_result *res, const char *name)
     return ok;
 }
 
-const char *kref_take_bench(int *argc, char **argv)
+/* Removes "--bench RUNS", which kref_parse_args does not know, from argv and returns RUNS as
+ * given; NULL when absent. A "--bench" without a value stays, for kref_parse_args to refuse. */
+static const char *take_bench(int *argc, char **argv)
 {
     const char *runs = NULL;
     int i, j = 1;
@@ -1183,11 +1212,26 @@ const char *kref_take_bench(int *argc, char **argv)
     return runs;
 }
 
-long kref_bench_runs(const char *s)
+/* RUNS of --bench, 1 to 1000; 0 if s is not such a number. */
+static long bench_runs(const char *s)
 {
     char *end;
     long r;
     errno = 0;
     r = strtol(s, &end, 10);
     return !errno && end != s && !*end && r >= 1 && r <= 1000 ? r : 0;
+}
+
+int kref_parse_bench_args(kref_args *a, long *runs, int argc, char **argv, const char *host,
+                          unsigned need)
+{
+    const char *bench = take_bench(&argc, argv);
+    *runs = 0;
+    if (kref_parse_args(a, argc, argv, host, need))
+        return 2;
+    if (bench && !(*runs = bench_runs(bench))) {
+        check(0, a->label, "--bench takes RUNS, 1 to 1000");
+        return 2;
+    }
+    return 0;
 }

@@ -104,10 +104,19 @@ enum { KREF_NEED_FILE = 1, KREF_NEED_KERNEL = 2, KREF_NEED_BLOCK = 4 };
 int kref_parse_args(kref_args *a, int argc, char **argv, const char *host, unsigned need);
 /* The sets of one source (random, a model or exact), or NULL after printing a "not ok" line. */
 kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char *label);
+/* What a host does with one set; nonzero stops kref_each_set. */
+typedef int (*kref_set_fn)(void *ctx, const kref_ref *r, const kref_set *s);
+/* Makes the sets of each source of a in turn and calls fn(ctx, r, set) on every one until fn
+ * returns nonzero; *nsets (unless NULL) counts the sets made. Returns 0, fn's nonzero value, or
+ * -1 when a source's sets could not be made (after a "not ok" line). */
+int kref_each_set(const kref_ref *r, const kref_args *a, kref_set_fn fn, void *ctx, int *nsets);
 
 /* Derives the table for the reference; 0 on success (messages go to err). The kernel is taken
  * as not certified: a host sets r->certified after this call. */
 int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_error *err);
+/* kref_init for the degree, space and rule of a host's command line a, with its --certified;
+ * 0, or 1 after a "not ok" line. */
+int kref_init_args(kref_ref *r, const kref_args *a);
 void kref_clear(kref_ref *r);
 
 /* nsets sets of count random patches each (deterministic in seed): near-planar patches with
@@ -168,11 +177,10 @@ void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const un
  * exact classes, "kernel unsafe N" and the classes given up. */
 int kref_report(const kref_result *res, const char *name);
 
-/* The hosts' timing option (make bench): removes "--bench RUNS", which kref_parse_args does not
- * know, from argv and returns RUNS as given; NULL when absent. A "--bench" without a value stays,
- * for kref_parse_args to refuse. */
-const char *kref_take_bench(int *argc, char **argv);
-/* RUNS of --bench, 1 to 1000; 0 if s is not such a number. */
-long kref_bench_runs(const char *s);
+/* kref_parse_args for a host that also takes the timing option of make bench, "--bench RUNS"
+ * (1 to 1000): *runs = RUNS, or 0 without it. Returns 2 after a "not ok" line on a usage error,
+ * else 0. */
+int kref_parse_bench_args(kref_args *a, long *runs, int argc, char **argv, const char *host,
+                          unsigned need);
 
 #endif

@@ -179,7 +179,7 @@ for d in 1x1 2x2 3x3 4x4 2x3 3x1; do
     "$P" --degree $d --target table -o "$tmp/t.h" && "$P" --degree $d -o "$tmp/t.json" || notok "table $d" "ptpgen failed"
     for cc in gcc clang; do
         command -v $cc >/dev/null || continue
-        if $cc -std=c99 -Wall -Wextra -pedantic -Werror -include "$tmp/t.h" -DUP=PTP_${n}X${m}_ -DLO=ptp_${n}x${m}_ \
+        if $cc -std=c99 -Wall -Wextra -pedantic -Werror -include "$tmp/t.h" -DUP=PTP_${n}X${m}_ -DLO=ptp_${n}x${m}_table_ \
             "$tmp/dump.c" -o "$tmp/dump" 2>"$tmp/err" && "$tmp/dump" >"$tmp/dump.txt" &&
             python3 "$tmp/cmp_table.py" "$tmp/t.json" "$tmp/dump.txt" 2>"$tmp/err"; then
             ok "table $d compiles with $cc -std=c99 -pedantic -Werror; idx, exact integer and nearest-float weights match"
@@ -190,6 +190,52 @@ for d in 1x1 2x2 3x3 4x4 2x3 3x1; do
 done
 "$P" --degree 12 --target table | grep -q 'No integer form' && ! "$P" --degree 12 --target table | grep -q iwgt &&
     ok "table 12x12 says why it has no 64-bit integer form" || notok "table 12x12" "integer form note missing"
+
+# The vendored C header and table header, implementation included, in one translation unit: no
+# name collides, and the header's planes equal the table's loop.
+cat >"$tmp/both.c" <<'C'
+#define PTP_3X3_IMPLEMENTATION
+#include "ptp_3x3.h"
+#include "ptp_3x3_table.h"
+#include <math.h>
+#include <stdio.h>
+static double cross4z(const float *a, const float *b, const float *c)
+{
+    return a[0] * ((double)b[1] * c[3] - (double)b[3] * c[1]) -
+           b[0] * ((double)a[1] * c[3] - (double)a[3] * c[1]) +
+           c[0] * ((double)a[1] * b[3] - (double)a[3] * b[1]);
+}
+int main(void)
+{
+    float cp[PTP_3X3_POINTS][4], t[PTP_3X3_PLANES][4];
+    double z[PTP_3X3_PLANES] = {0};
+    int x, p, c;
+    for (p = 0; p < PTP_3X3_POINTS; p++)
+        for (c = 0; c < 4; c++)
+            cp[p][c] = (float)((p * 7 + c * 3) % 11) / 11.0f - 0.5f + (c == 3);
+    ptp_3x3_planes((const float(*)[4])cp, t);
+    for (x = 0; x < PTP_3X3_TERMS; x++)
+    {
+        const unsigned short *e = ptp_3x3_table_idx[x];
+        z[e[0]] += ptp_3x3_table_wgt[x] * cross4z(cp[e[1]], cp[e[2]], cp[e[3]]);
+    }
+    for (p = 0; p < PTP_3X3_PLANES; p++)
+        if (fabs(t[p][2] - z[p]) > 1e-4 * (1 + fabs(z[p]))) {
+            printf("plane %d: header %g, table %g\n", p, t[p][2], z[p]);
+            return 1;
+        }
+    return 0;
+}
+C
+for cc in gcc clang; do
+    command -v $cc >/dev/null || continue
+    if $cc -std=c99 -Wall -Wextra -pedantic -Werror -Iout/3x3 "$tmp/both.c" -o "$tmp/both" -lm 2>"$tmp/err" &&
+        "$tmp/both" >"$tmp/err" 2>&1; then
+        ok "out/3x3/ptp_3x3.h (implementation) and ptp_3x3_table.h compile together with $cc; planes agree"
+    else
+        notok "ptp_3x3.h and ptp_3x3_table.h together with $cc" "$(head -3 "$tmp/err" | tr '\n' ' ')"
+    fi
+done
 
 # Stats: the paper's matrix for bicubic.
 "$P" --degree 3 --target stats >"$tmp/s.txt"
@@ -359,7 +405,7 @@ for c in "3x3" "2x3 --threads-per-patch 8" "3x1 --threads-per-patch 5" "4x4"; do
     set -- $c
     d=$1; n=${d%x*}; m=${d#*x}
     if "$P" --degree "$@" --target table -o "$tmp/t.h" &&
-        gcc -std=c99 -Wall -Wextra -pedantic -Werror -include "$tmp/t.h" -DUP=PTP_${n}X${m}_ -DLO=ptp_${n}x${m}_ \
+        gcc -std=c99 -Wall -Wextra -pedantic -Werror -include "$tmp/t.h" -DUP=PTP_${n}X${m}_ -DLO=ptp_${n}x${m}_table_ \
             "$tmp/run_sched.c" -o "$tmp/run_sched" -lm 2>"$tmp/err" && "$tmp/run_sched" >"$tmp/err" 2>&1; then
         ok "table $c: the scheduled loop (owner-only writes, padding included) equals the plain loop"
     else

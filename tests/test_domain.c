@@ -189,11 +189,11 @@ static void test_random_parse(void)
     prop_init(&p, "parse agrees with a reference acceptor on 20000 random strings");
     for (c = 0; c < 20000; c++) {
         char arg[8];
-        int len = (int)(check_rand(&s) % 7), i, n = 0, m = 0, want, st;
+        int len = (int)(ptp_splitmix64(&s) % 7), i, n = 0, m = 0, want, st;
         tp_domain d;
         ptp_error err;
         for (i = 0; i < len; i++)
-            arg[i] = alphabet[check_rand(&s) % (sizeof alphabet - 1)];
+            arg[i] = alphabet[ptp_splitmix64(&s) % (sizeof alphabet - 1)];
         arg[len] = '\0';
         want = accepts(&n, &m, arg);
         st = tp_domain_parse(&d, TP_QUAD, arg, &err);

@@ -78,7 +78,7 @@ int main(void)
           "%d of %d wrong", bad, k);
     for (k = 0; k < NPTS; k++) /* 12-digit coordinates up to 45, like a raw-unit model */
         for (c = 0; c < 3; c++)
-            v[k][c] = (double)(check_rand(&rng) >> 11) * 0x1p-53 * 90 - 45;
+            v[k][c] = (double)(ptp_splitmix64(&rng) >> 11) * 0x1p-53 * 90 - 45;
     memcpy(eye, v[5], sizeof eye);
     copy_naive(&naive, (const double(*)[3])v);
     copy_widened(&fixed, &f, (const double(*)[3])v);

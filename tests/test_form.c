@@ -16,48 +16,9 @@
 #define MAXPOOL 64
 #define MAXKEYS (2 * MAXPOOL)
 
-/* ---- deterministic PRNG (splitmix64) ---- */
-
-static uint64_t rng_state = 0x13198A2E03707344u;
-
-static uint64_t rnd(void)
-{
-    return check_rand(&rng_state);
-}
-
-static unsigned rnd_below(unsigned n)
-{
-    return (unsigned)(rnd() % n);
-}
-
-/* A uniform value of at most bits bits (0 < bits < 128). */
-static ptp_u128 rnd_bits(int bits)
-{
-    ptp_u128 u = rnd();
-    u = (u << 64) | rnd();
-    return u & (((ptp_u128)1 << bits) - 1);
-}
+#define SEED 0x13198A2E03707344u /* of check_rnd */
 
 /* ---- printing ---- */
-
-static char *i128_str(char *buf, ptp_i128 v)
-{
-    const uint64_t e19 = 10000000000000000000u;
-    ptp_u128 u = v < 0 ? (ptp_u128)0 - (ptp_u128)v : (ptp_u128)v;
-    uint64_t parts[3];
-    int n = 0, i;
-    char *p = buf;
-    do {
-        parts[n++] = (uint64_t)(u % e19);
-        u /= e19;
-    } while (u);
-    if (v < 0)
-        *p++ = '-';
-    p += sprintf(p, "%llu", (unsigned long long)parts[n - 1]);
-    for (i = n - 2; i >= 0; i--)
-        p += sprintf(p, "%019llu", (unsigned long long)parts[i]);
-    return buf;
-}
 
 static const char *SR(const rat *a)
 {
@@ -93,10 +54,10 @@ static const char *SF(const form *f)
     int n = sprintf(b, "r%d{", f->rank);
     for (i = 0; i < f->len && i < 6; i++)
         n += sprintf(b + n, "%s%s:%s", i ? " " : "", SK(f->t[i].key, f->rank),
-                     i128_str(nb, f->t[i].num));
+                     check_i128_str(nb, f->t[i].num));
     if (f->len > 6)
         n += sprintf(b + n, " ...+%zu", f->len - 6);
-    sprintf(b + n, "}/%s", i128_str(nb, f->den));
+    sprintf(b + n, "}/%s", check_i128_str(nb, f->den));
     return b;
 }
 
@@ -118,7 +79,7 @@ static void rnd_indices(int *idx, int rank, int range)
     int i, j, ok;
     do {
         for (i = 0; i < rank; i++)
-            idx[i] = (int)rnd_below((unsigned)range);
+            idx[i] = (int)check_rnd_below((unsigned)range);
         for (i = 1; i < rank; i++) /* insertion sort */
             for (j = i; j > 0 && idx[j - 1] > idx[j]; j--) {
                 int t = idx[j];
@@ -134,7 +95,7 @@ static void rnd_indices(int *idx, int rank, int range)
 static int rnd_range(void)
 {
     static const int ranges[] = {4, 6, 10, 40, 1000, FORM_MAX_POINT + 1};
-    return ranges[rnd_below(6)];
+    return ranges[check_rnd_below(6)];
 }
 
 static form_key rnd_key(int rank, int range)
@@ -203,8 +164,8 @@ static void keys(void)
                    "pairs)",
               n);
     for (i = 0; i < n; i++) {
-        int range = rnd_range(), ra = 1 + (int)rnd_below(2), rb = ra == 2 ? 1 : 1 + (int)rnd_below(2);
-        int idx[FORM_MAX_RANK], out[FORM_MAX_RANK], r = 1 + (int)rnd_below(3), j, k, sw, sr, s1, s2;
+        int range = rnd_range(), ra = 1 + (int)check_rnd_below(2), rb = ra == 2 ? 1 : 1 + (int)check_rnd_below(2);
+        int idx[FORM_MAX_RANK], out[FORM_MAX_RANK], r = 1 + (int)check_rnd_below(3), j, k, sw, sr, s1, s2;
         form_key a, b, c, kw = 0, kr = 0, k1 = 0, k2 = 0, t1 = 0, t2 = 0;
 
         /* pack / unpack */
@@ -251,8 +212,8 @@ static void keys(void)
             int ia[FORM_MAX_RANK], ib[FORM_MAX_RANK];
             form_key_unpack(ia, a, ra);
             rnd_indices(ib, rb, range);
-            j = (int)rnd_below((unsigned)rb);
-            ib[j] = ia[rnd_below((unsigned)ra)];
+            j = (int)check_rnd_below((unsigned)rb);
+            ib[j] = ia[check_rnd_below((unsigned)ra)];
             for (j = 1; j < rb; j++) /* re-sort; skip if b itself now repeats */
                 for (k = j; k > 0 && ib[k - 1] > ib[k]; k--) {
                     int t = ib[k];
@@ -271,16 +232,16 @@ static void keys(void)
             }
         }
         {
-            int p = (int)rnd_below(FORM_MAX_POINT + 1);
+            int p = (int)check_rnd_below(FORM_MAX_POINT + 1);
             pz.tried++;
             if (form_key_wedge(&k1, form_key_point(p), 1, form_key_point(p), 1))
                 prop_fail(&pz, "(%d) ^ (%d) is not 0", p, p);
         }
 
         /* associativity on three points */
-        a = form_key_point((int)rnd_below((unsigned)range));
-        b = form_key_point((int)rnd_below((unsigned)range));
-        c = form_key_point((int)rnd_below((unsigned)range));
+        a = form_key_point((int)check_rnd_below((unsigned)range));
+        b = form_key_point((int)check_rnd_below((unsigned)range));
+        c = form_key_point((int)check_rnd_below((unsigned)range));
         s1 = form_key_wedge(&t1, a, 1, b, 1);
         if (s1)
             s1 *= form_key_wedge(&k1, t1, 2, c, 1);
@@ -357,42 +318,42 @@ static int form_matches(const form *f, const refmap *m, char *why, size_t whylen
 static ptp_i128 rnd_num(int big)
 {
     ptp_i128 v;
-    switch (rnd_below(big ? 5 : 4)) {
+    switch (check_rnd_below(big ? 5 : 4)) {
     case 0:
-        v = (ptp_i128)rnd_below(4);
+        v = (ptp_i128)check_rnd_below(4);
         break;
     case 1:
-        v = (ptp_i128)rnd_below(1000);
+        v = (ptp_i128)check_rnd_below(1000);
         break;
     case 2:
-        v = (ptp_i128)rnd_bits(30);
+        v = (ptp_i128)check_rnd_bits(30);
         break;
     case 3:
-        v = (ptp_i128)rnd_bits(big ? 60 : 40);
+        v = (ptp_i128)check_rnd_bits(big ? 60 : 40);
         break;
     default:
-        v = (ptp_i128)rnd_bits(90);
+        v = (ptp_i128)check_rnd_bits(90);
         break;
     }
-    return rnd() & 1 ? -v : v;
+    return check_rnd() & 1 ? -v : v;
 }
 
 static ptp_i128 rnd_den(int big)
 {
     static const ptp_i128 smooth[] = {1, 2, 3, 4, 6, 12, 36, 720, 5040, 40320, 362880};
     ptp_i128 d;
-    switch (rnd_below(big ? 4 : 3)) {
+    switch (check_rnd_below(big ? 4 : 3)) {
     case 0:
-        d = smooth[rnd_below(11)];
+        d = smooth[check_rnd_below(11)];
         break;
     case 1:
-        d = 1 + (ptp_i128)rnd_below(100);
+        d = 1 + (ptp_i128)check_rnd_below(100);
         break;
     case 2:
-        d = (ptp_i128)rnd_bits(big ? 60 : 30);
+        d = (ptp_i128)check_rnd_bits(big ? 60 : 30);
         break;
     default:
-        d = (ptp_i128)rnd_bits(90);
+        d = (ptp_i128)check_rnd_bits(90);
         break;
     }
     return d ? d : 1;
@@ -405,21 +366,21 @@ static ptp_i128 rnd_den(int big)
 static long rnd_terms(form_term *t, ptp_i128 *den, refmap *m, int rank, int big)
 {
     form_key pool[MAXPOOL];
-    int longlist = rnd_below(6) == 0, range = rnd_range(), i;
-    int npool = 1 + (int)rnd_below(longlist ? MAXPOOL : 8);
-    long n = longlist ? 33 + (long)rnd_below(MAXTERMS - 32) : (long)rnd_below(25), k;
+    int longlist = check_rnd_below(6) == 0, range = rnd_range(), i;
+    int npool = 1 + (int)check_rnd_below(longlist ? MAXPOOL : 8);
+    long n = longlist ? 33 + (long)check_rnd_below(MAXTERMS - 32) : (long)check_rnd_below(25), k;
     ptp_i128 d = rnd_den(big), f = 1;
     if (rank == 3 && range < 4)
         range = 4;
     for (i = 0; i < npool; i++)
         pool[i] = rnd_key(rank, range);
-    if (rnd_below(4) == 0)
-        f = 1 + (ptp_i128)rnd_below(30); /* a common factor for canonicalize to remove */
+    if (check_rnd_below(4) == 0)
+        f = 1 + (ptp_i128)check_rnd_below(30); /* a common factor for canonicalize to remove */
     d *= f;
     for (k = 0; k < n; k++) {
-        t[k].key = pool[rnd_below((unsigned)npool)];
-        if (k && rnd_below(5) == 0) {
-            t[k].num = -t[rnd_below((unsigned)k)].num; /* cancels an earlier term */
+        t[k].key = pool[check_rnd_below((unsigned)npool)];
+        if (k && check_rnd_below(5) == 0) {
+            t[k].num = -t[check_rnd_below((unsigned)k)].num; /* cancels an earlier term */
         } else {
             t[k].num = rnd_num(big) * f;
         }
@@ -513,7 +474,7 @@ static void set_terms(void)
         refmap m;
         ptp_i128 den;
         ptp_error err;
-        int rank = 1 + (int)rnd_below(FORM_MAX_RANK), st;
+        int rank = 1 + (int)check_rnd_below(FORM_MAX_RANK), st;
         long nt = rnd_terms(t, &den, &m, rank, (int)(i % 2));
         char why[300];
         if (nt < 0) {
@@ -581,22 +542,22 @@ static rat rnd_coef(void)
 {
     rat a;
     ptp_i128 n, d;
-    switch (rnd_below(6)) {
+    switch (check_rnd_below(6)) {
     case 0:
-        rat_set_si(&a, (int64_t)rnd_below(3) - 1); /* -1, 0, 1 */
+        rat_set_si(&a, (int64_t)check_rnd_below(3) - 1); /* -1, 0, 1 */
         return a;
     case 1:
-        n = (ptp_i128)rnd_below(21) - 10;
-        d = 1 + (ptp_i128)rnd_below(12);
+        n = (ptp_i128)check_rnd_below(21) - 10;
+        d = 1 + (ptp_i128)check_rnd_below(12);
         break;
     case 2:
     case 3:
-        n = (ptp_i128)rnd_bits(20) - ((ptp_i128)1 << 19);
-        d = 1 + (ptp_i128)rnd_bits(20);
+        n = (ptp_i128)check_rnd_bits(20) - ((ptp_i128)1 << 19);
+        d = 1 + (ptp_i128)check_rnd_bits(20);
         break;
     default:
-        n = (ptp_i128)rnd_bits(40) - ((ptp_i128)1 << 39);
-        d = 1 + (ptp_i128)rnd_bits(40);
+        n = (ptp_i128)check_rnd_bits(40) - ((ptp_i128)1 << 39);
+        d = 1 + (ptp_i128)check_rnd_bits(40);
         break;
     }
     rat_set_frac(&a, n, d);
@@ -647,7 +608,7 @@ static void lincomb(void)
                     "one changed field differs) (%ld random)",
               n);
     for (i = 0; i < n; i++) {
-        int rank = 1 + (int)rnd_below(FORM_MAX_RANK), big = i % 3 == 0, st, st2;
+        int rank = 1 + (int)check_rnd_below(FORM_MAX_RANK), big = i % 3 == 0, st, st2;
         form x, y, r, r0, t, z;
         refmap m;
         rat a = rnd_coef(), b = rnd_coef(), one, zero, mone, ab;
@@ -767,15 +728,15 @@ static void lincomb(void)
                 case 2:
                     if (!t.len)
                         continue;
-                    t.t[rnd_below((unsigned)t.len)].num += 1;
+                    t.t[check_rnd_below((unsigned)t.len)].num += 1;
                     break;
                 default:
                     if (!t.len)
                         continue;
-                    if (rnd() & 1)
+                    if (check_rnd() & 1)
                         t.len--;
                     else
-                        t.t[rnd_below((unsigned)t.len)].key ^= 1;
+                        t.t[check_rnd_below((unsigned)t.len)].key ^= 1;
                     break;
                 }
                 if (form_equal(&x, &t) || form_equal(&t, &x))
@@ -816,7 +777,7 @@ static void set_point(void)
     form_init(&f, 1);
     form_init(&g, 2);
     for (i = 0; i < n; i++) {
-        int j = (int)rnd_below(FORM_MAX_POINT + 1), st;
+        int j = (int)check_rnd_below(FORM_MAX_POINT + 1), st;
         rat w;
         ptp_i128 wn = rnd_num(1), wd = rnd_den(1);
         rat_set_frac(&w, wn, wd);
@@ -944,6 +905,7 @@ static void canonical(void)
 
 int main(void)
 {
+    check_rng = SEED;
     keys();
     set_terms();
     lincomb();

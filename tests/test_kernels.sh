@@ -59,19 +59,51 @@ schedule() {
     python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$1"
 }
 
+# build_host_c CC FLAGS HEADER D: builds tests/host_c.c around the C header HEADER of bidegree D
+# (default names) with compiler CC and options FLAGS into $tmp/host_c; errors in $tmp/err.
+build_host_c() {
+    local cc=$1 flags=$2 h=$3 d=$4 n=${4%x*} m=${4#*x}
+    $cc -std=c11 $flags -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$h" \
+        -DPTP_${n}X${m}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${m}_ tests/host_c.c \
+        "build/$cc/libptptest.a" -lm -o "$tmp/host_c" 2>"$tmp/err"
+}
+# to_spirv LANG BASE: compiles BASE.comp (LANG glsl) or BASE.hlsl (hlsl) to $tmp/k.spv and
+# validates it with spirv-val; errors in $tmp/err. Sets extra to the host option LANG needs.
+to_spirv() {
+    if [ "$1" = glsl ]; then
+        extra=""
+        glslangValidator -V "$2.comp" -o "$tmp/k.spv" >"$tmp/err" 2>&1 || return 1
+    else
+        extra=--groups-x-constant
+        glslangValidator -D -V -S comp -e main "$2.hlsl" -o "$tmp/k.spv" >"$tmp/err" 2>&1 || return 1
+    fi
+    spirv-val "$tmp/k.spv" 2>>"$tmp/err"
+}
+# cuda_compile DIR D: compiles DIR/ptp_D.cu with nvcc to an object and to PTX with the entry
+# ptp_D_classify; errors in $tmp/err.
+cuda_compile() {
+    "$NVCC" -c "$1/ptp_$2.cu" -o "$tmp/k.o" >"$tmp/err" 2>&1 &&
+        "$NVCC" -ptx "$1/ptp_$2.cu" -o "$tmp/k.ptx" >>"$tmp/err" 2>&1 &&
+        grep -q "\.entry ptp_${2}_classify" "$tmp/k.ptx"
+}
+# cuda_host DIR D: builds tests/host_cuda.cu around DIR/ptp_D.cu into $tmp/host_cuda; errors in
+# $tmp/err.
+cuda_host() {
+    "$NVCC" -O2 -Igen -Itests -I"$1" -DKERNEL_FILE="\"ptp_$2.cu\"" -DKERNEL=ptp_${2}_classify \
+        tests/host_cuda.cu build/gcc/libptptest.a -o "$tmp/host_cuda" >"$tmp/err" 2>&1
+}
+
 # exercise DIR D SPACE RULE PLANES PQ Q LABEL: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu}
 # (bidegree D, default names) and runs each on the data of data_args against the reference.
 exercise() {
-    local dir=$1 d=$2 space=$3 rule=$4 pl="" PQ=$6 Q=$7 label=$8 n=${2%x*} m=${2#*x} cc lang extra rc data
+    local dir=$1 d=$2 space=$3 rule=$4 pl="" PQ=$6 Q=$7 label=$8 cc lang extra data
     local hcfg="--degree ${2%x*} ${2#*x} --space $3 --rule $4"
     [ "$5" = 1 ] && pl=--planes
 
     # C, with gcc and clang.
     for cc in gcc clang; do
         command -v $cc >/dev/null || continue
-        if $cc -std=c11 -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$dir/ptp_$d.h" \
-            -DPTP_${n}X${m}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${m}_ \
-            tests/host_c.c "build/$cc/libptptest.a" -lm -o "$tmp/host_c" 2>"$tmp/err"; then
+        if build_host_c $cc -O2 "$dir/ptp_$d.h" $d; then
             data_args $d | while read -r data; do
                 run_host "c $label ($cc)" "$tmp/host_c" $hcfg $data --name "c/$cc $label ${data%% *}"
             done
@@ -91,13 +123,7 @@ exercise() {
     # GLSL and HLSL: SPIR-V that spirv-val accepts, run on lavapipe.
     if [ $have_gpu_tools = 1 ]; then
         for lang in glsl hlsl; do
-            if [ $lang = glsl ]; then
-                glslangValidator -V "$dir/ptp_$d.comp" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?; extra=""
-            else
-                glslangValidator -D -V -S comp -e main "$dir/ptp_$d.hlsl" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?
-                extra=--groups-x-constant
-            fi
-            if [ $rc -ne 0 ] || ! spirv-val "$tmp/k.spv" 2>>"$tmp/err"; then
+            if ! to_spirv $lang "$dir/ptp_$d"; then
                 notok "$lang $label compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
                 continue
             fi
@@ -112,12 +138,10 @@ exercise() {
 
     # CUDA: compiled to an object and to PTX, and run by tests/host_cuda.cu where a GPU is.
     if [ -x "$NVCC" ]; then
-        if "$NVCC" -c "$dir/ptp_$d.cu" -o "$tmp/k.o" >"$tmp/err" 2>&1 && "$NVCC" -ptx "$dir/ptp_$d.cu" -o "$tmp/k.ptx" >>"$tmp/err" 2>&1 &&
-            grep -q "\.entry ptp_${d}_classify" "$tmp/k.ptx"; then
+        if cuda_compile "$dir" $d; then
             ok "cuda $label compiles with nvcc (-c and -ptx, entry ptp_${d}_classify)"
             # The host links here and runs wherever a GPU is (it says so when there is none).
-            if "$NVCC" -O2 -Igen -Itests -I"$dir" -DKERNEL_FILE="\"ptp_$d.cu\"" -DKERNEL=ptp_${d}_classify \
-                tests/host_cuda.cu build/gcc/libptptest.a -o "$tmp/host_cuda" >"$tmp/err" 2>&1; then
+            if cuda_host "$dir" $d; then
                 data_args $d | while read -r data; do
                     run_host "cuda $label" "$tmp/host_cuda" $hcfg --block-threads $PQ --patches-per-block $Q \
                         $pl $data --name "cuda $label ${data%% *}"
@@ -160,15 +184,15 @@ done
     run_host "opencl without --planes" "$B/host_opencl" "$tmp/k.cl" --kernel ptp_3x3_classify --degree 3 3 \
         --space clip --rule strict --block-threads 128 --patches-per-block 8 --random 1 10000 99 --name "opencl 3x3 without --planes"
 if [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ]; then
-    "$P" --degree 3 --target glsl -o "$tmp/k.comp" && glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >/dev/null &&
+    "$P" --degree 3 --target glsl -o "$tmp/k.comp" && to_spirv glsl "$tmp/k" &&
         run_host "glsl without --planes" "$B/host_vulkan" "$tmp/k.spv" --degree 3 3 --space clip --rule strict \
             --block-threads 128 --patches-per-block 8 --random 1 10000 99 --name "glsl 3x3 without --planes"
-    "$P" --degree 3 --target hlsl -o "$tmp/k.hlsl" && glslangValidator -D -V -S comp -e main "$tmp/k.hlsl" -o "$tmp/k.spv" >/dev/null &&
+    "$P" --degree 3 --target hlsl -o "$tmp/k.hlsl" && to_spirv hlsl "$tmp/k" &&
         run_host "hlsl without --planes" "$B/host_vulkan" "$tmp/k.spv" --degree 3 3 --space clip --rule strict \
             --block-threads 128 --patches-per-block 8 --groups-x-constant --random 1 10000 99 --name "hlsl 3x3 without --planes"
     # A non-default schedule: 7 threads per patch, 5 patches per workgroup.
     "$P" --degree 2x3 --target glsl --space world --planes --threads-per-patch 7 --patches-per-block 5 -o "$tmp/k.comp" &&
-        glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >/dev/null &&
+        to_spirv glsl "$tmp/k" &&
         run_host "glsl P=7 Q=5" "$B/host_vulkan" "$tmp/k.spv" --degree 2 3 --space world --rule strict --block-threads 35 \
             --patches-per-block 5 --planes --random 1 3000 7 --name "glsl 2x3 world, 7 threads per patch, 5 patches per group"
 fi
@@ -177,8 +201,7 @@ fi
 # matching CHECK ("not ok - mutant CHECK") when run on random patches.
 mutant() {
     "$P" --degree 3 --target c -o "$tmp/k.h" && sed -i "$1" "$tmp/k.h"
-    if gcc -std=c11 -O2 -Igen -Itests -include "$tmp/k.h" -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ \
-        tests/host_c.c build/gcc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
+    if build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
         ! "$tmp/host_c" --degree 3 3 --space clip --rule strict --random 1 2000 5 --name mutant >"$tmp/out" 2>&1 &&
         grep -q "^not ok - mutant $2" "$tmp/out"; then
         ok "a C header with $3 fails its check"
@@ -205,9 +228,7 @@ for variant in "clang -O3 -march=native" "clang -O3 -march=native -DPTP_3X3_NO_S
         continue
     } ;; esac
     "$P" --degree $d --target c --space $space --rule $rule -o "$tmp/k.h" &&
-        $variant -std=c11 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/k.h" \
-            -DPTP_${n}X${n}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${n}_ tests/host_c.c \
-            build/$cc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
+        build_host_c $cc "${variant#* }" "$tmp/k.h" $d &&
         run_host "c $d $space $rule $variant" "$tmp/host_c" --degree $n $n --space $space \
             --rule $rule --random 2 5003 17 --name "c/$variant $d $space $rule" ||
         notok "c $d $variant compiles" "$(head -5 "$tmp/err")"
@@ -304,9 +325,7 @@ for space in clip world; do
         # C: gcc -O2 and -O2 -march=native (GNU C vectors, 4 and 16 lanes), clang -O3 -march=native.
         for cc in "gcc -O2" "gcc -O2 -march=native" "clang -O3 -march=native"; do
             command -v ${cc%% *} >/dev/null || continue
-            if ${cc%% *} -std=c11 ${cc#* } -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$dir/ptp_3x3.h" \
-                -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ tests/host_c.c \
-                "build/${cc%% *}/libptptest.a" -lm -o "$tmp/host_c" 2>"$tmp/err"; then
+            if build_host_c ${cc%% *} "${cc#* }" "$dir/ptp_3x3.h" 3x3; then
                 run_exact "c/$cc" "$data" "$tmp/host_c"
             else
                 notok "c 3x3 $space $kind compiles with $cc" "$(head -5 "$tmp/err")"
@@ -320,13 +339,7 @@ for space in clip world; do
         # GLSL and HLSL on lavapipe.
         if [ $have_gpu_tools = 1 ]; then
             for lang in glsl hlsl; do
-                if [ $lang = glsl ]; then
-                    glslangValidator -V "$dir/ptp_3x3.comp" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?; extra=""
-                else
-                    glslangValidator -D -V -S comp -e main "$dir/ptp_3x3.hlsl" -o "$tmp/k.spv" >"$tmp/err" 2>&1; rc=$?
-                    extra=--groups-x-constant
-                fi
-                if [ $rc -ne 0 ] || ! spirv-val "$tmp/k.spv" 2>>"$tmp/err"; then
+                if ! to_spirv $lang "$dir/ptp_3x3"; then
                     notok "$lang 3x3 $space $kind compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
                     continue
                 fi
@@ -337,10 +350,7 @@ for space in clip world; do
 
         # CUDA: compiled, and run where a GPU is.
         if [ -x "$NVCC" ]; then
-            if "$NVCC" -c "$dir/ptp_3x3.cu" -o "$tmp/k.o" >"$tmp/err" 2>&1 && "$NVCC" -ptx "$dir/ptp_3x3.cu" -o "$tmp/k.ptx" >>"$tmp/err" 2>&1 &&
-                grep -q "\.entry ptp_3x3_classify" "$tmp/k.ptx" &&
-                "$NVCC" -O2 -Igen -Itests -I"$dir" -DKERNEL_FILE='"ptp_3x3.cu"' -DKERNEL=ptp_3x3_classify \
-                    tests/host_cuda.cu build/gcc/libptptest.a -o "$tmp/host_cuda" >>"$tmp/err" 2>&1; then
+            if cuda_compile "$dir" 3x3 && cuda_host "$dir" 3x3; then
                 ok "cuda 3x3 $space $kind compiles with nvcc (-c, -ptx and the host)"
                 run_exact cuda "$data" "$tmp/host_cuda" --block-threads $PQ --patches-per-block $Q
             else
@@ -353,8 +363,7 @@ done
 # caught calling patches back or front that are not.
 "$P" --degree 3 --space clip --certified --target c -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /' "$tmp/k.h"
 if grep -q 'ER3 \* 0x1p-10f' "$tmp/k.h" &&
-    gcc -std=c11 -O2 -Igen -Itests -include "$tmp/k.h" -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ \
-        tests/host_c.c build/gcc/libptptest.a -lm -o "$tmp/host_c" 2>"$tmp/err" &&
+    build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
     ! "$tmp/host_c" --degree 3 3 --space clip --rule strict --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
     grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
     ok "a certified C header with its bounds 2^10 times too small is caught unsafe on exact data"

@@ -14,32 +14,7 @@
 #define SWEEP 40000L  /* pairs (and triples) for the operation sweep */
 #define MAXI ((ptp_i128)(((ptp_u128)1 << 127) - 1))
 
-/* ---- deterministic PRNG (splitmix64) ---- */
-
-static uint64_t rng_state = 0x243F6A8885A308D3u;
-
-static uint64_t rnd(void)
-{
-    return check_rand(&rng_state);
-}
-
-static unsigned rnd_below(unsigned n)
-{
-    return (unsigned)(rnd() % n);
-}
-
-static ptp_u128 rnd_u128(void)
-{
-    ptp_u128 hi = rnd();
-    return (hi << 64) | rnd();
-}
-
-/* A uniform value of at most bits bits (0 < bits <= 128). */
-static ptp_u128 rnd_bits(int bits)
-{
-    ptp_u128 u = rnd_u128();
-    return bits >= 128 ? u : u & (((ptp_u128)1 << bits) - 1);
-}
+#define SEED 0x243F6A8885A308D3u /* of check_rnd */
 
 /* ---- independent helpers on plain 128-bit integers ---- */
 
@@ -80,33 +55,13 @@ static int my_canonical(const rat *a)
     return my_gcd(uabs(a->num), (ptp_u128)a->den) == 1;
 }
 
-/* Decimal text of a 128-bit integer, independent of i128_to_str. */
-static char *my_i128_str(char *buf, ptp_i128 v)
-{
-    const uint64_t e19 = 10000000000000000000u;
-    ptp_u128 u = uabs(v);
-    uint64_t parts[3];
-    int n = 0, i;
-    char *p = buf;
-    do {
-        parts[n++] = (uint64_t)(u % e19);
-        u /= e19;
-    } while (u);
-    if (v < 0)
-        *p++ = '-';
-    p += sprintf(p, "%llu", (unsigned long long)parts[n - 1]);
-    for (i = n - 2; i >= 0; i--)
-        p += sprintf(p, "%019llu", (unsigned long long)parts[i]);
-    return buf;
-}
-
 static char *my_rat_str(char *buf, const rat *a)
 {
-    my_i128_str(buf, a->num);
+    check_i128_str(buf, a->num);
     if (a->den != 1) {
         size_t n = strlen(buf);
         buf[n] = '/';
-        my_i128_str(buf + n + 1, a->den);
+        check_i128_str(buf + n + 1, a->den);
     }
     return buf;
 }
@@ -123,7 +78,7 @@ static const char *SI(ptp_i128 v)
 {
     static char pool[8][48];
     static int k;
-    return my_i128_str(pool[k++ % 8], v);
+    return check_i128_str(pool[k++ % 8], v);
 }
 
 static rat mk(ptp_i128 num, ptp_i128 den)
@@ -296,33 +251,33 @@ static const unsigned small_primes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23};
  * smooth (many small prime factors), special (powers of two, +-1, the maximum). */
 static ptp_u128 rnd_mag(void)
 {
-    switch (rnd_below(9)) {
+    switch (check_rnd_below(9)) {
     case 0:
     case 1:
-        return rnd_below(11);
+        return check_rnd_below(11);
     case 2:
-        return rnd_bits(30);
+        return check_rnd_bits(30);
     case 3:
-        return rnd_bits(62);
+        return check_rnd_bits(62);
     case 4:
-        return rnd_bits(100);
+        return check_rnd_bits(100);
     case 5: {
-        int b = 120 + (int)rnd_below(8); /* 120..127 bits, top bit set */
-        return rnd_bits(b) | ((ptp_u128)1 << (b - 1));
+        int b = 120 + (int)check_rnd_below(8); /* 120..127 bits, top bit set */
+        return check_rnd_bits(b) | ((ptp_u128)1 << (b - 1));
     }
     case 6:
     case 7: {
-        ptp_u128 u = 1, lim = (ptp_u128)1 << (10 + rnd_below(117));
+        ptp_u128 u = 1, lim = (ptp_u128)1 << (10 + check_rnd_below(117));
         for (;;) {
-            unsigned p = small_primes[rnd_below(9)];
+            unsigned p = small_primes[check_rnd_below(9)];
             if (u > lim / p)
                 return u;
             u *= p;
         }
     }
     default: {
-        int k = 1 + (int)rnd_below(126);
-        switch (rnd_below(5)) {
+        int k = 1 + (int)check_rnd_below(126);
+        switch (check_rnd_below(5)) {
         case 0:
             return (ptp_u128)1 << k;
         case 1:
@@ -342,17 +297,17 @@ static ptp_u128 rnd_mag(void)
  * products of a few of them mostly fit. */
 static ptp_u128 rnd_mag_small(void)
 {
-    switch (rnd_below(4)) {
+    switch (check_rnd_below(4)) {
     case 0:
-        return rnd_below(11);
+        return check_rnd_below(11);
     case 1:
-        return rnd_bits(30);
+        return check_rnd_bits(30);
     case 2:
-        return rnd_bits(62);
+        return check_rnd_bits(62);
     default: {
-        ptp_u128 u = 1, lim = (ptp_u128)1 << (10 + rnd_below(52));
+        ptp_u128 u = 1, lim = (ptp_u128)1 << (10 + check_rnd_below(52));
         for (;;) {
-            unsigned p = small_primes[rnd_below(9)];
+            unsigned p = small_primes[check_rnd_below(9)];
             if (u > lim / p)
                 return u;
             u *= p;
@@ -379,7 +334,7 @@ static rat rnd_rat(void)
     g = my_gcd(n, d);
     r.num = (ptp_i128)(n / g);
     r.den = (ptp_i128)(d / g);
-    if (rnd() & 1)
+    if (check_rnd() & 1)
         r.num = -r.num;
     return r;
 }
@@ -899,18 +854,18 @@ static void explicit_cases(void)
         rat a, b, r;
         int op;
         do {
-            pp = rnd_bits(65 + (int)rnd_below(36)) | ((ptp_u128)1 << 64) | 1;
-            qq = rnd_bits(65 + (int)rnd_below(36)) | ((ptp_u128)1 << 64);
+            pp = check_rnd_bits(65 + (int)check_rnd_below(36)) | ((ptp_u128)1 << 64) | 1;
+            qq = check_rnd_bits(65 + (int)check_rnd_below(36)) | ((ptp_u128)1 << 64);
         } while (my_gcd(pp, qq) != 1);
         /* a coprime to p and q, b coprime to q and p: nothing cancels even in the product */
         do
-            an = rnd_bits(1 + (int)rnd_below(100)) | 1;
+            an = check_rnd_bits(1 + (int)check_rnd_below(100)) | 1;
         while (my_gcd(an, pp) != 1 || my_gcd(an, qq) != 1);
         do
-            bnum = rnd_bits(1 + (int)rnd_below(100)) | 1;
+            bnum = check_rnd_bits(1 + (int)check_rnd_below(100)) | 1;
         while (my_gcd(bnum, qq) != 1 || my_gcd(bnum, pp) != 1);
-        a = mk(rnd() & 1 ? -(ptp_i128)an : (ptp_i128)an, (ptp_i128)pp);
-        b = mk(rnd() & 1 ? -(ptp_i128)bnum : (ptp_i128)bnum, (ptp_i128)qq);
+        a = mk(check_rnd() & 1 ? -(ptp_i128)an : (ptp_i128)an, (ptp_i128)pp);
+        b = mk(check_rnd() & 1 ? -(ptp_i128)bnum : (ptp_i128)bnum, (ptp_i128)qq);
         for (op = OP_ADD; op <= OP_MUL; op++) {
             int st;
             r = sentinel;
@@ -946,7 +901,7 @@ static void construction(void)
     prop_init(&p, "rat: rat_set_si(n) == n/1, canonical (%ld random int64 and 8 edge values)",
               PAIRS);
     for (i = 0; i < PAIRS + 8; i++) {
-        int64_t n = i < 8 ? si[i] : (int64_t)rnd();
+        int64_t n = i < 8 ? si[i] : (int64_t)check_rnd();
         p.tried++;
         rat_set_si(&r, n);
         if (r.num != n || r.den != 1 || !my_canonical(&r))
@@ -958,8 +913,8 @@ static void construction(void)
                   "both signs, common factors)",
               PAIRS);
     for (i = 0; i < PAIRS; i++) {
-        ptp_u128 n = rnd_mag(), d = rnd_mag(), k = 1 + rnd_below(i % 3 ? 10 : 1000000), g;
-        int nneg = (int)(rnd() & 1), dneg = (int)(rnd() & 1), st;
+        ptp_u128 n = rnd_mag(), d = rnd_mag(), k = 1 + check_rnd_below(i % 3 ? 10 : 1000000), g;
+        int nneg = (int)(check_rnd() & 1), dneg = (int)(check_rnd() & 1), st;
         ptp_i128 sn, sd;
         rat want;
         if (d == 0)
@@ -1054,14 +1009,14 @@ static void construction(void)
                 prop_fail(&p, "rejects %s", S(&good[j]));
         }
         for (i = 0; i < PAIRS; i++) {
-            ptp_u128 n = rnd_mag(), d = i % 2 ? rnd_mag() : 1, k = 1 + rnd_below(4);
+            ptp_u128 n = rnd_mag(), d = i % 2 ? rnd_mag() : 1, k = 1 + check_rnd_below(4);
             rat x;
             if (n <= (ptp_u128)MAXI / k && d <= (ptp_u128)MAXI / k) {
                 n *= k;
                 d *= k;
             }
-            x.num = rnd() & 1 ? -(ptp_i128)n : (ptp_i128)n;
-            x.den = rnd_below(5) ? (ptp_i128)d : -(ptp_i128)d;
+            x.num = check_rnd() & 1 ? -(ptp_i128)n : (ptp_i128)n;
+            x.den = check_rnd_below(5) ? (ptp_i128)d : -(ptp_i128)d;
             if (i % 1000 == 7)
                 x.num = MINI;
             p.tried++;
@@ -1117,13 +1072,13 @@ static void strings(void)
               PAIRS / 4);
     for (i = 0; i < PAIRS / 4; i++) {
         rat a = rnd_rat(), r = sentinel;
-        ptp_u128 k = 1 + rnd_below(i % 2 ? 100 : 1000000000);
+        ptp_u128 k = 1 + check_rnd_below(i % 2 ? 100 : 1000000000);
         char nbuf[48], dbuf[48];
         int st;
         if (uabs(a.num) > (ptp_u128)MAXI / k || (ptp_u128)a.den > (ptp_u128)MAXI / k)
             k = 1;
-        my_i128_str(nbuf, a.num * (ptp_i128)k);
-        my_i128_str(dbuf, a.den * (ptp_i128)k);
+        check_i128_str(nbuf, a.num * (ptp_i128)k);
+        check_i128_str(dbuf, a.den * (ptp_i128)k);
         snprintf(buf, sizeof buf, "%s/%s", nbuf, dbuf);
         p.tried++;
         st = rat_set_str(&r, buf);
@@ -1242,12 +1197,47 @@ static void misc(void)
     prop_report(&pd);
 }
 
+/* rat_lcm_den against Euclid's gcd on random denominators, and its overflow. */
+static void lcm_den(void)
+{
+    prop pl;
+    long i;
+    rat a;
+    ptp_i128 D = (ptp_i128)1 << 100;
+    int st;
+    prop_init(&pl, "rat: rat_lcm_den is the lcm of D and the denominator (%ld random pairs)",
+              PAIRS);
+    for (i = 0; i < PAIRS; i++) {
+        ptp_u128 d = check_rnd_bits(1 + (int)check_rnd_below(60)) | 1, e = check_rnd_bits(1 + (int)check_rnd_below(60)) | 1;
+        ptp_u128 ref = d / my_gcd(d, e) * e; /* below 2^120 */
+        ptp_i128 L = (ptp_i128)d;
+        a.num = 1;
+        a.den = (ptp_i128)e;
+        pl.tried++;
+        if (rat_lcm_den(&L, &a) || (ptp_u128)L != ref)
+            prop_fail(&pl, "lcm(%s, %s) = %s", SI((ptp_i128)d), SI((ptp_i128)e), SI(L));
+    }
+    prop_report(&pl);
+    a.num = 1;
+    a.den = 3 * ((ptp_i128)1 << 60);
+    st = rat_lcm_den(&D, &a);
+    check(st == PTP_OK && D == 3 * ((ptp_i128)1 << 100),
+          "rat: rat_lcm_den(2^100, 3*2^60) = 3*2^100", "status %d, %s", st, SI(D));
+    a.den = 244140625; /* 5^12: 3 * 5^12 * 2^100 > 2^127 */
+    st = rat_lcm_den(&D, &a);
+    check(st == PTP_EOVERFLOW && D == 3 * ((ptp_i128)1 << 100),
+          "rat: rat_lcm_den past 127 bits is PTP_EOVERFLOW and leaves D unchanged", "status %d, %s",
+          st, SI(D));
+}
+
 int main(void)
 {
+    check_rng = SEED;
     construction();
     sweep();
     explicit_cases();
     strings();
     misc();
+    lcm_den();
     return check_exit();
 }

@@ -228,6 +228,20 @@ static void expect_verdict(const char *name, result r, int verdict, const char *
     free(r.report);
 }
 
+/* Writes r in the paper's layout (p.h) or as a 3x3 JSON document (t.json), expects verify
+ * without --degree to give verdict with want in its report, and frees r. */
+static void expect_rows(const char *name, rows *r, int json, int verdict, const char *want)
+{
+    sbuf b;
+    if (json)
+        write_json(&b, r, 3, 3);
+    else
+        write_paper(&b, r);
+    expect_verdict(name, verify_str(&b, json ? "t.json" : "p.h", 0, 0), verdict, want);
+    sbuf_clear(&b);
+    free(r->r);
+}
+
 /* Checks a WRONG verdict whose report has a line starting "NAME:LINE: what". */
 static void expect_line(const char *name, result r, const char *file, int line, const char *what)
 {
@@ -383,50 +397,31 @@ static void test_bicubic_mistakes(void)
         rat_mul(&v, &t.terms[x].w, &s);
         rat_get_str(r.r[x].w, &v);
     }
-    write_json(&b, &r, 3, 3);
-    expect_verdict("all weights times 1/7: right up to the scale, named",
-                   verify_str(&b, "t.json", 0, 0), VERIFY_RIGHT,
-                   "RIGHT: correct up to a positive scale s = 0.142857143 = 1/7");
-    sbuf_clear(&b);
-    free(r.r);
+    expect_rows("all weights times 1/7: right up to the scale, named", &r, 1, VERIFY_RIGHT,
+                "RIGHT: correct up to a positive scale s = 0.142857143 = 1/7");
 
     /* all weights times 2.5, as floats, in ptpgen's table layout */
     r = rows_of(&t, W_FLOAT, 2.5);
-    write_paper(&b, &r);
-    expect_verdict("all float weights times 2.5: right up to the scale 5/2",
-                   verify_str(&b, "p.h", 0, 0), VERIFY_RIGHT, "positive scale s = 2.5 = 5/2");
-    sbuf_clear(&b);
-    free(r.r);
+    expect_rows("all float weights times 2.5: right up to the scale 5/2", &r, 0, VERIFY_RIGHT,
+                "positive scale s = 2.5 = 5/2");
 
     /* all negated */
     r = rows_of(&t, W_FLOAT, -1);
-    write_paper(&b, &r);
-    expect_verdict("all weights negated: wrong, the opposite orientation",
-                   verify_str(&b, "p.h", 0, 0), VERIFY_WRONG, "WRONG: all weights negated");
-    free(r.r);
-    sbuf_clear(&b);
+    expect_rows("all weights negated: wrong, the opposite orientation", &r, 0, VERIFY_WRONG,
+                "WRONG: all weights negated");
 
     /* negated and scaled */
     r = rows_of(&t, W_FLOAT, -3);
-    write_paper(&b, &r);
-    expect_verdict("all weights times -3: negated and scaled", verify_str(&b, "p.h", 0, 0),
-                   VERIFY_WRONG, "WRONG: all weights negated, and every weight scaled by 3");
-    free(r.r);
-    sbuf_clear(&b);
+    expect_rows("all weights times -3: negated and scaled", &r, 0, VERIFY_WRONG,
+                "WRONG: all weights negated, and every weight scaled by 3");
 
     /* a square patch: u and v swapped gives the same table; v-first gives the negated one */
     r = relabelled(&t, 1);
-    write_json(&b, &r, 3, 3);
-    expect_verdict("3x3 with u and v swapped is the same table (the transposition rule)",
-                   verify_str(&b, "t.json", 0, 0), VERIFY_RIGHT, "RIGHT: exact");
-    free(r.r);
-    sbuf_clear(&b);
+    expect_rows("3x3 with u and v swapped is the same table (the transposition rule)", &r, 1,
+                VERIFY_RIGHT, "RIGHT: exact");
     r = relabelled(&t, 0);
-    write_json(&b, &r, 3, 3);
-    expect_verdict("3x3 in the v-first convention: negated, and v-first named",
-                   verify_str(&b, "t.json", 0, 0), VERIFY_WRONG, "v-first index convention");
-    free(r.r);
-    sbuf_clear(&b);
+    expect_rows("3x3 in the v-first convention: negated, and v-first named", &r, 1, VERIFY_WRONG,
+                "v-first index convention");
 
     /* the paper's own layout: shuffled, fractions as weights, no degree */
     r = rows_of(&t, W_CFRAC, 1);
@@ -797,6 +792,17 @@ static void test_several(void)
     tp_clear(&t);
 }
 
+/* Removes every occurrence of word from b's text. */
+static void drop_all(sbuf *b, const char *word)
+{
+    size_t k = strlen(word);
+    char *p;
+    while ((p = strstr(b->s, word)) != NULL) {
+        memmove(p, p + k, strlen(p + k) + 1);
+        b->len -= k;
+    }
+}
+
 /* A 2x2 table checked as 3x3: many problems, and a note that the indices fit 2x2. */
 static void test_wrong_degree(void)
 {
@@ -810,6 +816,10 @@ static void test_wrong_degree(void)
                        verify_str(&b, "t.h", 3, 3), VERIFY_WRONG,
                        "t.h: note: the indices fit bidegree 2x2, not 3x3");
         expect_verdict("... and that its name says 2x2", verify_str(&b, "t.h", 3, 3), VERIFY_WRONG,
+                       "note: the array name names bidegree 2x2; checked as 3x3");
+        drop_all(&b, "table_"); /* the names of earlier tables: ptp_2x2_idx */
+        expect_verdict("... also from the name ptp_2x2_idx (without table_)",
+                       verify_str(&b, "t.h", 3, 3), VERIFY_WRONG,
                        "note: the array name names bidegree 2x2; checked as 3x3");
         sbuf_clear(&b);
     }

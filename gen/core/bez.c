@@ -3,6 +3,7 @@
 #include "core/bez.h"
 #include "core/i128.h"
 
+#include <assert.h>
 #include <stdlib.h>
 
 /* C(n, k) for 0 <= k <= n <= 3*PTP_MAX_DEGREE (exact: the running product stays below
@@ -125,11 +126,7 @@ static int mul_cell(bez *R, const bez *A, const bez *B, const binom_rows *c, int
     for (ia = ilo; ia <= ihi; ia++)
         for (ja = jlo; ja <= jhi; ja++, np++) {
             rat *f = &factors[np];
-            ptp_i128 g;
-            if (pair_factor(f, A, B, c, ia, ja, I - ia, J - ja))
-                return mul_overflow(err);
-            g = (ptp_i128)u128_gcd((ptp_u128)L, (ptp_u128)f->den);
-            if (i128_mul_ovf(&L, L / g, f->den))
+            if (pair_factor(f, A, B, c, ia, ja, I - ia, J - ja) || rat_lcm_den(&L, f))
                 return mul_overflow(err);
         }
     /* Pass 2: every product of a term of A's cell with a term of B's cell, over L. */
@@ -223,8 +220,8 @@ static int reduce(bez *R, const bez *P, int along_u, ptp_error *err)
         if ((st = form_lincomb(CELL(R, 0), &one, CELL(P, 0), &zero, CELL(P, 0), err)))
             break;
         for (i = 1; i < d && !st; i++) {
-            rat_set_frac(&a, d, d - i);
-            rat_set_frac(&b, -i, d - i);
+            st = rat_set_frac(&a, d, d - i) | rat_set_frac(&b, -i, d - i);
+            assert(st == PTP_OK); /* small integers over d - i > 0 */
             st = form_lincomb(CELL(R, i), &a, CELL(P, i), &b, CELL(R, i - 1), err);
         }
         if (!st && !form_equal(CELL(P, d), CELL(R, d - 1)))

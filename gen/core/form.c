@@ -3,6 +3,7 @@
 #include "core/form.h"
 #include "core/i128.h"
 
+#include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -167,16 +168,15 @@ int form_lincomb(form *r, const rat *a, const form *x, const rat *b, const form 
 {
     /* r = (ca * X + cb * Y) / L with fa = a/den(x), fb = b/den(y), L = lcm of their dens. */
     rat dx, dy, fa, fb;
-    ptp_i128 L, ca, cb, g;
+    ptp_i128 L, ca, cb;
     form out;
     size_t i = 0, j = 0;
-    int st;
-    rat_set_frac(&dx, 1, x->den);
-    rat_set_frac(&dy, 1, y->den);
+    int st = rat_set_frac(&dx, 1, x->den) | rat_set_frac(&dy, 1, y->den);
+    assert(st == PTP_OK); /* canonical forms have 0 < den <= I128_MAX */
     if (rat_mul(&fa, a, &dx) || rat_mul(&fb, b, &dy))
         return overflow(err, "a linear combination of forms");
-    g = (ptp_i128)u128_gcd((ptp_u128)fa.den, (ptp_u128)fb.den);
-    if (i128_mul_ovf(&L, fa.den / g, fb.den) || i128_mul_ovf(&ca, fa.num, L / fa.den) ||
+    L = fa.den;
+    if (rat_lcm_den(&L, &fb) || i128_mul_ovf(&ca, fa.num, L / fa.den) ||
         i128_mul_ovf(&cb, fb.num, L / fb.den))
         return overflow(err, "a linear combination of forms");
     form_init(&out, r->rank);
@@ -306,5 +306,7 @@ int form_equal(const form *x, const form *y)
 
 void form_get_weight(rat *w, const form *f, size_t i)
 {
-    rat_set_frac(w, f->t[i].num, f->den);
+    int st = rat_set_frac(w, f->t[i].num, f->den);
+    assert(st == PTP_OK); /* canonical: den > 0 and num != -2^127 */
+    (void)st;
 }

@@ -42,4 +42,8 @@ int ptp_fail(ptp_error *err, int status, const char *fmt, ...)
 #endif
     ;
 
+/* The next value of the splitmix64 stream *state (Steele, Lea and Flood 2014): the one
+ * deterministic pseudo-random stream of ptpgen and its tests. */
+uint64_t ptp_splitmix64(uint64_t *state);
+
 #endif

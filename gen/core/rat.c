@@ -138,6 +138,15 @@ int rat_equal(const rat *a, const rat *b)
     return a->num == b->num && a->den == b->den;
 }
 
+int rat_lcm_den(ptp_i128 *D, const rat *a)
+{
+    ptp_i128 g = (ptp_i128)u128_gcd((ptp_u128)*D, (ptp_u128)a->den), L;
+    if (i128_mul_ovf(&L, *D / g, a->den))
+        return PTP_EOVERFLOW;
+    *D = L;
+    return PTP_OK;
+}
+
 double rat_get_d(const rat *a)
 {
     return (double)a->num / (double)a->den;

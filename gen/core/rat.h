@@ -34,6 +34,9 @@ void rat_neg(rat *r, const rat *a);
 int rat_sgn(const rat *a);
 /* Nonzero when a == b (both canonical). */
 int rat_equal(const rat *a, const rat *b);
+/* *D = lcm(*D, den of a), for *D > 0: the common denominator of a running set of weights;
+ * PTP_EOVERFLOW (*D unchanged) when it does not fit 127 bits. */
+int rat_lcm_den(ptp_i128 *D, const rat *a);
 /* Nearest double (correct to within one rounding of each of num and den). */
 double rat_get_d(const rat *a);
 /* Writes "p" or "p/q" to buf (RAT_STRLEN bytes); returns buf. */

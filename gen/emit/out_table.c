@@ -29,9 +29,8 @@ static int common_den(ptp_i128 *D, const tp_table *t)
     size_t i;
     *D = 1;
     for (i = 0; i < t->nterms; i++) {
-        ptp_i128 g = (ptp_i128)u128_gcd((ptp_u128)*D, (ptp_u128)t->terms[i].w.den);
         ptp_u128 bound = 0;
-        if (i128_mul_ovf(D, *D / g, t->terms[i].w.den) ||
+        if (rat_lcm_den(D, &t->terms[i].w) ||
             u128_mul_ovf(&bound, i128_abs(t->terms[i].w.num), (ptp_u128)(*D / t->terms[i].w.den)) ||
             bound > (ptp_u128)I128_MAX)
             return PTP_EOVERFLOW;
@@ -96,13 +95,15 @@ void out_c_arrays(sbuf *o, const tp_table *t, const sched *s, const char *name,
 
 int out_table(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    char up[64], name[80], count[80], num[48];
+    char up[64], arrays[80], name[96], count[80], num[48];
     const sched *s = info->sched;
     const char *itype = NULL;
     ptp_i128 D;
     tp_domain_text x;
     int p;
     fmt_upper(up, sizeof up, info->prefix);
+    /* The arrays are <prefix>table_*, apart from the C header's <prefix>idx and <prefix>wgt. */
+    snprintf(arrays, sizeof arrays, "%stable_", info->prefix);
     if (common_den(&D, t) == PTP_OK)
         itype = int_type(t, D);
     tp_domain_text_get(&x, &t->dom);
@@ -134,15 +135,15 @@ int out_table(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
                 s->threads, up, s->patches, up, s->rounds);
     sbuf_printf(o, "#define %sSLOTS (%sROUNDS * %sTHREADS)\n", up, up, up);
     snprintf(count, sizeof count, "%sTERMS", up);
-    out_c_arrays(o, t, NULL, info->prefix, count, itype, D);
-    sbuf_printf(o, "\nstatic const unsigned short %sowner[%sPLANES] = {", info->prefix, up);
+    out_c_arrays(o, t, NULL, arrays, count, itype, D);
+    sbuf_printf(o, "\nstatic const unsigned short %sowner[%sPLANES] = {", arrays, up);
     for (p = 0; p < t->dom.nplanes; p++)
         sbuf_printf(o, "%s%d", p == 0                                ? "\n    "
                                : tp_domain_plane_row_start(&t->dom, p) ? ",\n    "
                                                                        : ", ",
                     s->owner[p]);
     sbuf_puts(o, "\n};\n");
-    snprintf(name, sizeof name, "%ssched_", info->prefix);
+    snprintf(name, sizeof name, "%ssched_", arrays);
     snprintf(count, sizeof count, "%sSLOTS", up);
     out_c_arrays(o, t, s, name, count, itype, D);
     sbuf_printf(o, "\n#endif\n");

@@ -23,13 +23,15 @@ static int plane_scale(rat *c, const tp_term *terms, size_t a, size_t b)
 {
     ptp_i128 D = 1, G = 0;
     size_t i;
-    for (i = a; i < b; i++) {
-        ptp_i128 g = (ptp_i128)u128_gcd((ptp_u128)D, (ptp_u128)terms[i].w.den);
-        if (i128_mul_ovf(&D, D / g, terms[i].w.den))
-            return PTP_EOVERFLOW;
-    }
     for (i = a; i < b; i++)
-        G = (ptp_i128)u128_gcd((ptp_u128)G, i128_abs(terms[i].w.num) * (ptp_u128)(D / terms[i].w.den));
+        if (rat_lcm_den(&D, &terms[i].w))
+            return PTP_EOVERFLOW;
+    for (i = a; i < b; i++) {
+        ptp_i128 w;
+        if (i128_mul_ovf(&w, terms[i].w.num, D / terms[i].w.den))
+            return PTP_EOVERFLOW;
+        G = (ptp_i128)u128_gcd((ptp_u128)G, i128_abs(w));
+    }
     return rat_set_frac(c, D, G ? G : 1);
 }
 

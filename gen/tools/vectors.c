@@ -19,19 +19,10 @@ static const char conventions[] =
     "2 silhouette: strict, back iff every d_P < 0 and front iff every d_P > 0; degenerate, back "
     "iff no d_P > 0 and front iff no d_P < 0 (all zero counts as back)";
 
-/* The next value of the splitmix64 stream s. */
-static uint64_t next(uint64_t *s)
-{
-    uint64_t z = (*s += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return z ^ (z >> 31);
-}
-
 /* An integer in [lo, hi] (the modulo bias does not matter here). */
 static int draw(uint64_t *s, int lo, int hi)
 {
-    return lo + (int)(next(s) % (uint64_t)(hi - lo + 1));
+    return lo + (int)(ptp_splitmix64(s) % (uint64_t)(hi - lo + 1));
 }
 
 /* +1 or -1. */
@@ -245,7 +236,7 @@ static int common_denominators(vstate *st, ptp_error *err)
     for (x = 0; x < t->nterms; x++) {
         const tp_term *w = &t->terms[x];
         ptp_i128 *D = &st->den[w->plane];
-        if (i128_mul_ovf(D, *D / (ptp_i128)u128_gcd((ptp_u128)*D, (ptp_u128)w->w.den), w->w.den))
+        if (rat_lcm_den(D, &w->w))
             return ptp_fail(err, PTP_EOVERFLOW, "overflow in the denominator of plane %d",
                             w->plane);
     }

@@ -278,7 +278,8 @@ static int skip_directive(rd *r)
             while ((c = at(r, r->pos)) >= 0 && c != '\n')
                 r->pos++;
         } else if (c == '"' || c == '\'') {
-            skip_quoted(r, 1);
+            if ((st = skip_quoted(r, 1)))
+                return st;
         } else {
             r->pos++;
         }
@@ -469,11 +470,11 @@ static int role_of(const rd *r, const tok *t)
     return ROLE_NONE;
 }
 
-/* The bidegree in an idx array name like ptp_2x3_idx (digits 'x' digits before "_idx", after
- * '_' or at the start), into d as a hint. */
+/* The bidegree in an idx array name like ptp_2x3_idx or ptp_2x3_table_idx (digits 'x' digits
+ * before "_idx" or "_table_idx", after '_' or at the start), into d as a hint. */
 static void name_degree(verify_doc *d, const char *s, size_t n, int line)
 {
-    size_t k = n - 4; /* s[k] is the '_' of "_idx" */
+    size_t k = ends_with(s, n, "_table_idx") ? n - 10 : n - 4; /* s[k] is the '_' before */
     int v[2] = {0, 0}, which, scale;
     if (n < 4)
         return;

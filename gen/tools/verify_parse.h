@@ -30,7 +30,7 @@ typedef struct {
     verify_term *terms;
     size_t nterms;
     int n, m;          /* the bidegree the document names, 0 when it names none: JSON "degree",
-                          or an idx array named like ptp_2x3_idx */
+                          or an idx array named like ptp_2x3_idx or ptp_2x3_table_idx */
     int degree_line;   /* the line that names it */
     int degree_named;  /* 1: from the "degree" field (binding); 2: from the array name (a hint) */
 } verify_doc;

@@ -23,47 +23,47 @@
 #define PTP_1X1_ROUNDS 1
 #define PTP_1X1_SLOTS (PTP_1X1_ROUNDS * PTP_1X1_THREADS)
 
-static const unsigned short ptp_1x1_idx[PTP_1X1_TERMS][4] = {
+static const unsigned short ptp_1x1_table_idx[PTP_1X1_TERMS][4] = {
     {0, 0, 1, 2},
     {1, 0, 1, 3},
     {2, 0, 2, 3},
     {3, 1, 2, 3},
 };
 
-static const float ptp_1x1_wgt[PTP_1X1_TERMS] = {
+static const float ptp_1x1_table_wgt[PTP_1X1_TERMS] = {
     -1.0f,           /* -1 */
     -1.0f,           /* -1 */
     1.0f,            /* 1 */
     1.0f,            /* 1 */
 };
 
-static const int ptp_1x1_iwgt[PTP_1X1_TERMS] = {
+static const int ptp_1x1_table_iwgt[PTP_1X1_TERMS] = {
     -1,
     -1,
     1,
     1,
 };
 
-static const unsigned short ptp_1x1_owner[PTP_1X1_PLANES] = {
+static const unsigned short ptp_1x1_table_owner[PTP_1X1_PLANES] = {
     0, 1,
     2, 3
 };
 
-static const unsigned short ptp_1x1_sched_idx[PTP_1X1_SLOTS][4] = {
+static const unsigned short ptp_1x1_table_sched_idx[PTP_1X1_SLOTS][4] = {
     {0, 0, 1, 2},
     {1, 0, 1, 3},
     {2, 0, 2, 3},
     {3, 1, 2, 3},
 };
 
-static const float ptp_1x1_sched_wgt[PTP_1X1_SLOTS] = {
+static const float ptp_1x1_table_sched_wgt[PTP_1X1_SLOTS] = {
     -1.0f,           /* -1 */
     -1.0f,           /* -1 */
     1.0f,            /* 1 */
     1.0f,            /* 1 */
 };
 
-static const int ptp_1x1_sched_iwgt[PTP_1X1_SLOTS] = {
+static const int ptp_1x1_table_sched_iwgt[PTP_1X1_SLOTS] = {
     -1,
     -1,
     1,

@@ -23,7 +23,7 @@
 #define PTP_1X3_ROUNDS 6
 #define PTP_1X3_SLOTS (PTP_1X3_ROUNDS * PTP_1X3_THREADS)
 
-static const unsigned short ptp_1x3_idx[PTP_1X3_TERMS][4] = {
+static const unsigned short ptp_1x3_table_idx[PTP_1X3_TERMS][4] = {
     {0, 0, 1, 4},
     {1, 0, 1, 5},
     {1, 0, 2, 4},
@@ -74,7 +74,7 @@ static const unsigned short ptp_1x3_idx[PTP_1X3_TERMS][4] = {
     {15, 3, 6, 7},
 };
 
-static const float ptp_1x3_wgt[PTP_1X3_TERMS] = {
+static const float ptp_1x3_table_wgt[PTP_1X3_TERMS] = {
     -3.0f,           /* -3 */
     -1.28571427f,    /* -9/7 */
     -0.857142866f,   /* -6/7 */
@@ -125,7 +125,7 @@ static const float ptp_1x3_wgt[PTP_1X3_TERMS] = {
     3.0f,            /* 3 */
 };
 
-static const int ptp_1x3_iwgt[PTP_1X3_TERMS] = {
+static const int ptp_1x3_table_iwgt[PTP_1X3_TERMS] = {
     -105,
     -45,
     -30,
@@ -176,12 +176,12 @@ static const int ptp_1x3_iwgt[PTP_1X3_TERMS] = {
     105,
 };
 
-static const unsigned short ptp_1x3_owner[PTP_1X3_PLANES] = {
+static const unsigned short ptp_1x3_table_owner[PTP_1X3_PLANES] = {
     0, 4, 4, 0, 1, 5, 5, 1,
     2, 6, 6, 2, 3, 7, 7, 3
 };
 
-static const unsigned short ptp_1x3_sched_idx[PTP_1X3_SLOTS][4] = {
+static const unsigned short ptp_1x3_table_sched_idx[PTP_1X3_SLOTS][4] = {
     {0, 0, 1, 4},
     {4, 0, 2, 7},
     {8, 0, 4, 5},
@@ -232,7 +232,7 @@ static const unsigned short ptp_1x3_sched_idx[PTP_1X3_SLOTS][4] = {
     {14, 3, 5, 7},
 };
 
-static const float ptp_1x3_sched_wgt[PTP_1X3_SLOTS] = {
+static const float ptp_1x3_table_sched_wgt[PTP_1X3_SLOTS] = {
     -3.0f,           /* -3 */
     -0.171428576f,   /* -6/35 */
     3.0f,            /* 3 */
@@ -283,7 +283,7 @@ static const float ptp_1x3_sched_wgt[PTP_1X3_SLOTS] = {
     0.857142866f,    /* 6/7 */
 };
 
-static const int ptp_1x3_sched_iwgt[PTP_1X3_SLOTS] = {
+static const int ptp_1x3_table_sched_iwgt[PTP_1X3_SLOTS] = {
     -105,
     -6,
     105,

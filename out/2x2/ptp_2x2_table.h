@@ -23,7 +23,7 @@
 #define PTP_2X2_ROUNDS 10
 #define PTP_2X2_SLOTS (PTP_2X2_ROUNDS * PTP_2X2_THREADS)
 
-static const unsigned short ptp_2x2_idx[PTP_2X2_TERMS][4] = {
+static const unsigned short ptp_2x2_table_idx[PTP_2X2_TERMS][4] = {
     {0, 0, 1, 3},
     {1, 0, 1, 4},
     {1, 0, 2, 3},
@@ -102,7 +102,7 @@ static const unsigned short ptp_2x2_idx[PTP_2X2_TERMS][4] = {
     {24, 5, 7, 8},
 };
 
-static const float ptp_2x2_wgt[PTP_2X2_TERMS] = {
+static const float ptp_2x2_table_wgt[PTP_2X2_TERMS] = {
     -4.0f,           /* -4 */
     -2.0f,           /* -2 */
     -1.0f,           /* -1 */
@@ -181,7 +181,7 @@ static const float ptp_2x2_wgt[PTP_2X2_TERMS] = {
     4.0f,            /* 4 */
 };
 
-static const int ptp_2x2_iwgt[PTP_2X2_TERMS] = {
+static const int ptp_2x2_table_iwgt[PTP_2X2_TERMS] = {
     -48,
     -24,
     -12,
@@ -260,7 +260,7 @@ static const int ptp_2x2_iwgt[PTP_2X2_TERMS] = {
     48,
 };
 
-static const unsigned short ptp_2x2_owner[PTP_2X2_PLANES] = {
+static const unsigned short ptp_2x2_table_owner[PTP_2X2_PLANES] = {
     3, 1, 5, 2, 4,
     3, 4, 0, 5, 5,
     6, 1, 6, 2, 7,
@@ -268,7 +268,7 @@ static const unsigned short ptp_2x2_owner[PTP_2X2_PLANES] = {
     0, 1, 0, 2, 3
 };
 
-static const unsigned short ptp_2x2_sched_idx[PTP_2X2_SLOTS][4] = {
+static const unsigned short ptp_2x2_table_sched_idx[PTP_2X2_SLOTS][4] = {
     {7, 0, 1, 8},
     {1, 0, 1, 4},
     {3, 0, 2, 5},
@@ -351,7 +351,7 @@ static const unsigned short ptp_2x2_sched_idx[PTP_2X2_SLOTS][4] = {
     {14, 0, 0, 0},
 };
 
-static const float ptp_2x2_sched_wgt[PTP_2X2_SLOTS] = {
+static const float ptp_2x2_table_sched_wgt[PTP_2X2_SLOTS] = {
     -0.166666672f,   /* -1/6 */
     -2.0f,           /* -2 */
     -1.0f,           /* -1 */
@@ -434,7 +434,7 @@ static const float ptp_2x2_sched_wgt[PTP_2X2_SLOTS] = {
     0.0f,            /* 0 */
 };
 
-static const int ptp_2x2_sched_iwgt[PTP_2X2_SLOTS] = {
+static const int ptp_2x2_table_sched_iwgt[PTP_2X2_SLOTS] = {
     -2,
     -24,
     -12,

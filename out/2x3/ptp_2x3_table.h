@@ -23,7 +23,7 @@
 #define PTP_2X3_ROUNDS 13
 #define PTP_2X3_SLOTS (PTP_2X3_ROUNDS * PTP_2X3_THREADS)
 
-static const unsigned short ptp_2x3_idx[PTP_2X3_TERMS][4] = {
+static const unsigned short ptp_2x3_table_idx[PTP_2X3_TERMS][4] = {
     {0, 0, 1, 4},
     {1, 0, 1, 5},
     {1, 0, 2, 4},
@@ -226,7 +226,7 @@ static const unsigned short ptp_2x3_idx[PTP_2X3_TERMS][4] = {
     {39, 7, 10, 11},
 };
 
-static const float ptp_2x3_wgt[PTP_2X3_TERMS] = {
+static const float ptp_2x3_table_wgt[PTP_2X3_TERMS] = {
     -6.0f,           /* -6 */
     -2.57142854f,    /* -18/7 */
     -1.71428573f,    /* -12/7 */
@@ -429,7 +429,7 @@ static const float ptp_2x3_wgt[PTP_2X3_TERMS] = {
     6.0f,            /* 6 */
 };
 
-static const int ptp_2x3_iwgt[PTP_2X3_TERMS] = {
+static const int ptp_2x3_table_iwgt[PTP_2X3_TERMS] = {
     -1260,
     -540,
     -360,
@@ -632,7 +632,7 @@ static const int ptp_2x3_iwgt[PTP_2X3_TERMS] = {
     1260,
 };
 
-static const unsigned short ptp_2x3_owner[PTP_2X3_PLANES] = {
+static const unsigned short ptp_2x3_table_owner[PTP_2X3_PLANES] = {
     0, 4, 12, 14, 15, 13, 5, 1,
     12, 10, 6, 2, 3, 7, 11, 13,
     2, 12, 10, 0, 1, 11, 13, 3,
@@ -640,7 +640,7 @@ static const unsigned short ptp_2x3_owner[PTP_2X3_PLANES] = {
     4, 10, 8, 14, 15, 9, 11, 5
 };
 
-static const unsigned short ptp_2x3_sched_idx[PTP_2X3_SLOTS][4] = {
+static const unsigned short ptp_2x3_table_sched_idx[PTP_2X3_SLOTS][4] = {
     {0, 0, 1, 4},
     {7, 2, 3, 7},
     {11, 0, 1, 11},
@@ -851,7 +851,7 @@ static const unsigned short ptp_2x3_sched_idx[PTP_2X3_SLOTS][4] = {
     {4, 0, 0, 0},
 };
 
-static const float ptp_2x3_sched_wgt[PTP_2X3_SLOTS] = {
+static const float ptp_2x3_table_sched_wgt[PTP_2X3_SLOTS] = {
     -6.0f,           /* -6 */
     -6.0f,           /* -6 */
     -0.042857144f,   /* -3/70 */
@@ -1062,7 +1062,7 @@ static const float ptp_2x3_sched_wgt[PTP_2X3_SLOTS] = {
     0.0f,            /* 0 */
 };
 
-static const int ptp_2x3_sched_iwgt[PTP_2X3_SLOTS] = {
+static const int ptp_2x3_table_sched_iwgt[PTP_2X3_SLOTS] = {
     -1260,
     -1260,
     -9,

@@ -23,7 +23,7 @@
 #define PTP_3X1_ROUNDS 6
 #define PTP_3X1_SLOTS (PTP_3X1_ROUNDS * PTP_3X1_THREADS)
 
-static const unsigned short ptp_3x1_idx[PTP_3X1_TERMS][4] = {
+static const unsigned short ptp_3x1_table_idx[PTP_3X1_TERMS][4] = {
     {0, 0, 1, 2},
     {1, 0, 1, 3},
     {2, 0, 1, 4},
@@ -74,7 +74,7 @@ static const unsigned short ptp_3x1_idx[PTP_3X1_TERMS][4] = {
     {15, 5, 6, 7},
 };
 
-static const float ptp_3x1_wgt[PTP_3X1_TERMS] = {
+static const float ptp_3x1_table_wgt[PTP_3X1_TERMS] = {
     -3.0f,           /* -3 */
     -3.0f,           /* -3 */
     -0.857142866f,   /* -6/7 */
@@ -125,7 +125,7 @@ static const float ptp_3x1_wgt[PTP_3X1_TERMS] = {
     3.0f,            /* 3 */
 };
 
-static const int ptp_3x1_iwgt[PTP_3X1_TERMS] = {
+static const int ptp_3x1_table_iwgt[PTP_3X1_TERMS] = {
     -105,
     -105,
     -30,
@@ -176,7 +176,7 @@ static const int ptp_3x1_iwgt[PTP_3X1_TERMS] = {
     105,
 };
 
-static const unsigned short ptp_3x1_owner[PTP_3X1_PLANES] = {
+static const unsigned short ptp_3x1_table_owner[PTP_3X1_PLANES] = {
     0, 1,
     4, 5,
     4, 5,
@@ -187,7 +187,7 @@ static const unsigned short ptp_3x1_owner[PTP_3X1_PLANES] = {
     2, 3
 };
 
-static const unsigned short ptp_3x1_sched_idx[PTP_3X1_SLOTS][4] = {
+static const unsigned short ptp_3x1_table_sched_idx[PTP_3X1_SLOTS][4] = {
     {0, 0, 1, 2},
     {1, 0, 1, 3},
     {8, 0, 4, 7},
@@ -238,7 +238,7 @@ static const unsigned short ptp_3x1_sched_idx[PTP_3X1_SLOTS][4] = {
     {13, 4, 5, 7},
 };
 
-static const float ptp_3x1_sched_wgt[PTP_3X1_SLOTS] = {
+static const float ptp_3x1_table_sched_wgt[PTP_3X1_SLOTS] = {
     -3.0f,           /* -3 */
     -3.0f,           /* -3 */
     0.171428576f,    /* 6/35 */
@@ -289,7 +289,7 @@ static const float ptp_3x1_sched_wgt[PTP_3X1_SLOTS] = {
     -1.28571427f,    /* -9/7 */
 };
 
-static const int ptp_3x1_sched_iwgt[PTP_3X1_SLOTS] = {
+static const int ptp_3x1_table_sched_iwgt[PTP_3X1_SLOTS] = {
     -105,
     -105,
     6,

@@ -23,7 +23,7 @@
 #define PTP_3X2_ROUNDS 13
 #define PTP_3X2_SLOTS (PTP_3X2_ROUNDS * PTP_3X2_THREADS)
 
-static const unsigned short ptp_3x2_idx[PTP_3X2_TERMS][4] = {
+static const unsigned short ptp_3x2_table_idx[PTP_3X2_TERMS][4] = {
     {0, 0, 1, 3},
     {1, 0, 1, 4},
     {1, 0, 2, 3},
@@ -226,7 +226,7 @@ static const unsigned short ptp_3x2_idx[PTP_3X2_TERMS][4] = {
     {39, 8, 10, 11},
 };
 
-static const float ptp_3x2_wgt[PTP_3X2_TERMS] = {
+static const float ptp_3x2_table_wgt[PTP_3X2_TERMS] = {
     -6.0f,           /* -6 */
     -3.0f,           /* -3 */
     -1.5f,           /* -3/2 */
@@ -429,7 +429,7 @@ static const float ptp_3x2_wgt[PTP_3X2_TERMS] = {
     6.0f,            /* 6 */
 };
 
-static const int ptp_3x2_iwgt[PTP_3X2_TERMS] = {
+static const int ptp_3x2_table_iwgt[PTP_3X2_TERMS] = {
     -1260,
     -630,
     -315,
@@ -632,7 +632,7 @@ static const int ptp_3x2_iwgt[PTP_3X2_TERMS] = {
     1260,
 };
 
-static const unsigned short ptp_3x2_owner[PTP_3X2_PLANES] = {
+static const unsigned short ptp_3x2_table_owner[PTP_3X2_PLANES] = {
     0, 4, 2, 5, 1,
     12, 12, 12, 13, 13,
     10, 6, 10, 7, 11,
@@ -643,7 +643,7 @@ static const unsigned short ptp_3x2_owner[PTP_3X2_PLANES] = {
     4, 10, 3, 11, 5
 };
 
-static const unsigned short ptp_3x2_sched_idx[PTP_3X2_SLOTS][4] = {
+static const unsigned short ptp_3x2_table_sched_idx[PTP_3X2_SLOTS][4] = {
     {0, 0, 1, 3},
     {4, 1, 2, 5},
     {2, 0, 1, 5},
@@ -854,7 +854,7 @@ static const unsigned short ptp_3x2_sched_idx[PTP_3X2_SLOTS][4] = {
     {19, 0, 0, 0},
 };
 
-static const float ptp_3x2_sched_wgt[PTP_3X2_SLOTS] = {
+static const float ptp_3x2_table_sched_wgt[PTP_3X2_SLOTS] = {
     -6.0f,           /* -6 */
     -6.0f,           /* -6 */
     -1.0f,           /* -1 */
@@ -1065,7 +1065,7 @@ static const float ptp_3x2_sched_wgt[PTP_3X2_SLOTS] = {
     0.0f,            /* 0 */
 };
 
-static const int ptp_3x2_sched_iwgt[PTP_3X2_SLOTS] = {
+static const int ptp_3x2_table_sched_iwgt[PTP_3X2_SLOTS] = {
     -1260,
     -1260,
     -210,

@@ -23,7 +23,7 @@
 #define PTP_3X3_ROUNDS 33
 #define PTP_3X3_SLOTS (PTP_3X3_ROUNDS * PTP_3X3_THREADS)
 
-static const unsigned short ptp_3x3_idx[PTP_3X3_TERMS][4] = {
+static const unsigned short ptp_3x3_table_idx[PTP_3X3_TERMS][4] = {
     {0, 0, 1, 4},
     {1, 0, 1, 5},
     {1, 0, 2, 4},
@@ -542,7 +542,7 @@ static const unsigned short ptp_3x3_idx[PTP_3X3_TERMS][4] = {
     {63, 11, 14, 15},
 };
 
-static const float ptp_3x3_wgt[PTP_3X3_TERMS] = {
+static const float ptp_3x3_table_wgt[PTP_3X3_TERMS] = {
     -9.0f,           /* -9 */
     -3.85714293f,    /* -27/7 */
     -2.57142854f,    /* -18/7 */
@@ -1061,7 +1061,7 @@ static const float ptp_3x3_wgt[PTP_3X3_TERMS] = {
     9.0f,            /* 9 */
 };
 
-static const int ptp_3x3_iwgt[PTP_3X3_TERMS] = {
+static const int ptp_3x3_table_iwgt[PTP_3X3_TERMS] = {
     -11025,
     -4725,
     -3150,
@@ -1580,7 +1580,7 @@ static const int ptp_3x3_iwgt[PTP_3X3_TERMS] = {
     11025,
 };
 
-static const unsigned short ptp_3x3_owner[PTP_3X3_PLANES] = {
+static const unsigned short ptp_3x3_table_owner[PTP_3X3_PLANES] = {
     4, 8, 12, 12, 13, 13, 9, 5,
     10, 14, 8, 12, 13, 9, 15, 11,
     4, 10, 12, 4, 5, 13, 11, 5,
@@ -1591,7 +1591,7 @@ static const unsigned short ptp_3x3_owner[PTP_3X3_PLANES] = {
     6, 14, 2, 10, 11, 3, 15, 7
 };
 
-static const unsigned short ptp_3x3_sched_idx[PTP_3X3_SLOTS][4] = {
+static const unsigned short ptp_3x3_table_sched_idx[PTP_3X3_SLOTS][4] = {
     {27, 0, 6, 14},
     {28, 0, 6, 15},
     {35, 0, 9, 15},
@@ -2122,7 +2122,7 @@ static const unsigned short ptp_3x3_sched_idx[PTP_3X3_SLOTS][4] = {
     {14, 0, 0, 0},
 };
 
-static const float ptp_3x3_sched_wgt[PTP_3X3_SLOTS] = {
+static const float ptp_3x3_table_sched_wgt[PTP_3X3_SLOTS] = {
     -0.0881632641f,  /* -108/1225 */
     -0.022040816f,   /* -27/1225 */
     0.022040816f,    /* 27/1225 */
@@ -2653,7 +2653,7 @@ static const float ptp_3x3_sched_wgt[PTP_3X3_SLOTS] = {
     0.0f,            /* 0 */
 };
 
-static const int ptp_3x3_sched_iwgt[PTP_3X3_SLOTS] = {
+static const int ptp_3x3_table_sched_iwgt[PTP_3X3_SLOTS] = {
     -108,
     -27,
     27,

@@ -23,7 +23,7 @@
 #define PTP_4X4_ROUNDS 68
 #define PTP_4X4_SLOTS (PTP_4X4_ROUNDS * PTP_4X4_THREADS)
 
-static const unsigned short ptp_4x4_idx[PTP_4X4_TERMS][4] = {
+static const unsigned short ptp_4x4_table_idx[PTP_4X4_TERMS][4] = {
     {0, 0, 1, 5},
     {1, 0, 1, 6},
     {1, 0, 2, 5},
@@ -2174,7 +2174,7 @@ static const unsigned short ptp_4x4_idx[PTP_4X4_TERMS][4] = {
     {120, 19, 23, 24},
 };
 
-static const float ptp_4x4_wgt[PTP_4X4_TERMS] = {
+static const float ptp_4x4_table_wgt[PTP_4X4_TERMS] = {
     -16.0f,          /* -16 */
     -6.4000001f,     /* -32/5 */
     -4.80000019f,    /* -24/5 */
@@ -4325,7 +4325,7 @@ static const float ptp_4x4_wgt[PTP_4X4_TERMS] = {
     16.0f,           /* 16 */
 };
 
-static const int ptp_4x4_iwgt[PTP_4X4_TERMS] = {
+static const int ptp_4x4_table_iwgt[PTP_4X4_TERMS] = {
     -705600,
     -282240,
     -211680,
@@ -6476,7 +6476,7 @@ static const int ptp_4x4_iwgt[PTP_4X4_TERMS] = {
     705600,
 };
 
-static const unsigned short ptp_4x4_owner[PTP_4X4_PLANES] = {
+static const unsigned short ptp_4x4_table_owner[PTP_4X4_PLANES] = {
     9, 17, 24, 26, 3, 25, 21, 27, 4, 18, 10,
     19, 5, 22, 31, 15, 16, 17, 26, 23, 6, 20,
     13, 24, 7, 30, 25, 26, 26, 31, 15, 0, 14,
@@ -6490,7 +6490,7 @@ static const unsigned short ptp_4x4_owner[PTP_4X4_PLANES] = {
     11, 5, 0, 22, 3, 8, 25, 23, 1, 6, 12
 };
 
-static const unsigned short ptp_4x4_sched_idx[PTP_4X4_SLOTS][4] = {
+static const unsigned short ptp_4x4_table_sched_idx[PTP_4X4_SLOTS][4] = {
     {31, 2, 4, 19},
     {44, 0, 5, 21},
     {61, 0, 13, 24},
@@ -8669,7 +8669,7 @@ static const unsigned short ptp_4x4_sched_idx[PTP_4X4_SLOTS][4] = {
     {14, 0, 0, 0},
 };
 
-static const float ptp_4x4_sched_wgt[PTP_4X4_SLOTS] = {
+static const float ptp_4x4_table_sched_wgt[PTP_4X4_SLOTS] = {
     -0.319999993f,   /* -8/25 */
     0.0761904791f,   /* 8/105 */
     -0.00181405898f, /* -4/2205 */
@@ -10848,7 +10848,7 @@ static const float ptp_4x4_sched_wgt[PTP_4X4_SLOTS] = {
     0.0f,            /* 0 */
 };
 
-static const int ptp_4x4_sched_iwgt[PTP_4X4_SLOTS] = {
+static const int ptp_4x4_table_sched_iwgt[PTP_4X4_SLOTS] = {
     -14112,
     3360,
     -80,
