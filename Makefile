@@ -130,6 +130,65 @@ $(B)/bench/peak: bench/peak.c Makefile $(B)/bench/cc.txt
     $(addprefix $(B)/bench/ptp_3x3_,$(addsuffix .h,$(BENCH_VARIANTS)))
 .PHONY: bench
 
+# `make render`: build/render, ptpgen's clip-space GLSL kernels culling bicubic patches in a
+# Vulkan tessellation pipeline (bench/render/, README "Rendering"). Every shader, ptpgen's
+# kernels among them, is compiled to SPIR-V by glslangValidator and into the binary.
+RB = $(B)/render
+RENDER_SRC = $(sort $(wildcard bench/render/*.c)) bench/cones.c
+RENDER_HDR = $(wildcard bench/render/*.h) bench/cones.h
+RENDER_SHADERS = xform:xform.comp cone:cone.comp vert:patch.vert tesc:patch.tesc \
+    tese:patch.tese frag:shade.frag
+RENDER_SPV = $(foreach s,$(RENDER_SHADERS) ptp ptp_cert,$(RB)/spv_$(firstword $(subst :, ,$(s))).h)
+
+render: build/render
+
+# build/render is a copy of the binary of the compiler asked for (as ./ptpgen is).
+build/render: $(RB)/render FORCE
+	@cmp -s $< $@ || cp $< $@
+
+$(RB)/render: $(RENDER_SRC) $(RENDER_HDR) $(RENDER_SPV) $(RB)/ptp_groups.h Makefile
+	$(CC) $(STD) $(CFLAGS) -Ibench -I$(RB) -o $@ $(RENDER_SRC) -lvulkan -lm
+
+# SPIR-V as a C array (glslangValidator --vn); its messages go to the log, shown on failure.
+define render_spv
+$(RB)/spv_$(1).h: $(2) bench/render/params.glsl
+	@mkdir -p $$(@D)
+	@glslangValidator -V --vn render_spv_$(1) -o $$@ $$< >$$@.log || { cat $$@.log; exit 1; }
+endef
+$(foreach s,$(RENDER_SHADERS),$(eval $(call render_spv,$(word 1,$(subst :, ,$(s))),bench/render/$(word 2,$(subst :, ,$(s))))))
+$(eval $(call render_spv,ptp,$(RB)/ptp.comp))
+$(eval $(call render_spv,ptp_cert,$(RB)/ptp_cert.comp))
+
+$(RB)/ptp.comp: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target glsl --space clip -o $@
+
+$(RB)/ptp_cert.comp: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target glsl --space clip --certified -o $@
+
+# The kernels' patches per workgroup (the default schedule), for the host's dispatch.
+$(RB)/ptp_groups.h: $(RB)/ptp.comp $(RB)/ptp_cert.comp
+	@{ sed -n 's/^#define PTP_3X3_Q \([0-9]*\)u.*/#define RENDER_PTP_Q \1u/p' $(RB)/ptp.comp; \
+	   sed -n 's/^#define PTP_3X3_Q \([0-9]*\)u.*/#define RENDER_PTP_CERT_Q \1u/p' $(RB)/ptp_cert.comp; } >$@.tmp
+	@test "$$(wc -l <$@.tmp)" = 2 || { echo "no PTP_3X3_Q in $(RB)/ptp*.comp"; exit 1; }
+	@mv $@.tmp $@
+
+# `make figures`: build/render over tessellation factors 1 to 64 for every cull method on BigGuy
+# and the teapot (bench/render/figures.py): bench/figures/ gets the Figure-1 images, gnuplot plots
+# of frame time and tessellation work against the factor, and table.md. gnuplot comes from Debian
+# (installed when missing and run as root). FIGURES_ARGS=--quick for a short run.
+FIGURES_MODELS ?= ../shared/models
+FIGURES_ARGS ?=
+
+figures: build/render
+	@command -v gnuplot >/dev/null 2>&1 || { [ "$$(id -u)" = 0 ] && \
+	    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq gnuplot-nox >/dev/null; } || \
+	    { echo "figures: gnuplot is missing (apt-get install gnuplot-nox)"; exit 1; }
+	python3 bench/render/figures.py build/render $(FIGURES_MODELS) bench/figures $(FIGURES_ARGS)
+
+.PHONY: render figures
+
 # Fuzzing verify's parsers with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs
 # collect in build/fuzz/corpus; copy an input that fails into tests/fuzz/regressions/, which the
 # tests replay (with tests/fuzz/verify/, the seeds) under AddressSanitizer and UBSan.

@@ -88,6 +88,9 @@ if [ -x build/gcc/ptpgen ]; then
 fi
 run tests/test_wgpu.sh env BUILD=build/gcc bash tests/test_wgpu.sh
 
+# build/render: the GLSL kernels culling patches before a tessellation pipeline on lavapipe.
+run tests/test_render.sh env CC=gcc bash tests/test_render.sh
+
 passed=$(grep -c '^ok - ' "$log")
 failed=$(grep -c '^not ok - ' "$log")
 echo "$passed passed, $failed failed"

@@ -1,0 +1,24 @@
+/* bez.h: reading BEZ models (bicubic Bezier patches over a shared vertex list) into float
+ * control points, patch-major, with a precise one-line message for malformed input. */
+#ifndef RENDER_BEZ_H
+#define RENDER_BEZ_H
+
+#include <stddef.h>
+
+/* A model: point k (row-major 4x4, first index along u) of patch p at pts[(p*16 + k)*3 ..]. */
+typedef struct bez_model {
+    size_t npatches;
+    float *pts;          /* npatches * 16 * 3 floats */
+    double center[3];    /* bounding sphere of every control point (box centre) */
+    double radius;
+} bez_model;
+
+/* Reads path into *m. Returns 0, or -1 with a message in err (size errsz): a missing file, a
+ * malformed line (named by number), an index out of range, a non-finite coordinate, or out of
+ * memory. On failure m->pts is NULL. */
+int bez_read(bez_model *m, const char *path, char *err, size_t errsz);
+
+/* Frees m->pts. */
+void bez_free(bez_model *m);
+
+#endif
