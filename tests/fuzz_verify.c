@@ -13,14 +13,14 @@
 #define FUZZ_MAX_DEGREE 6
 
 /* Checks one call's contract; aborts (a finding) when it is broken. */
-static void run(const uint8_t *data, size_t size, int n, int m)
+static void run(const uint8_t *data, size_t size, int n, int m, int convention)
 {
     sbuf out;
     ptp_error err;
     int verdict = -1, st;
     sbuf_init(&out);
     err.msg[0] = '\0';
-    st = verify_table(&out, &verdict, (const char *)data, size, "fuzz", n, m, &err);
+    st = verify_table(&out, &verdict, (const char *)data, size, "fuzz", n, m, convention, &err);
     if (st == PTP_OK && (verdict < VERIFY_RIGHT || verdict > VERIFY_WRONG || !out.s ||
                          out.s[out.len - 1] != '\n' || strncmp(out.s, "fuzz", 4)))
         abort();
@@ -43,11 +43,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                     (n <= FUZZ_MAX_DEGREE && m <= FUZZ_MAX_DEGREE);
         verify_doc_clear(&d);
         if (small)
-            run(data, size, 0, 0);
+            run(data, size, 0, 0, VERIFY_U_FIRST);
     } else {
-        run(data, size, 0, 0);
+        run(data, size, 0, 0, VERIFY_U_FIRST);
     }
-    run(data, size, 3, 3);
+    run(data, size, 3, 3, VERIFY_V_FIRST);
     return 0;
 }
 

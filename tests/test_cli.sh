@@ -489,6 +489,79 @@ for c in "2x3 clip" "3x3 world" "1x1 clip" "3x2 world"; do
         notok "vectors $1 $2 independent check" "$(tail -2 "$tmp/out")"
 done
 
+# vectors --format c, the execution check: ptpgen's own C header's classify, built with gcc and
+# with clang, run on the include's points gives the include's classes.
+for c in "2x3 clip strict" "3x3 world degenerate" "1x2 clip degenerate" "4x3 world strict"; do
+    set -- $c
+    pre=ptp_$1 PRE=$(echo "PTP_$1" | tr x X)
+    if ! "$P" vectors --degree $1 --count 300 --seed 3 --space $2 --format c -o "$tmp/v.h" ||
+        ! "$P" --degree $1 --target c --space $2 --rule $3 -o "$tmp/$pre.h"; then
+        notok "vectors --format c $c" "ptpgen failed"
+        continue
+    fi
+    for cc in gcc clang; do
+        if $cc -std=c11 -Wall -Wextra -Werror -pedantic -O1 -I"$tmp" -DHEADER="\"$pre.h\"" \
+            -DVECTORS='"v.h"' -DCLASSIFY=${pre}_classify -D${PRE}_IMPLEMENTATION \
+            -DCLASS=ptp_vectors_class_$3 -o "$tmp/vc" tests/vectors_c.c -lm >"$tmp/out" 2>&1 &&
+            "$tmp/vc" >"$tmp/out" 2>&1; then
+            ok "vectors --format c $c ($cc): the C header's classify agrees ($(tail -1 "$tmp/out"))"
+        else
+            notok "vectors --format c $c ($cc)" "$(head -3 "$tmp/out" | tr '\n' ' ')"
+        fi
+    done
+done
+"$P" vectors --degree 2x3 --count 40 --seed 9 --format c >"$tmp/v.h" &&
+    "$P" vectors --degree 2x3 --count 40 --seed 9 >"$tmp/v.json" &&
+    python3 - "$tmp/v.h" "$tmp/v.json" <<'PY' && ok "vectors --format c holds the json's cases" || notok "vectors --format c" "differs from json"
+import json, re, sys
+c, j = open(sys.argv[1]).read(), json.load(open(sys.argv[2]))
+def arr(name):
+    body = re.search(name + r"\[[^=]*= \{(.*?)\n\};", c, re.S).group(1)
+    return [float(x) for x in re.findall(r"-?[0-9][0-9.e+-]*(?=[,}\s])", re.sub(r"/\*.*?\*/", "", body))]
+cases = j["cases"]
+assert arr("ptp_vectors_points") == [float(x) for k in cases for p in k["points"] for x in p]
+assert arr("ptp_vectors_eye") == [float(x) for k in cases for x in k["eye"]]
+assert arr("ptp_vectors_values") == [float(x) for k in cases for x in k["values_double"]]
+assert arr("ptp_vectors_class_strict") == [k["class_strict"] for k in cases]
+assert arr("ptp_vectors_class_degenerate") == [k["class_degenerate"] for k in cases]
+assert "#define PTP_VECTORS_COUNT 40 " in c and "#define PTP_VECTORS_K 12 " in c
+PY
+expect_fail "vectors --format other" 2 "unknown format 'xml' \(expected json or c\)" vectors --degree 2 --count 1 --seed 1 --format xml
+expect_fail "--format outside vectors" 2 "option --format does not apply to verify" verify x.h --format c
+
+# verify --convention: a v-first table passes with --convention v-first and fails without.
+"$P" --degree 2x3 --target json >"$tmp/t23.json" && python3 - "$tmp/t23.json" >"$tmp/vf.json" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1])); n, m = t["degree"]
+def pt(k): i, j = divmod(k, m + 1); return j * (n + 1) + i
+def pl(p): i, j = divmod(p, 3 * m - 1); return j * (3 * n - 1) + i
+out = []
+for e in t["terms"]:
+    q = [pt(x) for x in e[1:4]]
+    s = sorted(q)
+    odd = sum(1 for a in range(3) for b in range(a + 1, 3) if q[a] > q[b]) % 2
+    w = e[4] if not odd else (e[4][1:] if str(e[4]).startswith("-") else "-" + str(e[4]))
+    out.append([pl(e[0])] + s + [w])
+print(json.dumps({"degree": [n, m], "terms": out}))
+PY
+"$P" verify "$tmp/vf.json" --convention v-first >"$tmp/out" 2>&1 && grep -q "RIGHT: exact" "$tmp/out" &&
+    ok "verify --convention v-first passes a v-first table" || notok "verify --convention v-first" "$(tail -1 "$tmp/out")"
+"$P" verify "$tmp/vf.json" >"$tmp/out" 2>&1
+[ $? -eq 1 ] && grep -q "WRONG: the v-first index convention.*--convention v-first" "$tmp/out" &&
+    ok "verify without --convention names the v-first table and the option" || notok "verify of a v-first table" "$(tail -1 "$tmp/out")"
+expect_fail "verify --convention other" 2 "unknown convention 'w-first' \(expected u-first or v-first\)" verify x.h --convention w-first
+expect_fail "--convention outside verify" 2 "option --convention does not apply to vectors" vectors --degree 2 --count 1 --seed 1 --convention v-first
+
+# verify says what it checked and what it could not: the C header's functions.
+"$P" verify out/3x3/ptp_3x3.h >"$tmp/out" 2>&1
+grep -q "ignored: .*functions from line .*ptpgen vectors --format c" "$tmp/out" &&
+    grep -q "RIGHT: right to float precision .*the code of its functions is not checked" "$tmp/out" &&
+    ok "verify of the C header: its functions are named as not checked" || notok "verify of the C header" "$(cat "$tmp/out")"
+printf 'void f(float *t) {\n    t[0] = -1.0f;\n}\n' >"$tmp/code.c"
+expect_fail "verify of code without a table says it cannot check code" 2 "code.c:1: functions but no table arrays.*ptpgen vectors --format c" verify "$tmp/code.c"
+printf 'int idx[][4] = {{0, 0, 1, 2}};\nfloat wgt[] = {-27/7};\n' >"$tmp/div.h"
+expect_fail "verify of an integer-division weight" 2 "div.h:2: integer division: C evaluates -27/7 as -3; write -27.0f/7 or -3.85714293f" verify "$tmp/div.h" --degree 1
+
 # out/ is what ptpgen generates now, from the gcc and from the clang build, byte for byte.
 for bin in "$P" "${PTPGEN_OTHER:-}"; do
     [ -n "$bin" ] && [ -x "$bin" ] || continue

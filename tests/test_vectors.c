@@ -273,7 +273,7 @@ static char *vectors(const tp_table *t, long count, uint64_t seed, out_space spa
     sbuf b;
     ptp_error err;
     sbuf_init(&b);
-    if ((*status = vectors_write(&b, t, count, seed, space, "ptpgen vectors test", &err))) {
+    if ((*status = vectors_write(&b, t, count, seed, space, VECTORS_JSON, "ptpgen vectors test", &err))) {
         sbuf_clear(&b);
         return NULL;
     }
@@ -487,16 +487,16 @@ static void check_errors(void)
     sbuf_init(&b);
     sbuf_puts(&b, "keep");
     err.msg[0] = '\0';
-    st = vectors_write(&b, &t, -1, 1, OUT_CLIP, "x", &err);
+    st = vectors_write(&b, &t, -1, 1, OUT_CLIP, VECTORS_JSON, "x", &err);
     check(st == PTP_EUSAGE && err.status == PTP_EUSAGE && err.msg[0] && !strcmp(b.s, "keep"),
           "vectors: a negative count is a usage error and writes nothing", "status %d, '%s'", st,
           err.msg);
     err.msg[0] = '\0';
-    st = vectors_write(&b, &t, VECTORS_MAX_COUNT + 1, 1, OUT_WORLD, "x", &err);
+    st = vectors_write(&b, &t, VECTORS_MAX_COUNT + 1, 1, OUT_WORLD, VECTORS_JSON, "x", &err);
     check(st == PTP_ELIMIT && err.msg[0] && !strcmp(b.s, "keep"),
           "vectors: a count beyond VECTORS_MAX_COUNT is refused and writes nothing",
           "status %d, '%s'", st, err.msg);
-    st = vectors_write(&b, &t, 0, 1, OUT_WORLD, "say \"hi\"\\\n", &err);
+    st = vectors_write(&b, &t, 0, 1, OUT_WORLD, VECTORS_JSON, "say \"hi\"\\\n", &err);
     check(!st && strstr(b.s, "\"command\": \"say \\\"hi\\\"\\\\\\u000a\",") &&
               strstr(b.s, "\"cases\": []\n}\n") && !strncmp(b.s, "keep{\n", 6),
           "vectors: count 0 appends an empty document, the command escaped", "%s",

@@ -40,14 +40,15 @@ typedef struct {
     ptp_error err;
 } result;
 
-static result run_verify(const char *text, size_t len, const char *name, int n, int m)
+static result run_verify_conv(const char *text, size_t len, const char *name, int n, int m,
+                              int convention)
 {
     result r;
     sbuf o;
     sbuf_init(&o);
     r.err.msg[0] = '\0';
     r.verdict = -1;
-    r.st = verify_table(&o, &r.verdict, text, len, name, n, m, &r.err);
+    r.st = verify_table(&o, &r.verdict, text, len, name, n, m, convention, &r.err);
     r.report = malloc(o.len + 1);
     if (r.report) {
         memcpy(r.report, o.s ? o.s : "", o.len);
@@ -57,9 +58,20 @@ static result run_verify(const char *text, size_t len, const char *name, int n, 
     return r;
 }
 
+static result run_verify(const char *text, size_t len, const char *name, int n, int m)
+{
+    return run_verify_conv(text, len, name, n, m, VERIFY_U_FIRST);
+}
+
 static result verify_str(const sbuf *b, const char *name, int n, int m)
 {
-    return run_verify(b->s ? b->s : "", b->len, name, n, m);
+    return run_verify_conv(b->s ? b->s : "", b->len, name, n, m, VERIFY_U_FIRST);
+}
+
+/* verify_str in the v-first convention. */
+static result verify_vfirst(const sbuf *b, const char *name, int n, int m)
+{
+    return run_verify_conv(b->s ? b->s : "", b->len, name, n, m, VERIFY_V_FIRST);
 }
 
 /* The last line of a report (its verdict), for failure details. */
@@ -427,8 +439,10 @@ static void test_bicubic_mistakes(void)
     r = rows_of(&t, W_CFRAC, 1);
     shuffle(&r);
     write_paper(&b, &r);
-    expect_verdict("the paper's layout, shuffled, -27.0f / 7.0f fractions: exact",
-                   verify_str(&b, "paper.h", 0, 0), VERIFY_RIGHT, "RIGHT: exact");
+    expect_verdict("the paper's layout, shuffled, -27.0f / 7.0f fractions: C rounds them to floats, "
+                   "so right to float precision, not exact",
+                   verify_str(&b, "paper.h", 0, 0), VERIFY_RIGHT,
+                   "RIGHT: right to float precision (|error| <= 1/2 ulp): the 516 terms");
     /* and a wrong weight there names the idx line and the wgt line */
     snprintf(r.r[40].w, sizeof r.r[40].w, "1.5f");
     sbuf_clear(&b);
@@ -500,12 +514,12 @@ static void test_transposed(void)
     sbuf_clear(&b);
     free(r.r);
 
-    r = rows_of(&t, W_FRAC, 1);
+    r = rows_of(&t, W_CFRAC, 1);
     write_paper(&b, &r);
     expect_usage("a 2x3 paper table without --degree: ambiguous, asks for it",
                  verify_str(&b, "p.h", 0, 0), "p.h", 0, "use --degree");
-    expect_verdict("... and with --degree 2x3 it is exact", verify_str(&b, "p.h", 2, 3),
-                   VERIFY_RIGHT, "RIGHT: exact");
+    expect_verdict("... and with --degree 2x3 it is right to float precision",
+                   verify_str(&b, "p.h", 2, 3), VERIFY_RIGHT, "RIGHT: right to float precision");
     sbuf_clear(&b);
     free(r.r);
     tp_clear(&t);
@@ -826,6 +840,259 @@ static void test_wrong_degree(void)
     tp_clear(&t);
 }
 
+/* The line number of the line `k` lines after the first one holding decl in b, and the start
+ * and end of that line; 0 when decl is not there. */
+static int find_line(size_t *start, size_t *end, const sbuf *b, const char *decl, int k)
+{
+    const char *p = strstr(b->s, decl), *q;
+    int line = 1;
+    if (!p)
+        return 0;
+    while (p > b->s && p[-1] != '\n')
+        p--;
+    for (; k > 0 && (q = strchr(p, '\n')); k--)
+        p = q + 1;
+    for (q = b->s; q < p; q++)
+        line += *q == '\n';
+    *start = (size_t)(p - b->s);
+    *end = (size_t)(strchr(p, '\n') - b->s);
+    return line;
+}
+
+/* out = b with the line `k` lines after the one holding decl replaced by repl; returns its
+ * line number (0 when decl is not there). */
+static int replace_line(sbuf *out, const sbuf *b, const char *decl, int k, const char *repl)
+{
+    size_t start, end;
+    int line = find_line(&start, &end, b, decl, k);
+    sbuf_init(out);
+    if (line)
+        sbuf_printf(out, "%.*s%s%s", (int)start, b->s, repl, b->s + end);
+    return line;
+}
+
+/* out = b with every "from" (and its upper case, for the macros) replaced by "to". */
+static void rename_arrays(sbuf *out, const sbuf *b, const char *from, const char *to)
+{
+    char uf[32], ut[32];
+    const char *p = b->s;
+    size_t k, n = strlen(from);
+    for (k = 0; k <= n && k < sizeof uf; k++)
+        uf[k] = (char)(from[k] >= 'a' && from[k] <= 'z' ? from[k] - 32 : from[k]);
+    for (k = 0; k <= strlen(to) && k < sizeof ut; k++)
+        ut[k] = (char)(to[k] >= 'a' && to[k] <= 'z' ? to[k] - 32 : to[k]);
+    sbuf_init(out);
+    while (*p) {
+        int lower = !strncmp(p, from, n), upper = !strncmp(p, uf, n);
+        if (lower || upper) {
+            sbuf_puts(out, lower ? to : ut);
+            p += n;
+        } else {
+            sbuf_printf(out, "%c", *p++);
+        }
+    }
+}
+
+/* The generated table of (n, m) with everything appended. */
+static int render_plus(sbuf *b, const tp_table *t, const char *more)
+{
+    int ok = render(b, t, 1);
+    sbuf_puts(b, more);
+    return ok;
+}
+
+/* iwgt, owner and the sched arrays are checked; what is not is listed (a function by the line
+ * of its body's '{'). */
+static void test_arrays(void)
+{
+    tp_table t;
+    ptp_error err;
+    sbuf b, c;
+    char want[160];
+    int line;
+    if (!check(!tp_derive(&t, 2, 2, &err) && render(&b, &t, 1), "derive and render 2x2", "%s",
+               err.msg))
+        return;
+    expect_verdict("the 2x2 table: every array checked, exact through iwgt/DENOM",
+                   verify_str(&b, "t.h", 0, 0), VERIFY_RIGHT,
+                   "t.h: checked: idx, wgt (76 terms), iwgt with DENOM 12, "
+                   "sched_idx/sched_wgt/sched_iwgt (80 slots), owner (8 threads); ignored: nothing\n"
+                   "t.h: RIGHT: exact: the 76 terms");
+    line = replace_line(&c, &b, "_2x2_table_iwgt[", 1, "    5,");
+    expect_line("a wrong iwgt entry, by its line", verify_str(&c, "t.h", 0, 0), "t.h", line,
+                "wrong iwgt[0]: got 5, so iwgt/DENOM = 5/12, but the exact weight");
+    sbuf_clear(&c);
+    line = replace_line(&c, &b, "_2x2_table_sched_wgt[", 1, "    7.0f,");
+    expect_line("a wrong sched_wgt entry, by its line", verify_str(&c, "t.h", 0, 0), "t.h", line,
+                "sched slot 0 {");
+    expect_verdict("... counted in the verdict", verify_str(&c, "t.h", 0, 0), VERIFY_WRONG,
+                   "in iwgt, owner or the sched arrays) against the 76 terms");
+    sbuf_clear(&c);
+    line = replace_line(&c, &b, "_2x2_table_sched_wgt[", 1, "    0.0f,");
+    expect_verdict("a sched_wgt entry set to 0 (padding): its term is in no slot",
+                   verify_str(&c, "t.h", 0, 0), VERIFY_WRONG, "is in no sched slot");
+    sbuf_clear(&c);
+    line = replace_line(&c, &b, "_2x2_table_sched_iwgt[", 1, "    3,");
+    expect_line("a wrong sched_iwgt entry", verify_str(&c, "t.h", 0, 0), "t.h", line,
+                "wrong sched_iwgt[0] = 3");
+    sbuf_clear(&c);
+    line = replace_line(&c, &b, "_2x2_table_owner[", 1, "    7, 1, 5, 2, 4,");
+    expect_verdict("a wrong owner: the slots of plane 0 run on another thread",
+                   verify_str(&c, "t.h", 0, 0), VERIFY_WRONG, "which owner (line");
+    sbuf_clear(&c);
+    replace_line(&c, &b, "#define PTP_2X2_DENOM", 0, "");
+    expect_verdict("no DENOM: iwgt is listed as ignored, the floats right to float precision",
+                   verify_str(&c, "t.h", 0, 0), VERIFY_RIGHT,
+                   "ignored: iwgt (no DENOM macro of 1 or more to divide it by), sched_iwgt (no "
+                   "DENOM macro of 1 or more)\n"
+                   "t.h: RIGHT: right to float precision (|error| <= 1/2 ulp)");
+    sbuf_clear(&c);
+    replace_line(&c, &b, "#define PTP_2X2_THREADS", 0, "");
+    expect_verdict("no THREADS: owner is listed as ignored", verify_str(&c, "t.h", 0, 0),
+                   VERIFY_RIGHT, "ignored: owner (no THREADS macro)");
+    sbuf_clear(&c);
+    snprintf(want, sizeof want, "; ignored: ptp_2x2_foo_bar (unknown array), 1 function from "
+                                "line %d (code cannot be checked", find_line(&(size_t){0},
+                                &(size_t){0}, &b, "#endif", 0) + 3);
+    render_plus(&c, &t, "static const int ptp_2x2_foo_bar[2] = {1, 2};\n"
+                        "static int f(int x)\n{\n    return -x;\n}\n");
+    expect_verdict("an unknown array and a function are listed as ignored",
+                   verify_str(&c, "t.h", 0, 0), VERIFY_RIGHT, want);
+    expect_verdict("... and the verdict says the functions are not checked",
+                   verify_str(&c, "t.h", 0, 0), VERIFY_RIGHT,
+                   "(the arrays only: the code of its functions is not checked)");
+    sbuf_clear(&c);
+    rename_arrays(&c, &b, "ptp_2x2_", "ptp_2x2_table_");
+    expect_verdict("arrays named ptp_2x2_table_idx and so on: matched by suffix, all checked",
+                   verify_str(&c, "t.h", 2, 2), VERIFY_RIGHT, "t.h: checked: idx, wgt (76 terms), "
+                   "iwgt with DENOM 12, sched_idx/sched_wgt/sched_iwgt (80 slots), owner (8 "
+                   "threads); ignored: nothing\n");
+    sbuf_clear(&c);
+    sbuf_clear(&b);
+    if (check(render(&b, &t, 0), "render json", "2x2"))
+        expect_verdict("ptpgen's json: the terms checked, the other keys listed as ignored",
+                       verify_str(&b, "t.json", 0, 0), VERIFY_RIGHT, "t.json: checked: terms (76 "
+                       "terms); ignored: plane_degree, points, planes, plane_scale, schedule (JSON "
+                       "keys)\n");
+    sbuf_clear(&b);
+    tp_clear(&t);
+}
+
+/* A schedule that runs a term twice, and one with padding that is right. */
+static void test_schedule(void)
+{
+    static const char twice[] =
+        "#define T_THREADS 2\nint t_idx[][4] = {{0, 0, 1, 2}, {1, 0, 1, 3}, {2, 0, 2, 3}, "
+        "{3, 1, 2, 3}};\nfloat t_wgt[] = {-1, -1, 1, 1};\nint t_owner[4] = {0, 1, 0, 1};\n"
+        "int t_sched_idx[][4] = {{0, 0, 1, 2}, {1, 0, 1, 3}, {2, 0, 2, 3}, {3, 1, 2, 3},\n"
+        "{0, 0, 1, 2}, {1, 0, 0, 0}};\nfloat t_sched_wgt[] = {-1, -1, 1, 1, -1, 0};\n";
+    char padded[sizeof twice];
+    char *p;
+    expect_line("a term scheduled twice", run_verify(twice, strlen(twice), "s.h", 0, 0), "s.h", 6,
+                "sched slot 4 {0, 0, 1, 2} repeats a slot before it: the term (line 2) is "
+                "scheduled twice");
+    memcpy(padded, twice, sizeof twice);
+    p = strstr(padded, "-1, 0};");
+    memcpy(p, " 0, 0};", 7);
+    expect_verdict("... and with that slot padding (weight 0, its thread's plane): right",
+                   run_verify(padded, strlen(padded), "s.h", 0, 0), VERIFY_RIGHT,
+                   "checked: idx, wgt (4 terms), sched_idx/sched_wgt (6 slots), owner (2 threads); "
+                   "ignored: nothing\ns.h: RIGHT: exact");
+}
+
+/* Straight-line code cannot be checked from its text: verify says so and names the vectors. */
+static void test_code(void)
+{
+    static const char code[] = "/* a classify with a flipped sign */\n#include <math.h>\n"
+                               "unsigned classify(const float b[][4], const float e[4])\n{\n"
+                               "    float t = -(b[0][0] * e[2]);\n    return t < 0;\n}\n";
+    expect_usage("a straight-line classify (a flipped sign cannot be seen): verify says it "
+                 "cannot check code", run_verify(code, strlen(code), "c.c", 0, 0), "c.c", 4,
+                 "functions but no table arrays: verify checks tables (idx and wgt arrays, or "
+                 "ptpgen json); straight-line code, such as ptpgen's C header, cannot be checked "
+                 "from its text: run it on the test vectors of `ptpgen vectors --format c`");
+}
+
+/* Integer divisions in C are errors; float weights are right to float precision, not exact. */
+static void test_weights(void)
+{
+    static const char div[] = "int idx[][4] = {{0, 0, 1, 2}, {1, 0, 1, 3}, {2, 0, 2, 3}, "
+                              "{3, 1, 2, 3}};\nfloat wgt[] = {-1, -1,\n (1)/(-3), 1};\n";
+    tp_table t;
+    ptp_error err;
+    rows r;
+    sbuf b;
+    expect_usage("an integer division as a C weight: C makes it 0", run_verify(div, strlen(div),
+                 "d.h", 0, 0), "d.h", 3, "integer division: C evaluates 1/-3 as 0; write "
+                 "1.0f/-3 or -0.333333343f");
+    if (!check(!tp_derive(&t, 3, 3, &err), "derive 3x3", "%s", err.msg))
+        return;
+    r = rows_of(&t, W_FRAC, 1);
+    write_paper(&b, &r);
+    expect_usage("the paper's layout with -27/7 weights: integer division", verify_str(&b, "p.h",
+                 0, 0), "p.h", 0, "integer division: C evaluates ");
+    sbuf_clear(&b);
+    write_json(&b, &r, 3, 3);
+    expect_verdict("... while \"-27/7\" in JSON is an exact fraction", verify_str(&b, "t.json", 0, 0),
+                   VERIFY_RIGHT, "RIGHT: exact");
+    sbuf_clear(&b);
+    free(r.r);
+    r = rows_of(&t, W_FLOAT, 1);
+    write_paper(&b, &r);
+    expect_verdict("float weights: right to float precision, not exact", verify_str(&b, "p.h", 0, 0),
+                   VERIFY_RIGHT, "RIGHT: right to float precision (|error| <= 1/2 ulp): the 516 "
+                   "terms of bidegree 3x3 agree");
+    sbuf_clear(&b);
+    snprintf(r.r[5].w, sizeof r.r[5].w, "%.9gf", rat_get_d(&t.terms[5].w) * (1 + 4e-7));
+    write_paper(&b, &r);
+    expect_verdict("a float weight 4e-7 off: within the tolerance, but not the nearest float",
+                   verify_str(&b, "p.h", 0, 0), VERIFY_RIGHT, "RIGHT: right to a relative error "
+                   "of 4e-07 (within the tolerance 1e-06, but some weights are not the float "
+                   "nearest the exact one)");
+    sbuf_clear(&b);
+    free(r.r);
+    tp_clear(&t);
+}
+
+/* --convention v-first: a v-first table passes with it and fails without it. */
+static void test_convention(void)
+{
+    tp_table t, s;
+    ptp_error err;
+    rows r;
+    sbuf b;
+    if (!check(!tp_derive(&t, 2, 3, &err) && !tp_derive(&s, 3, 3, &err), "derive", "%s", err.msg))
+        return;
+    r = relabelled(&t, 0);
+    write_json(&b, &r, 2, 3);
+    expect_verdict("a 2x3 v-first table with --convention v-first: exact",
+                   verify_vfirst(&b, "t.json", 0, 0), VERIFY_RIGHT,
+                   "RIGHT: exact: the 200 terms of bidegree 2x3 (v-first) agree");
+    expect_verdict("... and without it: wrong, with the option named", verify_str(&b, "t.json", 0, 0),
+                   VERIFY_WRONG, "right only for code that numbers points v-first (check it with "
+                   "--convention v-first)");
+    sbuf_clear(&b);
+    free(r.r);
+    r = rows_of(&t, W_FRAC, 1);
+    write_json(&b, &r, 2, 3);
+    expect_verdict("a u-first table with --convention v-first: wrong, the u-first convention",
+                   verify_vfirst(&b, "t.json", 0, 0), VERIFY_WRONG,
+                   "WRONG: the u-first index convention: the same planes, but point (i, j) "
+                   "numbered i*4+j");
+    sbuf_clear(&b);
+    free(r.r);
+    r = relabelled(&s, 0);
+    write_json(&b, &r, 3, 3);
+    expect_verdict("a 3x3 v-first table with --convention v-first: exact",
+                   verify_vfirst(&b, "t.json", 0, 0), VERIFY_RIGHT, "RIGHT: exact");
+    expect_verdict("... without it: negated, and v-first named with the option",
+                   verify_str(&b, "t.json", 0, 0), VERIFY_WRONG, "--convention v-first");
+    sbuf_clear(&b);
+    free(r.r);
+    tp_clear(&t);
+    tp_clear(&s);
+}
+
 int main(void)
 {
     test_generated();
@@ -835,5 +1102,10 @@ int main(void)
     test_forms();
     test_several();
     test_wrong_degree();
+    test_arrays();
+    test_schedule();
+    test_code();
+    test_weights();
+    test_convention();
     return check_exit();
 }

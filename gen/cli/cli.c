@@ -28,8 +28,9 @@ void cli_usage(sbuf *o)
         "              [--planes] [--certified] [--refine K] [--prefix NAME]\n"
         "              [--threads-per-patch P] [--patches-per-block Q]\n"
         "              [-o FILE]\n"
-        "       ptpgen verify FILE [--degree NxM] [-o REPORT]\n"
-        "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world] [-o FILE]\n"
+        "       ptpgen verify FILE [--degree NxM] [--convention u-first|v-first] [-o REPORT]\n"
+        "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world]\n"
+        "              [--format json|c] [-o FILE]\n"
         "       ptpgen --help | help [verify|vectors] | --version | --list-targets\n"
         "\n"
         "Derives the exact control planes of the parametric tangent plane\n"
@@ -55,16 +56,23 @@ void cli_usage(sbuf *o)
         "                   planes (default 16 for 3x3; see README for other degrees)\n"
         "  --patches-per-block Q\n"
         "                   patches per thread block (default %d/P, at least 1)\n"
+        "  --convention C   verify: the table's index convention: u-first (default, ptpgen's):\n"
+        "                   point (i, j) is i*(M+1)+j, plane (I, J) is I*(3M-1)+J; v-first:\n"
+        "                   point j*(N+1)+i, plane J*(3N-1)+I\n"
+        "  --format F       vectors: json (default) or c (a C include of the same vectors)\n"
         "  -o, --output F   write to F (atomically) instead of standard output\n"
         "  -h, --help       show this help\n"
         "  --version        show the version\n"
         "  --list-targets   list the targets, one a line: name, file suffix (- for none),\n"
         "                   the options it uses (comma-separated, - for none), description\n"
         "\n"
-        "verify checks a table (the paper's idx/wgt C header or ptpgen's json) against the\n"
-        "exact derivation and names each problem with its line: exit 0 right, 1 wrong, 2 unreadable.\n"
-        "vectors writes K random patches (small integers) with their exact plane values and\n"
-        "classes under both rules, as JSON; the same seed gives the same bytes.\n"
+        "verify checks a table (the paper's idx/wgt C header with its iwgt, owner and sched_\n"
+        "arrays, or ptpgen's json) against the exact derivation, names each problem with its\n"
+        "line and lists what it checked and ignored: exit 0 right, 1 wrong, 2 unreadable.\n"
+        "Code (such as the straight-line C header) cannot be checked from its text: run it on\n"
+        "the vectors. vectors writes K random patches (small integers) with their exact plane\n"
+        "values and classes under both rules, as JSON or a C include; the same seed gives the\n"
+        "same bytes.\n"
         "\n"
         "Exit status: 0 success, 1 failure, 2 usage error.\n",
         CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS);
@@ -144,7 +152,8 @@ static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t m
 /* The options, in the order the mode check names them. */
 typedef enum {
     OPT_DEGREE, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
-    OPT_PATCHES, OPT_COUNT, OPT_SEED, OPT_CERTIFIED, OPT_REFINE, OPT_OUTPUT, OPT_HELP,
+    OPT_PATCHES, OPT_COUNT, OPT_SEED, OPT_CERTIFIED, OPT_REFINE, OPT_CONVENTION, OPT_FORMAT,
+    OPT_OUTPUT, OPT_HELP,
     OPT_VERSION, OPT_LIST, OPT_N
 } opt_id;
 
@@ -172,6 +181,8 @@ static const struct {
     [OPT_SEED] = {"--seed", NULL, 1, VEC, 0},
     [OPT_CERTIFIED] = {"--certified", NULL, 0, GEN, TGT_CERTIFIED},
     [OPT_REFINE] = {"--refine", NULL, 1, GEN, TGT_REFINE},
+    [OPT_CONVENTION] = {"--convention", NULL, 1, VER, 0},
+    [OPT_FORMAT] = {"--format", NULL, 1, VEC, 0},
     [OPT_OUTPUT] = {"--output", "-o", 1, GEN | VER | VEC, 0},
     [OPT_HELP] = {"--help", "-h", 0, GEN | VER | VEC, 0},
     [OPT_VERSION] = {"--version", NULL, 0, GEN | VER | VEC, 0},
@@ -220,6 +231,7 @@ static int parse_target(cli_options *o, const char *arg, ptp_error *err)
 static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
 {
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
+    static const char *const conventions[] = {"u-first", "v-first"}, *const formats[] = {"json", "c"};
     uint64_t u = 0;
     int st = PTP_OK;
     switch (k) {
@@ -241,6 +253,8 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
         if (!(st = parse_ulong(&u, "--refine", v, CLI_MAX_REFINE, err)))
             o->refine = (int)u;
         break;
+    case OPT_CONVENTION: return parse_choice(&o->vfirst, "convention", v, conventions, 2, err);
+    case OPT_FORMAT: return parse_choice(&o->format_c, "format", v, formats, 2, err);
     case OPT_OUTPUT: o->output = v; break;
     case OPT_HELP: o->help = 1; break;
     case OPT_VERSION: o->version = 1; break;
@@ -349,8 +363,9 @@ static void put_command(cli_options *o)
     int n;
     tp_domain_format(degree, sizeof degree, &o->dom);
     if (o->mode == CLI_VECTORS) {
-        snprintf(c, size, "ptpgen vectors --degree %s --count %ld --seed %llu --space %s", degree,
-                 o->count, (unsigned long long)o->seed, o->world ? "world" : "clip");
+        snprintf(c, size, "ptpgen vectors --degree %s --count %ld --seed %llu --space %s%s",
+                 degree, o->count, (unsigned long long)o->seed, o->world ? "world" : "clip",
+                 o->format_c ? " --format c" : "");
         return;
     }
     n = snprintf(c, size, "ptpgen --degree %s --target %s", degree, o->target->name);

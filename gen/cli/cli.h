@@ -31,6 +31,8 @@ typedef struct {
     int planes;           /* --planes */
     int certified;        /* --certified */
     int refine;           /* --refine K (C only), 0 when not given */
+    int vfirst;           /* verify: --convention v-first (else u-first) */
+    int format_c;         /* vectors: --format c (else json) */
     int help, version;    /* --help or --version was given */
     int list;             /* --list-targets was given */
     char command[256];    /* the normalized command line, for banners */

@@ -106,7 +106,8 @@ static int run_verify(const cli_options *o, int *verdict, ptp_error *err)
     if (st)
         return st;
     sbuf_init(&b);
-    if (!(st = verify_table(&b, verdict, text, len, o->input, o->dom.n, o->dom.m, err)))
+    if (!(st = verify_table(&b, verdict, text, len, o->input, o->dom.n, o->dom.m,
+                             o->vfirst ? VERIFY_V_FIRST : VERIFY_U_FIRST, err)))
         st = write_output(o->output, &b, err);
     sbuf_clear(&b);
     free(text);
@@ -123,7 +124,7 @@ static int run_vectors(const cli_options *o, ptp_error *err)
         return st;
     sbuf_init(&b);
     if (!(st = vectors_write(&b, &t, o->count, o->seed, o->world ? OUT_WORLD : OUT_CLIP,
-                             o->command, err)))
+                             o->format_c ? VECTORS_C : VECTORS_JSON, o->command, err)))
         st = write_output(o->output, &b, err);
     sbuf_clear(&b);
     tp_clear(&t);

@@ -16,7 +16,10 @@
 #define VECTORS_W_MAX 4
 #define VECTORS_EYE_MAX 48
 
-/* Appends the JSON test vectors: count cases of bidegree (t->dom.n, t->dom.m) from seed, in space.
+/* The formats of the test vectors: the JSON document, or the same cases as a C include. */
+enum { VECTORS_JSON, VECTORS_C };
+
+/* Appends the test vectors in format (VECTORS_JSON or VECTORS_C): count cases of bidegree (t->dom.n, t->dom.m) from seed, in space.
  *
  * The document (format "ptpgen-vectors/1"; fixed key order, two-space indents, one case per
  * five lines, no timestamps, so the same arguments give the same bytes):
@@ -77,9 +80,19 @@
  * (tests/test_vectors.c checks the bound) and about 2^106 at 16 x 16, within 128 bits for every
  * supported degree. Every operation is still checked: PTP_EOVERFLOW, never a wrong value.
  *
- * Returns PTP_OK; PTP_EUSAGE when count < 0; PTP_ELIMIT when count > VECTORS_MAX_COUNT;
+ * The C include (VECTORS_C) holds the same cases, the same numbering, for code to include and
+ * run (a comment with the command, seed, space and conventions; guard PTP_VECTORS_H):
+ *
+ *   #define PTP_VECTORS_COUNT count, PTP_VECTORS_K K, PTP_VECTORS_L L,
+ *           PTP_VECTORS_CLIP 1 (clip space) or 0 (world space)
+ *   static const float ptp_vectors_points[COUNT][K][4];        (integers, exact in float)
+ *   static const float ptp_vectors_eye[COUNT][4];
+ *   static const double ptp_vectors_values[COUNT][L];          (the nearest doubles, %.17g)
+ *   static const unsigned char ptp_vectors_class_strict[COUNT], ptp_vectors_class_degenerate[COUNT];
+ *
+ * Returns PTP_OK; PTP_EUSAGE when count < 0 (in C also when count is 0: C has no empty arrays); PTP_ELIMIT when count > VECTORS_MAX_COUNT;
  * PTP_EOVERFLOW; PTP_ENOMEM. On failure out is left as it was on entry. */
 int vectors_write(sbuf *out, const tp_table *t, long count, uint64_t seed, out_space space,
-                  const char *command, ptp_error *err);
+                  int format, const char *command, ptp_error *err);
 
 #endif

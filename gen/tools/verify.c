@@ -2,9 +2,11 @@
  * Whole-table readings (a scale, negation, u and v swapped, v-first) first, then every problem. */
 #include "tools/verify.h"
 #include "core/tplane.h"
+#include "tools/verify_arrays.h"
 #include "tools/verify_parse.h"
 
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,6 +46,7 @@ enum {
     P_PLANE,
     P_DUP,
     P_ORDER,
+    P_ARRAY, /* counted by verify_arrays, which writes its own lines */
     NPROBLEMS,
     N_ORDER_OK = NPROBLEMS,
     N_REPEATED,
@@ -63,7 +66,10 @@ typedef struct {
     const verify_doc *d;
     const tp_table *t;
     const char *name;
-    tp_term *x[2];  /* [0] the exact table, [1] it relabelled (i, j) -> (j, i), not negated */
+    tp_term *x[2];  /* [0] the exact table in the declared convention, [1] in the other one:
+                       relabelled (i, j) -> (j, i), not negated */
+    tp_term *owned; /* the one of them relabel allocated */
+    int vfirst;     /* the declared convention is v-first */
     size_t nx;
     int vfirst_negated; /* x[1] is x[0] negated (so for every square patch): no reading of its own */
     gterm *g;
@@ -326,6 +332,51 @@ static int is_unit(const scale *s)
     return s->exact && (s->r.num == 1 || s->r.num == -1) && s->r.den == 1;
 }
 
+/* Classifies the terms extra[0..nextra) without a counterpart, in the document's order: in the
+ * wrong plane when the same points with the same weight are missing from another plane, else
+ * extra; then the expected terms still not covered, missing. Returns the problem count. */
+static size_t classify_extra(ctx *c, const reading *r, char *covered, const size_t *extra,
+                             size_t nextra, pkey *by)
+{
+    const tp_term *x = c->x[r->which];
+    size_t i, problems = 0;
+    for (i = 0; i < c->nx; i++) {
+        by[i].q[0] = x[i].j;
+        by[i].q[1] = x[i].k;
+        by[i].q[2] = x[i].l;
+        by[i].plane = x[i].plane;
+        by[i].v = (long)i;
+    }
+    qsort(by, c->nx, sizeof *by, cmp_pkey);
+    for (i = 0; i < nextra; i++) {
+        const gterm *e = &c->g[extra[i]];
+        size_t lo = 0, hi = c->nx;
+        long found = -1;
+        if (e->g.d == 0) {
+            add_item(c, N_ZERO, line_of(c, extra[i]), extra[i], -1, 0);
+            continue;
+        }
+        while (lo < hi) { /* the first term with these points */
+            size_t mid = lo + (hi - lo) / 2;
+            if (cmp_key(0, by[mid].q, 0, e->q) < 0)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        for (; lo < c->nx && found < 0 && !cmp_key(0, by[lo].q, 0, e->q); lo++)
+            if (!covered[by[lo].v] && weight_is(&e->g, &x[by[lo].v].w, &r->s))
+                found = by[lo].v;
+        if (found >= 0)
+            covered[found] = 1;
+        problems += add_item(c, found >= 0 ? P_PLANE : P_EXTRA, line_of(c, extra[i]), extra[i],
+                             found, 0);
+    }
+    for (i = 0; i < c->nx; i++)
+        if (!covered[i])
+            problems += add_item(c, P_MISSING, INT_MAX, 0, (long)i, 0);
+    return problems;
+}
+
 /* Classifies every term of the table under reading r into c->it; returns the problem count. */
 static size_t classify(ctx *c, const reading *r, char *covered, size_t *extra, pkey *by)
 {
@@ -366,53 +417,9 @@ static size_t classify(ctx *c, const reading *r, char *covered, size_t *extra, p
         covered[v] = 1;
         i = j;
     }
-    /* Terms without a counterpart, in the document's order: in the wrong plane when the same
-     * points with the same weight are missing from another plane, else extra. */
-    for (i = 0; i < c->nx; i++) {
-        by[i].q[0] = x[i].j;
-        by[i].q[1] = x[i].k;
-        by[i].q[2] = x[i].l;
-        by[i].plane = x[i].plane;
-        by[i].v = (long)i;
-    }
-    qsort(by, c->nx, sizeof *by, cmp_pkey);
-    for (i = 0; i < nextra; i++) {
-        const gterm *e = &c->g[extra[i]];
-        size_t lo = 0, hi = c->nx;
-        long found = -1;
-        if (e->g.d == 0) {
-            add_item(c, N_ZERO, line_of(c, extra[i]), extra[i], -1, 0);
-            continue;
-        }
-        while (lo < hi) { /* the first term with these points */
-            size_t mid = lo + (hi - lo) / 2;
-            if (cmp_key(0, by[mid].q, 0, e->q) < 0)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        for (; lo < c->nx && found < 0 && !cmp_key(0, by[lo].q, 0, e->q); lo++)
-            if (!covered[by[lo].v] && weight_is(&e->g, &x[by[lo].v].w, &r->s))
-                found = by[lo].v;
-        if (found >= 0)
-            covered[found] = 1;
-        problems += add_item(c, found >= 0 ? P_PLANE : P_EXTRA, line_of(c, extra[i]), extra[i],
-                             found, 0);
-    }
-    for (i = 0; i < c->nx; i++)
-        if (!covered[i])
-            problems += add_item(c, P_MISSING, INT_MAX, 0, (long)i, 0);
-    return problems;
+    return problems + classify_extra(c, r, covered, extra, nextra, by);
 }
 
-/* Writes w (exact: "p/q", else the decimal) to buf (RAT_STRLEN + 32 bytes). */
-static const char *got_str(char *buf, const verify_weight *w)
-{
-    if (w->exact)
-        return rat_get_str(buf, &w->r);
-    snprintf(buf, RAT_STRLEN + 32, "%.9g", w->d);
-    return buf;
-}
 
 /* Writes sign * s * v, exact where s is; with its decimal too when decimal is set and it is a
  * fraction. */
@@ -467,11 +474,11 @@ static void report_item(sbuf *o, const ctx *c, const reading *r, const item *e)
     case P_EXTRA:
         sbuf_printf(o, "extra term: {%d, %d, %d, %d} with weight %s: the exact table has no "
                        "cross4(b%d, b%d, b%d) in plane %d\n", w->plane, w->p[0], w->p[1],
-                    w->p[2], got_str(got, &w->w), g->q[0], g->q[1], g->q[2], g->plane);
+                    w->p[2], verify_weight_str(got, &w->w), g->q[0], g->q[1], g->q[2], g->plane);
         break;
     case P_WEIGHT:
         sbuf_printf(o, "wrong weight: plane %d, cross4(b%d, b%d, b%d): got %s, expected %s",
-                    w->plane, w->p[0], w->p[1], w->p[2], got_str(got, &w->w),
+                    w->plane, w->p[0], w->p[1], w->p[2], verify_weight_str(got, &w->w),
                     expect_str(want, &x->w, &r->s, g->flipped ? -1 : 1, !w->w.exact));
         if (g->flipped)
             sbuf_printf(o, " (the points are not in increasing order: that is -1 times the exact "
@@ -482,7 +489,7 @@ static void report_item(sbuf *o, const ctx *c, const reading *r, const item *e)
         break;
     case P_PLANE:
         sbuf_printf(o, "wrong plane: %s * cross4(b%d, b%d, b%d) is in plane %d but belongs to "
-                       "plane %d\n", got_str(got, &w->w), w->p[0], w->p[1], w->p[2], w->plane,
+                       "plane %d\n", verify_weight_str(got, &w->w), w->p[0], w->p[1], w->p[2], w->plane,
                     x->plane);
         break;
     case P_DUP:
@@ -493,16 +500,16 @@ static void report_item(sbuf *o, const ctx *c, const reading *r, const item *e)
         sbuf_printf(o, "points not in increasing order flip the sign: {%d, %d, %d, %d} is %s * "
                        "cross4(b%d, b%d, b%d) = %s * cross4(b%d, b%d, b%d), but the exact term "
                        "is %s * cross4(b%d, b%d, b%d): write {%d, %d, %d, %d}\n",
-                    w->plane, w->p[0], w->p[1], w->p[2], got_str(got, &w->w), w->p[0], w->p[1],
-                    w->p[2], got_str(neg, &g->g), g->q[0], g->q[1], g->q[2],
+                    w->plane, w->p[0], w->p[1], w->p[2], verify_weight_str(got, &w->w), w->p[0], w->p[1],
+                    w->p[2], verify_weight_str(neg, &g->g), g->q[0], g->q[1], g->q[2],
                     expect_str(want, &x->w, &r->s, 1, 0), x->j, x->k, x->l, w->plane, g->q[0],
                     g->q[1], g->q[2]);
         break;
     case N_ORDER_OK:
         sbuf_printf(o, "note: points not in increasing order: {%d, %d, %d, %d} is %s * "
                        "cross4(b%d, b%d, b%d) = %s * cross4(b%d, b%d, b%d), the exact term\n",
-                    w->plane, w->p[0], w->p[1], w->p[2], got_str(got, &w->w), w->p[0], w->p[1],
-                    w->p[2], got_str(neg, &g->g), g->q[0], g->q[1], g->q[2]);
+                    w->plane, w->p[0], w->p[1], w->p[2], verify_weight_str(got, &w->w), w->p[0], w->p[1],
+                    w->p[2], verify_weight_str(neg, &g->g), g->q[0], g->q[1], g->q[2]);
         break;
     case N_REPEATED:
         sbuf_printf(o, "note: {%d, %d, %d, %d} repeats a point: cross4 with a repeated point is "
@@ -515,23 +522,41 @@ static void report_item(sbuf *o, const ctx *c, const reading *r, const item *e)
     }
 }
 
+/* The name of the index convention, v-first or not. */
+static const char *conv_name(int vfirst)
+{
+    return vfirst ? "v-first" : "u-first";
+}
+
+/* Writes how convention vfirst numbers the points and planes of d. */
+static void numbering(sbuf *o, const tp_domain *d, int vfirst)
+{
+    if (vfirst)
+        sbuf_printf(o, "point (i, j) numbered j*%d+i and plane (I, J) numbered J*%d+I", d->n + 1,
+                    d->pu + 1);
+    else
+        sbuf_printf(o, "point (i, j) numbered i*%d+j and plane (I, J) numbered I*%d+J", d->m + 1,
+                    d->pv + 1);
+}
+
 /* Writes what reading r is, e.g. "the exact table scaled by 2" (nothing for the exact table). */
-static void reading_str(sbuf *o, const reading *r)
+static void reading_str(sbuf *o, const ctx *c, const reading *r)
 {
     char s[RAT_STRLEN + 32];
     int neg = r->s.d < 0;
     if (r->which == 0)
         sbuf_puts(o, neg ? "the exact table negated" : "the exact table");
+    else if (neg)
+        sbuf_puts(o, "the exact table with u and v swapped");
     else
-        sbuf_puts(o, neg ? "the exact table with u and v swapped"
-                         : "the exact table in the v-first index convention");
+        sbuf_printf(o, "the exact table in the %s index convention", conv_name(!c->vfirst));
     if (!is_unit(&r->s))
         sbuf_printf(o, "%s scaled by %s", neg || r->which ? " and" : "", scale_str(s, &r->s));
 }
 
-/* Writes the verdict line. */
-static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r,
-                           const size_t *count, size_t problems)
+/* Writes the verdict on a table with problems: their counts by kind. */
+static void verdict_problems(sbuf *o, const ctx *c, const reading *r, const size_t *count,
+                             size_t problems)
 {
     static const char *const names[NPROBLEMS][2] = {
         {"missing term", "missing terms"},
@@ -539,64 +564,134 @@ static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r
         {"wrong weight", "wrong weights"},
         {"wrong plane", "wrong planes"},
         {"duplicated term", "duplicated terms"},
-        {"sign flipped by the order of the points", "signs flipped by the order of the points"}};
+        {"sign flipped by the order of the points", "signs flipped by the order of the points"},
+        {"problem in iwgt, owner or the sched arrays",
+         "problems in iwgt, owner or the sched arrays"}};
+    tp_domain_text x;
+    int k, first = 1;
+    tp_domain_text_get(&x, &c->t->dom);
+    sbuf_printf(o, "WRONG: %zu problem%s (", problems, problems == 1 ? "" : "s");
+    for (k = 0; k < NPROBLEMS; k++)
+        if (count[k]) {
+            sbuf_printf(o, "%s%zu %s", first ? "" : ", ", count[k], names[k][count[k] != 1]);
+            first = 0;
+        }
+    sbuf_printf(o, ") against the %zu terms of %s", c->nx, x.name);
+    if (r->which || !is_one(&r->s)) {
+        sbuf_puts(o, ", read as ");
+        reading_str(o, c, r);
+    }
+    sbuf_puts(o, "\n");
+}
+
+/* How well the weights of a table read as the exact one (scale 1) carry the exact values:
+ * PREC_EXACT when each is exact (or iwgt/DENOM gives it exactly), PREC_FLOAT when each is the
+ * float nearest the exact weight, else PREC_TOL (within TOL), *worst the largest relative error. */
+enum { PREC_EXACT, PREC_FLOAT, PREC_TOL };
+
+static int precision(double *worst, const ctx *c, const reading *r, int iwgt_exact)
+{
+    int prec = PREC_EXACT;
+    size_t i;
+    *worst = 0;
+    for (i = 0; i < c->ng && !iwgt_exact; i++) {
+        const gterm *e = &c->g[i];
+        double want, err;
+        if (e->v[r->which] < 0 || e->repeated || e->g.exact)
+            continue;
+        want = rat_get_d(&c->x[r->which][e->v[r->which]].w);
+        err = dabs(e->g.d - want) / dabs(want);
+        *worst = err > *worst ? err : *worst;
+        if ((float)e->g.d != (float)want)
+            prec = PREC_TOL;
+        else if (prec == PREC_EXACT)
+            prec = PREC_FLOAT;
+    }
+    return prec;
+}
+
+/* Writes the verdict on the exact table up to a positive scale. */
+static void verdict_right(sbuf *o, const ctx *c, const reading *r, int iwgt_exact)
+{
+    char s[RAT_STRLEN + 32], conv[32] = "";
+    tp_domain_text x;
+    double worst;
+    tp_domain_text_get(&x, &c->t->dom);
+    if (c->vfirst)
+        snprintf(conv, sizeof conv, " (v-first)");
+    if (!is_one(&r->s)) {
+        sbuf_printf(o, "RIGHT: correct up to a positive scale s = %s: every weight is s times the "
+                       "exact one, so every sign, and so the classification, is unchanged (%zu "
+                       "terms, %s%s)\n", scale_str(s, &r->s), c->nx, x.name, conv);
+        return;
+    }
+    switch (precision(&worst, c, r, iwgt_exact)) {
+    case PREC_EXACT: sbuf_puts(o, "RIGHT: exact"); break;
+    case PREC_FLOAT: sbuf_puts(o, "RIGHT: right to float precision (|error| <= 1/2 ulp)"); break;
+    default:
+        sbuf_printf(o, "RIGHT: right to a relative error of %.2g (within the tolerance %g, but some "
+                       "weights are not the float nearest the exact one)", worst, TOL);
+    }
+    sbuf_printf(o, ": the %zu terms of %s%s agree with the derivation%s\n", c->nx, x.name, conv,
+                c->d->nfunctions ? " (the arrays only: the code of its functions is not checked)"
+                                 : "");
+}
+
+/* Writes the verdict on a table that reads as a whole as another one. */
+static void verdict_reading(sbuf *o, const ctx *c, const reading *r)
+{
     const tp_table *t = c->t;
     char s[RAT_STRLEN + 32];
-    int k, first = 1, neg = r->s.d < 0;
+    int neg = r->s.d < 0;
     tp_domain tr;
     tp_domain_text x, xt;
     tp_domain_transpose(&tr, &t->dom);
     tp_domain_text_get(&x, &t->dom);
     tp_domain_text_get(&xt, &tr);
-    sbuf_printf(o, "%s: ", c->name);
-    if (problems) {
-        sbuf_printf(o, "WRONG: %zu problem%s (", problems, problems == 1 ? "" : "s");
-        for (k = 0; k < NPROBLEMS; k++)
-            if (count[k]) {
-                sbuf_printf(o, "%s%zu %s", first ? "" : ", ", count[k], names[k][count[k] != 1]);
-                first = 0;
-            }
-        sbuf_printf(o, ") against the %zu terms of %s", c->nx, x.name);
-        if (r->which || !is_one(&r->s)) {
-            sbuf_puts(o, ", read as ");
-            reading_str(o, r);
-        }
-        sbuf_puts(o, "\n");
-        return;
-    }
-    if (r->which == 0 && !neg) {
-        *verdict = VERIFY_RIGHT;
-        if (is_one(&r->s))
-            sbuf_printf(o, "RIGHT: exact: the %zu terms of %s agree with the derivation\n", c->nx,
-                        x.name);
-        else
-            sbuf_printf(o, "RIGHT: correct up to a positive scale s = %s: every weight is s times "
-                           "the exact one, so every sign, and so the classification, is unchanged "
-                           "(%zu terms, %s)\n", scale_str(s, &r->s), c->nx, x.name);
-        return;
-    }
-    sbuf_puts(o, r->which == 0 ? "WRONG: all weights negated"
-                 : neg      ? "WRONG: u and v swapped"
-                            : "WRONG: the v-first index convention");
+    if (r->which == 0)
+        sbuf_puts(o, "WRONG: all weights negated");
+    else if (neg)
+        sbuf_puts(o, "WRONG: u and v swapped");
+    else
+        sbuf_printf(o, "WRONG: the %s index convention", conv_name(!c->vfirst));
     if (!is_unit(&r->s))
         sbuf_printf(o, ", and every weight scaled by %s", scale_str(s, &r->s));
     if (r->which == 0) {
         sbuf_puts(o, ": the table of the opposite orientation, which takes front-facing patches "
                      "for back-facing ones");
         if (c->vfirst_negated)
-            sbuf_printf(o, "; for a square patch that is also the exact table in the v-first "
-                           "index convention (point (i, j) numbered j*%d+i), right only for code "
-                           "that numbers points v-first", t->dom.n + 1);
+            sbuf_printf(o, "; for a square patch that is also the exact table in the %s index "
+                           "convention, right only for code that numbers points %s (check it "
+                           "with --convention %s)", conv_name(!c->vfirst), conv_name(!c->vfirst),
+                        conv_name(!c->vfirst));
     } else if (neg) {
         sbuf_printf(o, ": it is%s the exact table of %s, the transposed patch (i along v), which "
                        "for a %s patch has the opposite orientation",
                     is_unit(&r->s) ? "" : ", up to the scale,", xt.name, x.degree);
     } else {
-        sbuf_printf(o, ": the same planes, but point (i, j) numbered j*%d+i and plane (I, J) "
-                       "numbered J*%d+I: right only for code that numbers points v-first; ptpgen "
-                       "numbers point (i, j) i*%d+j", t->dom.n + 1, t->dom.pu + 1, t->dom.m + 1);
+        sbuf_puts(o, ": the same planes, but ");
+        numbering(o, &t->dom, !c->vfirst);
+        sbuf_printf(o, ": right only for code that numbers points %s (check it with --convention "
+                       "%s); the %s convention checked numbers ", conv_name(!c->vfirst),
+                    conv_name(!c->vfirst), conv_name(c->vfirst));
+        numbering(o, &t->dom, c->vfirst);
     }
     sbuf_printf(o, " (%zu terms, %s)\n", c->nx, x.name);
+}
+
+/* Writes the verdict line. */
+static void report_verdict(sbuf *o, int *verdict, const ctx *c, const reading *r,
+                           const size_t *count, size_t problems, int iwgt_exact)
+{
+    sbuf_printf(o, "%s: ", c->name);
+    if (problems) {
+        verdict_problems(o, c, r, count, problems);
+    } else if (r->which == 0 && r->s.d > 0) {
+        *verdict = VERIFY_RIGHT;
+        verdict_right(o, c, r, iwgt_exact);
+    } else {
+        verdict_reading(o, c, r);
+    }
 }
 
 /* The number in tr, d transposed, of point x of d (of plane x, if plane). */
@@ -616,7 +711,7 @@ static int relabel(ctx *c, ptp_error *err)
 {
     tp_domain tr;
     size_t i;
-    if (!(c->x[1] = malloc((c->nx ? c->nx : 1) * sizeof *c->x[1])))
+    if (!(c->x[1] = c->owned = malloc((c->nx ? c->nx : 1) * sizeof *c->x[1])))
         return ptp_fail(err, PTP_ENOMEM, "out of memory checking %s", c->name);
     c->vfirst_negated = 1;
     tp_domain_transpose(&tr, &c->t->dom);
@@ -642,25 +737,110 @@ static int relabel(ctx *c, ptp_error *err)
         rat_neg(&w, &c->x[0][i].w);
         c->vfirst_negated = !cmp_tp(&c->x[0][i], &c->x[1][i]) && rat_equal(&w, &c->x[1][i].w);
     }
+    if (c->vfirst) {
+        c->x[1] = c->x[0];
+        c->x[0] = c->owned;
+    }
     return PTP_OK;
 }
 
-/* Checks document d against the exact table t and appends the report to o. */
-static int check(sbuf *o, int *verdict, const verify_doc *d, const tp_table *t, const char *name,
-                 ptp_error *err)
+/* Fills c->g from the document's terms, sorted, with their counterparts in c->x. */
+static void load_terms(ctx *c)
+{
+    size_t i;
+    for (i = 0; i < c->ng; i++) {
+        gterm *e = &c->g[i];
+        const verify_term *w = &c->d->terms[i];
+        memcpy(e->q, w->p, sizeof e->q);
+        e->plane = w->plane;
+        e->flipped = sort3(e->q);
+        e->repeated = e->q[0] == e->q[1] || e->q[1] == e->q[2];
+        e->g = w->w;
+        if (e->flipped) {
+            e->g.d = -e->g.d;
+            rat_neg(&e->g.r, &e->g.r);
+        }
+        e->src = i;
+        e->v[0] = find(c->x[0], c->nx, e->plane, e->q);
+        e->v[1] = c->vfirst_negated ? -1 : find(c->x[1], c->nx, e->plane, e->q);
+    }
+    qsort(c->g, c->ng, sizeof *c->g, cmp_g);
+}
+
+/* Runs verify_arrays with the exact weight of every term as written under reading r. */
+static int check_arrays(sbuf *o, verify_arrays_result *res, const ctx *c, const reading *r,
+                        ptp_error *err)
+{
+    rat *want = malloc((c->ng + 1) * sizeof *want);
+    char *known = calloc(c->ng + 1, 1);
+    size_t i;
+    int st;
+    for (i = 0; want && known && i < c->ng; i++) {
+        const gterm *e = &c->g[i];
+        long v = e->v[r->which];
+        rat *w = &want[e->src];
+        if (v < 0 || e->repeated || !r->s.exact || rat_mul(w, &c->x[r->which][v].w, &r->s.r))
+            continue;
+        if (e->flipped)
+            rat_neg(w, w);
+        known[e->src] = 1;
+    }
+    st = want && known ? verify_arrays(o, res, c->d, want, known, c->t->dom.nplanes, c->name, err)
+                       : ptp_fail(err, PTP_ENOMEM, "out of memory checking %s", c->name);
+    free(want);
+    free(known);
+    return st;
+}
+
+/* Writes the report on c under reading r with its problem count to rep. */
+static int write_report(sbuf *rep, int *verdict, ctx *c, const reading *r, size_t problems,
+                        ptp_error *err)
+{
+    const verify_doc *d = c->d;
+    const tp_domain *dom = &c->t->dom;
+    size_t i, count[NPROBLEMS] = {0};
+    verify_arrays_result ares;
+    char deg[16];
+    int a, b, st;
+    qsort(c->it, c->nit, sizeof *c->it, cmp_item);
+    if (d->degree_named && (d->n != dom->n || d->m != dom->m))
+        sbuf_printf(rep, "%s:%d: note: the %s names bidegree %dx%d; checked as %s\n", c->name,
+                    d->degree_line, d->degree_named == 1 ? "document" : "array name", d->n,
+                    d->m, tp_domain_format(deg, sizeof deg, dom));
+    for (i = 0; i < c->nit; i++) {
+        report_item(rep, c, r, &c->it[i]);
+        if (c->it[i].kind < NPROBLEMS)
+            count[c->it[i].kind]++;
+    }
+    if ((st = check_arrays(rep, &ares, c, r, err)))
+        return st;
+    count[P_ARRAY] = ares.problems;
+    problems += ares.problems;
+    if (problems && verify_doc_fit(&a, &b, d) &&
+        !((a == dom->n && b == dom->m) || (a == dom->m && b == dom->n)))
+        sbuf_printf(rep, "%s: note: the indices fit bidegree %dx%d, not %s\n", c->name, a, b,
+                    tp_domain_format(deg, sizeof deg, dom));
+    report_verdict(rep, verdict, c, r, count, problems, ares.iwgt_exact);
+    return PTP_OK;
+}
+
+/* Checks document d against the exact table t (in convention vfirst) and appends the report
+ * to o. */
+static int check(sbuf *o, int *verdict, const verify_doc *d, const tp_table *t, int vfirst,
+                 const char *name, ptp_error *err)
 {
     ctx c;
     reading r;
     char *covered = NULL;
-    size_t *extra = NULL, i, problems, count[NPROBLEMS] = {0};
+    size_t *extra = NULL;
     pkey *by = NULL;
-    char deg[16];
-    int st, a, b;
+    int st;
     sbuf rep;
     memset(&c, 0, sizeof c);
     c.d = d;
     c.t = t;
     c.name = name;
+    c.vfirst = vfirst;
     c.x[0] = t->terms;
     c.nx = t->nterms;
     c.ng = d->nterms;
@@ -674,56 +854,17 @@ static int check(sbuf *o, int *verdict, const verify_doc *d, const tp_table *t, 
     by = malloc((c.nx + 1) * sizeof *by);
     if (!c.g || !c.it || !covered || !extra || !by) {
         st = ptp_fail(err, PTP_ENOMEM, "out of memory checking %s", name);
-        goto done;
+    } else {
+        load_terms(&c);
+        if (!(st = choose(&r, &c, err)))
+            st = write_report(&rep, verdict, &c, &r, classify(&c, &r, covered, extra, by), err);
     }
-    for (i = 0; i < c.ng; i++) {
-        gterm *e = &c.g[i];
-        const verify_term *w = &d->terms[i];
-        memcpy(e->q, w->p, sizeof e->q);
-        e->plane = w->plane;
-        e->flipped = sort3(e->q);
-        e->repeated = e->q[0] == e->q[1] || e->q[1] == e->q[2];
-        e->g = w->w;
-        if (e->flipped) {
-            e->g.d = -e->g.d;
-            rat_neg(&e->g.r, &e->g.r);
-        }
-        e->src = i;
-        e->v[0] = find(c.x[0], c.nx, e->plane, e->q);
-        e->v[1] = c.vfirst_negated ? -1 : find(c.x[1], c.nx, e->plane, e->q);
-    }
-    qsort(c.g, c.ng, sizeof *c.g, cmp_g);
-    if ((st = choose(&r, &c, err)))
-        goto done;
-    problems = classify(&c, &r, covered, extra, by);
-    qsort(c.it, c.nit, sizeof *c.it, cmp_item);
-    if (d->degree_named && (d->n != t->dom.n || d->m != t->dom.m))
-        sbuf_printf(&rep, "%s:%d: note: the %s names bidegree %dx%d; checked as %s\n", name,
-                    d->degree_line, d->degree_named == 1 ? "document" : "array name", d->n,
-                    d->m, tp_domain_format(deg, sizeof deg, &t->dom));
-    for (i = 0; i < c.nit; i++) {
-        report_item(&rep, &c, &r, &c.it[i]);
-        if (c.it[i].kind < NPROBLEMS)
-            count[c.it[i].kind]++;
-    }
-    if (problems && verify_doc_fit(&a, &b, d) &&
-        !((a == t->dom.n && b == t->dom.m) || (a == t->dom.m && b == t->dom.n)))
-        sbuf_printf(&rep, "%s: note: the indices fit bidegree %dx%d, not %s\n", name, a, b,
-                    tp_domain_format(deg, sizeof deg, &t->dom));
-    report_verdict(&rep, verdict, &c, &r, count, problems);
-    if (rep.failed) {
+    if (!st && (rep.failed || (sbuf_puts(o, rep.s), o->failed)))
         st = ptp_fail(err, PTP_ENOMEM, "out of memory writing the report on %s", name);
+    if (st)
         *verdict = VERIFY_WRONG;
-        goto done;
-    }
-    sbuf_puts(o, rep.s);
-    if (o->failed) {
-        st = ptp_fail(err, PTP_ENOMEM, "out of memory writing the report on %s", name);
-        *verdict = VERIFY_WRONG;
-    }
-done:
     sbuf_clear(&rep);
-    free(c.x[1]);
+    free(c.owned);
     free(c.g);
     free(c.it);
     free(covered);
@@ -756,7 +897,7 @@ static int check_range(const verify_doc *d, const tp_domain *dom, const char *na
 }
 
 int verify_table(sbuf *out, int *verdict, const char *text, size_t len, const char *name, int n,
-                 int m, ptp_error *err)
+                 int m, int convention, ptp_error *err)
 {
     verify_doc d;
     tp_domain dom;
@@ -774,7 +915,7 @@ int verify_table(sbuf *out, int *verdict, const char *text, size_t len, const ch
     if (!(st = verify_doc_degree(&n, &m, &d, n, m, name, err)) &&
         !(st = tp_domain_init(&dom, TP_QUAD, n, m, err)) &&
         !(st = check_range(&d, &dom, name, err)) && !(st = tp_derive_domain(&t, &dom, err))) {
-        st = check(out, verdict, &d, &t, name, err);
+        st = check(out, verdict, &d, &t, convention == VERIFY_V_FIRST, name, err);
         tp_clear(&t);
     }
     verify_doc_clear(&d);

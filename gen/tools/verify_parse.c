@@ -24,6 +24,7 @@ typedef struct {
     int bol; /* only blanks and comments since the line began: '#' starts a directive */
     const char *name;
     ptp_error *err;
+    verify_doc *doc; /* C source: where directives and arrays go; NULL in JSON */
 } rd;
 
 enum { T_END, T_ID, T_NUM, T_STR, T_PUNCT };
@@ -136,41 +137,17 @@ static void acc(ptp_u128 *u, int *ovf, unsigned base, unsigned v)
         *u += v;
 }
 
-/* Reads the literal s[0..n): a C integer literal (decimal, octal or hex, u/l suffixes; *integer
- * set) or a decimal floating literal (an optional f/l suffix). Returns 0, 1 when s is not such a
- * literal, 2 when it is longer than MAX_LITERAL. */
-static int number(verify_weight *w, int *integer, const char *s, size_t n)
+/* Sets w from the decimal floating literal s[0..n) (digits [. digits] [e[+-]digits] [fFlL],
+ * with '.' or an exponent; at most MAX_LITERAL characters); returns 0, or 1 when s is no such
+ * literal. Exact when every digit from the point position (after the exponent) on is 0 and the
+ * value is below EXACT_FLOAT_LIMIT. */
+static int float_literal(verify_weight *w, const char *s, size_t n)
 {
     ptp_u128 u = 0;
-    int ovf = 0, base = 10, point = 0, ndig = 0, any = 0;
+    int ovf = 0, point = 0, ndig = 0, any = 0;
     long e = 0, pp;
-    size_t i = 0, d0, k;
+    size_t i, k;
     char copy[MAX_LITERAL + 1];
-    double d = 0;
-    w->r.num = 0;
-    w->r.den = 1;
-    if (n > MAX_LITERAL)
-        return 2;
-    if (n >= 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X'))
-        base = 16, i = 2;
-    else if (n >= 1 && s[0] == '0')
-        base = 8;
-    d0 = i;
-    for (; i < n && digit_value(s[i]) < base; i++) {
-        acc(&u, &ovf, (unsigned)base, (unsigned)digit_value(s[i]));
-        d = d * base + digit_value(s[i]);
-    }
-    for (k = i; k < n && k - i < 3 && in_set(s[k], "uUlL"); k++)
-        ;
-    if (i > d0 && k == n) {
-        *integer = 1;
-        w->d = d;
-        w->exact = !ovf && !i128_from_mag(&w->r.num, 0, u);
-        w->r.den = 1;
-        return 0;
-    }
-    /* A decimal floating literal: digits [. digits] [e[+-]digits] [fFlL], with '.' or e. */
-    *integer = 0;
     for (i = 0; i < n && (is_digit(s[i]) || (s[i] == '.' && !point)); i++) {
         point |= s[i] == '.';
         any |= is_digit(s[i]);
@@ -198,12 +175,9 @@ static int number(verify_weight *w, int *integer, const char *s, size_t n)
     memcpy(copy, s, n);
     copy[n] = '\0';
     w->d = strtod(copy, NULL);
-    /* Exact when every digit from the point position pp (after the exponent) on is 0. */
     for (k = 0; k < n && s[k] != '.' && is_digit(s[k]); k++)
         ;
-    pp = (long)k + e;
-    u = 0;
-    ovf = 0;
+    pp = (long)k + e; /* the point position, after the exponent */
     w->exact = 1;
     for (k = 0; k < n && (is_digit(s[k]) || s[k] == '.'); k++) {
         if (s[k] == '.')
@@ -217,10 +191,40 @@ static int number(verify_weight *w, int *integer, const char *s, size_t n)
         acc(&u, &ovf, 10, 0);
     if (ovf || (double)u >= EXACT_FLOAT_LIMIT)
         w->exact = 0;
-    if (w->exact) {
+    if (w->exact)
         w->r.num = (ptp_i128)u;
-        w->r.den = 1;
+    return 0;
+}
+
+/* Reads the literal s[0..n): a C integer literal (decimal, octal or hex, u/l suffixes; *integer
+ * set) or a decimal floating literal (an optional f/l suffix). Returns 0, 1 when s is not such a
+ * literal, 2 when it is longer than MAX_LITERAL. */
+static int number(verify_weight *w, int *integer, const char *s, size_t n)
+{
+    ptp_u128 u = 0;
+    int ovf = 0, base = 10;
+    size_t i = 0, d0, k;
+    double d = 0;
+    w->r.num = 0;
+    w->r.den = 1;
+    if (n > MAX_LITERAL)
+        return 2;
+    if (n >= 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X'))
+        base = 16, i = 2;
+    else if (n >= 1 && s[0] == '0')
+        base = 8;
+    d0 = i;
+    for (; i < n && digit_value(s[i]) < base; i++) {
+        acc(&u, &ovf, (unsigned)base, (unsigned)digit_value(s[i]));
+        d = d * base + digit_value(s[i]);
     }
+    for (k = i; k < n && k - i < 3 && in_set(s[k], "uUlL"); k++)
+        ;
+    *integer = i > d0 && k == n;
+    if (!*integer)
+        return float_literal(w, s, n);
+    w->d = d;
+    w->exact = !ovf && !i128_from_mag(&w->r.num, 0, u);
     return 0;
 }
 
@@ -292,6 +296,42 @@ static int is_ident(int c, int first)
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || (!first && is_digit(c));
 }
 
+/* s[0..n) is suffix or ends in "_" suffix. */
+static int named(const char *s, size_t n, const char *suffix)
+{
+    size_t k = strlen(suffix);
+    return n >= k && !memcmp(s + n - k, suffix, k) && (n == k || s[n - k - 1] == '_');
+}
+
+/* Records `#define NAME INTEGER` at pos ('#' opening a directive) when NAME ends in DENOM or
+ * THREADS; reads nothing past the line. */
+static void read_define(verify_doc *d, const rd *r)
+{
+    size_t p = r->pos + 1, n0, n1, v0;
+    verify_macro *m;
+    verify_weight w;
+    int integer;
+    while (in_set(at(r, p), " \t"))
+        p++;
+    if (r->len - p < 7 || memcmp(r->s + p, "define", 6) || !in_set(at(r, p + 6), " \t"))
+        return;
+    for (p += 6; in_set(at(r, p), " \t"); p++)
+        ;
+    for (n0 = p; is_ident(at(r, p), p == n0); p++)
+        ;
+    for (n1 = p; in_set(at(r, p), " \t"); p++)
+        ;
+    for (v0 = p; is_ident(at(r, p), 0); p++)
+        ;
+    m = named(r->s + n0, n1 - n0, "DENOM") ? &d->denom
+        : named(r->s + n0, n1 - n0, "THREADS") ? &d->threads : NULL;
+    if (!m || m->line || (at(r, p) >= 0 && !in_set(at(r, p), " \t\r\n/")) ||
+        number(&w, &integer, r->s + v0, p - v0) || !integer || !w.exact || w.r.num > 1000000000)
+        return;
+    m->v = (long)w.r.num;
+    m->line = r->line;
+}
+
 /* Reads the next token into t, past blanks, comments and preprocessor directives. */
 static int lex(rd *r, tok *t)
 {
@@ -311,6 +351,8 @@ static int lex(rd *r, tok *t)
             while ((c = at(r, r->pos)) >= 0 && c != '\n')
                 r->pos++;
         } else if (c == '#' && r->bol) {
+            if (r->doc)
+                read_define(r->doc, r);
             if ((st = skip_directive(r)))
                 return st;
         } else {
@@ -395,6 +437,7 @@ static int weight_unary(rd *r, tok *t, verify_weight *w, int depth)
             if ((st = lex(r, t)) || (st = expect(r, t, ')', "after the cast")) ||
                 (st = weight_unary(r, t, w, depth + 1)))
                 return st;
+            w->cint = 0;
         } else if ((st = weight_expr(r, t, w, depth + 1)) ||
                    (st = expect(r, t, ')', "to close the '('"))) {
             return st;
@@ -408,6 +451,7 @@ static int weight_unary(rd *r, tok *t, verify_weight *w, int depth)
         default:
             return fail_at(r, t->line, "'%s' is not a number", tok_text(buf, r, t));
         }
+        w->cint = integer;
         if ((st = lex(r, t)))
             return st;
     } else {
@@ -419,7 +463,28 @@ static int weight_unary(rd *r, tok *t, verify_weight *w, int depth)
     return PTP_OK;
 }
 
-/* Unaries joined by '*' and '/', exact while every operand is. */
+/* C evaluates a / b of two integer constant expressions as an integer division. */
+static int int_division(const rd *r, int line, const verify_weight *a, const verify_weight *b)
+{
+    char q[RAT_STRLEN] = "an integer";
+    rat t = {0, 1};
+    if (a->exact && b->exact) {
+        t.num = a->r.num / b->r.num;
+        rat_get_str(q, &t);
+    }
+    return fail_at(r, line, "integer division: C evaluates %.0f/%.0f as %s; write %.0f.0f/%.0f "
+                            "or %.9gf", a->d, b->d, q, a->d, b->d, (double)(float)(a->d / b->d));
+}
+
+/* In C, a product or quotient is computed in float: exact only when it is an integer below
+ * 2^24 in magnitude. */
+static int c_exact(const rat *q)
+{
+    return q->den == 1 && q->num < (ptp_i128)EXACT_FLOAT_LIMIT &&
+           q->num > -(ptp_i128)EXACT_FLOAT_LIMIT;
+}
+
+/* Unaries joined by '*' and '/', exact while every operand is (and in C while c_exact). */
 static int weight_expr(rd *r, tok *t, verify_weight *w, int depth)
 {
     int st = weight_unary(r, t, w, depth);
@@ -431,8 +496,12 @@ static int weight_expr(rd *r, tok *t, verify_weight *w, int depth)
             return st;
         if (div && b.d == 0)
             return fail_at(r, line, "division by zero in a weight");
+        if (div && r->doc && w->cint && b.cint)
+            return int_division(r, line, w, &b);
         w->d = div ? w->d / b.d : w->d * b.d;
         w->exact = w->exact && b.exact && !(div ? rat_div(&q, &w->r, &b.r) : rat_mul(&q, &w->r, &b.r));
+        w->exact = w->exact && (!r->doc || c_exact(&q));
+        w->cint = !div && w->cint && b.cint;
         if (w->exact)
             w->r = q;
     }
@@ -450,23 +519,23 @@ static int weight(rd *r, tok *t, verify_weight *w)
 
 /* ---- the C arrays ---- */
 
-enum { ROLE_NONE, ROLE_IDX, ROLE_WGT };
+/* What an array is, by its name: one of d->arr's (VERIFY_IWGT...), idx, wgt, or unknown. */
+enum { ROLE_IDX = VERIFY_NARRAYS, ROLE_WGT, ROLE_NONE };
 
-static int ends_with(const char *s, size_t n, const char *suffix)
-{
-    size_t k = strlen(suffix);
-    return n >= k && !memcmp(s + n - k, suffix, k);
-}
-
-/* idx or *_idx but not *sched_idx; wgt or *_wgt but not *iwgt or *sched_wgt. */
+/* The role of the array named t: longest suffixes first, so *_sched_idx is not idx. */
 static int role_of(const rd *r, const tok *t)
 {
-    const char *s = r->s + t->at;
-    size_t n = t->len;
-    if (ends_with(s, n, "idx") && (n == 3 || s[n - 4] == '_') && !ends_with(s, n, "sched_idx"))
-        return ROLE_IDX;
-    if (ends_with(s, n, "wgt") && (n == 3 || s[n - 4] == '_') && !ends_with(s, n, "sched_wgt"))
-        return ROLE_WGT;
+    static const struct {
+        const char *suffix;
+        int role;
+    } names[] = {{"sched_iwgt", VERIFY_SCHED_IWGT}, {"sched_idx", VERIFY_SCHED_IDX},
+                 {"sched_wgt", VERIFY_SCHED_WGT},   {"iwgt", VERIFY_IWGT},
+                 {"owner", VERIFY_OWNER},           {"idx", ROLE_IDX},
+                 {"wgt", ROLE_WGT}};
+    size_t k;
+    for (k = 0; k < sizeof names / sizeof names[0]; k++)
+        if (named(r->s + t->at, t->len, names[k].suffix))
+            return names[k].role;
     return ROLE_NONE;
 }
 
@@ -474,7 +543,7 @@ static int role_of(const rd *r, const tok *t)
  * before "_idx" or "_table_idx", after '_' or at the start), into d as a hint. */
 static void name_degree(verify_doc *d, const char *s, size_t n, int line)
 {
-    size_t k = ends_with(s, n, "_table_idx") ? n - 10 : n - 4; /* s[k] is the '_' before */
+    size_t k = n >= 10 && !memcmp(s + n - 10, "_table_idx", 10) ? n - 10 : n - 4; /* s[k]: '_' */
     int v[2] = {0, 0}, which, scale;
     if (n < 4)
         return;
@@ -585,94 +654,141 @@ static int read_rows(rd *r, tok *t, vec *rows, int line)
     return lex(r, t);
 }
 
-/* A weight and its line, as read from a wgt array. */
-typedef struct {
-    verify_weight w;
-    int line;
-} wgt_entry;
-
-/* Reads the wgt initializer at t ('{'), appending to wgts (wgt_entry). */
-static int read_weights(rd *r, tok *t, vec *wgts, int line)
+/* Reads the initializer at t ('{') of a list of weights or numbers, appending to wgts
+ * (verify_term: w, and line = wline); what names the array in messages. */
+static int read_weights(rd *r, tok *t, vec *wgts, int line, const char *what)
 {
     int st;
-    wgt_entry *e = NULL;
+    verify_term *e = NULL;
     if ((st = lex(r, t)))
         return st;
     while (!is_punct(r, t, '}')) {
         if ((st = vec_push(wgts, sizeof *e, (void **)&e, r)))
             return st;
-        e->line = t->line;
-        if ((st = weight(r, t, &e->w)) || (st = next_element(r, t, "wgt", line)))
+        e->line = e->wline = t->line;
+        if ((st = weight(r, t, &e->w)) || (st = next_element(r, t, what, line)))
             return st;
     }
     return lex(r, t);
 }
 
-/* Reads C source: the one idx and the one wgt array declared with an initializer. */
+/* The arrays of C source as read, by role (VERIFY_IWGT..ROLE_WGT). */
+typedef struct {
+    vec v[ROLE_NONE];
+    int line[ROLE_NONE]; /* the line declaring each, 0 while unseen */
+} c_arrays;
+
+static const char *const role_names[ROLE_NONE] = {"iwgt", "owner", "sched_idx", "sched_wgt",
+                                                  "sched_iwgt", "idx", "wgt"};
+
+/* Appends the name of an array verify does not know to d->ignored. */
+static void note_ignored(verify_doc *d, const char *s, size_t n)
+{
+    size_t k = strlen(d->ignored);
+    if (k + n + 8 >= sizeof d->ignored) {
+        if (k + 5 < sizeof d->ignored && !strstr(d->ignored, "..."))
+            strcpy(d->ignored + k, k ? ", ..." : "...");
+        return;
+    }
+    snprintf(d->ignored + k, sizeof d->ignored - k, "%s%.*s", k ? ", " : "", (int)n, s);
+}
+
+/* Reads the initializer at t ('{') of the array `name` of this role (ROLE_NONE: skipped, its
+ * name noted in d->ignored). */
+static int define_array(verify_doc *d, rd *r, tok *t, const tok *name, int role, c_arrays *a)
+{
+    if (role == ROLE_NONE) {
+        note_ignored(d, r->s + name->at, name->len);
+        return PTP_OK; /* the braces are skipped as any others */
+    }
+    if (a->line[role])
+        return fail_at(r, name->line, "a second %s array (the first is on line %d): verify "
+                                      "reads one table", role_names[role], a->line[role]);
+    a->line[role] = name->line;
+    if (role == ROLE_IDX)
+        name_degree(d, r->s + name->at, name->len, name->line);
+    if (role == ROLE_IDX || role == VERIFY_SCHED_IDX)
+        return read_rows(r, t, &a->v[role], name->line);
+    return read_weights(r, t, &a->v[role], name->line, role_names[role]);
+}
+
+/* Moves the arrays read into d, or fails when the table is not there or does not add up. */
+static int finish_c(verify_doc *d, rd *r, c_arrays *a)
+{
+    size_t x, k;
+    vec *rows = &a->v[ROLE_IDX], *wgts = &a->v[ROLE_WGT];
+    if (!a->line[ROLE_IDX] && d->nfunctions)
+        return fail_at(r, d->function_line, "functions but no table arrays: verify checks "
+                       "tables (idx and wgt arrays, or ptpgen json); straight-line code, such as "
+                       "ptpgen's C header, cannot be checked from its text: run it on the test "
+                       "vectors of `ptpgen vectors --format c` instead");
+    if (!a->line[ROLE_IDX])
+        return fail_at(r, 1, "no table: expected C arrays idx[][4] = {{plane, j, k, l}, ...} and "
+                             "wgt[] (or names ending in _idx, _wgt), or a ptpgen JSON document");
+    if (!a->line[ROLE_WGT])
+        return fail_at(r, a->line[ROLE_IDX], "the idx array has no wgt array (named wgt or "
+                                             "ending in _wgt)");
+    if (rows->n != wgts->n)
+        return fail_at(r, a->line[ROLE_WGT], "the wgt array has %zu weights but the idx array "
+                       "(line %d) has %zu rows", wgts->n, a->line[ROLE_IDX], rows->n);
+    d->terms = rows->v;
+    d->nterms = rows->n;
+    rows->v = NULL;
+    for (x = 0; x < d->nterms; x++) {
+        const verify_term *w = (const verify_term *)wgts->v + x;
+        d->terms[x].w = w->w;
+        d->terms[x].wline = w->line;
+    }
+    for (k = 0; k < VERIFY_NARRAYS; k++) {
+        d->arr[k].e = a->v[k].v;
+        d->arr[k].n = a->v[k].n;
+        d->arr[k].line = a->line[k];
+        a->v[k].v = NULL;
+    }
+    return PTP_OK;
+}
+
+/* Reads C source: the one idx and the one wgt array declared with an initializer, the other
+ * arrays of c_arrays, the DENOM and THREADS macros; notes unknown arrays and functions. */
 static int parse_c(verify_doc *d, rd *r)
 {
-    vec rows = {NULL, 0, 0}, wgts = {NULL, 0, 0};
-    int st, idx_line = 0, wgt_line = 0, open_line = 0;
-    size_t x, depth = 0; /* braces open outside the two arrays, the first from open_line */
+    c_arrays a;
+    int st, open_line = 0, after_paren = 0, k;
+    size_t depth = 0; /* braces open outside the arrays, the first from open_line */
     tok t, name;
+    memset(&a, 0, sizeof a);
+    d->c_source = 1;
+    r->doc = d;
     st = lex(r, &t);
     while (!st && t.kind != T_END) {
         int role;
         if (t.kind != T_ID) {
+            if (is_punct(r, &t, '{') && !depth && after_paren && !d->nfunctions++)
+                d->function_line = t.line;
             if (is_punct(r, &t, '{') && !depth++)
                 open_line = t.line;
             depth -= depth && is_punct(r, &t, '}');
+            after_paren = is_punct(r, &t, ')');
             st = lex(r, &t);
             continue;
         }
+        after_paren = 0;
         name = t;
-        if ((st = lex(r, &t)) || !is_punct(r, &t, '[') || !(role = role_of(r, &name)))
+        if ((st = lex(r, &t)) || !is_punct(r, &t, '['))
             continue;
+        role = role_of(r, &name);
         while (!st && is_punct(r, &t, '['))
             st = skip_brackets(r, &t);
         if (st || !is_punct(r, &t, '=') || (st = lex(r, &t)) || !is_punct(r, &t, '{'))
             continue; /* a use like idx[x][0], not a definition */
-        if (role == ROLE_IDX) {
-            if (idx_line) {
-                st = fail_at(r, name.line, "a second idx array (the first is on line %d): verify "
-                                           "reads one table", idx_line);
-                break;
-            }
-            idx_line = name.line;
-            name_degree(d, r->s + name.at, name.len, name.line);
-            st = read_rows(r, &t, &rows, idx_line);
-        } else {
-            if (wgt_line) {
-                st = fail_at(r, name.line, "a second wgt array (the first is on line %d): verify "
-                                           "reads one table", wgt_line);
-                break;
-            }
-            wgt_line = name.line;
-            st = read_weights(r, &t, &wgts, wgt_line);
-        }
+        st = define_array(d, r, &t, &name, role, &a);
     }
     if (!st && depth)
         st = fail_at(r, open_line, "the '{' of this line is never closed: is the file cut short?");
-    if (!st && !idx_line)
-        st = fail_at(r, 1, "no table: expected C arrays idx[][4] = {{plane, j, k, l}, ...} and "
-                           "wgt[] (or names ending in _idx, _wgt), or a ptpgen JSON document");
-    if (!st && !wgt_line)
-        st = fail_at(r, idx_line, "the idx array has no wgt array (named wgt or ending in _wgt)");
-    if (!st && rows.n != wgts.n)
-        st = fail_at(r, wgt_line, "the wgt array has %zu weights but the idx array (line %d) has "
-                                  "%zu rows", wgts.n, idx_line, rows.n);
-    if (!st) {
-        d->terms = rows.v;
-        d->nterms = rows.n;
-        rows.v = NULL;
-        for (x = 0; x < d->nterms; x++) {
-            const wgt_entry *w = (const wgt_entry *)wgts.v + x;
-            d->terms[x].w = w->w;
-            d->terms[x].wline = w->line;
-        }
-    }
-    free(rows.v);
-    free(wgts.v);
+    if (!st)
+        st = finish_c(d, r, &a);
+    for (k = 0; k < ROLE_NONE; k++)
+        free(a.v[k].v);
     return st;
 }
 
@@ -933,78 +1049,88 @@ static int json_terms(rd *r, vec *terms)
     }
 }
 
+/* Reads the value of "degree" ([n, m]) into d. */
+static int json_degree(verify_doc *d, rd *r)
+{
+    int st;
+    d->degree_line = r->line;
+    d->degree_named = 1;
+    if (!(st = json_expect(r, '[', "opening \"degree\": [n, m]")) &&
+        !(st = json_int(r, &d->n, PTP_MAX_DEGREE, "the degree n")) &&
+        !(st = json_expect(r, ',', "in \"degree\": [n, m]")) &&
+        !(st = json_int(r, &d->m, PTP_MAX_DEGREE, "the degree m")) &&
+        !(st = json_expect(r, ']', "closing \"degree\": [n, m]")) && (d->n < 1 || d->m < 1))
+        st = fail_at(r, d->degree_line, "\"degree\" must be [n, m] with 1 <= n, m <= %d",
+                     PTP_MAX_DEGREE);
+    return st;
+}
+
+/* Reads one member "key": value of the document object at pos ('"'); seen[0] and seen[1]
+ * count the "terms" and "degree" members so far. Other keys are skipped and noted in d. */
+static int json_member(verify_doc *d, rd *r, vec *terms, int *seen)
+{
+    int st, kline = r->line;
+    char key[16];
+    size_t n;
+    if (at(r, r->pos) != '"')
+        return fail_at(r, kline, "expected a key string in the object");
+    if ((st = json_string(r, key, sizeof key, &n)) || (st = json_expect(r, ':', "after a key")))
+        return st;
+    json_ws(r);
+    if (n == 5 && !strcmp(key, "terms")) {
+        if (seen[0]++)
+            return fail_at(r, kline, "a second \"terms\"");
+        if (at(r, r->pos) != '[')
+            return fail_at(r, r->line, "\"terms\" must be an array");
+        return json_terms(r, terms);
+    }
+    if (n == 6 && !strcmp(key, "degree"))
+        return seen[1]++ ? fail_at(r, kline, "a second \"degree\"") : json_degree(d, r);
+    if (strcmp(key, "format") && strcmp(key, "generator") && strcmp(key, "command"))
+        note_ignored(d, key, strlen(key));
+    return json_skip(r, 1);
+}
+
+/* Reads the document object at pos ('{'). */
+static int json_object(verify_doc *d, rd *r, vec *terms, int *seen)
+{
+    int st;
+    r->pos++;
+    json_ws(r);
+    if (at(r, r->pos) == '}') {
+        r->pos++;
+        return PTP_OK;
+    }
+    for (;;) {
+        json_ws(r);
+        if ((st = json_member(d, r, terms, seen)))
+            return st;
+        json_ws(r);
+        if (at(r, r->pos) == '}') {
+            r->pos++;
+            return PTP_OK;
+        }
+        if ((st = json_expect(r, ',', "or '}' in the object")))
+            return st;
+    }
+}
+
 /* Reads a JSON document: an object with "terms" (and maybe "degree"), or the terms array. */
 static int parse_json(verify_doc *d, rd *r)
 {
     vec terms = {NULL, 0, 0};
-    int st = PTP_OK, seen_terms = 0, seen_degree = 0, line;
-    char key[16];
-    size_t n;
+    int st, seen[2] = {0, 0}, line;
     json_ws(r);
     line = r->line;
     if (at(r, r->pos) == '[') {
-        seen_terms = 1;
+        seen[0] = 1;
         st = json_terms(r, &terms);
     } else if (at(r, r->pos) != '{') {
         st = fail_at(r, line, "expected a JSON document");
     } else {
-        r->pos++;
-        json_ws(r);
-        if (at(r, r->pos) == '}')
-            r->pos++;
-        else
-            for (;;) {
-                int kline;
-                json_ws(r);
-                kline = r->line;
-                if (at(r, r->pos) != '"') {
-                    st = fail_at(r, kline, "expected a key string in the object");
-                    break;
-                }
-                if ((st = json_string(r, key, sizeof key, &n)) ||
-                    (st = json_expect(r, ':', "after a key")))
-                    break;
-                json_ws(r);
-                if (n == 5 && !strcmp(key, "terms")) {
-                    if (seen_terms++) {
-                        st = fail_at(r, kline, "a second \"terms\"");
-                        break;
-                    }
-                    if (at(r, r->pos) != '[') {
-                        st = fail_at(r, r->line, "\"terms\" must be an array");
-                        break;
-                    }
-                    st = json_terms(r, &terms);
-                } else if (n == 6 && !strcmp(key, "degree")) {
-                    if (seen_degree++) {
-                        st = fail_at(r, kline, "a second \"degree\"");
-                        break;
-                    }
-                    d->degree_line = r->line;
-                    d->degree_named = 1;
-                    if (!(st = json_expect(r, '[', "opening \"degree\": [n, m]")) &&
-                        !(st = json_int(r, &d->n, PTP_MAX_DEGREE, "the degree n")) &&
-                        !(st = json_expect(r, ',', "in \"degree\": [n, m]")) &&
-                        !(st = json_int(r, &d->m, PTP_MAX_DEGREE, "the degree m")) &&
-                        !(st = json_expect(r, ']', "closing \"degree\": [n, m]")) &&
-                        (d->n < 1 || d->m < 1))
-                        st = fail_at(r, d->degree_line, "\"degree\" must be [n, m] with 1 <= n, m "
-                                                        "<= %d", PTP_MAX_DEGREE);
-                } else {
-                    st = json_skip(r, 1);
-                }
-                if (st)
-                    break;
-                json_ws(r);
-                if (at(r, r->pos) == '}') {
-                    r->pos++;
-                    break;
-                }
-                if ((st = json_expect(r, ',', "or '}' in the object")))
-                    break;
-            }
+        st = json_object(d, r, &terms, seen);
     }
-    if (!st && !seen_terms)
+    if (!st && !seen[0])
         st = fail_at(r, line, "the JSON document has no \"terms\" array");
     if (!st) {
         json_ws(r);
@@ -1031,6 +1157,7 @@ int verify_parse(verify_doc *d, const char *text, size_t len, const char *name, 
     r.bol = 1;
     r.name = name;
     r.err = err;
+    r.doc = NULL;
     for (p = r.pos; p < len && in_set(text[p], " \t\r\n\f\v"); p++)
         ;
     if (p == len)
@@ -1041,8 +1168,22 @@ int verify_parse(verify_doc *d, const char *text, size_t len, const char *name, 
     return st;
 }
 
+const char *verify_weight_str(char *buf, const verify_weight *w)
+{
+    if (w->exact)
+        return rat_get_str(buf, &w->r);
+    snprintf(buf, RAT_STRLEN + 32, "%.9g", w->d);
+    return buf;
+}
+
 void verify_doc_clear(verify_doc *d)
 {
+    int k;
+    for (k = 0; k < VERIFY_NARRAYS; k++) {
+        free(d->arr[k].e);
+        d->arr[k].e = NULL;
+        d->arr[k].n = 0;
+    }
     free(d->terms);
     d->terms = NULL;
     d->nterms = 0;
@@ -1071,7 +1212,7 @@ int verify_doc_degree(int *n, int *m, const verify_doc *d, int n0, int m0, const
                       ptp_error *err)
 {
     int a, b, fit = verify_doc_fit(&a, &b, d), line = d->nterms ? d->terms[0].line : 1;
-    rd r = {NULL, 0, 0, 0, 0, NULL, NULL};
+    rd r = {NULL, 0, 0, 0, 0, NULL, NULL, NULL};
     r.name = name;
     r.err = err;
     if (n0 || m0 || d->degree_named == 1 ||

@@ -1,0 +1,15 @@
+#define T_DENOM 1
+#define T_THREADS 4
+static const unsigned short t_idx[4][4] = {{0, 0, 1, 2}, {1, 0, 1, 3}, {2, 0, 2, 3}, {3, 1, 2, 3}};
+static const float t_wgt[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
+static const int t_iwgt[4] = {-1, -1, 1, 1};
+static const unsigned short t_owner[4] = {0, 1, 2, 3};
+static const unsigned short t_sched_idx[8][4] = {{0, 0, 1, 2}, {1, 0, 1, 3}, {2, 0, 2, 3},
+    {3, 1, 2, 3}, {0, 0, 0, 0}, {1, 0, 0, 0}, {2, 0, 0, 0}, {9, 0, 0, 0}};
+static const float t_sched_wgt[8] = {-1.0f, -1.0f, 1.0f, 1.0f, 0, 0, 0, 0};
+static const int t_sched_iwgt[8] = {-1, -1, 1, 1, 0, 0, 0, 2};
+static const int t_foo_bar[2] = {1, 2};
+static int f(int x)
+{
+    return -x;
+}
