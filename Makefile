@@ -207,9 +207,11 @@ $(B)/replay_verify: tests/fuzz_verify.c $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(SAN) -DFUZZ_REPLAY -Igen -o $@ $< $(LIB_SRC) -lm
 
 # The vendored sources: every target with a file suffix in `ptpgen --list-targets` (all but
-# stats) for common degrees (clip space, the default schedule). `make out` regenerates out/; the
+# stats) for common degrees, quads and triangles (clip space, the default schedule). `make out` regenerates out/; the
 # tests regenerate into a temporary OUTDIR with the gcc and the clang build and require identical bytes.
 OUT_DEGREES = 1x1 2x2 3x3 4x4 1x3 3x1 2x3 3x2
+# Triangular patches (--domain triangle) of these degrees go to out/tri<d>/ptp_tri<d><suffix>.
+OUT_TRI_DEGREES = 1 2 3 4
 OUTDIR ?= out
 PTPGEN_BIN ?= ./ptpgen
 
@@ -220,6 +222,13 @@ out: ptpgen
 	    mkdir -p $(OUTDIR)/$$d || exit 1; \
 	    for te in $$files; do \
 	        $(PTPGEN_BIN) --degree $$d --target $${te%%:*} -o $(OUTDIR)/$$d/ptp_$$d$${te#*:} || exit 1; \
+	    done; \
+	done; \
+	for d in $(OUT_TRI_DEGREES); do \
+	    mkdir -p $(OUTDIR)/tri$$d || exit 1; \
+	    for te in $$files; do \
+	        $(PTPGEN_BIN) --domain triangle --degree $$d --target $${te%%:*} \
+	            -o $(OUTDIR)/tri$$d/ptp_tri$$d$${te#*:} || exit 1; \
 	    done; \
 	done
 

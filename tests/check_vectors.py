@@ -2,7 +2,8 @@
 # recomputes every value exactly (fractions, cross4 of Appendix A), its double and both classes.
 """usage: python3 tests/check_vectors.py VECTORS.json TABLE.json
 
-VECTORS.json is `ptpgen vectors --degree NxM ...` output, TABLE.json is `ptpgen --degree NxM`.
+VECTORS.json is `ptpgen vectors --degree NxM ...` output, TABLE.json is `ptpgen --degree NxM`
+(or both with `--domain triangle --degree D`).
 Exits 0 and prints a one-line summary when everything matches; 1 otherwise (the first few
 mismatches on standard error). Python's standard library only."""
 import json
@@ -40,11 +41,16 @@ def is_int(x):
 def check(vec, table, complain):
     """Checks the document; returns the summary line (complain is called on every mismatch),
     or None when its header does not match the table."""
-    n, m = table["degree"]
-    npoints, nplanes = (n + 1) * (m + 1), (3 * n - 1) * (3 * m - 1)
+    if table.get("domain") == "triangle":
+        d = table["degree"]
+        npoints, nplanes, name = (d + 1) * (d + 2) // 2, (3 * d - 2) * (3 * d - 1) // 2, "tri%d" % d
+    else:
+        n, m = table["degree"]
+        npoints, nplanes, name = (n + 1) * (m + 1), (3 * n - 1) * (3 * m - 1), "%dx%d" % (n, m)
     space = vec.get("space")
     header = [("format", vec.get("format"), "ptpgen-vectors/1"),
-              ("degree", vec.get("degree"), [n, m]),
+              ("domain", vec.get("domain"), table.get("domain")),
+              ("degree", vec.get("degree"), table["degree"]),
               ("points", vec.get("points"), npoints), ("planes", vec.get("planes"), nplanes)]
     wrong = ["%s is %r, want %r" % h for h in header if h[1] != h[2]]
     if space not in ("clip", "world"):
@@ -93,9 +99,9 @@ def check(vec, table, complain):
             classes[rule][want] += 1
         zeros += t.count(0)
         kinds[case.get("kind")] = kinds.get(case.get("kind"), 0) + 1
-    return ("check_vectors: %d cases of %dx%d %s, %d values (%d exactly zero) match; "
+    return ("check_vectors: %d cases of %s %s, %d values (%d exactly zero) match; "
             "strict front/back/silhouette %s, degenerate %s; kinds %s" % (
-                len(vec["cases"]), n, m, space, len(vec["cases"]) * nplanes, zeros,
+                len(vec["cases"]), name, space, len(vec["cases"]) * nplanes, zeros,
                 "/".join(map(str, classes["strict"])),
                 "/".join(map(str, classes["degenerate"])),
                 ", ".join("%s %d" % kv for kv in sorted(kinds.items(), key=str))))

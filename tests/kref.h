@@ -25,7 +25,7 @@ typedef struct {
                              plus 4 times the one under the degenerate rule; NULL otherwise */
 } kref_set;
 
-/* The exact table of one bidegree, for the reference. */
+/* The exact table of one patch domain (quad or triangle), for the reference. */
 typedef struct {
     tp_table t;
     int K, L;          /* points and planes per patch */
@@ -49,6 +49,7 @@ typedef struct {
     double worst;      /* largest |value - reference| / bound seen */
     char first_class[256], first_value[256]; /* the first failures, for the report */
     int certified;     /* checked as a certified kernel (kref_ref.certified) */
+    int one_sided;     /* a single plane under the degenerate rule: no patch can be silhouette */
     size_t given_up;   /* certified: silhouette where the unambiguous reference is back or front */
     /* Sets from kref_exact_sets: every patch is classified exactly (in integers), the double
      * reference above runs on every KREF_EXACT_SAMPLE-th patch only. */
@@ -68,10 +69,12 @@ typedef struct {
 #define KREF_EXACT_SAMPLE 64
 
 /* The command line every host shares:
- *   [FILE] [--kernel NAME] --degree N M --space clip|world --rule strict|degenerate
+ *   [FILE] [--kernel NAME] --degree N M [--domain quad|triangle] --space clip|world
+ *   --rule strict|degenerate
  *   [--block-threads PQ --patches-per-block Q] [--planes] [--groups-x-constant] [--certified]
  *   (--random SETS COUNT SEED | --model PATH NEYES SEED | --exact SETS COUNT SEED)...
  *   --name LABEL
+ * --domain triangle: triangular patches of degree N (M is ignored).
  * --certified: the kernel was generated with --certified: it may answer silhouette wherever the
  * reference says back or front (counted as given up), and on --exact data it must never call a
  * patch back or front unless the exact class under the strict rule is that class. */
@@ -87,6 +90,7 @@ typedef struct {
 
 typedef struct {
     const char *file, *kernel_name, *label; /* the kernel file, --kernel, --name */
+    tp_kind kind;                           /* --domain (default quad) */
     int n, m;
     kref_space space;
     kref_rule rule;
@@ -111,17 +115,20 @@ typedef int (*kref_set_fn)(void *ctx, const kref_ref *r, const kref_set *s);
  * -1 when a source's sets could not be made (after a "not ok" line). */
 int kref_each_set(const kref_ref *r, const kref_args *a, kref_set_fn fn, void *ctx, int *nsets);
 
-/* Derives the table for the reference; 0 on success (messages go to err). The kernel is taken
- * as not certified: a host sets r->certified after this call. */
-int kref_init(kref_ref *r, int n, int m, kref_space space, kref_rule rule, ptp_error *err);
-/* kref_init for the degree, space and rule of a host's command line a, with its --certified;
- * 0, or 1 after a "not ok" line. */
+/* Derives the table of the domain of the kind and degrees for the reference; 0 on success
+ * (messages go to err). The kernel is taken as not certified: a host sets r->certified after
+ * this call. */
+int kref_init(kref_ref *r, tp_kind kind, int n, int m, kref_space space, kref_rule rule,
+              ptp_error *err);
+/* kref_init for the domain, degree, space and rule of a host's command line a, with its
+ * --certified; 0, or 1 after a "not ok" line. */
 int kref_init_args(kref_ref *r, const kref_args *a);
 void kref_clear(kref_ref *r);
 
 /* nsets sets of count random patches each (deterministic in seed): near-planar patches with
  * noise of varied size, w != 1 (rational) in a third, one edge collapsed to a point in a quarter
- * (exactly zero planes, where the rules differ), so that all three classes occur.
+ * (exactly zero planes, where the rules differ), so that all three classes occur. Points sit
+ * at o + a i/n + b j/m plus noise, (i, j) the point's cell (triangles: an affine triangle).
  * Returns an array of nsets sets, or NULL on failure. */
 kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed);
 /* One set per eye for a bicubic BEZ model (the format of ../shared/models): eyes uniform on

@@ -1,10 +1,11 @@
 # Independent reference for ptpgen: derives the tangent-plane control planes of a (n,m) patch
-# in the power basis, checks the degree drop, converts to Bernstein form, prints ptpgen-planes/1.
+# or a triangular patch of degree d in the power basis, checks the degree drop, converts to
+# Bernstein form, prints ptpgen-planes/1.
 import argparse
 import json
 from fractions import Fraction
 from itertools import combinations, product
-from math import comb
+from math import comb, factorial
 
 
 def bernstein_power(d, i):
@@ -89,10 +90,98 @@ def derive(n, m):
     }
 
 
+# Triangles: polynomials in (u, v) as dicts {(a, b): coefficient of u^a v^b}, w = 1 - u - v.
+
+def poly_mul(p, q):
+    r = {}
+    for (a, b), x in p.items():
+        for (c, e), y in q.items():
+            r[a + c, b + e] = r.get((a + c, b + e), 0) + x * y
+    return {k: v for k, v in r.items() if v}
+
+
+def poly_lin(terms):
+    """sum of c * p over (c, p)."""
+    r = {}
+    for c, p in terms:
+        for k, v in p.items():
+            r[k] = r.get(k, 0) + c * v
+    return {k: v for k, v in r.items() if v}
+
+
+def poly_pow(p, e):
+    r = {(0, 0): 1}
+    for _ in range(e):
+        r = poly_mul(r, p)
+    return r
+
+
+def poly_diff(p, var):
+    return {(a - (var == 0), b - (var == 1)): v * (a if var == 0 else b)
+            for (a, b), v in p.items() if (a if var == 0 else b) > 0}
+
+
+def tri_cells(d):
+    """(i, j) in descending lexicographic order: the point (and plane) numbering."""
+    return [(i, j) for i in range(d, -1, -1) for j in range(d - i, -1, -1)]
+
+
+def tri_to_bernstein(p, D):
+    """c_IJ with p = sum c_IJ D!/(I! J! K!) u^I v^J w^K, for total degree of p <= D:
+    u^a v^b = u^a v^b (u + v + w)^(D-a-b) gives c_IJ += p_ab (D-a-b)! I! J! / ((I-a)! (J-b)! D!)."""
+    f = factorial
+    c = {}
+    for (a, b), x in p.items():
+        for I in range(a, D + 1):
+            for J in range(b, D - I + 1):
+                c[I, J] = c.get((I, J), 0) + Fraction(x * f(D - a - b) * f(I) * f(J),
+                                                      f(I - a) * f(J - b) * f(D))
+    return c
+
+
+def derive_tri(d):
+    D = 3 * d - 3                          # claimed degree of T
+    w = {(0, 0): 1, (1, 0): -1, (0, 1): -1}
+    cells = tri_cells(d)
+    phi = [poly_mul({(i, j): factorial(d) // (factorial(i) * factorial(j) * factorial(d - i - j))},
+                    poly_pow(w, d - i - j)) for i, j in cells]
+    rows = [phi, [poly_diff(p, 0) for p in phi], [poly_diff(p, 1) for p in phi]]
+    planes = {c: P for P, c in enumerate(tri_cells(D))}
+    terms = []
+    for j, k, l in combinations(range(len(cells)), 3):
+        # The weight of cross4(b_j, b_k, b_l) in cross4(B, Bu, Bv) is the 3x3 determinant of
+        # rows (phi, phi_u, phi_v) at columns j, k, l.
+        col = [[r[x] for r in rows] for x in (j, k, l)]
+        det = poly_lin([(s, poly_mul(poly_mul(col[0][a], col[1][b]), col[2][c]))
+                        for a, b, c, s in ((0, 1, 2, 1), (1, 2, 0, 1), (2, 0, 1, 1),
+                                           (2, 1, 0, -1), (1, 0, 2, -1), (0, 2, 1, -1))])
+        if any(a + b > D for a, b in det):
+            raise ArithmeticError(f"degree drop fails for ({j},{k},{l})")
+        for (I, J), x in tri_to_bernstein(det, D).items():
+            if x:
+                terms.append((planes[I, J], j, k, l, x))
+    terms.sort()
+    return {
+        "format": "ptpgen-planes/1",
+        "domain": "triangle",
+        "degree": d,
+        "plane_degree": D,
+        "points": len(cells),
+        "planes": len(planes),
+        "terms": [[P, j, k, l, str(x)] for P, j, k, l, x in terms],
+    }
+
+
 def main():
     ap = argparse.ArgumentParser(description="Reference derivation of ptpgen-planes/1 JSON.")
-    ap.add_argument("degree", nargs="+", help="N M, or NxM")
+    ap.add_argument("--triangle", action="store_true", help="a triangular patch of degree N")
+    ap.add_argument("degree", nargs="+", help="N M, or NxM; N with --triangle")
     args = ap.parse_args()
+    if args.triangle:
+        if len(args.degree) != 1 or not args.degree[0].isdigit() or int(args.degree[0]) < 1:
+            ap.error("--triangle takes one degree N >= 1")
+        print(json.dumps(derive_tri(int(args.degree[0]))))
+        return
     parts = args.degree[0].lower().split("x") if len(args.degree) == 1 else args.degree
     if len(parts) != 2:
         ap.error("expected N M or NxM")

@@ -111,7 +111,7 @@ static int check_ptp(const dump *dm, int certified, const char *label)
     int ok;
     memset(&err, 0, sizeof err);
     memset(&res, 0, sizeof res);
-    if (!cls || kref_init(&r, 3, 3, KREF_CLIP, KREF_STRICT, &err))
+    if (!cls || kref_init(&r, TP_QUAD, 3, 3, KREF_CLIP, KREF_STRICT, &err))
         return check(0, label, "kref_init: %s", err.msg);
     r.certified = certified;
     memset(&s, 0, sizeof s);

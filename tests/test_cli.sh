@@ -111,11 +111,18 @@ cat >"$tmp/check.py" <<'PY'
 import json, sys
 from fractions import Fraction
 doc = json.load(open(sys.argv[1]))
-n, m = doc["degree"]
 assert doc["format"] == "ptpgen-planes/1", doc["format"]
-assert doc["plane_degree"] == [3 * n - 2, 3 * m - 2]
-assert doc["points"] == (n + 1) * (m + 1)
-assert doc["planes"] == (3 * n - 1) * (3 * m - 1)
+if doc.get("domain") == "triangle":
+    d = doc["degree"]
+    assert doc["plane_degree"] == 3 * d - 3
+    assert doc["points"] == (d + 1) * (d + 2) // 2
+    assert doc["planes"] == (3 * d - 2) * (3 * d - 1) // 2
+else:
+    n, m = doc["degree"]
+    assert "domain" not in doc
+    assert doc["plane_degree"] == [3 * n - 2, 3 * m - 2]
+    assert doc["points"] == (n + 1) * (m + 1)
+    assert doc["planes"] == (3 * n - 1) * (3 * m - 1)
 keys = []
 for t in doc["terms"]:
     p, j, k, l, w = t
@@ -142,6 +149,13 @@ for d in 1x1 2x2 3x3 4x4 1x3 3x1 2x3 3x2 1x6 5x2; do
         python3 "$tmp/check.py" "$tmp/$d.json" "$tmp/ref.json" >"$tmp/err" 2>&1 &&
         ok "json $d equals the independent power-basis derivation (tests/ref_derive.py)" ||
         notok "json $d equals the independent derivation" "$(tail -1 "$tmp/err")"
+done
+for d in 1 2 3 4; do
+    "$P" --domain triangle --degree $d >"$tmp/tri$d.json" &&
+        python3 tests/ref_derive.py --triangle $d >"$tmp/ref.json" &&
+        python3 "$tmp/check.py" "$tmp/tri$d.json" "$tmp/ref.json" >"$tmp/err" 2>&1 &&
+        ok "json triangle $d: well-formed and equal to the independent power-basis derivation (tests/ref_derive.py --triangle)" ||
+        notok "json triangle $d equals the independent derivation" "$(tail -1 "$tmp/err")"
 done
 
 # The table header compiles cleanly and holds exactly the json's weights.
@@ -174,12 +188,15 @@ for t, r in zip(doc["terms"], rows):
     nearest = struct.unpack("f", struct.pack("f", float(w)))[0]
     assert float.fromhex(r[5]) == nearest, ("float weight", t, r)
 PY
-for d in 1x1 2x2 3x3 4x4 2x3 3x1; do
-    n=${d%x*}; m=${d#*x}
-    "$P" --degree $d --target table -o "$tmp/t.h" && "$P" --degree $d -o "$tmp/t.json" || notok "table $d" "ptpgen failed"
+for d in 1x1 2x2 3x3 4x4 2x3 3x1 tri1 tri2 tri3 tri4; do
+    case $d in
+    tri*) args="--domain triangle --degree ${d#tri}" lo=ptp_${d}_ ;;
+    *) args="--degree $d" lo=ptp_${d}_ ;;
+    esac
+    "$P" $args --target table -o "$tmp/t.h" && "$P" $args -o "$tmp/t.json" || notok "table $d" "ptpgen failed"
     for cc in gcc clang; do
         command -v $cc >/dev/null || continue
-        if $cc -std=c99 -Wall -Wextra -pedantic -Werror -include "$tmp/t.h" -DUP=PTP_${n}X${m}_ -DLO=ptp_${n}x${m}_table_ \
+        if $cc -std=c99 -Wall -Wextra -pedantic -Werror -include "$tmp/t.h" -DUP=$(echo $lo | tr a-z A-Z) -DLO=${lo}table_ \
             "$tmp/dump.c" -o "$tmp/dump" 2>"$tmp/err" && "$tmp/dump" >"$tmp/dump.txt" &&
             python3 "$tmp/cmp_table.py" "$tmp/t.json" "$tmp/dump.txt" 2>"$tmp/err"; then
             ok "table $d compiles with $cc -std=c99 -pedantic -Werror; idx, exact integer and nearest-float weights match"
@@ -465,7 +482,7 @@ expect_fail "--count outside vectors" 2 "option --count does not apply to code g
 
 # verify accepts every vendored table and json, and names a wrong one (exit 1).
 bad=""
-for f in out/*/ptp_*_table.h out/*/ptp_*.json; do
+for f in out/*x*/ptp_*_table.h out/*x*/ptp_*.json; do
     d=$(basename "$(dirname "$f")")
     "$P" verify "$f" --degree "$d" >"$tmp/out" 2>&1 || bad="$bad $f"
 done
@@ -475,6 +492,53 @@ sed '0,/-9.0f/s//-9.5f/' out/3x3/ptp_3x3_table.h >"$tmp/wrong.h"
 rc=$?
 [ $rc -eq 1 ] && grep -q "wrong.h:[0-9]*:.*weight" "$tmp/out" &&
     ok "verify names a wrong weight with its line, exit 1" || notok "verify of a wrong weight" "exit $rc: $(head -2 "$tmp/out")"
+
+# --domain triangle: triangular patches of one degree; the json names the domain.
+"$P" --domain triangle --degree 3 >"$tmp/t3.json" && "$P" --degree 3 --domain=triangle >"$tmp/t3b.json" &&
+    cmp -s "$tmp/t3.json" "$tmp/t3b.json" && grep -q '"command": "ptpgen --domain triangle --degree 3 --target json"' "$tmp/t3.json" &&
+    grep -q '^  "domain": "triangle",$' "$tmp/t3.json" && grep -q '^  "degree": 3,$' "$tmp/t3.json" &&
+    grep -q '^  "plane_degree": 6,$' "$tmp/t3.json" && grep -q '^  "points": 10,$' "$tmp/t3.json" &&
+    grep -q '^  "planes": 28,$' "$tmp/t3.json" &&
+    ok "--domain triangle --degree 3: json with domain, degree 3, plane degree 6, 10 points, 28 planes (either option first)" ||
+    notok "--domain triangle json" "$(head -8 "$tmp/t3.json")"
+"$P" --domain triangle --degree 1 | tr -d ' \n' | grep -q '"terms":\[\[0,0,1,2,"1"\]\]' &&
+    ok "--domain triangle --degree 1: one term, t_0 = cross4(b0, b1, b2)" || notok "triangle degree 1" "other terms"
+"$P" --degree 3 >"$tmp/q.json" && "$P" --domain quad --degree 3 >"$tmp/q2.json" && cmp -s "$tmp/q.json" "$tmp/q2.json" &&
+    ! grep -q '"domain"' "$tmp/q.json" && ok "--domain quad is the default, byte for byte, and its json names no domain" ||
+    notok "--domain quad" "differs"
+"$P" --domain triangle --degree 3 --target table >"$tmp/t3.h" && grep -q 'static const unsigned short ptp_tri3_table_idx\[PTP_TRI3_TERMS\]' "$tmp/t3.h" &&
+    grep -q 'Control point k = (3-i)(4-i)/2 + 3-i-j' "$tmp/t3.h" &&
+    ok "--domain triangle --target table: prefix ptp_tri3_, the triangular numbering" || notok "triangle table" "$(head -5 "$tmp/t3.h")"
+"$P" --domain triangle --degree 3 --target stats >"$tmp/s" &&
+    [ "$(sed -n '/^terms per plane/,/^total/p' "$tmp/s" | sed '1d;$d' | awk '{ printf "%d", NF }')" = 1234567 ] &&
+    grep -q '^degree 3: 10 points, planes of degree 6: 28 planes, 105 terms$' "$tmp/s" &&
+    ok "--domain triangle --target stats: 105 terms, the counts printed as a triangle" || notok "triangle stats" "$(head -9 "$tmp/s")"
+bad=""
+while read -r t suffix opts desc; do
+    "$P" --domain triangle --degree 2 --target $t >"$tmp/o" 2>"$tmp/err" && [ -s "$tmp/o" ] || bad="$bad $t"
+    case ",$opts," in *,space,*)
+        head -1 "$tmp/o" | grep -q "^/\* ptp_tri2$suffix: back-patch culling of degree 2 Bezier patches" &&
+            grep -q 'k = (2-i)(3-i)/2 + 2-i-j with b_ijk weighted by u^i v^j w^k' "$tmp/o" || bad="$bad $t(banner)" ;;
+    esac
+done <"$tmp/targets"
+[ -z "$bad" ] && ok "--domain triangle: every target generates; the C and kernel banners name ptp_tri2<suffix> and the triangular numbering" ||
+    notok "--domain triangle targets" "failed:$bad"
+expect_fail "--domain triangle --degree 3x3 is a usage error" 2 "--degree for triangles takes one degree" --domain triangle --degree 3x3
+expect_fail "--domain triangle --degree 29 names the limit" 2 "largest supported degree is 28" --domain triangle --degree 29
+expect_fail "--domain hexagon is a usage error" 2 "unknown domain 'hexagon' \(expected quad or triangle\)" --domain hexagon --degree 3
+expect_fail "--domain triangle without --degree" 2 "missing --degree N \(" --domain triangle
+expect_fail "--domain triangle --refine is refused" 2 "--refine does not apply to --domain triangle" --domain triangle --degree 2 --target c --refine 2
+expect_fail "verify --domain triangle is refused" 2 "verify does not support --domain triangle" verify "$tmp/t3.json" --domain triangle
+expect_fail "verify of a triangle json is refused" 2 "t3.json:5: \"domain\": \"triangle\": verify checks quad tables only" verify "$tmp/t3.json"
+for c in "1 clip" "2 world" "3 clip" "3 world"; do
+    set -- $c
+    "$P" vectors --domain triangle --degree $1 --count 200 --seed 5 --space $2 >"$tmp/v.json" &&
+        "$P" --domain triangle --degree $1 >"$tmp/t.json" &&
+        grep -q "^  \"domain\": \"triangle\",\$" "$tmp/v.json" &&
+        python3 tests/check_vectors.py "$tmp/v.json" "$tmp/t.json" >"$tmp/out" 2>&1 &&
+        ok "vectors triangle $1 $2: values and classes recomputed exactly by tests/check_vectors.py ($(tail -1 "$tmp/out"))" ||
+        notok "vectors triangle $1 $2 independent check" "$(tail -2 "$tmp/out")"
+done
 
 # vectors: the same seed gives the same bytes, another seed other bytes; an independent check.
 "$P" vectors --degree 2x3 --count 50 --seed 7 >"$tmp/v1.json" && "$P" vectors --degree 2x3 --count 50 --seed 7 -o "$tmp/v2.json" &&

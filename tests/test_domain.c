@@ -252,6 +252,88 @@ static void test_derive_counts(void)
           "%s", why);
 }
 
+/* The triangle grid of degree a against the documented order, written out: (i, j) in
+ * descending lexicographic order; both maps agree, rows start where i changes. */
+static int tri_grid_ok(char *why, size_t size, const tp_domain *d, int plane)
+{
+    int a = plane ? d->pu : d->n, count = plane ? d->nplanes : d->npoints, i, j, x, y, k = 0;
+    if (count != (a + 1) * (a + 2) / 2 || count != tp_grid_count(TP_TRI, a, a)) {
+        snprintf(why, size, "count %d", count);
+        return 0;
+    }
+    for (i = a; i >= 0; i--)
+        for (j = a - i; j >= 0; j--, k++) {
+            int got = plane ? tp_domain_plane(d, i, j) : tp_domain_point(d, i, j);
+            if (plane)
+                tp_domain_plane_ij(&x, &y, d, k);
+            else
+                tp_domain_point_ij(&x, &y, d, k);
+            if (got != k || x != i || y != j || !tp_grid_has(TP_TRI, a, a, i, j) ||
+                (plane && tp_domain_plane_row_start(d, k) != (j == a - i))) {
+                snprintf(why, size, "(%d, %d) -> %d, %d -> (%d, %d)", i, j, got, k, x, y);
+                return 0;
+            }
+        }
+    if (tp_grid_has(TP_TRI, a, a, a, 1) || tp_grid_has(TP_TRI, a, a, -1, 0)) {
+        snprintf(why, size, "cells outside the triangle");
+        return 0;
+    }
+    return 1;
+}
+
+/* Every triangle degree: counts, plane degree 3d-3, both maps in the documented order. */
+static void test_tri_maps(void)
+{
+    char why[160] = "", w[120];
+    int n, bad = 0;
+    for (n = 1; n <= PTP_MAX_TRI_DEGREE; n++) {
+        tp_domain d;
+        ptp_error err;
+        int st = tp_domain_init(&d, TP_TRI, n, 7, &err);
+        if (st)
+            snprintf(w, sizeof w, "init: %.100s", err.msg);
+        else if (!(d.kind == TP_TRI && d.n == n && d.m == n && d.pu == 3 * n - 3 &&
+                   d.pv == 3 * n - 3))
+            snprintf(w, sizeof w, "degrees %d %d %d %d", d.n, d.m, d.pu, d.pv);
+        if ((st || d.pu != 3 * n - 3 || !tri_grid_ok(w, sizeof w, &d, 0) ||
+             !tri_grid_ok(w, sizeof w, &d, 1)) && !bad++)
+            snprintf(why, sizeof why, "degree %d: %s", n, w);
+    }
+    check(!bad, "every triangle degree: (d+1)(d+2)/2 points, (3d-2)(3d-1)/2 planes, both maps "
+                "inverse bijections in descending (i, j) order", "%s", why);
+}
+
+/* Triangle names, prefix, parsing and its rejections. */
+static void test_tri_names(void)
+{
+    static const char *const bad[] = {"3x3", "3X2", "0", "29", "", "3 "};
+    tp_domain d;
+    tp_domain_text x;
+    ptp_error err;
+    char buf[32];
+    size_t i;
+    int st = tp_domain_parse(&d, TP_TRI, "3", &err);
+    tp_domain_text_get(&x, &d);
+    check(!st && d.kind == TP_TRI && d.n == 3 && d.npoints == 10 && d.nplanes == 28 &&
+              !strcmp(tp_domain_prefix(buf, sizeof buf, &d), "ptp_tri3_") &&
+              !strcmp(x.name, "degree 3") && !strcmp(x.plane_name, "degree 6") &&
+              !strcmp(x.degree, "3") && !strcmp(x.degrees, "3") && !strcmp(x.plane_degrees, "6") &&
+              !strcmp(x.point_rule, "k = (3-i)(4-i)/2 + 3-i-j") &&
+              !strcmp(x.plane_rule, "P = (6-I)(7-I)/2 + 6-I-J") &&
+              !strcmp(tp_kind_name(TP_TRI), "triangle") && !strcmp(tp_kind_name(TP_QUAD), "quad"),
+          "triangle degree 3: parse, counts, names, rules, prefix ptp_tri3_", "%s / %s / %s / %s",
+          buf, x.name, x.point_rule, x.plane_rule);
+    for (i = 0; i < sizeof bad / sizeof *bad; i++) {
+        char name[80], quoted[32];
+        st = tp_domain_parse(&d, TP_TRI, bad[i], &err);
+        snprintf(name, sizeof name, "triangle --degree '%s' is refused", bad[i]);
+        snprintf(quoted, sizeof quoted, "--degree '%s': ", bad[i]);
+        check(st == PTP_EUSAGE && !strncmp(err.msg, quoted, strlen(quoted)) &&
+                  (i > 1 || strstr(err.msg, "--degree for triangles takes one degree")),
+              name, "status %d: %s", st, err.msg);
+    }
+}
+
 int main(void)
 {
     test_maps();
@@ -261,5 +343,7 @@ int main(void)
     test_random_parse();
     test_init_limits();
     test_derive_counts();
+    test_tri_maps();
+    test_tri_names();
     return check_exit();
 }

@@ -39,11 +39,28 @@ ls "$models"/*.bez >/dev/null 2>&1 || missing "$models" "kernels on the shared m
 # and every target that takes --space (the C header and the kernels).
 files="json:.json $("$P" --list-targets | awk '$3 ~ /(^|,)space(,|$)/ { printf "%s:%s ", $1, $2 }')"
 
+# degree_args DEGREE: ptpgen's options for a degree of the matrix: NxM, or triN for the
+# triangular patch of degree N.
+degree_args() {
+    case $1 in
+    tri*) echo "--domain triangle --degree ${1#tri}" ;;
+    *) echo "--degree $1" ;;
+    esac
+}
+
+# host_degree DEGREE: the hosts' options for it (tests/kref.h).
+host_degree() {
+    case $1 in
+    tri*) echo "--degree ${1#tri} ${1#tri} --domain triangle" ;;
+    *) echo "--degree ${1%x*} ${1#*x}" ;;
+    esac
+}
+
 # args_for TARGET DEGREE SPACE RULE FLAG...: the options of a configuration that TARGET takes
 # (ptpgen --list-targets refuses the others): json, read for its schedule, gets the degree alone.
 # RULE may be "" (the default).
 args_for() {
-    local a="--degree $2" opts f
+    local a="$(degree_args $2)" opts f
     opts=",$("$P" --list-targets | awk -v t="$1" '$1 == t { print $3 }'),"
     [[ $opts == *,space,* ]] && a="$a --space $3"
     [[ -n $4 && $opts == *,rule,* ]] && a="$a --rule $4"
@@ -62,9 +79,10 @@ schedule() {
 # build_host_c CC FLAGS HEADER D: builds tests/host_c.c around the C header HEADER of bidegree D
 # (default names) with compiler CC and options FLAGS into $tmp/host_c; errors in $tmp/err.
 build_host_c() {
-    local cc=$1 flags=$2 h=$3 d=$4 n=${4%x*} m=${4#*x}
+    local cc=$1 flags=$2 h=$3 d=$4 up
+    up=$(echo "ptp_${d}_" | tr a-z A-Z)
     $cc -std=c11 $flags -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$h" \
-        -DPTP_${n}X${m}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${m}_ tests/host_c.c \
+        -D${up}IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=$up tests/host_c.c \
         "build/$cc/libptptest.a" -lm -o "$tmp/host_c" 2>"$tmp/err"
 }
 # to_spirv LANG BASE: compiles BASE.comp (LANG glsl) or BASE.hlsl (hlsl) to $tmp/k.spv and
@@ -94,10 +112,11 @@ cuda_host() {
 }
 
 # exercise DIR D SPACE RULE PLANES PQ Q LABEL: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu}
-# (bidegree D, default names) and runs each on the data of data_args against the reference.
+# (degree D as degree_args takes it, default names) and runs each on the data of data_args against the reference.
 exercise() {
-    local dir=$1 d=$2 space=$3 rule=$4 pl="" PQ=$6 Q=$7 label=$8 cc lang extra data
-    local hcfg="--degree ${2%x*} ${2#*x} --space $3 --rule $4"
+    local dir=$1 d=$2 space=$3 rule=$4 pl="" PQ=$6 Q=$7 label=$8 up cc lang extra rc data
+    local hcfg="$(host_degree $2) --space $3 --rule $4"
+    up=$(echo "ptp_${d}_" | tr a-z A-Z)
     [ "$5" = 1 ] && pl=--planes
 
     # C, with gcc and clang.
@@ -155,10 +174,11 @@ exercise() {
     fi
 }
 
-# Freshly generated kernels, with --planes: every bidegree, space and rule of the matrix.
+# Freshly generated kernels, with --planes: every degree (triangles too), space and rule of the
+# matrix.
 seed=1
 mkdir -p "$tmp/gen"
-for d in 1x1 2x2 3x3 4x4 2x3 3x1; do
+for d in 1x1 2x2 3x3 4x4 2x3 3x1 tri1 tri2 tri3; do
     for space in clip world; do
         for rule in strict degenerate; do
             seed=$((seed + 1))
@@ -172,7 +192,7 @@ for d in 1x1 2x2 3x3 4x4 2x3 3x1; do
 done
 
 # The vendored kernels in out/ (clip space, strict rule, no values), exactly like fresh ones.
-for dir in out/*x*/; do
+for dir in out/*x*/ out/tri*/; do
     d=$(basename "$dir")
     seed=$((seed + 1))
     read -r PQ Q < <(schedule "out/$d/ptp_$d.json")

@@ -42,8 +42,8 @@ int main(void)
     kref_ref world, clip;
     ptp_error err;
     int kind, e, k, c;
-    if (kref_init(&world, 3, 3, KREF_WORLD, KREF_STRICT, &err) ||
-        kref_init(&clip, 3, 3, KREF_CLIP, KREF_STRICT, &err))
+    if (kref_init(&world, TP_QUAD, 3, 3, KREF_WORLD, KREF_STRICT, &err) ||
+        kref_init(&clip, TP_QUAD, 3, 3, KREF_CLIP, KREF_STRICT, &err))
         return 1;
     for (kind = 0; kind < 4; kind++) {
         size_t compared = 0, differ = 0, w_count[3] = {0};

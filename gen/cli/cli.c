@@ -24,21 +24,25 @@ static void usage_targets(sbuf *o)
 void cli_usage(sbuf *o)
 {
     sbuf_puts(o,
-        "usage: ptpgen --degree N|NxM [--target T] [--space clip|world] [--rule strict|degenerate]\n"
-        "              [--planes] [--certified] [--refine K] [--prefix NAME]\n"
-        "              [--threads-per-patch P] [--patches-per-block Q]\n"
+        "usage: ptpgen --degree N|NxM [--domain quad|triangle] [--target T] [--space clip|world]\n"
+        "              [--rule strict|degenerate] [--planes] [--certified] [--refine K]\n"
+        "              [--prefix NAME] [--threads-per-patch P] [--patches-per-block Q]\n"
         "              [-o FILE]\n"
         "       ptpgen verify FILE [--degree NxM] [--convention u-first|v-first] [-o REPORT]\n"
-        "       ptpgen vectors --degree NxM --count K --seed S [--space clip|world]\n"
-        "              [--format json|c] [-o FILE]\n"
+        "       ptpgen vectors --degree NxM [--domain quad|triangle] --count K --seed S\n"
+        "              [--space clip|world] [--format json|c] [-o FILE]\n"
         "       ptpgen --help | help [verify|vectors] | --version | --list-targets\n"
         "\n"
         "Derives the exact control planes of the parametric tangent plane\n"
-        "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u) and\n"
-        "writes them, or a back-patch culling kernel built on them.\n"
-        "\n");
-    sbuf_printf(o, "  --degree N|NxM   patch bidegree, 1 <= N, M <= %d (N alone means NxN)\n",
-                PTP_MAX_DEGREE);
+        "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u) or of a\n"
+        "triangular Bezier patch of degree N, and writes them, or a back-patch culling kernel\n"
+        "built on them.\n"
+        "\n"
+        "  --domain D       quad (default): tensor-product patches; triangle: triangular\n"
+        "                   patches (every target; not --refine)\n");
+    sbuf_printf(o, "  --degree N|NxM   patch bidegree, 1 <= N, M <= %d (N alone means NxN);\n"
+                   "                   triangles: the degree N, 1 <= N <= %d\n",
+                PTP_MAX_DEGREE, PTP_MAX_TRI_DEGREE);
     usage_targets(o);
     sbuf_printf(o,
         "  --space S        clip (default): points in clip space, eye (0, 0, alpha, 0);\n"
@@ -50,7 +54,7 @@ void cli_usage(sbuf *o)
         "                   bound on its float rounding error (README: Certified classification)\n"
         "  --refine K       C only: split the patch's scalar Bezier function e.T by de Casteljau,\n"
         "                   up to K levels (1 to %d), while its control values have mixed signs\n"
-        "  --prefix NAME    prefix of generated names (default ptp_NxM_)\n"
+        "  --prefix NAME    prefix of generated names (default ptp_NxM_, triangles ptp_triN_)\n"
         "  --threads-per-patch P\n"
         "                   threads that share one patch, 1..%d, at most the number of\n"
         "                   planes (default 16 for 3x3; see README for other degrees)\n"
@@ -76,12 +80,6 @@ void cli_usage(sbuf *o)
         "\n"
         "Exit status: 0 success, 1 failure, 2 usage error.\n",
         CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS);
-}
-
-/* --degree: the patch domain (only tensor-product patches today), parsed by the domain. */
-static int parse_degree(cli_options *o, const char *arg, ptp_error *err)
-{
-    return tp_domain_parse(&o->dom, TP_QUAD, arg, err);
 }
 
 /* Parses a thread count: decimal digits only; values past 10^6 are kept as 10^6 + 1 so that
@@ -151,7 +149,7 @@ static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t m
 
 /* The options, in the order the mode check names them. */
 typedef enum {
-    OPT_DEGREE, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
+    OPT_DEGREE, OPT_DOMAIN, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
     OPT_PATCHES, OPT_COUNT, OPT_SEED, OPT_CERTIFIED, OPT_REFINE, OPT_CONVENTION, OPT_FORMAT,
     OPT_OUTPUT, OPT_HELP,
     OPT_VERSION, OPT_LIST, OPT_N
@@ -170,6 +168,7 @@ static const struct {
     unsigned target;   /* the TGT_ bit a target needs for it, 0 for every target */
 } opts[OPT_N] = {
     [OPT_DEGREE] = {"--degree", NULL, 1, GEN | VER | VEC, 0},
+    [OPT_DOMAIN] = {"--domain", NULL, 1, GEN | VER | VEC, 0},
     [OPT_TARGET] = {"--target", NULL, 1, GEN, 0},
     [OPT_SPACE] = {"--space", NULL, 1, GEN | VEC, TGT_SPACE},
     [OPT_RULE] = {"--rule", NULL, 1, GEN, TGT_RULE},
@@ -232,10 +231,15 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
 {
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
     static const char *const conventions[] = {"u-first", "v-first"}, *const formats[] = {"json", "c"};
+    const char *kinds[] = {tp_kind_name(TP_QUAD), tp_kind_name(TP_TRI)};
     uint64_t u = 0;
-    int st = PTP_OK;
+    int st = PTP_OK, x = 0;
     switch (k) {
-    case OPT_DEGREE: return parse_degree(o, v, err);
+    case OPT_DEGREE: o->degree = v; break;
+    case OPT_DOMAIN:
+        if (!(st = parse_choice(&x, "domain", v, kinds, 2, err)))
+            o->kind = (tp_kind)x;
+        break;
     case OPT_TARGET: return parse_target(o, v, err);
     case OPT_SPACE: return parse_choice(&o->world, "space", v, spaces, 2, err);
     case OPT_RULE: return parse_choice(&o->degenerate, "rule", v, rules, 2, err);
@@ -320,16 +324,29 @@ static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
         if (seen >> k & 1 && !(opts[k].modes >> o->mode & 1))
             return ptp_fail(err, PTP_EUSAGE, "option %s does not apply to %s", opts[k].name,
                             modes[o->mode]);
+    if (o->mode == CLI_VERIFY && o->kind != TP_QUAD)
+        return ptp_fail(err, PTP_EUSAGE, "verify does not support --domain %s yet",
+                        tp_kind_name(o->kind));
     if (o->mode == CLI_VERIFY)
         return o->input ? PTP_OK
                         : ptp_fail(err, PTP_EUSAGE,
                                    "verify: missing the FILE to check (see ptpgen --help)");
     if (!o->dom.n)
-        return ptp_fail(err, PTP_EUSAGE, "missing --degree N or --degree NxM (see ptpgen --help)");
+        return ptp_fail(err, PTP_EUSAGE, "missing --degree N%s (see ptpgen --help)",
+                        o->kind == TP_QUAD ? " or --degree NxM" : "");
     if (o->mode == CLI_VECTORS &&
         (!(seen >> OPT_COUNT & 1) || !(seen >> OPT_SEED & 1) || o->count < 1))
         return ptp_fail(err, PTP_EUSAGE, "vectors needs --count K (1 to %d) and --seed S",
                         CLI_MAX_COUNT);
+    return PTP_OK;
+}
+
+/* Checks the options against o's patch kind: --refine subdivides quads only. */
+static int check_kind(const cli_options *o, ptp_error *err)
+{
+    if (o->kind != TP_QUAD && o->refine)
+        return ptp_fail(err, PTP_EUSAGE, "--refine does not apply to --domain %s (it subdivides "
+                                         "quads)", tp_kind_name(o->kind));
     return PTP_OK;
 }
 
@@ -352,7 +369,7 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
     if (o->refine && o->certified)
         return ptp_fail(err, PTP_EUSAGE, "--refine and --certified do not go together: the "
                                          "subdivision is not certified");
-    return PTP_OK;
+    return check_kind(o, err);
 }
 
 /* Writes o->command, the normalized command line: every option that was given, in one order. */
@@ -363,12 +380,14 @@ static void put_command(cli_options *o)
     int n;
     tp_domain_format(degree, sizeof degree, &o->dom);
     if (o->mode == CLI_VECTORS) {
-        snprintf(c, size, "ptpgen vectors --degree %s --count %ld --seed %llu --space %s%s",
-                 degree, o->count, (unsigned long long)o->seed, o->world ? "world" : "clip",
+        snprintf(c, size, "ptpgen vectors%s%s --degree %s --count %ld --seed %llu --space %s%s",
+                 o->kind ? " --domain " : "", o->kind ? tp_kind_name(o->kind) : "", degree,
+                 o->count, (unsigned long long)o->seed, o->world ? "world" : "clip",
                  o->format_c ? " --format c" : "");
         return;
     }
-    n = snprintf(c, size, "ptpgen --degree %s --target %s", degree, o->target->name);
+    n = snprintf(c, size, "ptpgen%s%s --degree %s --target %s", o->kind ? " --domain " : "",
+                 o->kind ? tp_kind_name(o->kind) : "", degree, o->target->name);
     if (o->world)
         n += snprintf(c + n, size - (size_t)n, " --space world");
     if (o->degenerate)
@@ -398,6 +417,8 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         return parse_help(o, argc, argv, err);
     st = parse_args(o, &seen, parse_mode(o, argc, argv), argc, argv, err);
     if (st || o->help || o->version || o->list)
+        return st;
+    if (o->degree && (st = tp_domain_parse(&o->dom, o->kind, o->degree, err)))
         return st;
     if ((st = check_mode(o, seen, err)) || o->mode == CLI_VERIFY)
         return st;

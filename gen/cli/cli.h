@@ -22,6 +22,8 @@ typedef struct {
     const char *input;    /* verify: the table to check ("-": standard input) */
     long count;           /* vectors: --count */
     uint64_t seed;        /* vectors: --seed */
+    tp_kind kind;         /* --domain (default quad) */
+    const char *degree;   /* the --degree argument, read by the domain once every option is in */
     tp_domain dom;        /* the patch domain of --degree; dom.n is 0 until it is given */
     const tgt_target *target; /* an entry of tgt_targets (default: the first) */
     const char *output;   /* -o path, or NULL for stdout */
@@ -36,7 +38,7 @@ typedef struct {
     int help, version;    /* --help or --version was given */
     int list;             /* --list-targets was given */
     char command[256];    /* the normalized command line, for banners */
-    char prefix[64];      /* generated-name prefix: --prefix, or "ptp_<n>x<m>_" */
+    char prefix[64];      /* generated-name prefix: --prefix, or "ptp_<n>x<m>_" ("ptp_tri<d>_") */
 } cli_options;
 
 /* Parses argv[1..argc-1] into o. Returns PTP_OK or PTP_EUSAGE with the message in err. */

@@ -7,13 +7,16 @@
 /* The numbering of one kind over a grid of degrees (a, b): points over (n, m), planes over
  * (pu, pv). */
 typedef struct {
+    const char *name;    /* as --domain reads it */
     int ndeg;            /* degrees named by --degree: 2 is NxM */
+    int max;             /* the largest supported degree */
     const char *tag;     /* between "ptp_" and the degree in the default prefix */
     const char *word, *point_axes, *plane_axes, *plane_rows, *conventions;
     void (*plane_degrees)(int *pu, int *pv, int n, int m);
     int (*count)(int a, int b);
     int (*index)(int a, int b, int i, int j);
     void (*coords)(int *i, int *j, int a, int b, int k);
+    int (*has)(int a, int b, int i, int j);
     int (*row_start)(int a, int b, int k);
     /* the index rule, e.g. "k = i*4 + j", with the letters k, i, j given */
     void (*rule)(char *buf, size_t size, const char *kij, int a, int b);
@@ -43,6 +46,11 @@ static void quad_coords(int *i, int *j, int a, int b, int k)
     *j = k % (b + 1);
 }
 
+static int quad_has(int a, int b, int i, int j)
+{
+    return i >= 0 && i <= a && j >= 0 && j <= b;
+}
+
 static int quad_row_start(int a, int b, int k)
 {
     (void)a;
@@ -55,10 +63,76 @@ static void quad_rule(char *buf, size_t size, const char *kij, int a, int b)
     snprintf(buf, size, "%c = %c*%d + %c", kij[0], kij[1], b + 1, kij[2]);
 }
 
+/* Triangles: one degree a; cell (i, j) stands for (i, j, a-i-j), numbered in descending
+ * lexicographic order of (i, j): row r = a - i holds r + 1 cells, j = r down to 0. */
+static void tri_plane_degrees(int *pu, int *pv, int n, int m)
+{
+    (void)m;
+    *pu = *pv = 3 * n - 3;
+}
+
+static int tri_count(int a, int b)
+{
+    (void)b;
+    return (a + 1) * (a + 2) / 2;
+}
+
+static int tri_index(int a, int b, int i, int j)
+{
+    (void)b;
+    return (a - i) * (a - i + 1) / 2 + (a - i - j);
+}
+
+/* The row r = a - i of cell k, and k's place in the row (0 at j = r). */
+static int tri_row(int *at, int k)
+{
+    int r = 0;
+    while ((r + 1) * (r + 2) / 2 <= k)
+        r++;
+    *at = k - r * (r + 1) / 2;
+    return r;
+}
+
+static void tri_coords(int *i, int *j, int a, int b, int k)
+{
+    int at, r = tri_row(&at, k);
+    (void)b;
+    *i = a - r;
+    *j = r - at;
+}
+
+static int tri_has(int a, int b, int i, int j)
+{
+    (void)b;
+    return i >= 0 && j >= 0 && i + j <= a;
+}
+
+static int tri_row_start(int a, int b, int k)
+{
+    int at;
+    (void)a;
+    (void)b;
+    tri_row(&at, k);
+    return at == 0;
+}
+
+static void tri_rule(char *buf, size_t size, const char *kij, int a, int b)
+{
+    (void)b;
+    snprintf(buf, size, "%c = (%d-%c)(%d-%c)/2 + %d-%c-%c", kij[0], a, kij[1], a + 1, kij[1], a,
+             kij[1], kij[2]);
+}
+
 static const kind_ops kinds[] = {
-    {2, "", "bidegree", "i along u", "I along u", "row I along u, column J along v",
+    {"quad", 2, PTP_MAX_DEGREE, "", "bidegree", "i along u", "I along u",
+     "row I along u, column J along v",
      "point k = i*(m+1)+j and plane P = I*(3m-1)+J, with i and I along u", quad_plane_degrees,
-     quad_count, quad_index, quad_coords, quad_row_start, quad_rule},
+     quad_count, quad_index, quad_coords, quad_has, quad_row_start, quad_rule},
+    {"triangle", 1, PTP_MAX_TRI_DEGREE, "tri", "degree", "b_ijk weighted by u^i v^j w^k",
+     "t_IJK weighted by u^I v^J w^K", "row I (power of u), J (power of v) descending",
+     "point b_ijk (i+j+k = d) numbered (d-i)(d-i+1)/2+k and plane t_IJK (I+J+K = 3d-3) "
+     "numbered (3d-3-I)(3d-2-I)/2+K, descending (i, j), weights u^i v^j w^k with w = 1-u-v",
+     tri_plane_degrees, tri_count, tri_index, tri_coords, tri_has, tri_row_start, tri_rule},
 };
 
 /* Writes the degrees (a, b) of a kind separated by sep ("x" the way --degree reads them). */
@@ -78,8 +152,8 @@ int tp_domain_init(tp_domain *d, tp_kind kind, int n, int m, ptp_error *err)
     put_degrees(deg, sizeof deg, k, n, m, "x");
     if (n < 1 || m < 1)
         return ptp_fail(err, PTP_EUSAGE, "%s %s: degrees must be at least 1", k->word, deg);
-    put_degrees(lim, sizeof lim, k, PTP_MAX_DEGREE, PTP_MAX_DEGREE, "x");
-    if (n > PTP_MAX_DEGREE || m > PTP_MAX_DEGREE)
+    put_degrees(lim, sizeof lim, k, k->max, k->max, "x");
+    if (n > k->max || m > k->max)
         return ptp_fail(err, PTP_ELIMIT,
                         "%s %s is beyond the supported limit %s (exact weights in 128-bit "
                         "rationals)", k->word, deg, lim);
@@ -92,33 +166,38 @@ int tp_domain_init(tp_domain *d, tp_kind kind, int n, int m, ptp_error *err)
     return PTP_OK;
 }
 
-/* PTP_EUSAGE: arg is not a degree of the accepted form. */
-static int bad_form(const char *arg, ptp_error *err)
+/* PTP_EUSAGE: arg is not a degree of the accepted form for kind k. */
+static int bad_form(const char *arg, const kind_ops *k, ptp_error *err)
 {
+    if (k->ndeg == 1)
+        return ptp_fail(err, PTP_EUSAGE,
+                        "--degree '%s': expected N, a whole number 1 to %d (--degree for %ss "
+                        "takes one degree)", arg, k->max, k->name);
     return ptp_fail(err, PTP_EUSAGE,
                     "--degree '%s': expected N or NxM with whole numbers 1 to %d (e.g. 3 or 2x3)", arg,
-                    PTP_MAX_DEGREE);
+                    k->max);
 }
 
-/* Reads one degree at s: decimal digits only, 1..PTP_MAX_DEGREE; *end is where it stopped. */
-static int parse_one(int *v, const char *s, const char **end, const char *arg, ptp_error *err)
+/* Reads one degree at s: decimal digits only, 1..k->max; *end is where it stopped. */
+static int parse_one(int *v, const char *s, const char **end, const char *arg, const kind_ops *k,
+                     ptp_error *err)
 {
     long x = 0;
     const char *p = s;
     int big = 0;
     for (; *p >= '0' && *p <= '9'; p++) {
         x = x * 10 + (*p - '0');
-        if (x > PTP_MAX_DEGREE) {
+        if (x > k->max) {
             big = 1;
-            x = PTP_MAX_DEGREE + 1;
+            x = k->max + 1;
         }
     }
     if (p == s)
-        return bad_form(arg, err);
+        return bad_form(arg, k, err);
     *end = p;
     if (big)
         return ptp_fail(err, PTP_EUSAGE, "--degree '%s': the largest supported degree is %d", arg,
-                        PTP_MAX_DEGREE);
+                        k->max);
     if (x == 0)
         return ptp_fail(err, PTP_EUSAGE, "--degree '%s': degrees must be at least 1", arg);
     *v = (int)x;
@@ -127,16 +206,16 @@ static int parse_one(int *v, const char *s, const char **end, const char *arg, p
 
 int tp_domain_parse(tp_domain *d, tp_kind kind, const char *arg, ptp_error *err)
 {
+    const kind_ops *k = &kinds[kind];
     const char *p;
     int n, m, st;
-    if ((st = parse_one(&n, arg, &p, arg, err)))
+    if ((st = parse_one(&n, arg, &p, arg, k, err)))
         return st;
     m = n;
-    if (kinds[kind].ndeg > 1 && (*p == 'x' || *p == 'X') &&
-        (st = parse_one(&m, p + 1, &p, arg, err)))
+    if (k->ndeg > 1 && (*p == 'x' || *p == 'X') && (st = parse_one(&m, p + 1, &p, arg, k, err)))
         return st;
     if (*p != '\0')
-        return bad_form(arg, err);
+        return bad_form(arg, k, err);
     return tp_domain_init(d, kind, n, m, err);
 }
 
@@ -147,6 +226,31 @@ void tp_domain_transpose(tp_domain *t, const tp_domain *d)
     t->m = d->n;
     t->pu = d->pv;
     t->pv = d->pu;
+}
+
+int tp_grid_count(tp_kind kind, int a, int b)
+{
+    return kinds[kind].count(a, b);
+}
+
+int tp_grid_index(tp_kind kind, int a, int b, int i, int j)
+{
+    return kinds[kind].index(a, b, i, j);
+}
+
+void tp_grid_coords(int *i, int *j, tp_kind kind, int a, int b, int k)
+{
+    kinds[kind].coords(i, j, a, b, k);
+}
+
+int tp_grid_has(tp_kind kind, int a, int b, int i, int j)
+{
+    return kinds[kind].has(a, b, i, j);
+}
+
+const char *tp_kind_name(tp_kind kind)
+{
+    return kinds[kind].name;
 }
 
 int tp_domain_point(const tp_domain *d, int i, int j)
@@ -174,6 +278,18 @@ int tp_domain_plane_row_start(const tp_domain *d, int P)
     return kinds[d->kind].row_start(d->pu, d->pv, P);
 }
 
+int tp_domain_edges(const tp_domain *d)
+{
+    return d->kind == TP_TRI ? 3 : 4;
+}
+
+int tp_domain_on_edge(const tp_domain *d, int e, int i, int j)
+{
+    if (d->kind == TP_TRI)
+        return e == 0 ? i == 0 : e == 1 ? j == 0 : i + j == d->n;
+    return e == 0 ? i == 0 : e == 1 ? i == d->n : e == 2 ? j == 0 : j == d->m;
+}
+
 char *tp_domain_format(char *buf, size_t size, const tp_domain *d)
 {
     put_degrees(buf, size, &kinds[d->kind], d->n, d->m, "x");
@@ -199,6 +315,13 @@ void tp_domain_text_get(tp_domain_text *x, const tp_domain *d)
     snprintf(x->plane_name, sizeof x->plane_name, "%s %s", k->word, x->plane_degree);
     k->rule(x->point_rule, sizeof x->point_rule, "kij", d->n, d->m);
     k->rule(x->plane_rule, sizeof x->plane_rule, "PIJ", d->pu, d->pv);
+    if (d->kind == TP_QUAD)
+        snprintf(x->json, sizeof x->json, "\"degree\": [%s],\n  \"plane_degree\": [%s]",
+                 x->degrees, x->plane_degrees);
+    else
+        snprintf(x->json, sizeof x->json,
+                 "\"domain\": \"%s\",\n  \"degree\": %s,\n  \"plane_degree\": %s", k->name,
+                 x->degrees, x->plane_degrees);
     x->point_axes = k->point_axes;
     x->plane_axes = k->plane_axes;
     x->plane_rows = k->plane_rows;

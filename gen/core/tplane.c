@@ -1,5 +1,5 @@
-/* tplane.c: derives the control planes of T = cross4(B, B_u, B_v) exactly.
- * B ^ B_u ^ B_v has bidegree (3n-1, 3m-1); two checked degree reductions give (3n-2, 3m-2). */
+/* tplane.c: derives the control planes of T = cross4(B, B_u, B_v) exactly. For quads B ^ B_u ^ B_v
+ * has bidegree (3n-1, 3m-1), reduced twice to (3n-2, 3m-2); for triangles 3d-2, reduced to 3d-3. */
 #include "core/tplane.h"
 #include "core/bez.h"
 
@@ -10,27 +10,29 @@
 static int extract(tp_table *t, const bez *T, ptp_error *err)
 {
     size_t total = 0, n = 0, i;
-    int I, J;
-    for (I = 0; I <= T->du; I++)
-        for (J = 0; J <= T->dv; J++)
-            total += bez_at(T, I, J)->len;
+    int P, I, J;
+    for (P = 0; P < t->dom.nplanes; P++) {
+        tp_domain_plane_ij(&I, &J, &t->dom, P);
+        total += bez_at(T, I, J)->len;
+    }
     t->terms = malloc((total ? total : 1) * sizeof *t->terms);
     if (!t->terms)
         return ptp_fail(err, PTP_ENOMEM, "out of memory (%zu terms)", total);
-    for (I = 0; I <= T->du; I++)
-        for (J = 0; J <= T->dv; J++) {
-            const form *f = bez_at(T, I, J);
-            for (i = 0; i < f->len; i++, n++) {
-                int idx[3];
-                tp_term *x = &t->terms[n];
-                form_key_unpack(idx, f->t[i].key, 3);
-                x->plane = tp_domain_plane(&t->dom, I, J);
-                x->j = idx[0];
-                x->k = idx[1];
-                x->l = idx[2];
-                form_get_weight(&x->w, f, i);
-            }
+    for (P = 0; P < t->dom.nplanes; P++) {
+        const form *f;
+        tp_domain_plane_ij(&I, &J, &t->dom, P);
+        f = bez_at(T, I, J);
+        for (i = 0; i < f->len; i++, n++) {
+            int idx[3];
+            tp_term *x = &t->terms[n];
+            form_key_unpack(idx, f->t[i].key, 3);
+            x->plane = P;
+            x->j = idx[0];
+            x->k = idx[1];
+            x->l = idx[2];
+            form_get_weight(&x->w, f, i);
         }
+    }
     t->nterms = n;
     return PTP_OK;
 }
@@ -46,9 +48,23 @@ int tp_derive(tp_table *t, int n, int m, ptp_error *err)
     return tp_derive_domain(t, &d, err);
 }
 
+/* T = T3 with the degrees of the planes: quads reduce along u, then along v; triangles once. */
+static int reduce_planes(bez *T, const bez *T3, ptp_error *err)
+{
+    bez Tu;
+    int st;
+    if (T3->kind == TP_TRI)
+        return bez_reduce_tri(T, T3, err);
+    if ((st = bez_reduce_u(&Tu, T3, err)))
+        return st;
+    st = bez_reduce_v(T, &Tu, err);
+    bez_clear(&Tu);
+    return st;
+}
+
 int tp_derive_domain(tp_table *t, const tp_domain *d, ptp_error *err)
 {
-    bez B, Bu, Bv, BBu, T3, Tu, T;
+    bez B, Bu, Bv, BBu, T3, T;
     int st;
     t->terms = NULL;
     t->nterms = 0;
@@ -59,12 +75,9 @@ int tp_derive_domain(tp_table *t, const tp_domain *d, ptp_error *err)
         if (!(st = bez_diff_v(&Bv, &B, err))) {
             if (!(st = bez_mul(&BBu, &B, &Bu, err))) {
                 if (!(st = bez_mul(&T3, &BBu, &Bv, err))) {
-                    if (!(st = bez_reduce_u(&Tu, &T3, err))) {
-                        if (!(st = bez_reduce_v(&T, &Tu, err))) {
-                            st = extract(t, &T, err);
-                            bez_clear(&T);
-                        }
-                        bez_clear(&Tu);
+                    if (!(st = reduce_planes(&T, &T3, err))) {
+                        st = extract(t, &T, err);
+                        bez_clear(&T);
                     }
                     bez_clear(&T3);
                 }

@@ -1,5 +1,5 @@
 /* tplane.h: the exact control-plane table of the parametric tangent plane.
- * T = cross4(B, dB/du, dB/dv) of a bidegree (n, m) patch, as weighted cross4 triples per plane. */
+ * T = cross4(B, dB/du, dB/dv) of a quad or triangular patch, as weighted cross4 triples per plane. */
 #ifndef TPLANE_H
 #define TPLANE_H
 
@@ -23,7 +23,8 @@ typedef struct {
  * a weight does not fit, PTP_EINTERNAL if the degree reduction check fails. t is
  * uninitialized on entry and on failure. */
 int tp_derive(tp_table *t, int n, int m, ptp_error *err);
-/* The same for the domain d (quad only for now). */
+/* The same for the domain d, of either kind (triangles: degree 3d-3, the product's 3d-2
+ * reduced once with the same zero-residual check). */
 int tp_derive_domain(tp_table *t, const tp_domain *d, ptp_error *err);
 /* Frees t's storage. */
 void tp_clear(tp_table *t);

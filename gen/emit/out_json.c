@@ -60,8 +60,7 @@ int out_json(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     sbuf_printf(o, "{\n  \"format\": \"ptpgen-planes/1\",\n");
     sbuf_printf(o, "  \"generator\": \"ptpgen %s\",\n  \"command\": \"%s\",\n", PTP_VERSION,
                 info->command);
-    sbuf_printf(o, "  \"degree\": [%s],\n  \"plane_degree\": [%s],\n", x.degrees,
-                x.plane_degrees);
+    sbuf_printf(o, "  %s,\n", x.json);
     sbuf_printf(o, "  \"points\": %d,\n  \"planes\": %d,\n", t->dom.npoints, t->dom.nplanes);
     /* The kernels' values are d_P = eye . t_P times this positive constant (true scale). */
     sbuf_puts(o, "  \"plane_scale\": \"1\",\n  \"terms\": [");

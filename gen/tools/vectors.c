@@ -67,18 +67,41 @@ static void draw_frame(int C[3], int U[3], int V[3], int N[3], uint64_t *s, out_
         }
 }
 
-/* v->X = the grid C + a_i U + b_j V plus noise in [-amp, amp]^3 per point. */
+/* v->X = the grid C + a_i U + b_j V plus noise in [-amp, amp]^3 per point (triangles: the
+ * cells i + j <= d of the grid). */
 static void draw_grid(vcase *v, const tp_table *t, uint64_t *s, const int C[3], const int U[3],
                       const int V[3], int amp)
 {
     int i, j, c;
     for (i = 0; i <= t->dom.n; i++)
         for (j = 0; j <= t->dom.m; j++) {
-            int *X = v->X[tp_domain_point(&t->dom, i, j)], a = 6 * i / t->dom.n - 3;
-            int b = 6 * j / t->dom.m - 3;
+            int *X, a = 6 * i / t->dom.n - 3, b = 6 * j / t->dom.m - 3;
+            if (!tp_grid_has(t->dom.kind, t->dom.n, t->dom.m, i, j))
+                continue;
+            X = v->X[tp_domain_point(&t->dom, i, j)];
             for (c = 0; c < 3; c++)
                 X[c] = C[c] + a * U[c] + b * V[c] + draw(s, -amp, amp);
         }
+}
+
+/* k[0] = a random corner point, k[1] and k[2] its neighbours along the two edges through it. */
+static void draw_corner(int k[3], const tp_table *t, uint64_t *s)
+{
+    const tp_domain *d = &t->dom;
+    if (d->kind == TP_TRI) {
+        /* vertex c of the barycentric (i, j, k), and one step from it towards each other one */
+        int c = draw(s, 0, 2), x, e[3][3] = {{0}};
+        for (x = 0; x < 3; x++)
+            e[x][c] = d->n - (x > 0);
+        e[1][(c + 1) % 3] = e[2][(c + 2) % 3] = 1;
+        for (x = 0; x < 3; x++)
+            k[x] = tp_domain_point(d, e[x][0], e[x][1]);
+    } else {
+        int ci = draw(s, 0, 1) * d->n, cj = draw(s, 0, 1) * d->m;
+        k[0] = tp_domain_point(d, ci, cj);
+        k[1] = tp_domain_point(d, ci, cj + (cj ? -1 : 1));
+        k[2] = tp_domain_point(d, ci + (ci ? -1 : 1), cj);
+    }
 }
 
 /* Moves a random corner X_0 by noise in [-2, 2]^3 and puts the eye in its tangent plane (the
@@ -86,10 +109,11 @@ static void draw_grid(vcase *v, const tp_table *t, uint64_t *s, const int C[3], 
  * neighbours; clip, X_2 takes the x, y of X_0 or X_1. */
 static void corner_tangent(vcase *v, const tp_table *t, out_space space, uint64_t *s)
 {
-    int ci = draw(s, 0, 1) * t->dom.n, cj = draw(s, 0, 1) * t->dom.m, c;
-    int k0 = tp_domain_point(&t->dom, ci, cj);
-    int k1 = tp_domain_point(&t->dom, ci, cj + (cj ? -1 : 1));
-    int k2 = tp_domain_point(&t->dom, ci + (ci ? -1 : 1), cj);
+    int k[3], c, k0, k1, k2;
+    draw_corner(k, t, s);
+    k0 = k[0];
+    k1 = k[1];
+    k2 = k[2];
     for (c = 0; c < 3; c++)
         v->X[k0][c] += draw(s, -2, 2);
     if (space == OUT_CLIP) {
@@ -104,16 +128,16 @@ static void corner_tangent(vcase *v, const tp_table *t, out_space space, uint64_
     }
 }
 
-/* Replaces one random boundary row of control points by copies of its first point. */
+/* Replaces the control points of one random boundary edge by copies of its first point. */
 static void collapse_edge(vcase *v, const tp_table *t, uint64_t *s)
 {
-    int e = draw(s, 0, 3), k, c, i, j;
-    int first = tp_domain_point(&t->dom, e == 1 ? t->dom.n : 0, e == 3 ? t->dom.m : 0);
+    int e = draw(s, 0, tp_domain_edges(&t->dom) - 1), first = -1, k, c, i, j;
     for (k = 0; k < t->dom.npoints; k++) {
-        int on;
         tp_domain_point_ij(&i, &j, &t->dom, k);
-        on = e == 0 ? i == 0 : e == 1 ? i == t->dom.n : e == 2 ? j == 0 : j == t->dom.m;
-        for (c = 0; on && c < 4; c++)
+        if (!tp_domain_on_edge(&t->dom, e, i, j))
+            continue;
+        first = first < 0 ? k : first;
+        for (c = 0; c < 4; c++)
             v->b[k][c] = v->b[first][c];
     }
 }
@@ -316,8 +340,12 @@ static int put_document(sbuf *out, vstate *st, long count, uint64_t seed, out_sp
     sbuf_puts(out, "  \"command\": ");
     put_string(out, command);
     tp_domain_text_get(&x, &t->dom);
-    sbuf_printf(out, ",\n  \"degree\": [%s],\n  \"space\": \"%s\",\n", x.degrees,
-                space == OUT_CLIP ? "clip" : "world");
+    if (t->dom.kind == TP_QUAD)
+        sbuf_printf(out, ",\n  \"degree\": [%s],\n", x.degrees);
+    else
+        sbuf_printf(out, ",\n  \"domain\": \"%s\",\n  \"degree\": %s,\n",
+                    tp_kind_name(t->dom.kind), x.degrees);
+    sbuf_printf(out, "  \"space\": \"%s\",\n", space == OUT_CLIP ? "clip" : "world");
     sbuf_printf(out, "  \"seed\": %" PRIu64 ",\n  \"points\": %d,\n  \"planes\": %d,\n", seed,
                 t->dom.npoints, t->dom.nplanes);
     sbuf_printf(out, "  \"conventions\": \"%s; %s\",\n  \"cases\": [", x.conventions, conventions);

@@ -19,7 +19,8 @@
 /* The formats of the test vectors: the JSON document, or the same cases as a C include. */
 enum { VECTORS_JSON, VECTORS_C };
 
-/* Appends the test vectors in format (VECTORS_JSON or VECTORS_C): count cases of bidegree (t->dom.n, t->dom.m) from seed, in space.
+/* Appends the test vectors in format (VECTORS_JSON or VECTORS_C): count cases of t's domain (a
+ * quad of bidegree (t->dom.n, t->dom.m) or a triangle of degree d = t->dom.n) from seed, in space.
  *
  * The document (format "ptpgen-vectors/1"; fixed key order, two-space indents, one case per
  * five lines, no timestamps, so the same arguments give the same bytes):
@@ -28,7 +29,7 @@ enum { VECTORS_JSON, VECTORS_C };
  *     "format": "ptpgen-vectors/1",
  *     "generator": "ptpgen <PTP_VERSION>",
  *     "command": "<command>",                  (JSON-escaped)
- *     "degree": [n, m],
+ *     "degree": [n, m],                        (triangles: "domain": "triangle", "degree": d)
  *     "space": "clip" | "world",
  *     "seed": S,                               (unsigned 64-bit, decimal)
  *     "points": K,                             ((n+1)(m+1) control points per case)
@@ -36,7 +37,8 @@ enum { VECTORS_JSON, VECTORS_C };
  *     "conventions": "<one sentence>",
  *     "cases": [
  *       {"eye": [x, y, z, w],
- *        "points": [[x, y, z, w], ...K],        (point k = i*(m+1) + j, i along u)
+ *        "points": [[x, y, z, w], ...K],        (point k = i*(m+1) + j, i along u; triangles
+ *                                                the domain's numbering)
  *        "values": ["p/q" or "p", ...L],        (exact d_P, plane P = I*(3m-1) + J, I along u)
  *        "values_double": [d, ...L],            (each the double nearest to d_P, as %.17g)
  *        "class_strict": c, "class_degenerate": c, "kind": "<kind>"},

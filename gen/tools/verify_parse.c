@@ -1086,6 +1086,11 @@ static int json_member(verify_doc *d, rd *r, vec *terms, int *seen)
     }
     if (n == 6 && !strcmp(key, "degree"))
         return seen[1]++ ? fail_at(r, kline, "a second \"degree\"") : json_degree(d, r);
+    if (n == 6 && !strcmp(key, "domain")) /* ptpgen's json names the domain only for triangles */
+        return (st = json_string(r, key, sizeof key, &n)) || !strcmp(key, "quad")
+                   ? st
+                   : fail_at(r, kline, "\"domain\": \"%s\": verify checks quad tables only "
+                                       "(triangular tables are not supported yet)", key);
     if (strcmp(key, "format") && strcmp(key, "generator") && strcmp(key, "command"))
         note_ignored(d, key, strlen(key));
     return json_skip(r, 1);
