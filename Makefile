@@ -78,8 +78,8 @@ $(B)/bench_gen: bench/bench_gen.c
 
 # `make bench`: culling throughput on this machine (bench/run_bench.sh): the paper's loop and the
 # emitted C header's paths per bidegree on one core and on all cores, against a peak it measures;
-# the OpenCL kernel on PoCL and the GLSL kernel on lavapipe (the test hosts' --bench); ptpgen's own
-# time. The hosts are built when their libraries are there; a missing one makes its rows unavailable.
+# the OpenCL kernel on PoCL, the GLSL kernel on lavapipe and the WGSL kernel on wgpu-native (the
+# test hosts' --bench); ptpgen's own time. The hosts are built when their libraries are there; a missing one makes its rows unavailable.
 BENCH_DEGREES = 2x2 3x3 4x4
 BENCH_CFLAGS = -O3 -march=native
 # $(CC) by default; make bench BENCH_CC=clang to compare (gcc runs the header's GNU C vectors,
@@ -91,7 +91,7 @@ BENCH_VARIANTS = refine3 certified
 
 bench: ptpgen $(B)/bench/peak $(addprefix $(B)/bench/bench_cull_,$(BENCH_DEGREES)) \
     $(addprefix $(B)/bench/bench_cull_3x3_,$(BENCH_VARIANTS))
-	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan >$(B)/bench/hosts.log 2>&1 || true
+	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan $(B)/host_wgpu >$(B)/bench/hosts.log 2>&1 || true
 	@bash bench/run_bench.sh $(B) $(BENCH_CC) "$(BENCH_CFLAGS)" $(BENCH_DEGREES)
 
 # The benchmark's compiler and flags: a change rebuilds the benchmarks.

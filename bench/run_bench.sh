@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # run_bench.sh: prints `make bench`'s table: the bench_cull rows of each bidegree, the OpenCL kernel
-# on PoCL and the GLSL kernel on lavapipe through the test hosts' --bench, and ptpgen's own time.
+# on PoCL, the GLSL kernel on lavapipe and the WGSL kernel on wgpu-native (lavapipe) through the
+# test hosts' --bench, and ptpgen's own time.
 #   bench/run_bench.sh BUILD CC "CFLAGS" DEGREE...   (BUILD holds ptpgen, bench/ and the hosts)
 set -u
 B=$1 CC=$2 FLAGS=$3
@@ -110,6 +111,13 @@ for d in "$@"; do
     fi
     gpu_row "$d" "GLSL (lavapipe), $cores" "$rate" "$flops" "$paper" "$check"
 
+    # WGSL on wgpu-native (lavapipe through Vulkan)
+    rate="" check=""
+    if [ -x "$B/host_wgpu" ] && "$B/ptpgen" --degree "$d" --target wgsl -o "$tmp/k.wgsl"; then
+        gpu_bench "$B/host_wgpu" "$tmp/k.wgsl" "${cfg[@]}"
+    fi
+    gpu_row "$d" "WGSL (wgpu, lavapipe), $cores" "$rate" "$flops" "$paper" "$check"
+
     gen+="${gen:+, }$d $("$B/bench/bench_cull_$d" --gen "$B/ptpgen" || echo ?) ms"
 done
 for v in "$B"/bench/bench_cull_3x3_*; do
@@ -130,7 +138,7 @@ cat <<EOF
 #   the all-core peak. Each row is the best of at least 5 runs (0.3 s or more); the paper loop and
 #   classify run on the first patches, as many as 20 ms hold, the others on all.
 # differs: patches whose class differs from classify's, over the patches that path ran.
-# OpenCL and GLSL: one dispatch of the hosts' random patches (tests/kref.c), as many as 0.25 s
+# OpenCL, GLSL and WGSL: one dispatch of the hosts' random patches (tests/kref.c), as many as 0.25 s
 #   hold (1024 to $GPU_MAX, the number after "ref ok"), best of $GPU_RUNS (of 1 at 1024); kernel and
 #   class read-back only (compilation and upload excluded), on every core; flops as the paper
 #   loop's (the kernels run its terms, plus padding slots); "ref ok": the host checked the classes

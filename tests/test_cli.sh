@@ -306,8 +306,8 @@ for opt in space rule planes certified refine prefix schedule; do
     [ -z "$bad" ] && ok "$(opt_args $opt | cut -d' ' -f1) changes the output of $takers; other targets refuse it, naming those" ||
         notok "$opt applies only where listed" "$bad"
 done
-expect_fail "--planes for the C header is refused" 2 "--planes applies to targets glsl, hlsl, opencl, cuda \\(not c\\)$" --degree 3 --target c --planes
-expect_fail "--space for json is refused" 2 "--space applies to targets c, glsl, hlsl, opencl, cuda \\(not json\\)" --degree 3 --space world
+expect_fail "--planes for the C header is refused" 2 "--planes applies to targets glsl, hlsl, opencl, cuda, wgsl \\(not c\\)$" --degree 3 --target c --planes
+expect_fail "--space for json is refused" 2 "--space applies to targets c, glsl, hlsl, opencl, cuda, wgsl \\(not json\\)" --degree 3 --space world
 
 # Each option at most once.
 expect_fail "a repeated --degree" 2 "option --degree is given twice" --degree 3 --degree 4

@@ -1,72 +1,11 @@
 /* test_kern.c: checks that the GPU emitter writes every construct of the C family through its
- * syntax hooks: a kernel written with a probe syntax of another form keeps none of C's. */
+ * syntax hooks: a kernel of the WGSL target, whose syntax is of another form, keeps none of C's. */
 #include "check.h"
 #include "emit/kern.h"
 #include "plan/sched.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-
-/* The probe syntax: the forms a WGSL-like language would use, each contract of kern_syntax. */
-static void p_constant(sbuf *o, const kern_target *g, const char *name, const char *type,
-                       const char *value, const char *comment)
-{
-    (void)g;
-    sbuf_printf(o, "const %s: %s = %s;%s%s\n", name, type, value, comment ? " // " : "",
-                comment ? comment : "");
-}
-
-static void p_table_open(sbuf *o, const kern_target *g, const char *type, const char *name, long n)
-{
-    (void)g;
-    sbuf_printf(o, "const %s = array<%s, %ld>(", name, type, n);
-}
-
-static void p_shared(sbuf *o, const kern_target *g, const char *indent, const char *type,
-                     const char *name, const char *count)
-{
-    (void)g;
-    sbuf_printf(o, "%svar<workgroup> %s: array<%s, %s>;\n", indent, name, type, count);
-}
-
-static void p_function(sbuf *o, const kern_target *g, const char *ret, const char *name,
-                       const kern_param *p, int n)
-{
-    int i;
-    (void)g;
-    sbuf_printf(o, "fn %s(", name);
-    for (i = 0; i < n; i++)
-        sbuf_printf(o, "%s%s: %s", i == 0 ? "" : ", ", p[i].name, p[i].type);
-    sbuf_printf(o, ") -> %s\n{\n", ret);
-}
-
-static void p_locals(sbuf *o, const kern_target *g, const char *indent, const char *type,
-                     const kern_var *v, int n, int exact)
-{
-    int i;
-    (void)g, (void)exact;
-    for (i = 0; i < n; i++)
-        sbuf_printf(o, "%s%s %s: %s%s%s;\n", indent, v[i].assigned ? "var" : "let", v[i].name, type,
-                    v[i].init ? " = " : "", v[i].init ? v[i].init : "");
-}
-
-static void p_select(char *out, size_t size, const char *cond, const char *t, const char *f)
-{
-    snprintf(out, size, "select(%s, %s, %s)", f, t, cond);
-}
-
-static const kern_syntax probe = {
-    .constant = p_constant,
-    .table_open = p_table_open,
-    .table_close = "\n);\n",
-    .shared = p_shared,
-    .function = p_function,
-    .locals = p_locals,
-    .select = p_select,
-    .isnan = "is_nan(%s)",
-    .braces = 1,
-};
 
 /* The first line of the kernel's text s (banner and template boilerplate left out: the tables
  * on) that keeps a C-family construct, or NULL. */
@@ -98,9 +37,7 @@ static const char *c_construct(const char *s, char *why, size_t size)
 int main(void)
 {
     static const int degrees[][2] = {{1, 1}, {2, 3}, {3, 3}};
-    kern_target g = kern_glsl;
     int d, c;
-    g.syntax = &probe;
     for (d = 0; d < 3; d++) {
         tp_table t;
         sched s;
@@ -118,13 +55,13 @@ int main(void)
             sbuf o;
             int st;
             sbuf_init(&o);
-            st = kern_emit_gpu(&o, &t, &info, &g, &err);
-            snprintf(name, sizeof name, "probe syntax %dx%d %s %s%s: no C-family construct left",
+            st = kern_emit_gpu(&o, &t, &info, &kern_wgsl, &err);
+            snprintf(name, sizeof name, "wgsl %dx%d %s %s%s: no C-family construct left",
                      degrees[d][0], degrees[d][1], c & 1 ? "world" : "clip",
                      c & 2 ? "degenerate" : "strict", c & 4 ? " certified" : "");
             if (check(!st, name, "%s", err.msg))
                 check(!c_construct(o.s, why, sizeof why) && strstr(o.s, "select(") &&
-                          strstr(o.s, "var<workgroup> pts") && strstr(o.s, "fn ptp_class_of(f: uint)"),
+                          strstr(o.s, "var<workgroup> pts") && strstr(o.s, "fn ptp_class_of(f: u32)"),
                       name, "kept: %s", why);
             sbuf_clear(&o);
         }

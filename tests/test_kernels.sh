@@ -33,6 +33,7 @@ done
 [ -x "$B/host_opencl" ] || missing "the OpenCL host (OpenCL headers and ICD loader)" "OpenCL kernels"
 [ -x "$B/host_vulkan" ] || missing "the Vulkan host (libvulkan)" "GLSL and HLSL kernels"
 [ -x "$NVCC" ] || missing nvcc "CUDA kernels"
+[ -x "$B/host_wgpu" ] || missing "the WGSL host (wgpu-native: tests/deps.sh)" "WGSL kernels"
 ls "$models"/*.bez >/dev/null 2>&1 || missing "$models" "kernels on the shared models"
 
 # The files a configuration needs, as target:suffix (ptpgen --list-targets): json for the schedule,
@@ -111,7 +112,7 @@ cuda_host() {
         tests/host_cuda.cu build/gcc/libptptest.a -o "$tmp/host_cuda" >"$tmp/err" 2>&1
 }
 
-# exercise DIR D SPACE RULE PLANES PQ Q LABEL: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu}
+# exercise DIR D SPACE RULE PLANES PQ Q LABEL: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu,wgsl}
 # (degree D as degree_args takes it, default names) and runs each on the data of data_args against the reference.
 exercise() {
     local dir=$1 d=$2 space=$3 rule=$4 pl="" PQ=$6 Q=$7 label=$8 up cc lang extra rc data
@@ -152,6 +153,17 @@ exercise() {
                 run_host "$lang $label" "$B/host_vulkan" "$tmp/k.spv" $hcfg --block-threads $PQ \
                     --patches-per-block $Q $pl $extra $data --name "$lang $label ${data%% *}"
             done
+        done
+    fi
+
+    # WGSL on wgpu-native (lavapipe through Vulkan), on exact data too (collapsed edges: exact zeros).
+    if [ -x "$B/host_wgpu" ]; then
+        data_args $d | while read -r data; do
+            [ "${data%% *}" = --random ] && data="$data --exact 10 200 $seed"
+            # A 4x4 WGSL kernel takes about 1 ms a patch on lavapipe: a tenth of the patches.
+            [ $d = 4x4 ] && data=${data/--random 1 10000/--random 1 1000} && data=${data/--exact 10 200/--exact 10 20}
+            run_host "wgsl $label" "$B/host_wgpu" "$dir/ptp_$d.wgsl" $hcfg --block-threads $PQ \
+                --patches-per-block $Q $pl $data --name "wgsl $label ${data%% *}"
         done
     fi
 
@@ -215,6 +227,21 @@ if [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ]; then
         to_spirv glsl "$tmp/k" &&
         run_host "glsl P=7 Q=5" "$B/host_vulkan" "$tmp/k.spv" --degree 2 3 --space world --rule strict --block-threads 35 \
             --patches-per-block 5 --planes --random 1 3000 7 --name "glsl 2x3 world, 7 threads per patch, 5 patches per group"
+fi
+
+if [ -x "$B/host_wgpu" ]; then
+    "$P" --degree 2x3 --target wgsl --space world --planes --threads-per-patch 7 --patches-per-block 5 -o "$tmp/k.wgsl" &&
+        run_host "wgsl P=7 Q=5" "$B/host_wgpu" "$tmp/k.wgsl" --degree 2 3 --space world --rule strict --block-threads 35 \
+            --patches-per-block 5 --planes --random 1 3000 7 --name "wgsl 2x3 world, 7 threads per patch, 5 patches per group"
+    # A generated WGSL kernel with one weight's sign flipped must fail its checks.
+    "$P" --degree 2 --target wgsl --planes -o "$tmp/k.wgsl" && sed -i '0,/ -1.0f,/s// 1.0f,/' "$tmp/k.wgsl"
+    if grep -q '^    -0.166666672f, -2.0f, 1.0f,' "$tmp/k.wgsl" &&
+        ! "$B/host_wgpu" "$tmp/k.wgsl" --degree 2 2 --space clip --rule strict --block-threads 128 --patches-per-block 16 \
+            --planes --random 1 2000 5 --name mutant >"$tmp/out" 2>&1 && grep -q '^not ok - mutant: .*plane values' "$tmp/out"; then
+        ok "a 2x2 WGSL kernel with one weight's sign flipped fails its check"
+    else
+        notok "a 2x2 WGSL kernel with one weight's sign flipped fails its check" "it passed, or the weight was not found"
+    fi
 fi
 
 # mutant SED CHECK WHAT: a bicubic C header edited by sed script SED must fail the check lines
@@ -367,6 +394,10 @@ for space in clip world; do
                     --block-threads $PQ --patches-per-block $Q $extra
             done
         fi
+
+        # WGSL on wgpu-native.
+        [ -x "$B/host_wgpu" ] && run_exact wgsl "$data" "$B/host_wgpu" "$dir/ptp_3x3.wgsl" \
+            --block-threads $PQ --patches-per-block $Q
 
         # CUDA: compiled, and run where a GPU is.
         if [ -x "$NVCC" ]; then

@@ -47,7 +47,8 @@ typedef struct {
                      const kern_param *p, int n);
     /* Appends whole lines, starting with indent, declaring the n local variables v of one type.
      * exact: no product of the initializers may be contracted into an FMA (where the language can
-     * say so: C family, the target's precise qualifier). C: `type a = x, b;` on one line. */
+     * say so: C family, the target's precise qualifier; WGSL cannot, its mul keeps the products
+     * apart instead). C: `type a = x, b;` on one line. */
     void (*locals)(sbuf *o, const kern_target *g, const char *indent, const char *type,
                    const kern_var *v, int n, int exact);
     /* Writes to out (size bytes, truncating as snprintf) the expression "t if cond, else f", with
@@ -78,7 +79,8 @@ struct kern_target {
     const char *barrier;       /* a workgroup barrier with shared-memory ordering, as a statement */
     const char *precise;       /* qualifier that forbids contracting a*b - c*d into an FMA, with
                                   its space, or NULL */
-    const char *mul;           /* a product of two operands, printf format ("%s * %s") */
+    const char *mul;           /* a product of two operands of cross4, printf format ("%s * %s");
+                                  CUDA's and WGSL's are never contracted into an FMA */
     const char *local_id;      /* the invocation's index in its workgroup */
     const char *group_x, *group_y, *groups_x; /* workgroup ids and the number along x */
     const char *planes_buffer; /* file-scope declaration of the values buffer (with --planes), or
@@ -90,7 +92,7 @@ struct kern_target {
 /* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */
 extern const kern_syntax kern_c_syntax;
 /* The GPU targets' tables. */
-extern const kern_target kern_glsl, kern_hlsl, kern_opencl, kern_cuda;
+extern const kern_target kern_glsl, kern_hlsl, kern_opencl, kern_cuda, kern_wgsl;
 
 /* Writes a GPU kernel for target g: P threads per patch accumulate the planes they own in
  * shared memory from the scheduled tables, then one thread per patch combines the signs. */
@@ -102,6 +104,7 @@ int emit_glsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 int emit_hlsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 int emit_opencl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 int emit_cuda(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
+int emit_wgsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 
 #endif

@@ -19,6 +19,7 @@ const tgt_target tgt_targets[] = {
     {"hlsl", ".hlsl", "a compute kernel", emit_hlsl, KERNEL},
     {"opencl", ".cl", "a compute kernel", emit_opencl, KERNEL},
     {"cuda", ".cu", "a compute kernel", emit_cuda, KERNEL},
+    {"wgsl", ".wgsl", "a compute kernel", emit_wgsl, KERNEL},
 };
 const int tgt_count = (int)(sizeof tgt_targets / sizeof *tgt_targets);
 
