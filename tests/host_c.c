@@ -1,7 +1,14 @@
 /* host_c.c: runs an emitted C header (--target c) over patch sets and checks it with kref.
- * Built per header: cc -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix> -DUPFX=<PREFIX> ... */
+ * Built per header: cc -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix> -DUPFX=<PREFIX> ...
+ * C and C++ alike (c++ -x c++ host_c.c -x none libptptest.a): the header is used from both. */
+#ifdef __cplusplus
+extern "C" {
+#endif
 #include "check.h"
 #include "kref.h"
+#ifdef __cplusplus
+}
+#endif
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,40 +19,58 @@
 #define FN(name) CAT(PFX, name)
 #define MACRO(name) CAT(UPFX, name)
 
-/* The three comparisons over all sets, and how often classify_batch or classify_soa differs
- * from classify. */
+/* Nonzero when class c is not the one values d (L of them, from values()) give under the rule:
+ * certified, a class other than silhouette must be the strict rule's. v: L doubles of scratch. */
+static int class_not_of_values(double *v, unsigned c, const float *d, int L, const kref_ref *ref)
+{
+    int x;
+    for (x = 0; x < L; x++)
+        v[x] = d[x]; /* exact: the signs, zeros and NaNs are the floats' */
+    if (ref->certified)
+        return c != MACRO(SILHOUETTE) && (int)c != kref_classify(v, L, KREF_STRICT);
+    return (int)c != kref_classify(v, L, ref->rule);
+}
+
+/* The comparisons over all sets, how often classify_batch or classify_soa differs from
+ * classify, and how often classify is not the class of values() under the rule. */
 typedef struct {
     int world;
     kref_result classify, batch, planes;
     int paths_differ;
+    size_t values_differ, patches;
 } results;
 
 /* Runs the header's functions over one set and accumulates into ctx (results); returns 0. */
 static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
 {
-    results *r = ctx;
+    results *r = (results *)ctx;
     size_t p, L = (size_t)ref->L;
-    unsigned *cls = malloc(s->count * sizeof *cls);
-    unsigned char *batch = malloc(s->count), *soa_cls = malloc(s->count);
+    unsigned *cls = (unsigned *)malloc(s->count * sizeof *cls);
+    unsigned char *batch = (unsigned char *)malloc(s->count);
+    unsigned char *soa_cls = (unsigned char *)malloc(s->count);
     /* the SoA copy, at a stride that is not the count (nor a power of two); zeroed, as gcc
      * cannot see the copy below fill what classify_soa reads */
     size_t stride = s->count + 3, k;
-    float *soa = calloc((size_t)ref->K * 4 * stride, sizeof *soa);
-    float *d = malloc(s->count * L * sizeof *d), *dp = malloc(s->count * L * sizeof *dp);
-    float(*t)[4] = malloc(L * sizeof *t);
+    float *soa = (float *)calloc((size_t)ref->K * 4 * stride, sizeof *soa);
+    float *d = (float *)malloc(s->count * L * sizeof *d);
+    float *dp = (float *)malloc(s->count * L * sizeof *dp);
+    float(*t)[4] = (float(*)[4])malloc(L * sizeof *t);
+    double *v = (double *)malloc(L * sizeof *v);
     for (p = 0; p < s->count; p++) {
         const float(*cp)[4] = (const float(*)[4])s->cp + p * (size_t)ref->K;
         size_t x;
         cls[p] = FN(classify)(cp, s->eye);
+        FN(values)(cp, s->eye, d + p * L);
+        r->values_differ += (size_t)class_not_of_values(v, cls[p], d + p * L, ref->L, ref);
         if (s->exact && p % KREF_EXACT_SAMPLE)
             continue; /* kref_check reads the values of exact sets on this sample only */
-        FN(values)(cp, s->eye, d + p * L);
         FN(planes)(cp, t);
         for (x = 0; x < L; x++)
             dp[p * L + x] = r->world ? s->eye[0] * t[x][0] + s->eye[1] * t[x][1] +
                                         s->eye[2] * t[x][2] + s->eye[3] * t[x][3]
                                   : s->eye[2] * t[x][2];
     }
+    r->patches += s->count;
     FN(classify_batch)((const float(*)[4])s->cp, s->count, s->eye, batch);
     for (p = 0; p < s->count; p++)
         for (k = 0; k < (size_t)ref->K * 4; k++)
@@ -65,6 +90,7 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
     free(d);
     free(dp);
     free(t);
+    free(v);
     return 0;
 }
 
@@ -96,6 +122,9 @@ int main(int argc, char **argv)
     snprintf(label, sizeof label, "%s classify_batch and classify_soa equal classify on every patch",
              o.label);
     ok &= check(r.paths_differ == 0, label, "they differ %d times", r.paths_differ);
+    snprintf(label, sizeof label, "%s classify is the class of values() under the rule on all %zu patches%s",
+             o.label, r.patches, o.certified ? " (certified: or silhouette)" : "");
+    ok &= check(r.values_differ == 0, label, "it is not on %zu", r.values_differ);
     snprintf(label, sizeof label, "%s planes (dotted with the eye)", o.label);
     ok &= kref_report(&r.planes, label);
     kref_clear(&ref);

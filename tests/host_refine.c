@@ -1,7 +1,13 @@
 /* host_refine.c: runs a C header emitted with --refine K and checks the refined classes: equal to
  * the reference where the control planes decide, and never back or front against samples. */
 #include "check.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
 #include "kref.h"
+#ifdef __cplusplus
+}
+#endif
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -61,8 +67,8 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
 {
     tally *t = ctx;
     size_t p, L = (size_t)ref->L;
-    double *d = malloc(2 * L * sizeof *d), *bound = d + L;
-    unsigned char *batch = malloc(s->count);
+    double *d = (double *)malloc(2 * L * sizeof *d), *bound = d + L;
+    unsigned char *batch = (unsigned char *)malloc(s->count);
     FN(classify_batch)((const float(*)[4])s->cp, s->count, s->eye, batch);
     for (p = 0; p < s->count; p++) {
         const float(*cp)[4] = (const float(*)[4])s->cp + p * (size_t)ref->K;

@@ -59,10 +59,13 @@ host_degree() {
 
 # args_for TARGET DEGREE SPACE RULE FLAG...: the options of a configuration that TARGET takes
 # (ptpgen --list-targets refuses the others): json, read for its schedule, gets the degree alone.
-# RULE may be "" (the default).
+# RULE may be "" (the default). Targets that name things get the prefix ptp_NxM_ of the default
+# variant, which the hosts are built for (a variant's default prefix adds world_, certified_ ...).
 args_for() {
-    local a="$(degree_args $2)" opts f
+    local a="$(degree_args $2)" opts f d=$2
     opts=",$("$P" --list-targets | awk -v t="$1" '$1 == t { print $3 }'),"
+    case $d in tri* | *x*) ;; *) d=${d}x$d ;; esac
+    [[ $opts == *,prefix,* ]] && a="$a --prefix ptp_${d}_"
     [[ $opts == *,space,* ]] && a="$a --space $3"
     [[ -n $4 && $opts == *,rule,* ]] && a="$a --rule $4"
     shift 4
@@ -274,7 +277,7 @@ for variant in "clang -O3 -march=native" "clang -O3 -march=native -DPTP_3X3_NO_S
         echo "ok - c $variant # SKIP this CPU has no AVX2"
         continue
     } ;; esac
-    "$P" --degree $d --target c --space $space --rule $rule -o "$tmp/k.h" &&
+    "$P" --degree $d --target c --space $space --rule $rule --prefix ptp_${d}_ -o "$tmp/k.h" &&
         build_host_c $cc "${variant#* }" "$tmp/k.h" $d &&
         run_host "c $d $space $rule $variant" "$tmp/host_c" --degree $n $n --space $space \
             --rule $rule --random 2 5003 17 --name "c/$variant $d $space $rule" ||
@@ -317,6 +320,118 @@ for cc in gcc clang; do
     $cc -std=c99 -Wall -Wextra -pedantic -Werror -I"$tmp" "$tmp/multi.c" -o "$tmp/multi" 2>"$tmp/err" && "$tmp/multi" &&
         ok "C headers of two degrees (one with --prefix cull_), one included twice, in one program ($cc)" ||
         notok "C headers of two degrees in one program ($cc)" "$(grep -m1 error "$tmp/err")"
+done
+
+# Variants side by side: the bicubic clip, world and certified C headers and the table header,
+# under their default names (ptp_3x3_, ptp_3x3_world_, ptp_3x3_certified_, ptp_3x3_ table), in one
+# translation unit with every implementation, as C and C++; each records its variant in macros.
+# The patch (3i, 3j, 0, 1) has dB/du x dB/dv along +z: front for an eye above it (w > 0), back
+# below, and back above when the eye's w is negative (the negated eye).
+"$P" --degree 3 --target c -o "$tmp/ptp_3x3.h" && "$P" --degree 3 --target c --space world -o "$tmp/ptp_3x3_world.h" &&
+    "$P" --degree 3 --target c --certified -o "$tmp/ptp_3x3_certified.h" &&
+    "$P" --degree 3 --target table -o "$tmp/ptp_3x3_table.h" || notok "variant headers" "ptpgen failed"
+cat >"$tmp/variants.c" <<'C'
+#define PTP_3X3_IMPLEMENTATION
+#define PTP_3X3_WORLD_IMPLEMENTATION
+#define PTP_3X3_CERTIFIED_IMPLEMENTATION
+#include "ptp_3x3.h"
+#include "ptp_3x3_world.h"
+#include "ptp_3x3_certified.h"
+#include "ptp_3x3_table.h"
+#if !(PTP_3X3_SPACE_CLIP && PTP_3X3_RULE_STRICT && !PTP_3X3_CERTIFIED && PTP_3X3_REFINE == 0 &&         \
+      PTP_3X3_WORLD_SPACE_WORLD && PTP_3X3_WORLD_DEGREE_U == 3 && PTP_3X3_WORLD_DEGREE_V == 3 &&         \
+      PTP_3X3_CERTIFIED_CERTIFIED == 1 && PTP_3X3_CERTIFIED_SPACE_CLIP && PTP_3X3_TERMS == 516) ||       \
+    defined(PTP_3X3_SPACE_WORLD) || defined(PTP_3X3_WORLD_SPACE_CLIP) || defined(PTP_3X3_RULE_DEGENERATE)
+#error "the variant macros"
+#endif
+int main(void)
+{
+    static float cp[16][4];
+    const float up[4] = {0, 0, 1, 0}, above[4] = {1, 1, 5, 1}, below[4] = {1, 1, -5, 1};
+    const float negw[4] = {-1, -1, -5, -1}; /* the point (1, 1, 5) with w = -1 */
+    float d[64];
+    int k, ok;
+    for (k = 0; k < 16; k++) {
+        cp[k][0] = (float)(3 * (k / 4));
+        cp[k][1] = (float)(3 * (k % 4));
+        cp[k][3] = 1;
+    }
+    ptp_3x3_values((const float (*)[4])cp, up, d);
+    ok = ptp_3x3_classify((const float (*)[4])cp, up) == PTP_3X3_FRONT && d[0] > 0 &&
+         ptp_3x3_certified_classify((const float (*)[4])cp, up) == PTP_3X3_CERTIFIED_FRONT &&
+         ptp_3x3_world_classify((const float (*)[4])cp, above) == PTP_3X3_WORLD_FRONT &&
+         ptp_3x3_world_classify((const float (*)[4])cp, below) == PTP_3X3_WORLD_BACK &&
+         ptp_3x3_world_classify((const float (*)[4])cp, negw) == PTP_3X3_WORLD_BACK &&
+         ptp_3x3_idx[0][0] == 0;
+    return !ok;
+}
+C
+for cc in "gcc -std=c99" "clang -std=c99" "g++ -std=c++11 -x c++" "clang++ -std=c++11 -x c++"; do
+    command -v ${cc%% *} >/dev/null || continue
+    $cc -Wall -Wextra -pedantic -Werror -I"$tmp" "$tmp/variants.c" -o "$tmp/variants" 2>"$tmp/err" && "$tmp/variants" &&
+        ok "bicubic clip, world, certified and table headers in one program, default names, orientation ($cc)" ||
+        notok "bicubic clip, world, certified and table headers in one program ($cc)" "$(grep -m2 error "$tmp/err")"
+done
+
+# alpha(): projections stored as glm (OpenGL, Vulkan, reversed Z) and DirectXMath (LH, RH,
+# reversed Z) store them give clip-space classes equal to the world-space header's on the models
+# (tests/host_alpha.c, with the default-named headers above), built as C and as C++.
+for cc in "gcc -std=c11" "g++ -std=c++11 -x c++"; do
+    command -v ${cc%% *} >/dev/null || continue
+    if ! ls "$models"/bigguy.bez "$models"/teapot.bez >/dev/null 2>&1; then
+        missing "$models" "alpha() on the models"
+    elif $cc -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -I"$tmp" tests/host_alpha.c -x none \
+        build/gcc/libptptest.a -lm -o "$tmp/host_alpha" 2>"$tmp/err"; then
+        run_host "alpha ($cc)" "$tmp/host_alpha" "$models"/bigguy.bez "$models"/teapot.bez
+    else
+        notok "host_alpha compiles with $cc" "$(grep -m2 error "$tmp/err")"
+    fi
+done
+
+# C++: bicubic headers (clip, world, certified, refine 2) with their implementations compile as
+# C++11 to C++20 with g++ and clang++, -pedantic -Werror, and the hosts (C and C++ alike) pass
+# at C++11 and C++20; -ffast-math and its parts are refused by #error saying why.
+for cfg in "clip" "world" "clip --certified" "world --refine 2"; do
+    set -- $cfg
+    space=$1 host=host_c cflag=""
+    shift
+    case "$*" in *refine*) host=host_refine ;; *certified*) cflag=--certified ;; esac
+    "$P" --degree 3 --target c --space $space "$@" --prefix ptp_3x3_ -o "$tmp/x.h" || notok "c++ 3x3 $cfg" "ptpgen failed"
+    for cxx in g++ clang++; do
+        command -v $cxx >/dev/null || { missing $cxx "C++ builds of the C header"; continue; }
+        cc=gcc
+        [ $cxx = clang++ ] && cc=clang
+        for std in c++11 c++14 c++17 c++20; do
+            if ! $cxx -std=$std -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/x.h" \
+                -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ -x c++ tests/$host.c -x none \
+                "build/$cc/libptptest.a" -lm -o "$tmp/host_cxx" 2>"$tmp/err"; then
+                notok "c++ 3x3 $cfg compiles with $cxx -std=$std" "$(grep -m3 error "$tmp/err")"
+            elif [ $std = c++11 ] || [ $std = c++20 ]; then
+                run_host "c++ 3x3 $cfg ($cxx -std=$std)" "$tmp/host_cxx" --degree 3 3 --space $space \
+                    --rule strict $cflag --random 1 3000 23 --name "c++/$cxx -std=$std 3x3 $cfg"
+            else
+                ok "c++ 3x3 $cfg compiles with $cxx -std=$std -pedantic -Werror"
+            fi
+        done
+    done
+done
+"$P" --degree 3 --target c -o "$tmp/x.h"
+for cc in gcc clang g++ clang++; do
+    command -v $cc >/dev/null || continue
+    for flag in -ffast-math -ffinite-math-only "-fassociative-math -fno-signed-zeros -fno-trapping-math"; do
+        # clang defines no macro for -fassociative-math alone: only gcc's __ASSOCIATIVE_MATH__ is seen
+        [[ $cc == clang* && $flag == -fassoc* ]] && continue
+        lang=c
+        [[ $cc == *++ ]] && lang=c++
+        if printf '#define PTP_3X3_IMPLEMENTATION\n#include "x.h"\nint main(void) { return 0; }\n' |
+            $cc -x $lang $flag -I"$tmp" -c - -o "$tmp/fm.o" 2>"$tmp/err"; then
+            notok "c header refuses $cc $flag" "it compiled"
+        elif grep -q 'error.*do not compile this header.*-ffast-math.*NaN checks' "$tmp/err"; then
+            ok "c header refuses $cc $flag with #error saying why"
+        else
+            notok "c header refuses $cc $flag with its #error" "$(grep -m1 error "$tmp/err")"
+        fi
+    done
 done
 
 # Certified kernels (--certified) against exact classes. kref's --exact data are integer patches
@@ -412,7 +527,7 @@ for space in clip world; do
 done
 # The exact check can fail: a certified header whose bounds are 2^10 times too small must be
 # caught calling patches back or front that are not.
-"$P" --degree 3 --space clip --certified --target c -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /' "$tmp/k.h"
+"$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /' "$tmp/k.h"
 if grep -q 'ER3 \* 0x1p-10f' "$tmp/k.h" &&
     build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
     ! "$tmp/host_c" --degree 3 3 --space clip --rule strict --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&

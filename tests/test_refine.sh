@@ -14,7 +14,7 @@ notok() { echo "not ok - $1: $2"; }
 # script SED when given) into $tmp/hr; prints nothing, returns the build status.
 host() {
     local d=$1 n=${1%x*} m=${1#*x}
-    "$P" --degree $d --target c --space $2 --rule $3 --refine $4 -o "$tmp/r.h" || return 1
+    "$P" --degree $d --target c --space $2 --rule $3 --refine $4 --prefix ptp_${d}_ -o "$tmp/r.h" || return 1
     [ -n "${6:-}" ] && sed -i "$6" "$tmp/r.h"
     $5 -std=c11 -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/r.h" \
         -DPTP_${n}X${m}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${m}_ tests/host_refine.c \

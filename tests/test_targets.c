@@ -5,13 +5,14 @@
 
 #include <string.h>
 
-/* Every entry has a name, a description and an emitter; no name or file suffix repeats. */
+/* Every entry has a name, a description and either an emitter or a GPU kernel table (whose file
+ * extension is its suffix); no name or file suffix repeats. */
 static void check_entries(void)
 {
     int i, k, bad = -1;
     for (i = 0; i < tgt_count && bad < 0; i++) {
         const tgt_target *g = &tgt_targets[i];
-        if (!g->name || !g->name[0] || !g->suffix || !g->description || !g->emit ||
+        if (!g->name || !g->name[0] || !g->suffix || !g->description || !g->emit == !g->gpu || (g->gpu && strcmp(g->gpu->file_ext, g->suffix)) ||
             g->options >> TGT_NOPTIONS)
             bad = i;
         for (k = 0; k < i && bad < 0; k++)

@@ -54,7 +54,8 @@ void cli_usage(sbuf *o)
         "                   bound on its float rounding error (README: Certified classification)\n"
         "  --refine K       C only: split the patch's scalar Bezier function e.T by de Casteljau,\n"
         "                   up to K levels (1 to %d), while its control values have mixed signs\n"
-        "  --prefix NAME    prefix of generated names (default ptp_NxM_, triangles ptp_triN_)\n"
+        "  --prefix NAME    prefix of generated names (default ptp_NxM_ or ptp_triN_, then world_,\n"
+        "                   degenerate_, certified_, refineK_ for the options given)\n"
         "  --threads-per-patch P\n"
         "                   threads that share one patch, 1..%d, at most the number of\n"
         "                   planes (default 16 for 3x3; see README for other degrees)\n"
@@ -406,6 +407,23 @@ static void put_command(cli_options *o)
         snprintf(c + n, size - (size_t)n, " --patches-per-block %d", o->patches);
 }
 
+/* Writes the default prefix: the domain's ("ptp_3x3_") and, in this order, each option that
+ * differs from its default: world_, degenerate_, certified_, refineK_ (ptp_3x3_world_certified_);
+ * options a target does not take are refused before, so every target names its variant. */
+static void put_default_prefix(cli_options *o)
+{
+    char *p = o->prefix;
+    size_t size = sizeof o->prefix, n = strlen(tp_domain_prefix(p, size, &o->dom));
+    if (o->world)
+        n += (size_t)snprintf(p + n, size - n, "world_");
+    if (o->degenerate)
+        n += (size_t)snprintf(p + n, size - n, "degenerate_");
+    if (o->certified)
+        n += (size_t)snprintf(p + n, size - n, "certified_");
+    if (o->refine)
+        snprintf(p + n, size - n, "refine%d_", o->refine);
+}
+
 int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
 {
     unsigned seen = 0;
@@ -426,6 +444,6 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         return st;
     put_command(o);
     if (o->mode == CLI_GENERATE && !o->prefix[0])
-        tp_domain_prefix(o->prefix, sizeof o->prefix, &o->dom);
+        put_default_prefix(o);
     return PTP_OK;
 }

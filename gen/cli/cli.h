@@ -38,7 +38,8 @@ typedef struct {
     int help, version;    /* --help or --version was given */
     int list;             /* --list-targets was given */
     char command[256];    /* the normalized command line, for banners */
-    char prefix[64];      /* generated-name prefix: --prefix, or "ptp_<n>x<m>_" ("ptp_tri<d>_") */
+    char prefix[64];      /* generated-name prefix: --prefix, or the domain's ("ptp_<n>x<m>_",
+                             "ptp_tri<d>_") and the variant */
 } cli_options;
 
 /* Parses argv[1..argc-1] into o. Returns PTP_OK or PTP_EUSAGE with the message in err. */

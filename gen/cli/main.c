@@ -155,7 +155,7 @@ static int run(const cli_options *o, ptp_error *err)
     info.certified = o->certified;
     info.refine = o->refine;
     sbuf_init(&b);
-    if (!(st = o->target->emit(&b, &t, &info, err)))
+    if (!(st = tgt_emit_target(&b, o->target, &t, &info, err)))
         st = write_output(o->output, &b, err);
     sbuf_clear(&b);
     sched_clear(&s);

@@ -23,15 +23,15 @@ static void put_cross4_component(sbuf *o, int i, const char *cast, int ind)
                 cast, s, q, ind, "", neg ? "  " : "", p, cast, q, s, cast, s, q, neg ? ")" : "");
 }
 
-/* The table loop (the paper's): cross4, planes and values; opens the region where gcc contracts
- * no product, which the lanes function closes. */
+/* The table loop (the paper's): cross4 and planes; opens the region where gcc contracts no
+ * product, which the lanes functions close. */
 static void put_functions(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
     int i;
     sbuf_printf(o,
-                "/* From here through lanes gcc contracts no product into an FMA; one region, because gcc\n"
-                " * does not inline across optimize options (cross4 into planes and values). */\n"
+                "/* From here through values gcc contracts no product into an FMA; one region, because gcc\n"
+                " * does not inline across optimize options (cross4 into planes, the lanes into values). */\n"
                 "#if defined(__GNUC__) && !defined(__clang__)\n"
                 "#pragma GCC push_options\n#pragma GCC optimize(\"fp-contract=off\")\n#endif\n\n"
                 "/* cross4 of Appendix A of Loop, Niessner and Eisenacher (2011): r . x = -det[a b c x].\n"
@@ -52,27 +52,11 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
                 "        t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;\n"
                 "    for (x = 0; x < %sTERMS; x++) {\n"
                 "        float r[4];\n"
-                "        %scross4(r, cp[%sidx[x][1]], cp[%sidx[x][2]], cp[%sidx[x][3]]);\n"
+                "        %scross4(r, cp[%sterm_idx[x][1]], cp[%sterm_idx[x][2]], cp[%sterm_idx[x][3]]);\n"
                 "        for (c = 0; c < 4; c++)\n"
-                "            t[%sidx[x][0]][c] += %swgt[x] * r[c];\n"
+                "            t[%sterm_idx[x][0]][c] += %sterm_wgt[x] * r[c];\n"
                 "    }\n}\n\n",
                 px, up, up, px, px, px, px, px, px);
-    sbuf_printf(o, "void %svalues(const float cp[][4], const float eye[4], float d[])\n{\n"
-                   "    unsigned x;\n"
-                   "    for (x = 0; x < %sPLANES; x++)\n"
-                   "        d[x] = 0.0f;\n"
-                   "    for (x = 0; x < %sTERMS; x++) {\n"
-                   "        float r[4];\n"
-                   "        %scross4(r, cp[%sidx[x][1]], cp[%sidx[x][2]], cp[%sidx[x][3]]);\n",
-                px, up, up, px, px, px, px);
-    if (info->space == OUT_CLIP)
-        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt[x] * r[2];\n    }\n"
-                       "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n}\n\n",
-                    px, px, up);
-    else
-        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt[x] * (eye[0] * r[0] + eye[1] * r[1] + eye[2] * r[2] + eye[3] * r[3]);\n"
-                       "    }\n}\n\n",
-                    px, px);
 }
 
 /* One bracket of a term: ((G(b_j) M(k,l) - G(b_k) M(j,l)) + G(b_l) M(j,k)) for one kind, with G
@@ -198,13 +182,14 @@ static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const c
                 px, up, px, px, info->refine);
 }
 
-/* Appends a constant double table NAME[n] (hex literals: exact). */
+/* Appends a constant double table NAME[n] (17 digits: each literal rounds back to its double;
+ * not hex, which C++ lacks before C++17). */
 static void put_double_table(sbuf *o, const char *px, const char *name, const double *v, int n)
 {
     int i;
     sbuf_printf(o, "static const double %s%s[%d] = {", px, name, n);
     for (i = 0; i < n; i++)
-        sbuf_printf(o, "%s%a", i == 0 ? "\n    " : i % 4 ? ", " : ",\n    ", v[i]);
+        sbuf_printf(o, "%s%.16e", i == 0 ? "\n    " : i % 4 ? ", " : ",\n    ", v[i]);
     sbuf_puts(o, "\n};\n");
 }
 
@@ -242,12 +227,12 @@ static void put_terms64(sbuf *o, int world, const char *px, const char *up)
             put_cross4_component(o, k, "(double)", 15);
             sbuf_puts(o, ";\n");
         }
-        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt64[x] * ((double)eye[0] * r[0] + (double)eye[1] * r[1] +\n"
+        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %swgt64[x] * ((double)eye[0] * r[0] + (double)eye[1] * r[1] +\n"
                        "                                        (double)eye[2] * r[2] + (double)eye[3] * r[3]);\n"
                        "    }\n",
                     px, px);
     } else {
-        sbuf_printf(o, "        d[%sidx[x][0]] += %swgt64[x] * (", px, px);
+        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %swgt64[x] * (", px, px);
         put_cross4_component(o, 2, "(double)", 40);
         sbuf_printf(o, ");\n    }\n"
                        "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n",
@@ -281,7 +266,7 @@ static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const
                 "    ER3 = E * (R * R * R);\n"
                 "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
                 "    for (x = 0; x < %sTERMS; x++) {\n"
-                "        const float *a = cp[%sidx[x][1]], *b = cp[%sidx[x][2]], *c = cp[%sidx[x][3]];\n",
+                "        const float *a = cp[%sterm_idx[x][1]], *b = cp[%sterm_idx[x][2]], *c = cp[%sterm_idx[x][3]];\n",
                 px, up, up, up, world ? "1" : "k != 2", up, world ? "1" : "k == 2", up, up, px, px, px);
     put_terms64(o, world, px, up);
     sbuf_printf(o,
@@ -307,14 +292,16 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
                 " * Laplace expansions over shared 2x2 minors. An iteration classifies %sVW patches,\n"
                 " * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations\n"
                 " * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last\n"
-                " * one. Products are never contracted into FMAs: equal points give exact zeros. */\n"
-                "#if defined(__GNUC__) && !defined(__clang__)\n"
-                "__attribute__((noinline, noclone)) /* one copy: it is large */\n"
-                "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
-                "static void %slanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],\n"
-                "%*sunsigned char *restrict cls)\n{\n"
+                " * one. Products are never contracted into FMAs: equal points give exact zeros.\n"
+                " * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a\n"
+                " * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)\n"
+                " * and values. */\n"
+                "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
+                "static inline void %slanes_body(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
+                "%*sconst float eye[4], unsigned char *%sRESTRICT cls,\n"
+                "%*sfloat *%sRESTRICT d)\n{\n"
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
-                up, up, px, (int)strlen(px) + 18, "");
+                up, up, px, up, (int)strlen(px) + 31, "", up, (int)strlen(px) + 31, "", up);
     if (world)
         sbuf_puts(o, "    const float e0 = eye[0], e1 = eye[1], e2 = eye[2], e3 = eye[3];\n");
     else
@@ -388,12 +375,25 @@ static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const ce
         sbuf_printf(o, "        const %svf R3 = R * R * R, ER3 = E * R3;\n"
                        "        const %svf F = (1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E);\n"
                        "        /* Patches too large for the bound (or NaN) are never certified. */\n"
-                       "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %af) == 0;\n",
+                       "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n",
                     px, px, (double)cb->q_max);
     }
 }
 
-/* The straight-line program: every term and, after a plane's last, its value into the masks. */
+/* With d: d[P] = lane 0 of the value v of plane P times 1/c_P (its scale), which keeps v's sign. */
+static void put_value_store(sbuf *o, const slp_prog *p, int plane, const char *px)
+{
+    char k[40];
+    rat one, inv;
+    rat_set_si(&one, 1);
+    sbuf_printf(o, "        if (d)\n            d[%d] = %svfirst(v)", plane, px);
+    if (!rat_equal(&p->c[plane], &one) && !rat_div(&inv, &one, &p->c[plane]))
+        sbuf_printf(o, " * %s", fmt_float_literal(k, &inv));
+    sbuf_puts(o, ";\n");
+}
+
+/* The straight-line program: every term and, after a plane's last, its value into the masks
+ * (and into d). */
 static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
                        ptp_error *err)
 {
@@ -413,10 +413,11 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
         put_term(o, p, i, world, first_group);
         if (!last)
             continue;
+        put_value_store(o, p, x->plane, px);
         /* the masks: set by the first plane (certified: by the size guard), then or-ed */
         op = x->plane == p->terms[0].plane ? "=" : "|=";
         if (info->certified)
-            sbuf_printf(o, "        t = %af * ER3 + %af * F; /* the bound of plane %d */\n"
+            sbuf_printf(o, "        t = %.8ef * ER3 + %.8ef * F; /* the bound of plane %d */\n"
                            "        notlt |= (v < -t) == 0;\n        notgt |= (v > t) == 0;\n"
                            "        plt %s (v < 0.0f) == 0;\n        pgt %s (v > 0.0f) == 0;\n",
                         (double)cb->k[x->plane], (double)cb->k2[x->plane], x->plane, op, op);
@@ -435,8 +436,9 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
 /* The lanes and certify64 compute a class arithmetically from 0/1 masks, in these numbers. */
 _Static_assert(PTP_FRONT == 0 && PTP_BACK == 1 && PTP_SILHOUETTE == 2, "ptp_class's numbers");
 
-/* The end of the lanes function: each lane's class from the masks, stored. */
-static void put_lanes_class(sbuf *o, const out_info *info)
+/* The end of the lanes body: each lane's class from the masks, stored; then lanes and values,
+ * which inline it. */
+static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
     int strict = info->rule == OUT_STRICT || info->certified;
@@ -457,8 +459,19 @@ static void put_lanes_class(sbuf *o, const out_info *info)
                 info->certified ? "(1 - notlt) + 2 * (notlt & notgt) + (notlt & notgt & (1 - (plt & pgt)))"
                 : strict ? "(1 - notlt) + 2 * (notlt & notgt)"
                          : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
-    sbuf_printf(o, "    }\n}\n"
-                   "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
+    sbuf_printf(o, "    }\n}\n\n"
+                   "/* The classes of n patches: lanes_body without values (one copy: it is large). */\n"
+                   "#if defined(__GNUC__) && !defined(__clang__)\n"
+                   "__attribute__((noinline, noclone))\n"
+                   "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
+                   "static void %slanes(const float *%sRESTRICT soa, size_t stride, size_t n, const float eye[4],\n"
+                   "%*sunsigned char *%sRESTRICT cls)\n{\n"
+                   "    %slanes_body(soa, stride, n, eye, cls, NULL);\n}\n\n"
+                   "void %svalues(const float cp[][4], const float eye[4], float d[])\n{\n"
+                   "    unsigned char c;\n"
+                   "    %slanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */\n}\n"
+                   "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n",
+                px, up, (int)strlen(px) + 18, "", up, px, px, px);
 }
 
 /* The straight-line kernel over n patches in structure-of-arrays order (the lanes function). */
@@ -471,7 +484,7 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     put_loads(o, t, info, cb);
     if ((st = put_program(o, p, cb, info, err)) != PTP_OK)
         return st;
-    put_lanes_class(o, info);
+    put_lanes_class(o, info, up);
     return PTP_OK;
 }
 
@@ -606,12 +619,23 @@ static int put_code(sbuf *o, char *flops, const tp_table *t, const out_info *inf
     return st;
 }
 
+/* The macros that record the header's variant (the options it was generated with). */
+static void put_variant(sbuf *o, const tp_table *t, const out_info *info, const char *up)
+{
+    sbuf_printf(o, "#define %sDEGREE_U %d\n#define %sDEGREE_V %d\n"
+                   "#define %sSPACE_%s 1\n#define %sRULE_%s 1\n"
+                   "#define %sCERTIFIED %d\n#define %sREFINE %d\n",
+                up, t->dom.n, up, t->dom.m, up, info->space == OUT_WORLD ? "WORLD" : "CLIP", up,
+                info->rule == OUT_DEGENERATE ? "DEGENERATE" : "STRICT", up, info->certified != 0,
+                up, info->refine);
+}
+
 int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    sbuf banner, tables, funcs;
+    sbuf banner, tables, funcs, variant;
     out_info plain;
-    char up[64], file[96], points[16], planes[16], count[80], flops[24];
-    tpl_slot slots[9];
+    char up[64], file[96], points[16], planes[16], count[80], flops[24], name[80];
+    tpl_slot slots[10];
     int st;
     fmt_upper(up, sizeof up, info->prefix);
     fmt_file_name(file, sizeof file, info->prefix, ".h");
@@ -621,19 +645,25 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     sbuf_init(&banner);
     sbuf_init(&tables);
     sbuf_init(&funcs);
+    sbuf_init(&variant);
+    put_variant(&variant, t, info, up);
     plain = *info;
     plain.sched = NULL; /* one thread per patch: no schedule */
     fmt_banner(&banner, t, &plain, file, "C99 single header (stb style)",
-                " * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.\n"
+                " * In exactly one C or C++ file, #define <PREFIX>IMPLEMENTATION before including this header.\n"
+                " * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).\n"
                 " * Headers of several degrees (prefixes) may be included in one program.\n");
     sbuf_printf(&tables, "\n#define %sTERMS %zu\n", up, t->nterms);
-    out_c_arrays(&tables, t, NULL, info->prefix, count, NULL, 0);
+    /* <prefix>term_idx and term_wgt: not the table target's names, so both headers go together */
+    snprintf(name, sizeof name, "%sterm_", info->prefix);
+    out_c_arrays(&tables, t, NULL, name, count, NULL, 0);
     put_functions(&funcs, info, up);
     st = put_code(&funcs, flops, t, info, up, err);
     if (st) {
         sbuf_clear(&banner);
         sbuf_clear(&tables);
         sbuf_clear(&funcs);
+        sbuf_clear(&variant);
         return st;
     }
     slots[0] = (tpl_slot){"BANNER", banner.s};
@@ -646,11 +676,13 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     slots[6] = (tpl_slot){"TABLES", tables.s};
     slots[7] = (tpl_slot){"FUNCTIONS", funcs.s};
     slots[8] = (tpl_slot){"FLOPS", flops};
-    st = banner.failed || tables.failed || funcs.failed
+    slots[9] = (tpl_slot){"VARIANT", variant.s};
+    st = banner.failed || tables.failed || funcs.failed || variant.failed
              ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
-             : tpl_fill(o, "c/kernel.h", slots, 9, err);
+             : tpl_fill(o, "c/kernel.h", slots, 10, err);
     sbuf_clear(&banner);
     sbuf_clear(&tables);
     sbuf_clear(&funcs);
+    sbuf_clear(&variant);
     return st;
 }

@@ -24,8 +24,3 @@ const kern_target kern_cuda = {
         " * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.\n",
     .fabs = "fabsf", .fmax = "fmaxf",
 };
-
-int emit_cuda(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
-{
-    return kern_emit_gpu(o, t, info, &kern_cuda, err);
-}

@@ -24,8 +24,3 @@ const kern_target kern_glsl = {
         " * workgroup (x, y) handles the patches of block y * num_groups_x + x.\n",
     .fabs = "abs", .fmax = "max",
 };
-
-int emit_glsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
-{
-    return kern_emit_gpu(o, t, info, &kern_glsl, err);
-}

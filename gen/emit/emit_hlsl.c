@@ -26,8 +26,3 @@ const kern_target kern_hlsl = {
         " * workgroup (x, y) handles the patches of block y * groups_x + x.\n",
     .fabs = "abs", .fmax = "max",
 };
-
-int emit_hlsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
-{
-    return kern_emit_gpu(o, t, info, &kern_hlsl, err);
-}

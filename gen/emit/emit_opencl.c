@@ -24,8 +24,3 @@ const kern_target kern_opencl = {
         " * work-group (x, y) handles the patches of block y * num_groups(0) + x.\n",
     .fabs = "fabs", .fmax = "fmax",
 };
-
-int emit_opencl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
-{
-    return kern_emit_gpu(o, t, info, &kern_opencl, err);
-}

@@ -91,8 +91,3 @@ const kern_target kern_wgsl = {
         " * patches of block y * num_workgroups.x + x.\n",
     .fabs = "abs", .fmax = "max",
 };
-
-int emit_wgsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
-{
-    return kern_emit_gpu(o, t, info, &kern_wgsl, err);
-}

@@ -30,8 +30,11 @@ void fmt_banner(sbuf *o, const tp_table *t, const out_info *info, const char *fi
                 x.plane_rule, x.plane_axes);
     if (info->space == OUT_CLIP)
         sbuf_puts(o, " * Clip space: the points are in clip space and eye = (0, 0, alpha, 0); the values are\n"
-                     " * d_P = eye.z * t_P.z. alpha = sign(det Proj) * Proj[2][3]: > 0 for OpenGL and < 0 for\n"
-                     " * Direct3D projections (reversed Z included); negate it to flip the orientation.\n");
+                     " * d_P = eye.z * t_P.z. alpha = sign(det P) * P(2, 3), P(2, 3) the element in row 2,\n"
+                     " * column 3 of the projection P for column vectors (clip = P * view), which carries\n"
+                     " * view w into clip z: > 0 for glm's OpenGL and DirectXMath's RH projections, < 0 for\n"
+                     " * Vulkan's y flip and DirectXMath's LH (reversed Z keeps the sign); negate it to flip\n"
+                     " * the orientation. The C header's <prefix>alpha() computes it from a matrix.\n");
     else
         sbuf_puts(o, " * World space: eye is the homogeneous eye point in the points' space; the values are\n"
                      " * d_P = eye . t_P. Negate eye to flip the orientation.\n");

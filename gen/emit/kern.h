@@ -63,7 +63,7 @@ typedef struct {
  * A string field documented "or NULL" may be left out of the initializer. The kernel's text
  * names what its template declares: cp (the points, vec4), cls (the classes), planes, eye and
  * patch_count. A new target is a file with its table (and, outside the C family, its
- * kern_syntax), its template templates/<name>/, and an entry where the targets are listed. */
+ * kern_syntax), its template templates/<name>/, and an entry naming the table in emit/targets.c. */
 struct kern_target {
     const char *name;          /* "glsl" */
     const char *language;      /* for the banner: "GLSL 4.50 compute shader" */
@@ -99,12 +99,7 @@ extern const kern_target kern_glsl, kern_hlsl, kern_opencl, kern_cuda, kern_wgsl
 int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                   ptp_error *err);
 
-/* The targets (one emitter each); signatures as the outputs of out.h. */
-int emit_glsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
-int emit_hlsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
-int emit_opencl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
-int emit_cuda(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
-int emit_wgsl(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
+/* The C target (a header, not a kernel); the signature of the outputs of out.h. */
 int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
 
 #endif

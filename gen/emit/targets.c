@@ -2,24 +2,22 @@
  * Options per target follow what each emitter reads from out_info. */
 #include "emit/targets.h"
 
-#include "emit/kern.h"
-
 #include <string.h>
 
 #define KERNEL (TGT_SPACE | TGT_RULE | TGT_PLANES | TGT_CERTIFIED | TGT_PREFIX | TGT_SCHEDULE)
 
 const tgt_target tgt_targets[] = {
-    {"json", ".json", "the exact terms and schedule, ptpgen-planes/1", out_json, TGT_SCHEDULE},
-    {"table", "_table.h", "a C header in the paper's idx/wgt format", out_table,
+    {"json", ".json", "the exact terms and schedule, ptpgen-planes/1", out_json, NULL, TGT_SCHEDULE},
+    {"table", "_table.h", "a C header in the paper's idx/wgt format", out_table, NULL,
      TGT_PREFIX | TGT_SCHEDULE},
-    {"stats", "", "the term count of every plane and the schedule", out_stats, TGT_SCHEDULE},
-    {"c", ".h", "a C99 single header (stb style)", emit_c,
+    {"stats", "", "the term count of every plane and the schedule", out_stats, NULL, TGT_SCHEDULE},
+    {"c", ".h", "a C99 single header (stb style)", emit_c, NULL,
      TGT_SPACE | TGT_RULE | TGT_CERTIFIED | TGT_REFINE | TGT_PREFIX},
-    {"glsl", ".comp", "a compute kernel", emit_glsl, KERNEL},
-    {"hlsl", ".hlsl", "a compute kernel", emit_hlsl, KERNEL},
-    {"opencl", ".cl", "a compute kernel", emit_opencl, KERNEL},
-    {"cuda", ".cu", "a compute kernel", emit_cuda, KERNEL},
-    {"wgsl", ".wgsl", "a compute kernel", emit_wgsl, KERNEL},
+    {"glsl", ".comp", "a compute kernel", NULL, &kern_glsl, KERNEL},
+    {"hlsl", ".hlsl", "a compute kernel", NULL, &kern_hlsl, KERNEL},
+    {"opencl", ".cl", "a compute kernel", NULL, &kern_opencl, KERNEL},
+    {"cuda", ".cu", "a compute kernel", NULL, &kern_cuda, KERNEL},
+    {"wgsl", ".wgsl", "a compute kernel", NULL, &kern_wgsl, KERNEL},
 };
 const int tgt_count = (int)(sizeof tgt_targets / sizeof *tgt_targets);
 
@@ -27,6 +25,12 @@ static const char *const option_names[] = {"space",  "rule",   "planes",  "certi
                                            "refine", "prefix", "schedule"};
 _Static_assert(sizeof option_names / sizeof *option_names == TGT_NOPTIONS,
                "one name per TGT_ bit");
+
+int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_info *info,
+                    ptp_error *err)
+{
+    return g->gpu ? kern_emit_gpu(o, t, info, g->gpu, err) : g->emit(o, t, info, err);
+}
 
 const tgt_target *tgt_find(const char *name)
 {

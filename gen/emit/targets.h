@@ -3,7 +3,7 @@
 #ifndef TARGETS_H
 #define TARGETS_H
 
-#include "emit/out.h"
+#include "emit/kern.h"
 
 /* The generation options a target uses: an option whose bit a target lacks leaves its bytes
  * unchanged (apart from the command line a banner quotes). */
@@ -28,7 +28,8 @@ typedef struct {
     const char *suffix;      /* ending of the default file name after the prefix without its '_'
                                 ("ptp_3x3" + ".comp"), "" for a report that is no file (stats) */
     const char *description; /* one line, for the usage text */
-    tgt_emit emit;
+    tgt_emit emit;           /* the emitter, or NULL for a GPU kernel */
+    const kern_target *gpu;  /* a GPU kernel's table for kern_emit_gpu, or NULL */
     unsigned options;        /* the TGT_ bits of the options its output depends on */
 } tgt_target;
 
@@ -36,6 +37,9 @@ typedef struct {
 extern const tgt_target tgt_targets[];
 extern const int tgt_count;
 
+/* Writes target g's output for table t into o: its emitter, or kern_emit_gpu with its table. */
+int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_info *info,
+                    ptp_error *err);
 /* The target called name, or NULL. */
 const tgt_target *tgt_find(const char *name);
 /* The option name of TGT_ bit number i (0 <= i < TGT_NOPTIONS): "space", ..., "schedule". */

@@ -62,8 +62,9 @@ int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
     p->nplanes = t->dom.nplanes;
     p->pairs = malloc(3 * n * sizeof *p->pairs);
     p->s = malloc(n * sizeof *p->s);
+    p->c = calloc((size_t)t->dom.nplanes, sizeof *p->c);
     p->terms = malloc(n * sizeof *p->terms);
-    if (!pair_of || !sc || !p->pairs || !p->s || !p->terms) {
+    if (!pair_of || !sc || !p->pairs || !p->s || !p->c || !p->terms) {
         st = ptp_fail(err, PTP_ENOMEM, "out of memory building the straight-line program");
         goto done;
     }
@@ -78,6 +79,7 @@ int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
                           t->terms[a].plane);
             goto done;
         }
+        p->c[t->terms[a].plane] = c;
         for (i = a; i < b; i++) {
             sc[i - a].index = i;
             if (rat_mul(&sc[i - a].s, &t->terms[i].w, &c)) {
@@ -118,6 +120,7 @@ void slp_clear(slp_prog *p)
 {
     free(p->pairs);
     free(p->s);
+    free(p->c);
     free(p->terms);
     memset(p, 0, sizeof *p);
 }

@@ -26,6 +26,7 @@ typedef struct {
     size_t npairs, ngroups, nterms;
     slp_pair *pairs; /* in order of first use */
     rat *s;          /* the scale s > 0 of every group; s == 1 needs no product */
+    rat *c;          /* the scale c_P > 0 of every plane: its value is c_P times the true one */
     slp_term *terms; /* by plane, then group */
 } slp_prog;
 /* Builds the program of t. p is uninitialized on entry and on failure (PTP_ENOMEM,

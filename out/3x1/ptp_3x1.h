@@ -6,12 +6,16 @@
  * k = i*2 + j with i along u. The 16 control planes t_P of the tangent plane
  * T = cross4(B, dB/du, dB/dv) have bidegree 7x1, P = I*2 + J with I along u.
  * Clip space: the points are in clip space and eye = (0, 0, alpha, 0); the values are
- * d_P = eye.z * t_P.z. alpha = sign(det Proj) * Proj[2][3]: > 0 for OpenGL and < 0 for
- * Direct3D projections (reversed Z included); negate it to flip the orientation.
+ * d_P = eye.z * t_P.z. alpha = sign(det P) * P(2, 3), P(2, 3) the element in row 2,
+ * column 3 of the projection P for column vectors (clip = P * view), which carries
+ * view w into clip z: > 0 for glm's OpenGL and DirectXMath's RH projections, < 0 for
+ * Vulkan's y flip and DirectXMath's LH (reversed Z keeps the sign); negate it to flip
+ * the orientation. The C header's <prefix>alpha() computes it from a matrix.
  * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule strict: back iff every d_P < 0, front iff every d_P > 0.
  * A NaN value makes a patch silhouette. Values are at true scale (plane_scale 1).
  *
- * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * In exactly one C or C++ file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).
  * Headers of several degrees (prefixes) may be included in one program.
  */
 
@@ -24,6 +28,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_3X1_DEGREE_U 3
+#define PTP_3X1_DEGREE_V 1
+#define PTP_3X1_SPACE_CLIP 1
+#define PTP_3X1_RULE_STRICT 1
+#define PTP_3X1_CERTIFIED 0
+#define PTP_3X1_REFINE 0
 #define PTP_3X1_POINTS 8
 #define PTP_3X1_PLANES 16
 #define PTP_3X1_FRONT 0u
@@ -38,7 +51,8 @@ extern "C" {
 
 /* The 16 control planes of one patch, all four components, at true scale. */
 void ptp_3x1_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_3x1_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_3X1_FRONT, PTP_3X1_BACK or PTP_3X1_SILHOUETTE. */
 unsigned ptp_3x1_classify(const float cp[][4], const float eye[4]);
@@ -50,6 +64,20 @@ void ptp_3x1_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 void ptp_3x1_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
 
+/* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
+ * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
+ * OpenGL, glm and Vulkan programs hold it; DirectXMath's XMMATRIX and XMFLOAT4X4 too: they hold
+ * M = P^T for row vectors (clip = view * M) row by row, the same 16 floats. ROW_MAJOR: P(r, c) at
+ * proj[r * 4 + c] (P written row by row, as on paper). */
+#define PTP_3X1_COLUMN_MAJOR 0
+#define PTP_3X1_ROW_MAJOR 1
+/* alpha of the clip-space eye (0, 0, alpha, 0) for a perspective projection proj in layout:
+ * sign(det P) * P(2, 3). The view-space eye (0, 0, 0, 1) maps to column 3 of P, (0, 0, P(2, 3),
+ * 0), and cross4 of transformed points is det(P) P^-T cross4, so the sign of det P keeps the
+ * world-space classes (for a model-view matrix of positive determinant; negate alpha for a
+ * mirroring one). 0 if det P is 0. */
+float ptp_3x1_alpha(const float proj[16], int layout);
+
 #ifdef __cplusplus
 }
 #endif
@@ -57,6 +85,20 @@ void ptp_3x1_classify_soa(const float *soa, size_t stride, size_t patch_count, c
 
 #if defined(PTP_3X1_IMPLEMENTATION) && !defined(PTP_3X1_IMPLEMENTED)
 #define PTP_3X1_IMPLEMENTED
+/* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
+ * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
+    defined(__ASSOCIATIVE_MATH__)
+#error "ptp_3x1_: do not compile this header's implementation with -ffast-math, -ffinite-math-only or -fassociative-math: they drop the NaN checks and regroup the sums whose signs are the classes"
+#endif
+/* restrict: C99's, GNU C++'s and MSVC's __restrict, else nothing. */
+#if defined(__cplusplus) && (defined(__GNUC__) || defined(_MSC_VER))
+#define PTP_3X1_RESTRICT __restrict
+#elif !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define PTP_3X1_RESTRICT restrict
+#else
+#define PTP_3X1_RESTRICT
+#endif
 #if defined(__SSE2__) && !defined(PTP_3X1_NO_SSE)
 #include <emmintrin.h>
 #endif
@@ -90,6 +132,11 @@ static inline void ptp_3x1_vstore(unsigned char *cls, ptp_3x1_vm c, size_t count
     for (i = 0; i < count && i < PTP_3X1_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_3x1_vfirst(ptp_3x1_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_3x1_vf ptp_3x1_vabsmax(ptp_3x1_vf r, ptp_3x1_vf x)
 {
@@ -113,11 +160,39 @@ static inline ptp_3x1_vf ptp_3x1_vabsmax(ptp_3x1_vf r, ptp_3x1_vf x)
 {
     return PTP_3X1_ABSMAX(r, x);
 }
+static inline float ptp_3x1_vfirst(ptp_3x1_vf v)
+{
+    return v;
+}
 #endif
+
+float ptp_3x1_alpha(const float proj[16], int layout)
+{
+    double m[4][4], s[6], c[6], det;
+    int r, k;
+    for (r = 0; r < 4; r++)
+        for (k = 0; k < 4; k++)
+            m[r][k] = proj[layout == PTP_3X1_ROW_MAJOR ? r * 4 + k : k * 4 + r];
+    /* det P by Laplace along rows 0 and 1: their 2x2 minors s times the complementary c */
+    s[0] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    s[1] = m[0][0] * m[1][2] - m[0][2] * m[1][0];
+    s[2] = m[0][0] * m[1][3] - m[0][3] * m[1][0];
+    s[3] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    s[4] = m[0][1] * m[1][3] - m[0][3] * m[1][1];
+    s[5] = m[0][2] * m[1][3] - m[0][3] * m[1][2];
+    c[0] = m[2][2] * m[3][3] - m[2][3] * m[3][2];
+    c[1] = m[2][1] * m[3][3] - m[2][3] * m[3][1];
+    c[2] = m[2][1] * m[3][2] - m[2][2] * m[3][1];
+    c[3] = m[2][0] * m[3][3] - m[2][3] * m[3][0];
+    c[4] = m[2][0] * m[3][2] - m[2][2] * m[3][0];
+    c[5] = m[2][0] * m[3][1] - m[2][1] * m[3][0];
+    det = s[0] * c[0] - s[1] * c[1] + s[2] * c[2] + s[3] * c[3] - s[4] * c[4] + s[5] * c[5];
+    return det > 0 ? (float)m[2][3] : det < 0 ? (float)-m[2][3] : 0.0f;
+}
 
 #define PTP_3X1_TERMS 48
 
-static const unsigned short ptp_3x1_idx[PTP_3X1_TERMS][4] = {
+static const unsigned short ptp_3x1_term_idx[PTP_3X1_TERMS][4] = {
     {0, 0, 1, 2},
     {1, 0, 1, 3},
     {2, 0, 1, 4},
@@ -168,7 +243,7 @@ static const unsigned short ptp_3x1_idx[PTP_3X1_TERMS][4] = {
     {15, 5, 6, 7},
 };
 
-static const float ptp_3x1_wgt[PTP_3X1_TERMS] = {
+static const float ptp_3x1_term_wgt[PTP_3X1_TERMS] = {
     -3.0f,           /* -3 */
     -3.0f,           /* -3 */
     -0.857142866f,   /* -6/7 */
@@ -219,8 +294,8 @@ static const float ptp_3x1_wgt[PTP_3X1_TERMS] = {
     3.0f,            /* 3 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -254,24 +329,10 @@ void ptp_3x1_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_3X1_TERMS; x++) {
         float r[4];
-        ptp_3x1_cross4(r, cp[ptp_3x1_idx[x][1]], cp[ptp_3x1_idx[x][2]], cp[ptp_3x1_idx[x][3]]);
+        ptp_3x1_cross4(r, cp[ptp_3x1_term_idx[x][1]], cp[ptp_3x1_term_idx[x][2]], cp[ptp_3x1_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_3x1_idx[x][0]][c] += ptp_3x1_wgt[x] * r[c];
+            t[ptp_3x1_term_idx[x][0]][c] += ptp_3x1_term_wgt[x] * r[c];
     }
-}
-
-void ptp_3x1_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_3X1_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_3X1_TERMS; x++) {
-        float r[4];
-        ptp_3x1_cross4(r, cp[ptp_3x1_idx[x][1]], cp[ptp_3x1_idx[x][2]], cp[ptp_3x1_idx[x][3]]);
-        d[ptp_3x1_idx[x][0]] += ptp_3x1_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_3X1_PLANES; x++)
-        d[x] *= eye[2];
 }
 
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
@@ -280,14 +341,16 @@ void ptp_3x1_values(const float cp[][4], const float eye[4], float d[])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_3X1_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *restrict cls)
+static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_3X1_RESTRICT cls,
+                                       float *PTP_3X1_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -332,12 +395,16 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_3x1_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_3x1_vfirst(v) * 3.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_3x1_vf m1_3 = x1 * y3 - y1 * x3;
         const ptp_3x1_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
+        if (d)
+            d[1] = ptp_3x1_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_3x1_vf m1_4 = x1 * y4 - y1 * x4;
@@ -347,6 +414,8 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_3x1_vf m2_3 = x2 * y3 - y2 * x3;
         u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v += 3.0f * u;
+        if (d)
+            d[2] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_3x1_vf m1_5 = x1 * y5 - y1 * x5;
@@ -355,6 +424,8 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         v = 2.0f * u;
         u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
         v += 3.0f * u;
+        if (d)
+            d[3] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_3x1_vf m1_6 = x1 * y6 - y1 * x6;
@@ -369,6 +440,8 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_3x1_vf m3_4 = x3 * y4 - y3 * x4;
         u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v += 6.0f * u;
+        if (d)
+            d[4] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_3x1_vf m1_7 = x1 * y7 - y1 * x7;
@@ -381,6 +454,8 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = ((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v += 6.0f * u;
+        if (d)
+            d[5] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_3x1_vf m2_7 = x2 * y7 - y2 * x7;
@@ -397,6 +472,8 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v += 9.0f * u;
+        if (d)
+            d[6] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
@@ -410,6 +487,8 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
         v += 9.0f * u;
+        if (d)
+            d[7] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_3x1_vf m4_6 = x4 * y6 - y4 * x6;
@@ -425,6 +504,8 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v += 9.0f * u;
+        if (d)
+            d[8] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_3x1_vf m5_7 = x5 * y7 - y5 * x7;
@@ -438,6 +519,8 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
         v += 9.0f * u;
+        if (d)
+            d[9] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_3x1_vf m6_7 = x6 * y7 - y6 * x7;
@@ -448,6 +531,8 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = -((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v += 6.0f * u;
+        if (d)
+            d[10] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
@@ -457,26 +542,36 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v += 6.0f * u;
+        if (d)
+            d[11] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v = 2.0f * u;
         u = -((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
         v += 3.0f * u;
+        if (d)
+            d[12] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = 2.0f * u;
         u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
         v += 3.0f * u;
+        if (d)
+            d[13] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v = u;
+        if (d)
+            d[14] = ptp_3x1_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
         v = u;
+        if (d)
+            d[15] = ptp_3x1_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -485,6 +580,24 @@ static void ptp_3x1_lanes(const float *restrict soa, size_t stride, size_t n, co
         notgt &= 1;
         ptp_3x1_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_3x1_lanes(const float *PTP_3X1_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_3X1_RESTRICT cls)
+{
+    ptp_3x1_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_3x1_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_3x1_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -6,12 +6,16 @@
  * k = i*4 + j with i along u. The 64 control planes t_P of the tangent plane
  * T = cross4(B, dB/du, dB/dv) have bidegree 7x7, P = I*8 + J with I along u.
  * Clip space: the points are in clip space and eye = (0, 0, alpha, 0); the values are
- * d_P = eye.z * t_P.z. alpha = sign(det Proj) * Proj[2][3]: > 0 for OpenGL and < 0 for
- * Direct3D projections (reversed Z included); negate it to flip the orientation.
+ * d_P = eye.z * t_P.z. alpha = sign(det P) * P(2, 3), P(2, 3) the element in row 2,
+ * column 3 of the projection P for column vectors (clip = P * view), which carries
+ * view w into clip z: > 0 for glm's OpenGL and DirectXMath's RH projections, < 0 for
+ * Vulkan's y flip and DirectXMath's LH (reversed Z keeps the sign); negate it to flip
+ * the orientation. The C header's <prefix>alpha() computes it from a matrix.
  * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule strict: back iff every d_P < 0, front iff every d_P > 0.
  * A NaN value makes a patch silhouette. Values are at true scale (plane_scale 1).
  *
- * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * In exactly one C or C++ file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).
  * Headers of several degrees (prefixes) may be included in one program.
  */
 
@@ -24,6 +28,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_3X3_DEGREE_U 3
+#define PTP_3X3_DEGREE_V 3
+#define PTP_3X3_SPACE_CLIP 1
+#define PTP_3X3_RULE_STRICT 1
+#define PTP_3X3_CERTIFIED 0
+#define PTP_3X3_REFINE 0
 #define PTP_3X3_POINTS 16
 #define PTP_3X3_PLANES 64
 #define PTP_3X3_FRONT 0u
@@ -38,7 +51,8 @@ extern "C" {
 
 /* The 64 control planes of one patch, all four components, at true scale. */
 void ptp_3x3_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_3x3_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_3X3_FRONT, PTP_3X3_BACK or PTP_3X3_SILHOUETTE. */
 unsigned ptp_3x3_classify(const float cp[][4], const float eye[4]);
@@ -50,6 +64,20 @@ void ptp_3x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 void ptp_3x3_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
 
+/* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
+ * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
+ * OpenGL, glm and Vulkan programs hold it; DirectXMath's XMMATRIX and XMFLOAT4X4 too: they hold
+ * M = P^T for row vectors (clip = view * M) row by row, the same 16 floats. ROW_MAJOR: P(r, c) at
+ * proj[r * 4 + c] (P written row by row, as on paper). */
+#define PTP_3X3_COLUMN_MAJOR 0
+#define PTP_3X3_ROW_MAJOR 1
+/* alpha of the clip-space eye (0, 0, alpha, 0) for a perspective projection proj in layout:
+ * sign(det P) * P(2, 3). The view-space eye (0, 0, 0, 1) maps to column 3 of P, (0, 0, P(2, 3),
+ * 0), and cross4 of transformed points is det(P) P^-T cross4, so the sign of det P keeps the
+ * world-space classes (for a model-view matrix of positive determinant; negate alpha for a
+ * mirroring one). 0 if det P is 0. */
+float ptp_3x3_alpha(const float proj[16], int layout);
+
 #ifdef __cplusplus
 }
 #endif
@@ -57,6 +85,20 @@ void ptp_3x3_classify_soa(const float *soa, size_t stride, size_t patch_count, c
 
 #if defined(PTP_3X3_IMPLEMENTATION) && !defined(PTP_3X3_IMPLEMENTED)
 #define PTP_3X3_IMPLEMENTED
+/* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
+ * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
+    defined(__ASSOCIATIVE_MATH__)
+#error "ptp_3x3_: do not compile this header's implementation with -ffast-math, -ffinite-math-only or -fassociative-math: they drop the NaN checks and regroup the sums whose signs are the classes"
+#endif
+/* restrict: C99's, GNU C++'s and MSVC's __restrict, else nothing. */
+#if defined(__cplusplus) && (defined(__GNUC__) || defined(_MSC_VER))
+#define PTP_3X3_RESTRICT __restrict
+#elif !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define PTP_3X3_RESTRICT restrict
+#else
+#define PTP_3X3_RESTRICT
+#endif
 #if defined(__SSE2__) && !defined(PTP_3X3_NO_SSE)
 #include <emmintrin.h>
 #endif
@@ -90,6 +132,11 @@ static inline void ptp_3x3_vstore(unsigned char *cls, ptp_3x3_vm c, size_t count
     for (i = 0; i < count && i < PTP_3X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_3x3_vfirst(ptp_3x3_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_3x3_vf ptp_3x3_vabsmax(ptp_3x3_vf r, ptp_3x3_vf x)
 {
@@ -113,11 +160,39 @@ static inline ptp_3x3_vf ptp_3x3_vabsmax(ptp_3x3_vf r, ptp_3x3_vf x)
 {
     return PTP_3X3_ABSMAX(r, x);
 }
+static inline float ptp_3x3_vfirst(ptp_3x3_vf v)
+{
+    return v;
+}
 #endif
+
+float ptp_3x3_alpha(const float proj[16], int layout)
+{
+    double m[4][4], s[6], c[6], det;
+    int r, k;
+    for (r = 0; r < 4; r++)
+        for (k = 0; k < 4; k++)
+            m[r][k] = proj[layout == PTP_3X3_ROW_MAJOR ? r * 4 + k : k * 4 + r];
+    /* det P by Laplace along rows 0 and 1: their 2x2 minors s times the complementary c */
+    s[0] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    s[1] = m[0][0] * m[1][2] - m[0][2] * m[1][0];
+    s[2] = m[0][0] * m[1][3] - m[0][3] * m[1][0];
+    s[3] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    s[4] = m[0][1] * m[1][3] - m[0][3] * m[1][1];
+    s[5] = m[0][2] * m[1][3] - m[0][3] * m[1][2];
+    c[0] = m[2][2] * m[3][3] - m[2][3] * m[3][2];
+    c[1] = m[2][1] * m[3][3] - m[2][3] * m[3][1];
+    c[2] = m[2][1] * m[3][2] - m[2][2] * m[3][1];
+    c[3] = m[2][0] * m[3][3] - m[2][3] * m[3][0];
+    c[4] = m[2][0] * m[3][2] - m[2][2] * m[3][0];
+    c[5] = m[2][0] * m[3][1] - m[2][1] * m[3][0];
+    det = s[0] * c[0] - s[1] * c[1] + s[2] * c[2] + s[3] * c[3] - s[4] * c[4] + s[5] * c[5];
+    return det > 0 ? (float)m[2][3] : det < 0 ? (float)-m[2][3] : 0.0f;
+}
 
 #define PTP_3X3_TERMS 516
 
-static const unsigned short ptp_3x3_idx[PTP_3X3_TERMS][4] = {
+static const unsigned short ptp_3x3_term_idx[PTP_3X3_TERMS][4] = {
     {0, 0, 1, 4},
     {1, 0, 1, 5},
     {1, 0, 2, 4},
@@ -636,7 +711,7 @@ static const unsigned short ptp_3x3_idx[PTP_3X3_TERMS][4] = {
     {63, 11, 14, 15},
 };
 
-static const float ptp_3x3_wgt[PTP_3X3_TERMS] = {
+static const float ptp_3x3_term_wgt[PTP_3X3_TERMS] = {
     -9.0f,           /* -9 */
     -3.85714293f,    /* -27/7 */
     -2.57142854f,    /* -18/7 */
@@ -1155,8 +1230,8 @@ static const float ptp_3x3_wgt[PTP_3X3_TERMS] = {
     9.0f,            /* 9 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -1190,24 +1265,10 @@ void ptp_3x3_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_3X3_TERMS; x++) {
         float r[4];
-        ptp_3x3_cross4(r, cp[ptp_3x3_idx[x][1]], cp[ptp_3x3_idx[x][2]], cp[ptp_3x3_idx[x][3]]);
+        ptp_3x3_cross4(r, cp[ptp_3x3_term_idx[x][1]], cp[ptp_3x3_term_idx[x][2]], cp[ptp_3x3_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_3x3_idx[x][0]][c] += ptp_3x3_wgt[x] * r[c];
+            t[ptp_3x3_term_idx[x][0]][c] += ptp_3x3_term_wgt[x] * r[c];
     }
-}
-
-void ptp_3x3_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_3X3_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_3X3_TERMS; x++) {
-        float r[4];
-        ptp_3x3_cross4(r, cp[ptp_3x3_idx[x][1]], cp[ptp_3x3_idx[x][2]], cp[ptp_3x3_idx[x][3]]);
-        d[ptp_3x3_idx[x][0]] += ptp_3x3_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_3X3_PLANES; x++)
-        d[x] *= eye[2];
 }
 
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
@@ -1216,14 +1277,16 @@ void ptp_3x3_values(const float cp[][4], const float eye[4], float d[])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_3X3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *restrict cls)
+static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_3X3_RESTRICT cls,
+                                       float *PTP_3X3_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -1284,6 +1347,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_3x3_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_3x3_vfirst(v) * 9.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_3x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -1294,6 +1359,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_3x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v += 3.0f * u;
+        if (d)
+            d[1] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_3x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -1309,6 +1376,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_3x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v += 6.0f * u;
+        if (d)
+            d[2] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_3x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -1326,6 +1395,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v += 9.0f * u;
+        if (d)
+            d[3] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_3x3_vf m2_3 = x2 * y3 - y2 * x3;
@@ -1341,6 +1412,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v += 9.0f * u;
+        if (d)
+            d[4] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_3x3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -1351,16 +1424,22 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
         v += 6.0f * u;
+        if (d)
+            d[5] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = 2.0f * u;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v += 3.0f * u;
+        if (d)
+            d[6] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
+        if (d)
+            d[7] = ptp_3x3_vfirst(v) * 9.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_3x3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -1370,6 +1449,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_3x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v += 3.0f * u;
+        if (d)
+            d[8] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_3x3_vf m2_8 = x2 * y8 - y2 * x8;
@@ -1383,6 +1464,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v += 9.0f * u;
+        if (d)
+            d[9] = ptp_3x3_vfirst(v) * 0.183673471f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_3x3_vf m3_8 = x3 * y8 - y3 * x8;
@@ -1405,6 +1488,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += 18.0f * u;
+        if (d)
+            d[10] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_3x3_vf m1_11 = x1 * y11 - y1 * x11;
@@ -1430,6 +1515,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v += 27.0f * u;
+        if (d)
+            d[11] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         u = -((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
@@ -1453,6 +1540,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v += 27.0f * u;
+        if (d)
+            d[12] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_3x3_vf m3_11 = x3 * y11 - y3 * x11;
@@ -1470,6 +1559,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         v += 18.0f * u;
+        if (d)
+            d[13] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = -((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
@@ -1479,12 +1570,16 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v += 9.0f * u;
+        if (d)
+            d[14] = ptp_3x3_vfirst(v) * 0.183673471f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
         v = 2.0f * u;
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v += 3.0f * u;
+        if (d)
+            d[15] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_3x3_vf m1_12 = x1 * y12 - y1 * x12;
@@ -1499,6 +1594,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_3x3_vf m5_8 = x5 * y8 - y5 * x8;
         u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
         v += 6.0f * u;
+        if (d)
+            d[16] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_3x3_vf m2_12 = x2 * y12 - y2 * x12;
@@ -1521,6 +1618,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
         v += 18.0f * u;
+        if (d)
+            d[17] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_3x3_vf m3_12 = x3 * y12 - y3 * x12;
@@ -1545,6 +1644,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
         u += ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v += 27.0f * u;
+        if (d)
+            d[18] = ptp_3x3_vfirst(v) * 0.0204081628f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         const ptp_3x3_vf m1_15 = x1 * y15 - y1 * x15;
@@ -1583,6 +1684,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = -((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
         v += 54.0f * u;
+        if (d)
+            d[19] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = -((g2 * m3_12 - g3 * m2_12) + g12 * m2_3);
@@ -1617,6 +1720,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = ((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
         v += 54.0f * u;
+        if (d)
+            d[20] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         const ptp_3x3_vf m3_15 = x3 * y15 - y3 * x15;
@@ -1636,6 +1741,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
         u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
         v += 27.0f * u;
+        if (d)
+            d[21] = ptp_3x3_vfirst(v) * 0.0204081628f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = -((g1 * m3_15 - g3 * m1_15) + g15 * m1_3);
@@ -1652,6 +1759,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g2 * m7_10 - g7 * m2_10) + g10 * m2_7);
         v += 18.0f * u;
+        if (d)
+            d[22] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = -((g2 * m3_15 - g3 * m2_15) + g15 * m2_3);
@@ -1661,6 +1770,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
         v += 6.0f * u;
+        if (d)
+            d[23] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_3x3_vf m4_13 = x4 * y13 - y4 * x13;
@@ -1677,6 +1788,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += 9.0f * u;
+        if (d)
+            d[24] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_3x3_vf m4_14 = x4 * y14 - y4 * x14;
@@ -1701,6 +1814,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
         v += 27.0f * u;
+        if (d)
+            d[25] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_3x3_vf m4_15 = x4 * y15 - y4 * x15;
@@ -1737,6 +1852,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = -((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
         v += 54.0f * u;
+        if (d)
+            d[26] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         u = ((g3 * m5_12 - g5 * m3_12) + g12 * m3_5);
@@ -1775,6 +1892,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 54.0f * u;
         u = -((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
         v += 81.0f * u;
+        if (d)
+            d[27] = ptp_3x3_vfirst(v) * 0.00734693883f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         const ptp_3x3_vf m6_15 = x6 * y15 - y6 * x15;
@@ -1814,6 +1933,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 54.0f * u;
         u = -((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
         v += 81.0f * u;
+        if (d)
+            d[28] = ptp_3x3_vfirst(v) * 0.00734693883f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         u = -((g3 * m7_12 - g7 * m3_12) + g12 * m3_7);
@@ -1845,6 +1966,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = -((g5 * m7_10 - g7 * m5_10) + g10 * m5_7);
         v += 54.0f * u;
+        if (d)
+            d[29] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = -((g3 * m7_13 - g7 * m3_13) + g13 * m3_7);
@@ -1865,6 +1988,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
         v += 27.0f * u;
+        if (d)
+            d[30] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = -((g3 * m7_14 - g7 * m3_14) + g14 * m3_7);
@@ -1877,6 +2002,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         v += 9.0f * u;
+        if (d)
+            d[31] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         const ptp_3x3_vf m8_12 = x8 * y12 - y8 * x12;
@@ -1892,6 +2019,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v += 9.0f * u;
+        if (d)
+            d[32] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = ((g2 * m8_12 - g8 * m2_12) + g12 * m2_8);
@@ -1915,6 +2044,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v += 27.0f * u;
+        if (d)
+            d[33] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = ((g3 * m8_12 - g8 * m3_12) + g12 * m3_8);
@@ -1949,6 +2080,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = ((g5 * m8_10 - g8 * m5_10) + g10 * m5_8);
         v += 54.0f * u;
+        if (d)
+            d[34] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         const ptp_3x3_vf m9_15 = x9 * y15 - y9 * x15;
@@ -1987,6 +2120,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 54.0f * u;
         u = ((g5 * m9_10 - g9 * m5_10) + g10 * m5_9);
         v += 81.0f * u;
+        if (d)
+            d[35] = ptp_3x3_vfirst(v) * 0.00734693883f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = -((g3 * m10_12 - g10 * m3_12) + g12 * m3_10);
@@ -2023,6 +2158,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 54.0f * u;
         u = ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
         v += 81.0f * u;
+        if (d)
+            d[36] = ptp_3x3_vfirst(v) * 0.00734693883f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         const ptp_3x3_vf m11_15 = x11 * y15 - y11 * x15;
@@ -2055,6 +2192,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
         v += 54.0f * u;
+        if (d)
+            d[37] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = -((g1 * m11_15 - g11 * m1_15) + g15 * m1_11);
@@ -2075,6 +2214,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v += 27.0f * u;
+        if (d)
+            d[38] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = -((g2 * m11_15 - g11 * m2_15) + g15 * m2_11);
@@ -2087,6 +2228,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v += 9.0f * u;
+        if (d)
+            d[39] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         const ptp_3x3_vf m12_13 = x12 * y13 - y12 * x13;
@@ -2097,6 +2240,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = -((g4 * m9_12 - g9 * m4_12) + g12 * m4_9);
         v += 6.0f * u;
+        if (d)
+            d[40] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 40 */
         const ptp_3x3_vf m12_14 = x12 * y14 - y12 * x14;
@@ -2114,6 +2259,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g5 * m8_13 - g8 * m5_13) + g13 * m5_8);
         v += 18.0f * u;
+        if (d)
+            d[41] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 41 */
         const ptp_3x3_vf m12_15 = x12 * y15 - y12 * x15;
@@ -2133,6 +2280,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g5 * m10_12 - g10 * m5_12) + g12 * m5_10);
         u += ((g6 * m8_13 - g8 * m6_13) + g13 * m6_8);
         v += 27.0f * u;
+        if (d)
+            d[42] = ptp_3x3_vfirst(v) * 0.0204081628f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 42 */
         u = ((g3 * m12_13 - g12 * m3_13) + g13 * m3_12);
@@ -2164,6 +2313,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = -((g5 * m10_13 - g10 * m5_13) + g13 * m5_10);
         v += 54.0f * u;
+        if (d)
+            d[43] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 43 */
         const ptp_3x3_vf m14_15 = x14 * y15 - y14 * x15;
@@ -2195,6 +2346,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 36.0f * u;
         u = ((g6 * m9_14 - g9 * m6_14) + g14 * m6_9);
         v += 54.0f * u;
+        if (d)
+            d[44] = ptp_3x3_vfirst(v) * 0.0122448979f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 44 */
         u = ((g3 * m12_15 - g12 * m3_15) + g15 * m3_12);
@@ -2212,6 +2365,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g6 * m11_13 - g11 * m6_13) + g13 * m6_11);
         u += ((g7 * m9_14 - g9 * m7_14) + g14 * m7_9);
         v += 27.0f * u;
+        if (d)
+            d[45] = ptp_3x3_vfirst(v) * 0.0204081628f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 45 */
         u = ((g3 * m13_15 - g13 * m3_15) + g15 * m3_13);
@@ -2228,6 +2383,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g6 * m11_14 - g11 * m6_14) + g14 * m6_11);
         v += 18.0f * u;
+        if (d)
+            d[46] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 46 */
         u = ((g3 * m14_15 - g14 * m3_15) + g15 * m3_14);
@@ -2237,12 +2394,16 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = ((g7 * m10_15 - g10 * m7_15) + g15 * m7_10);
         v += 6.0f * u;
+        if (d)
+            d[47] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 47 */
         u = ((g4 * m12_13 - g12 * m4_13) + g13 * m4_12);
         v = 2.0f * u;
         u = -((g8 * m9_12 - g9 * m8_12) + g12 * m8_9);
         v += 3.0f * u;
+        if (d)
+            d[48] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 48 */
         u = ((g4 * m12_14 - g12 * m4_14) + g14 * m4_12);
@@ -2252,6 +2413,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g8 * m9_13 - g9 * m8_13) + g13 * m8_9);
         v += 9.0f * u;
+        if (d)
+            d[49] = ptp_3x3_vfirst(v) * 0.183673471f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 49 */
         u = ((g4 * m12_15 - g12 * m4_15) + g15 * m4_12);
@@ -2268,6 +2431,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g8 * m10_13 - g10 * m8_13) + g13 * m8_10);
         v += 18.0f * u;
+        if (d)
+            d[50] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 50 */
         u = ((g7 * m12_13 - g12 * m7_13) + g13 * m7_12);
@@ -2288,6 +2453,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g9 * m10_13 - g10 * m9_13) + g13 * m9_10);
         v += 27.0f * u;
+        if (d)
+            d[51] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 51 */
         u = ((g4 * m14_15 - g14 * m4_15) + g15 * m4_14);
@@ -2308,6 +2475,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g9 * m10_14 - g10 * m9_14) + g14 * m9_10);
         v += 27.0f * u;
+        if (d)
+            d[52] = ptp_3x3_vfirst(v) * 0.0367346928f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 52 */
         u = ((g7 * m12_15 - g12 * m7_15) + g15 * m7_12);
@@ -2324,6 +2493,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g9 * m11_14 - g11 * m9_14) + g14 * m9_11);
         v += 18.0f * u;
+        if (d)
+            d[53] = ptp_3x3_vfirst(v) * 0.0612244904f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 53 */
         u = ((g7 * m13_15 - g13 * m7_15) + g15 * m7_13);
@@ -2333,22 +2504,30 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = -((g10 * m11_14 - g11 * m10_14) + g14 * m10_11);
         v += 9.0f * u;
+        if (d)
+            d[54] = ptp_3x3_vfirst(v) * 0.183673471f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 54 */
         u = ((g7 * m14_15 - g14 * m7_15) + g15 * m7_14);
         v = 2.0f * u;
         u = -((g10 * m11_15 - g11 * m10_15) + g15 * m10_11);
         v += 3.0f * u;
+        if (d)
+            d[55] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 55 */
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
         v = u;
+        if (d)
+            d[56] = ptp_3x3_vfirst(v) * 9.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 56 */
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
         v = 2.0f * u;
         u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
         v += 3.0f * u;
+        if (d)
+            d[57] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 57 */
         u = ((g8 * m12_15 - g12 * m8_15) + g15 * m8_12);
@@ -2358,6 +2537,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
         v += 6.0f * u;
+        if (d)
+            d[58] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 58 */
         u = ((g11 * m12_13 - g12 * m11_13) + g13 * m11_12);
@@ -2370,6 +2551,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v += 9.0f * u;
+        if (d)
+            d[59] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 59 */
         u = ((g8 * m14_15 - g14 * m8_15) + g15 * m8_14);
@@ -2382,6 +2565,8 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 6.0f * u;
         u = ((g10 * m13_14 - g13 * m10_14) + g14 * m10_13);
         v += 9.0f * u;
+        if (d)
+            d[60] = ptp_3x3_vfirst(v) * 0.257142872f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 60 */
         u = ((g11 * m12_15 - g12 * m11_15) + g15 * m11_12);
@@ -2391,16 +2576,22 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 3.0f * u;
         u = ((g10 * m13_15 - g13 * m10_15) + g15 * m10_13);
         v += 6.0f * u;
+        if (d)
+            d[61] = ptp_3x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 61 */
         u = ((g11 * m13_15 - g13 * m11_15) + g15 * m11_13);
         v = 2.0f * u;
         u = ((g10 * m14_15 - g14 * m10_15) + g15 * m10_14);
         v += 3.0f * u;
+        if (d)
+            d[62] = ptp_3x3_vfirst(v) * 1.28571427f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 62 */
         u = ((g11 * m14_15 - g14 * m11_15) + g15 * m11_14);
         v = u;
+        if (d)
+            d[63] = ptp_3x3_vfirst(v) * 9.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 63 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -2409,6 +2600,24 @@ static void ptp_3x3_lanes(const float *restrict soa, size_t stride, size_t n, co
         notgt &= 1;
         ptp_3x3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_3X3_RESTRICT cls)
+{
+    ptp_3x3_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_3x3_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_3x3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -6,12 +6,16 @@
  * k = i*5 + j with i along u. The 121 control planes t_P of the tangent plane
  * T = cross4(B, dB/du, dB/dv) have bidegree 10x10, P = I*11 + J with I along u.
  * Clip space: the points are in clip space and eye = (0, 0, alpha, 0); the values are
- * d_P = eye.z * t_P.z. alpha = sign(det Proj) * Proj[2][3]: > 0 for OpenGL and < 0 for
- * Direct3D projections (reversed Z included); negate it to flip the orientation.
+ * d_P = eye.z * t_P.z. alpha = sign(det P) * P(2, 3), P(2, 3) the element in row 2,
+ * column 3 of the projection P for column vectors (clip = P * view), which carries
+ * view w into clip z: > 0 for glm's OpenGL and DirectXMath's RH projections, < 0 for
+ * Vulkan's y flip and DirectXMath's LH (reversed Z keeps the sign); negate it to flip
+ * the orientation. The C header's <prefix>alpha() computes it from a matrix.
  * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule strict: back iff every d_P < 0, front iff every d_P > 0.
  * A NaN value makes a patch silhouette. Values are at true scale (plane_scale 1).
  *
- * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * In exactly one C or C++ file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).
  * Headers of several degrees (prefixes) may be included in one program.
  */
 
@@ -24,6 +28,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_4X4_DEGREE_U 4
+#define PTP_4X4_DEGREE_V 4
+#define PTP_4X4_SPACE_CLIP 1
+#define PTP_4X4_RULE_STRICT 1
+#define PTP_4X4_CERTIFIED 0
+#define PTP_4X4_REFINE 0
 #define PTP_4X4_POINTS 25
 #define PTP_4X4_PLANES 121
 #define PTP_4X4_FRONT 0u
@@ -38,7 +51,8 @@ extern "C" {
 
 /* The 121 control planes of one patch, all four components, at true scale. */
 void ptp_4x4_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_4x4_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_4X4_FRONT, PTP_4X4_BACK or PTP_4X4_SILHOUETTE. */
 unsigned ptp_4x4_classify(const float cp[][4], const float eye[4]);
@@ -50,6 +64,20 @@ void ptp_4x4_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 void ptp_4x4_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
 
+/* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
+ * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
+ * OpenGL, glm and Vulkan programs hold it; DirectXMath's XMMATRIX and XMFLOAT4X4 too: they hold
+ * M = P^T for row vectors (clip = view * M) row by row, the same 16 floats. ROW_MAJOR: P(r, c) at
+ * proj[r * 4 + c] (P written row by row, as on paper). */
+#define PTP_4X4_COLUMN_MAJOR 0
+#define PTP_4X4_ROW_MAJOR 1
+/* alpha of the clip-space eye (0, 0, alpha, 0) for a perspective projection proj in layout:
+ * sign(det P) * P(2, 3). The view-space eye (0, 0, 0, 1) maps to column 3 of P, (0, 0, P(2, 3),
+ * 0), and cross4 of transformed points is det(P) P^-T cross4, so the sign of det P keeps the
+ * world-space classes (for a model-view matrix of positive determinant; negate alpha for a
+ * mirroring one). 0 if det P is 0. */
+float ptp_4x4_alpha(const float proj[16], int layout);
+
 #ifdef __cplusplus
 }
 #endif
@@ -57,6 +85,20 @@ void ptp_4x4_classify_soa(const float *soa, size_t stride, size_t patch_count, c
 
 #if defined(PTP_4X4_IMPLEMENTATION) && !defined(PTP_4X4_IMPLEMENTED)
 #define PTP_4X4_IMPLEMENTED
+/* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
+ * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
+    defined(__ASSOCIATIVE_MATH__)
+#error "ptp_4x4_: do not compile this header's implementation with -ffast-math, -ffinite-math-only or -fassociative-math: they drop the NaN checks and regroup the sums whose signs are the classes"
+#endif
+/* restrict: C99's, GNU C++'s and MSVC's __restrict, else nothing. */
+#if defined(__cplusplus) && (defined(__GNUC__) || defined(_MSC_VER))
+#define PTP_4X4_RESTRICT __restrict
+#elif !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define PTP_4X4_RESTRICT restrict
+#else
+#define PTP_4X4_RESTRICT
+#endif
 #if defined(__SSE2__) && !defined(PTP_4X4_NO_SSE)
 #include <emmintrin.h>
 #endif
@@ -90,6 +132,11 @@ static inline void ptp_4x4_vstore(unsigned char *cls, ptp_4x4_vm c, size_t count
     for (i = 0; i < count && i < PTP_4X4_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_4x4_vfirst(ptp_4x4_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_4x4_vf ptp_4x4_vabsmax(ptp_4x4_vf r, ptp_4x4_vf x)
 {
@@ -113,11 +160,39 @@ static inline ptp_4x4_vf ptp_4x4_vabsmax(ptp_4x4_vf r, ptp_4x4_vf x)
 {
     return PTP_4X4_ABSMAX(r, x);
 }
+static inline float ptp_4x4_vfirst(ptp_4x4_vf v)
+{
+    return v;
+}
 #endif
+
+float ptp_4x4_alpha(const float proj[16], int layout)
+{
+    double m[4][4], s[6], c[6], det;
+    int r, k;
+    for (r = 0; r < 4; r++)
+        for (k = 0; k < 4; k++)
+            m[r][k] = proj[layout == PTP_4X4_ROW_MAJOR ? r * 4 + k : k * 4 + r];
+    /* det P by Laplace along rows 0 and 1: their 2x2 minors s times the complementary c */
+    s[0] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    s[1] = m[0][0] * m[1][2] - m[0][2] * m[1][0];
+    s[2] = m[0][0] * m[1][3] - m[0][3] * m[1][0];
+    s[3] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    s[4] = m[0][1] * m[1][3] - m[0][3] * m[1][1];
+    s[5] = m[0][2] * m[1][3] - m[0][3] * m[1][2];
+    c[0] = m[2][2] * m[3][3] - m[2][3] * m[3][2];
+    c[1] = m[2][1] * m[3][3] - m[2][3] * m[3][1];
+    c[2] = m[2][1] * m[3][2] - m[2][2] * m[3][1];
+    c[3] = m[2][0] * m[3][3] - m[2][3] * m[3][0];
+    c[4] = m[2][0] * m[3][2] - m[2][2] * m[3][0];
+    c[5] = m[2][0] * m[3][1] - m[2][1] * m[3][0];
+    det = s[0] * c[0] - s[1] * c[1] + s[2] * c[2] + s[3] * c[3] - s[4] * c[4] + s[5] * c[5];
+    return det > 0 ? (float)m[2][3] : det < 0 ? (float)-m[2][3] : 0.0f;
+}
 
 #define PTP_4X4_TERMS 2148
 
-static const unsigned short ptp_4x4_idx[PTP_4X4_TERMS][4] = {
+static const unsigned short ptp_4x4_term_idx[PTP_4X4_TERMS][4] = {
     {0, 0, 1, 5},
     {1, 0, 1, 6},
     {1, 0, 2, 5},
@@ -2268,7 +2343,7 @@ static const unsigned short ptp_4x4_idx[PTP_4X4_TERMS][4] = {
     {120, 19, 23, 24},
 };
 
-static const float ptp_4x4_wgt[PTP_4X4_TERMS] = {
+static const float ptp_4x4_term_wgt[PTP_4X4_TERMS] = {
     -16.0f,          /* -16 */
     -6.4000001f,     /* -32/5 */
     -4.80000019f,    /* -24/5 */
@@ -4419,8 +4494,8 @@ static const float ptp_4x4_wgt[PTP_4X4_TERMS] = {
     16.0f,           /* 16 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -4454,24 +4529,10 @@ void ptp_4x4_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_4X4_TERMS; x++) {
         float r[4];
-        ptp_4x4_cross4(r, cp[ptp_4x4_idx[x][1]], cp[ptp_4x4_idx[x][2]], cp[ptp_4x4_idx[x][3]]);
+        ptp_4x4_cross4(r, cp[ptp_4x4_term_idx[x][1]], cp[ptp_4x4_term_idx[x][2]], cp[ptp_4x4_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_4x4_idx[x][0]][c] += ptp_4x4_wgt[x] * r[c];
+            t[ptp_4x4_term_idx[x][0]][c] += ptp_4x4_term_wgt[x] * r[c];
     }
-}
-
-void ptp_4x4_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_4X4_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_4X4_TERMS; x++) {
-        float r[4];
-        ptp_4x4_cross4(r, cp[ptp_4x4_idx[x][1]], cp[ptp_4x4_idx[x][2]], cp[ptp_4x4_idx[x][3]]);
-        d[ptp_4x4_idx[x][0]] += ptp_4x4_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_4X4_PLANES; x++)
-        d[x] *= eye[2];
 }
 
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
@@ -4480,14 +4541,16 @@ void ptp_4x4_values(const float cp[][4], const float eye[4], float d[])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_4X4_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
-                          unsigned char *restrict cls)
+static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t stride, size_t n,
+                                       const float eye[4], unsigned char *PTP_4X4_RESTRICT cls,
+                                       float *PTP_4X4_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -4566,6 +4629,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_4x4_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_4x4_vfirst(v) * 16.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_4x4_vf m2_5 = x2 * y5 - y2 * x5;
@@ -4576,6 +4641,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_4x4_vf m0_6 = x0 * y6 - y0 * x6;
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
         v += 4.0f * u;
+        if (d)
+            d[1] = ptp_4x4_vfirst(v) * 1.60000002f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_4x4_vf m3_5 = x3 * y5 - y3 * x5;
@@ -4591,6 +4658,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_4x4_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
         v += 4.0f * u;
+        if (d)
+            d[2] = ptp_4x4_vfirst(v) * 1.06666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_4x4_vf m4_5 = x4 * y5 - y4 * x5;
@@ -4612,6 +4681,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v += 24.0f * u;
+        if (d)
+            d[3] = ptp_4x4_vfirst(v) * 0.13333334f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_4x4_vf m1_9 = x1 * y9 - y1 * x9;
@@ -4637,6 +4708,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         v += 36.0f * u;
+        if (d)
+            d[4] = ptp_4x4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_4x4_vf m2_9 = x2 * y9 - y2 * x9;
@@ -4656,6 +4729,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 8.0f * u;
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v += 16.0f * u;
+        if (d)
+            d[5] = ptp_4x4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_4x4_vf m3_4 = x3 * y4 - y3 * x4;
@@ -4677,6 +4752,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v += 36.0f * u;
+        if (d)
+            d[6] = ptp_4x4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_4x4_vf m4_9 = x4 * y9 - y4 * x9;
@@ -4692,6 +4769,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
         v += 24.0f * u;
+        if (d)
+            d[7] = ptp_4x4_vfirst(v) * 0.13333334f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         u = -((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
@@ -4701,16 +4780,22 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = -((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         v += 4.0f * u;
+        if (d)
+            d[8] = ptp_4x4_vfirst(v) * 1.06666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         u = -((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v = 3.0f * u;
         u = -((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
         v += 4.0f * u;
+        if (d)
+            d[9] = ptp_4x4_vfirst(v) * 1.60000002f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         u = -((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
         v = u;
+        if (d)
+            d[10] = ptp_4x4_vfirst(v) * 16.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_4x4_vf m1_10 = x1 * y10 - y1 * x10;
@@ -4720,6 +4805,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_4x4_vf m5_6 = x5 * y6 - y5 * x6;
         u = ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
         v += 4.0f * u;
+        if (d)
+            d[11] = ptp_4x4_vfirst(v) * 1.60000002f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_4x4_vf m2_10 = x2 * y10 - y2 * x10;
@@ -4733,6 +4820,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v += 16.0f * u;
+        if (d)
+            d[12] = ptp_4x4_vfirst(v) * 0.159999996f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_4x4_vf m3_10 = x3 * y10 - y3 * x10;
@@ -4755,6 +4844,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
         v += 16.0f * u;
+        if (d)
+            d[13] = ptp_4x4_vfirst(v) * 0.106666669f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         const ptp_4x4_vf m4_10 = x4 * y10 - y4 * x10;
@@ -4787,6 +4878,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         v += 96.0f * u;
+        if (d)
+            d[14] = ptp_4x4_vfirst(v) * 0.0133333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_4x4_vf m1_14 = x1 * y14 - y1 * x14;
@@ -4827,6 +4920,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v += 144.0f * u;
+        if (d)
+            d[15] = ptp_4x4_vfirst(v) * 0.00761904754f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_4x4_vf m2_14 = x2 * y14 - y2 * x14;
@@ -4859,6 +4954,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 48.0f * u;
         u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
         v += 64.0f * u;
+        if (d)
+            d[16] = ptp_4x4_vfirst(v) * 0.0190476198f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         u = -((g3 * m4_10 - g4 * m3_10) + g10 * m3_4);
@@ -4895,6 +4992,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         v += 144.0f * u;
+        if (d)
+            d[17] = ptp_4x4_vfirst(v) * 0.00761904754f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_4x4_vf m4_14 = x4 * y14 - y4 * x14;
@@ -4921,6 +5020,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
         v += 96.0f * u;
+        if (d)
+            d[18] = ptp_4x4_vfirst(v) * 0.0133333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = -((g1 * m4_14 - g4 * m1_14) + g14 * m1_4);
@@ -4937,6 +5038,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
         v += 16.0f * u;
+        if (d)
+            d[19] = ptp_4x4_vfirst(v) * 0.106666669f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = -((g2 * m4_14 - g4 * m2_14) + g14 * m2_4);
@@ -4946,12 +5049,16 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
         v += 16.0f * u;
+        if (d)
+            d[20] = ptp_4x4_vfirst(v) * 0.159999996f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = -((g3 * m4_14 - g4 * m3_14) + g14 * m3_4);
         v = 3.0f * u;
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v += 4.0f * u;
+        if (d)
+            d[21] = ptp_4x4_vfirst(v) * 1.60000002f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         const ptp_4x4_vf m1_15 = x1 * y15 - y1 * x15;
@@ -4966,6 +5073,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         const ptp_4x4_vf m6_10 = x6 * y10 - y6 * x10;
         u = -((g0 * m6_10 - g6 * m0_10) + g10 * m0_6);
         v += 4.0f * u;
+        if (d)
+            d[22] = ptp_4x4_vfirst(v) * 1.06666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         const ptp_4x4_vf m2_15 = x2 * y15 - y2 * x15;
@@ -4988,6 +5097,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g1 * m5_11 - g5 * m1_11) + g11 * m1_5);
         v += 16.0f * u;
+        if (d)
+            d[23] = ptp_4x4_vfirst(v) * 0.106666669f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_4x4_vf m3_15 = x3 * y15 - y3 * x15;
@@ -5012,6 +5123,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
         u += ((g2 * m5_11 - g5 * m2_11) + g11 * m2_5);
         v += 12.0f * u;
+        if (d)
+            d[24] = ptp_4x4_vfirst(v) * 0.0711111128f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_4x4_vf m4_15 = x4 * y15 - y4 * x15;
@@ -5059,6 +5172,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g1 * m7_11 - g7 * m1_11) + g11 * m1_7);
         v += 96.0f * u;
+        if (d)
+            d[25] = ptp_4x4_vfirst(v) * 0.0088888891f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_4x4_vf m1_19 = x1 * y19 - y1 * x19;
@@ -5112,6 +5227,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g2 * m6_12 - g6 * m2_12) + g12 * m2_6);
         v += 144.0f * u;
+        if (d)
+            d[26] = ptp_4x4_vfirst(v) * 0.00507936487f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         const ptp_4x4_vf m2_19 = x2 * y19 - y2 * x19;
@@ -5148,6 +5265,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g2 * m8_11 - g8 * m2_11) + g11 * m2_8);
         u += ((g3 * m6_12 - g6 * m3_12) + g12 * m3_6);
         v += 48.0f * u;
+        if (d)
+            d[27] = ptp_4x4_vfirst(v) * 0.0126984129f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         u = -((g3 * m4_15 - g4 * m3_15) + g15 * m3_4);
@@ -5197,6 +5316,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g2 * m8_12 - g8 * m2_12) + g12 * m2_8);
         v += 144.0f * u;
+        if (d)
+            d[28] = ptp_4x4_vfirst(v) * 0.00507936487f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         const ptp_4x4_vf m4_19 = x4 * y19 - y4 * x19;
@@ -5235,6 +5356,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g3 * m7_13 - g7 * m3_13) + g13 * m3_7);
         v += 96.0f * u;
+        if (d)
+            d[29] = ptp_4x4_vfirst(v) * 0.0088888891f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = -((g1 * m4_19 - g4 * m1_19) + g19 * m1_4);
@@ -5252,6 +5375,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g3 * m9_12 - g9 * m3_12) + g12 * m3_9);
         u += ((g4 * m7_13 - g7 * m4_13) + g13 * m4_7);
         v += 12.0f * u;
+        if (d)
+            d[30] = ptp_4x4_vfirst(v) * 0.0711111128f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = -((g2 * m4_19 - g4 * m2_19) + g19 * m2_4);
@@ -5268,6 +5393,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g3 * m9_13 - g9 * m3_13) + g13 * m3_9);
         v += 16.0f * u;
+        if (d)
+            d[31] = ptp_4x4_vfirst(v) * 0.106666669f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = -((g3 * m4_19 - g4 * m3_19) + g19 * m3_4);
@@ -5277,6 +5404,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = ((g4 * m8_14 - g8 * m4_14) + g14 * m4_8);
         v += 4.0f * u;
+        if (d)
+            d[32] = ptp_4x4_vfirst(v) * 1.06666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         const ptp_4x4_vf m1_20 = x1 * y20 - y1 * x20;
@@ -5297,6 +5426,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
         v += 24.0f * u;
+        if (d)
+            d[33] = ptp_4x4_vfirst(v) * 0.13333334f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         const ptp_4x4_vf m2_20 = x2 * y20 - y2 * x20;
@@ -5329,6 +5460,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g5 * m6_11 - g6 * m5_11) + g11 * m5_6);
         v += 96.0f * u;
+        if (d)
+            d[34] = ptp_4x4_vfirst(v) * 0.0133333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         const ptp_4x4_vf m3_20 = x3 * y20 - y3 * x20;
@@ -5375,6 +5508,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g5 * m7_11 - g7 * m5_11) + g11 * m5_7);
         v += 96.0f * u;
+        if (d)
+            d[35] = ptp_4x4_vfirst(v) * 0.0088888891f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         const ptp_4x4_vf m4_20 = x4 * y20 - y4 * x20;
@@ -5439,6 +5574,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 432.0f * u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         v += 576.0f * u;
+        if (d)
+            d[36] = ptp_4x4_vfirst(v) * 0.00111111114f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         const ptp_4x4_vf m1_24 = x1 * y24 - y1 * x24;
@@ -5525,6 +5662,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = -((g6 * m7_12 - g7 * m6_12) + g12 * m6_7);
         v += 864.0f * u;
+        if (d)
+            d[37] = ptp_4x4_vfirst(v) * 0.000634920609f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         const ptp_4x4_vf m2_24 = x2 * y24 - y2 * x24;
@@ -5595,6 +5734,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 288.0f * u;
         u = -((g6 * m8_12 - g8 * m6_12) + g12 * m6_8);
         v += 384.0f * u;
+        if (d)
+            d[38] = ptp_4x4_vfirst(v) * 0.00158730161f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = -((g3 * m4_20 - g4 * m3_20) + g20 * m3_4);
@@ -5674,6 +5815,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = -((g7 * m8_12 - g8 * m7_12) + g12 * m7_8);
         v += 864.0f * u;
+        if (d)
+            d[39] = ptp_4x4_vfirst(v) * 0.000634920609f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         const ptp_4x4_vf m4_24 = x4 * y24 - y4 * x24;
@@ -5729,6 +5872,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 432.0f * u;
         u = -((g7 * m8_13 - g8 * m7_13) + g13 * m7_8);
         v += 576.0f * u;
+        if (d)
+            d[40] = ptp_4x4_vfirst(v) * 0.00111111114f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 40 */
         u = -((g1 * m4_24 - g4 * m1_24) + g24 * m1_4);
@@ -5765,6 +5910,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g7 * m9_13 - g9 * m7_13) + g13 * m7_9);
         v += 96.0f * u;
+        if (d)
+            d[41] = ptp_4x4_vfirst(v) * 0.0088888891f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 41 */
         u = -((g2 * m4_24 - g4 * m2_24) + g24 * m2_4);
@@ -5790,6 +5937,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g8 * m9_13 - g9 * m8_13) + g13 * m8_9);
         v += 96.0f * u;
+        if (d)
+            d[42] = ptp_4x4_vfirst(v) * 0.0133333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 42 */
         u = -((g3 * m4_24 - g4 * m3_24) + g24 * m3_4);
@@ -5804,6 +5953,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = -((g8 * m9_14 - g9 * m8_14) + g14 * m8_9);
         v += 24.0f * u;
+        if (d)
+            d[43] = ptp_4x4_vfirst(v) * 0.13333334f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 43 */
         const ptp_4x4_vf m5_21 = x5 * y21 - y5 * x21;
@@ -5828,6 +5979,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
         v += 36.0f * u;
+        if (d)
+            d[44] = ptp_4x4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 44 */
         const ptp_4x4_vf m5_22 = x5 * y22 - y5 * x22;
@@ -5867,6 +6020,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v += 144.0f * u;
+        if (d)
+            d[45] = ptp_4x4_vfirst(v) * 0.00761904754f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 45 */
         const ptp_4x4_vf m5_23 = x5 * y23 - y5 * x23;
@@ -5919,6 +6074,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g6 * m10_12 - g10 * m6_12) + g12 * m6_10);
         v += 144.0f * u;
+        if (d)
+            d[46] = ptp_4x4_vfirst(v) * 0.00507936487f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 46 */
         const ptp_4x4_vf m5_24 = x5 * y24 - y5 * x24;
@@ -6003,6 +6160,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = ((g6 * m11_12 - g11 * m6_12) + g12 * m6_11);
         v += 864.0f * u;
+        if (d)
+            d[47] = ptp_4x4_vfirst(v) * 0.000634920609f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 47 */
         u = ((g3 * m7_20 - g7 * m3_20) + g20 * m3_7);
@@ -6088,6 +6247,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 1152.0f * u;
         u = ((g7 * m11_12 - g11 * m7_12) + g12 * m7_11);
         v += 1296.0f * u;
+        if (d)
+            d[48] = ptp_4x4_vfirst(v) * 0.000362811785f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 48 */
         const ptp_4x4_vf m7_24 = x7 * y24 - y7 * x24;
@@ -6174,6 +6335,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 512.0f * u;
         u = ((g7 * m11_13 - g11 * m7_13) + g13 * m7_11);
         v += 576.0f * u;
+        if (d)
+            d[49] = ptp_4x4_vfirst(v) * 0.000907029491f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 49 */
         const ptp_4x4_vf m13_19 = x13 * y19 - y13 * x19;
@@ -6257,6 +6420,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 1152.0f * u;
         u = ((g7 * m12_13 - g12 * m7_13) + g13 * m7_12);
         v += 1296.0f * u;
+        if (d)
+            d[50] = ptp_4x4_vfirst(v) * 0.000362811785f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 50 */
         u = -((g4 * m9_20 - g9 * m4_20) + g20 * m4_9);
@@ -6333,6 +6498,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
         v += 864.0f * u;
+        if (d)
+            d[51] = ptp_4x4_vfirst(v) * 0.000634920609f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 51 */
         u = -((g4 * m9_21 - g9 * m4_21) + g21 * m4_9);
@@ -6377,6 +6544,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
         v += 144.0f * u;
+        if (d)
+            d[52] = ptp_4x4_vfirst(v) * 0.00507936487f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 52 */
         u = -((g4 * m9_22 - g9 * m4_22) + g22 * m4_9);
@@ -6410,6 +6579,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
         v += 144.0f * u;
+        if (d)
+            d[53] = ptp_4x4_vfirst(v) * 0.00761904754f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 53 */
         u = -((g4 * m9_23 - g9 * m4_23) + g23 * m4_9);
@@ -6428,6 +6599,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v += 36.0f * u;
+        if (d)
+            d[54] = ptp_4x4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 54 */
         const ptp_4x4_vf m10_21 = x10 * y21 - y10 * x21;
@@ -6447,6 +6620,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 8.0f * u;
         u = -((g5 * m11_15 - g11 * m5_15) + g15 * m5_11);
         v += 16.0f * u;
+        if (d)
+            d[55] = ptp_4x4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 55 */
         const ptp_4x4_vf m10_22 = x10 * y22 - y10 * x22;
@@ -6479,6 +6654,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 48.0f * u;
         u = ((g6 * m10_16 - g10 * m6_16) + g16 * m6_10);
         v += 64.0f * u;
+        if (d)
+            d[56] = ptp_4x4_vfirst(v) * 0.0190476198f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 56 */
         const ptp_4x4_vf m10_23 = x10 * y23 - y10 * x23;
@@ -6515,6 +6692,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g6 * m12_15 - g12 * m6_15) + g15 * m6_12);
         u += ((g7 * m10_16 - g10 * m7_16) + g16 * m7_10);
         v += 48.0f * u;
+        if (d)
+            d[57] = ptp_4x4_vfirst(v) * 0.0126984129f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 57 */
         const ptp_4x4_vf m10_24 = x10 * y24 - y10 * x24;
@@ -6586,6 +6765,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 288.0f * u;
         u = -((g6 * m12_16 - g12 * m6_16) + g16 * m6_12);
         v += 384.0f * u;
+        if (d)
+            d[58] = ptp_4x4_vfirst(v) * 0.00158730161f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 58 */
         const ptp_4x4_vf m11_24 = x11 * y24 - y11 * x24;
@@ -6670,6 +6851,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 512.0f * u;
         u = ((g7 * m11_17 - g11 * m7_17) + g17 * m7_11);
         v += 576.0f * u;
+        if (d)
+            d[59] = ptp_4x4_vfirst(v) * 0.000907029491f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 59 */
         const ptp_4x4_vf m14_22 = x14 * y22 - y14 * x22;
@@ -6727,6 +6910,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g7 * m13_16 - g13 * m7_16) + g16 * m7_13);
         u += ((g8 * m11_17 - g11 * m8_17) + g17 * m8_11);
         v += 192.0f * u;
+        if (d)
+            d[60] = ptp_4x4_vfirst(v) * 0.00226757373f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 60 */
         const ptp_4x4_vf m13_24 = x13 * y24 - y13 * x24;
@@ -6809,6 +6994,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 512.0f * u;
         u = -((g7 * m13_17 - g13 * m7_17) + g17 * m7_13);
         v += 576.0f * u;
+        if (d)
+            d[61] = ptp_4x4_vfirst(v) * 0.000907029491f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 61 */
         const ptp_4x4_vf m14_24 = x14 * y24 - y14 * x24;
@@ -6873,6 +7060,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 288.0f * u;
         u = ((g8 * m12_18 - g12 * m8_18) + g18 * m8_12);
         v += 384.0f * u;
+        if (d)
+            d[62] = ptp_4x4_vfirst(v) * 0.00158730161f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 62 */
         u = -((g1 * m14_24 - g14 * m1_24) + g24 * m1_14);
@@ -6904,6 +7093,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g8 * m14_17 - g14 * m8_17) + g17 * m8_14);
         u += ((g9 * m12_18 - g12 * m9_18) + g18 * m9_12);
         v += 48.0f * u;
+        if (d)
+            d[63] = ptp_4x4_vfirst(v) * 0.0126984129f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 63 */
         u = -((g2 * m14_24 - g14 * m2_24) + g24 * m2_14);
@@ -6932,6 +7123,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 48.0f * u;
         u = -((g8 * m14_18 - g14 * m8_18) + g18 * m8_14);
         v += 64.0f * u;
+        if (d)
+            d[64] = ptp_4x4_vfirst(v) * 0.0190476198f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 64 */
         u = -((g3 * m14_24 - g14 * m3_24) + g24 * m3_14);
@@ -6947,6 +7140,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 8.0f * u;
         u = ((g9 * m13_19 - g13 * m9_19) + g19 * m9_13);
         v += 16.0f * u;
+        if (d)
+            d[65] = ptp_4x4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 65 */
         const ptp_4x4_vf m15_20 = x15 * y20 - y15 * x20;
@@ -6968,6 +7163,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = -((g10 * m11_15 - g11 * m10_15) + g15 * m10_11);
         v += 36.0f * u;
+        if (d)
+            d[66] = ptp_4x4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 66 */
         u = ((g2 * m15_20 - g15 * m2_20) + g20 * m2_15);
@@ -7004,6 +7201,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g10 * m11_16 - g11 * m10_16) + g16 * m10_11);
         v += 144.0f * u;
+        if (d)
+            d[67] = ptp_4x4_vfirst(v) * 0.00761904754f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 67 */
         u = ((g3 * m15_20 - g15 * m3_20) + g20 * m3_15);
@@ -7052,6 +7251,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g10 * m12_16 - g12 * m10_16) + g16 * m10_12);
         v += 144.0f * u;
+        if (d)
+            d[68] = ptp_4x4_vfirst(v) * 0.00507936487f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 68 */
         u = ((g4 * m15_20 - g15 * m4_20) + g20 * m4_15);
@@ -7131,6 +7332,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = -((g11 * m12_16 - g12 * m11_16) + g16 * m11_12);
         v += 864.0f * u;
+        if (d)
+            d[69] = ptp_4x4_vfirst(v) * 0.000634920609f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 69 */
         const ptp_4x4_vf m17_23 = x17 * y23 - y17 * x23;
@@ -7214,6 +7417,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 1152.0f * u;
         u = -((g11 * m12_17 - g12 * m11_17) + g17 * m11_12);
         v += 1296.0f * u;
+        if (d)
+            d[70] = ptp_4x4_vfirst(v) * 0.000362811785f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 70 */
         const ptp_4x4_vf m17_24 = x17 * y24 - y17 * x24;
@@ -7295,6 +7500,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 512.0f * u;
         u = -((g11 * m13_17 - g13 * m11_17) + g17 * m11_13);
         v += 576.0f * u;
+        if (d)
+            d[71] = ptp_4x4_vfirst(v) * 0.000907029491f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 71 */
         u = -((g4 * m17_21 - g17 * m4_21) + g21 * m4_17);
@@ -7375,6 +7582,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 1152.0f * u;
         u = -((g12 * m13_17 - g13 * m12_17) + g17 * m12_13);
         v += 1296.0f * u;
+        if (d)
+            d[72] = ptp_4x4_vfirst(v) * 0.000362811785f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 72 */
         const ptp_4x4_vf m19_24 = x19 * y24 - y19 * x24;
@@ -7451,6 +7660,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = -((g12 * m13_18 - g13 * m12_18) + g18 * m12_13);
         v += 864.0f * u;
+        if (d)
+            d[73] = ptp_4x4_vfirst(v) * 0.000634920609f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 73 */
         u = -((g1 * m19_24 - g19 * m1_24) + g24 * m1_19);
@@ -7495,6 +7706,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g12 * m14_18 - g14 * m12_18) + g18 * m12_14);
         v += 144.0f * u;
+        if (d)
+            d[74] = ptp_4x4_vfirst(v) * 0.00507936487f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 74 */
         u = -((g2 * m19_24 - g19 * m2_24) + g24 * m2_19);
@@ -7528,6 +7741,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g13 * m14_18 - g14 * m13_18) + g18 * m13_14);
         v += 144.0f * u;
+        if (d)
+            d[75] = ptp_4x4_vfirst(v) * 0.00761904754f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 75 */
         u = -((g3 * m19_24 - g19 * m3_24) + g24 * m3_19);
@@ -7546,6 +7761,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = -((g13 * m14_19 - g14 * m13_19) + g19 * m13_14);
         v += 36.0f * u;
+        if (d)
+            d[76] = ptp_4x4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 76 */
         const ptp_4x4_vf m20_21 = x20 * y21 - y20 * x21;
@@ -7561,6 +7778,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g10 * m15_16 - g15 * m10_16) + g16 * m10_15);
         v += 24.0f * u;
+        if (d)
+            d[77] = ptp_4x4_vfirst(v) * 0.13333334f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 77 */
         const ptp_4x4_vf m20_22 = x20 * y22 - y20 * x22;
@@ -7587,6 +7806,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g11 * m15_16 - g15 * m11_16) + g16 * m11_15);
         v += 96.0f * u;
+        if (d)
+            d[78] = ptp_4x4_vfirst(v) * 0.0133333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 78 */
         const ptp_4x4_vf m20_23 = x20 * y23 - y20 * x23;
@@ -7625,6 +7846,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g11 * m15_17 - g15 * m11_17) + g17 * m11_15);
         v += 96.0f * u;
+        if (d)
+            d[79] = ptp_4x4_vfirst(v) * 0.0088888891f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 79 */
         const ptp_4x4_vf m20_24 = x20 * y24 - y20 * x24;
@@ -7680,6 +7903,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 432.0f * u;
         u = ((g11 * m16_17 - g16 * m11_17) + g17 * m11_16);
         v += 576.0f * u;
+        if (d)
+            d[80] = ptp_4x4_vfirst(v) * 0.00111111114f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 80 */
         u = ((g4 * m20_21 - g20 * m4_21) + g21 * m4_20);
@@ -7756,6 +7981,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = ((g12 * m16_17 - g16 * m12_17) + g17 * m12_16);
         v += 864.0f * u;
+        if (d)
+            d[81] = ptp_4x4_vfirst(v) * 0.000634920609f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 81 */
         const ptp_4x4_vf m22_24 = x22 * y24 - y22 * x24;
@@ -7820,6 +8047,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 288.0f * u;
         u = ((g12 * m16_18 - g16 * m12_18) + g18 * m12_16);
         v += 384.0f * u;
+        if (d)
+            d[82] = ptp_4x4_vfirst(v) * 0.00158730161f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 82 */
         const ptp_4x4_vf m23_24 = x23 * y24 - y23 * x24;
@@ -7895,6 +8124,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 768.0f * u;
         u = ((g12 * m17_18 - g17 * m12_18) + g18 * m12_17);
         v += 864.0f * u;
+        if (d)
+            d[83] = ptp_4x4_vfirst(v) * 0.000634920609f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 83 */
         u = ((g4 * m20_24 - g20 * m4_24) + g24 * m4_20);
@@ -7948,6 +8179,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 432.0f * u;
         u = ((g13 * m17_18 - g17 * m13_18) + g18 * m13_17);
         v += 576.0f * u;
+        if (d)
+            d[84] = ptp_4x4_vfirst(v) * 0.00111111114f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 84 */
         u = ((g4 * m21_24 - g21 * m4_24) + g24 * m4_21);
@@ -7984,6 +8217,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g13 * m17_19 - g17 * m13_19) + g19 * m13_17);
         v += 96.0f * u;
+        if (d)
+            d[85] = ptp_4x4_vfirst(v) * 0.0088888891f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 85 */
         u = ((g4 * m22_24 - g22 * m4_24) + g24 * m4_22);
@@ -8009,6 +8244,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g13 * m18_19 - g18 * m13_19) + g19 * m13_18);
         v += 96.0f * u;
+        if (d)
+            d[86] = ptp_4x4_vfirst(v) * 0.0133333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 86 */
         u = ((g4 * m23_24 - g23 * m4_24) + g24 * m4_23);
@@ -8023,6 +8260,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g14 * m18_19 - g18 * m14_19) + g19 * m14_18);
         v += 24.0f * u;
+        if (d)
+            d[87] = ptp_4x4_vfirst(v) * 0.13333334f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 87 */
         u = ((g5 * m20_21 - g20 * m5_21) + g21 * m5_20);
@@ -8032,6 +8271,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = -((g10 * m16_20 - g16 * m10_20) + g20 * m10_16);
         v += 4.0f * u;
+        if (d)
+            d[88] = ptp_4x4_vfirst(v) * 1.06666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 88 */
         u = ((g5 * m20_22 - g20 * m5_22) + g22 * m5_20);
@@ -8048,6 +8289,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = ((g11 * m15_21 - g15 * m11_21) + g21 * m11_15);
         v += 16.0f * u;
+        if (d)
+            d[89] = ptp_4x4_vfirst(v) * 0.106666669f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 89 */
         u = ((g5 * m20_23 - g20 * m5_23) + g23 * m5_20);
@@ -8065,6 +8308,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g11 * m17_20 - g17 * m11_20) + g20 * m11_17);
         u += ((g12 * m15_21 - g15 * m12_21) + g21 * m12_15);
         v += 12.0f * u;
+        if (d)
+            d[90] = ptp_4x4_vfirst(v) * 0.0711111128f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 90 */
         u = ((g5 * m20_24 - g20 * m5_24) + g24 * m5_20);
@@ -8101,6 +8346,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g11 * m17_21 - g17 * m11_21) + g21 * m11_17);
         v += 96.0f * u;
+        if (d)
+            d[91] = ptp_4x4_vfirst(v) * 0.0088888891f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 91 */
         u = ((g9 * m20_21 - g20 * m9_21) + g21 * m9_20);
@@ -8145,6 +8392,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = ((g12 * m16_22 - g16 * m12_22) + g22 * m12_16);
         v += 144.0f * u;
+        if (d)
+            d[92] = ptp_4x4_vfirst(v) * 0.00507936487f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 92 */
         u = ((g5 * m22_24 - g22 * m5_24) + g24 * m5_22);
@@ -8176,6 +8425,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g12 * m18_21 - g18 * m12_21) + g21 * m12_18);
         u += ((g13 * m16_22 - g16 * m13_22) + g22 * m13_16);
         v += 48.0f * u;
+        if (d)
+            d[93] = ptp_4x4_vfirst(v) * 0.0126984129f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 93 */
         u = ((g5 * m23_24 - g23 * m5_24) + g24 * m5_23);
@@ -8220,6 +8471,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g12 * m18_22 - g18 * m12_22) + g22 * m12_18);
         v += 144.0f * u;
+        if (d)
+            d[94] = ptp_4x4_vfirst(v) * 0.00507936487f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 94 */
         u = ((g9 * m20_24 - g20 * m9_24) + g24 * m9_20);
@@ -8256,6 +8509,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = ((g13 * m17_23 - g17 * m13_23) + g23 * m13_17);
         v += 96.0f * u;
+        if (d)
+            d[95] = ptp_4x4_vfirst(v) * 0.0088888891f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 95 */
         u = ((g9 * m21_24 - g21 * m9_24) + g24 * m9_21);
@@ -8273,6 +8528,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         u -= ((g13 * m19_22 - g19 * m13_22) + g22 * m13_19);
         u += ((g14 * m17_23 - g17 * m14_23) + g23 * m14_17);
         v += 12.0f * u;
+        if (d)
+            d[96] = ptp_4x4_vfirst(v) * 0.0711111128f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 96 */
         u = ((g9 * m22_24 - g22 * m9_24) + g24 * m9_22);
@@ -8289,6 +8546,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g13 * m19_23 - g19 * m13_23) + g23 * m13_19);
         v += 16.0f * u;
+        if (d)
+            d[97] = ptp_4x4_vfirst(v) * 0.106666669f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 97 */
         u = ((g9 * m23_24 - g23 * m9_24) + g24 * m9_23);
@@ -8298,12 +8557,16 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = ((g14 * m18_24 - g18 * m14_24) + g24 * m14_18);
         v += 4.0f * u;
+        if (d)
+            d[98] = ptp_4x4_vfirst(v) * 1.06666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 98 */
         u = ((g10 * m20_21 - g20 * m10_21) + g21 * m10_20);
         v = 3.0f * u;
         u = -((g15 * m16_20 - g16 * m15_20) + g20 * m15_16);
         v += 4.0f * u;
+        if (d)
+            d[99] = ptp_4x4_vfirst(v) * 1.60000002f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 99 */
         u = ((g10 * m20_22 - g20 * m10_22) + g22 * m10_20);
@@ -8313,6 +8576,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g15 * m16_21 - g16 * m15_21) + g21 * m15_16);
         v += 16.0f * u;
+        if (d)
+            d[100] = ptp_4x4_vfirst(v) * 0.159999996f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 100 */
         u = ((g10 * m20_23 - g20 * m10_23) + g23 * m10_20);
@@ -8329,6 +8594,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g15 * m17_21 - g17 * m15_21) + g21 * m15_17);
         v += 16.0f * u;
+        if (d)
+            d[101] = ptp_4x4_vfirst(v) * 0.106666669f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 101 */
         u = ((g10 * m20_24 - g20 * m10_24) + g24 * m10_20);
@@ -8354,6 +8621,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g16 * m17_21 - g17 * m16_21) + g21 * m16_17);
         v += 96.0f * u;
+        if (d)
+            d[102] = ptp_4x4_vfirst(v) * 0.0133333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 102 */
         u = ((g14 * m20_21 - g20 * m14_21) + g21 * m14_20);
@@ -8387,6 +8656,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g16 * m17_22 - g17 * m16_22) + g22 * m16_17);
         v += 144.0f * u;
+        if (d)
+            d[103] = ptp_4x4_vfirst(v) * 0.00761904754f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 103 */
         u = ((g10 * m22_24 - g22 * m10_24) + g24 * m10_22);
@@ -8415,6 +8686,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 48.0f * u;
         u = -((g16 * m18_22 - g18 * m16_22) + g22 * m16_18);
         v += 64.0f * u;
+        if (d)
+            d[104] = ptp_4x4_vfirst(v) * 0.0190476198f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 104 */
         u = ((g10 * m23_24 - g23 * m10_24) + g24 * m10_23);
@@ -8448,6 +8721,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 128.0f * u;
         u = -((g17 * m18_22 - g18 * m17_22) + g22 * m17_18);
         v += 144.0f * u;
+        if (d)
+            d[105] = ptp_4x4_vfirst(v) * 0.00761904754f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 105 */
         u = ((g14 * m20_24 - g20 * m14_24) + g24 * m14_20);
@@ -8473,6 +8748,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 72.0f * u;
         u = -((g17 * m18_23 - g18 * m17_23) + g23 * m17_18);
         v += 96.0f * u;
+        if (d)
+            d[106] = ptp_4x4_vfirst(v) * 0.0133333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 106 */
         u = ((g14 * m21_24 - g21 * m14_24) + g24 * m14_21);
@@ -8489,6 +8766,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g17 * m19_23 - g19 * m17_23) + g23 * m17_19);
         v += 16.0f * u;
+        if (d)
+            d[107] = ptp_4x4_vfirst(v) * 0.106666669f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 107 */
         u = ((g14 * m22_24 - g22 * m14_24) + g24 * m14_22);
@@ -8498,22 +8777,30 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 12.0f * u;
         u = -((g18 * m19_23 - g19 * m18_23) + g23 * m18_19);
         v += 16.0f * u;
+        if (d)
+            d[108] = ptp_4x4_vfirst(v) * 0.159999996f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 108 */
         u = ((g14 * m23_24 - g23 * m14_24) + g24 * m14_23);
         v = 3.0f * u;
         u = -((g18 * m19_24 - g19 * m18_24) + g24 * m18_19);
         v += 4.0f * u;
+        if (d)
+            d[109] = ptp_4x4_vfirst(v) * 1.60000002f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 109 */
         u = ((g15 * m20_21 - g20 * m15_21) + g21 * m15_20);
         v = u;
+        if (d)
+            d[110] = ptp_4x4_vfirst(v) * 16.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 110 */
         u = ((g15 * m20_22 - g20 * m15_22) + g22 * m15_20);
         v = 3.0f * u;
         u = ((g16 * m20_21 - g20 * m16_21) + g21 * m16_20);
         v += 4.0f * u;
+        if (d)
+            d[111] = ptp_4x4_vfirst(v) * 1.60000002f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 111 */
         u = ((g15 * m20_23 - g20 * m15_23) + g23 * m15_20);
@@ -8523,6 +8810,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = ((g16 * m20_22 - g20 * m16_22) + g22 * m16_20);
         v += 4.0f * u;
+        if (d)
+            d[112] = ptp_4x4_vfirst(v) * 1.06666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 112 */
         u = ((g15 * m20_24 - g20 * m15_24) + g24 * m15_20);
@@ -8537,6 +8826,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g16 * m21_22 - g21 * m16_22) + g22 * m16_21);
         v += 24.0f * u;
+        if (d)
+            d[113] = ptp_4x4_vfirst(v) * 0.13333334f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 113 */
         u = ((g19 * m20_21 - g20 * m19_21) + g21 * m19_20);
@@ -8555,6 +8846,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = ((g17 * m21_22 - g21 * m17_22) + g22 * m17_21);
         v += 36.0f * u;
+        if (d)
+            d[114] = ptp_4x4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 114 */
         u = ((g15 * m22_24 - g22 * m15_24) + g24 * m15_22);
@@ -8570,6 +8863,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 8.0f * u;
         u = ((g17 * m21_23 - g21 * m17_23) + g23 * m17_21);
         v += 16.0f * u;
+        if (d)
+            d[115] = ptp_4x4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 115 */
         u = ((g15 * m23_24 - g23 * m15_24) + g24 * m15_23);
@@ -8588,6 +8883,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 32.0f * u;
         u = ((g17 * m22_23 - g22 * m17_23) + g23 * m17_22);
         v += 36.0f * u;
+        if (d)
+            d[116] = ptp_4x4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 116 */
         u = ((g19 * m20_24 - g20 * m19_24) + g24 * m19_20);
@@ -8602,6 +8899,8 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 18.0f * u;
         u = ((g18 * m22_23 - g22 * m18_23) + g23 * m18_22);
         v += 24.0f * u;
+        if (d)
+            d[117] = ptp_4x4_vfirst(v) * 0.13333334f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 117 */
         u = ((g19 * m21_24 - g21 * m19_24) + g24 * m19_21);
@@ -8611,16 +8910,22 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         v += 2.0f * u;
         u = ((g18 * m22_24 - g22 * m18_24) + g24 * m18_22);
         v += 4.0f * u;
+        if (d)
+            d[118] = ptp_4x4_vfirst(v) * 1.06666672f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 118 */
         u = ((g19 * m22_24 - g22 * m19_24) + g24 * m19_22);
         v = 3.0f * u;
         u = ((g18 * m23_24 - g23 * m18_24) + g24 * m18_23);
         v += 4.0f * u;
+        if (d)
+            d[119] = ptp_4x4_vfirst(v) * 1.60000002f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 119 */
         u = ((g19 * m23_24 - g23 * m19_24) + g24 * m19_23);
         v = u;
+        if (d)
+            d[120] = ptp_4x4_vfirst(v) * 16.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 120 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -8629,6 +8934,24 @@ static void ptp_4x4_lanes(const float *restrict soa, size_t stride, size_t n, co
         notgt &= 1;
         ptp_4x4_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_4x4_lanes(const float *PTP_4X4_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                          unsigned char *PTP_4X4_RESTRICT cls)
+{
+    ptp_4x4_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_4x4_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_4x4_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

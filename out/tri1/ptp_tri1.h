@@ -6,12 +6,16 @@
  * k = (1-i)(2-i)/2 + 1-i-j with b_ijk weighted by u^i v^j w^k. The 1 control planes t_P of the tangent plane
  * T = cross4(B, dB/du, dB/dv) have degree 0, P = (0-I)(1-I)/2 + 0-I-J with t_IJK weighted by u^I v^J w^K.
  * Clip space: the points are in clip space and eye = (0, 0, alpha, 0); the values are
- * d_P = eye.z * t_P.z. alpha = sign(det Proj) * Proj[2][3]: > 0 for OpenGL and < 0 for
- * Direct3D projections (reversed Z included); negate it to flip the orientation.
+ * d_P = eye.z * t_P.z. alpha = sign(det P) * P(2, 3), P(2, 3) the element in row 2,
+ * column 3 of the projection P for column vectors (clip = P * view), which carries
+ * view w into clip z: > 0 for glm's OpenGL and DirectXMath's RH projections, < 0 for
+ * Vulkan's y flip and DirectXMath's LH (reversed Z keeps the sign); negate it to flip
+ * the orientation. The C header's <prefix>alpha() computes it from a matrix.
  * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule strict: back iff every d_P < 0, front iff every d_P > 0.
  * A NaN value makes a patch silhouette. Values are at true scale (plane_scale 1).
  *
- * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * In exactly one C or C++ file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).
  * Headers of several degrees (prefixes) may be included in one program.
  */
 
@@ -24,6 +28,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_TRI1_DEGREE_U 1
+#define PTP_TRI1_DEGREE_V 1
+#define PTP_TRI1_SPACE_CLIP 1
+#define PTP_TRI1_RULE_STRICT 1
+#define PTP_TRI1_CERTIFIED 0
+#define PTP_TRI1_REFINE 0
 #define PTP_TRI1_POINTS 3
 #define PTP_TRI1_PLANES 1
 #define PTP_TRI1_FRONT 0u
@@ -38,7 +51,8 @@ extern "C" {
 
 /* The 1 control planes of one patch, all four components, at true scale. */
 void ptp_tri1_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_tri1_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_TRI1_FRONT, PTP_TRI1_BACK or PTP_TRI1_SILHOUETTE. */
 unsigned ptp_tri1_classify(const float cp[][4], const float eye[4]);
@@ -50,6 +64,20 @@ void ptp_tri1_classify_batch(const float (*cp)[4], size_t patch_count, const flo
 void ptp_tri1_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
 
+/* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
+ * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
+ * OpenGL, glm and Vulkan programs hold it; DirectXMath's XMMATRIX and XMFLOAT4X4 too: they hold
+ * M = P^T for row vectors (clip = view * M) row by row, the same 16 floats. ROW_MAJOR: P(r, c) at
+ * proj[r * 4 + c] (P written row by row, as on paper). */
+#define PTP_TRI1_COLUMN_MAJOR 0
+#define PTP_TRI1_ROW_MAJOR 1
+/* alpha of the clip-space eye (0, 0, alpha, 0) for a perspective projection proj in layout:
+ * sign(det P) * P(2, 3). The view-space eye (0, 0, 0, 1) maps to column 3 of P, (0, 0, P(2, 3),
+ * 0), and cross4 of transformed points is det(P) P^-T cross4, so the sign of det P keeps the
+ * world-space classes (for a model-view matrix of positive determinant; negate alpha for a
+ * mirroring one). 0 if det P is 0. */
+float ptp_tri1_alpha(const float proj[16], int layout);
+
 #ifdef __cplusplus
 }
 #endif
@@ -57,6 +85,20 @@ void ptp_tri1_classify_soa(const float *soa, size_t stride, size_t patch_count, 
 
 #if defined(PTP_TRI1_IMPLEMENTATION) && !defined(PTP_TRI1_IMPLEMENTED)
 #define PTP_TRI1_IMPLEMENTED
+/* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
+ * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
+    defined(__ASSOCIATIVE_MATH__)
+#error "ptp_tri1_: do not compile this header's implementation with -ffast-math, -ffinite-math-only or -fassociative-math: they drop the NaN checks and regroup the sums whose signs are the classes"
+#endif
+/* restrict: C99's, GNU C++'s and MSVC's __restrict, else nothing. */
+#if defined(__cplusplus) && (defined(__GNUC__) || defined(_MSC_VER))
+#define PTP_TRI1_RESTRICT __restrict
+#elif !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define PTP_TRI1_RESTRICT restrict
+#else
+#define PTP_TRI1_RESTRICT
+#endif
 #if defined(__SSE2__) && !defined(PTP_TRI1_NO_SSE)
 #include <emmintrin.h>
 #endif
@@ -90,6 +132,11 @@ static inline void ptp_tri1_vstore(unsigned char *cls, ptp_tri1_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI1_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_tri1_vfirst(ptp_tri1_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri1_vf ptp_tri1_vabsmax(ptp_tri1_vf r, ptp_tri1_vf x)
 {
@@ -113,20 +160,48 @@ static inline ptp_tri1_vf ptp_tri1_vabsmax(ptp_tri1_vf r, ptp_tri1_vf x)
 {
     return PTP_TRI1_ABSMAX(r, x);
 }
+static inline float ptp_tri1_vfirst(ptp_tri1_vf v)
+{
+    return v;
+}
 #endif
+
+float ptp_tri1_alpha(const float proj[16], int layout)
+{
+    double m[4][4], s[6], c[6], det;
+    int r, k;
+    for (r = 0; r < 4; r++)
+        for (k = 0; k < 4; k++)
+            m[r][k] = proj[layout == PTP_TRI1_ROW_MAJOR ? r * 4 + k : k * 4 + r];
+    /* det P by Laplace along rows 0 and 1: their 2x2 minors s times the complementary c */
+    s[0] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    s[1] = m[0][0] * m[1][2] - m[0][2] * m[1][0];
+    s[2] = m[0][0] * m[1][3] - m[0][3] * m[1][0];
+    s[3] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    s[4] = m[0][1] * m[1][3] - m[0][3] * m[1][1];
+    s[5] = m[0][2] * m[1][3] - m[0][3] * m[1][2];
+    c[0] = m[2][2] * m[3][3] - m[2][3] * m[3][2];
+    c[1] = m[2][1] * m[3][3] - m[2][3] * m[3][1];
+    c[2] = m[2][1] * m[3][2] - m[2][2] * m[3][1];
+    c[3] = m[2][0] * m[3][3] - m[2][3] * m[3][0];
+    c[4] = m[2][0] * m[3][2] - m[2][2] * m[3][0];
+    c[5] = m[2][0] * m[3][1] - m[2][1] * m[3][0];
+    det = s[0] * c[0] - s[1] * c[1] + s[2] * c[2] + s[3] * c[3] - s[4] * c[4] + s[5] * c[5];
+    return det > 0 ? (float)m[2][3] : det < 0 ? (float)-m[2][3] : 0.0f;
+}
 
 #define PTP_TRI1_TERMS 1
 
-static const unsigned short ptp_tri1_idx[PTP_TRI1_TERMS][4] = {
+static const unsigned short ptp_tri1_term_idx[PTP_TRI1_TERMS][4] = {
     {0, 0, 1, 2},
 };
 
-static const float ptp_tri1_wgt[PTP_TRI1_TERMS] = {
+static const float ptp_tri1_term_wgt[PTP_TRI1_TERMS] = {
     1.0f,            /* 1 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -160,24 +235,10 @@ void ptp_tri1_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_TRI1_TERMS; x++) {
         float r[4];
-        ptp_tri1_cross4(r, cp[ptp_tri1_idx[x][1]], cp[ptp_tri1_idx[x][2]], cp[ptp_tri1_idx[x][3]]);
+        ptp_tri1_cross4(r, cp[ptp_tri1_term_idx[x][1]], cp[ptp_tri1_term_idx[x][2]], cp[ptp_tri1_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_tri1_idx[x][0]][c] += ptp_tri1_wgt[x] * r[c];
+            t[ptp_tri1_term_idx[x][0]][c] += ptp_tri1_term_wgt[x] * r[c];
     }
-}
-
-void ptp_tri1_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_TRI1_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_TRI1_TERMS; x++) {
-        float r[4];
-        ptp_tri1_cross4(r, cp[ptp_tri1_idx[x][1]], cp[ptp_tri1_idx[x][2]], cp[ptp_tri1_idx[x][3]]);
-        d[ptp_tri1_idx[x][0]] += ptp_tri1_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_TRI1_PLANES; x++)
-        d[x] *= eye[2];
 }
 
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
@@ -186,14 +247,16 @@ void ptp_tri1_values(const float cp[][4], const float eye[4], float d[])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI1_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_tri1_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
-                           unsigned char *restrict cls)
+static inline void ptp_tri1_lanes_body(const float *PTP_TRI1_RESTRICT soa, size_t stride, size_t n,
+                                        const float eye[4], unsigned char *PTP_TRI1_RESTRICT cls,
+                                        float *PTP_TRI1_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -228,6 +291,8 @@ static void ptp_tri1_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri1_vf m0_1 = x0 * y1 - y0 * x1;
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_tri1_vfirst(v);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -236,6 +301,24 @@ static void ptp_tri1_lanes(const float *restrict soa, size_t stride, size_t n, c
         notgt &= 1;
         ptp_tri1_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_tri1_lanes(const float *PTP_TRI1_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                           unsigned char *PTP_TRI1_RESTRICT cls)
+{
+    ptp_tri1_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_tri1_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_tri1_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -6,12 +6,16 @@
  * k = (3-i)(4-i)/2 + 3-i-j with b_ijk weighted by u^i v^j w^k. The 28 control planes t_P of the tangent plane
  * T = cross4(B, dB/du, dB/dv) have degree 6, P = (6-I)(7-I)/2 + 6-I-J with t_IJK weighted by u^I v^J w^K.
  * Clip space: the points are in clip space and eye = (0, 0, alpha, 0); the values are
- * d_P = eye.z * t_P.z. alpha = sign(det Proj) * Proj[2][3]: > 0 for OpenGL and < 0 for
- * Direct3D projections (reversed Z included); negate it to flip the orientation.
+ * d_P = eye.z * t_P.z. alpha = sign(det P) * P(2, 3), P(2, 3) the element in row 2,
+ * column 3 of the projection P for column vectors (clip = P * view), which carries
+ * view w into clip z: > 0 for glm's OpenGL and DirectXMath's RH projections, < 0 for
+ * Vulkan's y flip and DirectXMath's LH (reversed Z keeps the sign); negate it to flip
+ * the orientation. The C header's <prefix>alpha() computes it from a matrix.
  * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule strict: back iff every d_P < 0, front iff every d_P > 0.
  * A NaN value makes a patch silhouette. Values are at true scale (plane_scale 1).
  *
- * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * In exactly one C or C++ file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).
  * Headers of several degrees (prefixes) may be included in one program.
  */
 
@@ -24,6 +28,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_TRI3_DEGREE_U 3
+#define PTP_TRI3_DEGREE_V 3
+#define PTP_TRI3_SPACE_CLIP 1
+#define PTP_TRI3_RULE_STRICT 1
+#define PTP_TRI3_CERTIFIED 0
+#define PTP_TRI3_REFINE 0
 #define PTP_TRI3_POINTS 10
 #define PTP_TRI3_PLANES 28
 #define PTP_TRI3_FRONT 0u
@@ -38,7 +51,8 @@ extern "C" {
 
 /* The 28 control planes of one patch, all four components, at true scale. */
 void ptp_tri3_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_tri3_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_TRI3_FRONT, PTP_TRI3_BACK or PTP_TRI3_SILHOUETTE. */
 unsigned ptp_tri3_classify(const float cp[][4], const float eye[4]);
@@ -50,6 +64,20 @@ void ptp_tri3_classify_batch(const float (*cp)[4], size_t patch_count, const flo
 void ptp_tri3_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
 
+/* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
+ * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
+ * OpenGL, glm and Vulkan programs hold it; DirectXMath's XMMATRIX and XMFLOAT4X4 too: they hold
+ * M = P^T for row vectors (clip = view * M) row by row, the same 16 floats. ROW_MAJOR: P(r, c) at
+ * proj[r * 4 + c] (P written row by row, as on paper). */
+#define PTP_TRI3_COLUMN_MAJOR 0
+#define PTP_TRI3_ROW_MAJOR 1
+/* alpha of the clip-space eye (0, 0, alpha, 0) for a perspective projection proj in layout:
+ * sign(det P) * P(2, 3). The view-space eye (0, 0, 0, 1) maps to column 3 of P, (0, 0, P(2, 3),
+ * 0), and cross4 of transformed points is det(P) P^-T cross4, so the sign of det P keeps the
+ * world-space classes (for a model-view matrix of positive determinant; negate alpha for a
+ * mirroring one). 0 if det P is 0. */
+float ptp_tri3_alpha(const float proj[16], int layout);
+
 #ifdef __cplusplus
 }
 #endif
@@ -57,6 +85,20 @@ void ptp_tri3_classify_soa(const float *soa, size_t stride, size_t patch_count, 
 
 #if defined(PTP_TRI3_IMPLEMENTATION) && !defined(PTP_TRI3_IMPLEMENTED)
 #define PTP_TRI3_IMPLEMENTED
+/* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
+ * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
+    defined(__ASSOCIATIVE_MATH__)
+#error "ptp_tri3_: do not compile this header's implementation with -ffast-math, -ffinite-math-only or -fassociative-math: they drop the NaN checks and regroup the sums whose signs are the classes"
+#endif
+/* restrict: C99's, GNU C++'s and MSVC's __restrict, else nothing. */
+#if defined(__cplusplus) && (defined(__GNUC__) || defined(_MSC_VER))
+#define PTP_TRI3_RESTRICT __restrict
+#elif !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define PTP_TRI3_RESTRICT restrict
+#else
+#define PTP_TRI3_RESTRICT
+#endif
 #if defined(__SSE2__) && !defined(PTP_TRI3_NO_SSE)
 #include <emmintrin.h>
 #endif
@@ -90,6 +132,11 @@ static inline void ptp_tri3_vstore(unsigned char *cls, ptp_tri3_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_tri3_vfirst(ptp_tri3_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri3_vf ptp_tri3_vabsmax(ptp_tri3_vf r, ptp_tri3_vf x)
 {
@@ -113,11 +160,39 @@ static inline ptp_tri3_vf ptp_tri3_vabsmax(ptp_tri3_vf r, ptp_tri3_vf x)
 {
     return PTP_TRI3_ABSMAX(r, x);
 }
+static inline float ptp_tri3_vfirst(ptp_tri3_vf v)
+{
+    return v;
+}
 #endif
+
+float ptp_tri3_alpha(const float proj[16], int layout)
+{
+    double m[4][4], s[6], c[6], det;
+    int r, k;
+    for (r = 0; r < 4; r++)
+        for (k = 0; k < 4; k++)
+            m[r][k] = proj[layout == PTP_TRI3_ROW_MAJOR ? r * 4 + k : k * 4 + r];
+    /* det P by Laplace along rows 0 and 1: their 2x2 minors s times the complementary c */
+    s[0] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    s[1] = m[0][0] * m[1][2] - m[0][2] * m[1][0];
+    s[2] = m[0][0] * m[1][3] - m[0][3] * m[1][0];
+    s[3] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    s[4] = m[0][1] * m[1][3] - m[0][3] * m[1][1];
+    s[5] = m[0][2] * m[1][3] - m[0][3] * m[1][2];
+    c[0] = m[2][2] * m[3][3] - m[2][3] * m[3][2];
+    c[1] = m[2][1] * m[3][3] - m[2][3] * m[3][1];
+    c[2] = m[2][1] * m[3][2] - m[2][2] * m[3][1];
+    c[3] = m[2][0] * m[3][3] - m[2][3] * m[3][0];
+    c[4] = m[2][0] * m[3][2] - m[2][2] * m[3][0];
+    c[5] = m[2][0] * m[3][1] - m[2][1] * m[3][0];
+    det = s[0] * c[0] - s[1] * c[1] + s[2] * c[2] + s[3] * c[3] - s[4] * c[4] + s[5] * c[5];
+    return det > 0 ? (float)m[2][3] : det < 0 ? (float)-m[2][3] : 0.0f;
+}
 
 #define PTP_TRI3_TERMS 105
 
-static const unsigned short ptp_tri3_idx[PTP_TRI3_TERMS][4] = {
+static const unsigned short ptp_tri3_term_idx[PTP_TRI3_TERMS][4] = {
     {0, 0, 1, 2},
     {1, 0, 1, 4},
     {1, 0, 2, 3},
@@ -225,7 +300,7 @@ static const unsigned short ptp_tri3_idx[PTP_TRI3_TERMS][4] = {
     {27, 5, 8, 9},
 };
 
-static const float ptp_tri3_wgt[PTP_TRI3_TERMS] = {
+static const float ptp_tri3_term_wgt[PTP_TRI3_TERMS] = {
     9.0f,            /* 9 */
     3.0f,            /* 3 */
     -3.0f,           /* -3 */
@@ -333,8 +408,8 @@ static const float ptp_tri3_wgt[PTP_TRI3_TERMS] = {
     9.0f,            /* 9 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -368,24 +443,10 @@ void ptp_tri3_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_TRI3_TERMS; x++) {
         float r[4];
-        ptp_tri3_cross4(r, cp[ptp_tri3_idx[x][1]], cp[ptp_tri3_idx[x][2]], cp[ptp_tri3_idx[x][3]]);
+        ptp_tri3_cross4(r, cp[ptp_tri3_term_idx[x][1]], cp[ptp_tri3_term_idx[x][2]], cp[ptp_tri3_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_tri3_idx[x][0]][c] += ptp_tri3_wgt[x] * r[c];
+            t[ptp_tri3_term_idx[x][0]][c] += ptp_tri3_term_wgt[x] * r[c];
     }
-}
-
-void ptp_tri3_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_TRI3_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_TRI3_TERMS; x++) {
-        float r[4];
-        ptp_tri3_cross4(r, cp[ptp_tri3_idx[x][1]], cp[ptp_tri3_idx[x][2]], cp[ptp_tri3_idx[x][3]]);
-        d[ptp_tri3_idx[x][0]] += ptp_tri3_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_TRI3_PLANES; x++)
-        d[x] *= eye[2];
 }
 
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
@@ -394,14 +455,16 @@ void ptp_tri3_values(const float cp[][4], const float eye[4], float d[])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
-                           unsigned char *restrict cls)
+static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_t stride, size_t n,
+                                        const float eye[4], unsigned char *PTP_TRI3_RESTRICT cls,
+                                        float *PTP_TRI3_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -450,6 +513,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri3_vf m0_1 = x0 * y1 - y0 * x1;
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_tri3_vfirst(v) * 9.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_tri3_vf m1_4 = x1 * y4 - y1 * x4;
@@ -459,6 +524,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri3_vf m0_3 = x0 * y3 - y0 * x3;
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
+        if (d)
+            d[1] = ptp_tri3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_tri3_vf m1_5 = x1 * y5 - y1 * x5;
@@ -467,6 +534,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri3_vf m2_4 = x2 * y4 - y2 * x4;
         u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = u;
+        if (d)
+            d[2] = ptp_tri3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_tri3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -482,6 +551,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri3_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v += 4.0f * u;
+        if (d)
+            d[3] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -495,6 +566,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 2.0f * u;
         u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
         v += 3.0f * u;
+        if (d)
+            d[4] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_tri3_vf m1_9 = x1 * y9 - y1 * x9;
@@ -509,6 +582,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v += 4.0f * u;
+        if (d)
+            d[5] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_tri3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -520,6 +595,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v = u;
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v += 3.0f * u;
+        if (d)
+            d[6] = ptp_tri3_vfirst(v) * 0.899999976f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_tri3_vf m4_7 = x4 * y7 - y4 * x7;
@@ -534,6 +611,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         u += ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v += 3.0f * u;
+        if (d)
+            d[7] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_tri3_vf m3_9 = x3 * y9 - y3 * x9;
@@ -548,6 +627,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         u += ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
         v += 3.0f * u;
+        if (d)
+            d[8] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_tri3_vf m4_9 = x4 * y9 - y4 * x9;
@@ -559,6 +640,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v = u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v += 3.0f * u;
+        if (d)
+            d[9] = ptp_tri3_vfirst(v) * 0.899999976f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_tri3_vf m6_7 = x6 * y7 - y6 * x7;
@@ -570,6 +653,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 3.0f * u;
         u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += 4.0f * u;
+        if (d)
+            d[10] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri3_vf m6_8 = x6 * y8 - y6 * x8;
@@ -582,6 +667,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         u -= ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
         u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v += 3.0f * u;
+        if (d)
+            d[11] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_tri3_vf m6_9 = x6 * y9 - y6 * x9;
@@ -595,6 +682,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
         u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
         v += 9.0f * u;
+        if (d)
+            d[12] = ptp_tri3_vfirst(v) * 0.100000001f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_tri3_vf m7_9 = x7 * y9 - y7 * x9;
@@ -607,6 +696,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         v += 3.0f * u;
+        if (d)
+            d[13] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         const ptp_tri3_vf m8_9 = x8 * y9 - y8 * x9;
@@ -618,11 +709,15 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 3.0f * u;
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v += 4.0f * u;
+        if (d)
+            d[14] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         u -= ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v = u;
+        if (d)
+            d[15] = ptp_tri3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
@@ -632,6 +727,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 2.0f * u;
         u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v += 3.0f * u;
+        if (d)
+            d[16] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         u = ((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
@@ -643,6 +740,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         u -= ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
         u -= ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
         v += 3.0f * u;
+        if (d)
+            d[17] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         u = ((g2 * m6_9 - g6 * m2_9) + g9 * m2_6);
@@ -654,6 +753,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         u -= ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
         u -= ((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
         v += 3.0f * u;
+        if (d)
+            d[18] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = ((g1 * m8_9 - g8 * m1_9) + g9 * m1_8);
@@ -663,20 +764,28 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 2.0f * u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += 3.0f * u;
+        if (d)
+            d[19] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
         u -= ((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
         v = u;
+        if (d)
+            d[20] = ptp_tri3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
+        if (d)
+            d[21] = ptp_tri3_vfirst(v) * 9.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
         u += ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v = u;
+        if (d)
+            d[22] = ptp_tri3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = ((g3 * m6_9 - g6 * m3_9) + g9 * m3_6);
@@ -686,6 +795,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 3.0f * u;
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
         v += 4.0f * u;
+        if (d)
+            d[23] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         u = ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
@@ -694,6 +805,8 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v = u;
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
         v += 3.0f * u;
+        if (d)
+            d[24] = ptp_tri3_vfirst(v) * 0.899999976f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
@@ -703,15 +816,21 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 3.0f * u;
         u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
         v += 4.0f * u;
+        if (d)
+            d[25] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         u += ((g5 * m7_9 - g7 * m5_9) + g9 * m5_7);
         v = u;
+        if (d)
+            d[26] = ptp_tri3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v = u;
+        if (d)
+            d[27] = ptp_tri3_vfirst(v) * 9.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -720,6 +839,24 @@ static void ptp_tri3_lanes(const float *restrict soa, size_t stride, size_t n, c
         notgt &= 1;
         ptp_tri3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_tri3_lanes(const float *PTP_TRI3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                           unsigned char *PTP_TRI3_RESTRICT cls)
+{
+    ptp_tri3_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_tri3_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_tri3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -6,12 +6,16 @@
  * k = (4-i)(5-i)/2 + 4-i-j with b_ijk weighted by u^i v^j w^k. The 55 control planes t_P of the tangent plane
  * T = cross4(B, dB/du, dB/dv) have degree 9, P = (9-I)(10-I)/2 + 9-I-J with t_IJK weighted by u^I v^J w^K.
  * Clip space: the points are in clip space and eye = (0, 0, alpha, 0); the values are
- * d_P = eye.z * t_P.z. alpha = sign(det Proj) * Proj[2][3]: > 0 for OpenGL and < 0 for
- * Direct3D projections (reversed Z included); negate it to flip the orientation.
+ * d_P = eye.z * t_P.z. alpha = sign(det P) * P(2, 3), P(2, 3) the element in row 2,
+ * column 3 of the projection P for column vectors (clip = P * view), which carries
+ * view w into clip z: > 0 for glm's OpenGL and DirectXMath's RH projections, < 0 for
+ * Vulkan's y flip and DirectXMath's LH (reversed Z keeps the sign); negate it to flip
+ * the orientation. The C header's <prefix>alpha() computes it from a matrix.
  * Classes: 0 front-facing, 1 back-facing, 2 silhouette. Rule strict: back iff every d_P < 0, front iff every d_P > 0.
  * A NaN value makes a patch silhouette. Values are at true scale (plane_scale 1).
  *
- * In exactly one C file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * In exactly one C or C++ file, #define <PREFIX>IMPLEMENTATION before including this header.
+ * C99 or later, or C++11 or later; -ffast-math breaks it and is refused (#error).
  * Headers of several degrees (prefixes) may be included in one program.
  */
 
@@ -24,6 +28,15 @@
 extern "C" {
 #endif
 
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+#define PTP_TRI4_DEGREE_U 4
+#define PTP_TRI4_DEGREE_V 4
+#define PTP_TRI4_SPACE_CLIP 1
+#define PTP_TRI4_RULE_STRICT 1
+#define PTP_TRI4_CERTIFIED 0
+#define PTP_TRI4_REFINE 0
 #define PTP_TRI4_POINTS 15
 #define PTP_TRI4_PLANES 55
 #define PTP_TRI4_FRONT 0u
@@ -38,7 +51,8 @@ extern "C" {
 
 /* The 55 control planes of one patch, all four components, at true scale. */
 void ptp_tri4_planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane. */
+/* d[P] = the value of plane P (clip space: eye[2] * t_P.z) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void ptp_tri4_values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: PTP_TRI4_FRONT, PTP_TRI4_BACK or PTP_TRI4_SILHOUETTE. */
 unsigned ptp_tri4_classify(const float cp[][4], const float eye[4]);
@@ -50,6 +64,20 @@ void ptp_tri4_classify_batch(const float (*cp)[4], size_t patch_count, const flo
 void ptp_tri4_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
 
+/* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
+ * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
+ * OpenGL, glm and Vulkan programs hold it; DirectXMath's XMMATRIX and XMFLOAT4X4 too: they hold
+ * M = P^T for row vectors (clip = view * M) row by row, the same 16 floats. ROW_MAJOR: P(r, c) at
+ * proj[r * 4 + c] (P written row by row, as on paper). */
+#define PTP_TRI4_COLUMN_MAJOR 0
+#define PTP_TRI4_ROW_MAJOR 1
+/* alpha of the clip-space eye (0, 0, alpha, 0) for a perspective projection proj in layout:
+ * sign(det P) * P(2, 3). The view-space eye (0, 0, 0, 1) maps to column 3 of P, (0, 0, P(2, 3),
+ * 0), and cross4 of transformed points is det(P) P^-T cross4, so the sign of det P keeps the
+ * world-space classes (for a model-view matrix of positive determinant; negate alpha for a
+ * mirroring one). 0 if det P is 0. */
+float ptp_tri4_alpha(const float proj[16], int layout);
+
 #ifdef __cplusplus
 }
 #endif
@@ -57,6 +85,20 @@ void ptp_tri4_classify_soa(const float *soa, size_t stride, size_t patch_count, 
 
 #if defined(PTP_TRI4_IMPLEMENTATION) && !defined(PTP_TRI4_IMPLEMENTED)
 #define PTP_TRI4_IMPLEMENTED
+/* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
+ * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
+    defined(__ASSOCIATIVE_MATH__)
+#error "ptp_tri4_: do not compile this header's implementation with -ffast-math, -ffinite-math-only or -fassociative-math: they drop the NaN checks and regroup the sums whose signs are the classes"
+#endif
+/* restrict: C99's, GNU C++'s and MSVC's __restrict, else nothing. */
+#if defined(__cplusplus) && (defined(__GNUC__) || defined(_MSC_VER))
+#define PTP_TRI4_RESTRICT __restrict
+#elif !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define PTP_TRI4_RESTRICT restrict
+#else
+#define PTP_TRI4_RESTRICT
+#endif
 #if defined(__SSE2__) && !defined(PTP_TRI4_NO_SSE)
 #include <emmintrin.h>
 #endif
@@ -90,6 +132,11 @@ static inline void ptp_tri4_vstore(unsigned char *cls, ptp_tri4_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI4_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float ptp_tri4_vfirst(ptp_tri4_vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri4_vf ptp_tri4_vabsmax(ptp_tri4_vf r, ptp_tri4_vf x)
 {
@@ -113,11 +160,39 @@ static inline ptp_tri4_vf ptp_tri4_vabsmax(ptp_tri4_vf r, ptp_tri4_vf x)
 {
     return PTP_TRI4_ABSMAX(r, x);
 }
+static inline float ptp_tri4_vfirst(ptp_tri4_vf v)
+{
+    return v;
+}
 #endif
+
+float ptp_tri4_alpha(const float proj[16], int layout)
+{
+    double m[4][4], s[6], c[6], det;
+    int r, k;
+    for (r = 0; r < 4; r++)
+        for (k = 0; k < 4; k++)
+            m[r][k] = proj[layout == PTP_TRI4_ROW_MAJOR ? r * 4 + k : k * 4 + r];
+    /* det P by Laplace along rows 0 and 1: their 2x2 minors s times the complementary c */
+    s[0] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    s[1] = m[0][0] * m[1][2] - m[0][2] * m[1][0];
+    s[2] = m[0][0] * m[1][3] - m[0][3] * m[1][0];
+    s[3] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    s[4] = m[0][1] * m[1][3] - m[0][3] * m[1][1];
+    s[5] = m[0][2] * m[1][3] - m[0][3] * m[1][2];
+    c[0] = m[2][2] * m[3][3] - m[2][3] * m[3][2];
+    c[1] = m[2][1] * m[3][3] - m[2][3] * m[3][1];
+    c[2] = m[2][1] * m[3][2] - m[2][2] * m[3][1];
+    c[3] = m[2][0] * m[3][3] - m[2][3] * m[3][0];
+    c[4] = m[2][0] * m[3][2] - m[2][2] * m[3][0];
+    c[5] = m[2][0] * m[3][1] - m[2][1] * m[3][0];
+    det = s[0] * c[0] - s[1] * c[1] + s[2] * c[2] + s[3] * c[3] - s[4] * c[4] + s[5] * c[5];
+    return det > 0 ? (float)m[2][3] : det < 0 ? (float)-m[2][3] : 0.0f;
+}
 
 #define PTP_TRI4_TERMS 407
 
-static const unsigned short ptp_tri4_idx[PTP_TRI4_TERMS][4] = {
+static const unsigned short ptp_tri4_term_idx[PTP_TRI4_TERMS][4] = {
     {0, 0, 1, 2},
     {1, 0, 1, 4},
     {1, 0, 2, 3},
@@ -527,7 +602,7 @@ static const unsigned short ptp_tri4_idx[PTP_TRI4_TERMS][4] = {
     {54, 9, 13, 14},
 };
 
-static const float ptp_tri4_wgt[PTP_TRI4_TERMS] = {
+static const float ptp_tri4_term_wgt[PTP_TRI4_TERMS] = {
     16.0f,           /* 16 */
     5.33333349f,     /* 16/3 */
     -5.33333349f,    /* -16/3 */
@@ -937,8 +1012,8 @@ static const float ptp_tri4_wgt[PTP_TRI4_TERMS] = {
     16.0f,           /* 16 */
 };
 
-/* From here through lanes gcc contracts no product into an FMA; one region, because gcc
- * does not inline across optimize options (cross4 into planes and values). */
+/* From here through values gcc contracts no product into an FMA; one region, because gcc
+ * does not inline across optimize options (cross4 into planes, the lanes into values). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
@@ -972,24 +1047,10 @@ void ptp_tri4_planes(const float cp[][4], float t[][4])
         t[x][0] = t[x][1] = t[x][2] = t[x][3] = 0.0f;
     for (x = 0; x < PTP_TRI4_TERMS; x++) {
         float r[4];
-        ptp_tri4_cross4(r, cp[ptp_tri4_idx[x][1]], cp[ptp_tri4_idx[x][2]], cp[ptp_tri4_idx[x][3]]);
+        ptp_tri4_cross4(r, cp[ptp_tri4_term_idx[x][1]], cp[ptp_tri4_term_idx[x][2]], cp[ptp_tri4_term_idx[x][3]]);
         for (c = 0; c < 4; c++)
-            t[ptp_tri4_idx[x][0]][c] += ptp_tri4_wgt[x] * r[c];
+            t[ptp_tri4_term_idx[x][0]][c] += ptp_tri4_term_wgt[x] * r[c];
     }
-}
-
-void ptp_tri4_values(const float cp[][4], const float eye[4], float d[])
-{
-    unsigned x;
-    for (x = 0; x < PTP_TRI4_PLANES; x++)
-        d[x] = 0.0f;
-    for (x = 0; x < PTP_TRI4_TERMS; x++) {
-        float r[4];
-        ptp_tri4_cross4(r, cp[ptp_tri4_idx[x][1]], cp[ptp_tri4_idx[x][2]], cp[ptp_tri4_idx[x][3]]);
-        d[ptp_tri4_idx[x][0]] += ptp_tri4_wgt[x] * r[2];
-    }
-    for (x = 0; x < PTP_TRI4_PLANES; x++)
-        d[x] *= eye[2];
 }
 
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
@@ -998,14 +1059,16 @@ void ptp_tri4_values(const float cp[][4], const float eye[4], float d[])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI4_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone)) /* one copy: it is large */
-#elif defined(__clang__)
-__attribute__((noinline))
+ * one. Products are never contracted into FMAs: equal points give exact zeros.
+ * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
+ * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
+ * and values. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, const float eye[4],
-                           unsigned char *restrict cls)
+static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_t stride, size_t n,
+                                        const float eye[4], unsigned char *PTP_TRI4_RESTRICT cls,
+                                        float *PTP_TRI4_RESTRICT d)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -1064,6 +1127,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri4_vf m0_1 = x0 * y1 - y0 * x1;
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
+        if (d)
+            d[0] = ptp_tri4_vfirst(v) * 16.0f;
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_tri4_vf m1_4 = x1 * y4 - y1 * x4;
@@ -1073,6 +1138,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri4_vf m0_3 = x0 * y3 - y0 * x3;
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
+        if (d)
+            d[1] = ptp_tri4_vfirst(v) * 5.33333349f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_tri4_vf m1_5 = x1 * y5 - y1 * x5;
@@ -1081,6 +1148,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri4_vf m2_4 = x2 * y4 - y2 * x4;
         u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = u;
+        if (d)
+            d[2] = ptp_tri4_vfirst(v) * 5.33333349f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_tri4_vf m1_7 = x1 * y7 - y1 * x7;
@@ -1096,6 +1165,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri4_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v += 3.0f * u;
+        if (d)
+            d[3] = ptp_tri4_vfirst(v) * 1.33333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri4_vf m1_8 = x1 * y8 - y1 * x8;
@@ -1109,6 +1180,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 3.0f * u;
         u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
         v += 4.0f * u;
+        if (d)
+            d[4] = ptp_tri4_vfirst(v) * 0.666666687f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_tri4_vf m1_9 = x1 * y9 - y1 * x9;
@@ -1123,6 +1196,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         const ptp_tri4_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v += 3.0f * u;
+        if (d)
+            d[5] = ptp_tri4_vfirst(v) * 1.33333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_tri4_vf m1_11 = x1 * y11 - y1 * x11;
@@ -1142,6 +1217,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 9.0f * u;
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v += 18.0f * u;
+        if (d)
+            d[6] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_tri4_vf m1_12 = x1 * y12 - y1 * x12;
@@ -1162,6 +1239,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         v += 8.0f * u;
+        if (d)
+            d[7] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_tri4_vf m1_13 = x1 * y13 - y1 * x13;
@@ -1182,6 +1261,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
         v += 8.0f * u;
+        if (d)
+            d[8] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_tri4_vf m1_14 = x1 * y14 - y1 * x14;
@@ -1200,6 +1281,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 9.0f * u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v += 18.0f * u;
+        if (d)
+            d[9] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_tri4_vf m3_11 = x3 * y11 - y3 * x11;
@@ -1219,6 +1302,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += 8.0f * u;
+        if (d)
+            d[10] = ptp_tri4_vfirst(v) * 0.380952388f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri4_vf m5_10 = x5 * y10 - y5 * x10;
@@ -1242,6 +1327,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         u -= ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
         u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v += 12.0f * u;
+        if (d)
+            d[11] = ptp_tri4_vfirst(v) * 0.095238097f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_tri4_vf m3_13 = x3 * y13 - y3 * x13;
@@ -1261,6 +1348,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
         u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
         v += 6.0f * u;
+        if (d)
+            d[12] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_tri4_vf m3_14 = x3 * y14 - y3 * x14;
@@ -1284,6 +1373,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         v += 12.0f * u;
+        if (d)
+            d[13] = ptp_tri4_vfirst(v) * 0.095238097f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         const ptp_tri4_vf m4_14 = x4 * y14 - y4 * x14;
@@ -1303,6 +1394,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v += 8.0f * u;
+        if (d)
+            d[14] = ptp_tri4_vfirst(v) * 0.380952388f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_tri4_vf m6_11 = x6 * y11 - y6 * x11;
@@ -1320,6 +1413,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         v += 8.0f * u;
+        if (d)
+            d[15] = ptp_tri4_vfirst(v) * 0.380952388f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_tri4_vf m7_11 = x7 * y11 - y7 * x11;
@@ -1344,6 +1439,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 16.0f * u;
         u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v += 18.0f * u;
+        if (d)
+            d[16] = ptp_tri4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_tri4_vf m9_10 = x9 * y10 - y9 * x10;
@@ -1377,6 +1474,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 18.0f * u;
         u = ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
         v += 24.0f * u;
+        if (d)
+            d[17] = ptp_tri4_vfirst(v) * 0.0380952395f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_tri4_vf m6_14 = x6 * y14 - y6 * x14;
@@ -1409,6 +1508,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 18.0f * u;
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         v += 24.0f * u;
+        if (d)
+            d[18] = ptp_tri4_vfirst(v) * 0.0380952395f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         const ptp_tri4_vf m8_13 = x8 * y13 - y8 * x13;
@@ -1433,6 +1534,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 16.0f * u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += 18.0f * u;
+        if (d)
+            d[19] = ptp_tri4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         const ptp_tri4_vf m8_14 = x8 * y14 - y8 * x14;
@@ -1450,6 +1553,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
         v += 8.0f * u;
+        if (d)
+            d[20] = ptp_tri4_vfirst(v) * 0.380952388f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         const ptp_tri4_vf m10_11 = x10 * y11 - y10 * x11;
@@ -1464,6 +1569,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 9.0f * u;
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v += 18.0f * u;
+        if (d)
+            d[21] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         const ptp_tri4_vf m10_12 = x10 * y12 - y10 * x12;
@@ -1484,6 +1591,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         u += ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
         u += ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v += 12.0f * u;
+        if (d)
+            d[22] = ptp_tri4_vfirst(v) * 0.095238097f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         const ptp_tri4_vf m10_13 = x10 * y13 - y10 * x13;
@@ -1514,6 +1623,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 18.0f * u;
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
         v += 24.0f * u;
+        if (d)
+            d[23] = ptp_tri4_vfirst(v) * 0.0380952395f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_tri4_vf m10_14 = x10 * y14 - y10 * x14;
@@ -1541,6 +1652,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 54.0f * u;
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
         v += 108.0f * u;
+        if (d)
+            d[24] = ptp_tri4_vfirst(v) * 0.00952380989f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_tri4_vf m11_14 = x11 * y14 - y11 * x14;
@@ -1571,6 +1684,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 18.0f * u;
         u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
         v += 24.0f * u;
+        if (d)
+            d[25] = ptp_tri4_vfirst(v) * 0.0380952395f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_tri4_vf m12_14 = x12 * y14 - y12 * x14;
@@ -1591,6 +1706,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         u += ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         u += ((g5 * m7_9 - g7 * m5_9) + g9 * m5_7);
         v += 12.0f * u;
+        if (d)
+            d[26] = ptp_tri4_vfirst(v) * 0.095238097f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         const ptp_tri4_vf m13_14 = x13 * y14 - y13 * x14;
@@ -1605,6 +1722,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 9.0f * u;
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v += 18.0f * u;
+        if (d)
+            d[27] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         u = ((g1 * m10_11 - g10 * m1_11) + g11 * m1_10);
@@ -1614,6 +1733,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 2.0f * u;
         u = -((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
         v += 3.0f * u;
+        if (d)
+            d[28] = ptp_tri4_vfirst(v) * 1.33333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         u = ((g2 * m10_11 - g10 * m2_11) + g11 * m2_10);
@@ -1628,6 +1749,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = ((g4 * m6_11 - g6 * m4_11) + g11 * m4_6);
         v += 8.0f * u;
+        if (d)
+            d[29] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = ((g1 * m10_13 - g10 * m1_13) + g13 * m1_10);
@@ -1643,6 +1766,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         u = -((g3 * m8_11 - g8 * m3_11) + g11 * m3_8);
         u += ((g4 * m6_12 - g6 * m4_12) + g12 * m4_6);
         v += 6.0f * u;
+        if (d)
+            d[30] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = ((g1 * m10_14 - g10 * m1_14) + g14 * m1_10);
@@ -1671,6 +1796,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 18.0f * u;
         u = -((g4 * m8_11 - g8 * m4_11) + g11 * m4_8);
         v += 24.0f * u;
+        if (d)
+            d[31] = ptp_tri4_vfirst(v) * 0.0380952395f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = ((g2 * m10_14 - g10 * m2_14) + g14 * m2_10);
@@ -1699,6 +1826,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 18.0f * u;
         u = ((g4 * m7_13 - g7 * m4_13) + g13 * m4_7);
         v += 24.0f * u;
+        if (d)
+            d[32] = ptp_tri4_vfirst(v) * 0.0380952395f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = ((g1 * m12_14 - g12 * m1_14) + g14 * m1_12);
@@ -1714,6 +1843,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         u = -((g4 * m9_12 - g9 * m4_12) + g12 * m4_9);
         u += ((g5 * m7_13 - g7 * m5_13) + g13 * m5_7);
         v += 6.0f * u;
+        if (d)
+            d[33] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = ((g1 * m13_14 - g13 * m1_14) + g14 * m1_13);
@@ -1728,6 +1859,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = -((g4 * m9_13 - g9 * m4_13) + g13 * m4_9);
         v += 8.0f * u;
+        if (d)
+            d[34] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         u = ((g2 * m13_14 - g13 * m2_14) + g14 * m2_13);
@@ -1737,11 +1870,15 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 2.0f * u;
         u = ((g5 * m8_14 - g8 * m5_14) + g14 * m5_8);
         v += 3.0f * u;
+        if (d)
+            d[35] = ptp_tri4_vfirst(v) * 1.33333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         u -= ((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
         v = u;
+        if (d)
+            d[36] = ptp_tri4_vfirst(v) * 5.33333349f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         u = ((g4 * m10_11 - g10 * m4_11) + g11 * m4_10);
@@ -1751,6 +1888,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 3.0f * u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         v += 4.0f * u;
+        if (d)
+            d[37] = ptp_tri4_vfirst(v) * 0.666666687f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
@@ -1765,6 +1904,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = -((g6 * m8_11 - g8 * m6_11) + g11 * m6_8);
         v += 8.0f * u;
+        if (d)
+            d[38] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = ((g3 * m10_14 - g10 * m3_14) + g14 * m3_10);
@@ -1784,6 +1925,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         u -= ((g6 * m8_12 - g8 * m6_12) + g12 * m6_8);
         u -= ((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
         v += 12.0f * u;
+        if (d)
+            d[39] = ptp_tri4_vfirst(v) * 0.095238097f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         u = -((g6 * m7_14 - g7 * m6_14) + g14 * m6_7);
@@ -1805,6 +1948,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 16.0f * u;
         u = -((g7 * m8_12 - g8 * m7_12) + g12 * m7_8);
         v += 18.0f * u;
+        if (d)
+            d[40] = ptp_tri4_vfirst(v) * 0.0761904791f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 40 */
         u = ((g5 * m10_14 - g10 * m5_14) + g14 * m5_10);
@@ -1824,6 +1969,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         u -= ((g7 * m8_13 - g8 * m7_13) + g13 * m7_8);
         u -= ((g7 * m9_12 - g9 * m7_12) + g12 * m7_9);
         v += 12.0f * u;
+        if (d)
+            d[41] = ptp_tri4_vfirst(v) * 0.095238097f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 41 */
         u = ((g3 * m13_14 - g13 * m3_14) + g14 * m3_13);
@@ -1838,6 +1985,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = -((g7 * m9_13 - g9 * m7_13) + g13 * m7_9);
         v += 8.0f * u;
+        if (d)
+            d[42] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 42 */
         u = ((g4 * m13_14 - g13 * m4_14) + g14 * m4_13);
@@ -1847,20 +1996,28 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 3.0f * u;
         u = -((g8 * m9_13 - g9 * m8_13) + g13 * m8_9);
         v += 4.0f * u;
+        if (d)
+            d[43] = ptp_tri4_vfirst(v) * 0.666666687f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 43 */
         u = ((g5 * m13_14 - g13 * m5_14) + g14 * m5_13);
         u -= ((g8 * m9_14 - g9 * m8_14) + g14 * m8_9);
         v = u;
+        if (d)
+            d[44] = ptp_tri4_vfirst(v) * 5.33333349f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 44 */
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v = u;
+        if (d)
+            d[45] = ptp_tri4_vfirst(v) * 16.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 45 */
         u = ((g6 * m10_12 - g10 * m6_12) + g12 * m6_10);
         u += ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = u;
+        if (d)
+            d[46] = ptp_tri4_vfirst(v) * 5.33333349f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 46 */
         u = ((g6 * m10_13 - g10 * m6_13) + g13 * m6_10);
@@ -1870,6 +2027,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 2.0f * u;
         u = ((g7 * m10_12 - g10 * m7_12) + g12 * m7_10);
         v += 3.0f * u;
+        if (d)
+            d[47] = ptp_tri4_vfirst(v) * 1.33333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 47 */
         u = ((g6 * m10_14 - g10 * m6_14) + g14 * m6_10);
@@ -1882,6 +2041,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 9.0f * u;
         u = ((g7 * m11_12 - g11 * m7_12) + g12 * m7_11);
         v += 18.0f * u;
+        if (d)
+            d[48] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 48 */
         u = ((g6 * m11_14 - g11 * m6_14) + g14 * m6_11);
@@ -1896,6 +2057,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = ((g7 * m11_13 - g11 * m7_13) + g13 * m7_11);
         v += 8.0f * u;
+        if (d)
+            d[49] = ptp_tri4_vfirst(v) * 0.380952388f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 49 */
         u = ((g6 * m12_14 - g12 * m6_14) + g14 * m6_12);
@@ -1910,6 +2073,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 6.0f * u;
         u = ((g8 * m11_13 - g11 * m8_13) + g13 * m8_11);
         v += 8.0f * u;
+        if (d)
+            d[50] = ptp_tri4_vfirst(v) * 0.380952388f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 50 */
         u = ((g6 * m13_14 - g13 * m6_14) + g14 * m6_13);
@@ -1922,6 +2087,8 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 9.0f * u;
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
         v += 18.0f * u;
+        if (d)
+            d[51] = ptp_tri4_vfirst(v) * 0.190476194f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 51 */
         u = ((g7 * m13_14 - g13 * m7_14) + g14 * m7_13);
@@ -1931,15 +2098,21 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         v += 2.0f * u;
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
         v += 3.0f * u;
+        if (d)
+            d[52] = ptp_tri4_vfirst(v) * 1.33333337f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 52 */
         u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
         u += ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
         v = u;
+        if (d)
+            d[53] = ptp_tri4_vfirst(v) * 5.33333349f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 53 */
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v = u;
+        if (d)
+            d[54] = ptp_tri4_vfirst(v) * 16.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 54 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -1948,6 +2121,24 @@ static void ptp_tri4_lanes(const float *restrict soa, size_t stride, size_t n, c
         notgt &= 1;
         ptp_tri4_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
     }
+}
+
+/* The classes of n patches: lanes_body without values (one copy: it is large). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_tri4_lanes(const float *PTP_TRI4_RESTRICT soa, size_t stride, size_t n, const float eye[4],
+                           unsigned char *PTP_TRI4_RESTRICT cls)
+{
+    ptp_tri4_lanes_body(soa, stride, n, eye, cls, NULL);
+}
+
+void ptp_tri4_values(const float cp[][4], const float eye[4], float d[])
+{
+    unsigned char c;
+    ptp_tri4_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

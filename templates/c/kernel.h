@@ -8,7 +8,10 @@
 extern "C" {
 #endif
 
-#define {{UPREFIX}}POINTS {{POINTS}}
+/* The variant: bidegree DEGREE_U x DEGREE_V (POINTS control points, PLANES control planes);
+ * SPACE_CLIP or SPACE_WORLD (--space) and RULE_STRICT or RULE_DEGENERATE (--rule), whichever
+ * applies, defined as 1; CERTIFIED 1 with --certified, else 0; REFINE K with --refine K, else 0. */
+{{VARIANT}}#define {{UPREFIX}}POINTS {{POINTS}}
 #define {{UPREFIX}}PLANES {{PLANES}}
 #define {{UPREFIX}}FRONT 0u
 #define {{UPREFIX}}BACK 1u
@@ -22,7 +25,8 @@ extern "C" {
 
 /* The {{PLANES}} control planes of one patch, all four components, at true scale. */
 void {{PREFIX}}planes(const float cp[][4], float t[][4]);
-/* d[P] = the value of plane P ({{VALUE}}) for every plane. */
+/* d[P] = the value of plane P ({{VALUE}}) for every plane: the numbers classify decides on
+ * (the same code), so a class is their sign pattern under the rule (certified: under margins). */
 void {{PREFIX}}values(const float cp[][4], const float eye[4], float d[]);
 /* The class of one patch: {{UPREFIX}}FRONT, {{UPREFIX}}BACK or {{UPREFIX}}SILHOUETTE. */
 unsigned {{PREFIX}}classify(const float cp[][4], const float eye[4]);
@@ -34,6 +38,20 @@ void {{PREFIX}}classify_batch(const float (*cp)[4], size_t patch_count, const fl
 void {{PREFIX}}classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
 
+/* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
+ * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
+ * OpenGL, glm and Vulkan programs hold it; DirectXMath's XMMATRIX and XMFLOAT4X4 too: they hold
+ * M = P^T for row vectors (clip = view * M) row by row, the same 16 floats. ROW_MAJOR: P(r, c) at
+ * proj[r * 4 + c] (P written row by row, as on paper). */
+#define {{UPREFIX}}COLUMN_MAJOR 0
+#define {{UPREFIX}}ROW_MAJOR 1
+/* alpha of the clip-space eye (0, 0, alpha, 0) for a perspective projection proj in layout:
+ * sign(det P) * P(2, 3). The view-space eye (0, 0, 0, 1) maps to column 3 of P, (0, 0, P(2, 3),
+ * 0), and cross4 of transformed points is det(P) P^-T cross4, so the sign of det P keeps the
+ * world-space classes (for a model-view matrix of positive determinant; negate alpha for a
+ * mirroring one). 0 if det P is 0. */
+float {{PREFIX}}alpha(const float proj[16], int layout);
+
 #ifdef __cplusplus
 }
 #endif
@@ -41,6 +59,20 @@ void {{PREFIX}}classify_soa(const float *soa, size_t stride, size_t patch_count,
 
 #if defined({{UPREFIX}}IMPLEMENTATION) && !defined({{UPREFIX}}IMPLEMENTED)
 #define {{UPREFIX}}IMPLEMENTED
+/* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
+ * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
+    defined(__ASSOCIATIVE_MATH__)
+#error "{{PREFIX}}: do not compile this header's implementation with -ffast-math, -ffinite-math-only or -fassociative-math: they drop the NaN checks and regroup the sums whose signs are the classes"
+#endif
+/* restrict: C99's, GNU C++'s and MSVC's __restrict, else nothing. */
+#if defined(__cplusplus) && (defined(__GNUC__) || defined(_MSC_VER))
+#define {{UPREFIX}}RESTRICT __restrict
+#elif !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define {{UPREFIX}}RESTRICT restrict
+#else
+#define {{UPREFIX}}RESTRICT
+#endif
 #if defined(__SSE2__) && !defined({{UPREFIX}}NO_SSE)
 #include <emmintrin.h>
 #endif
@@ -74,6 +106,11 @@ static inline void {{PREFIX}}vstore(unsigned char *cls, {{PREFIX}}vm c, size_t c
     for (i = 0; i < count && i < {{UPREFIX}}VW; i++)
         cls[i] = (unsigned char)c[i];
 }
+/* Lane 0 of v. */
+static inline float {{PREFIX}}vfirst({{PREFIX}}vf v)
+{
+    return v[0];
+}
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline {{PREFIX}}vf {{PREFIX}}vabsmax({{PREFIX}}vf r, {{PREFIX}}vf x)
 {
@@ -97,6 +134,34 @@ static inline {{PREFIX}}vf {{PREFIX}}vabsmax({{PREFIX}}vf r, {{PREFIX}}vf x)
 {
     return {{UPREFIX}}ABSMAX(r, x);
 }
+static inline float {{PREFIX}}vfirst({{PREFIX}}vf v)
+{
+    return v;
+}
 #endif
+
+float {{PREFIX}}alpha(const float proj[16], int layout)
+{
+    double m[4][4], s[6], c[6], det;
+    int r, k;
+    for (r = 0; r < 4; r++)
+        for (k = 0; k < 4; k++)
+            m[r][k] = proj[layout == {{UPREFIX}}ROW_MAJOR ? r * 4 + k : k * 4 + r];
+    /* det P by Laplace along rows 0 and 1: their 2x2 minors s times the complementary c */
+    s[0] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    s[1] = m[0][0] * m[1][2] - m[0][2] * m[1][0];
+    s[2] = m[0][0] * m[1][3] - m[0][3] * m[1][0];
+    s[3] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    s[4] = m[0][1] * m[1][3] - m[0][3] * m[1][1];
+    s[5] = m[0][2] * m[1][3] - m[0][3] * m[1][2];
+    c[0] = m[2][2] * m[3][3] - m[2][3] * m[3][2];
+    c[1] = m[2][1] * m[3][3] - m[2][3] * m[3][1];
+    c[2] = m[2][1] * m[3][2] - m[2][2] * m[3][1];
+    c[3] = m[2][0] * m[3][3] - m[2][3] * m[3][0];
+    c[4] = m[2][0] * m[3][2] - m[2][2] * m[3][0];
+    c[5] = m[2][0] * m[3][1] - m[2][1] * m[3][0];
+    det = s[0] * c[0] - s[1] * c[1] + s[2] * c[2] + s[3] * c[3] - s[4] * c[4] + s[5] * c[5];
+    return det > 0 ? (float)m[2][3] : det < 0 ? (float)-m[2][3] : 0.0f;
+}
 {{TABLES}}
 {{FUNCTIONS}}#endif
