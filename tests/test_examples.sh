@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# test_examples.sh: the README's examples (tests/examples/) compile and run: cull.c with gcc and
+# clang on BigGuy against world space, cull.tesc with glslangValidator; the README shows them verbatim.
+# Needs PTPGEN (default build/gcc/ptpgen).
+set -u
+P=${PTPGEN:-build/gcc/ptpgen}
+model=${MODELS:-../shared/models}/bigguy.bez
+ex=tests/examples
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+ok() { echo "ok - $1"; }
+notok() { echo "not ok - $1: $2"; }
+STD="-std=c11 -O2 -Wall -Wextra -Werror -pedantic"
+
+# in_readme FILE: 0 if README.md contains FILE's whole text verbatim.
+in_readme() {
+    python3 -c 'import sys; sys.exit(open(sys.argv[1]).read() not in open("README.md").read())' "$1"
+}
+
+for f in $ex/cull.c $ex/cull.tesc; do
+    if in_readme "$f"; then
+        ok "README.md shows $f verbatim"
+    else
+        notok "README.md shows $f verbatim" "the file's text is not in README.md"
+    fi
+done
+sed '5s/$/ /' $ex/cull.c >"$tmp/changed.c"
+if in_readme "$tmp/changed.c"; then
+    notok "the verbatim check catches a changed example" "a copy with a trailing blank passed"
+else
+    ok "the verbatim check catches a changed example"
+fi
+
+# build CC SOURCE: compiles SOURCE with tests/examples/check_cull.c into $tmp/run.
+build() {
+    $1 $STD -I"$tmp" -o "$tmp/run" "$2" $ex/check_cull.c -lm 2>"$tmp/err"
+}
+if ! { "$P" --degree 3 --target c -o "$tmp/ptp_3x3.h" &&
+    "$P" --degree 3 --target c --space world --prefix world_ -o "$tmp/world.h" &&
+    "$P" --degree 3 --target c --space world --certified --prefix cert_ -o "$tmp/cert.h"; } 2>"$tmp/err"; then
+    notok "the example's headers" "$P failed: $(head -1 "$tmp/err")"
+elif ! grep -q '_alpha(' "$tmp/ptp_3x3.h"; then
+    notok "cull.c compiles" "the header has no alpha helper (ptp_3x3_alpha)"
+else
+    for cc in gcc clang; do
+        command -v $cc >/dev/null || { notok "cull.c with $cc" "$cc is missing"; continue; }
+        if build $cc $ex/cull.c; then
+            "$tmp/run" "$model" "cull.c ($cc, $STD) on BigGuy from 8 eyes"
+        else
+            notok "cull.c compiles with $cc $STD" "$(head -3 "$tmp/err")"
+        fi
+    done
+    # The check must be able to fail: the example with alpha negated culls the front faces.
+    sed 's/eye\[2\] = ptp_3x3_alpha/eye[2] = -ptp_3x3_alpha/' $ex/cull.c >"$tmp/negated.c"
+    if build gcc "$tmp/negated.c" && ! "$tmp/run" "$model" negated >"$tmp/out" 2>&1 &&
+        grep -q '^not ok - negated' "$tmp/out"; then
+        ok "cull.c with alpha negated fails the world-space check"
+    else
+        notok "cull.c with alpha negated fails the world-space check" "$(head -3 "$tmp/out" "$tmp/err")"
+    fi
+fi
+
+if ! command -v glslangValidator >/dev/null; then
+    notok "cull.tesc compiles" "glslangValidator is missing (apt-get install glslang-tools)"
+elif glslangValidator -V $ex/cull.tesc -o "$tmp/cull.spv" >"$tmp/err" 2>&1 &&
+    { ! command -v spirv-val >/dev/null || spirv-val "$tmp/cull.spv" >>"$tmp/err" 2>&1; }; then
+    ok "cull.tesc compiles with glslangValidator -V and validates"
+else
+    notok "cull.tesc compiles with glslangValidator -V" "$(grep -m3 -i error "$tmp/err")"
+fi
