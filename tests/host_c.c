@@ -1,23 +1,11 @@
 /* host_c.c: runs an emitted C header (--target c) over patch sets and checks it with kref.
  * Built per header: cc -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix> -DUPFX=<PREFIX> ...
  * C and C++ alike (c++ -x c++ host_c.c -x none libptptest.a): the header is used from both. */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#include "check.h"
-#include "kref.h"
-#ifdef __cplusplus
-}
-#endif
+#include "host_c.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#define CAT2(a, b) a##b
-#define CAT(a, b) CAT2(a, b)
-#define FN(name) CAT(PFX, name)
-#define MACRO(name) CAT(UPFX, name)
 
 /* Nonzero when class c is not the one values d (L of them, from values()) give under the rule:
  * certified, a class other than silhouette must be the strict rule's. v: L doubles of scratch. */

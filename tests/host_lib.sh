@@ -1,7 +1,12 @@
-# host_lib.sh: the check-line helpers of the scripts that run the kernel hosts (sourced by
-# tests/test_kernels.sh and tests/test_wgpu.sh).
+# host_lib.sh: the check-line helpers of the test scripts (sourced by tests/test_kernels.sh,
+# test_wgpu.sh, test_refine.sh and test_cullrate.sh).
 
 ok() { echo "ok - $1"; }
+# make_tmp: sets tmp to a new temporary directory, removed when the script exits.
+make_tmp() {
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT
+}
 notok() { echo "not ok - $1: $2"; }
 # missing TOOL WHAT: under CI a missing tool is a failure; elsewhere a skip note.
 missing() {

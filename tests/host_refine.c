@@ -1,22 +1,10 @@
 /* host_refine.c: runs a C header emitted with --refine K and checks the refined classes: equal to
  * the reference where the control planes decide, and never back or front against samples. */
-#include "check.h"
-#ifdef __cplusplus
-extern "C" {
-#endif
-#include "kref.h"
-#ifdef __cplusplus
-}
-#endif
+#include "host_c.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#define CAT2(a, b) a##b
-#define CAT(a, b) CAT2(a, b)
-#define FN(name) CAT(PFX, name)
-#define MACRO(name) CAT(UPFX, name)
 
 /* The counts of one run over all sets. */
 typedef struct {

@@ -4,10 +4,8 @@
 set -u
 C=${CULLRATE:?set CULLRATE}
 models=${MODELS:-../shared/models}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1: $2"; }
+. "$(dirname "$0")/host_lib.sh"
+make_tmp
 
 # A run on two models, one under another name: both tables, their checks, no unsafe certified cull.
 ln -s "$(realpath "$models/teacup.bez")" "$tmp/my cup.bez"

@@ -5,10 +5,8 @@
 set -u
 P=${PTPGEN:?set PTPGEN}
 models=${MODELS:-../shared/models}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1: $2"; }
+. "$(dirname "$0")/host_lib.sh"
+make_tmp
 
 # host D SPACE RULE K CC [SED]: builds host_refine around a --refine K header (edited by sed
 # script SED when given) into $tmp/hr; prints nothing, returns the build status.

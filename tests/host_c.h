@@ -1,0 +1,21 @@
+/* host_c.h: what the hosts built around an emitted C header share: the test helpers with C
+ * linkage (the hosts build as C and as C++), and FN and MACRO naming the header's functions and
+ * macros by its prefix (-DPFX=<prefix> -DUPFX=<PREFIX>). */
+#ifndef HOST_C_H
+#define HOST_C_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+#include "check.h"
+#include "kref.h"
+#ifdef __cplusplus
+}
+#endif
+
+#define CAT2(a, b) a##b
+#define CAT(a, b) CAT2(a, b)
+#define FN(name) CAT(PFX, name)
+#define MACRO(name) CAT(UPFX, name)
+
+#endif
