@@ -118,8 +118,8 @@ int main(int argc, char **argv)
     kref_ref world, clip;
     ptp_error err;
     int kind, i, e;
-    if (kref_init(&world, 3, 3, KREF_WORLD, KREF_STRICT, &err) ||
-        kref_init(&clip, 3, 3, KREF_CLIP, KREF_STRICT, &err))
+    if (kref_init(&world, TP_QUAD, 3, 3, KREF_WORLD, KREF_STRICT, &err) ||
+        kref_init(&clip, TP_QUAD, 3, 3, KREF_CLIP, KREF_STRICT, &err))
         return !check(0, "alpha: reference", "%s", err.msg);
     for (kind = 0; kind < KINDS; kind++) {
         size_t differ = 0, amb = 0, flipped = 0, flip_amb = 0, count[3] = {0}, fc[3] = {0};

@@ -53,7 +53,7 @@ static void sample(double *lo, double *hi, const double *d, int pu, int pv, int 
 /* Classifies one set and counts into ctx (a tally); returns 0. */
 static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
 {
-    tally *t = ctx;
+    tally *t = (tally *)ctx;
     size_t p, L = (size_t)ref->L;
     double *d = (double *)malloc(2 * L * sizeof *d), *bound = d + L;
     unsigned char *batch = (unsigned char *)malloc(s->count);

@@ -362,7 +362,7 @@ int main(void)
          ptp_3x3_world_classify((const float (*)[4])cp, above) == PTP_3X3_WORLD_FRONT &&
          ptp_3x3_world_classify((const float (*)[4])cp, below) == PTP_3X3_WORLD_BACK &&
          ptp_3x3_world_classify((const float (*)[4])cp, negw) == PTP_3X3_WORLD_BACK &&
-         ptp_3x3_idx[0][0] == 0;
+         ptp_3x3_table_idx[0][0] == 0;
     return !ok;
 }
 C
