@@ -191,17 +191,25 @@ figures: build/render
 
 # Fuzzing verify's parsers with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs
 # collect in build/fuzz/corpus; copy an input that fails into tests/fuzz/regressions/, which the
-# tests replay (with tests/fuzz/verify/, the seeds) under AddressSanitizer and UBSan.
+# tests replay (with the seeds: tests/fuzz/verify/ and $(B)/fuzz_seeds/) under AddressSanitizer
+# and UBSan.
 FUZZ_SECONDS ?= 300
 SAN = -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=all
 
 fuzz:
-	@$(MAKE) -s CC=clang build/clang/templates.c
+	@$(MAKE) -s CC=clang build/clang/templates.c build/clang/fuzz_seeds.ok
 	@mkdir -p build/fuzz/corpus
 	clang $(STD) $(SAN) -fsanitize=fuzzer -Igen -o build/fuzz/fuzz_verify tests/fuzz_verify.c \
 	    $(filter-out gen/cli/main.c,$(GEN_SRC)) build/clang/templates.c -lm
 	build/fuzz/fuzz_verify -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 \
-	    build/fuzz/corpus tests/fuzz/verify tests/fuzz/regressions
+	    build/fuzz/corpus tests/fuzz/verify build/clang/fuzz_seeds tests/fuzz/regressions
+
+# The seeds that are a table with one deliberate edit (ptpgen's, or a hand-written seed's), each
+# checked to be judged by verify as it is meant to be (tests/fuzz/seeds.sh).
+$(B)/fuzz_seeds.ok: tests/fuzz/seeds.sh $(wildcard tests/fuzz/verify/*) $(B)/ptpgen
+	rm -rf $(B)/fuzz_seeds
+	bash tests/fuzz/seeds.sh $(B)/ptpgen $(B)/fuzz_seeds
+	@touch $@
 
 $(B)/replay_verify: tests/fuzz_verify.c $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(SAN) -DFUZZ_REPLAY -Igen -o $@ $< $(LIB_SRC) -lm
