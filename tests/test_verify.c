@@ -68,12 +68,6 @@ static result verify_str(const sbuf *b, const char *name, int n, int m)
     return run_verify_conv(b->s ? b->s : "", b->len, name, n, m, VERIFY_U_FIRST);
 }
 
-/* verify_str in the v-first convention. */
-static result verify_vfirst(const sbuf *b, const char *name, int n, int m)
-{
-    return run_verify_conv(b->s ? b->s : "", b->len, name, n, m, VERIFY_V_FIRST);
-}
-
 /* The last line of a report (its verdict), for failure details. */
 static const char *last_line(const char *s)
 {
@@ -170,6 +164,29 @@ static void write_json(sbuf *b, const rows *r, int n, int m)
     sbuf_puts(b, "  ]\n}\n");
 }
 
+/* verify (--degree n x m; 0 0: inferred; in the convention) on r written by write_json naming
+ * bidegree jn x jm, as t.json. */
+static result verify_json_conv(const rows *r, int jn, int jm, int n, int m, int convention)
+{
+    sbuf b;
+    result res;
+    write_json(&b, r, jn, jm);
+    res = run_verify_conv(b.s ? b.s : "", b.len, "t.json", n, m, convention);
+    sbuf_clear(&b);
+    return res;
+}
+
+static result verify_json(const rows *r, int jn, int jm, int n, int m)
+{
+    return verify_json_conv(r, jn, jm, n, m, VERIFY_U_FIRST);
+}
+
+/* verify_json in the v-first convention. */
+static result verify_json_vfirst(const rows *r, int jn, int jm, int n, int m)
+{
+    return verify_json_conv(r, jn, jm, n, m, VERIFY_V_FIRST);
+}
+
 /* The paper's layout, rows on lines PAPER_LINE0 + x, with comments and a directive. */
 #define PAPER_LINE0 4
 
@@ -254,6 +271,14 @@ static void expect_rows(const char *name, rows *r, int json, int verdict, const 
     free(r->r);
 }
 
+/* Expects verify_json_conv of r (then freed) to give verdict with want in its report. */
+static void expect_json(const char *name, rows r, int jn, int jm, int n, int m, int convention,
+                        int verdict, const char *want)
+{
+    expect_verdict(name, verify_json_conv(&r, jn, jm, n, m, convention), verdict, want);
+    free(r.r);
+}
+
 /* Checks a WRONG verdict whose report has a line starting "NAME:LINE: what". */
 static void expect_line(const char *name, result r, const char *file, int line, const char *what)
 {
@@ -328,43 +353,35 @@ static void test_bicubic_mistakes(void)
     /* one weight changed */
     keep = r.r[10];
     strcpy(r.r[10].w, "-1/3");
-    write_json(&b, &r, 3, 3);
-    expect_line("one weight changed: wrong weight, with its line", verify_str(&b, "t.json", 0, 0),
+    expect_line("one weight changed: wrong weight, with its line", verify_json(&r, 3, 3, 0, 0),
                 "t.json", JSON_LINE0 + 10, "wrong weight");
     snprintf(want, sizeof want, "got -1/3, expected %s", rat_get_str(w, &t.terms[10].w));
-    expect_verdict("wrong weight: got vs expected", verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
+    expect_verdict("wrong weight: got vs expected", verify_json(&r, 3, 3, 0, 0), VERIFY_WRONG,
                    want);
-    sbuf_clear(&b);
     r.r[10] = keep;
 
     /* two points swapped within a row */
     keep = r.r[1];
     r.r[1].p[1] = keep.p[2];
     r.r[1].p[2] = keep.p[1];
-    write_json(&b, &r, 3, 3);
     expect_line("two indices swapped in a row: the order flips the sign",
-                verify_str(&b, "t.json", 0, 0), "t.json", JSON_LINE0 + 1,
+                verify_json(&r, 3, 3, 0, 0), "t.json", JSON_LINE0 + 1,
                 "points not in increasing order flip the sign: {1, 0, 5, 1} is -27/7 * "
                 "cross4(b0, b5, b1) = 27/7 * cross4(b0, b1, b5)");
-    sbuf_clear(&b);
     /* the same swap with the weight negated is right: a note, no problem */
     strcpy(r.r[1].w, "27/7");
-    write_json(&b, &r, 3, 3);
     expect_verdict("swapped points with the weight negated: right, with a note",
-                   verify_str(&b, "t.json", 0, 0), VERIFY_RIGHT, "note: points not in increasing");
-    sbuf_clear(&b);
+                   verify_json(&r, 3, 3, 0, 0), VERIFY_RIGHT, "note: points not in increasing");
     r.r[1] = keep;
 
     /* a term dropped */
     keep = r.r[7];
     memmove(&r.r[7], &r.r[8], (r.n - 8) * sizeof *r.r);
     r.n--;
-    write_json(&b, &r, 3, 3);
     snprintf(want, sizeof want, "missing term: plane %d: %s * cross4(b%d, b%d, b%d)", keep.plane,
              keep.w, keep.p[0], keep.p[1], keep.p[2]);
     expect_line("a term dropped: missing, with plane, points and exact weight",
-                verify_str(&b, "t.json", 0, 0), "t.json", 0, want);
-    sbuf_clear(&b);
+                verify_json(&r, 3, 3, 0, 0), "t.json", 0, want);
     memmove(&r.r[8], &r.r[7], (r.n - 7) * sizeof *r.r);
     r.r[7] = keep;
     r.n++;
@@ -372,34 +389,28 @@ static void test_bicubic_mistakes(void)
     /* a term duplicated (the copy as the last term) */
     r.r[r.n] = r.r[20];
     r.n++;
-    write_json(&b, &r, 3, 3);
     snprintf(want, sizeof want, "duplicated term: plane %d, cross4(b%d, b%d, b%d) repeats line %d",
              r.r[20].plane, r.r[20].p[0], r.r[20].p[1], r.r[20].p[2], JSON_LINE0 + 20);
     expect_line("a term duplicated: the line and the line it repeats",
-                verify_str(&b, "t.json", 0, 0), "t.json", JSON_LINE0 + (int)r.n - 1, want);
-    sbuf_clear(&b);
+                verify_json(&r, 3, 3, 0, 0), "t.json", JSON_LINE0 + (int)r.n - 1, want);
     r.n--;
 
     /* an extra term */
     r.r[r.n] = r.r[0];
     r.r[r.n].p[2] = 15;
     r.n++;
-    write_json(&b, &r, 3, 3);
-    expect_line("an extra term", verify_str(&b, "t.json", 0, 0), "t.json",
+    expect_line("an extra term", verify_json(&r, 3, 3, 0, 0), "t.json",
                 JSON_LINE0 + (int)r.n - 1, "extra term: {0, 0, 1, 15}");
-    sbuf_clear(&b);
     r.n--;
 
     /* a term moved to a plane without those points */
     keep = r.r[30];
     r.r[30].plane = 63;
-    write_json(&b, &r, 3, 3);
     snprintf(want, sizeof want, "is in plane 63 but belongs to plane %d", keep.plane);
-    expect_line("a term moved to a wrong plane", verify_str(&b, "t.json", 0, 0), "t.json",
+    expect_line("a term moved to a wrong plane", verify_json(&r, 3, 3, 0, 0), "t.json",
                 JSON_LINE0 + 30, "wrong plane");
-    expect_verdict("wrong plane names both planes", verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
+    expect_verdict("wrong plane names both planes", verify_json(&r, 3, 3, 0, 0), VERIFY_WRONG,
                    want);
-    sbuf_clear(&b);
     r.r[30] = keep;
 
     /* all weights times 1/7, exact */
@@ -469,31 +480,20 @@ static void test_transposed(void)
                err.msg))
         return;
     r = relabelled(&t, 1);
-    write_json(&b, &r, 0, 0);
     expect_verdict("2x3 with u and v swapped: wrong, the transposed patch",
-                   verify_str(&b, "t.json", 2, 3), VERIFY_WRONG,
+                   verify_json(&r, 0, 0, 2, 3), VERIFY_WRONG,
                    "WRONG: u and v swapped: it is the exact table of bidegree 3x2");
     expect_verdict("2x3 with u and v swapped is exactly the 3x2 table",
-                   verify_str(&b, "t.json", 3, 2), VERIFY_RIGHT, "RIGHT: exact");
-    sbuf_clear(&b);
+                   verify_json(&r, 0, 0, 3, 2), VERIFY_RIGHT, "RIGHT: exact");
     free(r.r);
 
-    r = rows_of(&u, W_FRAC, 1);
-    write_json(&b, &r, 3, 2);
-    expect_verdict("a 3x2 document checked as 2x3: u and v swapped, and a note on the degree",
-                   verify_str(&b, "t.json", 2, 3), VERIFY_WRONG,
-                   "t.json:3: note: the document names bidegree 3x2; checked as 2x3");
-    sbuf_clear(&b);
-    free(r.r);
-
-    r = relabelled(&t, 0);
-    write_json(&b, &r, 2, 3);
-    expect_verdict("2x3 in the v-first index convention: wrong, explained",
-                   verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
-                   "WRONG: the v-first index convention: the same planes, but point (i, j) "
-                   "numbered j*3+i");
-    sbuf_clear(&b);
-    free(r.r);
+    expect_json("a 3x2 document checked as 2x3: u and v swapped, and a note on the degree",
+                rows_of(&u, W_FRAC, 1), 3, 2, 2, 3, VERIFY_U_FIRST, VERIFY_WRONG,
+                "t.json:3: note: the document names bidegree 3x2; checked as 2x3");
+    expect_json("2x3 in the v-first index convention: wrong, explained", relabelled(&t, 0), 2, 3,
+                0, 0, VERIFY_U_FIRST, VERIFY_WRONG,
+                "WRONG: the v-first index convention: the same planes, but point (i, j) "
+                "numbered j*3+i");
 
     r = relabelled(&t, 1);
     for (x = 0; x < r.n; x++) {
@@ -504,14 +504,12 @@ static void test_transposed(void)
         rat_get_str(r.r[x].w, &w);
     }
     strcpy(r.r[3].w, "1");
-    write_json(&b, &r, 2, 3);
     expect_verdict("2x3 with u and v swapped and scaled by 2, one weight wrong: both named",
-                   verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
+                   verify_json(&r, 2, 3, 0, 0), VERIFY_WRONG,
                    "1 wrong weight) against the 200 terms of bidegree 2x3, read as the exact "
                    "table with u and v swapped and scaled by 2");
     expect_line("... and the wrong weight is against the swapped table, scaled",
-                verify_str(&b, "t.json", 0, 0), "t.json", JSON_LINE0 + 3, "wrong weight");
-    sbuf_clear(&b);
+                verify_json(&r, 2, 3, 0, 0), "t.json", JSON_LINE0 + 3, "wrong weight");
     free(r.r);
 
     r = rows_of(&t, W_CFRAC, 1);
@@ -775,7 +773,6 @@ static void test_several(void)
     tp_table t;
     ptp_error err;
     rows r;
-    sbuf b;
     result res;
     size_t k;
     const char *at;
@@ -792,8 +789,7 @@ static void test_several(void)
     r.r[8] = r.r[9];                              /* lines 13, 14: two copies, both wrong */
     strcpy(r.r[8].w, "5");
     strcpy(r.r[9].w, "6");
-    write_json(&b, &r, 3, 3);
-    res = verify_str(&b, "t.json", 0, 0);
+    res = verify_json(&r, 3, 3, 0, 0);
     at = res.report;
     for (k = 0; at && k < sizeof want / sizeof *want; k++)
         at = strstr(at, want[k]);
@@ -801,7 +797,6 @@ static void test_several(void)
           "several mistakes: each named on its line, in line order, with the notes",
           "missing \"%s\" (in this order) in:\n%s", k ? want[k - 1] : want[0], res.report);
     free(res.report);
-    sbuf_clear(&b);
     free(r.r);
     tp_clear(&t);
 }
@@ -1032,10 +1027,8 @@ static void test_weights(void)
     expect_usage("the paper's layout with -27/7 weights: integer division", verify_str(&b, "p.h",
                  0, 0), "p.h", 0, "integer division: C evaluates ");
     sbuf_clear(&b);
-    write_json(&b, &r, 3, 3);
-    expect_verdict("... while \"-27/7\" in JSON is an exact fraction", verify_str(&b, "t.json", 0, 0),
+    expect_verdict("... while \"-27/7\" in JSON is an exact fraction", verify_json(&r, 3, 3, 0, 0),
                    VERIFY_RIGHT, "RIGHT: exact");
-    sbuf_clear(&b);
     free(r.r);
     r = rows_of(&t, W_FLOAT, 1);
     write_paper(&b, &r);
@@ -1060,34 +1053,25 @@ static void test_convention(void)
     tp_table t, s;
     ptp_error err;
     rows r;
-    sbuf b;
     if (!check(!tp_derive(&t, 2, 3, &err) && !tp_derive(&s, 3, 3, &err), "derive", "%s", err.msg))
         return;
     r = relabelled(&t, 0);
-    write_json(&b, &r, 2, 3);
     expect_verdict("a 2x3 v-first table with --convention v-first: exact",
-                   verify_vfirst(&b, "t.json", 0, 0), VERIFY_RIGHT,
+                   verify_json_vfirst(&r, 2, 3, 0, 0), VERIFY_RIGHT,
                    "RIGHT: exact: the 200 terms of bidegree 2x3 (v-first) agree");
-    expect_verdict("... and without it: wrong, with the option named", verify_str(&b, "t.json", 0, 0),
+    expect_verdict("... and without it: wrong, with the option named", verify_json(&r, 2, 3, 0, 0),
                    VERIFY_WRONG, "right only for code that numbers points v-first (check it with "
                    "--convention v-first)");
-    sbuf_clear(&b);
     free(r.r);
-    r = rows_of(&t, W_FRAC, 1);
-    write_json(&b, &r, 2, 3);
-    expect_verdict("a u-first table with --convention v-first: wrong, the u-first convention",
-                   verify_vfirst(&b, "t.json", 0, 0), VERIFY_WRONG,
-                   "WRONG: the u-first index convention: the same planes, but point (i, j) "
-                   "numbered i*4+j");
-    sbuf_clear(&b);
-    free(r.r);
+    expect_json("a u-first table with --convention v-first: wrong, the u-first convention",
+                rows_of(&t, W_FRAC, 1), 2, 3, 0, 0, VERIFY_V_FIRST, VERIFY_WRONG,
+                "WRONG: the u-first index convention: the same planes, but point (i, j) "
+                "numbered i*4+j");
     r = relabelled(&s, 0);
-    write_json(&b, &r, 3, 3);
     expect_verdict("a 3x3 v-first table with --convention v-first: exact",
-                   verify_vfirst(&b, "t.json", 0, 0), VERIFY_RIGHT, "RIGHT: exact");
+                   verify_json_vfirst(&r, 3, 3, 0, 0), VERIFY_RIGHT, "RIGHT: exact");
     expect_verdict("... without it: negated, and v-first named with the option",
-                   verify_str(&b, "t.json", 0, 0), VERIFY_WRONG, "--convention v-first");
-    sbuf_clear(&b);
+                   verify_json(&r, 3, 3, 0, 0), VERIFY_WRONG, "--convention v-first");
     free(r.r);
     tp_clear(&t);
     tp_clear(&s);
