@@ -22,17 +22,20 @@ static int class_not_of_values(double *v, unsigned c, const float *d, int L, con
 /* The comparisons over all sets, how often classify_batch or classify_soa differs from
  * classify, and how often classify is not the class of values() under the rule. */
 typedef struct {
-    int world;
+    const kref_args *o;
     kref_result classify, batch, planes;
     int paths_differ;
     size_t values_differ, patches;
 } results;
 
-/* Runs the header's functions over one set and accumulates into ctx (results); returns 0. */
+/* Runs the header's functions over one set and accumulates into ctx (results); returns 0, or
+ * 1 after a "not ok" line when the header's bidegree is not the reference's. */
 static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
 {
     results *r = (results *)ctx;
     size_t p, L = (size_t)ref->L;
+    if (ref->K != MACRO(POINTS) || ref->L != MACRO(PLANES))
+        return !check(0, r->o->label, "the header's bidegree differs from --degree");
     unsigned *cls = (unsigned *)malloc(s->count * sizeof *cls);
     unsigned char *batch = (unsigned char *)malloc(s->count);
     unsigned char *soa_cls = (unsigned char *)malloc(s->count);
@@ -54,9 +57,10 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
             continue; /* kref_check reads the values of exact sets on this sample only */
         FN(planes)(cp, t);
         for (x = 0; x < L; x++)
-            dp[p * L + x] = r->world ? s->eye[0] * t[x][0] + s->eye[1] * t[x][1] +
-                                        s->eye[2] * t[x][2] + s->eye[3] * t[x][3]
-                                  : s->eye[2] * t[x][2];
+            dp[p * L + x] = ref->space == KREF_WORLD
+                                ? s->eye[0] * t[x][0] + s->eye[1] * t[x][1] +
+                                      s->eye[2] * t[x][2] + s->eye[3] * t[x][3]
+                                : s->eye[2] * t[x][2];
     }
     r->patches += s->count;
     FN(classify_batch)((const float(*)[4])s->cp, s->count, s->eye, batch);
@@ -88,21 +92,11 @@ int main(int argc, char **argv)
     kref_args o;
     kref_ref ref;
     char label[200];
-    int ok = 1;
-    if (kref_parse_args(&o, argc, argv, "host_c", 0))
-        return 2;
+    int ok = 1, st;
     memset(&r, 0, sizeof r);
-    r.world = o.space == KREF_WORLD;
-    if (kref_init_args(&ref, &o))
-        return 1;
-    if (ref.K != MACRO(POINTS) || ref.L != MACRO(PLANES)) {
-        kref_clear(&ref);
-        return !check(0, o.label, "the header's bidegree differs from --degree");
-    }
-    if (kref_each_set(&ref, &o, run_set, &r, NULL)) {
-        kref_clear(&ref);
-        return 1;
-    }
+    r.o = &o;
+    if ((st = kref_run_sets(&o, &ref, argc, argv, "host_c", run_set, &r)))
+        return st;
     snprintf(label, sizeof label, "%s classify and values", o.label);
     ok &= kref_report(&r.classify, label);
     snprintf(label, sizeof label, "%s classify_batch", o.label);

@@ -98,16 +98,10 @@ int main(int argc, char **argv)
     kref_ref ref;
     tally t;
     char name[300];
-    int ok = 1;
-    if (kref_parse_args(&o, argc, argv, "host_refine", 0))
-        return 2;
+    int ok = 1, st;
     memset(&t, 0, sizeof t);
-    if (kref_init_args(&ref, &o))
-        return 1;
-    if (kref_each_set(&ref, &o, run_set, &t, NULL)) {
-        kref_clear(&ref);
-        return 1;
-    }
+    if ((st = kref_run_sets(&o, &ref, argc, argv, "host_refine", run_set, &t)))
+        return st;
     printf("# %s: %zu patches, %zu refined from silhouette to back or front\n", o.label, t.patches,
            t.refined);
     snprintf(name, sizeof name, "%s: the classes the control planes decide are kept", o.label);

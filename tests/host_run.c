@@ -6,6 +6,7 @@
 
 #include "check.h"
 
+#include <inttypes.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -48,12 +49,12 @@ double host_now_ms(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec / 1e6;
 }
 
-int host_start(kref_args *o, kref_ref *ref, long *runs, int argc, char **argv, const char *host,
-               unsigned need)
+int host_check_group(const kref_args *o, uint64_t invocations, uint64_t size_x, char *err)
 {
-    if (kref_parse_bench_args(o, runs, argc, argv, host, need))
-        return 2;
-    return kref_init_args(ref, o) ? 1 : 0;
+    if (o->pq > invocations || o->pq > size_x)
+        return host_fail(err, "--block-threads %zu exceeds the device's workgroup limit (%" PRIu64 ")",
+                         o->pq, invocations);
+    return 0;
 }
 
 void host_dispatch_shape(uint64_t *gx, uint64_t *gy, size_t count, size_t q, uint64_t max_x)
@@ -258,4 +259,21 @@ int host_run(const host_device *d, const kref_args *o, const host_limits *lim,
     if (run_sources(&st, &res, d, o, lim, ref, runs, err))
         return err[0] ? check(0, o->label, "%s", err) : 0;
     return report(&st, &res, o->label);
+}
+
+int host_run_kernel(const host_device *d, const kref_args *o, const kref_ref *ref, long runs,
+                    uint64_t dev_bytes, uint64_t dev_x, uint64_t dev_y)
+{
+    host_limits lim;
+    char err[HOST_ERRSZ];
+    printf("# kernel: %s, %dx%d, %s, %s, %zu invocations per group, %zu patches per group, "
+           "%s%s\n",
+           o->file, o->n, o->m, o->space == KREF_CLIP ? "clip" : "world",
+           o->rule == KREF_STRICT ? "strict" : "degenerate", o->pq, o->q,
+           o->planes ? "planes" : "no planes",
+           o->groups_x_constant ? ", groups_x read from the push constants" : "");
+    /* the largest chunk of patches whose buffers all fit and whose dispatch is allowed */
+    if (host_chunk_limits(&lim, o, (size_t)ref->K, (size_t)ref->L, dev_bytes, dev_x, dev_y, err))
+        return check(0, o->label, "%s", err);
+    return host_run(d, o, &lim, ref, runs);
 }

@@ -22,13 +22,6 @@ int host_fail(char *err, const char *fmt, ...)
 /* A monotonic clock in milliseconds. */
 double host_now_ms(void);
 
-/* The start of a host's main: parses the command line (kref_parse_args with need, and --bench
- * RUNS into *runs, 0 without it) and derives the reference for a kernel certified as
- * --certified says. Returns 0 (kref_clear(ref) when done), or 2 on a usage error and 1 when the
- * reference cannot be derived, after a "not ok" line. */
-int host_start(kref_args *o, kref_ref *ref, long *runs, int argc, char **argv, const char *host,
-               unsigned need);
-
 /* What limits a chunk: the largest storage buffer and dispatch. */
 typedef struct {
     uint64_t max_bytes; /* of one storage buffer (binding) */
@@ -43,6 +36,9 @@ typedef struct {
  * o->q) whose buffers and dispatch fit. 0, or -1 (message in err) when one patch does not fit. */
 int host_chunk_limits(host_limits *lim, const kref_args *o, size_t K, size_t L,
                       uint64_t dev_bytes, uint64_t dev_x, uint64_t dev_y, char *err);
+/* 0 if a workgroup of o->pq invocations fits a device of at most invocations per workgroup and
+ * size_x along x; else -1 with a message in err. */
+int host_check_group(const kref_args *o, uint64_t invocations, uint64_t size_x, char *err);
 /* The dispatch of count patches: ceil(count / q) groups laid out as gx * gy, gx <= max_x. */
 void host_dispatch_shape(uint64_t *gx, uint64_t *gy, size_t count, size_t q, uint64_t max_x);
 
@@ -68,5 +64,11 @@ typedef struct {
  * line. Returns 1 if every check passed, else 0. */
 int host_run(const host_device *d, const kref_args *o, const host_limits *lim,
              const kref_ref *ref, long runs);
+/* The end of a host's main once the kernel is ready on d: prints "# kernel: FILE, ..." (o's
+ * options), sizes the chunks for a device whose storage buffers hold at most dev_bytes and whose
+ * dispatches have at most dev_x by dev_y groups (host_chunk_limits), and runs (host_run).
+ * Returns 1 if every check passed, else 0 (after a "not ok" line). */
+int host_run_kernel(const host_device *d, const kref_args *o, const kref_ref *ref, long runs,
+                    uint64_t dev_bytes, uint64_t dev_x, uint64_t dev_y);
 
 #endif

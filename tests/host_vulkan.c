@@ -621,18 +621,16 @@ int main(int argc, char **argv)
     kref_args o;
     char msg[HOST_ERRSZ];
     kref_ref ref;
-    host_limits lim;
     spirv code = {NULL, 0};
     spv_info info;
     vkctx v;
     int ok = 0, rc;
     long runs;
 
-    rc = host_start(&o, &ref, &runs, argc, argv, "host_vulkan", KREF_NEED_FILE | KREF_NEED_BLOCK);
+    rc = kref_start(&o, &ref, &runs, argc, argv, "host_vulkan", KREF_NEED_FILE | KREF_NEED_BLOCK);
     if (rc)
         return rc;
     memset(&v, 0, sizeof v);
-    memset(&lim, 0, sizeof lim);
 
 #define SETUP_FAIL(...)                                                                        \
     do {                                                                                       \
@@ -660,30 +658,17 @@ int main(int argc, char **argv)
                        o.planes ? "" : " (binding 2 only with --planes)");
 
     /* the device and the pipeline */
-    if (vk_setup_device(&v, msg))
+    if (vk_setup_device(&v, msg) ||
+        host_check_group(&o, v.props.limits.maxComputeWorkGroupInvocations,
+                         v.props.limits.maxComputeWorkGroupSize[0], msg))
         SETUP_FAIL("%s", msg);
-    if (o.pq > v.props.limits.maxComputeWorkGroupInvocations ||
-        o.pq > v.props.limits.maxComputeWorkGroupSize[0])
-        SETUP_FAIL("--block-threads %zu exceeds the device's workgroup limit (%" PRIu32 ")",
-                   o.pq, v.props.limits.maxComputeWorkGroupInvocations);
     if (vk_setup_pipeline(&v, &code, v.nbindings, msg))
-        SETUP_FAIL("%s", msg);
-    printf("# kernel: %s, %dx%d, %s, %s, %zu invocations per group, %zu patches per group, "
-           "%s%s\n",
-           o.file, o.n, o.m, o.space == KREF_CLIP ? "clip" : "world",
-           o.rule == KREF_STRICT ? "strict" : "degenerate", o.pq, o.q,
-           o.planes ? "planes" : "no planes",
-           o.groups_x_constant ? ", groups_x read from the push constants" : "");
-
-    /* the largest chunk of patches whose buffers all fit and whose dispatch is allowed */
-    if (host_chunk_limits(&lim, &o, (size_t)ref.K, (size_t)ref.L,
-                          v.props.limits.maxStorageBufferRange,
-                          v.props.limits.maxComputeWorkGroupCount[0],
-                          v.props.limits.maxComputeWorkGroupCount[1], msg))
         SETUP_FAIL("%s", msg);
     {
         host_device d = {&v, vk_alloc, vk_upload, vk_run_mapped, vk_release};
-        ok = host_run(&d, &o, &lim, &ref, runs);
+        ok = host_run_kernel(&d, &o, &ref, runs, v.props.limits.maxStorageBufferRange,
+                             v.props.limits.maxComputeWorkGroupCount[0],
+                             v.props.limits.maxComputeWorkGroupCount[1]);
     }
 
 done:

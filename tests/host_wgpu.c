@@ -589,13 +589,12 @@ int main(int argc, char **argv)
     kref_args o;
     char msg[HOST_ERRSZ];
     kref_ref ref;
-    host_limits lim;
     wgctx v;
     char *src = NULL;
     int ok = 0, rc;
     long runs;
 
-    rc = host_start(&o, &ref, &runs, argc, argv, "host_wgpu", KREF_NEED_FILE | KREF_NEED_BLOCK);
+    rc = kref_start(&o, &ref, &runs, argc, argv, "host_wgpu", KREF_NEED_FILE | KREF_NEED_BLOCK);
     if (rc)
         return rc;
     if (o.groups_x_constant) {
@@ -604,7 +603,6 @@ int main(int argc, char **argv)
         return 2;
     }
     memset(&v, 0, sizeof v);
-    memset(&lim, 0, sizeof lim);
     v.nbuf = o.planes ? 3 : 2;
 
 #define SETUP_FAIL(...)                                                                        \
@@ -615,26 +613,18 @@ int main(int argc, char **argv)
 
     if (!(src = wgsl_read(o.file, msg)) || wgsl_check_size(src, o.file, o.pq, msg))
         SETUP_FAIL("%s", msg);
-    if (wg_setup_device(&v, msg))
+    if (wg_setup_device(&v, msg) ||
+        host_check_group(&o, v.limits.maxComputeInvocationsPerWorkgroup,
+                         v.limits.maxComputeWorkgroupSizeX, msg))
         SETUP_FAIL("%s", msg);
-    if (o.pq > v.limits.maxComputeInvocationsPerWorkgroup ||
-        o.pq > v.limits.maxComputeWorkgroupSizeX)
-        SETUP_FAIL("--block-threads %zu exceeds the device's workgroup limit (%" PRIu32 ")",
-                   o.pq, v.limits.maxComputeInvocationsPerWorkgroup);
     if (wg_setup_pipeline(&v, src, o.file, msg))
-        SETUP_FAIL("%s", msg);
-    printf("# kernel: %s, %dx%d, %s, %s, %zu invocations per group, %zu patches per group, %s\n",
-           o.file, o.n, o.m, o.space == KREF_CLIP ? "clip" : "world",
-           o.rule == KREF_STRICT ? "strict" : "degenerate", o.pq, o.q,
-           o.planes ? "planes" : "no planes");
-    /* the largest chunk of patches whose buffers all fit and whose dispatch is allowed */
-    if (host_chunk_limits(&lim, &o, (size_t)ref.K, (size_t)ref.L, wg_max_binding(&v),
-                          v.limits.maxComputeWorkgroupsPerDimension,
-                          v.limits.maxComputeWorkgroupsPerDimension, msg))
         SETUP_FAIL("%s", msg);
     {
         host_device d = {&v, wg_alloc, wg_upload, wg_run_mapped, wg_release};
-        ok = host_run(&d, &o, &lim, &ref, runs);
+        /* --groups-x-constant was refused above: the kernel line names no push constants */
+        ok = host_run_kernel(&d, &o, &ref, runs, wg_max_binding(&v),
+                             v.limits.maxComputeWorkgroupsPerDimension,
+                             v.limits.maxComputeWorkgroupsPerDimension);
     }
 
 done:

@@ -1286,3 +1286,25 @@ int kref_parse_bench_args(kref_args *a, long *runs, int argc, char **argv, const
     }
     return 0;
 }
+
+int kref_start(kref_args *a, kref_ref *r, long *runs, int argc, char **argv, const char *host,
+               unsigned need)
+{
+    if (runs ? kref_parse_bench_args(a, runs, argc, argv, host, need)
+             : kref_parse_args(a, argc, argv, host, need))
+        return 2;
+    return kref_init_args(r, a) ? 1 : 0;
+}
+
+int kref_run_sets(kref_args *a, kref_ref *r, int argc, char **argv, const char *host,
+                  kref_set_fn fn, void *ctx)
+{
+    int st = kref_start(a, r, NULL, argc, argv, host, 0);
+    if (st)
+        return st;
+    if (kref_each_set(r, a, fn, ctx, NULL)) {
+        kref_clear(r);
+        return 1;
+    }
+    return 0;
+}

@@ -189,5 +189,16 @@ int kref_report(const kref_result *res, const char *name);
  * else 0. */
 int kref_parse_bench_args(kref_args *a, long *runs, int argc, char **argv, const char *host,
                           unsigned need);
+/* The start of a host's main: parses the command line (kref_parse_args with need; with runs not
+ * NULL, kref_parse_bench_args) and derives the reference for a kernel certified as --certified
+ * says. Returns 0 (kref_clear(r) when done), or 2 on a usage error and 1 when the reference
+ * cannot be derived, after a "not ok" line. */
+int kref_start(kref_args *a, kref_ref *r, long *runs, int argc, char **argv, const char *host,
+               unsigned need);
+/* kref_start (no --bench), then fn(ctx, r, set) on every set (kref_each_set). Returns 0
+ * (kref_clear(r) when done), or kref_start's status, or 1 when a set could not be made or fn
+ * returned nonzero (r cleared). */
+int kref_run_sets(kref_args *a, kref_ref *r, int argc, char **argv, const char *host,
+                  kref_set_fn fn, void *ctx);
 
 #endif
