@@ -269,6 +269,16 @@ void kref_clear(kref_ref *r)
     r->den = NULL;
 }
 
+void kref_table_max(int *maxp, int *maxk, const tp_table *t)
+{
+    size_t x;
+    *maxp = *maxk = -1;
+    for (x = 0; x < t->nterms; x++) {
+        *maxp = t->terms[x].plane > *maxp ? t->terms[x].plane : *maxp;
+        *maxk = t->terms[x].l > *maxk ? t->terms[x].l : *maxk;
+    }
+}
+
 /* The point that collapsing edge e (0..3, taken modulo the domain's edges) copies onto point
  * k: the first point on the edge, or -1 when k is not on it. */
 static int edge_first(const tp_domain *d, int e, int k)

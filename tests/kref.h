@@ -124,6 +124,8 @@ int kref_init(kref_ref *r, tp_kind kind, int n, int m, kref_space space, kref_ru
  * --certified; 0, or 1 after a "not ok" line. */
 int kref_init_args(kref_ref *r, const kref_args *a);
 void kref_clear(kref_ref *r);
+/* The largest plane (*maxp) and point (*maxk) index the terms of t use; -1 when it has none. */
+void kref_table_max(int *maxp, int *maxk, const tp_table *t);
 
 /* nsets sets of count random patches each (deterministic in seed): near-planar patches with
  * noise of varied size, w != 1 (rational) in a third, one edge collapsed to a point in a quarter

@@ -3,6 +3,7 @@
 #include "check.h"
 #include "core/domain.h"
 #include "core/tplane.h"
+#include "kref.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -230,18 +231,14 @@ static void test_derive_counts(void)
             tp_table t;
             tp_domain d;
             ptp_error err;
-            int maxp = -1, maxk = -1;
-            size_t x;
+            int maxp, maxk;
             tp_domain_init(&d, TP_QUAD, n, m, NULL);
             if (tp_derive(&t, n, m, &err)) {
                 if (!bad++)
                     snprintf(why, sizeof why, "%dx%d: %.100s", n, m, err.msg);
                 continue;
             }
-            for (x = 0; x < t.nterms; x++) {
-                maxp = t.terms[x].plane > maxp ? t.terms[x].plane : maxp;
-                maxk = t.terms[x].l > maxk ? t.terms[x].l : maxk;
-            }
+            kref_table_max(&maxp, &maxk, &t);
             if ((memcmp(&t.dom, &d, sizeof d) || maxp != d.nplanes - 1 || maxk != d.npoints - 1) &&
                 !bad++)
                 snprintf(why, sizeof why, "%dx%d: largest plane %d of %d, point %d of %d", n, m,

@@ -3,6 +3,7 @@
 #include "check.h"
 #include "core/bez.h"
 #include "core/tplane.h"
+#include "kref.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -205,17 +206,13 @@ static void test_counts(void)
         tp_domain dom;
         tp_table t;
         ptp_error err;
-        int maxp = -1, maxk = -1;
-        size_t x;
+        int maxp, maxk;
         if (tp_domain_init(&dom, TP_TRI, d, d, &err) || tp_derive_domain(&t, &dom, &err)) {
             if (!bad++)
                 snprintf(why, sizeof why, "degree %d: %.100s", d, err.msg);
             continue;
         }
-        for (x = 0; x < t.nterms; x++) {
-            maxp = t.terms[x].plane > maxp ? t.terms[x].plane : maxp;
-            maxk = t.terms[x].l > maxk ? t.terms[x].l : maxk;
-        }
+        kref_table_max(&maxp, &maxk, &t);
         if ((t.nterms != terms[d] || maxp != (3 * d - 1) * (3 * d - 2) / 2 - 1 ||
              maxk != (d + 1) * (d + 2) / 2 - 1) && !bad++)
             snprintf(why, sizeof why, "degree %d: %zu terms, largest plane %d, point %d", d,
