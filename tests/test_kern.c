@@ -1,7 +1,7 @@
 /* test_kern.c: checks that the GPU emitter writes every construct of the C family through its
  * syntax hooks: a kernel of the WGSL target, whose syntax is of another form, keeps none of C's. */
 #include "check.h"
-#include "emit/kern.h"
+#include "emit/targets.h"
 #include "plan/sched.h"
 
 #include <stdio.h>
@@ -50,12 +50,12 @@ int main(void)
             return check(0, "schedule", "%s", err.msg), 1;
         for (c = 0; c < 8; c++) { /* space, rule, certified */
             out_info info = {"test", "ptp_", &s, c & 1 ? OUT_WORLD : OUT_CLIP,
-                             c & 2 ? OUT_DEGENERATE : OUT_STRICT, 1, c >> 2, 0};
+                             c & 2 ? OUT_DEGENERATE : OUT_STRICT, 1, c >> 2, 0, NULL};
             char name[160], why[256] = "";
             sbuf o;
             int st;
             sbuf_init(&o);
-            st = kern_emit_gpu(&o, &t, &info, &kern_wgsl, &err);
+            st = tgt_emit_target(&o, tgt_find("wgsl"), &t, &info, &err);
             snprintf(name, sizeof name, "wgsl %dx%d %s %s%s: no C-family construct left",
                      degrees[d][0], degrees[d][1], c & 1 ? "world" : "clip",
                      c & 2 ? "degenerate" : "strict", c & 4 ? " certified" : "");

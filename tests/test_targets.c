@@ -2,17 +2,18 @@
  * emitter each, lookup that round-trips, and a --list-targets line per target. */
 #include "check.h"
 #include "emit/targets.h"
+#include "plan/sched.h"
 
 #include <string.h>
 
-/* Every entry has a name, a description and either an emitter or a GPU kernel table (whose file
- * extension is its suffix); no name or file suffix repeats. */
+/* Every entry has a name, a description and either an emitter or a GPU kernel table; no name or
+ * file suffix repeats. */
 static void check_entries(void)
 {
     int i, k, bad = -1;
     for (i = 0; i < tgt_count && bad < 0; i++) {
         const tgt_target *g = &tgt_targets[i];
-        if (!g->name || !g->name[0] || !g->suffix || !g->description || !g->emit == !g->gpu || (g->gpu && strcmp(g->gpu->file_ext, g->suffix)) ||
+        if (!g->name || !g->name[0] || !g->suffix || !g->description || !g->emit == !g->gpu ||
             g->options >> TGT_NOPTIONS)
             bad = i;
         for (k = 0; k < i && bad < 0; k++)
@@ -64,10 +65,45 @@ static void check_list(void)
     sbuf_clear(&b);
 }
 
+/* Every target whose output opens with a comment (all with a file suffix but json) names there
+ * the file the registry's suffix gives: "/\* cull_1x2.comp: " for --prefix cull_1x2_. */
+static void check_banner_names(void)
+{
+    tp_table t;
+    sched s;
+    ptp_error err;
+    out_info info = {0};
+    int i, named = 0, bad = -1;
+    if (!check(!tp_derive(&t, 1, 2, &err) && !sched_build(&s, &t, 4, 8, &err), "derive 1x2",
+               "%s", err.msg))
+        return;
+    info.command = "test";
+    info.prefix = "cull_1x2_";
+    info.sched = &s;
+    for (i = 0; i < tgt_count && bad < 0; i++) {
+        const tgt_target *g = &tgt_targets[i];
+        char want[64];
+        sbuf b;
+        sbuf_init(&b);
+        snprintf(want, sizeof want, "/* cull_1x2%s: ", g->suffix);
+        if (tgt_emit_target(&b, g, &t, &info, &err) || !b.s)
+            bad = i;
+        else if (g->suffix[0] && b.s[0] == '/')
+            named += strncmp(b.s, want, strlen(want)) == 0 ? 1 : (bad = i, 0);
+        sbuf_clear(&b);
+    }
+    check(bad < 0 && named == tgt_count - 2,
+          "every target's banner names its file by the registry's suffix (all but json and stats)",
+          "%d named; entry %d (%s)", named, bad, bad >= 0 ? tgt_targets[bad].name : "");
+    sched_clear(&s);
+    tp_clear(&t);
+}
+
 int main(void)
 {
     check_entries();
     check_lookup();
     check_list();
+    check_banner_names();
     return check_exit();
 }

@@ -642,7 +642,7 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     tpl_slot slots[10];
     int st;
     fmt_upper(up, sizeof up, info->prefix);
-    fmt_file_name(file, sizeof file, info->prefix, ".h");
+    fmt_file_name(file, sizeof file, info->prefix, info->suffix);
     snprintf(points, sizeof points, "%d", t->dom.npoints);
     snprintf(planes, sizeof planes, "%d", t->dom.nplanes);
     snprintf(count, sizeof count, "%sTERMS", up);

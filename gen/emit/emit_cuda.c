@@ -6,7 +6,6 @@ const kern_target kern_cuda = {
     .name = "cuda",
     .language = "CUDA kernel",
     .template_name = "cuda/kernel.cu",
-    .file_ext = ".cu",
     .named_kernel = 1,
     .syntax = &kern_c_syntax,
     .uint = "unsigned", .real = "float", .vec4 = "float4",

@@ -6,7 +6,6 @@ const kern_target kern_glsl = {
     .name = "glsl",
     .language = "GLSL 4.50 compute shader for Vulkan",
     .template_name = "glsl/kernel.comp",
-    .file_ext = ".comp",
     .syntax = &kern_c_syntax,
     .uint = "uint", .real = "float", .vec4 = "vec4",
     .table_qual = "const",

@@ -6,7 +6,6 @@ const kern_target kern_hlsl = {
     .name = "hlsl",
     .language = "HLSL compute shader (Direct3D 11/12; Vulkan via glslangValidator -D or DXC)",
     .template_name = "hlsl/kernel.hlsl",
-    .file_ext = ".hlsl",
     .syntax = &kern_c_syntax,
     .uint = "uint", .real = "float", .vec4 = "float4",
     .table_qual = "static const",

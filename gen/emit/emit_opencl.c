@@ -6,7 +6,6 @@ const kern_target kern_opencl = {
     .name = "opencl",
     .language = "OpenCL C 1.2 kernel",
     .template_name = "opencl/kernel.cl",
-    .file_ext = ".cl",
     .named_kernel = 1,
     .syntax = &kern_c_syntax,
     .uint = "uint", .real = "float", .vec4 = "float4",

@@ -72,7 +72,6 @@ const kern_target kern_wgsl = {
     .name = "wgsl",
     .language = "WGSL compute shader for WebGPU",
     .template_name = "wgsl/kernel.wgsl",
-    .file_ext = ".wgsl",
     .syntax = &wgsl_syntax,
     .uint = "u32", .real = "f32", .vec4 = "vec4<f32>",
     .table_qual = "const", /* var<private> runs faster on lavapipe, but compiles minutes longer */

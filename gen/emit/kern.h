@@ -68,7 +68,6 @@ struct kern_target {
     const char *name;          /* "glsl" */
     const char *language;      /* for the banner: "GLSL 4.50 compute shader" */
     const char *template_name; /* "glsl/kernel.comp" */
-    const char *file_ext;      /* ".comp" */
     int named_kernel;          /* the kernel is <prefix>classify (else the entry point is main) */
     const kern_syntax *syntax; /* the language's structure */
     const char *uint, *real, *vec4; /* the type names: 32-bit unsigned, float, 4 floats */

@@ -502,7 +502,7 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     size_t n = 0;
     int st;
     fmt_upper(up, sizeof up, info->prefix);
-    fmt_file_name(file, sizeof file, info->prefix, g->file_ext);
+    fmt_file_name(file, sizeof file, info->prefix, info->suffix);
     snprintf(threads, sizeof threads, "%d", info->sched->threads * info->sched->patches);
     sbuf_init(&banner);
     sbuf_init(&tables);

@@ -24,6 +24,8 @@ typedef struct {
     int planes;          /* kernels also write the per-plane values */
     int certified;       /* back or front only when every value clears its rounding bound */
     int refine;          /* C: de Casteljau levels on e.T when the values have mixed signs */
+    const char *suffix;  /* the target's file suffix, ".comp" (tgt_emit_target sets it from the
+                            registry): a banner names the file <prefix without its '_'><suffix> */
 } out_info;
 
 /* The ptpgen-planes/1 JSON document of t. */

@@ -29,7 +29,9 @@ _Static_assert(sizeof option_names / sizeof *option_names == TGT_NOPTIONS,
 int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_info *info,
                     ptp_error *err)
 {
-    return g->gpu ? kern_emit_gpu(o, t, info, g->gpu, err) : g->emit(o, t, info, err);
+    out_info in = *info;
+    in.suffix = g->suffix;
+    return g->gpu ? kern_emit_gpu(o, t, &in, g->gpu, err) : g->emit(o, t, &in, err);
 }
 
 const tgt_target *tgt_find(const char *name)

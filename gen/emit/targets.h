@@ -37,7 +37,8 @@ typedef struct {
 extern const tgt_target tgt_targets[];
 extern const int tgt_count;
 
-/* Writes target g's output for table t into o: its emitter, or kern_emit_gpu with its table. */
+/* Writes target g's output for table t into o: its emitter, or kern_emit_gpu with its table,
+ * with info's suffix set to g's. */
 int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_info *info,
                     ptp_error *err);
 /* The target called name, or NULL. */
