@@ -816,6 +816,30 @@ static int json_expect(rd *r, char c, const char *context)
     return PTP_OK;
 }
 
+/* Steps over the opening bracket at pos and the white space after it; 1 when close follows (the
+ * container is empty: close is consumed too), else 0. */
+static int json_open(rd *r, char close)
+{
+    r->pos++;
+    json_ws(r);
+    if (at(r, r->pos) != close)
+        return 0;
+    r->pos++;
+    return 1;
+}
+
+/* After an element: consumes close (*done = 1) or a ',' (*done = 0); anything else fails, the
+ * message naming context. */
+static int json_next(rd *r, char close, const char *context, int *done)
+{
+    json_ws(r);
+    *done = at(r, r->pos) == close;
+    if (!*done)
+        return json_expect(r, ',', context);
+    r->pos++;
+    return PTP_OK;
+}
+
 /* Reads the string at pos ('"'), decoding into buf (cap bytes, NUL-terminated, truncated;
  * escapes of non-ASCII characters decode to 0xFF); *n is the full decoded length. */
 static int json_string(rd *r, char *buf, size_t cap, size_t *n)
@@ -930,13 +954,10 @@ static int json_skip(rd *r, int depth)
     if (c == '-' || is_digit(c))
         return json_number(r, &start, &len, &integer);
     if (c == '[' || c == '{') {
-        int close = c == '[' ? ']' : '}';
-        r->pos++;
-        json_ws(r);
-        if (at(r, r->pos) == close) {
-            r->pos++;
+        char close = c == '[' ? ']' : '}';
+        int done;
+        if (json_open(r, close))
             return PTP_OK;
-        }
         for (;;) {
             if (close == '}') {
                 json_ws(r);
@@ -946,14 +967,11 @@ static int json_skip(rd *r, int depth)
                     (st = json_expect(r, ':', "after a key")))
                     return st;
             }
-            if ((st = json_skip(r, depth + 1)))
-                return st;
-            json_ws(r);
-            if (at(r, r->pos) == close) {
-                r->pos++;
-                return PTP_OK;
-            }
-            if ((st = json_expect(r, ',', close == ']' ? "or ']' in an array" : "or '}' in an object")))
+            if ((st = json_skip(r, depth + 1)) ||
+                (st = json_next(r, close,
+                                close == ']' ? "or ']' in an array" : "or '}' in an object",
+                                &done)) ||
+                done)
                 return st;
         }
     }
@@ -1013,14 +1031,10 @@ static int json_weight(rd *r, verify_weight *w)
 static int json_terms(rd *r, vec *terms)
 {
     static const char *const what[] = {"the plane", "point j", "point k", "point l"};
-    int st, q, v[4];
+    int st, q, v[4], done;
     verify_term *e = NULL;
-    r->pos++;
-    json_ws(r);
-    if (at(r, r->pos) == ']') {
-        r->pos++;
+    if (json_open(r, ']'))
         return PTP_OK;
-    }
     for (;;) {
         int line;
         json_ws(r);
@@ -1039,12 +1053,7 @@ static int json_terms(rd *r, vec *terms)
         e->plane = v[0];
         for (q = 0; q < 3; q++)
             e->p[q] = v[q + 1];
-        json_ws(r);
-        if (at(r, r->pos) == ']') {
-            r->pos++;
-            return PTP_OK;
-        }
-        if ((st = json_expect(r, ',', "or ']' after a term")))
+        if ((st = json_next(r, ']', "or ']' after a term", &done)) || done)
             return st;
     }
 }
@@ -1099,23 +1108,13 @@ static int json_member(verify_doc *d, rd *r, vec *terms, int *seen)
 /* Reads the document object at pos ('{'). */
 static int json_object(verify_doc *d, rd *r, vec *terms, int *seen)
 {
-    int st;
-    r->pos++;
-    json_ws(r);
-    if (at(r, r->pos) == '}') {
-        r->pos++;
+    int st, done;
+    if (json_open(r, '}'))
         return PTP_OK;
-    }
     for (;;) {
         json_ws(r);
-        if ((st = json_member(d, r, terms, seen)))
-            return st;
-        json_ws(r);
-        if (at(r, r->pos) == '}') {
-            r->pos++;
-            return PTP_OK;
-        }
-        if ((st = json_expect(r, ',', "or '}' in the object")))
+        if ((st = json_member(d, r, terms, seen)) ||
+            (st = json_next(r, '}', "or '}' in the object", &done)) || done)
             return st;
     }
 }
