@@ -47,7 +47,8 @@ $(B)/libptptest.a: $(LIB_SRC) $(GEN_HDR) tests/kref.c tests/kref.h tests/check.h
 $(B)/host_opencl: tests/host_opencl.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lOpenCL -lm
 
-$(B)/host_vulkan: tests/host_vulkan.c tests/check.h tests/host_run.c tests/host_run.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
+$(B)/host_vulkan: tests/host_vulkan.c tests/check.h tests/host_run.c tests/host_run.h tests/kref.c tests/kref.h \
+    tests/vk_result.h $(LIB_SRC) $(GEN_HDR) Makefile
 	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/host_run.c tests/kref.c $(LIB_SRC) -lvulkan -lm
 
 # The WGSL host links wgpu-native (WebGPU's C API), from the wheel of the PyPI package wgpu that
@@ -135,7 +136,7 @@ $(B)/bench/peak: bench/peak.c Makefile $(B)/bench/cc.txt
 # kernels among them, is compiled to SPIR-V by glslangValidator and into the binary.
 RB = $(B)/render
 RENDER_SRC = $(sort $(wildcard bench/render/*.c)) bench/cones.c
-RENDER_HDR = $(wildcard bench/render/*.h) bench/cones.h
+RENDER_HDR = $(wildcard bench/render/*.h) bench/cones.h tests/vk_result.h
 RENDER_SHADERS = xform:xform.comp cone:cone.comp vert:patch.vert tesc:patch.tesc \
     tese:patch.tese frag:shade.frag
 RENDER_SPV = $(foreach s,$(RENDER_SHADERS) ptp ptp_cert,$(RB)/spv_$(firstword $(subst :, ,$(s))).h)
@@ -147,7 +148,7 @@ build/render: $(RB)/render FORCE
 	@cmp -s $< $@ || cp $< $@
 
 $(RB)/render: $(RENDER_SRC) $(RENDER_HDR) $(RENDER_SPV) $(RB)/ptp_groups.h Makefile
-	$(CC) $(STD) $(CFLAGS) -Ibench -I$(RB) -o $@ $(RENDER_SRC) -lvulkan -lm
+	$(CC) $(STD) $(CFLAGS) -Ibench -Itests -I$(RB) -o $@ $(RENDER_SRC) -lvulkan -lm
 
 # SPIR-V as a C array (glslangValidator --vn); its messages go to the log, shown on failure.
 define render_spv

@@ -38,6 +38,7 @@
 #include "check.h"
 #include "host_run.h"
 #include "kref.h"
+#include "vk_result.h"
 
 #include <vulkan/vulkan.h>
 
@@ -56,34 +57,11 @@
 
 /* ---- errors ---- */
 
-static const char *vk_result_str(VkResult r)
-{
-    switch (r) {
-    case VK_SUCCESS: return "VK_SUCCESS";
-    case VK_NOT_READY: return "VK_NOT_READY";
-    case VK_TIMEOUT: return "VK_TIMEOUT";
-    case VK_INCOMPLETE: return "VK_INCOMPLETE";
-    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
-    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
-    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
-    case VK_ERROR_MEMORY_MAP_FAILED: return "VK_ERROR_MEMORY_MAP_FAILED";
-    case VK_ERROR_LAYER_NOT_PRESENT: return "VK_ERROR_LAYER_NOT_PRESENT";
-    case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
-    case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
-    case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER (no Vulkan driver)";
-    case VK_ERROR_TOO_MANY_OBJECTS: return "VK_ERROR_TOO_MANY_OBJECTS";
-    case VK_ERROR_FORMAT_NOT_SUPPORTED: return "VK_ERROR_FORMAT_NOT_SUPPORTED";
-    case VK_ERROR_FRAGMENTED_POOL: return "VK_ERROR_FRAGMENTED_POOL";
-    default: return "unknown VkResult";
-    }
-}
-
 #define VK_TRY(call, what)                                                                     \
     do {                                                                                       \
         VkResult vk_try_r = (call);                                                            \
         if (vk_try_r != VK_SUCCESS)                                                            \
-            return host_fail(err, "%s failed: %s (%d)", (what), vk_result_str(vk_try_r),      \
+            return host_fail(err, "%s failed: %s (%d)", (what), vk_result_name(vk_try_r),      \
                              (int)vk_try_r);                                                        \
     } while (0)
 
@@ -277,7 +255,7 @@ static int vk_setup_device(vkctx *v, char *err)
     r = vkEnumeratePhysicalDevices(v->inst, &ndev, devs);
     if (r != VK_SUCCESS && r != VK_INCOMPLETE) {
         free(devs);
-        return host_fail(err, "vkEnumeratePhysicalDevices failed: %s", vk_result_str(r));
+        return host_fail(err, "vkEnumeratePhysicalDevices failed: %s", vk_result_name(r));
     }
     for (uint32_t d = 0; d < ndev && !v->phys; d++) {
         uint32_t nq = 0;
@@ -456,7 +434,7 @@ static int vk_buffer(vkctx *v, hbuf *h, VkDeviceSize size, const char *what, cha
         VkResult r = vkAllocateMemory(v->dev, &mai, NULL, &h->mem);
         if (r != VK_SUCCESS)
             return host_fail(err, "vkAllocateMemory of %llu bytes for the %s buffer failed: %s",
-                        (unsigned long long)req.size, what, vk_result_str(r));
+                        (unsigned long long)req.size, what, vk_result_name(r));
     }
     VK_TRY(vkBindBufferMemory(v->dev, h->buf, h->mem, 0), "vkBindBufferMemory");
     VK_TRY(vkMapMemory(v->dev, h->mem, 0, VK_WHOLE_SIZE, 0, &h->map), "vkMapMemory");
@@ -550,7 +528,7 @@ static int vk_run(vkctx *v, const float eye[4], uint32_t n, uint32_t gx, uint32_
     if (r != VK_SUCCESS) {
         v->hung = 1;
         return host_fail(err, "the dispatch (%" PRIu32 " x %" PRIu32 " groups) did not finish: %s",
-                    gx, gy, vk_result_str(r));
+                    gx, gy, vk_result_name(r));
     }
     VK_TRY(vkResetFences(v->dev, 1, &v->fence), "vkResetFences");
     return 0;

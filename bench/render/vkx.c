@@ -2,6 +2,8 @@
  * for the renderer; every failure a message, never an exit. */
 #include "vkx.h"
 
+#include "vk_result.h"
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,29 +18,9 @@ int vkx_fail(char *err, const char *fmt, ...)
     return -1;
 }
 
-const char *vkx_result(VkResult r)
-{
-    switch (r) {
-    case VK_SUCCESS: return "VK_SUCCESS";
-    case VK_NOT_READY: return "VK_NOT_READY";
-    case VK_TIMEOUT: return "VK_TIMEOUT";
-    case VK_INCOMPLETE: return "VK_INCOMPLETE";
-    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
-    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
-    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
-    case VK_ERROR_MEMORY_MAP_FAILED: return "VK_ERROR_MEMORY_MAP_FAILED";
-    case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
-    case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
-    case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER (no Vulkan driver)";
-    case VK_ERROR_FORMAT_NOT_SUPPORTED: return "VK_ERROR_FORMAT_NOT_SUPPORTED";
-    default: return "unknown VkResult";
-    }
-}
-
 int vkx_check(VkResult r, const char *what, char *err)
 {
-    return r == VK_SUCCESS ? 0 : vkx_fail(err, "%s failed: %s (%d)", what, vkx_result(r), (int)r);
+    return r == VK_SUCCESS ? 0 : vkx_fail(err, "%s failed: %s (%d)", what, vk_result_name(r), (int)r);
 }
 
 const char *vkx_type_name(VkPhysicalDeviceType t)

@@ -39,8 +39,6 @@ int vkx_fail(char *err, const char *fmt, ...)
 #endif
     ;
 
-/* The name of a VkResult. */
-const char *vkx_result(VkResult r);
 
 /* Returns -1 with "WHAT failed: RESULT" in err when r is not VK_SUCCESS, else 0. */
 int vkx_check(VkResult r, const char *what, char *err);
