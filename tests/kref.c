@@ -42,9 +42,15 @@ static int parse_ull(const char *s, unsigned long long lo, unsigned long long hi
     return 0;
 }
 
+/* The value of an option with two choices: 0 when s is first, 1 when it is second, else -1. */
+static int choice(const char *s, const char *first, const char *second)
+{
+    return !strcmp(s, first) ? 0 : !strcmp(s, second) ? 1 : -1;
+}
+
 int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsigned need)
 {
-    int i, have_degree = 0, have_space = 0, have_rule = 0;
+    int i, k, have_degree = 0, have_space = 0, have_rule = 0;
     unsigned long long a, b, c;
     memset(o, 0, sizeof *o);
     /* the label first, so that every usage failure carries it */
@@ -67,30 +73,18 @@ int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsig
             have_degree = 1;
             i += 2;
         } else if (!strcmp(s, "--domain") && left >= 1) {
-            s = argv[++i];
-            if (!strcmp(s, "quad"))
-                o->kind = TP_QUAD;
-            else if (!strcmp(s, "triangle"))
-                o->kind = TP_TRI;
-            else
+            if ((k = choice(argv[++i], "quad", "triangle")) < 0)
                 return usage(host, o->label, "--domain is quad or triangle");
+            o->kind = k ? TP_TRI : TP_QUAD;
         } else if (!strcmp(s, "--space") && left >= 1) {
-            s = argv[++i];
-            if (!strcmp(s, "clip"))
-                o->space = KREF_CLIP;
-            else if (!strcmp(s, "world"))
-                o->space = KREF_WORLD;
-            else
+            if ((k = choice(argv[++i], "clip", "world")) < 0)
                 return usage(host, o->label, "--space is clip or world");
+            o->space = k ? KREF_WORLD : KREF_CLIP;
             have_space = 1;
         } else if (!strcmp(s, "--rule") && left >= 1) {
-            s = argv[++i];
-            if (!strcmp(s, "strict"))
-                o->rule = KREF_STRICT;
-            else if (!strcmp(s, "degenerate"))
-                o->rule = KREF_DEGENERATE;
-            else
+            if ((k = choice(argv[++i], "strict", "degenerate")) < 0)
                 return usage(host, o->label, "--rule is strict or degenerate");
+            o->rule = k ? KREF_DEGENERATE : KREF_STRICT;
             have_rule = 1;
         } else if (!strcmp(s, "--block-threads") && left >= 1) {
             if (parse_ull(argv[++i], 1, 1u << 20, &a))
