@@ -515,6 +515,40 @@ static prop p_comm_add, p_comm_mul, p_assoc_add, p_assoc_mul, p_distrib, p_alias
     p_add0, p_mul1, p_sub_self, p_add_neg, p_inv, p_divmul, p_div_self, p_zero, p_sub_anti,
     p_mul_strict;
 
+/* a op b == b op a, with the same status (ab and st: a op b's result and status). */
+static void check_comm(prop *p, int op, const rat *a, const rat *b, const rat *ab, int st)
+{
+    rat t = sentinel;
+    int s = ops[op](&t, b, a);
+    p->tried++;
+    if (s != st || (s == PTP_OK && !req(&t, ab)))
+        prop_fail(p, "a=%s b=%s: a%sb %d %s, b%sa %d %s", S(a), S(b), op_sym[op], st, S(ab),
+                  op_sym[op], s, S(&t));
+}
+
+/* (a op b) op c == a op (b op c) where neither side overflows (ab and st: a op b's result and
+ * status); for * also that when a*b and b*c fit, both sides overflow or neither. */
+static void check_assoc(prop *p, int op, const rat *a, const rat *b, const rat *c, const rat *ab,
+                        int st)
+{
+    const char *o = op_sym[op];
+    rat t = sentinel, u = sentinel, v = sentinel;
+    int s2 = st ? st : ops[op](&t, ab, c), s3 = ops[op](&u, b, c);
+    int s4 = s3 ? s3 : ops[op](&v, a, &u);
+    if (!s2 && !s4) {
+        p->tried++;
+        if (!req(&t, &v))
+            prop_fail(p, "a=%s b=%s c=%s: (a%sb)%sc = %s, a%s(b%sc) = %s", S(a), S(b), S(c), o, o,
+                      S(&t), o, o, S(&v));
+    } else if (op == OP_MUL && !st && !s3 && !s2 != !s4) {
+        /* both inner products fit, so each side's outer product is the whole exact
+         * product: one side cannot overflow while the other succeeds. */
+        p->tried++;
+        prop_fail(p, "a=%s b=%s c=%s: (a*b)*c %d %s, a*(b*c) %d %s", S(a), S(b), S(c), s2, S(&t),
+                  s4, S(&v));
+    }
+}
+
 static void sweep(void)
 {
     long i;
@@ -617,17 +651,8 @@ static void sweep(void)
                           S(&a), op_sym[op], S(&a), sab, S(&t), s2b, S(&r2));
         }
 
-        /* commutativity */
-        p_comm_add.tried++;
-        s1 = rat_add(&t, &b, &a);
-        if (s1 != st[OP_ADD] || (s1 == PTP_OK && !req(&t, &res[OP_ADD])))
-            prop_fail(&p_comm_add, "a=%s b=%s: a+b %d %s, b+a %d %s", S(&a), S(&b),
-                      st[OP_ADD], S(&res[OP_ADD]), s1, S(&t));
-        p_comm_mul.tried++;
-        s1 = rat_mul(&t, &b, &a);
-        if (s1 != st[OP_MUL] || (s1 == PTP_OK && !req(&t, &res[OP_MUL])))
-            prop_fail(&p_comm_mul, "a=%s b=%s: a*b %d %s, b*a %d %s", S(&a), S(&b),
-                      st[OP_MUL], S(&res[OP_MUL]), s1, S(&t));
+        check_comm(&p_comm_add, OP_ADD, &a, &b, &res[OP_ADD], st[OP_ADD]);
+        check_comm(&p_comm_mul, OP_MUL, &a, &b, &res[OP_MUL], st[OP_MUL]);
 
         /* a-b == -(b-a) */
         p_sub_anti.tried++;
@@ -637,33 +662,8 @@ static void sweep(void)
             prop_fail(&p_sub_anti, "a=%s b=%s: a-b %d %s, b-a %d %s", S(&a), S(&b),
                       st[OP_SUB], S(&res[OP_SUB]), s1, S(&t));
 
-        /* associativity */
-        s1 = st[OP_ADD];
-        s2 = s1 ? s1 : rat_add(&t, &res[OP_ADD], &c);
-        s3 = rat_add(&u, &b, &c);
-        s4 = s3 ? s3 : rat_add(&v, &a, &u);
-        if (!s2 && !s4) {
-            p_assoc_add.tried++;
-            if (!req(&t, &v))
-                prop_fail(&p_assoc_add, "a=%s b=%s c=%s: (a+b)+c = %s, a+(b+c) = %s", S(&a),
-                          S(&b), S(&c), S(&t), S(&v));
-        }
-        s1 = st[OP_MUL];
-        s2 = s1 ? s1 : rat_mul(&t, &res[OP_MUL], &c);
-        s3 = rat_mul(&u, &b, &c);
-        s4 = s3 ? s3 : rat_mul(&v, &a, &u);
-        if (!s2 && !s4) {
-            p_assoc_mul.tried++;
-            if (!req(&t, &v))
-                prop_fail(&p_assoc_mul, "a=%s b=%s c=%s: (a*b)*c = %s, a*(b*c) = %s", S(&a),
-                          S(&b), S(&c), S(&t), S(&v));
-        } else if ((!s1 && !s3) && (!s2 != !s4)) {
-            /* both inner products fit, so each side's outer product is the whole exact
-             * product: one side cannot overflow while the other succeeds. */
-            p_assoc_mul.tried++;
-            prop_fail(&p_assoc_mul, "a=%s b=%s c=%s: (a*b)*c %d %s, a*(b*c) %d %s", S(&a),
-                      S(&b), S(&c), s2, S(&t), s4, S(&v));
-        }
+        check_assoc(&p_assoc_add, OP_ADD, &a, &b, &c, &res[OP_ADD], st[OP_ADD]);
+        check_assoc(&p_assoc_mul, OP_MUL, &a, &b, &c, &res[OP_MUL], st[OP_MUL]);
 
         /* distributivity */
         s1 = rat_add(&t, &b, &c);
