@@ -247,6 +247,18 @@ static void bn_divmod(bn *q, ptp_u128 *rem, const bn *a, ptp_u128 dv)
 
 static const unsigned small_primes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23};
 
+/* A smooth magnitude: a product of small primes below 2^(10 + r), r random below spread. */
+static ptp_u128 rnd_smooth(unsigned spread)
+{
+    ptp_u128 u = 1, lim = (ptp_u128)1 << (10 + check_rnd_below(spread));
+    for (;;) {
+        unsigned p = small_primes[check_rnd_below(9)];
+        if (u > lim / p)
+            return u;
+        u *= p;
+    }
+}
+
 /* A magnitude from one of several classes: tiny, 30-bit, 62-bit, 100-bit, near 2^126,
  * smooth (many small prime factors), special (powers of two, +-1, the maximum). */
 static ptp_u128 rnd_mag(void)
@@ -266,15 +278,8 @@ static ptp_u128 rnd_mag(void)
         return check_rnd_bits(b) | ((ptp_u128)1 << (b - 1));
     }
     case 6:
-    case 7: {
-        ptp_u128 u = 1, lim = (ptp_u128)1 << (10 + check_rnd_below(117));
-        for (;;) {
-            unsigned p = small_primes[check_rnd_below(9)];
-            if (u > lim / p)
-                return u;
-            u *= p;
-        }
-    }
+    case 7:
+        return rnd_smooth(117);
     default: {
         int k = 1 + (int)check_rnd_below(126);
         switch (check_rnd_below(5)) {
@@ -304,15 +309,8 @@ static ptp_u128 rnd_mag_small(void)
         return check_rnd_bits(30);
     case 2:
         return check_rnd_bits(62);
-    default: {
-        ptp_u128 u = 1, lim = (ptp_u128)1 << (10 + check_rnd_below(52));
-        for (;;) {
-            unsigned p = small_primes[check_rnd_below(9)];
-            if (u > lim / p)
-                return u;
-            u *= p;
-        }
-    }
+    default:
+        return rnd_smooth(52);
     }
 }
 
