@@ -415,9 +415,14 @@ void ptp_tri1_classify_clusters(const float (*vertices)[4], const uint32_t *indi
 
 #if defined(PTP_TRI1_IMPLEMENTATION) && !defined(PTP_TRI1_MESH_IMPLEMENTED)
 #define PTP_TRI1_MESH_IMPLEMENTED
-/* Blocks of MESH_LANES triangles gathered through their indices into the SoA layout (SSE2: 4x4
- * transposes, one vertex of four triangles) and classified by classify_soa: the same code as
- * classify, so the same classes (certified: with the same second look). */
+#if (defined(__AVX__) || defined(__AVX512F__)) && !defined(PTP_TRI1_NO_SSE)
+#include <immintrin.h>
+#endif
+/* Blocks of MESH_LANES triangles gathered through their indices into the SoA layout and
+ * classified by classify_soa: the same code as classify, so the same classes (certified: with
+ * the same second look). The gather transposes one vertex of 16 (AVX-512), 8 (AVX) or 4 (SSE2)
+ * triangles at a time: register r holds that vertex of triangles l + r, l + r + 4, ... in its
+ * 128-bit lanes, and a 4x4 transpose within the lanes gives its x, y, z and w in order. */
 void ptp_tri1_classify_mesh(const float (*vertices)[4], const uint32_t *indices,
                             size_t triangle_count, const float eye[4], unsigned char *cls)
 {
@@ -428,17 +433,59 @@ void ptp_tri1_classify_mesh(const float (*vertices)[4], const uint32_t *indices,
         const uint32_t *ix = indices + 3 * p;
         n = triangle_count - p < PTP_TRI1_MESH_LANES ? triangle_count - p : PTP_TRI1_MESH_LANES;
         l = 0;
+#if defined(__AVX512F__) && !defined(PTP_TRI1_NO_SSE)
+        for (; l + 16 <= n; l += 16)
+            for (k = 0; k < 3; k++) {
+                __m512 r[4], t0, t1, t2, t3;
+                int i;
+                for (i = 0; i < 4; i++) {
+                    const uint32_t *x = ix + 3 * (l + (size_t)i) + k;
+                    r[i] = _mm512_castps128_ps512(_mm_loadu_ps(vertices[x[0]]));
+                    r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[x[12]]), 1);
+                    r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[x[24]]), 2);
+                    r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[x[36]]), 3);
+                }
+                t0 = _mm512_unpacklo_ps(r[0], r[1]);
+                t1 = _mm512_unpacklo_ps(r[2], r[3]);
+                t2 = _mm512_unpackhi_ps(r[0], r[1]);
+                t3 = _mm512_unpackhi_ps(r[2], r[3]);
+                _mm512_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, _mm512_shuffle_ps(t0, t1, 0x44));
+                _mm512_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, _mm512_shuffle_ps(t0, t1, 0xee));
+                _mm512_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, _mm512_shuffle_ps(t2, t3, 0xee));
+            }
+#elif defined(__AVX__) && !defined(PTP_TRI1_NO_SSE)
+        for (; l + 8 <= n; l += 8)
+            for (k = 0; k < 3; k++) {
+                __m256 r[4], t0, t1, t2, t3;
+                int i;
+                for (i = 0; i < 4; i++) {
+                    const uint32_t *x = ix + 3 * (l + (size_t)i) + k;
+                    r[i] = _mm256_castps128_ps256(_mm_loadu_ps(vertices[x[0]]));
+                    r[i] = _mm256_insertf128_ps(r[i], _mm_loadu_ps(vertices[x[12]]), 1);
+                }
+                t0 = _mm256_unpacklo_ps(r[0], r[1]);
+                t1 = _mm256_unpacklo_ps(r[2], r[3]);
+                t2 = _mm256_unpackhi_ps(r[0], r[1]);
+                t3 = _mm256_unpackhi_ps(r[2], r[3]);
+                _mm256_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, _mm256_shuffle_ps(t0, t1, 0x44));
+                _mm256_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, _mm256_shuffle_ps(t0, t1, 0xee));
+                _mm256_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, _mm256_shuffle_ps(t2, t3, 0xee));
+            }
+#endif
 #if defined(__SSE2__) && !defined(PTP_TRI1_NO_SSE)
         for (; l + 4 <= n; l += 4)
             for (k = 0; k < 3; k++) {
-                __m128 r0 = _mm_loadu_ps(vertices[ix[3 * l + k]]);
-                __m128 r1 = _mm_loadu_ps(vertices[ix[3 * l + 3 + k]]);
-                __m128 r2 = _mm_loadu_ps(vertices[ix[3 * l + 6 + k]]);
-                __m128 r3 = _mm_loadu_ps(vertices[ix[3 * l + 9 + k]]);
-                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-                _mm_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, r0);
-                _mm_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, r1);
-                _mm_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, r3);
+                __m128 r[4], t0, t1, t2, t3;
+                int i;
+                for (i = 0; i < 4; i++)
+                    r[i] = _mm_loadu_ps(vertices[ix[3 * (l + (size_t)i) + k]]);
+                t0 = _mm_unpacklo_ps(r[0], r[1]);
+                t1 = _mm_unpacklo_ps(r[2], r[3]);
+                t2 = _mm_unpackhi_ps(r[0], r[1]);
+                t3 = _mm_unpackhi_ps(r[2], r[3]);
+                _mm_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, _mm_shuffle_ps(t0, t1, 0x44));
+                _mm_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, _mm_shuffle_ps(t0, t1, 0xee));
+                _mm_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, _mm_shuffle_ps(t2, t3, 0xee));
             }
 #endif
         for (; l < n; l++)
