@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # run_bench.sh: prints `make bench`'s table: the bench_cull rows of each bidegree, the OpenCL kernel
 # on PoCL, the GLSL kernel on lavapipe and the WGSL kernel on wgpu-native (lavapipe) through the
-# test hosts' --bench, and ptpgen's own time.
+# test hosts' --bench, ptpgen's own time, and bench_tri's triangle rows.
 #   bench/run_bench.sh BUILD CC "CFLAGS" DEGREE...   (BUILD holds ptpgen, bench/ and the hosts)
 set -u
 B=$1 CC=$2 FLAGS=$3
@@ -127,6 +127,9 @@ for v in "$B"/bench/bench_cull_3x3_*; do
     while IFS= read -r line; do notes+=("$line"); done < <(grep '^#' "$tmp/rows")
 done
 echo "generation time (ptpgen --target c, clip, strict; whole process, median of 21): $gen"
+echo
+# the triangle rows: the degree-1 mesh path and its baselines, PN triangles and bicubic patches
+"$B/bench/bench_tri" || fail "bench_tri failed"
 echo
 printf '%s\n' "${notes[@]}"
 cat <<EOF
