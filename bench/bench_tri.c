@@ -413,10 +413,11 @@ typedef struct {
  * (NULL: "-"). */
 static void print_row(path *p, int reps, double bw, const unsigned char *ref)
 {
-    char bound[32] = "-", of[32] = "-", diff[48] = "-";
+    char bytes[32] = "-", bound[32] = "-", of[32] = "-", diff[48] = "-";
     double med = median(p->t, reps), best = p->t[0];
     size_t i, d = 0;
     if (p->bytes > 0) {
+        snprintf(bytes, sizeof bytes, "%.1f", p->bytes);
         snprintf(bound, sizeof bound, "%.0f", bw / p->bytes * 1e-6);
         snprintf(of, sizeof of, "%.2fx", med * bw / p->bytes / (double)p->items);
     }
@@ -425,8 +426,8 @@ static void print_row(path *p, int reps, double bw, const unsigned char *ref)
             d += p->cls[i] != ref[i];
         snprintf(diff, sizeof diff, "%zu/%zu", d, p->items);
     }
-    printf("%-40s %8.1f %8.1f %7.2f %6.1f %8s %8s  %s\n", p->name, (double)p->items / med * 1e-6,
-           (double)p->items / best * 1e-6, med * 1e9 / (double)p->items, p->bytes, bound, of, diff);
+    printf("%-40s %8.1f %8.1f %7.2f %6s %8s %8s  %s\n", p->name, (double)p->items / med * 1e-6,
+           (double)p->items / best * 1e-6, med * 1e9 / (double)p->items, bytes, bound, of, diff);
 }
 
 /* The median over rounds of path a's rate over path b's (both timed in every round). */

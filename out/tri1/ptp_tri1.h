@@ -421,8 +421,8 @@ void ptp_tri1_classify_clusters(const float (*vertices)[4], const uint32_t *indi
 /* Blocks of MESH_LANES triangles gathered through their indices into the SoA layout and
  * classified by classify_soa: the same code as classify, so the same classes (certified: with
  * the same second look). The gather transposes one vertex of 16 (AVX-512), 8 (AVX) or 4 (SSE2)
- * triangles at a time: register r holds that vertex of triangles l + r, l + r + 4, ... in its
- * 128-bit lanes, and a 4x4 transpose within the lanes gives its x, y, z and w in order. */
+ * triangles at a time: r[i] holds that vertex of triangles l + i, l + i + 4, ... in its 128-bit
+ * lanes, and a 4x4 transpose within the lanes gives the rows x, y, z and w in triangle order. */
 void ptp_tri1_classify_mesh(const float (*vertices)[4], const uint32_t *indices,
                             size_t triangle_count, const float eye[4], unsigned char *cls)
 {
