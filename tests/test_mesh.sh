@@ -43,19 +43,23 @@ for cfg in "clip strict" "clip degenerate" "world strict" "world degenerate" "cl
     done
 done
 
-# mutant NAME SED LINE: a header edited by SED must fail with the check line LINE.
+# mutant NAME FLAGS SED LINE: a header edited by SED, built with gcc FLAGS, must fail with the
+# check line LINE.
 mutant() {
-    if host gcc -std=c11 "--space clip --rule strict" "$2" gcc &&
+    if host gcc "-std=c11 $2" "--space clip --rule strict" "$3" gcc &&
         ! "$tmp/hm" --degree 1 1 --domain triangle --space clip --rule strict --random 2 3000 5 --exact 5 1000 3 \
-            --name mutant >"$tmp/out" 2>&1 && grep -q "^not ok - mutant $3" "$tmp/out"; then
+            --name mutant >"$tmp/out" 2>&1 && grep -q "^not ok - mutant $4" "$tmp/out"; then
         ok "$1 fails"
     else
         notok "$1 fails" "it passed: $(grep -m2 '^not ok' "$tmp/out" 2>/dev/null)"
     fi
 }
-mutant "a mesh header that gathers a triangle's vertices 1 and 2 swapped" \
-    's|vertices\[ix\[3 \* l + k\]\]\[c\]|vertices[ix[3 * l + (3 - k) % 3]][c]|; s|vertices\[ix\[3 \* l + \([0-9]* + \)\{0,1\}k\]\]);|vertices[ix[3 * l + \1(3 - k) % 3]]);|' \
-    "classify_mesh equals classify"
-mutant "a mesh header whose cluster is back when any triangle is" \
+# every gather (SSE2 and scalar; AVX-512 or AVX2 with -march=native) takes vertex (3 - k) % 3
+swap='s|3 \* (l + (size_t)i) + k|3 * (l + (size_t)i) + (3 - k) % 3|g; s|vertices\[ix\[3 \* l + k\]\]\[c\]|vertices[ix[3 * l + (3 - k) % 3]][c]|'
+for flags in "" "-march=native"; do
+    mutant "a mesh header that gathers a triangle's vertices 1 and 2 swapped${flags:+ ($flags)}" "$flags" "$swap" \
+        "classify_mesh equals classify"
+done
+mutant "a mesh header whose cluster is back when any triangle is" "" \
     's|((all \& 1u) + 2u \* (1u - (all \& 1u))|((any \& 1u) + 2u * (1u - (any \& 1u))|' \
     "classify_clusters equals the loop"
