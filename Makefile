@@ -91,9 +91,16 @@ BENCH_CC ?= $(CC)
 BENCH_VARIANTS = refine3 certified
 
 bench: ptpgen $(B)/bench/peak $(addprefix $(B)/bench/bench_cull_,$(BENCH_DEGREES)) \
-    $(addprefix $(B)/bench/bench_cull_3x3_,$(BENCH_VARIANTS))
+    $(addprefix $(B)/bench/bench_cull_3x3_,$(BENCH_VARIANTS)) $(B)/bench/bench_tri
 	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan $(B)/host_wgpu >$(B)/bench/hosts.log 2>&1 || true
 	@bash bench/run_bench.sh $(B) $(BENCH_CC) "$(BENCH_CFLAGS)" $(BENCH_DEGREES)
+
+# `make bench-tri`: only the triangle rows of `make bench` (bench/bench_tri.c): the degree-1 mesh
+# path against the facet-normal and projected signed-area tests on one indexed mesh, with their
+# bandwidth bounds, and PN-triangle against bicubic patches. BENCH_TRI_ARGS="--grid NU NV --reps N".
+BENCH_TRI_ARGS ?=
+bench-tri: $(B)/bench/bench_tri
+	@$(B)/bench/bench_tri $(BENCH_TRI_ARGS)
 
 # The benchmark's compiler and flags: a change rebuilds the benchmarks.
 $(B)/bench/cc.txt: FORCE
@@ -122,14 +129,30 @@ $(B)/bench/bench_cull_3x3_%: bench/bench_cull.c $(B)/bench/ptp_3x3_%.h Makefile 
 	    -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ -DDEGREE='"3x3"' \
 	    -DVARIANT='"$(subst refine,--refine ,$(subst certified,--certified,$*))"' -o $@ $< -lm -pthread
 
+# The triangle benchmark's headers: degree 1 in world (ptp_tri1w_) and clip space, the cubic
+# triangle (PN triangles) and the bicubic patch, all in one program.
+$(B)/bench/ptp_tri1w.h: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --domain triangle --degree 1 --target c --space world --rule strict --prefix ptp_tri1w_ -o $@
+
+$(B)/bench/ptp_tri%.h: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --domain triangle --degree $* --target c --space clip --rule strict --prefix ptp_tri$*_ -o $@
+
+BENCH_TRI_HDR = $(addprefix $(B)/bench/ptp_,tri1w.h tri1.h tri3.h 3x3.h)
+$(B)/bench/bench_tri: bench/bench_tri.c $(BENCH_TRI_HDR) Makefile $(B)/bench/cc.txt
+	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -D_GNU_SOURCE $(addprefix -include ,$(BENCH_TRI_HDR)) \
+	    -DPTP_TRI1W_IMPLEMENTATION -DPTP_TRI1_IMPLEMENTATION -DPTP_TRI3_IMPLEMENTATION \
+	    -DPTP_3X3_IMPLEMENTATION -o $@ $< -lm
+
 # The peak: FMA and add chains, with a * b + c contracted into FMAs.
 $(B)/bench/peak: bench/peak.c Makefile $(B)/bench/cc.txt
 	@mkdir -p $(@D)
 	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -ffp-contract=fast -o $@ $< -pthread
 
 .SECONDARY: $(addprefix $(B)/bench/ptp_,$(addsuffix .h,$(BENCH_DEGREES))) \
-    $(addprefix $(B)/bench/ptp_3x3_,$(addsuffix .h,$(BENCH_VARIANTS)))
-.PHONY: bench
+    $(addprefix $(B)/bench/ptp_3x3_,$(addsuffix .h,$(BENCH_VARIANTS))) $(BENCH_TRI_HDR)
+.PHONY: bench bench-tri
 
 # `make render`: build/render, ptpgen's clip-space GLSL kernels culling bicubic patches in a
 # Vulkan tessellation pipeline (bench/render/, README "Rendering"). Every shader, ptpgen's

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # run_bench.sh: prints `make bench`'s table: the bench_cull rows of each bidegree, the OpenCL kernel
 # on PoCL, the GLSL kernel on lavapipe and the WGSL kernel on wgpu-native (lavapipe) through the
-# test hosts' --bench, and ptpgen's own time.
+# test hosts' --bench, ptpgen's own time, and bench_tri's triangle rows.
 #   bench/run_bench.sh BUILD CC "CFLAGS" DEGREE...   (BUILD holds ptpgen, bench/ and the hosts)
 set -u
 B=$1 CC=$2 FLAGS=$3
@@ -144,3 +144,6 @@ cat <<EOF
 #   loop's (the kernels run its terms, plus padding slots); "ref ok": the host checked the classes
 #   against the double reference.
 EOF
+echo
+# the triangle rows: the degree-1 mesh path and its baselines, PN triangles and bicubic patches
+"$B/bench/bench_tri" || fail "bench_tri failed"

@@ -1,5 +1,6 @@
 /* emit_c.c: the C target, an stb-style header: the term table, planes, values, and classify (one
  * patch, batch, SoA) as straight-line code, with the second look of --certified or --refine. */
+#include "emit/emit_c_mesh.h"
 #include "emit/fmt.h"
 #include "emit/kern.h"
 #include "plan/cert.h"
@@ -684,6 +685,7 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     st = banner.failed || tables.failed || funcs.failed || variant.failed
              ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
              : tpl_fill(o, "c/kernel.h", slots, 10, err);
+    st = st ? st : emit_c_mesh(o, t, info, err); /* the degree-1 triangle's mesh entry points */
     sbuf_clear(&banner);
     sbuf_clear(&tables);
     sbuf_clear(&funcs);

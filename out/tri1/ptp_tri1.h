@@ -376,3 +376,154 @@ void ptp_tri1_classify_batch(const float (*cp)[4], size_t patch_count, const flo
     }
 }
 #endif
+
+/* Indexed triangle meshes (degree 1 only): the class of every triangle, or of every cluster of
+ * consecutive triangles, from a vertex array and an index array, as classify gives it. */
+#ifndef PTP_TRI1_MESH_H
+#define PTP_TRI1_MESH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Triangles classify_mesh gathers and classifies at a time (define it to override). */
+#ifndef PTP_TRI1_MESH_LANES
+#define PTP_TRI1_MESH_LANES 64
+#endif
+
+/* cls[t] = the class of triangle t for triangle_count triangles: the class ptp_tri1_classify gives
+ * the triangle (vertices[indices[3t]], vertices[indices[3t + 1]], vertices[indices[3t + 2]]) with
+ * the points in clip space and eye (0, 0, alpha, 0).
+ * Indices may repeat (shared vertices, collapsed triangles). */
+void ptp_tri1_classify_mesh(const float (*vertices)[4], const uint32_t *indices,
+                            size_t triangle_count, const float eye[4], unsigned char *cls);
+/* cls[c] = the class of cluster c, triangles c * cluster_size up to (c + 1) * cluster_size - 1
+ * (the last cluster may be shorter), for the ceil(triangle_count / cluster_size) clusters:
+ * PTP_TRI1_BACK iff every triangle of it is back, PTP_TRI1_FRONT iff every one is front, else
+ * PTP_TRI1_SILHOUETTE (clustered back-face culling). cluster_size 0 writes nothing. */
+void ptp_tri1_classify_clusters(const float (*vertices)[4], const uint32_t *indices,
+                                size_t triangle_count, size_t cluster_size, const float eye[4],
+                                unsigned char *cls);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
+
+#if defined(PTP_TRI1_IMPLEMENTATION) && !defined(PTP_TRI1_MESH_IMPLEMENTED)
+#define PTP_TRI1_MESH_IMPLEMENTED
+#if (defined(__AVX__) || defined(__AVX512F__)) && !defined(PTP_TRI1_NO_SSE)
+#include <immintrin.h>
+#endif
+/* Blocks of MESH_LANES triangles gathered through their indices into the SoA layout and
+ * classified by classify_soa: the same code as classify, so the same classes (certified: with
+ * the same second look). The gather transposes one vertex of 16 (AVX-512), 8 (AVX) or 4 (SSE2)
+ * triangles at a time: r[i] holds that vertex of triangles l + i, l + i + 4, ... in its 128-bit
+ * lanes, and a 4x4 transpose within the lanes gives the rows x, y, z and w in triangle order. */
+void ptp_tri1_classify_mesh(const float (*vertices)[4], const uint32_t *indices,
+                            size_t triangle_count, const float eye[4], unsigned char *cls)
+{
+    float soa[3 * 4 * PTP_TRI1_MESH_LANES];
+    size_t p, l, n;
+    unsigned k, c;
+    for (p = 0; p < triangle_count; p += n) {
+        const uint32_t *ix = indices + 3 * p;
+        n = triangle_count - p < PTP_TRI1_MESH_LANES ? triangle_count - p : PTP_TRI1_MESH_LANES;
+        l = 0;
+#if defined(__AVX512F__) && !defined(PTP_TRI1_NO_SSE)
+        for (; l + 16 <= n; l += 16)
+            for (k = 0; k < 3; k++) {
+                __m512 r[4], t0, t1, t2, t3;
+                int i;
+                for (i = 0; i < 4; i++) {
+                    const uint32_t *x = ix + 3 * (l + (size_t)i) + k;
+                    r[i] = _mm512_castps128_ps512(_mm_loadu_ps(vertices[x[0]]));
+                    r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[x[12]]), 1);
+                    r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[x[24]]), 2);
+                    r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[x[36]]), 3);
+                }
+                t0 = _mm512_unpacklo_ps(r[0], r[1]);
+                t1 = _mm512_unpacklo_ps(r[2], r[3]);
+                t2 = _mm512_unpackhi_ps(r[0], r[1]);
+                t3 = _mm512_unpackhi_ps(r[2], r[3]);
+                _mm512_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, _mm512_shuffle_ps(t0, t1, 0x44));
+                _mm512_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, _mm512_shuffle_ps(t0, t1, 0xee));
+                _mm512_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, _mm512_shuffle_ps(t2, t3, 0xee));
+            }
+#elif defined(__AVX__) && !defined(PTP_TRI1_NO_SSE)
+        for (; l + 8 <= n; l += 8)
+            for (k = 0; k < 3; k++) {
+                __m256 r[4], t0, t1, t2, t3;
+                int i;
+                for (i = 0; i < 4; i++) {
+                    const uint32_t *x = ix + 3 * (l + (size_t)i) + k;
+                    r[i] = _mm256_castps128_ps256(_mm_loadu_ps(vertices[x[0]]));
+                    r[i] = _mm256_insertf128_ps(r[i], _mm_loadu_ps(vertices[x[12]]), 1);
+                }
+                t0 = _mm256_unpacklo_ps(r[0], r[1]);
+                t1 = _mm256_unpacklo_ps(r[2], r[3]);
+                t2 = _mm256_unpackhi_ps(r[0], r[1]);
+                t3 = _mm256_unpackhi_ps(r[2], r[3]);
+                _mm256_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, _mm256_shuffle_ps(t0, t1, 0x44));
+                _mm256_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, _mm256_shuffle_ps(t0, t1, 0xee));
+                _mm256_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, _mm256_shuffle_ps(t2, t3, 0xee));
+            }
+#endif
+#if defined(__SSE2__) && !defined(PTP_TRI1_NO_SSE)
+        for (; l + 4 <= n; l += 4)
+            for (k = 0; k < 3; k++) {
+                __m128 r[4], t0, t1, t2, t3;
+                int i;
+                for (i = 0; i < 4; i++)
+                    r[i] = _mm_loadu_ps(vertices[ix[3 * (l + (size_t)i) + k]]);
+                t0 = _mm_unpacklo_ps(r[0], r[1]);
+                t1 = _mm_unpacklo_ps(r[2], r[3]);
+                t2 = _mm_unpackhi_ps(r[0], r[1]);
+                t3 = _mm_unpackhi_ps(r[2], r[3]);
+                _mm_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, _mm_shuffle_ps(t0, t1, 0x44));
+                _mm_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, _mm_shuffle_ps(t0, t1, 0xee));
+                _mm_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, _mm_shuffle_ps(t2, t3, 0xee));
+            }
+#endif
+        for (; l < n; l++)
+            for (k = 0; k < 3; k++)
+                for (c = 0; c < 4; c++)
+                    soa[(k * 4 + c) * PTP_TRI1_MESH_LANES + l] = vertices[ix[3 * l + k]][c];
+        ptp_tri1_classify_soa(soa, PTP_TRI1_MESH_LANES, n, eye, cls + p);
+    }
+}
+
+/* Blocks of MESH_LANES triangles classified by classify_mesh; each cluster's classes reduced
+ * to their AND and OR: back iff the AND has bit 0 (every class is 1), front iff the OR is 0. */
+void ptp_tri1_classify_clusters(const float (*vertices)[4], const uint32_t *indices,
+                                size_t triangle_count, size_t cluster_size, const float eye[4],
+                                unsigned char *cls)
+{
+    unsigned char t[PTP_TRI1_MESH_LANES];
+    unsigned all = 0xffu, any = 0u; /* AND and OR of the current cluster's classes so far */
+    size_t p, n, i, j, m, seen = 0; /* seen: triangles of the current cluster so far */
+    if (cluster_size == 0)
+        return;
+    for (p = 0; p < triangle_count; p += n) {
+        n = triangle_count - p < PTP_TRI1_MESH_LANES ? triangle_count - p : PTP_TRI1_MESH_LANES;
+        ptp_tri1_classify_mesh(vertices, indices + 3 * p, n, eye, t);
+        for (i = 0; i < n; i += m) {
+            m = cluster_size - seen < n - i ? cluster_size - seen : n - i;
+            for (j = i; j < i + m; j++) {
+                all &= t[j];
+                any |= t[j];
+            }
+            seen += m;
+            if (seen == cluster_size || p + i + m == triangle_count) {
+                *cls++ = (unsigned char)((all & 1u) + 2u * (1u - (all & 1u)) * (any != 0u));
+                all = 0xffu;
+                any = 0u;
+                seen = 0;
+            }
+        }
+    }
+}
+#endif

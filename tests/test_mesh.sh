@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# test_mesh.sh: the degree-1 triangle header's classify_mesh and classify_clusters, run by
+# tests/host_mesh.c (C and C++) on indexed meshes against classify, kref and a loop; mutants fail.
+# Needs PTPGEN and build/<cc>/libptptest.a for each C compiler.
+set -u
+P=${PTPGEN:?set PTPGEN}
+. "$(dirname "$0")/host_lib.sh"
+make_tmp
+
+# host CC FLAGS OPTIONS [SED]: builds host_mesh around `ptpgen --domain triangle --degree 1
+# --target c OPTIONS` (edited by sed script SED when given) into $tmp/hm; returns the status.
+host() {
+    local x=
+    case $1 in *++) x="-x c++" ;; esac
+    "$P" --domain triangle --degree 1 --target c $3 --prefix ptp_tri1_ -o "$tmp/m.h" || return 1
+    [ -n "${4:-}" ] && sed -i "$4" "$tmp/m.h"
+    $1 $2 -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/m.h" -DPTP_TRI1_IMPLEMENTATION \
+        -DPFX=ptp_tri1_ -DUPFX=PTP_TRI1_ $x tests/host_mesh.c -x none "build/$5/libptptest.a" -lm \
+        -o "$tmp/hm" 2>"$tmp/err"
+}
+
+# The variants of the header, each with gcc and clang as built for speed and as plain C, and
+# from C++; certified ones on more exact (integer, adversarial) data.
+for cfg in "clip strict" "clip degenerate" "world strict" "world degenerate" "clip strict --certified" \
+    "world strict --certified"; do
+    set -- $cfg
+    opts="--space $1 --rule $2 ${3:-}"
+    data="--random 2 3000 17 --exact 5 2000 19"
+    [ -n "${3:-}" ] && data="--random 1 3000 17 --exact 10 20000 23"
+    # gathers: AVX-512 or AVX2 with -march=native, AVX (8 wide, then 4, then 1 in blocks of 21),
+    # SSE2 (4, then 1 in blocks of 5), scalar
+    for build in "gcc:gcc:-std=c11" "gcc:gcc:-std=c11 -march=native" "gcc:gcc:-std=c11 -mavx2 -DPTP_TRI1_MESH_LANES=21" \
+        "gcc:gcc:-std=c11 -DPTP_TRI1_MESH_LANES=5" "gcc:gcc:-std=c11 -DPTP_TRI1_NO_VECTOR -DPTP_TRI1_NO_SSE" \
+        "clang:clang:-std=c11 -O3 -march=native" "g++:gcc:-std=c++11" "clang++:clang:-std=c++20 -march=native"; do
+        IFS=: read -r cc lib flags <<<"$build"
+        command -v $cc >/dev/null || { missing $cc "mesh entry points with $cc"; continue; }
+        name="mesh $1 $2${3:+ $3} ($cc $flags)"
+        if host $cc "$flags" "$opts" "" $lib; then
+            run_host "$name" "$tmp/hm" --degree 1 1 --domain triangle --space $1 --rule $2 ${3:-} $data --name "$name"
+        else
+            notok "$name compiles" "$(grep -m3 error "$tmp/err")"
+        fi
+    done
+done
+
+# mutant NAME FLAGS SED LINE: a header edited by SED, built with gcc FLAGS, must fail with the
+# check line LINE.
+mutant() {
+    if host gcc "-std=c11 $2" "--space clip --rule strict" "$3" gcc &&
+        ! "$tmp/hm" --degree 1 1 --domain triangle --space clip --rule strict --random 2 3000 5 --exact 5 1000 3 \
+            --name mutant >"$tmp/out" 2>&1 && grep -q "^not ok - mutant $4" "$tmp/out"; then
+        ok "$1 fails"
+    else
+        notok "$1 fails" "it passed: $(grep -m2 '^not ok' "$tmp/out" 2>/dev/null)"
+    fi
+}
+# every gather (SSE2 and scalar; AVX-512 or AVX2 with -march=native) takes vertex (3 - k) % 3
+swap='s|3 \* (l + (size_t)i) + k|3 * (l + (size_t)i) + (3 - k) % 3|g; s|vertices\[ix\[3 \* l + k\]\]\[c\]|vertices[ix[3 * l + (3 - k) % 3]][c]|'
+for flags in "" "-march=native"; do
+    mutant "a mesh header that gathers a triangle's vertices 1 and 2 swapped${flags:+ ($flags)}" "$flags" "$swap" \
+        "classify_mesh equals classify"
+done
+mutant "a mesh header whose cluster is back when any triangle is" "" \
+    's|((all \& 1u) + 2u \* (1u - (all \& 1u))|((any \& 1u) + 2u * (1u - (any \& 1u))|' \
+    "classify_clusters equals the loop"
