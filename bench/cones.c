@@ -561,7 +561,8 @@ static int tri_sample(const double c[28], int n, int *positive)
     for (s = 0; s < n; s++)
         for (t = 0; s + t < n; t++) {
             double pw[3][7], f = 0;
-            double x[3] = {(double)s / (n - 1), (double)t / (n - 1), (double)(n - 1 - s - t) / (n - 1)};
+            double x[3] = {(double)s / (n - 1), (double)t / (n - 1),
+                           (double)(n - 1 - s - t) / (n - 1)};
             for (k = 0; k < 3; k++)
                 for (pw[k][0] = 1, i = 1; i <= 6; i++)
                     pw[k][i] = pw[k][i - 1] * x[k];

@@ -44,13 +44,14 @@ typedef struct cone_bound {
  * N = B_u x B_v (exact Bernstein product: 36 of bidegree 5x5 for a bicubic patch, 15 of total
  * degree 4 for a cubic triangle), zero vectors skipped. Fills *c;
  * c->usable is 0 when every vector is zero or the cone is not narrower than a half-space.
- * Returns CONE_OK, or CONE_EINVAL for a non-finite point (then *c never culls). */
+ * Returns CONE_OK, or CONE_EINVAL for a non-finite point or an unknown domain (then *c never
+ * culls). */
 int cone_ncone(const cone_patch *b, cone_bound *c);
 
 /* TCONE (Sederberg and Meyers): the cones of the control vectors of the tangent B_u and the
- * bitangent B_v (12 each for a bicubic patch, 6 each for a cubic triangle), combined into a cone about a_u x a_v with
- * sin(alpha) = sqrt(sin^2 a_u + 2 sin a_u sin a_v |cos beta| + sin^2 a_v) / sin beta.
- * Unusable when either cone is empty or a half-space or wider, when the two cones (or one
+ * bitangent B_v (12 each for a bicubic patch, 6 each for a cubic triangle), combined into a cone
+ * about a_u x a_v with sin(alpha) = sqrt(sin^2 a_u + 2 sin a_u sin a_v |cos beta| + sin^2 a_v) /
+ * sin beta. Unusable when either cone is empty or a half-space or wider, when the two cones (or one
  * and the other's negation) overlap, or when sin(alpha) >= 1. Same contract as cone_ncone. */
 int cone_tcone(const cone_patch *b, cone_bound *c);
 
@@ -60,10 +61,10 @@ int cone_tcone(const cone_patch *b, cone_bound *c);
 int cone_cull(const cone_bound *c, const double eye[3]);
 
 /* The control planes t_P of T = cross4(B, B_u, B_v) of the patch with w = 1 (64 or 28, by
- * b->domain, which t->domain takes), from ptpgen's exact table for that domain: terms rows
- * of idx = {plane, j, k, l} and integer weights iwgt, each weight iwgt/denom. Each cross4 is computed as
- * (n, -b_j . n), n = (b_k - b_j) x (b_l - b_j), so a term with two equal points is exactly
- * zero and a collapsed edge's planes are exactly zero. Returns CONE_OK, or CONE_EINVAL
+ * b->domain, which t->domain takes), from ptpgen's exact table for that domain: terms rows of
+ * idx = {plane, j, k, l} and integer weights iwgt, each weight iwgt/denom. Each cross4 is
+ * computed as (n, -b_j . n), n = (b_k - b_j) x (b_l - b_j), so a term with two equal points is
+ * exactly zero and a collapsed edge's planes are exactly zero. Returns CONE_OK, or CONE_EINVAL
  * for an index out of range or denom <= 0 (t is then unspecified). */
 int cone_planes(const cone_patch *b, size_t terms, const unsigned short idx[][4],
                 const int iwgt[], int denom, cone_tplane *t);
@@ -90,15 +91,17 @@ double cone_direct(const cone_patch *b, const double eye[3], double u, double v,
  * domain except on a set of measure zero): a patch with a collapsed edge, where f is exactly
  * 0 along the edge, is back-facing when the rest of it is.
  * Recursive de Casteljau subdivision of f (a square into 4 by halving u and v, a triangle into
- * 4 at its edge midpoints) to at most depth levels (0 <= depth <= 12), stopping at a piece with no positive control value (back) or with a
- * positive corner (f > 0 there). Returns CONE_BACK when every piece is back (for depth 0,
- * ptpgen's degenerate rule on c itself), CONE_NOT_BACK when a positive corner was found,
- * CONE_UNDECIDED otherwise; CONE_EINVAL for depth out of range. */
+ * 4 at its edge midpoints) to at most depth levels (0 <= depth <= 12), stopping at a piece with
+ * no positive control value (back) or with a positive corner (f > 0 there). Returns CONE_BACK
+ * when every piece is back (for depth 0, ptpgen's degenerate rule on c itself), CONE_NOT_BACK
+ * when a positive corner was found, CONE_UNDECIDED otherwise; CONE_EINVAL for depth or domain
+ * out of range. */
 int cone_split(int domain, const double c[64], int depth);
 
 /* Dense sampling of f on the n x n grid u, v = 0, 1/(n-1), ..., 1 (2 <= n <= 257), corners
- * included; for a triangle, the grid's points with u + v <= 1. Stores in *positive 1 if some sample is > 0 (f is positive there: the patch is
- * not back-facing), else 0. Returns CONE_OK, or CONE_EINVAL for n out of range. */
+ * included; for a triangle, the grid's points with u + v <= 1. Stores in *positive 1 if some sample
+ * is > 0 (f is positive there: the patch is not back-facing), else 0. Returns CONE_OK, or
+ * CONE_EINVAL for n or domain out of range. */
 int cone_sample(int domain, const double c[64], int n, int *positive);
 
 #endif

@@ -201,7 +201,7 @@ static int tri_sample_positive(const exact_int c[28], int n)
         for (t = 0; s + t < n; t++) {
             memset(&f, 0, sizeof f);
             for (i = 0; i <= 6; i++)
-                for (j = 0; i + j <= 6; j++) { /* cell (i, j) is c[r (r + 1)/2 + r - j], r = 6 - i */
+                for (j = 0; i + j <= 6; j++) { /* cell (i, j): c[r(r+1)/2 + r - j], r = 6 - i */
                     int l = 6 - i - j;
                     uint64_t a = fact[6] / (fact[i] * fact[j] * fact[l]);
                     for (e = 0; e < 6; e++)

@@ -20,7 +20,8 @@ static void edge_point(double r[3], const double pa[3], const double pc[3], cons
 void pn_triangle(double b[PN_POINTS][3], const double p[3][3], const double n[3][3])
 {
     /* The edge point at corner a towards c, and where it goes: b210 at 1, b201 at 2, ... */
-    static const int edge[6][3] = {{0, 1, 1}, {0, 2, 2}, {1, 0, 3}, {1, 2, 7}, {2, 1, 8}, {2, 0, 5}};
+    static const int edge[6][3] = {{0, 1, 1}, {0, 2, 2}, {1, 0, 3},
+                                   {1, 2, 7}, {2, 1, 8}, {2, 0, 5}};
     double e[3] = {0, 0, 0}, v[3];
     int i, k;
     for (k = 0; k < 3; k++) {

@@ -323,7 +323,8 @@ static void check_tess(void)
         for (grid = 1; grid <= 3; grid++) {
             double pts[32][3], worst = 0;
             tess_mesh m;
-            size_t t, v, want_v = (size_t)(2 * grid + 1) * (size_t)(grid + 1) - (size_t)(collapse * grid);
+            size_t t, v;
+            size_t want_v = (size_t)(2 * grid + 1) * (size_t)(grid + 1) - (size_t)(collapse * grid);
             size_t want_t = 4 * (size_t)grid * (size_t)grid - (size_t)(collapse * grid);
             flat_patches(pts, collapse);
             if (tess_bicubic(&m, (const double(*)[3])pts, 2, grid)) {
@@ -333,7 +334,8 @@ static void check_tess(void)
             for (v = 0; v < m.nverts; v++)
                 worst = fmax(worst, fabs(m.nrm[v][2] - 1));
             for (t = 0; t < m.ntris; t++) {
-                const double *a = m.pos[m.tri[t][0]], *b = m.pos[m.tri[t][1]], *c = m.pos[m.tri[t][2]];
+                const double *a = m.pos[m.tri[t][0]], *b = m.pos[m.tri[t][1]];
+                const double *c = m.pos[m.tri[t][2]];
                 double area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
                 worst = fmax(worst, area > 0 ? 0 : INFINITY);
             }

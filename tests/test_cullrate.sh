@@ -26,7 +26,8 @@ two_models() {
     [ "$(grep -c 'exact check: [0-9]* control values, 0 mismatches' "$out")" = 2 ] &&
         ok "$label: the exact control values agree with the double ones on both models" ||
         notok "$label: exact check" "$(grep 'sign check' "$out")"
-    [ "$(grep -c '^  ptpgen certified .* 0       0         - .* 0       0         -$' "$out")" = 2 ] &&
+    local safe='^  ptpgen certified .* 0       0         - .* 0       0         -$'
+    [ "$(grep -c "$safe" "$out")" = 2 ] &&
         ok "$label: no unsafe certified cull and no false alarm" ||
         notok "$label: certified rows" "$(grep 'ptpgen certified' "$out")"
 }
@@ -48,19 +49,26 @@ two_models pn --pn '^teacup PN: 468 patches\|^teaspoon PN: 288 patches' \
 # and CVis with no unsafe cull, CVis lower <= upper.
 awk '/ patches, bounding radius/ { m = $1 }
      /^  (TCONE|NCONE|ptpgen strict|ptpgen certified|CVis lower|CVis upper)/ {
-         n = $1 == "ptpgen" || $1 == "CVis" ? $1 " " $2 : $1; o = $1 == "CVis" ? 2 : n ~ / / ? 1 : 0
-         for (r = 0; r < 2; r++) { rate[m, n, r] = $(3 + o + 5 * r) + 0; uns[m, n, r] = $(4 + o + 5 * r) }
+         n = $1 == "ptpgen" || $1 == "CVis" ? $1 " " $2 : $1
+         o = $1 == "CVis" ? 2 : n ~ / / ? 1 : 0 # words in the name after the first
+         for (r = 0; r < 2; r++) {
+             rate[m, n, r] = $(3 + o + 5 * r) + 0
+             uns[m, n, r] = $(4 + o + 5 * r)
+         }
      }
      END {
          split("TCONE|NCONE|ptpgen certified|ptpgen strict|CVis upper", chain, "|")
          for (k in rate) { split(k, f, SUBSEP); models[f[1]] = 1 }
          for (mm in models) for (r = 0; r < 2; r++) {
-             for (i = 1; i < 5; i++) if (rate[mm, chain[i], r] > rate[mm, chain[i + 1], r]) bad = bad " " mm chain[i]
+             for (i = 1; i < 5; i++)
+                 if (rate[mm, chain[i], r] > rate[mm, chain[i + 1], r]) bad = bad " " mm chain[i]
              if (rate[mm, "CVis lower", r] > rate[mm, "CVis upper", r]) bad = bad " " mm "CVis"
-             if (uns[mm, "TCONE", r] != 0 || uns[mm, "NCONE", r] != 0 || uns[mm, "CVis lower", r] != 0) bad = bad " " mm "unsafe"
-             n++
+             if (uns[mm, "TCONE", r] != 0 || uns[mm, "NCONE", r] != 0 ||
+                 uns[mm, "CVis lower", r] != 0)
+                 bad = bad " " mm "unsafe"
+             cnt++
          }
-         if (n != 4) bad = bad " " n " model-radii"
+         if (cnt != 4) bad = bad " " cnt " model-radii"
          print bad == "" ? "ordered" : "not ordered:" bad
      }' "$tmp/pn" >"$tmp/order"
 [ "$(cat "$tmp/order")" = ordered ] &&
