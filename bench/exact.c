@@ -2,8 +2,6 @@
  * 1024-bit two's complement integers; no rounding anywhere, so the signs are the true ones. */
 #include "exact.h"
 
-#include "cones.h"
-
 #include <limits.h>
 #include <string.h>
 

@@ -7,6 +7,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "cones.h" /* the domains, CONE_QUAD and CONE_TRI */
+
 /* A signed integer of 1024 bits, two's complement in 32-bit limbs, least significant first.
  * Every value below fits for all finite float inputs (bound in exact.c). */
 #define EXACT_LIMBS 32
