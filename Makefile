@@ -272,8 +272,8 @@ FORCE:
 
 # `make cullrate`: the average number of patches NCONE, TCONE and ptpgen's tangent-plane test
 # (strict, degenerate, certified) cull from 10,000 random eye points around each model of
-# $(CULLRATE_MODELS), with a bracket of the exact answer (CVis). CULLRATE_ARGS passes options, e.g.
-# `make cullrate CULLRATE_ARGS=--quick`, or `CULLRATE_ARGS="--model my.bez"` to measure your own models.
+# $(CULLRATE_MODELS) and the PN triangles of two of them (--pn), with a bracket of the exact answer
+# (CVis). CULLRATE_ARGS passes options, e.g. `make cullrate CULLRATE_ARGS=--quick`, or `CULLRATE_ARGS="--model my.bez"` to measure your own models.
 CULLRATE_MODELS ?= ../shared/models
 CULLRATE_ARGS ?=
 CR = $(B)/cullrate
@@ -301,9 +301,36 @@ $(CR)/cr_t.h: $(B)/ptpgen
 	@mkdir -p $(CR)
 	$(B)/ptpgen --degree 3 --target table --prefix cr_t_ -o $@
 
-$(CR)/cullrate: bench/cullrate.c bench/cones.c bench/cones.h bench/exact.c bench/exact.h \
-    tests/float_widen.h $(CR)/cr_s.h $(CR)/cr_d.h $(CR)/cr_c.h $(CR)/cr_r1.h $(CR)/cr_r2.h \
-    $(CR)/cr_r3.h $(CR)/cr_t.h Makefile
-	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -pthread -Ibench -Itests -I$(CR) -o $@ bench/cullrate.c bench/cones.c bench/exact.c -lm
+# The same for cubic triangles (PN triangles): strict, degenerate, certified and the table.
+$(CR)/cr_ts.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --domain triangle --degree 3 --target c --space world --rule strict \
+	    --prefix cr_ts_ -o $@
+
+$(CR)/cr_td.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --domain triangle --degree 3 --target c --space world --rule degenerate \
+	    --prefix cr_td_ -o $@
+
+$(CR)/cr_tc.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --domain triangle --degree 3 --target c --space world --certified \
+	    --prefix cr_tc_ -o $@
+
+$(CR)/cr_tt.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --domain triangle --degree 3 --target table --prefix cr_tt_ -o $@
+
+CR_SRC = bench/cullrate.c bench/cones.c bench/exact.c bench/pn.c bench/tess.c
+CR_HDR = bench/cones.h bench/exact.h bench/pn.h bench/tess.h tests/float_widen.h \
+    $(addprefix $(CR)/,cr_s.h cr_d.h cr_c.h cr_r1.h cr_r2.h cr_r3.h cr_t.h) \
+    $(addprefix $(CR)/,cr_ts.h cr_td.h cr_tc.h cr_tt.h)
+
+$(CR)/cullrate: $(CR_SRC) $(CR_HDR) Makefile
+	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -pthread -Ibench -Itests -I$(CR) -o $@ $(CR_SRC) -lm
+
+# Checks of the PN triangles, the tessellator and the triangular cones (tests/test_cullrate.sh).
+$(CR)/pn_check: tests/pn_check.c $(filter-out bench/cullrate.c,$(CR_SRC)) $(CR_HDR) Makefile
+	$(CC) $(STD) $(CFLAGS) -Ibench -I$(CR) -o $@ $< $(filter-out bench/cullrate.c,$(CR_SRC)) -lm
 
 .PHONY: cullrate

@@ -11,7 +11,8 @@
  * is below 6 (2^278)^3 < 2^837; a control value, the sum of iwgt det over a plane with sum |iwgt| <
  * 2^32, below 2^869. A sample is sum c_IJ a_I(s) a_J(t) with a_I(s) = C(7,I) s^I (N-s)^(7-I),
  * whose sum over I is N^7 <= 2^56 (N <= 256): the partial sums stay below 2^925 and the
- * sample below 2^981, inside the signed range 2^1023. */
+ * sample below 2^981, inside the signed range 2^1023. A triangle's sample is
+ * sum c_ijk 6!/(i! j! k!) s^i t^j (N-s-t)^k, whose weights sum to N^6: below 2^917. */
 
 static int x_negative(const exact_int *x)
 {
@@ -120,20 +121,21 @@ static int split(float f, uint32_t *m, int *e)
     return (int)(u >> 31);
 }
 
-/* The 16 points minus the eye, as integers times a common 2^q (q omitted: a positive factor). */
-static void differences(const float b[16][3], const float eye[3], exact_int d[16][3])
+/* The n (<= 16) points minus the eye, as integers times a common 2^q (q omitted: a positive
+ * factor). */
+static void differences(const float (*b)[3], int n, const float eye[3], exact_int d[16][3])
 {
     uint32_t m[17][3];
     int e[17][3], neg[17][3], q = INT_MAX, k, c;
     exact_int ex;
-    for (k = 0; k < 17; k++)
+    for (k = 0; k <= n; k++)
         for (c = 0; c < 3; c++) {
-            neg[k][c] = split(k < 16 ? b[k][c] : eye[c], &m[k][c], &e[k][c]);
+            neg[k][c] = split(k < n ? b[k][c] : eye[c], &m[k][c], &e[k][c]);
             q = e[k][c] < q ? e[k][c] : q;
         }
     for (c = 0; c < 3; c++) {
-        x_set(&ex, m[16][c], m[16][c] ? e[16][c] - q : 0, neg[16][c]);
-        for (k = 0; k < 16; k++) {
+        x_set(&ex, m[n][c], m[n][c] ? e[n][c] - q : 0, neg[n][c]);
+        for (k = 0; k < n; k++) {
             x_set(&d[k][c], m[k][c], m[k][c] ? e[k][c] - q : 0, neg[k][c]);
             x_add(&d[k][c], &d[k][c], &ex, 1);
         }
@@ -155,23 +157,26 @@ static void det3(exact_int *r, const exact_int *a, const exact_int *b, const exa
     }
 }
 
-int exact_values(const float b[16][3], const float eye[3], size_t terms,
-                 const unsigned short idx[][4], const int iwgt[], exact_int c[64])
+int exact_values(const float (*b)[3], int points, const float eye[3], size_t terms,
+                 const unsigned short idx[][4], const int iwgt[], int planes, exact_int *c)
 {
     uint64_t wsum[64] = {0};
     exact_int d[16][3], t, w;
     size_t x;
     int p;
+    if (points < 1 || points > 16 || planes < 1 || planes > 64)
+        return -1;
     for (x = 0; x < terms; x++) {
-        if (idx[x][0] >= 64 || idx[x][1] >= 16 || idx[x][2] >= 16 || idx[x][3] >= 16)
+        if (idx[x][0] >= planes || idx[x][1] >= points || idx[x][2] >= points ||
+            idx[x][3] >= points)
             return -1;
         wsum[idx[x][0]] += (uint64_t)(iwgt[x] < 0 ? -(int64_t)iwgt[x] : iwgt[x]);
     }
-    for (p = 0; p < 64; p++)
+    for (p = 0; p < planes; p++)
         if (wsum[p] >> 32)
             return -1;
-    differences(b, eye, d);
-    memset(c, 0, 64 * sizeof *c);
+    differences(b, points, eye, d);
+    memset(c, 0, (size_t)planes * sizeof *c);
     /* e . cross4(b_j, b_k, b_l) = n . (E - b_j), n = (b_k - b_j) x (b_l - b_j), which is
      * -det(D_j, D_k, D_l) for D = b - E. */
     for (x = 0; x < terms; x++) {
@@ -183,18 +188,46 @@ int exact_values(const float b[16][3], const float eye[3], size_t terms,
     return 0;
 }
 
-int exact_sample_positive(const exact_int c[64], int n)
+/* 1 if f > 0 exactly at some point of a triangle's sample grid: f N^6 at (s, t) is
+ * sum c_ijk 6!/(i! j! k!) s^i t^j r^k, r = N - s - t, N = n - 1. */
+static int tri_sample_positive(const exact_int c[28], int n)
+{
+    static const uint64_t fact[7] = {1, 1, 2, 6, 24, 120, 720};
+    exact_int f, x, w;
+    int s, t, i, j, e;
+    for (s = 0; s < n; s++)
+        for (t = 0; s + t < n; t++) {
+            memset(&f, 0, sizeof f);
+            for (i = 0; i <= 6; i++)
+                for (j = 0; i + j <= 6; j++) { /* cell (i, j): c[r(r+1)/2 + r - j], r = 6 - i */
+                    int l = 6 - i - j;
+                    uint64_t a = fact[6] / (fact[i] * fact[j] * fact[l]);
+                    for (e = 0; e < 6; e++)
+                        a *= (uint64_t)(e < i ? s : e < i + j ? t : n - 1 - s - t);
+                    x_set(&w, a, 0, 0);
+                    x_mul(&x, &c[(6 - i) * (7 - i) / 2 + 6 - i - j], &w);
+                    x_add(&f, &f, &x, 0);
+                }
+            if (exact_sign(&f) > 0)
+                return 1;
+        }
+    return 0;
+}
+
+int exact_sample_positive(int domain, const exact_int *c, int n)
 {
     uint64_t a[257][8];
     static const uint64_t binom7[8] = {1, 7, 21, 35, 35, 21, 7, 1};
     exact_int g[8], f, x, w;
-    int s, t, i, j, p;
-    if (n < 2 || n > 257)
+    int s, t, i, j, p, planes = domain == CONE_TRI ? 28 : 64;
+    if (n < 2 || n > 257 || (domain != CONE_QUAD && domain != CONE_TRI))
         return -1;
-    for (p = 0; p < 64 && exact_sign(&c[p]) <= 0; p++)
+    for (p = 0; p < planes && exact_sign(&c[p]) <= 0; p++)
         ;
-    if (p == 64) /* f is a convex combination of the control values */
+    if (p == planes) /* f is a convex combination of the control values */
         return 0;
+    if (domain == CONE_TRI)
+        return tri_sample_positive(c, n);
     for (s = 0; s < n; s++) /* a[s][i] = C(7,i) s^i (N-s)^(7-i), u = s/N times N^7 */
         for (i = 0; i < 8; i++) {
             a[s][i] = binom7[i];

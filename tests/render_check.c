@@ -142,7 +142,7 @@ static int check_cone(const dump *d, const char *model, int tcone, const char *l
         return check(0, label, "%s", m.pts ? "the patch count differs from the dump's" : err);
     }
     for (size_t p = 0; p < m.npatches; p++) {
-        cone_patch b;
+        cone_patch b = {.domain = CONE_QUAD};
         cone_bound cb;
         int mine = d->cls[p] == 1, theirs;
         for (int k = 0; k < 16; k++)

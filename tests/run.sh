@@ -64,8 +64,9 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/test_examples.sh env PTPGEN=build/gcc/ptpgen bash tests/test_examples.sh
 fi
 
-# bench/cullrate (make cullrate) on a small model, and its errors on bad input.
-if make -s CC=gcc build/gcc/cullrate/cullrate >build/make-cullrate.log 2>&1; then
+# bench/cullrate (make cullrate) on small models (bicubic and PN triangles), its errors on bad
+# input, and pn_check (PN triangles, the tessellator, triangular cones and the exact arbiter).
+if make -s CC=gcc build/gcc/cullrate/cullrate build/gcc/cullrate/pn_check >build/make-cullrate.log 2>&1; then
     run tests/test_cullrate.sh env CULLRATE=build/gcc/cullrate/cullrate bash tests/test_cullrate.sh
 else
     echo "not ok - build of build/gcc/cullrate/cullrate failed: see build/make-cullrate.log" | tee -a "$log"

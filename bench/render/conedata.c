@@ -7,7 +7,7 @@
 int conedata_fill(float *out, const bez_model *m, render_method method, int inward)
 {
     for (size_t p = 0; p < m->npatches; p++) {
-        cone_patch b;
+        cone_patch b = {.domain = CONE_QUAD};
         cone_bound c;
         float *o = out + p * 8;
         for (int k = 0; k < 16; k++)
