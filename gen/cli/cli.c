@@ -39,7 +39,7 @@ void cli_usage(sbuf *o)
         "built on them.\n"
         "\n"
         "  --domain D       quad (default): tensor-product patches; triangle: triangular\n"
-        "                   patches (every target; not --refine)\n");
+        "                   patches (every target and option)\n");
     sbuf_printf(o, "  --degree N|NxM   patch bidegree, 1 <= N, M <= %d (N alone means NxN);\n"
                    "                   triangles: the degree N, 1 <= N <= %d\n",
                 PTP_MAX_DEGREE, PTP_MAX_TRI_DEGREE);
@@ -342,15 +342,6 @@ static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
     return PTP_OK;
 }
 
-/* Checks the options against o's patch kind: --refine subdivides quads only. */
-static int check_kind(const cli_options *o, ptp_error *err)
-{
-    if (o->kind != TP_QUAD && o->refine)
-        return ptp_fail(err, PTP_EUSAGE, "--refine does not apply to --domain %s (it subdivides "
-                                         "quads)", tp_kind_name(o->kind));
-    return PTP_OK;
-}
-
 /* Checks that every option in seen applies to o's target (its registry bit), else a usage error
  * naming the targets it applies to; and that the options go together. */
 static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
@@ -370,7 +361,7 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
     if (o->refine && o->certified)
         return ptp_fail(err, PTP_EUSAGE, "--refine and --certified do not go together: the "
                                          "subdivision is not certified");
-    return check_kind(o, err);
+    return PTP_OK;
 }
 
 /* Writes o->command, the normalized command line: every option that was given, in one order. */
