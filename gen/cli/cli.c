@@ -54,6 +54,7 @@ void cli_usage(sbuf *o)
         "                   bound on its float rounding error (README: Certified classification)\n"
         "  --refine K       C only: split the patch's scalar Bezier function e.T by de Casteljau,\n"
         "                   up to K levels (1 to %d), while its control values have mixed signs\n"
+        "                   (quads into quarters, triangles at their edge midpoints)\n"
         "  --prefix NAME    prefix of generated names (default ptp_NxM_ or ptp_triN_, then world_,\n"
         "                   degenerate_, certified_, refineK_ for the options given)\n"
         "  --threads-per-patch P\n"
