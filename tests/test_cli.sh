@@ -559,8 +559,28 @@ expect_fail "--domain triangle without --degree" 2 "missing --degree N \(" --dom
     notok "--domain triangle --refine" "$(grep -m3 'split_class\|cn =' "$tmp/r3.h" | tr '\n' ' ')"
 expect_fail "--domain triangle --refine outside the C target is refused" 2 "--refine applies to target c \(not cuda\)$" --domain triangle --degree 2 --target cuda --refine 2
 expect_fail "--domain triangle --refine with --certified is refused" 2 "do not go together" --domain triangle --degree 2 --target c --refine 2 --certified
-expect_fail "verify --domain triangle is refused" 2 "verify does not support --domain triangle" verify "$tmp/t3.json" --domain triangle
-expect_fail "verify of a triangle json is refused" 2 "t3.json:5: \"domain\": \"triangle\": verify checks quad tables only" verify "$tmp/t3.json"
+# verify --domain triangle: the vendored triangles right (domain and degree from the document,
+# or given), wrong variants named, the domain checked against the document's.
+bad=""
+for f in out/tri*/ptp_tri*_table.h out/tri*/ptp_tri*.json; do
+    d=$(basename "$(dirname "$f")")
+    "$P" verify "$f" >"$tmp/out" 2>&1 && "$P" verify "$f" --domain triangle --degree ${d#tri} >>"$tmp/out" 2>&1 &&
+        grep -q "RIGHT: exact: the [0-9]* terms of degree ${d#tri} agree" "$tmp/out" || bad="$bad $f"
+done
+[ -z "$bad" ] && ok "verify accepts every vendored triangle table and json, with and without --domain triangle --degree d (exit 0)" ||
+    notok "verify accepts the vendored triangles" "rejected:$bad"
+sed '0,/    3.0f,/s//    3.5f,/' out/tri3/ptp_tri3_table.h >"$tmp/wrongt.h"
+"$P" verify "$tmp/wrongt.h" --domain triangle >"$tmp/out" 2>&1
+rc=$?
+[ $rc -eq 1 ] && grep -q "wrongt.h:28: wrong weight: plane 1, cross4(b0, b1, b4): got 3.5, expected 3 (the weight is on line 136)" "$tmp/out" && grep -q "against the 105 terms of degree 3" "$tmp/out" &&
+    ok "verify --domain triangle names a wrong weight with its line, exit 1" || notok "verify of a wrong triangle weight" "exit $rc: $(head -2 "$tmp/out")"
+"$P" verify out/tri2/ptp_tri2_table.h --convention v-first >"$tmp/out" 2>&1
+rc=$?
+[ $rc -eq 1 ] && grep -q "WRONG: all weights negated: .*for a triangle that is also the exact table in the u-first index convention" "$tmp/out" &&
+    ok "verify of a u-first triangle table as v-first: negated, the u-first convention named, exit 1" || notok "verify triangle v-first" "exit $rc: $(tail -1 "$tmp/out")"
+expect_fail "verify --domain quad of a triangle json is refused" 2 "t3.json:5: the document names --domain triangle, not quad" verify "$tmp/t3.json" --domain quad
+expect_fail "verify --domain triangle of a quad table is refused" 2 "the array name names --domain quad, not triangle" verify out/2x2/ptp_2x2_table.h --domain triangle
+expect_fail "verify --domain triangle --degree 2x3 is a usage error" 2 "--degree for triangles takes one degree" verify "$tmp/t3.json" --domain triangle --degree 2x3
 for c in "1 clip" "2 world" "3 clip" "3 world"; do
     set -- $c
     "$P" vectors --domain triangle --degree $1 --count 200 --seed 5 --space $2 >"$tmp/v.json" &&

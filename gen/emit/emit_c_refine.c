@@ -1,5 +1,5 @@
-/* emit_c_refine.c: the C header's --refine K: the scalar Bezier function e.T split by de Casteljau
- * into four pieces while its signs are mixed; what differs per patch domain is one row of `kinds`. */
+/* emit_c_refine.c: the C header's --refine K: e.T split by de Casteljau into four pieces while
+ * its signs are mixed; what differs per patch domain is one row of `kinds`. */
 #include "emit/emit_c_refine.h"
 
 #include <stdio.h>
