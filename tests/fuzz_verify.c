@@ -20,7 +20,8 @@ static void run(const uint8_t *data, size_t size, int n, int m, int convention)
     int verdict = -1, st;
     sbuf_init(&out);
     err.msg[0] = '\0';
-    st = verify_table(&out, &verdict, (const char *)data, size, "fuzz", n, m, convention, &err);
+    st = verify_table(&out, &verdict, (const char *)data, size, "fuzz", VERIFY_KIND_ANY, n, m,
+                      convention, &err);
     if (st == PTP_OK && (verdict < VERIFY_RIGHT || verdict > VERIFY_WRONG || !out.s ||
                          out.s[out.len - 1] != '\n' || strncmp(out.s, "fuzz", 4)))
         abort();
@@ -37,10 +38,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     verify_doc d;
     ptp_error err;
-    int n = 0, m = 0;
+    tp_domain dom;
     if (!verify_parse(&d, (const char *)data, size, "fuzz", &err)) {
-        int small = verify_doc_degree(&n, &m, &d, 0, 0, "fuzz", &err) ||
-                    (n <= FUZZ_MAX_DEGREE && m <= FUZZ_MAX_DEGREE);
+        int small = verify_doc_domain(&dom, &d, VERIFY_KIND_ANY, 0, 0, "fuzz", &err) ||
+                    (dom.n <= FUZZ_MAX_DEGREE && dom.m <= FUZZ_MAX_DEGREE);
         verify_doc_clear(&d);
         if (small)
             run(data, size, 0, 0, VERIFY_U_FIRST);

@@ -1,5 +1,5 @@
-/* host_refine.c: runs a C header emitted with --refine K and checks the refined classes: equal to
- * the reference where the control planes decide, and never back or front against samples. */
+/* host_refine.c: runs a C header emitted with --refine K (quad or triangle) and checks the refined
+ * classes: equal to the reference where the control planes decide, never back or front against samples. */
 #include "host_c.h"
 
 #include <stdio.h>
@@ -12,42 +12,83 @@ typedef struct {
     char first[256];
 } tally;
 
-/* Bernstein basis values B^d_i(t), i = 0..d. */
-static void bernstein(double *b, int d, double t)
+/* The Bernstein polynomial binomial(n, i) t^i (1 - t)^(n - i); with c = j and n - i the
+ * trinomial n!/(i! j! (n-i-j)!) t^i s^j (1 - t - s)^(n-i-j) when s is given (c >= 0). */
+static double basis1(int n, int i, int j, double t, double s)
 {
-    int i, k;
-    b[0] = 1;
-    for (k = 1; k <= d; k++) {
-        double carry = 0;
-        for (i = 0; i < k; i++) {
-            double x = b[i];
-            b[i] = carry + (1 - t) * x;
-            carry = t * x;
-        }
-        b[k] = carry;
-    }
+    double b = 1, w = 1 - t - (j >= 0 ? s : 0);
+    int x, k = n - i - (j >= 0 ? j : 0);
+    for (x = 1; x <= i; x++) /* binomial(n, i) * binomial(n - i, j), exact in double */
+        b = b * (n - i + x) / x;
+    for (x = 1; x <= j; x++)
+        b = b * (k + x) / x;
+    for (x = 0; x < i; x++)
+        b *= t;
+    for (x = 0; x < j; x++)
+        b *= s;
+    for (x = 0; x < k; x++)
+        b *= w;
+    return b;
 }
 
-/* The largest and smallest of the scalar patch sum d_IJ B_I(u) B_J(v) on an n x n grid, and
- * the largest bound (a sample's error allowance: the float evaluation of the values). */
-static void sample(double *lo, double *hi, const double *d, int pu, int pv, int n)
+/* The basis function of plane P of dom at (u, v): B_I(u) B_J(v) (quad), or the triangular
+ * D!/(I! J! K!) u^I v^J w^K, w = 1 - u - v, D = I + J + K (triangle). */
+static double basis(const tp_domain *dom, int P, double u, double v)
 {
-    double bu[64], bv[64];
-    int a, b, I, J;
+    int I, J;
+    tp_domain_plane_ij(&I, &J, dom, P);
+    if (dom->kind == TP_TRI)
+        return basis1(dom->pu, I, J, u, v);
+    return basis1(dom->pu, I, -1, u, 0) * basis1(dom->pv, J, -1, v, 0);
+}
+
+/* The largest and smallest of the scalar function with control values d (the plane values, in
+ * dom's plane numbering) at the points (a, b) / (n - 1) of dom's domain (a + b <= n - 1 for
+ * triangles). */
+static void sample(double *lo, double *hi, const double *d, const tp_domain *dom, int n)
+{
+    int a, b, P;
     *lo = 1e300;
     *hi = -1e300;
-    for (a = 0; a < n; a++) {
-        bernstein(bu, pu, (double)a / (n - 1));
-        for (b = 0; b < n; b++) {
+    for (a = 0; a < n; a++)
+        for (b = 0; b < n && (dom->kind != TP_TRI || a + b < n); b++) {
             double f = 0;
-            bernstein(bv, pv, (double)b / (n - 1));
-            for (I = 0; I <= pu; I++)
-                for (J = 0; J <= pv; J++)
-                    f += d[I * (pv + 1) + J] * bu[I] * bv[J];
+            for (P = 0; P < dom->nplanes; P++)
+                f += d[P] * basis(dom, P, (double)a / (n - 1), (double)b / (n - 1));
             *lo = f < *lo ? f : *lo;
             *hi = f > *hi ? f : *hi;
         }
-    }
+}
+
+/* The crafted functions: for every plane P, its basis function less r times its peak (at the
+ * point its indices name), r = 0.8 and 0.9: positive only around that point, so that a
+ * subdivision that misses a region calls some of them back. Counts into t. */
+static void crafted(tally *t, const kref_ref *ref)
+{
+    const tp_domain *dom = &ref->t.dom;
+    double *d = (double *)malloc((size_t)ref->L * sizeof *d), lo, hi;
+    float *f = (float *)malloc((size_t)ref->L * sizeof *f);
+    double D = dom->pu > 0 ? dom->pu : 1; /* triangles of degree 1: one constant plane */
+    int P, Q, I, J, r;
+    for (P = 0; P < ref->L; P++)
+        for (r = 8; r <= 9; r++) {
+            unsigned c;
+            tp_domain_plane_ij(&I, &J, dom, P);
+            for (Q = 0; Q < ref->L; Q++)
+                f[Q] = (float)(-r * 0.1 * basis(dom, P, I / D, J / (dom->kind == TP_TRI ? D : dom->pv)) +
+                               (Q == P));
+            for (Q = 0; Q < ref->L; Q++)
+                d[Q] = f[Q];
+            c = FN(split_class)(f, MACRO(REFINE));
+            sample(&lo, &hi, d, dom, 33);
+            if ((c == KREF_BACK && hi > 0) || (c == KREF_FRONT && lo < 0)) {
+                if (!t->unsafe++)
+                    snprintf(t->first, sizeof t->first, "crafted plane %d, r = 0.%d: class %u but "
+                             "samples in [%g, %g]", P, r, c, lo, hi);
+            }
+        }
+    free(d);
+    free(f);
 }
 
 /* Classifies one set and counts into ctx (a tally); returns 0. */
@@ -80,7 +121,7 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
             continue;
         t->refined++;
         /* Back must mean no sample above the rounding slack, front none below it. */
-        sample(&lo, &hi, d, ref->t.dom.pu, ref->t.dom.pv, 33);
+        sample(&lo, &hi, d, &ref->t.dom, 33);
         if ((c == KREF_BACK && hi > slack) || (c == KREF_FRONT && lo < -slack)) {
             if (!t->unsafe++)
                 snprintf(t->first, sizeof t->first, "%s patch %zu: class %u but samples in [%g, %g]",
@@ -100,16 +141,26 @@ int main(int argc, char **argv)
     char name[300];
     int ok = 1, st;
     memset(&t, 0, sizeof t);
-    if ((st = kref_run_sets(&o, &ref, argc, argv, "host_refine", run_set, &t)))
+    if ((st = kref_start(&o, &ref, NULL, argc, argv, "host_refine", 0)))
         return st;
+    crafted(&t, &ref);
+    if (kref_each_set(&ref, &o, run_set, &t, NULL)) {
+        kref_clear(&ref);
+        return 1;
+    }
     printf("# %s: %zu patches, %zu refined from silhouette to back or front\n", o.label, t.patches,
            t.refined);
     snprintf(name, sizeof name, "%s: the classes the control planes decide are kept", o.label);
     ok &= check(t.changed == 0, name, "%zu patches changed class", t.changed);
-    snprintf(name, sizeof name, "%s: no refined class contradicts 33x33 samples", o.label);
+    snprintf(name, sizeof name, "%s: no refined class contradicts 33 samples a side", o.label);
     ok &= check(t.unsafe == 0, name, "%zu do; first: %s", t.unsafe, t.first);
-    snprintf(name, sizeof name, "%s: refinement decides some silhouette patches", o.label);
-    ok &= check(t.refined > 0, name, "none of %zu patches", t.patches);
+    if (ref.L > 1) {
+        snprintf(name, sizeof name, "%s: refinement decides some silhouette patches", o.label);
+        ok &= check(t.refined > 0, name, "none of %zu patches", t.patches);
+    } else { /* one plane: its value is the constant function, nothing is left to split */
+        snprintf(name, sizeof name, "%s: one constant value: refinement decides nothing more", o.label);
+        ok &= check(t.refined == 0, name, "%zu of %zu patches refined", t.refined, t.patches);
+    }
     snprintf(name, sizeof name, "%s: classify_batch equals classify", o.label);
     ok &= check(t.batch_bad == 0, name, "they differ on %zu patches", t.batch_bad);
     kref_clear(&ref);

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # test_refine.sh: C headers emitted with --refine K, run by tests/host_refine.c on random patches
-# and the models: decided classes kept, refined ones never against 33x33 samples, and it can fail.
+# and the models: decided classes kept, refined ones never against samples of the function (33 a
+# side), quads and triangles (degrees 1 to 4), and it can fail.
 # Needs PTPGEN and build/<cc>/libptptest.a for each C compiler.
 set -u
 P=${PTPGEN:?set PTPGEN}
@@ -9,35 +10,57 @@ models=${MODELS:-../shared/models}
 make_tmp
 
 # host D SPACE RULE K CC [SED]: builds host_refine around a --refine K header (edited by sed
-# script SED when given) into $tmp/hr; prints nothing, returns the build status.
+# script SED when given) into $tmp/hr; D is a bidegree NxM or triN, a triangle of degree N.
+# Sets dom to the domain's host arguments; prints nothing, returns the build status.
 host() {
-    local d=$1 n=${1%x*} m=${1#*x}
-    "$P" --degree $d --target c --space $2 --rule $3 --refine $4 --prefix ptp_${d}_ -o "$tmp/r.h" || return 1
+    local d=$1 opt up
+    if [ "${d#tri}" != "$d" ]; then
+        opt="--domain triangle --degree ${d#tri}" up=PTP_TRI${d#tri}_ dom="--domain triangle --degree ${d#tri} ${d#tri}"
+    else
+        opt="--degree $d" up=PTP_${d%x*}X${d#*x}_ dom="--degree ${d%x*} ${d#*x}"
+    fi
+    "$P" $opt --target c --space $2 --rule $3 --refine $4 --prefix ${up,,} -o "$tmp/r.h" || return 1
     [ -n "${6:-}" ] && sed -i "$6" "$tmp/r.h"
     $5 -std=c11 -O2 -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$tmp/r.h" \
-        -DPTP_${n}X${m}_IMPLEMENTATION -DPFX=ptp_${d}_ -DUPFX=PTP_${n}X${m}_ tests/host_refine.c \
+        -D${up}IMPLEMENTATION -DPFX=${up,,} -DUPFX=$up tests/host_refine.c \
         "build/$5/libptptest.a" -lm -o "$tmp/hr" 2>"$tmp/err"
 }
 
 for cc in gcc clang; do
     command -v $cc >/dev/null || { notok "refine with $cc" "$cc is missing"; continue; }
-    for cfg in "3x3 clip strict 3" "3x3 world degenerate 2" "2x3 clip degenerate 4"; do
+    for cfg in "3x3 clip strict 3" "3x3 world degenerate 2" "2x3 clip degenerate 4" \
+        "tri1 clip strict 2" "tri2 world degenerate 3" "tri3 clip strict 3" "tri4 world strict 2"; do
         set -- $cfg
         data="--random 2 3000 11"
         [ $1 = 3x3 ] && data="$data --model $models/teacup.bez 20 3 --model $models/teaspoon.bez 20 4"
+        [ $1 = tri4 ] && data="--random 2 1000 11"
         if host $1 $2 $3 $4 $cc; then
-            "$tmp/hr" --degree ${1%x*} ${1#*x} --space $2 --rule $3 $data --name "refine $4 $1 $2 $3 ($cc)"
+            "$tmp/hr" $dom --space $2 --rule $3 $data --name "refine $4 $1 $2 $3 ($cc)"
         else
             notok "refine $cfg compiles with $cc" "$(head -3 "$tmp/err")"
         fi
     done
 done
 
+# mutant NAME D SED: a header edited by SED must fail the sample check on random patches.
+mutant() {
+    if host $2 clip strict 2 gcc "$3" &&
+        ! "$tmp/hr" $dom --space clip --rule strict --random 2 3000 5 --name mutant >"$tmp/out" 2>&1 &&
+        grep -q '^not ok - mutant: no refined class contradicts' "$tmp/out"; then
+        ok "$1"
+    else
+        notok "$1" "it passed"
+    fi
+}
 # A broken subdivision (a piece out of levels called back) must be caught by the samples.
-if host 3x3 clip strict 2 gcc 's|return PTP_3X3_SILHOUETTE; /\* the corners differ|return levels == 0 ? PTP_3X3_BACK : PTP_3X3_SILHOUETTE; /* the corners differ|' &&
-    ! "$tmp/hr" --degree 3 3 --space clip --rule strict --random 2 3000 5 --name mutant >"$tmp/out" 2>&1 &&
-    grep -q '^not ok - mutant: no refined class contradicts' "$tmp/out"; then
-    ok "a --refine header that calls an undecided piece back fails the sample check"
-else
-    notok "a --refine header that calls an undecided piece back fails the sample check" "it passed"
-fi
+for d in 3x3 tri3; do
+    up=PTP_${d^^}_
+    mutant "a --refine header ($d) that calls an undecided piece back fails the sample check" $d \
+        "s|return ${up/X/X}SILHOUETTE; /\* the corners differ|return levels == 0 ? ${up}BACK : ${up}SILHOUETTE; /* the corners differ|"
+done
+# A triangle split that leaves the middle piece out (the corner at u = 1 taken twice) must be
+# caught by the crafted functions, and so must a de Casteljau step that takes a wrong neighbour.
+mutant "a --refine header (tri3) whose four pieces miss the middle triangle fails the sample check" \
+    tri3 's|{{1, 2}, {0, 2}, {0, 1}}}|{{0, 0}, {0, 1}, {0, 2}}}|'
+mutant "a --refine header (tri3) whose de Casteljau step takes a wrong neighbour fails the sample check" \
+    tri3 's|b = w\[x + (e\[1\] ? r + e\[1\] : 0)\]|b = w[x + (e[1] ? r + 1 : 0)]|'

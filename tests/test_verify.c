@@ -40,15 +40,16 @@ typedef struct {
     ptp_error err;
 } result;
 
-static result run_verify_conv(const char *text, size_t len, const char *name, int n, int m,
-                              int convention)
+/* verify_table on text as a table of the kind (VERIFY_KIND_ANY: the document's). */
+static result run_verify_kind(const char *text, size_t len, const char *name, int kind, int n,
+                              int m, int convention)
 {
     result r;
     sbuf o;
     sbuf_init(&o);
     r.err.msg[0] = '\0';
     r.verdict = -1;
-    r.st = verify_table(&o, &r.verdict, text, len, name, n, m, convention, &r.err);
+    r.st = verify_table(&o, &r.verdict, text, len, name, kind, n, m, convention, &r.err);
     r.report = malloc(o.len + 1);
     if (r.report) {
         memcpy(r.report, o.s ? o.s : "", o.len);
@@ -56,6 +57,12 @@ static result run_verify_conv(const char *text, size_t len, const char *name, in
     }
     sbuf_clear(&o);
     return r;
+}
+
+static result run_verify_conv(const char *text, size_t len, const char *name, int n, int m,
+                              int convention)
+{
+    return run_verify_kind(text, len, name, VERIFY_KIND_ANY, n, m, convention);
 }
 
 static result run_verify(const char *text, size_t len, const char *name, int n, int m)
@@ -80,16 +87,17 @@ static const char *last_line(const char *s)
 /* Renders t with out_table (target table) or out_json into b. */
 static int render(sbuf *b, const tp_table *t, int table)
 {
-    char prefix[32], command[64];
+    char prefix[32], command[80], deg[16];
     sched s;
     out_info info = {0};
     ptp_error err;
     int P = sched_default_threads(t), st;
     if (sched_build(&s, t, P, sched_default_patches(P), &err))
         return 0;
-    snprintf(prefix, sizeof prefix, "ptp_%dx%d_", t->dom.n, t->dom.m);
-    snprintf(command, sizeof command, "ptpgen --degree %dx%d --target %s", t->dom.n, t->dom.m,
-             table ? "table" : "json");
+    tp_domain_prefix(prefix, sizeof prefix, &t->dom);
+    snprintf(command, sizeof command, "ptpgen%s --degree %s --target %s",
+             t->dom.kind == TP_TRI ? " --domain triangle" : "",
+             tp_domain_format(deg, sizeof deg, &t->dom), table ? "table" : "json");
     info.command = command;
     info.prefix = prefix;
     info.sched = &s;
@@ -148,12 +156,15 @@ static rows rows_of(const tp_table *t, int style, double mul)
 /* JSON with one term per line: term x is on line JSON_LINE0 + x. */
 #define JSON_LINE0 5
 
-static void write_json(sbuf *b, const rows *r, int n, int m)
+/* JSON naming the degrees (n, m) of the kind (none when n is 0), with the terms r. */
+static void write_json_kind(sbuf *b, const rows *r, tp_kind kind, int n, int m)
 {
     size_t x;
     sbuf_init(b);
     sbuf_puts(b, "{\n  \"format\": \"ptpgen-planes/1\",\n");
-    if (n)
+    if (n && kind == TP_TRI)
+        sbuf_printf(b, "  \"domain\": \"triangle\", \"degree\": %d,\n", n);
+    else if (n)
         sbuf_printf(b, "  \"degree\": [%d, %d],\n", n, m);
     else
         sbuf_puts(b, "  \"comment\": \"no degree\",\n");
@@ -162,6 +173,11 @@ static void write_json(sbuf *b, const rows *r, int n, int m)
         sbuf_printf(b, "    [%d, %d, %d, %d, \"%s\"]%s\n", r->r[x].plane, r->r[x].p[0],
                     r->r[x].p[1], r->r[x].p[2], r->r[x].w, x + 1 < r->n ? "," : "");
     sbuf_puts(b, "  ]\n}\n");
+}
+
+static void write_json(sbuf *b, const rows *r, int n, int m)
+{
+    write_json_kind(b, r, TP_QUAD, n, m);
 }
 
 /* verify (--degree n x m; 0 0: inferred; in the convention) on r written by write_json naming
@@ -216,18 +232,24 @@ static void shuffle(rows *r)
     }
 }
 
-/* The exact table of (n, m) relabelled (i, j) -> (j, i), negated when negate is set. */
+/* The exact table t relabelled (i, j) -> (j, i) (points and planes, numbered by the domain),
+ * negated when negate is set. */
 static rows relabelled(const tp_table *t, int negate)
 {
     rows r = rows_of(t, W_FRAC, 1);
+    tp_domain tr;
     size_t x;
+    tp_domain_transpose(&tr, &t->dom);
     for (x = 0; r.r && x < r.n; x++) {
         row *e = &r.r[x];
         int q, a, b, sign = negate ? -1 : 1;
         rat w = t->terms[x].w;
-        e->plane = (e->plane % (t->dom.pv + 1)) * (t->dom.pu + 1) + e->plane / (t->dom.pv + 1);
-        for (q = 0; q < 3; q++)
-            e->p[q] = (e->p[q] % (t->dom.m + 1)) * (t->dom.n + 1) + e->p[q] / (t->dom.m + 1);
+        tp_domain_plane_ij(&a, &b, &t->dom, e->plane);
+        e->plane = tp_domain_plane(&tr, b, a);
+        for (q = 0; q < 3; q++) {
+            tp_domain_point_ij(&a, &b, &t->dom, e->p[q]);
+            e->p[q] = tp_domain_point(&tr, b, a);
+        }
         for (a = 0; a < 3; a++)
             for (b = a + 1; b < 3; b++)
                 if (e->p[b] < e->p[a]) {
@@ -1077,6 +1099,259 @@ static void test_convention(void)
     tp_clear(&s);
 }
 
+/* The exact table of the triangle of degree d into *t; 0 (after a "not ok") when it fails. */
+static int derive_tri(tp_table *t, int d)
+{
+    tp_domain dom;
+    ptp_error err;
+    return check(!tp_domain_init(&dom, TP_TRI, d, d, &err) && !tp_derive_domain(t, &dom, &err),
+                 "derive a triangle", "degree %d: %s", d, err.msg);
+}
+
+/* The wrong variants of a triangular table of degree d (its terms r, exact), each with its
+ * diagnosis; those that need two terms from degree 2 on. */
+static void tri_mistakes(const tp_table *t, rows *r, int d)
+{
+    size_t x = r->n / 2;
+    row keep = r->r[x];
+    char want[256], w[RAT_STRLEN], name[160];
+    sbuf b;
+    int n = t->dom.nplanes;
+    strcpy(r->r[x].w, "-1/3");
+    write_json_kind(&b, r, TP_TRI, d, d);
+    snprintf(want, sizeof want, "got -1/3, expected %s", rat_get_str(w, &t->terms[x].w));
+    snprintf(name, sizeof name, "triangle %d: one weight changed: wrong weight, its line and "
+             "got vs expected (one term: the whole table negated and scaled)", d);
+    if (r->n > 1) {
+        expect_line(name, verify_str(&b, "t.json", 0, 0), "t.json", JSON_LINE0 + (int)x,
+                    "wrong weight");
+        expect_verdict(name, verify_str(&b, "t.json", 0, 0), VERIFY_WRONG, want);
+    } else {
+        expect_verdict(name, verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
+                       "WRONG: all weights negated, and every weight scaled by 0.333333333 = 1/3");
+    }
+    sbuf_clear(&b);
+    r->r[x] = keep;
+    r->r[x].p[0] = keep.p[1];
+    r->r[x].p[1] = keep.p[0];
+    write_json_kind(&b, r, TP_TRI, d, d);
+    snprintf(name, sizeof name, "triangle %d: two indices swapped in a row: the sign flips", d);
+    if (r->n > 1)
+        expect_line(name, verify_str(&b, "t.json", 0, 0), "t.json", JSON_LINE0 + (int)x,
+                    "points not in increasing order flip the sign");
+    else
+        expect_verdict(name, verify_str(&b, "t.json", 0, 0), VERIFY_WRONG,
+                       "WRONG: all weights negated");
+    sbuf_clear(&b);
+    r->r[x] = keep;
+    if (n > 1) {
+        r->r[x].plane = (keep.plane + 1) % n;
+        write_json_kind(&b, r, TP_TRI, d, d);
+        snprintf(want, sizeof want, "is in plane %d but belongs to plane %d", (keep.plane + 1) % n,
+                 keep.plane);
+        snprintf(name, sizeof name, "triangle %d: a term moved to a wrong plane", d);
+        expect_verdict(name, verify_str(&b, "t.json", 0, 0), VERIFY_WRONG, want);
+        sbuf_clear(&b);
+        r->r[x] = keep;
+    }
+    r->r[r->n] = r->r[x];
+    r->n++;
+    write_json_kind(&b, r, TP_TRI, d, d);
+    snprintf(want, sizeof want, "duplicated term: plane %d, cross4(b%d, b%d, b%d) repeats line %d",
+             keep.plane, keep.p[0], keep.p[1], keep.p[2], JSON_LINE0 + (int)x);
+    snprintf(name, sizeof name, "triangle %d: a term duplicated", d);
+    expect_line(name, verify_str(&b, "t.json", 0, 0), "t.json", JSON_LINE0 + (int)r->n - 1, want);
+    sbuf_clear(&b);
+    r->n--;
+    if (r->n < 2)
+        return;
+    memmove(&r->r[x], &r->r[x + 1], (r->n - x - 1) * sizeof *r->r);
+    r->n--;
+    write_json_kind(&b, r, TP_TRI, d, d);
+    snprintf(want, sizeof want, "missing term: plane %d: %s * cross4(b%d, b%d, b%d)", keep.plane,
+             keep.w, keep.p[0], keep.p[1], keep.p[2]);
+    snprintf(name, sizeof name, "triangle %d: a term dropped: missing, with its exact weight", d);
+    expect_line(name, verify_str(&b, "t.json", 0, 0), "t.json", 0, want);
+    sbuf_clear(&b);
+    memmove(&r->r[x + 1], &r->r[x], (r->n - x) * sizeof *r->r);
+    r->r[x] = keep;
+    r->n++;
+}
+
+/* Writes r as a triangle's JSON (t.json) or in the paper's layout (p.h) and expects verify
+ * --domain triangle --degree d in convention to give verdict with want in its report. */
+static void expect_tri_rows(const char *name, const rows *r, int d, int json, int convention,
+                            int verdict, const char *want)
+{
+    sbuf b;
+    if (json)
+        write_json_kind(&b, r, TP_TRI, d, d);
+    else
+        write_paper(&b, r);
+    expect_verdict(name, run_verify_kind(b.s, b.len, json ? "t.json" : "p.h", TP_TRI, d, d,
+                                         convention), verdict, want);
+    sbuf_clear(&b);
+}
+
+/* Whole-table readings of a triangle of degree d: scaled, negated, u and v swapped, v-first. */
+static void tri_readings(const tp_table *t, int d)
+{
+    rows r[4];
+    char name[4][160], want[160];
+    int k;
+    r[0] = rows_of(t, W_FLOAT, 2.5);
+    r[1] = rows_of(t, W_FLOAT, -1);
+    r[2] = relabelled(t, 1);
+    r[3] = relabelled(t, 0);
+    snprintf(name[0], sizeof name[0], "triangle %d: the paper's layout, float weights times 2.5: "
+             "right up to the scale", d);
+    snprintf(name[1], sizeof name[1], "triangle %d: all weights negated: the opposite "
+             "orientation", d);
+    snprintf(name[2], sizeof name[2], "triangle %d with u and v swapped (and the sign of the "
+             "swap): the same table", d);
+    snprintf(name[3], sizeof name[3], "triangle %d in the v-first convention: exact with "
+             "--convention v-first, wrong without", d);
+    snprintf(want, sizeof want, "RIGHT: exact: the %zu terms of degree %d (v-first) agree",
+             t->nterms, d);
+    expect_tri_rows(name[0], &r[0], d, 0, VERIFY_U_FIRST, VERIFY_RIGHT, "positive scale s = 2.5 = 5/2");
+    expect_tri_rows(name[1], &r[1], d, 0, VERIFY_U_FIRST, VERIFY_WRONG, "WRONG: all weights "
+                    "negated: the table of the opposite orientation, which takes front-facing "
+                    "patches for back-facing ones; for a triangle that is also the exact table in "
+                    "the v-first index convention");
+    expect_tri_rows(name[2], &r[2], d, 1, VERIFY_U_FIRST, VERIFY_RIGHT, "RIGHT: exact");
+    expect_tri_rows(name[3], &r[3], d, 1, VERIFY_V_FIRST, VERIFY_RIGHT, want);
+    expect_tri_rows(name[3], &r[3], d, 1, VERIFY_U_FIRST, VERIFY_WRONG, "--convention v-first");
+    free(r[3].r);
+    r[3] = rows_of(t, W_FRAC, 1);
+    snprintf(name[3], sizeof name[3], "triangle %d, u-first, checked v-first: negated, the "
+             "u-first convention named", d);
+    expect_tri_rows(name[3], &r[3], d, 1, VERIFY_V_FIRST, VERIFY_WRONG, "for a triangle that is "
+                    "also the exact table in the u-first index convention");
+    for (k = 0; k < 4; k++)
+        free(r[k].r);
+}
+
+/* The arrays of ptpgen's table of the triangle of degree 3, each broken once. */
+static void tri_arrays(const tp_table *t)
+{
+    sbuf b, c;
+    int line;
+    if (!check(render(&b, t, 1), "render the degree 3 triangle table", "failed"))
+        return;
+    line = replace_line(&c, &b, "_tri3_table_iwgt[", 1, "    5,");
+    expect_line("triangle 3: a wrong iwgt entry, by its line", verify_str(&c, "t.h", 0, 0), "t.h",
+                line, "wrong iwgt[0]: got 5");
+    sbuf_clear(&c);
+    line = replace_line(&c, &b, "_tri3_table_sched_wgt[", 1, "    7.0f,");
+    expect_line("triangle 3: a wrong sched_wgt entry, by its line", verify_str(&c, "t.h", 0, 0),
+                "t.h", line, "sched slot 0 {");
+    sbuf_clear(&c);
+    line = replace_line(&c, &b, "_tri3_table_sched_idx[", 1, "    {0, 0, 1, 3},");
+    expect_line("triangle 3: a wrong sched_idx row, by its line", verify_str(&c, "t.h", 0, 0),
+                "t.h", line, "sched slot 0 {0, 0, 1, 3}");
+    sbuf_clear(&c);
+    line = replace_line(&c, &b, "_tri3_table_owner[", 1, "    1,");
+    expect_verdict("triangle 3: a wrong owner: the slots of plane 0 run on another thread",
+                   verify_str(&c, "t.h", 0, 0), VERIFY_WRONG, "which owner (line");
+    sbuf_clear(&c);
+    rename_arrays(&c, &b, "ptp_tri3_table_", "t_");
+    expect_verdict("triangle 3: arrays named without the degree: a triangle inferred from the sizes",
+                   verify_str(&c, "t.h", 0, 0), VERIFY_RIGHT, "RIGHT: exact: the 105 terms of "
+                   "degree 3 agree");
+    sbuf_clear(&c);
+    expect_usage("triangle 3: a triangular table with --domain quad is refused",
+                 run_verify_kind(b.s, b.len, "t.h", TP_QUAD, 0, 0, VERIFY_U_FIRST), "t.h", 0,
+                 "the array name names --domain triangle, not quad");
+    sbuf_clear(&b);
+}
+
+/* A degree 2 table checked as degree 3: the notes on the name and the sizes; without its name,
+ * the sizes it shares with bidegree 1x2. */
+static void tri_wrong_degree(const tp_table *t)
+{
+    sbuf b, c;
+    if (!check(render(&b, t, 1), "render the degree 2 triangle table", "failed"))
+        return;
+    expect_verdict("triangle 2 checked as 3: the indices fit degree 2",
+                   run_verify_kind(b.s, b.len, "t.h", TP_TRI, 3, 3, VERIFY_U_FIRST), VERIFY_WRONG,
+                   "t.h: note: the indices fit degree 2, not 3");
+    expect_verdict("... and its name says degree 2",
+                   run_verify_kind(b.s, b.len, "t.h", VERIFY_KIND_ANY, 3, 3, VERIFY_U_FIRST),
+                   VERIFY_WRONG, "note: the array name names degree 2; checked as 3");
+    rename_arrays(&c, &b, "ptp_tri2_table_", "t_");
+    expect_usage("triangle 2 without a name: its sizes are also those of bidegree 1x2, so verify "
+                 "asks", verify_str(&c, "t.h", 0, 0), "t.h", 0, "the indices fit bidegree 1x2 and "
+                 "2x1, and the triangle of degree 2: use --degree NxM, or --domain triangle");
+    expect_verdict("... and with --domain triangle it is right",
+                   run_verify_kind(c.s, c.len, "t.h", TP_TRI, 0, 0, VERIFY_U_FIRST), VERIFY_RIGHT,
+                   "RIGHT: exact: the 17 terms of degree 2");
+    sbuf_clear(&c);
+    sbuf_clear(&b);
+}
+
+/* The form of a triangle's json: "domain" and one "degree" number; the mismatches refused. */
+static void tri_json_forms(void)
+{
+    static const char list[] = "{\"domain\": \"triangle\", \"degree\": [1, 1],\n"
+                               "\"terms\": [[0, 0, 1, 2, \"1\"]]}\n";
+    static const char one[] = "{\"degree\": 1,\n\"terms\": [[0, 0, 1, 2, \"1\"]]}\n";
+    static const char other[] = "{\n\"domain\": \"hexagon\", \"terms\": []}\n";
+    static const char right[] = "{\"domain\": \"triangle\", \"degree\": 1,\n"
+                                "\"terms\": [[0, 0, 1, 2, \"1\"]]}\n";
+    expect_usage("a triangle json with \"degree\": [n, m] is refused",
+                 run_verify(list, strlen(list), "t.json", 0, 0), "t.json", 1, "is one number d");
+    expect_usage("a json with one \"degree\" number but no triangle domain is refused",
+                 run_verify(one, strlen(one), "t.json", 0, 0), "t.json", 1,
+                 "one number, is a triangle's degree");
+    expect_usage("\"domain\": \"hexagon\" is refused", run_verify(other, strlen(other), "t.json",
+                 0, 0), "t.json", 2, "expected \"quad\" or \"triangle\"");
+    expect_verdict("the degree 1 triangle json by hand: exact", run_verify(right, strlen(right),
+                   "t.json", 0, 0), VERIFY_RIGHT, "RIGHT: exact: the 1 terms of degree 1");
+    expect_usage("... checked with --domain quad: refused, the domain named",
+                 run_verify_kind(right, strlen(right), "t.json", TP_QUAD, 0, 0, VERIFY_U_FIRST),
+                 "t.json", 1, "the document names --domain triangle, not quad");
+    expect_usage("... checked as a triangle of degree 1x2: refused",
+                 run_verify_kind(right, strlen(right), "t.json", TP_TRI, 1, 2, VERIFY_U_FIRST),
+                 "t.json", 0, "a triangle has one degree");
+}
+
+/* Triangles of degree 1 to 3: ptpgen's own tables right (degree given or inferred), every
+ * wrong variant the quads have diagnosed. */
+static void test_triangles(void)
+{
+    tp_table t[3];
+    int d, table;
+    for (d = 1; d <= 3; d++) {
+        char name[160];
+        rows r;
+        sbuf b;
+        if (!derive_tri(&t[d - 1], d))
+            return;
+        for (table = 0; table < 2; table++) {
+            if (!check(render(&b, &t[d - 1], table), "render", "triangle %d", d))
+                continue;
+            snprintf(name, sizeof name, "verify accepts ptpgen's own triangle %d %s (inferred)", d,
+                     table ? "table" : "json");
+            expect_verdict(name, verify_str(&b, "gen", 0, 0), VERIFY_RIGHT, "RIGHT: exact");
+            snprintf(name, sizeof name, "verify accepts ptpgen's own triangle %d %s as --domain "
+                     "triangle --degree %d", d, table ? "table" : "json", d);
+            expect_verdict(name, run_verify_kind(b.s, b.len, "gen", TP_TRI, d, d, VERIFY_U_FIRST),
+                           VERIFY_RIGHT, "RIGHT: exact");
+            sbuf_clear(&b);
+        }
+        r = rows_of(&t[d - 1], W_FRAC, 1);
+        r.r = realloc(r.r, (r.n + 8) * sizeof *r.r);
+        tri_mistakes(&t[d - 1], &r, d);
+        free(r.r);
+        tri_readings(&t[d - 1], d);
+    }
+    tri_arrays(&t[2]);
+    tri_wrong_degree(&t[1]);
+    tri_json_forms();
+    for (d = 0; d < 3; d++)
+        tp_clear(&t[d]);
+}
+
 int main(void)
 {
     test_generated();
@@ -1091,5 +1366,6 @@ int main(void)
     test_code();
     test_weights();
     test_convention();
+    test_triangles();
     return check_exit();
 }

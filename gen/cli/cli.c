@@ -28,7 +28,8 @@ void cli_usage(sbuf *o)
         "              [--rule strict|degenerate] [--planes] [--certified] [--refine K]\n"
         "              [--prefix NAME] [--threads-per-patch P] [--patches-per-block Q]\n"
         "              [-o FILE]\n"
-        "       ptpgen verify FILE [--degree NxM] [--convention u-first|v-first] [-o REPORT]\n"
+        "       ptpgen verify FILE [--degree N|NxM] [--domain quad|triangle]\n"
+        "              [--convention u-first|v-first] [-o REPORT]\n"
         "       ptpgen vectors --degree NxM [--domain quad|triangle] --count K --seed S\n"
         "              [--space clip|world] [--format json|c] [-o FILE]\n"
         "       ptpgen --help | help [verify|vectors] | --version | --list-targets\n"
@@ -39,7 +40,7 @@ void cli_usage(sbuf *o)
         "built on them.\n"
         "\n"
         "  --domain D       quad (default): tensor-product patches; triangle: triangular\n"
-        "                   patches (every target; not --refine)\n");
+        "                   patches (every target and option)\n");
     sbuf_printf(o, "  --degree N|NxM   patch bidegree, 1 <= N, M <= %d (N alone means NxN);\n"
                    "                   triangles: the degree N, 1 <= N <= %d\n",
                 PTP_MAX_DEGREE, PTP_MAX_TRI_DEGREE);
@@ -54,6 +55,7 @@ void cli_usage(sbuf *o)
         "                   bound on its float rounding error (README: Certified classification)\n"
         "  --refine K       C only: split the patch's scalar Bezier function e.T by de Casteljau,\n"
         "                   up to K levels (1 to %d), while its control values have mixed signs\n"
+        "                   (quads into quarters, triangles at their edge midpoints)\n"
         "  --prefix NAME    prefix of generated names (default ptp_NxM_ or ptp_triN_, then world_,\n"
         "                   degenerate_, certified_, refineK_ for the options given)\n"
         "  --threads-per-patch P\n"
@@ -63,7 +65,8 @@ void cli_usage(sbuf *o)
         "                   patches per thread block (default %d/P, at least 1)\n"
         "  --convention C   verify: the table's index convention: u-first (default, ptpgen's):\n"
         "                   point (i, j) is i*(M+1)+j, plane (I, J) is I*(3M-1)+J; v-first:\n"
-        "                   point j*(N+1)+i, plane J*(3N-1)+I\n"
+        "                   point j*(N+1)+i, plane J*(3N-1)+I (triangles: (i, j) numbered as\n"
+        "                   u-first numbers (j, i))\n"
         "  --format F       vectors: json (default) or c (a C include of the same vectors)\n"
         "  -o, --output F   write to F (atomically) instead of standard output\n"
         "  -h, --help       show this help\n"
@@ -238,8 +241,10 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     switch (k) {
     case OPT_DEGREE: o->degree = v; break;
     case OPT_DOMAIN:
-        if (!(st = parse_choice(&x, "domain", v, kinds, 2, err)))
+        if (!(st = parse_choice(&x, "domain", v, kinds, 2, err))) {
             o->kind = (tp_kind)x;
+            o->kind_given = 1;
+        }
         break;
     case OPT_TARGET: return parse_target(o, v, err);
     case OPT_SPACE: return parse_choice(&o->world, "space", v, spaces, 2, err);
@@ -325,9 +330,6 @@ static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
         if (seen >> k & 1 && !(opts[k].modes >> o->mode & 1))
             return ptp_fail(err, PTP_EUSAGE, "option %s does not apply to %s", opts[k].name,
                             modes[o->mode]);
-    if (o->mode == CLI_VERIFY && o->kind != TP_QUAD)
-        return ptp_fail(err, PTP_EUSAGE, "verify does not support --domain %s yet",
-                        tp_kind_name(o->kind));
     if (o->mode == CLI_VERIFY)
         return o->input ? PTP_OK
                         : ptp_fail(err, PTP_EUSAGE,
@@ -339,15 +341,6 @@ static int check_mode(const cli_options *o, unsigned seen, ptp_error *err)
         (!(seen >> OPT_COUNT & 1) || !(seen >> OPT_SEED & 1) || o->count < 1))
         return ptp_fail(err, PTP_EUSAGE, "vectors needs --count K (1 to %d) and --seed S",
                         CLI_MAX_COUNT);
-    return PTP_OK;
-}
-
-/* Checks the options against o's patch kind: --refine subdivides quads only. */
-static int check_kind(const cli_options *o, ptp_error *err)
-{
-    if (o->kind != TP_QUAD && o->refine)
-        return ptp_fail(err, PTP_EUSAGE, "--refine does not apply to --domain %s (it subdivides "
-                                         "quads)", tp_kind_name(o->kind));
     return PTP_OK;
 }
 
@@ -370,7 +363,7 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
     if (o->refine && o->certified)
         return ptp_fail(err, PTP_EUSAGE, "--refine and --certified do not go together: the "
                                          "subdivision is not certified");
-    return check_kind(o, err);
+    return PTP_OK;
 }
 
 /* Writes o->command, the normalized command line: every option that was given, in one order. */

@@ -23,6 +23,7 @@ typedef struct {
     long count;           /* vectors: --count */
     uint64_t seed;        /* vectors: --seed */
     tp_kind kind;         /* --domain (default quad) */
+    int kind_given;       /* --domain was given (verify: else the table's own) */
     const char *degree;   /* the --degree argument, read by the domain once every option is in */
     tp_domain dom;        /* the patch domain of --degree; dom.n is 0 until it is given */
     const tgt_target *target; /* an entry of tgt_targets (default: the first) */

@@ -106,7 +106,8 @@ static int run_verify(const cli_options *o, int *verdict, ptp_error *err)
     if (st)
         return st;
     sbuf_init(&b);
-    if (!(st = verify_table(&b, verdict, text, len, o->input, o->dom.n, o->dom.m,
+    if (!(st = verify_table(&b, verdict, text, len, o->input,
+                             o->kind_given ? (int)o->kind : VERIFY_KIND_ANY, o->dom.n, o->dom.m,
                              o->vfirst ? VERIFY_V_FIRST : VERIFY_U_FIRST, err)))
         st = write_output(o->output, &b, err);
     sbuf_clear(&b);

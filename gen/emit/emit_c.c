@@ -1,6 +1,7 @@
 /* emit_c.c: the C target, an stb-style header: the term table, planes, values, and classify (one
  * patch, batch, SoA) as straight-line code, with the second look of --certified or --refine. */
 #include "emit/emit_c_mesh.h"
+#include "emit/emit_c_refine.h"
 #include "emit/fmt.h"
 #include "emit/kern.h"
 #include "plan/cert.h"
@@ -119,68 +120,6 @@ static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_
         else
             sbuf_printf(o, "%s.0f * u;\n", sv);
     }
-}
-
-/* --refine K: the class of a silhouette patch from the scalar Bezier function e.T(u,v), whose
- * control values are the plane values, split by de Casteljau into four while it has mixed signs. */
-static void put_refine(sbuf *o, const tp_table *t, const out_info *info, const char *up)
-{
-    const char *px = info->prefix, *neg = info->rule == OUT_STRICT ? "< 0.0f" : "<= 0.0f";
-    const char *pos = info->rule == OUT_STRICT ? "> 0.0f" : ">= 0.0f";
-    tp_domain_text x;
-    tp_domain_text_get(&x, &t->dom);
-    sbuf_printf(o,
-                "/* --refine %d: the class of the scalar Bezier patch with control values d[I * %d + J] (%s\n"
-                " * %s): back if all values are %s, front if all are %s, and otherwise, while levels\n"
-                " * remain and the four corners (values of the function itself) agree, the class the four\n"
-                " * quarters split at u = v = 1/2 (de Casteljau) agree on, else silhouette. */\n"
-                "static unsigned %ssplit_class(const float *d, int levels)\n{\n"
-                "    enum { U = %d, V = %d, N = (U + 1) * (V + 1) };\n"
-                "    float h[2][N], q[2][N], w[U > V ? U + 1 : V + 1];\n"
-                "    unsigned n = 0, p = 0, cn, cp, x, a, b, cls = 0;\n"
-                "    int i, j, k;\n"
-                "    for (x = 0; x < N; x++) {\n"
-                "        n += d[x] %s;\n        p += d[x] %s;\n    }\n"
-                "    if (n == N)\n        return %sBACK;\n"
-                "    if (p == N)\n        return %sFRONT;\n"
-                "    cn = (d[0] %s) + (d[V] %s) + (d[U * (V + 1)] %s) + (d[N - 1] %s);\n"
-                "    cp = (d[0] %s) + (d[V] %s) + (d[U * (V + 1)] %s) + (d[N - 1] %s);\n"
-                "    if (levels == 0 || (cn != 4 && cp != 4))\n"
-                "        return %sSILHOUETTE; /* the corners differ: a real sign change */\n"
-                "    for (j = 0; j <= V; j++) { /* along u: h[0] on u in [0, 1/2], h[1] on [1/2, 1] */\n"
-                "        for (i = 0; i <= U; i++)\n            w[i] = d[i * (V + 1) + j];\n"
-                "        for (i = 0; i <= U; i++) {\n"
-                "            h[0][i * (V + 1) + j] = w[0];\n"
-                "            h[1][(U - i) * (V + 1) + j] = w[U - i];\n"
-                "            for (k = 0; k < U - i; k++)\n                w[k] = 0.5f * (w[k] + w[k + 1]);\n"
-                "        }\n"
-                "    }\n"
-                "    for (a = 0; a < 2; a++) {\n"
-                "        for (i = 0; i <= U; i++) { /* h[a] along v into q[0] and q[1] */\n"
-                "            for (j = 0; j <= V; j++)\n                w[j] = h[a][i * (V + 1) + j];\n"
-                "            for (j = 0; j <= V; j++) {\n"
-                "                q[0][i * (V + 1) + j] = w[0];\n"
-                "                q[1][i * (V + 1) + V - j] = w[V - j];\n"
-                "                for (k = 0; k < V - j; k++)\n                    w[k] = 0.5f * (w[k] + w[k + 1]);\n"
-                "            }\n"
-                "        }\n"
-                "        for (b = 0; b < 2; b++) {\n"
-                "            unsigned c = %ssplit_class(q[b], levels - 1);\n"
-                "            if (c == %sSILHOUETTE || (a + b > 0 && c != cls))\n"
-                "                return %sSILHOUETTE;\n"
-                "            cls = c;\n"
-                "        }\n"
-                "    }\n"
-                "    return cls;\n}\n\n",
-                info->refine, t->dom.pv + 1, x.word, x.plane_degree, neg, pos, px, t->dom.pu,
-                t->dom.pv, neg, pos, up, up,
-                neg, neg, neg, neg, pos, pos, pos, pos, up, px, up, up);
-    sbuf_printf(o, "/* The refined class of a patch the plane values leave silhouette. */\n"
-                   "static unsigned %srefined(const float cp[][4], const float eye[4])\n{\n"
-                   "    float d[%sPLANES];\n"
-                   "    %svalues(cp, eye, d);\n"
-                   "    return %ssplit_class(d, %d);\n}\n\n",
-                px, up, px, px, info->refine);
 }
 
 /* Appends a constant double table NAME[n] (17 digits: each literal rounds back to its double;
@@ -590,7 +529,7 @@ static int put_entries(sbuf *o, const tp_table *t, const out_info *info, const c
     snprintf(again, sizeof again, "%s%s", info->certified ? "" : up,
              info->certified ? "3u" : "SILHOUETTE");
     if (info->refine)
-        put_refine(o, t, info, up);
+        emit_c_refine(o, t, info, up);
     else if (info->certified && (st = put_certify64(o, t, info, up, err)) != PTP_OK)
         return st;
     put_classify(o, info, up, second, again);

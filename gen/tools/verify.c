@@ -528,7 +528,8 @@ static const char *conv_name(int vfirst)
     return vfirst ? "v-first" : "u-first";
 }
 
-/* Writes how convention vfirst numbers the points and planes of d. */
+/* Writes how convention vfirst numbers the points and planes of d, a quad (for triangles the
+ * other convention is the negated table, which verdict_reading names instead). */
 static void numbering(sbuf *o, const tp_domain *d, int vfirst)
 {
     if (vfirst)
@@ -660,10 +661,11 @@ static void verdict_reading(sbuf *o, const ctx *c, const reading *r)
         sbuf_puts(o, ": the table of the opposite orientation, which takes front-facing patches "
                      "for back-facing ones");
         if (c->vfirst_negated)
-            sbuf_printf(o, "; for a square patch that is also the exact table in the %s index "
+            sbuf_printf(o, "; for a %s that is also the exact table in the %s index "
                            "convention, right only for code that numbers points %s (check it "
-                           "with --convention %s)", conv_name(!c->vfirst), conv_name(!c->vfirst),
-                        conv_name(!c->vfirst));
+                           "with --convention %s)",
+                        t->dom.kind == TP_TRI ? "triangle" : "square patch",
+                        conv_name(!c->vfirst), conv_name(!c->vfirst), conv_name(!c->vfirst));
     } else if (neg) {
         sbuf_printf(o, ": it is%s the exact table of %s, the transposed patch (i along v), which "
                        "for a %s patch has the opposite orientation",
@@ -800,13 +802,14 @@ static int write_report(sbuf *rep, int *verdict, ctx *c, const reading *r, size_
     const tp_domain *dom = &c->t->dom;
     size_t i, count[NPROBLEMS] = {0};
     verify_arrays_result ares;
-    char deg[16];
+    char deg[16], named[32];
     int a, b, st;
     qsort(c->it, c->nit, sizeof *c->it, cmp_item);
     if (d->degree_named && (d->n != dom->n || d->m != dom->m))
-        sbuf_printf(rep, "%s:%d: note: the %s names bidegree %dx%d; checked as %s\n", c->name,
-                    d->degree_line, d->degree_named == 1 ? "document" : "array name", d->n,
-                    d->m, tp_domain_format(deg, sizeof deg, dom));
+        sbuf_printf(rep, "%s:%d: note: the %s names %s; checked as %s\n", c->name,
+                    d->degree_line, d->degree_named == 1 ? "document" : "array name",
+                    verify_degree_name(named, dom->kind, d->n, d->m),
+                    tp_domain_format(deg, sizeof deg, dom));
     for (i = 0; i < c->nit; i++) {
         report_item(rep, c, r, &c->it[i]);
         if (c->it[i].kind < NPROBLEMS)
@@ -816,10 +819,10 @@ static int write_report(sbuf *rep, int *verdict, ctx *c, const reading *r, size_
         return st;
     count[P_ARRAY] = ares.problems;
     problems += ares.problems;
-    if (problems && verify_doc_fit(&a, &b, d) &&
+    if (problems && verify_doc_fit(&a, &b, d, dom->kind) &&
         !((a == dom->n && b == dom->m) || (a == dom->m && b == dom->n)))
-        sbuf_printf(rep, "%s: note: the indices fit bidegree %dx%d, not %s\n", c->name, a, b,
-                    tp_domain_format(deg, sizeof deg, dom));
+        sbuf_printf(rep, "%s: note: the indices fit %s, not %s\n", c->name,
+                    verify_degree_name(named, dom->kind, a, b), tp_domain_format(deg, sizeof deg, dom));
     report_verdict(rep, verdict, c, r, count, problems, ares.iwgt_exact);
     return PTP_OK;
 }
@@ -896,24 +899,25 @@ static int check_range(const verify_doc *d, const tp_domain *dom, const char *na
     return PTP_OK;
 }
 
-int verify_table(sbuf *out, int *verdict, const char *text, size_t len, const char *name, int n,
-                 int m, int convention, ptp_error *err)
+int verify_table(sbuf *out, int *verdict, const char *text, size_t len, const char *name,
+                 int kind, int n, int m, int convention, ptp_error *err)
 {
     verify_doc d;
     tp_domain dom;
     tp_table t;
-    int st;
+    int st, max = kind == TP_TRI ? PTP_MAX_TRI_DEGREE : PTP_MAX_DEGREE;
+    char deg[32];
     *verdict = VERIFY_WRONG;
     name = name ? name : "(input)";
     if (n < 0 || m < 0 || (n == 0) != (m == 0))
-        return ptp_fail(err, PTP_EUSAGE, "%s: bad bidegree %dx%d", name, n, m);
-    if (n > PTP_MAX_DEGREE || m > PTP_MAX_DEGREE)
-        return ptp_fail(err, PTP_ELIMIT, "bidegree %dx%d: the largest supported degree is %d",
-                        n, m, PTP_MAX_DEGREE);
+        return ptp_fail(err, PTP_EUSAGE, "%s: bad %s", name,
+                        verify_degree_name(deg, kind == TP_TRI ? TP_TRI : TP_QUAD, n, m));
+    if (n > max || m > max)
+        return ptp_fail(err, PTP_ELIMIT, "%s: the largest supported degree is %d",
+                        verify_degree_name(deg, kind == TP_TRI ? TP_TRI : TP_QUAD, n, m), max);
     if ((st = verify_parse(&d, text, len, name, err)))
         return st;
-    if (!(st = verify_doc_degree(&n, &m, &d, n, m, name, err)) &&
-        !(st = tp_domain_init(&dom, TP_QUAD, n, m, err)) &&
+    if (!(st = verify_doc_domain(&dom, &d, kind, n, m, name, err)) &&
         !(st = check_range(&d, &dom, name, err)) && !(st = tp_derive_domain(&t, &dom, err))) {
         st = check(out, verdict, &d, &t, convention == VERIFY_V_FIRST, name, err);
         tp_clear(&t);

@@ -539,28 +539,36 @@ static int role_of(const rd *r, const tok *t)
     return ROLE_NONE;
 }
 
-/* The bidegree in an idx array name like ptp_2x3_idx or ptp_2x3_table_idx (digits 'x' digits
- * before "_idx" or "_table_idx", after '_' or at the start), into d as a hint. */
+/* The largest degree any kind supports. */
+#define MAX_ANY_DEGREE (PTP_MAX_TRI_DEGREE > PTP_MAX_DEGREE ? PTP_MAX_TRI_DEGREE : PTP_MAX_DEGREE)
+
+/* The degrees in an idx array name like ptp_2x3_idx or ptp_2x3_table_idx (digits 'x' digits),
+ * or ptp_tri3_idx ("tri" digits: a triangle), before "_idx" or "_table_idx", after '_' or at
+ * the start, into d as a hint. */
 static void name_degree(verify_doc *d, const char *s, size_t n, int line)
 {
     size_t k = n >= 10 && !memcmp(s + n - 10, "_table_idx", 10) ? n - 10 : n - 4; /* s[k]: '_' */
-    int v[2] = {0, 0}, which, scale;
+    int v[2] = {0, 0}, which, scale, tri = 0;
     if (n < 4)
         return;
-    for (which = 1; which >= 0; which--) {
+    for (which = 1; which >= 0 && !tri; which--) {
         for (scale = 1; k > 0 && is_digit(s[k - 1]) && scale <= 1000; k--, scale *= 10)
             v[which] += (s[k - 1] - '0') * scale;
-        if (scale == 1 || v[which] < 1 || v[which] > PTP_MAX_DEGREE)
+        if (scale == 1 || v[which] < 1 || v[which] > MAX_ANY_DEGREE)
             return;
-        if (which == 1 && (k == 0 || s[--k] != 'x'))
+        if (which == 1 && k >= 3 && !memcmp(s + k - 3, "tri", 3))
+            tri = 1, k -= 3, v[0] = v[1];
+        else if (which == 1 && (k == 0 || s[--k] != 'x'))
             return;
     }
-    if (k > 0 && s[k - 1] != '_')
+    if ((k > 0 && s[k - 1] != '_') || v[0] > (tri ? PTP_MAX_TRI_DEGREE : PTP_MAX_DEGREE) ||
+        v[1] > (tri ? PTP_MAX_TRI_DEGREE : PTP_MAX_DEGREE))
         return;
     d->n = v[0];
     d->m = v[1];
-    d->degree_line = line;
-    d->degree_named = 2;
+    d->degree_line = d->kind_line = line;
+    d->degree_named = d->kind_named = 2;
+    d->kind = tri ? TP_TRI : TP_QUAD;
 }
 
 /* Skips [ ... ] (nested) at t, and reads the token after it. */
@@ -1058,12 +1066,19 @@ static int json_terms(rd *r, vec *terms)
     }
 }
 
-/* Reads the value of "degree" ([n, m]) into d. */
+/* Reads the value of "degree" ([n, m], or one number d for a triangle) into d. */
 static int json_degree(verify_doc *d, rd *r)
 {
     int st;
     d->degree_line = r->line;
     d->degree_named = 1;
+    if (at(r, r->pos) != '[') {
+        d->degree_one = 1;
+        if (!(st = json_int(r, &d->n, PTP_MAX_TRI_DEGREE, "the degree")) && d->n < 1)
+            st = fail_at(r, d->degree_line, "\"degree\" must be at least 1");
+        d->m = d->n;
+        return st;
+    }
     if (!(st = json_expect(r, '[', "opening \"degree\": [n, m]")) &&
         !(st = json_int(r, &d->n, PTP_MAX_DEGREE, "the degree n")) &&
         !(st = json_expect(r, ',', "in \"degree\": [n, m]")) &&
@@ -1074,8 +1089,38 @@ static int json_degree(verify_doc *d, rd *r)
     return st;
 }
 
-/* Reads one member "key": value of the document object at pos ('"'); seen[0] and seen[1]
- * count the "terms" and "degree" members so far. Other keys are skipped and noted in d. */
+/* Reads the value of "domain" ("quad" or "triangle") into d; the key was on line kline. */
+static int json_domain(verify_doc *d, rd *r, int kline)
+{
+    char v[16];
+    size_t n;
+    int st = json_string(r, v, sizeof v, &n);
+    if (st)
+        return st;
+    if (strcmp(v, tp_kind_name(TP_QUAD)) && strcmp(v, tp_kind_name(TP_TRI)))
+        return fail_at(r, kline, "\"domain\": \"%s\": expected \"%s\" or \"%s\"", v,
+                       tp_kind_name(TP_QUAD), tp_kind_name(TP_TRI));
+    d->kind = strcmp(v, tp_kind_name(TP_TRI)) ? TP_QUAD : TP_TRI;
+    d->kind_named = 1;
+    d->kind_line = kline;
+    return PTP_OK;
+}
+
+/* Fails when the "degree" does not take the form of the "domain": one number for a triangle,
+ * [n, m] for a quad. */
+static int json_degree_form(const verify_doc *d, rd *r)
+{
+    if (d->degree_named != 1 || d->degree_one == (d->kind == TP_TRI))
+        return PTP_OK;
+    if (d->kind == TP_TRI)
+        return fail_at(r, d->degree_line, "\"degree\" of a triangle (\"domain\": \"triangle\", "
+                                          "line %d) is one number d, not [n, m]", d->kind_line);
+    return fail_at(r, d->degree_line, "\"degree\": %d, one number, is a triangle's degree: say "
+                                      "\"domain\": \"triangle\" (a quad's is [n, m])", d->n);
+}
+
+/* Reads one member "key": value of the document object at pos ('"'); seen[0], seen[1] and
+ * seen[2] count the "terms", "degree" and "domain" members so far. Other keys are skipped and noted in d. */
 static int json_member(verify_doc *d, rd *r, vec *terms, int *seen)
 {
     int st, kline = r->line;
@@ -1096,10 +1141,7 @@ static int json_member(verify_doc *d, rd *r, vec *terms, int *seen)
     if (n == 6 && !strcmp(key, "degree"))
         return seen[1]++ ? fail_at(r, kline, "a second \"degree\"") : json_degree(d, r);
     if (n == 6 && !strcmp(key, "domain")) /* ptpgen's json names the domain only for triangles */
-        return (st = json_string(r, key, sizeof key, &n)) || !strcmp(key, "quad")
-                   ? st
-                   : fail_at(r, kline, "\"domain\": \"%s\": verify checks quad tables only "
-                                       "(triangular tables are not supported yet)", key);
+        return seen[2]++ ? fail_at(r, kline, "a second \"domain\"") : json_domain(d, r, kline);
     if (strcmp(key, "format") && strcmp(key, "generator") && strcmp(key, "command"))
         note_ignored(d, key, strlen(key));
     return json_skip(r, 1);
@@ -1123,7 +1165,7 @@ static int json_object(verify_doc *d, rd *r, vec *terms, int *seen)
 static int parse_json(verify_doc *d, rd *r)
 {
     vec terms = {NULL, 0, 0};
-    int st, seen[2] = {0, 0}, line;
+    int st, seen[3] = {0, 0, 0}, line;
     json_ws(r);
     line = r->line;
     if (at(r, r->pos) == '[') {
@@ -1136,6 +1178,8 @@ static int parse_json(verify_doc *d, rd *r)
     }
     if (!st && !seen[0])
         st = fail_at(r, line, "the JSON document has no \"terms\" array");
+    if (!st)
+        st = json_degree_form(d, r);
     if (!st) {
         json_ws(r);
         if (r->pos < r->len)
@@ -1193,9 +1237,9 @@ void verify_doc_clear(verify_doc *d)
     d->nterms = 0;
 }
 
-int verify_doc_fit(int *a, int *b, const verify_doc *d)
+int verify_doc_fit(int *a, int *b, const verify_doc *d, tp_kind kind)
 {
-    int planes = 0, points = 0, q;
+    int planes = 0, points = 0, q, max = kind == TP_TRI ? PTP_MAX_TRI_DEGREE : PTP_MAX_DEGREE;
     tp_domain dom;
     size_t x;
     for (x = 0; x < d->nterms; x++) {
@@ -1204,21 +1248,46 @@ int verify_doc_fit(int *a, int *b, const verify_doc *d)
         for (q = 0; q < 3; q++)
             points = e->p[q] + 1 > points ? e->p[q] + 1 : points;
     }
-    for (*a = 1; *a <= PTP_MAX_DEGREE; ++*a)
-        for (*b = *a; *b <= PTP_MAX_DEGREE; ++*b)
-            if (!tp_domain_init(&dom, TP_QUAD, *a, *b, NULL) && dom.npoints == points &&
+    for (*a = 1; *a <= max; ++*a)
+        for (*b = *a; *b <= (kind == TP_TRI ? *a : max); ++*b)
+            if (!tp_domain_init(&dom, kind, *a, *b, NULL) && dom.npoints == points &&
                 dom.nplanes == planes)
                 return 1;
     return 0;
 }
 
-int verify_doc_degree(int *n, int *m, const verify_doc *d, int n0, int m0, const char *name,
-                      ptp_error *err)
+const char *verify_degree_name(char *buf, tp_kind kind, int a, int b)
 {
-    int a, b, fit = verify_doc_fit(&a, &b, d), line = d->nterms ? d->terms[0].line : 1;
-    rd r = {NULL, 0, 0, 0, 0, NULL, NULL, NULL};
-    r.name = name;
-    r.err = err;
+    tp_domain dom = {kind, a, b, 0, 0, 0, 0};
+    tp_domain_text x;
+    tp_domain_text_get(&x, &dom);
+    snprintf(buf, 32, "%s", x.name);
+    return buf;
+}
+
+/* The kind to check d as: kind0 when not negative (PTP_EUSAGE when d names another), else the
+ * one d names, else quad unless only a triangle's numbers of points and planes fit its indices. */
+static int doc_kind(tp_kind *kind, const verify_doc *d, int kind0, rd *r)
+{
+    int a, b;
+    *kind = kind0 >= 0 ? (tp_kind)kind0 : d->kind;
+    if (kind0 < 0 && !d->kind_named && !verify_doc_fit(&a, &b, d, TP_QUAD) &&
+        verify_doc_fit(&a, &b, d, TP_TRI))
+        *kind = TP_TRI;
+    if (kind0 >= 0 && d->kind_named && d->kind != *kind)
+        return fail_at(r, d->kind_line, "the %s names --domain %s, not %s", d->kind_named == 1 ?
+                       "document" : "array name", tp_kind_name(d->kind), tp_kind_name(*kind));
+    return PTP_OK;
+}
+
+/* Sets *n, *m to the degrees of the kind to check d against (verify_doc_domain's rules). */
+static int doc_degree(int *n, int *m, const verify_doc *d, tp_kind kind, int n0, int m0, rd *r)
+{
+    int a, b, fit = verify_doc_fit(&a, &b, d, kind), line = d->nterms ? d->terms[0].line : 1;
+    const char *w = kind == TP_TRI ? "degree" : "bidegree", *arg = kind == TP_TRI ? "N" : "NxM";
+    char named[32], fits[32];
+    if (kind == TP_TRI && n0 != m0)
+        return fail_at(r, line, "--degree %dx%d: a triangle has one degree; use --degree N", n0, m0);
     if (n0 || m0 || d->degree_named == 1 ||
         (d->degree_named == 2 && (!fit || (a == d->n && b == d->m) || (a == d->m && b == d->n)))) {
         *n = n0 || m0 ? n0 : d->n;
@@ -1226,17 +1295,35 @@ int verify_doc_degree(int *n, int *m, const verify_doc *d, int n0, int m0, const
         return PTP_OK;
     }
     if (d->degree_named == 2)
-        return fail_at(&r, d->degree_line, "the array name says bidegree %dx%d but the indices "
-                                           "fit %dx%d; use --degree NxM", d->n, d->m, a, b);
+        return fail_at(r, d->degree_line, "the array name says %s but the indices fit %s; use "
+                       "--degree %s", verify_degree_name(named, kind, d->n, d->m),
+                       verify_degree_name(fits, kind, a, b) + strlen(w) + 1, arg);
     if (!d->nterms)
-        return fail_at(&r, line, "the table has no terms, so no bidegree: use --degree NxM");
+        return fail_at(r, line, "the table has no terms, so no %s: use --degree %s", w, arg);
     if (!fit)
-        return fail_at(&r, line, "cannot infer the bidegree: no bidegree 1..%d has the numbers of "
-                                 "planes and points the indices use; use --degree NxM",
-                       PTP_MAX_DEGREE);
+        return fail_at(r, line, "cannot infer the %s: no %s 1..%d has the numbers of planes and "
+                                "points the indices use; use --degree %s", w, w,
+                       kind == TP_TRI ? PTP_MAX_TRI_DEGREE : PTP_MAX_DEGREE, arg);
+    if (a != b && verify_doc_fit(n, m, d, TP_TRI))
+        return fail_at(r, line, "the indices fit bidegree %dx%d and %dx%d, and the triangle of "
+                                "degree %d: use --degree NxM, or --domain triangle, to say which",
+                       a, b, b, a, *n);
     if (a != b)
-        return fail_at(&r, line, "the indices fit bidegree %dx%d and %dx%d: use --degree NxM to "
-                                 "say which", a, b, b, a);
+        return fail_at(r, line, "the indices fit bidegree %dx%d and %dx%d: use --degree NxM to "
+                                "say which", a, b, b, a);
     *n = *m = a;
     return PTP_OK;
+}
+
+int verify_doc_domain(tp_domain *dom, const verify_doc *d, int kind0, int n0, int m0,
+                      const char *name, ptp_error *err)
+{
+    rd r = {NULL, 0, 0, 0, 0, NULL, NULL, NULL};
+    tp_kind kind;
+    int n = 0, m = 0, st;
+    r.name = name;
+    r.err = err;
+    if ((st = doc_kind(&kind, d, kind0, &r)) || (st = doc_degree(&n, &m, d, kind, n0, m0, &r)))
+        return st;
+    return tp_domain_init(dom, kind, n, m, err);
 }

@@ -3,6 +3,7 @@
 #ifndef VERIFY_PARSE_H
 #define VERIFY_PARSE_H
 
+#include "core/domain.h"
 #include "core/rat.h"
 
 /* A weight as written: its value, exact when it was written exactly. Integer literals, float
@@ -68,10 +69,16 @@ typedef struct {
                                          terms, degree, format, generator and command: "foo, bar"
                                          (cut short with "...") */
     int nfunctions, function_line;    /* function definitions, and the line of the first */
-    int n, m;          /* the bidegree the document names, 0 when it names none: JSON "degree",
-                          or an idx array named like ptp_2x3_idx or ptp_2x3_table_idx */
+    int n, m;          /* the degrees the document names, 0 when it names none: JSON "degree"
+                          ([n, m], or one number d for a triangle: n = m = d), or an idx array
+                          named like ptp_2x3_idx, ptp_2x3_table_idx or ptp_tri3_table_idx */
     int degree_line;   /* the line that names it */
     int degree_named;  /* 1: from the "degree" field (binding); 2: from the array name (a hint) */
+    int degree_one;    /* the "degree" field is one number (a triangle's) */
+    tp_kind kind;      /* the domain the document names: JSON "domain", or the array name
+                          (ptp_tri3_idx: triangle, ptp_2x3_idx: quad); TP_QUAD when none */
+    int kind_named;    /* 0: none; 1: from the "domain" field (binding); 2: the array name */
+    int kind_line;     /* the line that names it */
 } verify_doc;
 
 /* Reads text[0..len) (any bytes, no NUL needed) as a ptpgen JSON document (it starts with '{'
@@ -87,14 +94,21 @@ typedef struct {
 int verify_parse(verify_doc *d, const char *text, size_t len, const char *name, ptp_error *err);
 /* Frees d's storage. */
 void verify_doc_clear(verify_doc *d);
-/* Sets *n, *m to the bidegree to check d against: (n0, m0) when not 0; else the "degree" field;
- * else the one bidegree whose numbers of planes and points the indices of d use (a square one,
- * or one agreeing with the array name). PTP_EUSAGE (err "NAME:LINE: why ...; use --degree")
- * when that is absent or ambiguous. */
-int verify_doc_degree(int *n, int *m, const verify_doc *d, int n0, int m0, const char *name,
-                      ptp_error *err);
-/* The one unordered bidegree {*a <= *b} with (a+1)(b+1) points and (3a-1)(3b-1) planes that
- * the indices of d use (the largest index plus one); returns 0 when no bidegree fits. */
-int verify_doc_fit(int *a, int *b, const verify_doc *d);
+/* Sets *dom to the domain to check d against. Its kind: kind0 when not negative, else the one
+ * d names, else quad unless only a triangle fits the numbers of points and planes its indices
+ * use (PTP_EUSAGE when kind0 and a kind d names differ). Its degrees: (n0, m0)
+ * when not 0 (a triangle's: n0 = m0); else the "degree" field; else the one degree of the kind
+ * whose numbers of planes and points the indices of d use (a square one, or one agreeing with
+ * the array name). PTP_EUSAGE (err "NAME:LINE: why ...; use --degree") when that is absent or
+ * ambiguous, and tp_domain_init's status for degrees out of range. */
+int verify_doc_domain(tp_domain *dom, const verify_doc *d, int kind0, int n0, int m0,
+                      const char *name, ptp_error *err);
+/* The one unordered pair of degrees {*a <= *b} of the kind (a triangle's: *a = *b) whose numbers
+ * of points and planes the indices of d use (the largest index plus one); returns 0 when none
+ * fits. */
+int verify_doc_fit(int *a, int *b, const verify_doc *d, tp_kind kind);
+/* Writes the name of the degrees (a, b) of the kind to buf (32 bytes), as the domain names them
+ * ("bidegree 2x3", "degree 3"); returns buf. */
+const char *verify_degree_name(char *buf, tp_kind kind, int a, int b);
 
 #endif
