@@ -36,7 +36,8 @@ for cfg in "clip strict" "clip degenerate" "world strict" "world degenerate" "cl
     # AVX (8 wide, then 4, then 1 in blocks of 21), SSE2 (4, then 1 in blocks of 5), scalar
     for build in ${avx512:+"$avx512"} "gcc:gcc:-std=c11" "gcc:gcc:-std=c11 -march=native" "gcc:gcc:-std=c11 -mavx2 -DPTP_TRI1_MESH_LANES=21" \
         "gcc:gcc:-std=c11 -DPTP_TRI1_MESH_LANES=5" "gcc:gcc:-std=c11 -DPTP_TRI1_NO_VECTOR -DPTP_TRI1_NO_SSE" \
-        "clang:clang:-std=c11 -O3 -march=native" "g++:gcc:-std=c++11" "clang++:clang:-std=c++20 -march=native"; do
+        "clang:clang:-std=c11 -O3 -march=native" "g++:gcc:-std=c++11" "g++:gcc:-std=c++17 -march=native" \
+        "clang++:clang:-std=c++20 -march=native"; do
         IFS=: read -r cc lib flags <<<"$build"
         command -v $cc >/dev/null || { missing $cc "mesh entry points with $cc"; continue; }
         name="mesh $1 $2${3:+ $3} ($cc $flags)"

@@ -427,6 +427,8 @@ void ptp_tri1_classify_clusters(const float (*vertices)[4], const uint32_t *indi
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
+#pragma GCC diagnostic push /* g++ 12 calls gcc's own _mm512_undefined_ps maybe uninitialized */
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #if defined(__AVX512F__) && !defined(PTP_TRI1_NO_SSE)
 /* v[0] to v[3] = the rows x, y, z and w of one vertex of 16 consecutive triangles, from x, that
@@ -591,6 +593,7 @@ void ptp_tri1_classify_clusters(const float (*vertices)[4], const uint32_t *indi
     }
 }
 #if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
 #pragma GCC pop_options
 #endif
 #endif
