@@ -33,7 +33,7 @@ static void diff(char *r, size_t n, const fused_isa *isa, const char *a, const c
 /* r = (a0 m1_2 - a1 m0_2) + a2 m0_1: one plane's Laplace expansion over the minors m. */
 static void plane(char *r, size_t n, const fused_isa *isa, char a, char m)
 {
-    char x[8][16], d[512], p[256];
+    char x[6][16], d[512], p[256];
     snprintf(x[0], 16, "%c0", a);
     snprintf(x[1], 16, "%c1_2", m);
     snprintf(x[2], 16, "%c1", a);
