@@ -19,6 +19,12 @@ host() {
         -o "$tmp/hm" 2>"$tmp/err"
 }
 
+# The fused kernel: AVX-512 where the CPU has it (-march=native, and -mavx512f alone), AVX with
+# -mavx2 (8 wide, then 4, then 1 in blocks of 21).
+avx512=
+grep -qw avx512f /proc/cpuinfo 2>/dev/null && avx512="gcc:gcc:-std=c11 -mavx512f"
+[ -z "$avx512" ] && echo "# skip: the fused AVX-512 kernel (this CPU has no AVX-512)"
+
 # The variants of the header, each with gcc and clang as built for speed and as plain C, and
 # from C++; certified ones on more exact (integer, adversarial) data.
 for cfg in "clip strict" "clip degenerate" "world strict" "world degenerate" "clip strict --certified" \
@@ -27,11 +33,13 @@ for cfg in "clip strict" "clip degenerate" "world strict" "world degenerate" "cl
     opts="--space $1 --rule $2 ${3:-}"
     data="--random 2 3000 17 --exact 5 2000 19"
     [ -n "${3:-}" ] && data="--random 1 3000 17 --exact 10 20000 23"
-    # gathers: AVX-512 or AVX2 with -march=native, AVX (8 wide, then 4, then 1 in blocks of 21),
-    # SSE2 (4, then 1 in blocks of 5), scalar
-    for build in "gcc:gcc:-std=c11" "gcc:gcc:-std=c11 -march=native" "gcc:gcc:-std=c11 -mavx2 -DPTP_TRI1_MESH_LANES=21" \
+    # gathers: the fused kernel (certified: the gathers into classify_soa) of AVX-512 or AVX2 with
+    # -march=native and of AVX (8 wide, then 4, then 1 in blocks of 21), SSE2 (4, then 1 in blocks
+    # of 5), scalar
+    for build in ${avx512:+"$avx512"} "gcc:gcc:-std=c11" "gcc:gcc:-std=c11 -march=native" "gcc:gcc:-std=c11 -mavx2 -DPTP_TRI1_MESH_LANES=21" \
         "gcc:gcc:-std=c11 -DPTP_TRI1_MESH_LANES=5" "gcc:gcc:-std=c11 -DPTP_TRI1_NO_VECTOR -DPTP_TRI1_NO_SSE" \
-        "clang:clang:-std=c11 -O3 -march=native" "g++:gcc:-std=c++11" "clang++:clang:-std=c++20 -march=native"; do
+        "clang:clang:-std=c11 -O3 -march=native" "g++:gcc:-std=c++11" "g++:gcc:-std=c++17 -march=native" \
+        "clang++:clang:-std=c++20 -march=native"; do
         IFS=: read -r cc lib flags <<<"$build"
         command -v $cc >/dev/null || { missing $cc "mesh entry points with $cc"; continue; }
         name="mesh $1 $2${3:+ $3} ($cc $flags)"
@@ -54,12 +62,26 @@ mutant() {
         notok "$1 fails" "it passed: $(grep -m2 '^not ok' "$tmp/out" 2>/dev/null)"
     fi
 }
-# every gather (SSE2 and scalar; AVX-512 or AVX2 with -march=native) takes vertex (3 - k) % 3
+# every gather (SSE2 and scalar; the fused kernel or AVX2 with -march=native) takes vertex
+# (3 - k) % 3
 swap='s|3 \* (l + (size_t)i) + k|3 * (l + (size_t)i) + (3 - k) % 3|g; s|vertices\[ix\[3 \* l + k\]\]\[c\]|vertices[ix[3 * l + (3 - k) % 3]][c]|'
-for flags in "" "-march=native"; do
+swap="$swap; s|ix + 3 \\* l + k)|ix + 3 * l + (3 - k) % 3)|; s|indices + 3 \\* l + 1)|indices + 3 * l + 9)|"
+swap="$swap; s|indices + 3 \\* l + 2)|indices + 3 * l + 1)|; s|indices + 3 \\* l + 9)|indices + 3 * l + 2)|"
+for flags in "" "-mavx2" "-march=native"; do
     mutant "a mesh header that gathers a triangle's vertices 1 and 2 swapped${flags:+ ($flags)}" "$flags" "$swap" \
         "classify_mesh equals classify"
 done
 mutant "a mesh header whose cluster is back when any triangle is" "" \
     's|((all \& 1u) + 2u \* (1u - (all \& 1u))|((any \& 1u) + 2u * (1u - (any \& 1u))|' \
     "classify_clusters equals the loop"
+# the fused kernel (AVX-512, and AVX with -mavx2) with an FMA in the value (rounds differently:
+# collapsed triangles get nonzero values), and with a zero value called back
+for isa in "avx512f:_mm512:_mm512_set1_epi32(1)" "avx2:_mm256:_mm256_set1_ps(-1.0f)"; do
+    IFS=: read -r cpu v one <<<"$isa"
+    grep -qw $cpu /proc/cpuinfo 2>/dev/null || { echo "# skip: fused $cpu kernel mutants (no $cpu)"; continue; }
+    mutant "a fused $cpu mesh kernel that contracts a product into an FMA" "-m$cpu -mfma" \
+        "s|${v}_sub_ps(${v}_mul_ps(g0, m1_2), ${v}_mul_ps(g1, m0_2))|${v}_fmsub_ps(g0, m1_2, ${v}_mul_ps(g1, m0_2))|" \
+        "classify_mesh equals classify"
+    mutant "a fused $cpu mesh kernel that calls a zero value back" "-m$cpu" \
+        "s|_CMP_LT_OQ), $one|_CMP_LE_OQ), $one|" "classify_mesh equals classify"
+done

@@ -1,47 +1,191 @@
 /* emit_c_mesh.c: the degree-1 triangle header's indexed-mesh entry points (templates/c/mesh.h):
- * blocks of triangles gathered through the index array into classify_soa. */
+ * blocks of triangles gathered through the index array into classify_soa, or with AVX-512 or AVX
+ * into a fused kernel that performs classify's float operations for degree 1 in registers. */
 #include "emit/emit_c_mesh.h"
 #include "emit/fmt.h"
 #include "emit/template.h"
 
+#include <stdio.h>
+#include <string.h>
+
+/* A vector width of the fused kernel: the intrinsics' family and vector type. */
+typedef struct {
+    const char *fam, *vec;
+    int wide; /* AVX-512: compare masks; AVX: compares to all-ones floats */
+} fused_isa;
+
+/* r = fam_op_ps(a, b) as text. */
+static void op(char *r, size_t n, const fused_isa *isa, const char *o, const char *a, const char *b)
+{
+    snprintf(r, n, "%s_%s_ps(%s, %s)", isa->fam, o, a, b);
+}
+
+/* r = a * b - c * d as the fused kernel's text. */
+static void diff(char *r, size_t n, const fused_isa *isa, const char *a, const char *b, const char *c,
+                 const char *d)
+{
+    char ab[256], cd[256];
+    op(ab, sizeof ab, isa, "mul", a, b);
+    op(cd, sizeof cd, isa, "mul", c, d);
+    op(r, n, isa, "sub", ab, cd);
+}
+
+/* r = (a0 m1_2 - a1 m0_2) + a2 m0_1: one plane's Laplace expansion over the minors m. */
+static void plane(char *r, size_t n, const fused_isa *isa, char a, char m)
+{
+    char x[6][16], d[512], p[256];
+    snprintf(x[0], 16, "%c0", a);
+    snprintf(x[1], 16, "%c1_2", m);
+    snprintf(x[2], 16, "%c1", a);
+    snprintf(x[3], 16, "%c0_2", m);
+    snprintf(x[4], 16, "%c2", a);
+    snprintf(x[5], 16, "%c0_1", m);
+    diff(d, sizeof d, isa, x[0], x[1], x[2], x[3]);
+    op(p, sizeof p, isa, "mul", x[4], x[5]);
+    op(r, n, isa, "add", d, p);
+}
+
 /* The gather's stores for one vector width: the rows of the in-lane 4x4 transpose (one vertex of
- * the block's triangles), from t0, t1 (x and y: their low and high pairs) and t2, t3 (z and w),
- * into the SoA rows; clip space never reads z. v names the intrinsics' vector family ("_mm",
- * "_mm256", "_mm512"). */
+ * the block's triangles) into the SoA rows; clip space never reads z. v names the intrinsics'
+ * vector family ("_mm", "_mm256", "_mm512"): SSE2 from t0, t1 (x and y: their low and high
+ * pairs) and t2, t3 (z and w), AVX and AVX-512 from mesh_rows' v[0] to v[3]. */
 static void put_stores(sbuf *o, const out_info *info, const char *up, const char *v)
 {
     static const char *const row[4] = {"t0, t1, 0x44", "t0, t1, 0xee", "t2, t3, 0x44", "t2, t3, 0xee"};
     int c;
     for (c = 0; c < 4; c++)
-        if (c != 2 || info->space == OUT_WORLD)
-            sbuf_printf(o, "                %s_storeu_ps(soa + (k * 4 + %d) * %sMESH_LANES + l, %s_shuffle_ps(%s));\n",
-                        v, c, up, v, row[c]);
+        if (c != 2 || info->space == OUT_WORLD) {
+            sbuf_printf(o, "                %s_storeu_ps(soa + (k * 4 + %d) * %sMESH_LANES + l, ", v, c, up);
+            if (strcmp(v, "_mm"))
+                sbuf_printf(o, "v[%d]);\n", c);
+            else
+                sbuf_printf(o, "%s_shuffle_ps(%s));\n", v, row[c]);
+        }
+}
+
+/* mesh_rows' in-lane 4x4 transpose of r[0 to 3] into the rows v[0 to 3]. */
+static void put_transpose(sbuf *o, const fused_isa *isa)
+{
+    static const char *const row[4] = {"t0, t1, 0x44", "t0, t1, 0xee", "t2, t3, 0x44", "t2, t3, 0xee"};
+    int c;
+    sbuf_printf(o, "    const %s t0 = %s_unpacklo_ps(r[0], r[1]), t1 = %s_unpacklo_ps(r[2], r[3]);\n",
+                isa->vec, isa->fam, isa->fam);
+    sbuf_printf(o, "    const %s t2 = %s_unpackhi_ps(r[0], r[1]), t3 = %s_unpackhi_ps(r[2], r[3]);\n",
+                isa->vec, isa->fam, isa->fam);
+    for (c = 0; c < 4; c++)
+        sbuf_printf(o, "    v[%d] = %s_shuffle_ps(%s);\n", c, isa->fam, row[c]);
+}
+
+/* The fused kernel's eye broadcasts: e0 to e3 in world space, e2 alone in clip space. */
+static void put_eye(sbuf *o, const out_info *info, const fused_isa *isa)
+{
+    int c;
+    for (c = 0; c < 4; c++)
+        if (c == 2 || info->space == OUT_WORLD)
+            sbuf_printf(o, "    const %s e%d = %s_set1_ps(eye[%d]);\n", isa->vec, c, isa->fam, c);
+}
+
+/* The fused kernel's value u of the degree-1 plane from the rows v[k][0 to 3] (x, y, z, w) of its
+ * three points: the float operations of classify's straight-line code for degree 1, in its order.
+ * World: a_k = e0 y_k - e1 x_k, b_k = e2 w_k - e3 z_k, the minors m_ij = x_i y_j - y_i x_j and
+ * n_ij = z_i w_j - w_i z_j, u = ((a0 n12 - a1 n02) + a2 n01) + ((b0 m12 - b1 m02) + b2 m01).
+ * Clip: g_k = e2 w_k, u = (g0 m12 - g1 m02) + g2 m01. */
+static void put_value(sbuf *o, const out_info *info, const fused_isa *isa)
+{
+    static const int pair[3][2] = {{1, 2}, {0, 2}, {0, 1}};
+    char r[1024], q[512], t[4][16];
+    int k, c, world = info->space == OUT_WORLD;
+    for (k = 0; k < 3; k++) {
+        for (c = 0; c < 4; c++)
+            snprintf(t[c], sizeof t[c], "v[%d][%d]", k, c);
+        if (world) {
+            diff(r, sizeof r, isa, "e0", t[1], "e1", t[0]);
+            diff(q, sizeof q, isa, "e2", t[3], "e3", t[2]);
+            sbuf_printf(o, "        const %s a%d = %s, b%d = %s;\n", isa->vec, k, r, k, q);
+        } else {
+            op(r, sizeof r, isa, "mul", "e2", t[3]);
+            sbuf_printf(o, "        const %s g%d = %s;\n", isa->vec, k, r);
+        }
+    }
+    for (k = 0; k < 3; k++)
+        for (c = 0; c < 4; c += 2)
+            if (c == 0 || world) {
+                int i = pair[k][0], j = pair[k][1];
+                char a[16], b[16], e[16], f[16];
+                snprintf(a, sizeof a, "v[%d][%d]", i, c);
+                snprintf(b, sizeof b, "v[%d][%d]", j, c + 1);
+                snprintf(e, sizeof e, "v[%d][%d]", i, c + 1);
+                snprintf(f, sizeof f, "v[%d][%d]", j, c);
+                diff(r, sizeof r, isa, a, b, e, f);
+                sbuf_printf(o, "        const %s %c%d_%d = %s;\n", isa->vec, c ? 'n' : 'm', i, j, r);
+            }
+    plane(r, sizeof r, isa, world ? 'a' : 'g', world ? 'n' : 'm');
+    if (world) {
+        plane(q, sizeof q, isa, 'b', 'm');
+        sbuf_printf(o, "        u = %s_add_ps(%s, %s);\n", isa->fam, r, q);
+    } else
+        sbuf_printf(o, "        u = %s;\n", r);
+}
+
+/* The fused kernel's class words c from u: strict, back (1) iff u < 0, front (0) iff u > 0,
+ * else silhouette (2); degenerate, front iff u > 0, silhouette iff u is NaN, else back. The two
+ * conditions exclude each other: AVX-512 moves their classes in under compare masks, AVX adds
+ * their differences from the default under all-ones compares. */
+static void put_class(sbuf *o, const out_info *info, const fused_isa *isa)
+{
+    static const char *const pred[2][2] = {{"_CMP_LT_OQ", "_CMP_GT_OQ"}, {"_CMP_GT_OQ", "_CMP_UNORD_Q"}};
+    static const int cls[2][3] = {{2, 1, 0}, {1, 0, 2}}; /* default, then under each condition */
+    const int r = info->rule == OUT_STRICT ? 0 : 1;
+    int i;
+    if (isa->wide) {
+        sbuf_printf(o, "        __m512i c = _mm512_set1_epi32(%d);\n", cls[r][0]);
+        for (i = 0; i < 2; i++)
+            sbuf_printf(o, "        c = _mm512_mask_mov_epi32(c, _mm512_cmp_ps_mask(u, _mm512_setzero_ps(), %s), "
+                           "_mm512_set1_epi32(%d));\n", pred[r][i], cls[r][i + 1]);
+        return;
+    }
+    sbuf_printf(o, "        const __m256i c = _mm256_cvtps_epi32(_mm256_add_ps(_mm256_add_ps(_mm256_set1_ps(%d.0f),",
+                cls[r][0]);
+    for (i = 0; i < 2; i++)
+        sbuf_printf(o, "\n            _mm256_and_ps(_mm256_cmp_ps(u, _mm256_setzero_ps(), %s), _mm256_set1_ps(%d.0f))%s",
+                    pred[r][i], cls[r][i + 1] - cls[r][0], i ? "));\n" : "),");
 }
 
 int emit_c_mesh(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
     static const char *const family[3] = {"_mm", "_mm256", "_mm512"};
-    static const char *const slot[3] = {"STORES4", "STORES8", "STORES16"};
-    sbuf stores[3];
+    static const fused_isa isa[2] = {{"_mm256", "__m256", 0}, {"_mm512", "__m512", 1}};
+    static const char *const slot[9] = {"STORES4",  "STORES8", "STORES16", "EYE8",       "EYE16",
+                                        "BODY8", "BODY16",  "TRANSPOSE8", "TRANSPOSE16"};
+    sbuf parts[9];
     char up[64];
-    tpl_slot slots[6];
-    int i, st;
+    tpl_slot slots[13];
+    int i, st, failed = 0;
     if (t->dom.kind != TP_TRI || t->dom.n != 1)
         return PTP_OK;
     fmt_upper(up, sizeof up, info->prefix);
-    for (i = 0; i < 3; i++) {
-        sbuf_init(&stores[i]);
-        put_stores(&stores[i], info, up, family[i]);
-        slots[3 + i] = (tpl_slot){slot[i], stores[i].s};
+    for (i = 0; i < 9; i++)
+        sbuf_init(&parts[i]);
+    for (i = 0; i < 3; i++)
+        put_stores(&parts[i], info, up, family[i]);
+    for (i = 0; i < 2; i++) {
+        put_eye(&parts[3 + i], info, &isa[i]);
+        put_value(&parts[5 + i], info, &isa[i]);
+        put_class(&parts[5 + i], info, &isa[i]);
+        put_transpose(&parts[7 + i], &isa[i]);
+    }
+    for (i = 0; i < 9; i++) {
+        failed |= parts[i].failed;
+        slots[4 + i] = (tpl_slot){slot[i], parts[i].s};
     }
     slots[0] = (tpl_slot){"PREFIX", info->prefix};
     slots[1] = (tpl_slot){"UPREFIX", up};
     slots[2] = (tpl_slot){"VALUE", info->space == OUT_CLIP ? "the points in clip space and eye (0, 0, alpha, 0)"
                                                          : "the points and the eye in world space"};
-    st = stores[0].failed || stores[1].failed || stores[2].failed
-             ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
-             : tpl_fill(o, "c/mesh.h", slots, 6, err);
-    for (i = 0; i < 3; i++)
-        sbuf_clear(&stores[i]);
+    slots[3] = (tpl_slot){"FUSED", info->certified ? "0" : "1"};
+    st = failed ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
+                : tpl_fill(o, "c/mesh.h", slots, 13, err);
+    for (i = 0; i < 9; i++)
+        sbuf_clear(&parts[i]);
     return st;
 }

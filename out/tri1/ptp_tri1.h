@@ -389,6 +389,10 @@ void ptp_tri1_classify_batch(const float (*cp)[4], size_t patch_count, const flo
 extern "C" {
 #endif
 
+/* 1: with AVX-512 (AVX), classify_mesh classifies 16 (8) triangles at a time in registers with
+ * classify's float operations; 0 (certified headers, whose second look is classify_soa's): it
+ * gathers blocks of MESH_LANES triangles for classify_soa. */
+#define PTP_TRI1_MESH_FUSED 1
 /* Triangles classify_mesh gathers and classifies at a time (define it to override). */
 #ifndef PTP_TRI1_MESH_LANES
 #define PTP_TRI1_MESH_LANES 64
@@ -418,58 +422,145 @@ void ptp_tri1_classify_clusters(const float (*vertices)[4], const uint32_t *indi
 #if (defined(__AVX__) || defined(__AVX512F__)) && !defined(PTP_TRI1_NO_SSE)
 #include <immintrin.h>
 #endif
+/* gcc contracts no product of the fused kernel into an FMA; the whole section, because gcc does
+ * not inline across optimize options. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#pragma GCC diagnostic push /* g++ 12 calls gcc's own _mm512_undefined_ps maybe uninitialized */
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+/* ptp_tri1_mesh_rows(v, vertices, x): v[0] to v[3] = the rows x, y, z and w of one vertex of
+ * MESH_W consecutive triangles, from x, that vertex's index in the first of them (triangle i's at
+ * x[3 * i]): r[i] holds the vertex of triangles i, i + 4, ... in its 128-bit lanes, and a 4x4
+ * transpose within the lanes gives the rows in triangle order. */
+#if defined(__AVX512F__) && !defined(PTP_TRI1_NO_SSE)
+#define PTP_TRI1_MESH_W 16
+typedef __m512 ptp_tri1_mesh_v;
+static inline void ptp_tri1_mesh_rows(__m512 v[4], const float (*vertices)[4], const uint32_t *x)
+{
+    __m512 r[4];
+    int i;
+    for (i = 0; i < 4; i++) {
+        const uint32_t *q = x + 3 * i;
+        r[i] = _mm512_castps128_ps512(_mm_loadu_ps(vertices[q[0]]));
+        r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[q[12]]), 1);
+        r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[q[24]]), 2);
+        r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[q[36]]), 3);
+    }
+    const __m512 t0 = _mm512_unpacklo_ps(r[0], r[1]), t1 = _mm512_unpacklo_ps(r[2], r[3]);
+    const __m512 t2 = _mm512_unpackhi_ps(r[0], r[1]), t3 = _mm512_unpackhi_ps(r[2], r[3]);
+    v[0] = _mm512_shuffle_ps(t0, t1, 0x44);
+    v[1] = _mm512_shuffle_ps(t0, t1, 0xee);
+    v[2] = _mm512_shuffle_ps(t2, t3, 0x44);
+    v[3] = _mm512_shuffle_ps(t2, t3, 0xee);
+}
+#elif defined(__AVX__) && !defined(PTP_TRI1_NO_SSE)
+#define PTP_TRI1_MESH_W 8
+typedef __m256 ptp_tri1_mesh_v;
+static inline void ptp_tri1_mesh_rows(__m256 v[4], const float (*vertices)[4], const uint32_t *x)
+{
+    __m256 r[4];
+    int i;
+    for (i = 0; i < 4; i++) {
+        const uint32_t *q = x + 3 * i;
+        r[i] = _mm256_castps128_ps256(_mm_loadu_ps(vertices[q[0]]));
+        r[i] = _mm256_insertf128_ps(r[i], _mm_loadu_ps(vertices[q[12]]), 1);
+    }
+    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpacklo_ps(r[2], r[3]);
+    const __m256 t2 = _mm256_unpackhi_ps(r[0], r[1]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+    v[0] = _mm256_shuffle_ps(t0, t1, 0x44);
+    v[1] = _mm256_shuffle_ps(t0, t1, 0xee);
+    v[2] = _mm256_shuffle_ps(t2, t3, 0x44);
+    v[3] = _mm256_shuffle_ps(t2, t3, 0xee);
+}
+#endif
+#if PTP_TRI1_MESH_FUSED && defined(PTP_TRI1_MESH_W)
+#define PTP_TRI1_MESH_FUSED_ON
+/* The classes of the first triangle_count / MESH_W * MESH_W triangles, MESH_W at a time in
+ * registers: classify's float operations for degree 1 in the same order (products never
+ * contracted), and the class bytes from compares. Returns the triangles done. */
+static size_t ptp_tri1_mesh_fused(const float (*vertices)[4], const uint32_t *indices,
+                                  size_t triangle_count, const float eye[4], unsigned char *cls)
+{
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+#if PTP_TRI1_MESH_W == 16
+    const __m512 e2 = _mm512_set1_ps(eye[2]);
+#else
+    const __m256 e2 = _mm256_set1_ps(eye[2]);
+#endif
+    size_t l;
+    for (l = 0; l + PTP_TRI1_MESH_W <= triangle_count; l += PTP_TRI1_MESH_W) {
+        ptp_tri1_mesh_v v[3][4], u;
+        ptp_tri1_mesh_rows(v[0], vertices, indices + 3 * l);
+        ptp_tri1_mesh_rows(v[1], vertices, indices + 3 * l + 1);
+        ptp_tri1_mesh_rows(v[2], vertices, indices + 3 * l + 2);
+#if PTP_TRI1_MESH_W == 16
+        const __m512 g0 = _mm512_mul_ps(e2, v[0][3]);
+        const __m512 g1 = _mm512_mul_ps(e2, v[1][3]);
+        const __m512 g2 = _mm512_mul_ps(e2, v[2][3]);
+        const __m512 m1_2 = _mm512_sub_ps(_mm512_mul_ps(v[1][0], v[2][1]), _mm512_mul_ps(v[1][1], v[2][0]));
+        const __m512 m0_2 = _mm512_sub_ps(_mm512_mul_ps(v[0][0], v[2][1]), _mm512_mul_ps(v[0][1], v[2][0]));
+        const __m512 m0_1 = _mm512_sub_ps(_mm512_mul_ps(v[0][0], v[1][1]), _mm512_mul_ps(v[0][1], v[1][0]));
+        u = _mm512_add_ps(_mm512_sub_ps(_mm512_mul_ps(g0, m1_2), _mm512_mul_ps(g1, m0_2)), _mm512_mul_ps(g2, m0_1));
+        __m512i c = _mm512_set1_epi32(2);
+        c = _mm512_mask_mov_epi32(c, _mm512_cmp_ps_mask(u, _mm512_setzero_ps(), _CMP_LT_OQ), _mm512_set1_epi32(1));
+        c = _mm512_mask_mov_epi32(c, _mm512_cmp_ps_mask(u, _mm512_setzero_ps(), _CMP_GT_OQ), _mm512_set1_epi32(0));
+        _mm_storeu_si128((__m128i *)(cls + l), _mm512_cvtepi32_epi8(c));
+#else
+        const __m256 g0 = _mm256_mul_ps(e2, v[0][3]);
+        const __m256 g1 = _mm256_mul_ps(e2, v[1][3]);
+        const __m256 g2 = _mm256_mul_ps(e2, v[2][3]);
+        const __m256 m1_2 = _mm256_sub_ps(_mm256_mul_ps(v[1][0], v[2][1]), _mm256_mul_ps(v[1][1], v[2][0]));
+        const __m256 m0_2 = _mm256_sub_ps(_mm256_mul_ps(v[0][0], v[2][1]), _mm256_mul_ps(v[0][1], v[2][0]));
+        const __m256 m0_1 = _mm256_sub_ps(_mm256_mul_ps(v[0][0], v[1][1]), _mm256_mul_ps(v[0][1], v[1][0]));
+        u = _mm256_add_ps(_mm256_sub_ps(_mm256_mul_ps(g0, m1_2), _mm256_mul_ps(g1, m0_2)), _mm256_mul_ps(g2, m0_1));
+        const __m256i c = _mm256_cvtps_epi32(_mm256_add_ps(_mm256_add_ps(_mm256_set1_ps(2.0f),
+            _mm256_and_ps(_mm256_cmp_ps(u, _mm256_setzero_ps(), _CMP_LT_OQ), _mm256_set1_ps(-1.0f))),
+            _mm256_and_ps(_mm256_cmp_ps(u, _mm256_setzero_ps(), _CMP_GT_OQ), _mm256_set1_ps(-2.0f))));
+        const __m128i h = _mm_packs_epi32(_mm256_castsi256_si128(c), _mm256_extractf128_si256(c, 1));
+        _mm_storel_epi64((__m128i *)(cls + l), _mm_packus_epi16(h, h));
+#endif
+    }
+    return l;
+}
+#endif
+
 /* Blocks of MESH_LANES triangles gathered through their indices into the SoA layout and
  * classified by classify_soa: the same code as classify, so the same classes (certified: with
  * the same second look). The gather transposes one vertex of 16 (AVX-512), 8 (AVX) or 4 (SSE2)
- * triangles at a time: r[i] holds that vertex of triangles l + i, l + i + 4, ... in its 128-bit
- * lanes, and a 4x4 transpose within the lanes gives the rows x, y, z and w in triangle order. */
+ * triangles at a time as mesh_rows does. With MESH_FUSED and AVX-512 or AVX, mesh_fused
+ * classifies all but the last triangle_count % MESH_W triangles. */
 void ptp_tri1_classify_mesh(const float (*vertices)[4], const uint32_t *indices,
                             size_t triangle_count, const float eye[4], unsigned char *cls)
 {
     float soa[3 * 4 * PTP_TRI1_MESH_LANES];
     size_t p, l, n;
     unsigned k, c;
-    for (p = 0; p < triangle_count; p += n) {
+    p = 0;
+#if defined(PTP_TRI1_MESH_FUSED_ON)
+    p = ptp_tri1_mesh_fused(vertices, indices, triangle_count, eye, cls);
+#endif
+    for (; p < triangle_count; p += n) {
         const uint32_t *ix = indices + 3 * p;
         n = triangle_count - p < PTP_TRI1_MESH_LANES ? triangle_count - p : PTP_TRI1_MESH_LANES;
         l = 0;
-#if defined(__AVX512F__) && !defined(PTP_TRI1_NO_SSE)
-        for (; l + 16 <= n; l += 16)
+#if defined(PTP_TRI1_MESH_W)
+        for (; l + PTP_TRI1_MESH_W <= n; l += PTP_TRI1_MESH_W)
             for (k = 0; k < 3; k++) {
-                __m512 r[4], t0, t1, t2, t3;
-                int i;
-                for (i = 0; i < 4; i++) {
-                    const uint32_t *x = ix + 3 * (l + (size_t)i) + k;
-                    r[i] = _mm512_castps128_ps512(_mm_loadu_ps(vertices[x[0]]));
-                    r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[x[12]]), 1);
-                    r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[x[24]]), 2);
-                    r[i] = _mm512_insertf32x4(r[i], _mm_loadu_ps(vertices[x[36]]), 3);
-                }
-                t0 = _mm512_unpacklo_ps(r[0], r[1]);
-                t1 = _mm512_unpacklo_ps(r[2], r[3]);
-                t2 = _mm512_unpackhi_ps(r[0], r[1]);
-                t3 = _mm512_unpackhi_ps(r[2], r[3]);
-                _mm512_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, _mm512_shuffle_ps(t0, t1, 0x44));
-                _mm512_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, _mm512_shuffle_ps(t0, t1, 0xee));
-                _mm512_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, _mm512_shuffle_ps(t2, t3, 0xee));
-            }
-#elif defined(__AVX__) && !defined(PTP_TRI1_NO_SSE)
-        for (; l + 8 <= n; l += 8)
-            for (k = 0; k < 3; k++) {
-                __m256 r[4], t0, t1, t2, t3;
-                int i;
-                for (i = 0; i < 4; i++) {
-                    const uint32_t *x = ix + 3 * (l + (size_t)i) + k;
-                    r[i] = _mm256_castps128_ps256(_mm_loadu_ps(vertices[x[0]]));
-                    r[i] = _mm256_insertf128_ps(r[i], _mm_loadu_ps(vertices[x[12]]), 1);
-                }
-                t0 = _mm256_unpacklo_ps(r[0], r[1]);
-                t1 = _mm256_unpacklo_ps(r[2], r[3]);
-                t2 = _mm256_unpackhi_ps(r[0], r[1]);
-                t3 = _mm256_unpackhi_ps(r[2], r[3]);
-                _mm256_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, _mm256_shuffle_ps(t0, t1, 0x44));
-                _mm256_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, _mm256_shuffle_ps(t0, t1, 0xee));
-                _mm256_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, _mm256_shuffle_ps(t2, t3, 0xee));
+                ptp_tri1_mesh_v v[4];
+                ptp_tri1_mesh_rows(v, vertices, ix + 3 * l + k);
+#if PTP_TRI1_MESH_W == 16
+                _mm512_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, v[0]);
+                _mm512_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, v[1]);
+                _mm512_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, v[3]);
+#else
+                _mm256_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_MESH_LANES + l, v[0]);
+                _mm256_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_MESH_LANES + l, v[1]);
+                _mm256_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_MESH_LANES + l, v[3]);
+#endif
             }
 #endif
 #if defined(__SSE2__) && !defined(PTP_TRI1_NO_SSE)
@@ -526,4 +617,8 @@ void ptp_tri1_classify_clusters(const float (*vertices)[4], const uint32_t *indi
         }
     }
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#pragma GCC pop_options
+#endif
 #endif
