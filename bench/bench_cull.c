@@ -48,10 +48,10 @@ static unsigned paper_classify(const float (*b)[4], float alpha)
     float d[NPLANES] = {0.0f};
     unsigned x, lt = 0, gt = 0;
     for (x = 0; x < NTERMS; x++) {
-        const float *a = b[FN(idx)[x][1]], *bb = b[FN(idx)[x][2]], *c = b[FN(idx)[x][3]];
+        const float *a = b[FN(term_idx)[x][1]], *bb = b[FN(term_idx)[x][2]], *c = b[FN(term_idx)[x][3]];
         float z = a[0] * (bb[1] * c[3] - bb[3] * c[1]) - bb[0] * (a[1] * c[3] - a[3] * c[1]) +
                   c[0] * (a[1] * bb[3] - a[3] * bb[1]);
-        d[FN(idx)[x][0]] += FN(wgt)[x] * z;
+        d[FN(term_idx)[x][0]] += FN(term_wgt)[x] * z;
     }
     for (x = 0; x < NPLANES; x++) {
         float v = alpha * d[x];

@@ -69,27 +69,85 @@ static void put_bracket(sbuf *o, const slp_prog *p, const slp_term *x, char g, c
                 q[x->pair[1]].l, g, x->point[2], m, q[x->pair[2]].k, q[x->pair[2]].l);
 }
 
-/* Declares the minors term x needs that are not declared yet. */
-static void put_minors(sbuf *o, const slp_prog *p, const slp_term *x, int world, const char *px,
-                       unsigned char *done)
+/* Declares the minor pair unless done[pair]. */
+static void put_minor(sbuf *o, const slp_prog *p, int pair, int world, const char *px,
+                      unsigned char *done)
 {
-    int i;
-    for (i = 0; i < 3; i++) {
-        const slp_pair *q = &p->pairs[x->pair[i]];
-        if (done[x->pair[i]])
-            continue;
-        done[x->pair[i]] = 1;
-        sbuf_printf(o, "        const %svf m%d_%d = x%d * y%d - y%d * x%d;\n", px, q->k, q->l, q->k,
+    const slp_pair *q = &p->pairs[pair];
+    if (done[pair])
+        return;
+    done[pair] = 1;
+    sbuf_printf(o, "        const %svf m%d_%d = x%d * y%d - y%d * x%d;\n", px, q->k, q->l, q->k, q->l,
+                q->k, q->l);
+    if (world)
+        sbuf_printf(o, "        const %svf n%d_%d = z%d * w%d - w%d * z%d;\n", px, q->k, q->l, q->k,
                     q->l, q->k, q->l);
-        if (world)
-            sbuf_printf(o, "        const %svf n%d_%d = z%d * w%d - w%d * z%d;\n", px, q->k, q->l,
-                        q->k, q->l, q->k, q->l);
+}
+
+/* The signed sum of the minors (letter m) of fused entries [a, b), positive ones first. */
+static void put_minor_sum(sbuf *o, const slp_prog *p, size_t a, size_t b, char m)
+{
+    size_t i;
+    int pass, n = 0;
+    for (pass = 0; pass < 2; pass++)
+        for (i = a; i < b; i++) {
+            const slp_entry *x = &p->entries[i];
+            const slp_pair *q = &p->pairs[x->pair];
+            if (x->neg != pass)
+                continue;
+            sbuf_printf(o, "%s%c%d_%d", n++ ? (x->neg ? " - " : " + ") : x->neg ? "-" : "", m, q->k,
+                        q->l);
+        }
+}
+
+/* Appends v's update with the group's sum u at scale s: assigned for the plane's first group. */
+static void put_group_end(sbuf *o, const rat *s, int first_group, const char *up)
+{
+    char sv[RAT_STRLEN];
+    rat one;
+    rat_set_si(&one, 1);
+    rat_get_str(sv, s);
+    if (rat_equal(s, &one))
+        sbuf_printf(o, "        v %s u;\n", first_group ? "=" : "+=");
+    else if (first_group)
+        sbuf_printf(o, "        v = %s.0f * u;\n", sv);
+    else
+        sbuf_printf(o, "        v = %sVFMAS(%s.0f, u, v);\n", up, sv);
+}
+
+/* A fused plane from entries [a, ...): per group u = sum over points b of G(b) times the signed
+ * sum of b's minors, with multiply-adds, then v; returns the end of the plane's entries. */
+static size_t put_fused(sbuf *o, const slp_prog *p, size_t a, int world, const char *px,
+                        const char *up, unsigned char *done)
+{
+    int plane = p->entries[a].plane, first_group = 1;
+    size_t g, b, e, i;
+    for (g = a; g < p->nentries && p->entries[g].plane == plane; g = e, first_group = 0) {
+        e = slp_group_end(p, g);
+        for (i = g; i < e; i++)
+            put_minor(o, p, p->entries[i].pair, world, px, done);
+        for (b = g; b < e; b = i) {
+            int k, pt = p->entries[b].point;
+            i = slp_point_end(p, b);
+            for (k = 0; k < (world ? 2 : 1); k++) {
+                char gl = world ? (k ? 'b' : 'a') : 'g', ml = world && !k ? 'n' : 'm';
+                if (b == g && k == 0)
+                    sbuf_printf(o, "        u = %c%d * (", gl, pt);
+                else
+                    sbuf_printf(o, "        u = %sVFMA(%c%d, ", up, gl, pt);
+                put_minor_sum(o, p, b, i, ml);
+                sbuf_puts(o, b == g && k == 0 ? ");\n" : ", u);\n");
+            }
+        }
+        put_group_end(o, &p->s[p->entries[g].group], first_group, up);
     }
+    return g;
 }
 
 /* The statements of term i: its group's sum u and, at the end of a group, the plane's v
  * (assigned when the group is the plane's first, first_group). */
-static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_group)
+static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_group,
+                     const char *up)
 {
     const slp_term *x = &p->terms[i];
     int first = i == 0 || p->terms[i - 1].group != x->group;
@@ -107,17 +165,8 @@ static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_
     } else
         put_bracket(o, p, x, 'g', 'm');
     sbuf_puts(o, ";\n");
-    if (last) {
-        char sv[RAT_STRLEN];
-        rat one;
-        rat_set_si(&one, 1);
-        rat_get_str(sv, &p->s[x->group]);
-        sbuf_printf(o, "        v %s ", first_group ? "=" : "+=");
-        if (rat_equal(&p->s[x->group], &one))
-            sbuf_puts(o, "u;\n");
-        else
-            sbuf_printf(o, "%s.0f * u;\n", sv);
-    }
+    if (last)
+        put_group_end(o, &p->s[x->group], first_group, up);
 }
 
 /* --refine K: the class of a silhouette patch from the scalar Bezier function e.T(u,v), whose
@@ -392,42 +441,62 @@ static void put_value_store(sbuf *o, const slp_prog *p, int plane, const char *p
     sbuf_puts(o, ";\n");
 }
 
-/* The straight-line program: every term and, after a plane's last, its value into the masks
- * (and into d). */
-static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
-                       ptp_error *err)
+/* The terms of exact plane from term a, in bracket form; returns the end of its terms. */
+static size_t put_exact(sbuf *o, const slp_prog *p, size_t a, int world, const char *px,
+                        const char *up, unsigned char *done)
 {
-    const char *px = info->prefix, *op;
-    int world = info->space == OUT_WORLD, first_group = 1;
-    int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
-    unsigned char *done = calloc(p->npairs + 1, 1);
     size_t i;
+    int first_group = 1, k;
+    for (i = a; i < p->nterms && p->terms[i].plane == p->terms[a].plane; i++) {
+        for (k = 0; k < 3; k++)
+            put_minor(o, p, p->terms[i].pair[k], world, px, done);
+        if (i > a && p->terms[i - 1].group != p->terms[i].group)
+            first_group = 0;
+        put_term(o, p, i, world, first_group, up);
+    }
+    return i;
+}
+
+/* Plane P's value v into the masks (set by the first plane, certified: by the size guard). */
+static void put_masks(sbuf *o, const cert_bounds *cb, const out_info *info, int plane, int first)
+{
+    const char *op = first ? "=" : "|=";
+    if (info->certified)
+        sbuf_printf(o, "        t = %.8ef * ER3 + %.8ef * F; /* the bound of plane %d */\n"
+                       "        notlt |= (v < -t) == 0;\n        notgt |= (v > t) == 0;\n"
+                       "        plt %s (v < 0.0f) == 0;\n        pgt %s (v > 0.0f) == 0;\n",
+                    (double)cb->k[plane], (double)cb->k2[plane], plane, op, op);
+    else if (info->rule == OUT_STRICT)
+        sbuf_printf(o, "        notlt %s (v < 0.0f) == 0;\n        notgt %s (v > 0.0f) == 0; /* plane %d */\n",
+                    op, op, plane);
+    else
+        sbuf_printf(o, "        lt %s v < 0.0f;\n        gt %s v > 0.0f;\n"
+                       "        nan %s v != v; /* plane %d */\n",
+                    op, op, op, plane);
+}
+
+/* The straight-line program: every plane, exact or fused, then its value into the masks (and
+ * into d). */
+static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
+                       const char *up, ptp_error *err)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD;
+    unsigned char *done = calloc(p->npairs + 1, 1);
+    size_t i = 0, e = 0;
     if (!done)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-    for (i = 0; i < p->nterms; i++) {
-        const slp_term *x = &p->terms[i];
-        int last = i + 1 == p->nterms || p->terms[i + 1].plane != x->plane;
-        put_minors(o, p, x, world, px, done);
-        if (i > 0 && p->terms[i - 1].group != x->group)
-            first_group = p->terms[i - 1].plane != x->plane;
-        put_term(o, p, i, world, first_group);
-        if (!last)
-            continue;
-        put_value_store(o, p, x->plane, px);
-        /* the masks: set by the first plane (certified: by the size guard), then or-ed */
-        op = x->plane == p->terms[0].plane ? "=" : "|=";
-        if (info->certified)
-            sbuf_printf(o, "        t = %.8ef * ER3 + %.8ef * F; /* the bound of plane %d */\n"
-                           "        notlt |= (v < -t) == 0;\n        notgt |= (v > t) == 0;\n"
-                           "        plt %s (v < 0.0f) == 0;\n        pgt %s (v > 0.0f) == 0;\n",
-                        (double)cb->k[x->plane], (double)cb->k2[x->plane], x->plane, op, op);
-        else if (strict)
-            sbuf_printf(o, "        notlt %s (v < 0.0f) == 0;\n        notgt %s (v > 0.0f) == 0; /* plane %d */\n",
-                        op, op, x->plane);
-        else
-            sbuf_printf(o, "        lt %s v < 0.0f;\n        gt %s v > 0.0f;\n"
-                           "        nan %s v != v; /* plane %d */\n",
-                        op, op, op, x->plane);
+    while (i < p->nterms) {
+        int plane = p->terms[i].plane;
+        if (p->exact[plane])
+            i = put_exact(o, p, i, world, px, up, done);
+        else {
+            e = put_fused(o, p, e, world, px, up, done);
+            while (i < p->nterms && p->terms[i].plane == plane)
+                i++;
+        }
+        put_value_store(o, p, plane, px);
+        put_masks(o, cb, info, plane, plane == p->terms[0].plane);
     }
     free(done);
     return PTP_OK;
@@ -482,7 +551,7 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     put_lanes_head(o, info, up);
     put_lanes_loop(o, info, up);
     put_loads(o, t, info, cb);
-    if ((st = put_program(o, p, cb, info, err)) != PTP_OK)
+    if ((st = put_program(o, p, cb, info, up, err)) != PTP_OK)
         return st;
     put_lanes_class(o, info, up);
     return PTP_OK;
@@ -598,9 +667,10 @@ static int put_entries(sbuf *o, const tp_table *t, const out_info *info, const c
 }
 
 /* The code from the straight-line program: the lanes function, the second look and the entry
- * points; writes the program's flops per patch to flops (24 bytes). */
-static int put_code(sbuf *o, char *flops, const tp_table *t, const out_info *info, const char *up,
-                    ptp_error *err)
+ * points; writes the program's flops and multiply-pipe operations per patch to flops and muls
+ * (24 bytes each). */
+static int put_code(sbuf *o, char *flops, char *muls, const tp_table *t, const out_info *info,
+                    const char *up, ptp_error *err)
 {
     slp_prog prog;
     cert_bounds cb = {0};
@@ -608,6 +678,7 @@ static int put_code(sbuf *o, char *flops, const tp_table *t, const out_info *inf
     if (st)
         return st;
     snprintf(flops, 24, "%ld", slp_flops(&prog, info->space == OUT_WORLD));
+    snprintf(muls, 24, "%ld", slp_muls(&prog, info->space == OUT_WORLD));
     if (info->certified)
         st = cert_slp(&cb, &prog, info->space == OUT_WORLD, err);
     if (!st)
@@ -638,8 +709,8 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
     sbuf banner, tables, funcs, variant;
     out_info plain;
-    char up[64], file[96], points[16], planes[16], count[80], flops[24], name[80];
-    tpl_slot slots[10];
+    char up[64], file[96], points[16], planes[16], count[80], flops[24], muls[24], name[80];
+    tpl_slot slots[11];
     int st;
     fmt_upper(up, sizeof up, info->prefix);
     fmt_file_name(file, sizeof file, info->prefix, ".h");
@@ -662,7 +733,7 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     snprintf(name, sizeof name, "%sterm_", info->prefix);
     out_c_arrays(&tables, t, NULL, name, count, NULL, 0);
     put_functions(&funcs, info, up);
-    st = put_code(&funcs, flops, t, info, up, err);
+    st = put_code(&funcs, flops, muls, t, info, up, err);
     if (st) {
         sbuf_clear(&banner);
         sbuf_clear(&tables);
@@ -681,9 +752,10 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     slots[7] = (tpl_slot){"FUNCTIONS", funcs.s};
     slots[8] = (tpl_slot){"FLOPS", flops};
     slots[9] = (tpl_slot){"VARIANT", variant.s};
+    slots[10] = (tpl_slot){"MULS", muls};
     st = banner.failed || tables.failed || funcs.failed || variant.failed
              ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
-             : tpl_fill(o, "c/kernel.h", slots, 10, err);
+             : tpl_fill(o, "c/kernel.h", slots, 11, err);
     sbuf_clear(&banner);
     sbuf_clear(&tables);
     sbuf_clear(&funcs);
