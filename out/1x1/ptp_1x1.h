@@ -43,8 +43,10 @@ extern "C" {
 #define PTP_1X1_FRONT 0u
 #define PTP_1X1_BACK 1u
 #define PTP_1X1_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_1X1_FLOPS 42
+#define PTP_1X1_MULS 28
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_1X1_LANES
 #define PTP_1X1_LANES 16
@@ -138,6 +140,29 @@ static inline float ptp_1x1_vfirst(ptp_1x1_vf v)
 {
     return v[0];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_1X1_VW == 16
+#include <immintrin.h>
+#define PTP_1X1_VFMA(a, b, c) ((ptp_1x1_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_1X1_VFMAS(a, b, c) PTP_1X1_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_1X1_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_1X1_VFMA(a, b, c) ((ptp_1x1_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_1X1_VFMAS(a, b, c) PTP_1X1_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_1X1_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_1X1_VFMA(a, b, c) ((ptp_1x1_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_1X1_VFMAS(a, b, c) PTP_1X1_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_1X1_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_1X1_VFMA(a, b, c) ((ptp_1x1_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_1X1_VFMAS(a, b, c) PTP_1X1_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_1X1_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_1X1_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_1x1_vf ptp_1x1_vabsmax(ptp_1x1_vf r, ptp_1x1_vf x)
 {
@@ -165,6 +190,12 @@ static inline float ptp_1x1_vfirst(ptp_1x1_vf v)
 {
     return v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_1X1_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_1X1_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_1X1_VFMAS PTP_1X1_VFMA
 #endif
 
 float ptp_1x1_alpha(const float proj[16], int layout)

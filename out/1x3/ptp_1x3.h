@@ -43,8 +43,10 @@ extern "C" {
 #define PTP_1X3_FRONT 0u
 #define PTP_1X3_BACK 1u
 #define PTP_1X3_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_1X3_FLOPS 396
+#define PTP_1X3_MULS 240
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_1X3_LANES
 #define PTP_1X3_LANES 16
@@ -138,6 +140,29 @@ static inline float ptp_1x3_vfirst(ptp_1x3_vf v)
 {
     return v[0];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_1X3_VW == 16
+#include <immintrin.h>
+#define PTP_1X3_VFMA(a, b, c) ((ptp_1x3_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_1X3_VFMAS(a, b, c) PTP_1X3_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_1X3_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_1X3_VFMA(a, b, c) ((ptp_1x3_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_1X3_VFMAS(a, b, c) PTP_1X3_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_1X3_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_1X3_VFMA(a, b, c) ((ptp_1x3_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_1X3_VFMAS(a, b, c) PTP_1X3_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_1X3_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_1X3_VFMA(a, b, c) ((ptp_1x3_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_1X3_VFMAS(a, b, c) PTP_1X3_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_1X3_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_1X3_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_1x3_vf ptp_1x3_vabsmax(ptp_1x3_vf r, ptp_1x3_vf x)
 {
@@ -165,6 +190,12 @@ static inline float ptp_1x3_vfirst(ptp_1x3_vf v)
 {
     return v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_1X3_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_1X3_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_1X3_VFMAS PTP_1X3_VFMA
 #endif
 
 float ptp_1x3_alpha(const float proj[16], int layout)
@@ -407,7 +438,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         const ptp_1x3_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_1x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
             d[1] = ptp_1x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
@@ -421,10 +452,10 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
         const ptp_1x3_vf m1_2 = x1 * y2 - y1 * x2;
         u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         const ptp_1x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
             d[2] = ptp_1x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
@@ -435,15 +466,15 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         const ptp_1x3_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v += 2.0f * u;
+        v = PTP_1X3_VFMAS(2.0f, u, v);
         const ptp_1x3_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         const ptp_1x3_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v += 9.0f * u;
+        v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
             d[3] = ptp_1x3_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
@@ -453,14 +484,14 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         const ptp_1x3_vf m2_7 = x2 * y7 - y2 * x7;
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
-        v += 2.0f * u;
+        v = PTP_1X3_VFMAS(2.0f, u, v);
         const ptp_1x3_vf m3_6 = x3 * y6 - y3 * x6;
         u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v += 9.0f * u;
+        v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
             d[4] = ptp_1x3_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
@@ -470,9 +501,9 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         u -= ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
             d[5] = ptp_1x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
@@ -480,7 +511,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = 2.0f * u;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
             d[6] = ptp_1x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
@@ -502,7 +533,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
         v = 2.0f * u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
             d[9] = ptp_1x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
@@ -513,9 +544,9 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         const ptp_1x3_vf m5_6 = x5 * y6 - y5 * x6;
         u = ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
         u += ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
             d[10] = ptp_1x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
@@ -524,13 +555,13 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         const ptp_1x3_vf m5_7 = x5 * y7 - y5 * x7;
         u = ((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        v += 2.0f * u;
+        v = PTP_1X3_VFMAS(2.0f, u, v);
         u = ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v += 9.0f * u;
+        v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
             d[11] = ptp_1x3_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
@@ -539,13 +570,13 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         v = u;
         u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v += 2.0f * u;
+        v = PTP_1X3_VFMAS(2.0f, u, v);
         u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v += 9.0f * u;
+        v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
             d[12] = ptp_1x3_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
@@ -554,9 +585,9 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         u += ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
             d[13] = ptp_1x3_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
@@ -564,7 +595,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
         v = 2.0f * u;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
             d[14] = ptp_1x3_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;

@@ -43,8 +43,10 @@ extern "C" {
 #define PTP_3X1_FRONT 0u
 #define PTP_3X1_BACK 1u
 #define PTP_3X1_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_3X1_FLOPS 396
+#define PTP_3X1_MULS 240
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X1_LANES
 #define PTP_3X1_LANES 16
@@ -138,6 +140,29 @@ static inline float ptp_3x1_vfirst(ptp_3x1_vf v)
 {
     return v[0];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_3X1_VW == 16
+#include <immintrin.h>
+#define PTP_3X1_VFMA(a, b, c) ((ptp_3x1_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_3X1_VFMAS(a, b, c) PTP_3X1_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_3X1_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_3X1_VFMA(a, b, c) ((ptp_3x1_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_3X1_VFMAS(a, b, c) PTP_3X1_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_3X1_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_3X1_VFMA(a, b, c) ((ptp_3x1_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_3X1_VFMAS(a, b, c) PTP_3X1_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_3X1_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_3X1_VFMA(a, b, c) ((ptp_3x1_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_3X1_VFMAS(a, b, c) PTP_3X1_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_3X1_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_3X1_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_3x1_vf ptp_3x1_vabsmax(ptp_3x1_vf r, ptp_3x1_vf x)
 {
@@ -165,6 +190,12 @@ static inline float ptp_3x1_vfirst(ptp_3x1_vf v)
 {
     return v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_3X1_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_3X1_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_3X1_VFMAS PTP_3X1_VFMA
 #endif
 
 float ptp_3x1_alpha(const float proj[16], int layout)
@@ -414,7 +445,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = 2.0f * u;
         const ptp_3x1_vf m2_3 = x2 * y3 - y2 * x3;
         u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         if (d)
             d[2] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
@@ -424,7 +455,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v = 2.0f * u;
         u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         if (d)
             d[3] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
@@ -437,10 +468,10 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = ((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         const ptp_3x1_vf m2_4 = x2 * y4 - y2 * x4;
         u += ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         const ptp_3x1_vf m3_4 = x3 * y4 - y3 * x4;
         u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v += 6.0f * u;
+        v = PTP_3X1_VFMAS(6.0f, u, v);
         if (d)
             d[4] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
@@ -452,9 +483,9 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         const ptp_3x1_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
         u -= ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         u = ((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v += 6.0f * u;
+        v = PTP_3X1_VFMAS(6.0f, u, v);
         if (d)
             d[5] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
@@ -464,15 +495,15 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = u;
         const ptp_3x1_vf m2_6 = x2 * y6 - y2 * x6;
         u = ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v += 2.0f * u;
+        v = PTP_3X1_VFMAS(2.0f, u, v);
         const ptp_3x1_vf m3_6 = x3 * y6 - y3 * x6;
         u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         const ptp_3x1_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        v += 6.0f * u;
+        v = PTP_3X1_VFMAS(6.0f, u, v);
         u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v += 9.0f * u;
+        v = PTP_3X1_VFMAS(9.0f, u, v);
         if (d)
             d[6] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
@@ -481,13 +512,13 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = u;
         const ptp_3x1_vf m3_7 = x3 * y7 - y3 * x7;
         u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
-        v += 2.0f * u;
+        v = PTP_3X1_VFMAS(2.0f, u, v);
         u = ((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        v += 6.0f * u;
+        v = PTP_3X1_VFMAS(6.0f, u, v);
         u = -((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v += 9.0f * u;
+        v = PTP_3X1_VFMAS(9.0f, u, v);
         if (d)
             d[7] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
@@ -497,14 +528,14 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = u;
         const ptp_3x1_vf m4_7 = x4 * y7 - y4 * x7;
         u = ((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
-        v += 2.0f * u;
+        v = PTP_3X1_VFMAS(2.0f, u, v);
         const ptp_3x1_vf m5_6 = x5 * y6 - y5 * x6;
         u = -((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v += 6.0f * u;
+        v = PTP_3X1_VFMAS(6.0f, u, v);
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v += 9.0f * u;
+        v = PTP_3X1_VFMAS(9.0f, u, v);
         if (d)
             d[8] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
@@ -513,13 +544,13 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
         v = u;
         u = -((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v += 2.0f * u;
+        v = PTP_3X1_VFMAS(2.0f, u, v);
         u = ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v += 6.0f * u;
+        v = PTP_3X1_VFMAS(6.0f, u, v);
         u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
-        v += 9.0f * u;
+        v = PTP_3X1_VFMAS(9.0f, u, v);
         if (d)
             d[9] = ptp_3x1_vfirst(v) * 0.0857142881f;
         notlt |= (v < 0.0f) == 0;
@@ -529,9 +560,9 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = u;
         u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
         u += ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         u = -((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v += 6.0f * u;
+        v = PTP_3X1_VFMAS(6.0f, u, v);
         if (d)
             d[10] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
@@ -540,9 +571,9 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = u;
         u = -((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
-        v += 6.0f * u;
+        v = PTP_3X1_VFMAS(6.0f, u, v);
         if (d)
             d[11] = ptp_3x1_vfirst(v) * 0.142857149f;
         notlt |= (v < 0.0f) == 0;
@@ -550,7 +581,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v = 2.0f * u;
         u = -((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         if (d)
             d[12] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;
@@ -558,7 +589,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = 2.0f * u;
         u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
-        v += 3.0f * u;
+        v = PTP_3X1_VFMAS(3.0f, u, v);
         if (d)
             d[13] = ptp_3x1_vfirst(v) * 0.428571433f;
         notlt |= (v < 0.0f) == 0;

@@ -42,8 +42,10 @@ extern "C" {
 #define PTP_TRI1_FRONT 0u
 #define PTP_TRI1_BACK 1u
 #define PTP_TRI1_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_TRI1_FLOPS 17
+#define PTP_TRI1_MULS 12
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI1_LANES
 #define PTP_TRI1_LANES 16
@@ -137,6 +139,29 @@ static inline float ptp_tri1_vfirst(ptp_tri1_vf v)
 {
     return v[0];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_TRI1_VW == 16
+#include <immintrin.h>
+#define PTP_TRI1_VFMA(a, b, c) ((ptp_tri1_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_TRI1_VFMAS(a, b, c) PTP_TRI1_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_TRI1_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI1_VFMA(a, b, c) ((ptp_tri1_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_TRI1_VFMAS(a, b, c) PTP_TRI1_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_TRI1_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI1_VFMA(a, b, c) ((ptp_tri1_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_TRI1_VFMAS(a, b, c) PTP_TRI1_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_TRI1_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_TRI1_VFMA(a, b, c) ((ptp_tri1_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_TRI1_VFMAS(a, b, c) PTP_TRI1_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_TRI1_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI1_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri1_vf ptp_tri1_vabsmax(ptp_tri1_vf r, ptp_tri1_vf x)
 {
@@ -164,6 +189,12 @@ static inline float ptp_tri1_vfirst(ptp_tri1_vf v)
 {
     return v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_TRI1_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_TRI1_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_TRI1_VFMAS PTP_TRI1_VFMA
 #endif
 
 float ptp_tri1_alpha(const float proj[16], int layout)

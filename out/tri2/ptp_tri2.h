@@ -42,8 +42,10 @@ extern "C" {
 #define PTP_TRI2_FRONT 0u
 #define PTP_TRI2_BACK 1u
 #define PTP_TRI2_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_TRI2_FLOPS 144
+#define PTP_TRI2_MULS 88
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI2_LANES
 #define PTP_TRI2_LANES 16
@@ -137,6 +139,29 @@ static inline float ptp_tri2_vfirst(ptp_tri2_vf v)
 {
     return v[0];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_TRI2_VW == 16
+#include <immintrin.h>
+#define PTP_TRI2_VFMA(a, b, c) ((ptp_tri2_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_TRI2_VFMAS(a, b, c) PTP_TRI2_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_TRI2_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI2_VFMA(a, b, c) ((ptp_tri2_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_TRI2_VFMAS(a, b, c) PTP_TRI2_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_TRI2_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI2_VFMA(a, b, c) ((ptp_tri2_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_TRI2_VFMAS(a, b, c) PTP_TRI2_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_TRI2_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_TRI2_VFMA(a, b, c) ((ptp_tri2_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_TRI2_VFMAS(a, b, c) PTP_TRI2_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_TRI2_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI2_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri2_vf ptp_tri2_vabsmax(ptp_tri2_vf r, ptp_tri2_vf x)
 {
@@ -164,6 +189,12 @@ static inline float ptp_tri2_vfirst(ptp_tri2_vf v)
 {
     return v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_TRI2_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_TRI2_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_TRI2_VFMAS PTP_TRI2_VFMA
 #endif
 
 float ptp_tri2_alpha(const float proj[16], int layout)
@@ -364,10 +395,14 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri2_vf m3_5 = x3 * y5 - y3 * x5;
-        u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+        u = g0 * (m3_5);
+        u = PTP_TRI2_VFMA(g3, -m0_5, u);
+        u = PTP_TRI2_VFMA(g5, m0_3, u);
         v = u;
-        u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 2.0f * u;
+        u = g1 * (-m2_4);
+        u = PTP_TRI2_VFMA(g2, m1_4, u);
+        u = PTP_TRI2_VFMA(g4, -m1_2, u);
+        v = PTP_TRI2_VFMAS(2.0f, u, v);
         if (d)
             d[4] = ptp_tri2_vfirst(v) * 0.666666687f;
         notlt |= (v < 0.0f) == 0;

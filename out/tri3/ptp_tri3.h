@@ -42,8 +42,10 @@ extern "C" {
 #define PTP_TRI3_FRONT 0u
 #define PTP_TRI3_BACK 1u
 #define PTP_TRI3_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
-#define PTP_TRI3_FLOPS 782
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
+#define PTP_TRI3_FLOPS 755
+#define PTP_TRI3_MULS 423
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI3_LANES
 #define PTP_TRI3_LANES 16
@@ -137,6 +139,29 @@ static inline float ptp_tri3_vfirst(ptp_tri3_vf v)
 {
     return v[0];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_TRI3_VW == 16
+#include <immintrin.h>
+#define PTP_TRI3_VFMA(a, b, c) ((ptp_tri3_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_TRI3_VFMAS(a, b, c) PTP_TRI3_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_TRI3_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI3_VFMA(a, b, c) ((ptp_tri3_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_TRI3_VFMAS(a, b, c) PTP_TRI3_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_TRI3_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI3_VFMA(a, b, c) ((ptp_tri3_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_TRI3_VFMAS(a, b, c) PTP_TRI3_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_TRI3_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_TRI3_VFMA(a, b, c) ((ptp_tri3_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_TRI3_VFMAS(a, b, c) PTP_TRI3_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_TRI3_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI3_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri3_vf ptp_tri3_vabsmax(ptp_tri3_vf r, ptp_tri3_vf x)
 {
@@ -164,6 +189,12 @@ static inline float ptp_tri3_vfirst(ptp_tri3_vf v)
 {
     return v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_TRI3_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_TRI3_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_TRI3_VFMAS PTP_TRI3_VFMA
 #endif
 
 float ptp_tri3_alpha(const float proj[16], int layout)
@@ -547,25 +578,32 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         const ptp_tri3_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         const ptp_tri3_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
             d[3] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri3_vf m1_8 = x1 * y8 - y1 * x8;
-        const ptp_tri3_vf m0_8 = x0 * y8 - y0 * x8;
-        u = ((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
         const ptp_tri3_vf m2_7 = x2 * y7 - y2 * x7;
-        u -= ((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+        const ptp_tri3_vf m0_8 = x0 * y8 - y0 * x8;
+        u = g0 * (m1_8 - m2_7);
+        u = PTP_TRI3_VFMA(g1, -m0_8, u);
+        u = PTP_TRI3_VFMA(g2, m0_7, u);
+        u = PTP_TRI3_VFMA(g7, -m0_2, u);
+        u = PTP_TRI3_VFMA(g8, m0_1, u);
         v = u;
         const ptp_tri3_vf m3_5 = x3 * y5 - y3 * x5;
-        u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v += 2.0f * u;
-        u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 3.0f * u;
+        u = g0 * (m3_5);
+        u = PTP_TRI3_VFMA(g3, -m0_5, u);
+        u = PTP_TRI3_VFMA(g5, m0_3, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (-m2_4);
+        u = PTP_TRI3_VFMA(g2, m1_4, u);
+        u = PTP_TRI3_VFMA(g4, -m1_2, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[4] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
@@ -578,10 +616,10 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         const ptp_tri3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         const ptp_tri3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
             d[5] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
@@ -594,39 +632,55 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v = u;
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[6] = ptp_tri3_vfirst(v) * 0.899999976f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_tri3_vf m4_7 = x4 * y7 - y4 * x7;
-        u = -((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         const ptp_tri3_vf m5_6 = x5 * y6 - y5 * x6;
-        u -= ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
+        u = g0 * (-m4_7 - m5_6);
+        u = PTP_TRI3_VFMA(g4, m0_7, u);
+        u = PTP_TRI3_VFMA(g5, m0_6, u);
+        u = PTP_TRI3_VFMA(g6, -m0_5, u);
+        u = PTP_TRI3_VFMA(g7, -m0_4, u);
         v = u;
         const ptp_tri3_vf m3_8 = x3 * y8 - y3 * x8;
-        u = ((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
-        v += 2.0f * u;
-        u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
-        u += ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v += 3.0f * u;
+        u = g0 * (m3_8);
+        u = PTP_TRI3_VFMA(g3, -m0_8, u);
+        u = PTP_TRI3_VFMA(g8, m0_3, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (m3_5 - m2_7);
+        u = PTP_TRI3_VFMA(g2, m1_7 + m3_4, u);
+        u = PTP_TRI3_VFMA(g3, -m1_5 - m2_4, u);
+        u = PTP_TRI3_VFMA(g4, m2_3, u);
+        u = PTP_TRI3_VFMA(g5, m1_3, u);
+        u = PTP_TRI3_VFMA(g7, -m1_2, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[7] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_tri3_vf m3_9 = x3 * y9 - y3 * x9;
-        u = ((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
         const ptp_tri3_vf m4_8 = x4 * y8 - y4 * x8;
-        u += ((g0 * m4_8 - g4 * m0_8) + g8 * m0_4);
+        u = g0 * (m3_9 + m4_8);
+        u = PTP_TRI3_VFMA(g3, -m0_9, u);
+        u = PTP_TRI3_VFMA(g4, -m0_8, u);
+        u = PTP_TRI3_VFMA(g8, m0_4, u);
+        u = PTP_TRI3_VFMA(g9, m0_3, u);
         v = u;
         const ptp_tri3_vf m5_7 = x5 * y7 - y5 * x7;
-        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        v += 2.0f * u;
-        u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
-        u += ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v += 3.0f * u;
+        u = g0 * (-m5_7);
+        u = PTP_TRI3_VFMA(g5, m0_7, u);
+        u = PTP_TRI3_VFMA(g7, -m0_5, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (m4_5 - m2_8);
+        u = PTP_TRI3_VFMA(g2, m1_8 + m3_5, u);
+        u = PTP_TRI3_VFMA(g3, -m2_5, u);
+        u = PTP_TRI3_VFMA(g4, -m1_5, u);
+        u = PTP_TRI3_VFMA(g5, m1_4 + m2_3, u);
+        u = PTP_TRI3_VFMA(g8, -m1_2, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[8] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
@@ -639,7 +693,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
         v = u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[9] = ptp_tri3_vfirst(v) * 0.899999976f;
         notlt |= (v < 0.0f) == 0;
@@ -650,52 +704,80 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v = u;
         u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
             d[10] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri3_vf m6_8 = x6 * y8 - y6 * x8;
-        u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
-        u -= ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
+        u = g0 * (m6_8);
+        u = PTP_TRI3_VFMA(g2, -m4_6, u);
+        u = PTP_TRI3_VFMA(g4, m2_6, u);
+        u = PTP_TRI3_VFMA(g6, -m2_4 - m0_8, u);
+        u = PTP_TRI3_VFMA(g8, m0_6, u);
         v = u;
-        u = -((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v += 2.0f * u;
-        u = ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
-        u -= ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v += 3.0f * u;
+        u = g1 * (-m5_6);
+        u = PTP_TRI3_VFMA(g5, m1_6, u);
+        u = PTP_TRI3_VFMA(g6, -m1_5, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (m3_8 - m4_7);
+        u = PTP_TRI3_VFMA(g2, m3_7, u);
+        u = PTP_TRI3_VFMA(g3, -m1_8 - m2_7, u);
+        u = PTP_TRI3_VFMA(g4, m1_7, u);
+        u = PTP_TRI3_VFMA(g7, m2_3 - m1_4, u);
+        u = PTP_TRI3_VFMA(g8, m1_3, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[11] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_tri3_vf m6_9 = x6 * y9 - y6 * x9;
-        u = ((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
+        u = g0 * (m6_9);
+        u = PTP_TRI3_VFMA(g6, -m0_9, u);
+        u = PTP_TRI3_VFMA(g9, m0_6, u);
         v = u;
         const ptp_tri3_vf m7_8 = x7 * y8 - y7 * x8;
-        u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
-        u += ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
-        u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v += 3.0f * u;
-        u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
-        v += 9.0f * u;
+        u = g0 * (m7_8);
+        u = PTP_TRI3_VFMA(g1, m3_9, u);
+        u = PTP_TRI3_VFMA(g2, -m5_6, u);
+        u = PTP_TRI3_VFMA(g3, -m1_9, u);
+        u = PTP_TRI3_VFMA(g5, m2_6, u);
+        u = PTP_TRI3_VFMA(g6, -m2_5, u);
+        u = PTP_TRI3_VFMA(g7, -m0_8, u);
+        u = PTP_TRI3_VFMA(g8, m0_7, u);
+        u = PTP_TRI3_VFMA(g9, m1_3, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        u = g1 * (-m5_7);
+        u = PTP_TRI3_VFMA(g2, m3_8, u);
+        u = PTP_TRI3_VFMA(g3, -m2_8, u);
+        u = PTP_TRI3_VFMA(g5, m1_7, u);
+        u = PTP_TRI3_VFMA(g7, -m1_5, u);
+        u = PTP_TRI3_VFMA(g8, m2_3, u);
+        v = PTP_TRI3_VFMAS(9.0f, u, v);
         if (d)
             d[12] = ptp_tri3_vfirst(v) * 0.100000001f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_tri3_vf m7_9 = x7 * y9 - y7 * x9;
-        u = ((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
-        u += ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
+        u = g0 * (m7_9);
+        u = PTP_TRI3_VFMA(g1, m4_9, u);
+        u = PTP_TRI3_VFMA(g4, -m1_9, u);
+        u = PTP_TRI3_VFMA(g7, -m0_9, u);
+        u = PTP_TRI3_VFMA(g9, m1_4 + m0_7, u);
         v = u;
-        u = ((g2 * m3_9 - g3 * m2_9) + g9 * m2_3);
-        v += 2.0f * u;
-        u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
-        u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
-        u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v += 3.0f * u;
+        u = g2 * (m3_9);
+        u = PTP_TRI3_VFMA(g3, -m2_9, u);
+        u = PTP_TRI3_VFMA(g9, m2_3, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (-m5_8);
+        u = PTP_TRI3_VFMA(g2, m4_8 - m5_7, u);
+        u = PTP_TRI3_VFMA(g4, -m2_8, u);
+        u = PTP_TRI3_VFMA(g5, m1_8 + m2_7, u);
+        u = PTP_TRI3_VFMA(g7, -m2_5, u);
+        u = PTP_TRI3_VFMA(g8, m2_4 - m1_5, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[13] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
@@ -706,9 +788,9 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
         v = u;
         u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
             d[14] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
@@ -720,50 +802,80 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
             d[15] = ptp_tri3_vfirst(v) * 3.0f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
-        u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
-        u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
+        u = g2 * (m6_7);
+        u = PTP_TRI3_VFMA(g3, -m5_6, u);
+        u = PTP_TRI3_VFMA(g5, m3_6, u);
+        u = PTP_TRI3_VFMA(g6, -m2_7 - m3_5, u);
+        u = PTP_TRI3_VFMA(g7, m2_6, u);
         v = u;
-        u = ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
-        v += 2.0f * u;
-        u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
-        v += 3.0f * u;
+        u = g1 * (m6_8);
+        u = PTP_TRI3_VFMA(g6, -m1_8, u);
+        u = PTP_TRI3_VFMA(g8, m1_6, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g3 * (-m4_7);
+        u = PTP_TRI3_VFMA(g4, m3_7, u);
+        u = PTP_TRI3_VFMA(g7, -m3_4, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[16] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
-        u = ((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
-        u -= ((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
+        u = g1 * (m6_9);
+        u = PTP_TRI3_VFMA(g4, -m5_6, u);
+        u = PTP_TRI3_VFMA(g5, m4_6, u);
+        u = PTP_TRI3_VFMA(g6, -m1_9 - m4_5, u);
+        u = PTP_TRI3_VFMA(g9, m1_6, u);
         v = u;
-        u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
-        v += 2.0f * u;
-        u = ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
-        u -= ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
-        u -= ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
-        v += 3.0f * u;
+        u = g2 * (m6_8);
+        u = PTP_TRI3_VFMA(g6, -m2_8, u);
+        u = PTP_TRI3_VFMA(g8, m2_6, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (m7_8);
+        u = PTP_TRI3_VFMA(g3, -m4_8 - m5_7, u);
+        u = PTP_TRI3_VFMA(g4, m3_8, u);
+        u = PTP_TRI3_VFMA(g5, m3_7, u);
+        u = PTP_TRI3_VFMA(g7, -m1_8 - m3_5, u);
+        u = PTP_TRI3_VFMA(g8, m1_7 - m3_4, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[17] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
-        u = ((g2 * m6_9 - g6 * m2_9) + g9 * m2_6);
-        u -= ((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
+        u = g2 * (m6_9);
+        u = PTP_TRI3_VFMA(g3, -m4_9, u);
+        u = PTP_TRI3_VFMA(g4, m3_9, u);
+        u = PTP_TRI3_VFMA(g6, -m2_9, u);
+        u = PTP_TRI3_VFMA(g9, m2_6 - m3_4, u);
         v = u;
-        u = ((g1 * m7_9 - g7 * m1_9) + g9 * m1_7);
-        v += 2.0f * u;
-        u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
-        u -= ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
-        u -= ((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
-        v += 3.0f * u;
+        u = g1 * (m7_9);
+        u = PTP_TRI3_VFMA(g7, -m1_9, u);
+        u = PTP_TRI3_VFMA(g9, m1_7, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g2 * (m7_8);
+        u = PTP_TRI3_VFMA(g3, -m5_8, u);
+        u = PTP_TRI3_VFMA(g4, -m5_7, u);
+        u = PTP_TRI3_VFMA(g5, m4_7 + m3_8, u);
+        u = PTP_TRI3_VFMA(g7, -m2_8 - m4_5, u);
+        u = PTP_TRI3_VFMA(g8, m2_7 - m3_5, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[18] = ptp_tri3_vfirst(v) * 0.300000012f;
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
-        u = ((g1 * m8_9 - g8 * m1_9) + g9 * m1_8);
-        u -= ((g3 * m5_9 - g5 * m3_9) + g9 * m3_5);
+        u = g1 * (m8_9);
+        u = PTP_TRI3_VFMA(g3, -m5_9, u);
+        u = PTP_TRI3_VFMA(g5, m3_9, u);
+        u = PTP_TRI3_VFMA(g8, -m1_9, u);
+        u = PTP_TRI3_VFMA(g9, m1_8 - m3_5, u);
         v = u;
-        u = ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
-        v += 2.0f * u;
-        u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
-        v += 3.0f * u;
+        u = g2 * (m7_9);
+        u = PTP_TRI3_VFMA(g7, -m2_9, u);
+        u = PTP_TRI3_VFMA(g9, m2_7, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g4 * (-m5_8);
+        u = PTP_TRI3_VFMA(g5, m4_8, u);
+        u = PTP_TRI3_VFMA(g8, -m4_5, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[19] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
@@ -792,9 +904,9 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
         v = u;
         u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
             d[23] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
@@ -804,7 +916,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
         v = u;
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             d[24] = ptp_tri3_vfirst(v) * 0.899999976f;
         notlt |= (v < 0.0f) == 0;
@@ -813,9 +925,9 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
         v = u;
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
             d[25] = ptp_tri3_vfirst(v) * 0.600000024f;
         notlt |= (v < 0.0f) == 0;
