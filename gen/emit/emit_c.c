@@ -341,14 +341,14 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
                 " * Laplace expansions over shared 2x2 minors. An iteration classifies %sVW patches,\n"
                 " * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations\n"
                 " * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last\n"
-                " * one. Products are never contracted into FMAs: equal points give exact zeros.\n"
-                " * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a\n"
-                " * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)\n"
-                " * and values. */\n"
+                " * one. Exact planes never contract products into FMAs (equal points give exact zeros);\n"
+                " * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P\n"
+                " * of patch l that decides, at true scale: times a positive float per plane, which keeps\n"
+                " * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */\n"
                 "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
                 "static inline void %slanes_body(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
                 "%*sconst float eye[4], unsigned char *%sRESTRICT cls,\n"
-                "%*sfloat *%sRESTRICT d)\n{\n"
+                "%*sfloat *%sRESTRICT d, size_t ds)\n{\n"
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
                 up, up, px, up, (int)strlen(px) + 31, "", up, (int)strlen(px) + 31, "", up);
     if (world)
@@ -429,16 +429,17 @@ static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const ce
     }
 }
 
-/* With d: d[P] = lane 0 of the value v of plane P times 1/c_P (its scale), which keeps v's sign. */
+/* With d: d[P * ds + l] = the value v of plane P of each patch l times 1/c_P (its scale), which
+ * keeps v's sign. */
 static void put_value_store(sbuf *o, const slp_prog *p, int plane, const char *px)
 {
     char k[40];
     rat one, inv;
     rat_set_si(&one, 1);
-    sbuf_printf(o, "        if (d)\n            d[%d] = %svfirst(v)", plane, px);
+    sbuf_printf(o, "        if (d)\n            %svstoref(d + %d * ds + l, v", px, plane);
     if (!rat_equal(&p->c[plane], &one) && !rat_div(&inv, &one, &p->c[plane]))
         sbuf_printf(o, " * %s", fmt_float_literal(k, &inv));
-    sbuf_puts(o, ";\n");
+    sbuf_puts(o, ", n - l);\n");
 }
 
 /* The terms of exact plane from term a, in bracket form; returns the end of its terms. */
@@ -535,12 +536,21 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
                    "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
                    "static void %slanes(const float *%sRESTRICT soa, size_t stride, size_t n, const float eye[4],\n"
                    "%*sunsigned char *%sRESTRICT cls)\n{\n"
-                   "    %slanes_body(soa, stride, n, eye, cls, NULL);\n}\n\n"
+                   "    %slanes_body(soa, stride, n, eye, cls, NULL, 0);\n}\n\n"
                    "void %svalues(const float cp[][4], const float eye[4], float d[])\n{\n"
                    "    unsigned char c;\n"
-                   "    %slanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */\n}\n"
-                   "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n",
+                   "    %slanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */\n}\n",
                 px, up, (int)strlen(px) + 18, "", up, px, px, px);
+    if (info->refine) /* classify_batch refines from the values of a whole block */
+        sbuf_printf(o, "\n/* The classes and values d[P * ds + l] of n patches (--refine: classify_batch). */\n"
+                       "#if defined(__GNUC__) && !defined(__clang__)\n"
+                       "__attribute__((noinline, noclone))\n"
+                       "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
+                       "static void %slanes_values(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
+                       "%*sconst float eye[4], unsigned char *%sRESTRICT cls, float *d, size_t ds)\n{\n"
+                       "    %slanes_body(soa, stride, n, eye, cls, d, ds);\n}\n",
+                    px, up, (int)strlen(px) + 25, "", up, px);
+    sbuf_puts(o, "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
 }
 
 /* The straight-line kernel over n patches in structure-of-arrays order (the lanes function). */
@@ -596,10 +606,13 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
 {
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
+    char lanes[80], dv[160]; /* --refine: the block's values dv */
+    snprintf(lanes, sizeof lanes, "%sLANES", up);
+    snprintf(dv, sizeof dv, ", dv[%sPLANES * %sLANES]", up, up);
     /* clip space never reads z: the transposition skips it */
     sbuf_printf(o, "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
                    "                    unsigned char *cls)\n{\n"
-                   "    float soa[%sPOINTS * 4 * %sLANES];\n"
+                   "    float soa[%sPOINTS * 4 * %sLANES]%s;\n"
                    "    size_t p, l, n;\n"
                    "    unsigned k, c;\n"
                    "    for (p = 0; p < patch_count; p += n) {\n"
@@ -615,7 +628,7 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
                    "                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);\n"
                    "                _mm_storeu_ps(soa + (k * 4 + 0) * %sLANES + l, r0);\n"
                    "                _mm_storeu_ps(soa + (k * 4 + 1) * %sLANES + l, r1);\n",
-                px, up, up, up, up, up, up, up, up, up, up, up, up);
+                px, up, up, info->refine ? dv : "", up, up, up, up, up, up, up, up, up, up);
     if (world)
         sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 2) * %sLANES + l, r2);\n", up);
     sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 3) * %sLANES + l, r3);\n"
@@ -636,9 +649,19 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
                    "                __builtin_prefetch(next + b, 0, 0);\n"
                    "        }\n"
                    "#endif\n"
-                   "        %slanes(soa, %sLANES, n, eye, cls + p);\n",
-                up, up, up, up, px, up);
-    if (second)
+                   "        %slanes%s(soa, %sLANES, n, eye, cls + p%s%s);\n",
+                up, up, up, up, px, info->refine ? "_values" : "", up,
+                info->refine ? ", dv, " : "", info->refine ? lanes : "");
+    if (info->refine) /* the silhouette patches refined from the block's values */
+        sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
+                       "            if (cls[p + l] == %sSILHOUETTE) {\n"
+                       "                float d[%sPLANES];\n"
+                       "                for (k = 0; k < %sPLANES; k++)\n"
+                       "                    d[k] = dv[k * %sLANES + l];\n"
+                       "                cls[p + l] = (unsigned char)%ssplit_class(d, %d);\n"
+                       "            }\n",
+                    up, up, up, up, px, info->refine);
+    else if (second)
         sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
                        "            if (cls[p + l] == %s)\n"
                        "                cls[p + l] = (unsigned char)%s%s(cp + (p + l) * %sPOINTS, eye);\n",

@@ -135,10 +135,12 @@ static inline void ptp_1x3_vstore(unsigned char *cls, ptp_1x3_vm c, size_t count
     for (i = 0; i < count && i < PTP_1X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_1x3_vfirst(ptp_1x3_vf v)
+/* d[i] = v[i] for the first count (at most PTP_1X3_VW) lanes. */
+static inline void ptp_1x3_vstoref(float *d, ptp_1x3_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_1X3_VW; i++)
+        d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
  * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
@@ -186,9 +188,10 @@ static inline ptp_1x3_vf ptp_1x3_vabsmax(ptp_1x3_vf r, ptp_1x3_vf x)
 {
     return PTP_1X3_ABSMAX(r, x);
 }
-static inline float ptp_1x3_vfirst(ptp_1x3_vf v)
+static inline void ptp_1x3_vstoref(float *d, ptp_1x3_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_1X3_VFMA(a, b, c) __builtin_fmaf(a, b, c)
@@ -373,16 +376,16 @@ void ptp_1x3_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_1X3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t stride, size_t n,
                                        const float eye[4], unsigned char *PTP_1X3_RESTRICT cls,
-                                       float *PTP_1X3_RESTRICT d)
+                                       float *PTP_1X3_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -428,7 +431,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_1x3_vfirst(v) * 3.0f;
+            ptp_1x3_vstoref(d + 0 * ds + l, v * 3.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_1x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -440,7 +443,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
-            d[1] = ptp_1x3_vfirst(v) * 0.428571433f;
+            ptp_1x3_vstoref(d + 1 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_1x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -457,7 +460,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
-            d[2] = ptp_1x3_vfirst(v) * 0.142857149f;
+            ptp_1x3_vstoref(d + 2 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_1x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -476,7 +479,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
-            d[3] = ptp_1x3_vfirst(v) * 0.0857142881f;
+            ptp_1x3_vstoref(d + 3 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_1x3_vf m2_3 = x2 * y3 - y2 * x3;
@@ -493,7 +496,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
-            d[4] = ptp_1x3_vfirst(v) * 0.0857142881f;
+            ptp_1x3_vstoref(d + 4 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_1x3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -505,7 +508,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
         v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
-            d[5] = ptp_1x3_vfirst(v) * 0.142857149f;
+            ptp_1x3_vstoref(d + 5 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
@@ -513,20 +516,20 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
-            d[6] = ptp_1x3_vfirst(v) * 0.428571433f;
+            ptp_1x3_vstoref(d + 6 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
         if (d)
-            d[7] = ptp_1x3_vfirst(v) * 3.0f;
+            ptp_1x3_vstoref(d + 7 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_1x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = u;
         if (d)
-            d[8] = ptp_1x3_vfirst(v) * 3.0f;
+            ptp_1x3_vstoref(d + 8 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_1x3_vf m4_6 = x4 * y6 - y4 * x6;
@@ -535,7 +538,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
-            d[9] = ptp_1x3_vfirst(v) * 0.428571433f;
+            ptp_1x3_vstoref(d + 9 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_1x3_vf m4_7 = x4 * y7 - y4 * x7;
@@ -548,7 +551,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
-            d[10] = ptp_1x3_vfirst(v) * 0.142857149f;
+            ptp_1x3_vstoref(d + 10 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
@@ -563,7 +566,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
-            d[11] = ptp_1x3_vfirst(v) * 0.0857142881f;
+            ptp_1x3_vstoref(d + 11 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_1x3_vf m6_7 = x6 * y7 - y6 * x7;
@@ -578,7 +581,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
         v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
-            d[12] = ptp_1x3_vfirst(v) * 0.0857142881f;
+            ptp_1x3_vstoref(d + 12 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
@@ -589,7 +592,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
-            d[13] = ptp_1x3_vfirst(v) * 0.142857149f;
+            ptp_1x3_vstoref(d + 13 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
@@ -597,13 +600,13 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
-            d[14] = ptp_1x3_vfirst(v) * 0.428571433f;
+            ptp_1x3_vstoref(d + 14 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
         if (d)
-            d[15] = ptp_1x3_vfirst(v) * 3.0f;
+            ptp_1x3_vstoref(d + 15 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -623,13 +626,13 @@ __attribute__((noinline))
 static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                           unsigned char *PTP_1X3_RESTRICT cls)
 {
-    ptp_1x3_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_1x3_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_1x3_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_1x3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_1x3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -135,10 +135,12 @@ static inline void ptp_3x2_vstore(unsigned char *cls, ptp_3x2_vm c, size_t count
     for (i = 0; i < count && i < PTP_3X2_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_3x2_vfirst(ptp_3x2_vf v)
+/* d[i] = v[i] for the first count (at most PTP_3X2_VW) lanes. */
+static inline void ptp_3x2_vstoref(float *d, ptp_3x2_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_3X2_VW; i++)
+        d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
  * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
@@ -186,9 +188,10 @@ static inline ptp_3x2_vf ptp_3x2_vabsmax(ptp_3x2_vf r, ptp_3x2_vf x)
 {
     return PTP_3X2_ABSMAX(r, x);
 }
-static inline float ptp_3x2_vfirst(ptp_3x2_vf v)
+static inline void ptp_3x2_vstoref(float *d, ptp_3x2_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_3X2_VFMA(a, b, c) __builtin_fmaf(a, b, c)
@@ -677,16 +680,16 @@ void ptp_3x2_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_3X2_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t stride, size_t n,
                                        const float eye[4], unsigned char *PTP_3X2_RESTRICT cls,
-                                       float *PTP_3X2_RESTRICT d)
+                                       float *PTP_3X2_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -740,7 +743,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_3x2_vfirst(v) * 6.0f;
+            ptp_3x2_vstoref(d + 0 * ds + l, v * 6.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_3x2_vf m2_3 = x2 * y3 - y2 * x3;
@@ -752,7 +755,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = PTP_3X2_VFMAS(2.0f, u, v);
         if (d)
-            d[1] = ptp_3x2_vfirst(v) * 1.5f;
+            ptp_3x2_vstoref(d + 1 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_3x2_vf m1_5 = x1 * y5 - y1 * x5;
@@ -765,7 +768,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = PTP_3X2_VFMAS(2.0f, u, v);
         if (d)
-            d[2] = ptp_3x2_vfirst(v);
+            ptp_3x2_vstoref(d + 2 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_3x2_vf m2_5 = x2 * y5 - y2 * x5;
@@ -774,13 +777,13 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
         v = PTP_3X2_VFMAS(2.0f, u, v);
         if (d)
-            d[3] = ptp_3x2_vfirst(v) * 1.5f;
+            ptp_3x2_vstoref(d + 3 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v = u;
         if (d)
-            d[4] = ptp_3x2_vfirst(v) * 6.0f;
+            ptp_3x2_vstoref(d + 4 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_3x2_vf m1_6 = x1 * y6 - y1 * x6;
@@ -791,7 +794,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         if (d)
-            d[5] = ptp_3x2_vfirst(v) * 0.857142866f;
+            ptp_3x2_vstoref(d + 5 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_3x2_vf m2_6 = x2 * y6 - y2 * x6;
@@ -815,7 +818,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g4, m1_3, u);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[6] = ptp_3x2_vfirst(v) * 0.214285716f;
+            ptp_3x2_vstoref(d + 6 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_3x2_vf m1_8 = x1 * y8 - y1 * x8;
@@ -843,7 +846,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g5, m1_3, u);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[7] = ptp_3x2_vfirst(v) * 0.142857149f;
+            ptp_3x2_vstoref(d + 7 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_3x2_vf m2_8 = x2 * y8 - y2 * x8;
@@ -864,7 +867,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g5, m1_4, u);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[8] = ptp_3x2_vfirst(v) * 0.214285716f;
+            ptp_3x2_vstoref(d + 8 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
@@ -872,7 +875,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         if (d)
-            d[9] = ptp_3x2_vfirst(v) * 0.857142866f;
+            ptp_3x2_vstoref(d + 9 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_3x2_vf m1_9 = x1 * y9 - y1 * x9;
@@ -888,7 +891,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[10] = ptp_3x2_vfirst(v) * 0.285714298f;
+            ptp_3x2_vstoref(d + 10 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_3x2_vf m2_9 = x2 * y9 - y2 * x9;
@@ -923,7 +926,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g7, m1_3, u);
         v = PTP_3X2_VFMAS(12.0f, u, v);
         if (d)
-            d[11] = ptp_3x2_vfirst(v) * 0.0714285746f;
+            ptp_3x2_vstoref(d + 11 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_3x2_vf m1_11 = x1 * y11 - y1 * x11;
@@ -950,7 +953,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g8, m1_3, u);
         v = PTP_3X2_VFMAS(9.0f, u, v);
         if (d)
-            d[12] = ptp_3x2_vfirst(v) * 0.0476190485f;
+            ptp_3x2_vstoref(d + 12 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_3x2_vf m2_11 = x2 * y11 - y2 * x11;
@@ -982,7 +985,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g7, -m1_5, u);
         v = PTP_3X2_VFMAS(12.0f, u, v);
         if (d)
-            d[13] = ptp_3x2_vfirst(v) * 0.0714285746f;
+            ptp_3x2_vstoref(d + 13 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = -((g1 * m2_11 - g2 * m1_11) + g11 * m1_2);
@@ -993,7 +996,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[14] = ptp_3x2_vfirst(v) * 0.285714298f;
+            ptp_3x2_vstoref(d + 14 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_3x2_vf m3_10 = x3 * y10 - y3 * x10;
@@ -1011,7 +1014,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v = PTP_3X2_VFMAS(9.0f, u, v);
         if (d)
-            d[15] = ptp_3x2_vfirst(v) * 0.171428576f;
+            ptp_3x2_vstoref(d + 15 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_3x2_vf m3_11 = x3 * y11 - y3 * x11;
@@ -1056,7 +1059,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g7, -m3_4, u);
         v = PTP_3X2_VFMAS(18.0f, u, v);
         if (d)
-            d[16] = ptp_3x2_vfirst(v) * 0.042857144f;
+            ptp_3x2_vstoref(d + 16 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_3x2_vf m4_11 = x4 * y11 - y4 * x11;
@@ -1101,7 +1104,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g7, -m3_5, u);
         v = PTP_3X2_VFMAS(18.0f, u, v);
         if (d)
-            d[17] = ptp_3x2_vfirst(v) * 0.0285714287f;
+            ptp_3x2_vstoref(d + 17 * ds + l, v * 0.0285714287f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         u = g2 * (-m5_9);
@@ -1143,7 +1146,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g7, -m4_5, u);
         v = PTP_3X2_VFMAS(18.0f, u, v);
         if (d)
-            d[18] = ptp_3x2_vfirst(v) * 0.042857144f;
+            ptp_3x2_vstoref(d + 18 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = -((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
@@ -1157,7 +1160,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v = PTP_3X2_VFMAS(9.0f, u, v);
         if (d)
-            d[19] = ptp_3x2_vfirst(v) * 0.171428576f;
+            ptp_3x2_vstoref(d + 19 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         const ptp_3x2_vf m6_9 = x6 * y9 - y6 * x9;
@@ -1174,7 +1177,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = PTP_3X2_VFMAS(9.0f, u, v);
         if (d)
-            d[20] = ptp_3x2_vfirst(v) * 0.171428576f;
+            ptp_3x2_vstoref(d + 20 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = g2 * (m6_9);
@@ -1218,7 +1221,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g7, m4_6, u);
         v = PTP_3X2_VFMAS(18.0f, u, v);
         if (d)
-            d[21] = ptp_3x2_vfirst(v) * 0.042857144f;
+            ptp_3x2_vstoref(d + 21 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         const ptp_3x2_vf m7_11 = x7 * y11 - y7 * x11;
@@ -1262,7 +1265,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g8, m4_6, u);
         v = PTP_3X2_VFMAS(18.0f, u, v);
         if (d)
-            d[22] = ptp_3x2_vfirst(v) * 0.0285714287f;
+            ptp_3x2_vstoref(d + 22 * ds + l, v * 0.0285714287f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         const ptp_3x2_vf m8_11 = x8 * y11 - y8 * x11;
@@ -1304,7 +1307,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g8, m4_7, u);
         v = PTP_3X2_VFMAS(18.0f, u, v);
         if (d)
-            d[23] = ptp_3x2_vfirst(v) * 0.042857144f;
+            ptp_3x2_vstoref(d + 23 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         u = -((g1 * m8_11 - g8 * m1_11) + g11 * m1_8);
@@ -1318,7 +1321,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
         v = PTP_3X2_VFMAS(9.0f, u, v);
         if (d)
-            d[24] = ptp_3x2_vfirst(v) * 0.171428576f;
+            ptp_3x2_vstoref(d + 24 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_3x2_vf m9_10 = x9 * y10 - y9 * x10;
@@ -1330,7 +1333,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[25] = ptp_3x2_vfirst(v) * 0.285714298f;
+            ptp_3x2_vstoref(d + 25 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_3x2_vf m9_11 = x9 * y11 - y9 * x11;
@@ -1360,7 +1363,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g10, m4_6, u);
         v = PTP_3X2_VFMAS(12.0f, u, v);
         if (d)
-            d[26] = ptp_3x2_vfirst(v) * 0.0714285746f;
+            ptp_3x2_vstoref(d + 26 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         const ptp_3x2_vf m10_11 = x10 * y11 - y10 * x11;
@@ -1384,7 +1387,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g11, m4_6, u);
         v = PTP_3X2_VFMAS(9.0f, u, v);
         if (d)
-            d[27] = ptp_3x2_vfirst(v) * 0.0476190485f;
+            ptp_3x2_vstoref(d + 27 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         u = g2 * (m9_11);
@@ -1413,7 +1416,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g10, -m4_8, u);
         v = PTP_3X2_VFMAS(12.0f, u, v);
         if (d)
-            d[28] = ptp_3x2_vfirst(v) * 0.0714285746f;
+            ptp_3x2_vstoref(d + 28 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         u = ((g2 * m10_11 - g10 * m2_11) + g11 * m2_10);
@@ -1424,7 +1427,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g5 * m7_11 - g7 * m5_11) + g11 * m5_7);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[29] = ptp_3x2_vfirst(v) * 0.285714298f;
+            ptp_3x2_vstoref(d + 29 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = ((g3 * m9_10 - g9 * m3_10) + g10 * m3_9);
@@ -1432,7 +1435,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g6 * m7_9 - g7 * m6_9) + g9 * m6_7);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         if (d)
-            d[30] = ptp_3x2_vfirst(v) * 0.857142866f;
+            ptp_3x2_vstoref(d + 30 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = g3 * (m9_11);
@@ -1452,7 +1455,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g10, -m6_7, u);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[31] = ptp_3x2_vfirst(v) * 0.214285716f;
+            ptp_3x2_vstoref(d + 31 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = g3 * (m10_11);
@@ -1476,7 +1479,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g10, -m6_8, u);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[32] = ptp_3x2_vfirst(v) * 0.142857149f;
+            ptp_3x2_vstoref(d + 32 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = g5 * (m9_11);
@@ -1496,7 +1499,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g10, -m7_8, u);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            d[33] = ptp_3x2_vfirst(v) * 0.214285716f;
+            ptp_3x2_vstoref(d + 33 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
@@ -1504,13 +1507,13 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         if (d)
-            d[34] = ptp_3x2_vfirst(v) * 0.857142866f;
+            ptp_3x2_vstoref(d + 34 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         u = ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
         v = u;
         if (d)
-            d[35] = ptp_3x2_vfirst(v) * 6.0f;
+            ptp_3x2_vstoref(d + 35 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
@@ -1518,7 +1521,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g7 * m9_10 - g9 * m7_10) + g10 * m7_9);
         v = PTP_3X2_VFMAS(2.0f, u, v);
         if (d)
-            d[36] = ptp_3x2_vfirst(v) * 1.5f;
+            ptp_3x2_vstoref(d + 36 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
@@ -1527,7 +1530,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
         v = PTP_3X2_VFMAS(2.0f, u, v);
         if (d)
-            d[37] = ptp_3x2_vfirst(v);
+            ptp_3x2_vstoref(d + 37 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = ((g8 * m9_11 - g9 * m8_11) + g11 * m8_9);
@@ -1535,13 +1538,13 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = PTP_3X2_VFMAS(2.0f, u, v);
         if (d)
-            d[38] = ptp_3x2_vfirst(v) * 1.5f;
+            ptp_3x2_vstoref(d + 38 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = ((g8 * m10_11 - g10 * m8_11) + g11 * m8_10);
         v = u;
         if (d)
-            d[39] = ptp_3x2_vfirst(v) * 6.0f;
+            ptp_3x2_vstoref(d + 39 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -1561,13 +1564,13 @@ __attribute__((noinline))
 static void ptp_3x2_lanes(const float *PTP_3X2_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                           unsigned char *PTP_3X2_RESTRICT cls)
 {
-    ptp_3x2_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_3x2_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_3x2_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_3x2_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_3x2_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

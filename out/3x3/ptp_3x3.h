@@ -135,10 +135,12 @@ static inline void ptp_3x3_vstore(unsigned char *cls, ptp_3x3_vm c, size_t count
     for (i = 0; i < count && i < PTP_3X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_3x3_vfirst(ptp_3x3_vf v)
+/* d[i] = v[i] for the first count (at most PTP_3X3_VW) lanes. */
+static inline void ptp_3x3_vstoref(float *d, ptp_3x3_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_3X3_VW; i++)
+        d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
  * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
@@ -186,9 +188,10 @@ static inline ptp_3x3_vf ptp_3x3_vabsmax(ptp_3x3_vf r, ptp_3x3_vf x)
 {
     return PTP_3X3_ABSMAX(r, x);
 }
-static inline float ptp_3x3_vfirst(ptp_3x3_vf v)
+static inline void ptp_3x3_vstoref(float *d, ptp_3x3_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_3X3_VFMA(a, b, c) __builtin_fmaf(a, b, c)
@@ -1309,16 +1312,16 @@ void ptp_3x3_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_3X3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t stride, size_t n,
                                        const float eye[4], unsigned char *PTP_3X3_RESTRICT cls,
-                                       float *PTP_3X3_RESTRICT d)
+                                       float *PTP_3X3_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -1380,7 +1383,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_3x3_vfirst(v) * 9.0f;
+            ptp_3x3_vstoref(d + 0 * ds + l, v * 9.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_3x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -1392,7 +1395,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v = PTP_3X3_VFMAS(3.0f, u, v);
         if (d)
-            d[1] = ptp_3x3_vfirst(v) * 1.28571427f;
+            ptp_3x3_vstoref(d + 1 * ds + l, v * 1.28571427f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_3x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -1409,7 +1412,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v = PTP_3X3_VFMAS(6.0f, u, v);
         if (d)
-            d[2] = ptp_3x3_vfirst(v) * 0.428571433f;
+            ptp_3x3_vstoref(d + 2 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_3x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -1428,7 +1431,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[3] = ptp_3x3_vfirst(v) * 0.257142872f;
+            ptp_3x3_vstoref(d + 3 * ds + l, v * 0.257142872f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_3x3_vf m2_3 = x2 * y3 - y2 * x3;
@@ -1445,7 +1448,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[4] = ptp_3x3_vfirst(v) * 0.257142872f;
+            ptp_3x3_vstoref(d + 4 * ds + l, v * 0.257142872f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_3x3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -1457,7 +1460,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
         v = PTP_3X3_VFMAS(6.0f, u, v);
         if (d)
-            d[5] = ptp_3x3_vfirst(v) * 0.428571433f;
+            ptp_3x3_vstoref(d + 5 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
@@ -1465,13 +1468,13 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v = PTP_3X3_VFMAS(3.0f, u, v);
         if (d)
-            d[6] = ptp_3x3_vfirst(v) * 1.28571427f;
+            ptp_3x3_vstoref(d + 6 * ds + l, v * 1.28571427f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
         if (d)
-            d[7] = ptp_3x3_vfirst(v) * 9.0f;
+            ptp_3x3_vstoref(d + 7 * ds + l, v * 9.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_3x3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -1482,7 +1485,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = PTP_3X3_VFMAS(3.0f, u, v);
         if (d)
-            d[8] = ptp_3x3_vfirst(v) * 1.28571427f;
+            ptp_3x3_vstoref(d + 8 * ds + l, v * 1.28571427f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_3x3_vf m2_8 = x2 * y8 - y2 * x8;
@@ -1504,7 +1507,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g5, m1_4, u);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[9] = ptp_3x3_vfirst(v) * 0.183673471f;
+            ptp_3x3_vstoref(d + 9 * ds + l, v * 0.183673471f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_3x3_vf m3_8 = x3 * y8 - y3 * x8;
@@ -1542,7 +1545,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g6, m1_4, u);
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
-            d[10] = ptp_3x3_vfirst(v) * 0.0612244904f;
+            ptp_3x3_vstoref(d + 10 * ds + l, v * 0.0612244904f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_3x3_vf m1_11 = x1 * y11 - y1 * x11;
@@ -1587,7 +1590,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g6, m1_5, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[11] = ptp_3x3_vfirst(v) * 0.0367346928f;
+            ptp_3x3_vstoref(d + 11 * ds + l, v * 0.0367346928f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         u = g2 * (-m3_8);
@@ -1630,7 +1633,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g6, m2_5, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[12] = ptp_3x3_vfirst(v) * 0.0367346928f;
+            ptp_3x3_vstoref(d + 12 * ds + l, v * 0.0367346928f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_3x3_vf m3_11 = x3 * y11 - y3 * x11;
@@ -1663,7 +1666,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g7, m2_5, u);
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
-            d[13] = ptp_3x3_vfirst(v) * 0.0612244904f;
+            ptp_3x3_vstoref(d + 13 * ds + l, v * 0.0612244904f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = g1 * (-m3_11);
@@ -1681,7 +1684,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g7, m2_6, u);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[14] = ptp_3x3_vfirst(v) * 0.183673471f;
+            ptp_3x3_vstoref(d + 14 * ds + l, v * 0.183673471f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
@@ -1689,7 +1692,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = PTP_3X3_VFMAS(3.0f, u, v);
         if (d)
-            d[15] = ptp_3x3_vfirst(v) * 1.28571427f;
+            ptp_3x3_vstoref(d + 15 * ds + l, v * 1.28571427f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_3x3_vf m1_12 = x1 * y12 - y1 * x12;
@@ -1705,7 +1708,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
         v = PTP_3X3_VFMAS(6.0f, u, v);
         if (d)
-            d[16] = ptp_3x3_vfirst(v) * 0.428571433f;
+            ptp_3x3_vstoref(d + 16 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_3x3_vf m2_12 = x2 * y12 - y2 * x12;
@@ -1743,7 +1746,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g9, m1_4, u);
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
-            d[17] = ptp_3x3_vfirst(v) * 0.0612244904f;
+            ptp_3x3_vstoref(d + 17 * ds + l, v * 0.0612244904f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_3x3_vf m3_12 = x3 * y12 - y3 * x12;
@@ -1783,7 +1786,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g10, m1_4, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[18] = ptp_3x3_vfirst(v) * 0.0204081628f;
+            ptp_3x3_vstoref(d + 18 * ds + l, v * 0.0204081628f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         const ptp_3x3_vf m1_15 = x1 * y15 - y1 * x15;
@@ -1850,7 +1853,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g9, -m1_6, u);
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
-            d[19] = ptp_3x3_vfirst(v) * 0.0122448979f;
+            ptp_3x3_vstoref(d + 19 * ds + l, v * 0.0122448979f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = g2 * (-m3_12);
@@ -1913,7 +1916,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g10, m2_5, u);
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
-            d[20] = ptp_3x3_vfirst(v) * 0.0122448979f;
+            ptp_3x3_vstoref(d + 20 * ds + l, v * 0.0122448979f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         const ptp_3x3_vf m3_15 = x3 * y15 - y3 * x15;
@@ -1948,7 +1951,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g11, m2_5, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[21] = ptp_3x3_vfirst(v) * 0.0204081628f;
+            ptp_3x3_vstoref(d + 21 * ds + l, v * 0.0204081628f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = g1 * (-m3_15);
@@ -1980,7 +1983,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g10, -m2_7, u);
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
-            d[22] = ptp_3x3_vfirst(v) * 0.0612244904f;
+            ptp_3x3_vstoref(d + 22 * ds + l, v * 0.0612244904f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = -((g2 * m3_15 - g3 * m2_15) + g15 * m2_3);
@@ -1991,7 +1994,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
         v = PTP_3X3_VFMAS(6.0f, u, v);
         if (d)
-            d[23] = ptp_3x3_vfirst(v) * 0.428571433f;
+            ptp_3x3_vstoref(d + 23 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_3x3_vf m4_13 = x4 * y13 - y4 * x13;
@@ -2009,7 +2012,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[24] = ptp_3x3_vfirst(v) * 0.257142872f;
+            ptp_3x3_vstoref(d + 24 * ds + l, v * 0.257142872f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_3x3_vf m4_14 = x4 * y14 - y4 * x14;
@@ -2053,7 +2056,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g9, -m4_5, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[25] = ptp_3x3_vfirst(v) * 0.0367346928f;
+            ptp_3x3_vstoref(d + 25 * ds + l, v * 0.0367346928f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_3x3_vf m4_15 = x4 * y15 - y4 * x15;
@@ -2118,7 +2121,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g9, -m4_6, u);
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
-            d[26] = ptp_3x3_vfirst(v) * 0.0122448979f;
+            ptp_3x3_vstoref(d + 26 * ds + l, v * 0.0122448979f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         u = g3 * (m5_12);
@@ -2194,7 +2197,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g9, -m5_6, u);
         v = PTP_3X3_VFMAS(81.0f, u, v);
         if (d)
-            d[27] = ptp_3x3_vfirst(v) * 0.00734693883f;
+            ptp_3x3_vstoref(d + 27 * ds + l, v * 0.00734693883f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         const ptp_3x3_vf m6_15 = x6 * y15 - y6 * x15;
@@ -2271,7 +2274,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g10, -m5_6, u);
         v = PTP_3X3_VFMAS(81.0f, u, v);
         if (d)
-            d[28] = ptp_3x3_vfirst(v) * 0.00734693883f;
+            ptp_3x3_vstoref(d + 28 * ds + l, v * 0.00734693883f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         u = g3 * (-m7_12);
@@ -2331,7 +2334,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g10, -m5_7, u);
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
-            d[29] = ptp_3x3_vfirst(v) * 0.0122448979f;
+            ptp_3x3_vstoref(d + 29 * ds + l, v * 0.0122448979f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = g3 * (-m7_13);
@@ -2371,7 +2374,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g10, -m6_7, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[30] = ptp_3x3_vfirst(v) * 0.0367346928f;
+            ptp_3x3_vstoref(d + 30 * ds + l, v * 0.0367346928f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = -((g3 * m7_14 - g7 * m3_14) + g14 * m3_7);
@@ -2385,7 +2388,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[31] = ptp_3x3_vfirst(v) * 0.257142872f;
+            ptp_3x3_vstoref(d + 31 * ds + l, v * 0.257142872f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         const ptp_3x3_vf m8_12 = x8 * y12 - y8 * x12;
@@ -2402,7 +2405,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[32] = ptp_3x3_vfirst(v) * 0.257142872f;
+            ptp_3x3_vstoref(d + 32 * ds + l, v * 0.257142872f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = g2 * (m8_12);
@@ -2445,7 +2448,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g9, m5_8, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[33] = ptp_3x3_vfirst(v) * 0.0367346928f;
+            ptp_3x3_vstoref(d + 33 * ds + l, v * 0.0367346928f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = g3 * (m8_12);
@@ -2508,7 +2511,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g10, m5_8, u);
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
-            d[34] = ptp_3x3_vfirst(v) * 0.0122448979f;
+            ptp_3x3_vstoref(d + 34 * ds + l, v * 0.0122448979f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         const ptp_3x3_vf m9_15 = x9 * y15 - y9 * x15;
@@ -2584,7 +2587,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g10, m5_9, u);
         v = PTP_3X3_VFMAS(81.0f, u, v);
         if (d)
-            d[35] = ptp_3x3_vfirst(v) * 0.00734693883f;
+            ptp_3x3_vstoref(d + 35 * ds + l, v * 0.00734693883f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = g3 * (-m10_12);
@@ -2658,7 +2661,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g10, m6_9, u);
         v = PTP_3X3_VFMAS(81.0f, u, v);
         if (d)
-            d[36] = ptp_3x3_vfirst(v) * 0.00734693883f;
+            ptp_3x3_vstoref(d + 36 * ds + l, v * 0.00734693883f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         const ptp_3x3_vf m11_15 = x11 * y15 - y11 * x15;
@@ -2719,7 +2722,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g11, m6_9, u);
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
-            d[37] = ptp_3x3_vfirst(v) * 0.0122448979f;
+            ptp_3x3_vstoref(d + 37 * ds + l, v * 0.0122448979f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = g1 * (-m11_15);
@@ -2759,7 +2762,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g11, m6_10, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[38] = ptp_3x3_vfirst(v) * 0.0367346928f;
+            ptp_3x3_vstoref(d + 38 * ds + l, v * 0.0367346928f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = -((g2 * m11_15 - g11 * m2_15) + g15 * m2_11);
@@ -2773,7 +2776,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[39] = ptp_3x3_vfirst(v) * 0.257142872f;
+            ptp_3x3_vstoref(d + 39 * ds + l, v * 0.257142872f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         const ptp_3x3_vf m12_13 = x12 * y13 - y12 * x13;
@@ -2785,7 +2788,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g4 * m9_12 - g9 * m4_12) + g12 * m4_9);
         v = PTP_3X3_VFMAS(6.0f, u, v);
         if (d)
-            d[40] = ptp_3x3_vfirst(v) * 0.428571433f;
+            ptp_3x3_vstoref(d + 40 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 40 */
         const ptp_3x3_vf m12_14 = x12 * y14 - y12 * x14;
@@ -2818,7 +2821,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g13, m5_8, u);
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
-            d[41] = ptp_3x3_vfirst(v) * 0.0612244904f;
+            ptp_3x3_vstoref(d + 41 * ds + l, v * 0.0612244904f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 41 */
         const ptp_3x3_vf m12_15 = x12 * y15 - y12 * x15;
@@ -2853,7 +2856,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g14, m5_8, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[42] = ptp_3x3_vfirst(v) * 0.0204081628f;
+            ptp_3x3_vstoref(d + 42 * ds + l, v * 0.0204081628f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 42 */
         u = g3 * (m12_13);
@@ -2913,7 +2916,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g13, -m5_10, u);
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
-            d[43] = ptp_3x3_vfirst(v) * 0.0122448979f;
+            ptp_3x3_vstoref(d + 43 * ds + l, v * 0.0122448979f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 43 */
         const ptp_3x3_vf m14_15 = x14 * y15 - y14 * x15;
@@ -2973,7 +2976,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g14, m6_9, u);
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
-            d[44] = ptp_3x3_vfirst(v) * 0.0122448979f;
+            ptp_3x3_vstoref(d + 44 * ds + l, v * 0.0122448979f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 44 */
         u = g3 * (m12_15);
@@ -3006,7 +3009,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g15, m6_9, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[45] = ptp_3x3_vfirst(v) * 0.0204081628f;
+            ptp_3x3_vstoref(d + 45 * ds + l, v * 0.0204081628f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 45 */
         u = g3 * (m13_15);
@@ -3038,7 +3041,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g14, -m6_11, u);
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
-            d[46] = ptp_3x3_vfirst(v) * 0.0612244904f;
+            ptp_3x3_vstoref(d + 46 * ds + l, v * 0.0612244904f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 46 */
         u = ((g3 * m14_15 - g14 * m3_15) + g15 * m3_14);
@@ -3049,7 +3052,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g7 * m10_15 - g10 * m7_15) + g15 * m7_10);
         v = PTP_3X3_VFMAS(6.0f, u, v);
         if (d)
-            d[47] = ptp_3x3_vfirst(v) * 0.428571433f;
+            ptp_3x3_vstoref(d + 47 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 47 */
         u = ((g4 * m12_13 - g12 * m4_13) + g13 * m4_12);
@@ -3057,7 +3060,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g8 * m9_12 - g9 * m8_12) + g12 * m8_9);
         v = PTP_3X3_VFMAS(3.0f, u, v);
         if (d)
-            d[48] = ptp_3x3_vfirst(v) * 1.28571427f;
+            ptp_3x3_vstoref(d + 48 * ds + l, v * 1.28571427f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 48 */
         u = g4 * (m12_14);
@@ -3075,7 +3078,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g13, -m8_9, u);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[49] = ptp_3x3_vfirst(v) * 0.183673471f;
+            ptp_3x3_vstoref(d + 49 * ds + l, v * 0.183673471f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 49 */
         u = g4 * (m12_15);
@@ -3107,7 +3110,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g13, -m8_10, u);
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
-            d[50] = ptp_3x3_vfirst(v) * 0.0612244904f;
+            ptp_3x3_vstoref(d + 50 * ds + l, v * 0.0612244904f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 50 */
         u = g7 * (m12_13);
@@ -3147,7 +3150,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g13, -m9_10, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[51] = ptp_3x3_vfirst(v) * 0.0367346928f;
+            ptp_3x3_vstoref(d + 51 * ds + l, v * 0.0367346928f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 51 */
         u = g4 * (m14_15);
@@ -3187,7 +3190,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g14, -m9_10, u);
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
-            d[52] = ptp_3x3_vfirst(v) * 0.0367346928f;
+            ptp_3x3_vstoref(d + 52 * ds + l, v * 0.0367346928f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 52 */
         u = g7 * (m12_15);
@@ -3219,7 +3222,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g14, -m9_11, u);
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
-            d[53] = ptp_3x3_vfirst(v) * 0.0612244904f;
+            ptp_3x3_vstoref(d + 53 * ds + l, v * 0.0612244904f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 53 */
         u = g7 * (m13_15);
@@ -3237,7 +3240,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g14, -m10_11, u);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[54] = ptp_3x3_vfirst(v) * 0.183673471f;
+            ptp_3x3_vstoref(d + 54 * ds + l, v * 0.183673471f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 54 */
         u = ((g7 * m14_15 - g14 * m7_15) + g15 * m7_14);
@@ -3245,13 +3248,13 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = -((g10 * m11_15 - g11 * m10_15) + g15 * m10_11);
         v = PTP_3X3_VFMAS(3.0f, u, v);
         if (d)
-            d[55] = ptp_3x3_vfirst(v) * 1.28571427f;
+            ptp_3x3_vstoref(d + 55 * ds + l, v * 1.28571427f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 55 */
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
         v = u;
         if (d)
-            d[56] = ptp_3x3_vfirst(v) * 9.0f;
+            ptp_3x3_vstoref(d + 56 * ds + l, v * 9.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 56 */
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
@@ -3259,7 +3262,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
         v = PTP_3X3_VFMAS(3.0f, u, v);
         if (d)
-            d[57] = ptp_3x3_vfirst(v) * 1.28571427f;
+            ptp_3x3_vstoref(d + 57 * ds + l, v * 1.28571427f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 57 */
         u = ((g8 * m12_15 - g12 * m8_15) + g15 * m8_12);
@@ -3270,7 +3273,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
         v = PTP_3X3_VFMAS(6.0f, u, v);
         if (d)
-            d[58] = ptp_3x3_vfirst(v) * 0.428571433f;
+            ptp_3x3_vstoref(d + 58 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 58 */
         u = ((g11 * m12_13 - g12 * m11_13) + g13 * m11_12);
@@ -3284,7 +3287,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[59] = ptp_3x3_vfirst(v) * 0.257142872f;
+            ptp_3x3_vstoref(d + 59 * ds + l, v * 0.257142872f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 59 */
         u = ((g8 * m14_15 - g14 * m8_15) + g15 * m8_14);
@@ -3298,7 +3301,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g10 * m13_14 - g13 * m10_14) + g14 * m10_13);
         v = PTP_3X3_VFMAS(9.0f, u, v);
         if (d)
-            d[60] = ptp_3x3_vfirst(v) * 0.257142872f;
+            ptp_3x3_vstoref(d + 60 * ds + l, v * 0.257142872f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 60 */
         u = ((g11 * m12_15 - g12 * m11_15) + g15 * m11_12);
@@ -3309,7 +3312,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g10 * m13_15 - g13 * m10_15) + g15 * m10_13);
         v = PTP_3X3_VFMAS(6.0f, u, v);
         if (d)
-            d[61] = ptp_3x3_vfirst(v) * 0.428571433f;
+            ptp_3x3_vstoref(d + 61 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 61 */
         u = ((g11 * m13_15 - g13 * m11_15) + g15 * m11_13);
@@ -3317,13 +3320,13 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = ((g10 * m14_15 - g14 * m10_15) + g15 * m10_14);
         v = PTP_3X3_VFMAS(3.0f, u, v);
         if (d)
-            d[62] = ptp_3x3_vfirst(v) * 1.28571427f;
+            ptp_3x3_vstoref(d + 62 * ds + l, v * 1.28571427f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 62 */
         u = ((g11 * m14_15 - g14 * m11_15) + g15 * m11_14);
         v = u;
         if (d)
-            d[63] = ptp_3x3_vfirst(v) * 9.0f;
+            ptp_3x3_vstoref(d + 63 * ds + l, v * 9.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 63 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -3343,13 +3346,13 @@ __attribute__((noinline))
 static void ptp_3x3_lanes(const float *PTP_3X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                           unsigned char *PTP_3X3_RESTRICT cls)
 {
-    ptp_3x3_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_3x3_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_3x3_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_3x3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_3x3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

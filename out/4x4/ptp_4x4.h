@@ -135,10 +135,12 @@ static inline void ptp_4x4_vstore(unsigned char *cls, ptp_4x4_vm c, size_t count
     for (i = 0; i < count && i < PTP_4X4_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_4x4_vfirst(ptp_4x4_vf v)
+/* d[i] = v[i] for the first count (at most PTP_4X4_VW) lanes. */
+static inline void ptp_4x4_vstoref(float *d, ptp_4x4_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_4X4_VW; i++)
+        d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
  * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
@@ -186,9 +188,10 @@ static inline ptp_4x4_vf ptp_4x4_vabsmax(ptp_4x4_vf r, ptp_4x4_vf x)
 {
     return PTP_4X4_ABSMAX(r, x);
 }
-static inline float ptp_4x4_vfirst(ptp_4x4_vf v)
+static inline void ptp_4x4_vstoref(float *d, ptp_4x4_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_4X4_VFMA(a, b, c) __builtin_fmaf(a, b, c)
@@ -4573,16 +4576,16 @@ void ptp_4x4_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_4X4_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t stride, size_t n,
                                        const float eye[4], unsigned char *PTP_4X4_RESTRICT cls,
-                                       float *PTP_4X4_RESTRICT d)
+                                       float *PTP_4X4_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -4662,7 +4665,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_4x4_vfirst(v) * 16.0f;
+            ptp_4x4_vstoref(d + 0 * ds + l, v * 16.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_4x4_vf m2_5 = x2 * y5 - y2 * x5;
@@ -4674,7 +4677,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[1] = ptp_4x4_vfirst(v) * 1.60000002f;
+            ptp_4x4_vstoref(d + 1 * ds + l, v * 1.60000002f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_4x4_vf m3_5 = x3 * y5 - y3 * x5;
@@ -4691,7 +4694,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[2] = ptp_4x4_vfirst(v) * 1.06666672f;
+            ptp_4x4_vstoref(d + 2 * ds + l, v * 1.06666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_4x4_vf m4_5 = x4 * y5 - y4 * x5;
@@ -4714,7 +4717,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
-            d[3] = ptp_4x4_vfirst(v) * 0.13333334f;
+            ptp_4x4_vstoref(d + 3 * ds + l, v * 0.13333334f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_4x4_vf m1_9 = x1 * y9 - y1 * x9;
@@ -4741,7 +4744,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
-            d[4] = ptp_4x4_vfirst(v) * 0.0761904791f;
+            ptp_4x4_vstoref(d + 4 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_4x4_vf m2_9 = x2 * y9 - y2 * x9;
@@ -4762,7 +4765,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[5] = ptp_4x4_vfirst(v) * 0.190476194f;
+            ptp_4x4_vstoref(d + 5 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_4x4_vf m3_4 = x3 * y4 - y3 * x4;
@@ -4785,7 +4788,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
-            d[6] = ptp_4x4_vfirst(v) * 0.0761904791f;
+            ptp_4x4_vstoref(d + 6 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_4x4_vf m4_9 = x4 * y9 - y4 * x9;
@@ -4802,7 +4805,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
-            d[7] = ptp_4x4_vfirst(v) * 0.13333334f;
+            ptp_4x4_vstoref(d + 7 * ds + l, v * 0.13333334f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         u = -((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
@@ -4813,7 +4816,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[8] = ptp_4x4_vfirst(v) * 1.06666672f;
+            ptp_4x4_vstoref(d + 8 * ds + l, v * 1.06666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         u = -((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
@@ -4821,13 +4824,13 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[9] = ptp_4x4_vfirst(v) * 1.60000002f;
+            ptp_4x4_vstoref(d + 9 * ds + l, v * 1.60000002f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         u = -((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
         v = u;
         if (d)
-            d[10] = ptp_4x4_vfirst(v) * 16.0f;
+            ptp_4x4_vstoref(d + 10 * ds + l, v * 16.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_4x4_vf m1_10 = x1 * y10 - y1 * x10;
@@ -4838,7 +4841,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[11] = ptp_4x4_vfirst(v) * 1.60000002f;
+            ptp_4x4_vstoref(d + 11 * ds + l, v * 1.60000002f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_4x4_vf m2_10 = x2 * y10 - y2 * x10;
@@ -4860,7 +4863,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g6, m1_5, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[12] = ptp_4x4_vfirst(v) * 0.159999996f;
+            ptp_4x4_vstoref(d + 12 * ds + l, v * 0.159999996f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_4x4_vf m3_10 = x3 * y10 - y3 * x10;
@@ -4898,7 +4901,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g7, m1_5, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[13] = ptp_4x4_vfirst(v) * 0.106666669f;
+            ptp_4x4_vstoref(d + 13 * ds + l, v * 0.106666669f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         const ptp_4x4_vf m4_10 = x4 * y10 - y4 * x10;
@@ -4955,7 +4958,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g7, m1_6, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[14] = ptp_4x4_vfirst(v) * 0.0133333337f;
+            ptp_4x4_vstoref(d + 14 * ds + l, v * 0.0133333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_4x4_vf m1_14 = x1 * y14 - y1 * x14;
@@ -5028,7 +5031,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g7, m2_6, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[15] = ptp_4x4_vfirst(v) * 0.00761904754f;
+            ptp_4x4_vstoref(d + 15 * ds + l, v * 0.00761904754f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_4x4_vf m2_14 = x2 * y14 - y2 * x14;
@@ -5090,7 +5093,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g8, m2_6, u);
         v = PTP_4X4_VFMAS(64.0f, u, v);
         if (d)
-            d[16] = ptp_4x4_vfirst(v) * 0.0190476198f;
+            ptp_4x4_vstoref(d + 16 * ds + l, v * 0.0190476198f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         u = g3 * (-m4_10);
@@ -5159,7 +5162,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g8, m2_7, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[17] = ptp_4x4_vfirst(v) * 0.00761904754f;
+            ptp_4x4_vstoref(d + 17 * ds + l, v * 0.00761904754f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_4x4_vf m4_14 = x4 * y14 - y4 * x14;
@@ -5210,7 +5213,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g8, m3_7, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[18] = ptp_4x4_vfirst(v) * 0.0133333337f;
+            ptp_4x4_vstoref(d + 18 * ds + l, v * 0.0133333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = g1 * (-m4_14);
@@ -5242,7 +5245,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g9, m3_7, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[19] = ptp_4x4_vfirst(v) * 0.106666669f;
+            ptp_4x4_vstoref(d + 19 * ds + l, v * 0.106666669f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = g2 * (-m4_14);
@@ -5260,7 +5263,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g9, m3_8, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[20] = ptp_4x4_vfirst(v) * 0.159999996f;
+            ptp_4x4_vstoref(d + 20 * ds + l, v * 0.159999996f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = -((g3 * m4_14 - g4 * m3_14) + g14 * m3_4);
@@ -5268,7 +5271,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[21] = ptp_4x4_vfirst(v) * 1.60000002f;
+            ptp_4x4_vstoref(d + 21 * ds + l, v * 1.60000002f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         const ptp_4x4_vf m1_15 = x1 * y15 - y1 * x15;
@@ -5284,7 +5287,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g0 * m6_10 - g6 * m0_10) + g10 * m0_6);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[22] = ptp_4x4_vfirst(v) * 1.06666672f;
+            ptp_4x4_vstoref(d + 22 * ds + l, v * 1.06666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         const ptp_4x4_vf m2_15 = x2 * y15 - y2 * x15;
@@ -5322,7 +5325,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g11, m1_5, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[23] = ptp_4x4_vfirst(v) * 0.106666669f;
+            ptp_4x4_vstoref(d + 23 * ds + l, v * 0.106666669f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_4x4_vf m3_15 = x3 * y15 - y3 * x15;
@@ -5362,7 +5365,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g12, m1_5, u);
         v = PTP_4X4_VFMAS(12.0f, u, v);
         if (d)
-            d[24] = ptp_4x4_vfirst(v) * 0.0711111128f;
+            ptp_4x4_vstoref(d + 24 * ds + l, v * 0.0711111128f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_4x4_vf m4_15 = x4 * y15 - y4 * x15;
@@ -5445,7 +5448,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g11, -m1_7, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[25] = ptp_4x4_vfirst(v) * 0.0088888891f;
+            ptp_4x4_vstoref(d + 25 * ds + l, v * 0.0088888891f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_4x4_vf m1_19 = x1 * y19 - y1 * x19;
@@ -5541,7 +5544,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g12, m2_6, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[26] = ptp_4x4_vfirst(v) * 0.00507936487f;
+            ptp_4x4_vstoref(d + 26 * ds + l, v * 0.00507936487f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         const ptp_4x4_vf m2_19 = x2 * y19 - y2 * x19;
@@ -5607,7 +5610,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g13, m2_6, u);
         v = PTP_4X4_VFMAS(48.0f, u, v);
         if (d)
-            d[27] = ptp_4x4_vfirst(v) * 0.0126984129f;
+            ptp_4x4_vstoref(d + 27 * ds + l, v * 0.0126984129f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         u = g3 * (-m4_15);
@@ -5699,7 +5702,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g12, -m2_8, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[28] = ptp_4x4_vfirst(v) * 0.00507936487f;
+            ptp_4x4_vstoref(d + 28 * ds + l, v * 0.00507936487f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         const ptp_4x4_vf m4_19 = x4 * y19 - y4 * x19;
@@ -5773,7 +5776,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g13, m3_7, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[29] = ptp_4x4_vfirst(v) * 0.0088888891f;
+            ptp_4x4_vstoref(d + 29 * ds + l, v * 0.0088888891f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = g1 * (-m4_19);
@@ -5806,7 +5809,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g14, m3_7, u);
         v = PTP_4X4_VFMAS(12.0f, u, v);
         if (d)
-            d[30] = ptp_4x4_vfirst(v) * 0.0711111128f;
+            ptp_4x4_vstoref(d + 30 * ds + l, v * 0.0711111128f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = g2 * (-m4_19);
@@ -5838,7 +5841,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g13, -m3_9, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[31] = ptp_4x4_vfirst(v) * 0.106666669f;
+            ptp_4x4_vstoref(d + 31 * ds + l, v * 0.106666669f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = -((g3 * m4_19 - g4 * m3_19) + g19 * m3_4);
@@ -5849,7 +5852,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g4 * m8_14 - g8 * m4_14) + g14 * m4_8);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[32] = ptp_4x4_vfirst(v) * 1.06666672f;
+            ptp_4x4_vstoref(d + 32 * ds + l, v * 1.06666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         const ptp_4x4_vf m1_20 = x1 * y20 - y1 * x20;
@@ -5871,7 +5874,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
-            d[33] = ptp_4x4_vfirst(v) * 0.13333334f;
+            ptp_4x4_vstoref(d + 33 * ds + l, v * 0.13333334f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         const ptp_4x4_vf m2_20 = x2 * y20 - y2 * x20;
@@ -5928,7 +5931,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g11, -m5_6, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[34] = ptp_4x4_vfirst(v) * 0.0133333337f;
+            ptp_4x4_vstoref(d + 34 * ds + l, v * 0.0133333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         const ptp_4x4_vf m3_20 = x3 * y20 - y3 * x20;
@@ -6010,7 +6013,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g11, -m5_7, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[35] = ptp_4x4_vfirst(v) * 0.0088888891f;
+            ptp_4x4_vstoref(d + 35 * ds + l, v * 0.0088888891f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         const ptp_4x4_vf m4_20 = x4 * y20 - y4 * x20;
@@ -6133,7 +6136,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g11, -m6_7, u);
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
-            d[36] = ptp_4x4_vfirst(v) * 0.00111111114f;
+            ptp_4x4_vstoref(d + 36 * ds + l, v * 0.00111111114f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         const ptp_4x4_vf m1_24 = x1 * y24 - y1 * x24;
@@ -6298,7 +6301,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g12, -m6_7, u);
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
-            d[37] = ptp_4x4_vfirst(v) * 0.000634920609f;
+            ptp_4x4_vstoref(d + 37 * ds + l, v * 0.000634920609f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         const ptp_4x4_vf m2_24 = x2 * y24 - y2 * x24;
@@ -6432,7 +6435,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g12, -m6_8, u);
         v = PTP_4X4_VFMAS(384.0f, u, v);
         if (d)
-            d[38] = ptp_4x4_vfirst(v) * 0.00158730161f;
+            ptp_4x4_vstoref(d + 38 * ds + l, v * 0.00158730161f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = g3 * (-m4_20);
@@ -6590,7 +6593,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g12, -m7_8, u);
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
-            d[39] = ptp_4x4_vfirst(v) * 0.000634920609f;
+            ptp_4x4_vstoref(d + 39 * ds + l, v * 0.000634920609f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         const ptp_4x4_vf m4_24 = x4 * y24 - y4 * x24;
@@ -6704,7 +6707,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g13, -m7_8, u);
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
-            d[40] = ptp_4x4_vfirst(v) * 0.00111111114f;
+            ptp_4x4_vstoref(d + 40 * ds + l, v * 0.00111111114f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 40 */
         u = g1 * (-m4_24);
@@ -6776,7 +6779,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g13, -m7_9, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[41] = ptp_4x4_vfirst(v) * 0.0088888891f;
+            ptp_4x4_vstoref(d + 41 * ds + l, v * 0.0088888891f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 41 */
         u = g2 * (-m4_24);
@@ -6826,7 +6829,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g13, -m8_9, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[42] = ptp_4x4_vfirst(v) * 0.0133333337f;
+            ptp_4x4_vstoref(d + 42 * ds + l, v * 0.0133333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 42 */
         u = -((g3 * m4_24 - g4 * m3_24) + g24 * m3_4);
@@ -6842,7 +6845,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g8 * m9_14 - g9 * m8_14) + g14 * m8_9);
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
-            d[43] = ptp_4x4_vfirst(v) * 0.13333334f;
+            ptp_4x4_vstoref(d + 43 * ds + l, v * 0.13333334f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 43 */
         const ptp_4x4_vf m5_21 = x5 * y21 - y5 * x21;
@@ -6868,7 +6871,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
-            d[44] = ptp_4x4_vfirst(v) * 0.0761904791f;
+            ptp_4x4_vstoref(d + 44 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 44 */
         const ptp_4x4_vf m5_22 = x5 * y22 - y5 * x22;
@@ -6940,7 +6943,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g11, m6_10, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[45] = ptp_4x4_vfirst(v) * 0.00761904754f;
+            ptp_4x4_vstoref(d + 45 * ds + l, v * 0.00761904754f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 45 */
         const ptp_4x4_vf m5_23 = x5 * y23 - y5 * x23;
@@ -7035,7 +7038,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g12, m6_10, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[46] = ptp_4x4_vfirst(v) * 0.00507936487f;
+            ptp_4x4_vstoref(d + 46 * ds + l, v * 0.00507936487f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 46 */
         const ptp_4x4_vf m5_24 = x5 * y24 - y5 * x24;
@@ -7198,7 +7201,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g12, m6_11, u);
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
-            d[47] = ptp_4x4_vfirst(v) * 0.000634920609f;
+            ptp_4x4_vstoref(d + 47 * ds + l, v * 0.000634920609f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 47 */
         u = g3 * (m7_20);
@@ -7374,7 +7377,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g12, m7_11, u);
         v = PTP_4X4_VFMAS(1296.0f, u, v);
         if (d)
-            d[48] = ptp_4x4_vfirst(v) * 0.000362811785f;
+            ptp_4x4_vstoref(d + 48 * ds + l, v * 0.000362811785f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 48 */
         const ptp_4x4_vf m7_24 = x7 * y24 - y7 * x24;
@@ -7540,7 +7543,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g13, m7_11, u);
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
-            d[49] = ptp_4x4_vfirst(v) * 0.000907029491f;
+            ptp_4x4_vstoref(d + 49 * ds + l, v * 0.000907029491f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 49 */
         const ptp_4x4_vf m13_19 = x13 * y19 - y13 * x19;
@@ -7714,7 +7717,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g13, m7_12, u);
         v = PTP_4X4_VFMAS(1296.0f, u, v);
         if (d)
-            d[50] = ptp_4x4_vfirst(v) * 0.000362811785f;
+            ptp_4x4_vstoref(d + 50 * ds + l, v * 0.000362811785f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 50 */
         u = g4 * (-m9_20);
@@ -7869,7 +7872,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g13, m8_12, u);
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
-            d[51] = ptp_4x4_vfirst(v) * 0.000634920609f;
+            ptp_4x4_vstoref(d + 51 * ds + l, v * 0.000634920609f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 51 */
         u = g4 * (-m9_21);
@@ -7956,7 +7959,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g14, m8_12, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[52] = ptp_4x4_vfirst(v) * 0.00507936487f;
+            ptp_4x4_vstoref(d + 52 * ds + l, v * 0.00507936487f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 52 */
         u = g4 * (-m9_22);
@@ -8022,7 +8025,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g14, m8_13, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[53] = ptp_4x4_vfirst(v) * 0.00761904754f;
+            ptp_4x4_vstoref(d + 53 * ds + l, v * 0.00761904754f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 53 */
         u = -((g4 * m9_23 - g9 * m4_23) + g23 * m4_9);
@@ -8042,7 +8045,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
-            d[54] = ptp_4x4_vfirst(v) * 0.0761904791f;
+            ptp_4x4_vstoref(d + 54 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 54 */
         const ptp_4x4_vf m10_21 = x10 * y21 - y10 * x21;
@@ -8063,7 +8066,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g5 * m11_15 - g11 * m5_15) + g15 * m5_11);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[55] = ptp_4x4_vfirst(v) * 0.190476194f;
+            ptp_4x4_vstoref(d + 55 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 55 */
         const ptp_4x4_vf m10_22 = x10 * y22 - y10 * x22;
@@ -8125,7 +8128,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g16, m6_10, u);
         v = PTP_4X4_VFMAS(64.0f, u, v);
         if (d)
-            d[56] = ptp_4x4_vfirst(v) * 0.0190476198f;
+            ptp_4x4_vstoref(d + 56 * ds + l, v * 0.0190476198f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 56 */
         const ptp_4x4_vf m10_23 = x10 * y23 - y10 * x23;
@@ -8191,7 +8194,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g17, m6_10, u);
         v = PTP_4X4_VFMAS(48.0f, u, v);
         if (d)
-            d[57] = ptp_4x4_vfirst(v) * 0.0126984129f;
+            ptp_4x4_vstoref(d + 57 * ds + l, v * 0.0126984129f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 57 */
         const ptp_4x4_vf m10_24 = x10 * y24 - y10 * x24;
@@ -8326,7 +8329,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g16, -m6_12, u);
         v = PTP_4X4_VFMAS(384.0f, u, v);
         if (d)
-            d[58] = ptp_4x4_vfirst(v) * 0.00158730161f;
+            ptp_4x4_vstoref(d + 58 * ds + l, v * 0.00158730161f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 58 */
         const ptp_4x4_vf m11_24 = x11 * y24 - y11 * x24;
@@ -8490,7 +8493,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g17, m7_11, u);
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
-            d[59] = ptp_4x4_vfirst(v) * 0.000907029491f;
+            ptp_4x4_vstoref(d + 59 * ds + l, v * 0.000907029491f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 59 */
         const ptp_4x4_vf m14_22 = x14 * y22 - y14 * x22;
@@ -8601,7 +8604,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g18, m7_11, u);
         v = PTP_4X4_VFMAS(192.0f, u, v);
         if (d)
-            d[60] = ptp_4x4_vfirst(v) * 0.00226757373f;
+            ptp_4x4_vstoref(d + 60 * ds + l, v * 0.00226757373f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 60 */
         const ptp_4x4_vf m13_24 = x13 * y24 - y13 * x24;
@@ -8763,7 +8766,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g17, -m7_13, u);
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
-            d[61] = ptp_4x4_vfirst(v) * 0.000907029491f;
+            ptp_4x4_vstoref(d + 61 * ds + l, v * 0.000907029491f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 61 */
         const ptp_4x4_vf m14_24 = x14 * y24 - y14 * x24;
@@ -8891,7 +8894,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g18, m8_12, u);
         v = PTP_4X4_VFMAS(384.0f, u, v);
         if (d)
-            d[62] = ptp_4x4_vfirst(v) * 0.00158730161f;
+            ptp_4x4_vstoref(d + 62 * ds + l, v * 0.00158730161f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 62 */
         u = g1 * (-m14_24);
@@ -8952,7 +8955,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g19, m8_12, u);
         v = PTP_4X4_VFMAS(48.0f, u, v);
         if (d)
-            d[63] = ptp_4x4_vfirst(v) * 0.0126984129f;
+            ptp_4x4_vstoref(d + 63 * ds + l, v * 0.0126984129f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 63 */
         u = g2 * (-m14_24);
@@ -9010,7 +9013,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g18, -m8_14, u);
         v = PTP_4X4_VFMAS(64.0f, u, v);
         if (d)
-            d[64] = ptp_4x4_vfirst(v) * 0.0190476198f;
+            ptp_4x4_vstoref(d + 64 * ds + l, v * 0.0190476198f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 64 */
         u = -((g3 * m14_24 - g14 * m3_24) + g24 * m3_14);
@@ -9027,7 +9030,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g9 * m13_19 - g13 * m9_19) + g19 * m9_13);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[65] = ptp_4x4_vfirst(v) * 0.190476194f;
+            ptp_4x4_vstoref(d + 65 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 65 */
         const ptp_4x4_vf m15_20 = x15 * y20 - y15 * x20;
@@ -9050,7 +9053,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g10 * m11_15 - g11 * m10_15) + g15 * m10_11);
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
-            d[66] = ptp_4x4_vfirst(v) * 0.0761904791f;
+            ptp_4x4_vstoref(d + 66 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 66 */
         u = g2 * (m15_20);
@@ -9119,7 +9122,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g16, -m10_11, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[67] = ptp_4x4_vfirst(v) * 0.00761904754f;
+            ptp_4x4_vstoref(d + 67 * ds + l, v * 0.00761904754f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 67 */
         u = g3 * (m15_20);
@@ -9210,7 +9213,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g16, -m10_12, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[68] = ptp_4x4_vfirst(v) * 0.00507936487f;
+            ptp_4x4_vstoref(d + 68 * ds + l, v * 0.00507936487f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 68 */
         u = g4 * (m15_20);
@@ -9368,7 +9371,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g16, -m11_12, u);
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
-            d[69] = ptp_4x4_vfirst(v) * 0.000634920609f;
+            ptp_4x4_vstoref(d + 69 * ds + l, v * 0.000634920609f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 69 */
         const ptp_4x4_vf m17_23 = x17 * y23 - y17 * x23;
@@ -9542,7 +9545,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g17, -m11_12, u);
         v = PTP_4X4_VFMAS(1296.0f, u, v);
         if (d)
-            d[70] = ptp_4x4_vfirst(v) * 0.000362811785f;
+            ptp_4x4_vstoref(d + 70 * ds + l, v * 0.000362811785f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 70 */
         const ptp_4x4_vf m17_24 = x17 * y24 - y17 * x24;
@@ -9703,7 +9706,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g17, -m11_13, u);
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
-            d[71] = ptp_4x4_vfirst(v) * 0.000907029491f;
+            ptp_4x4_vstoref(d + 71 * ds + l, v * 0.000907029491f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 71 */
         u = g4 * (-m17_21);
@@ -9874,7 +9877,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g17, -m12_13, u);
         v = PTP_4X4_VFMAS(1296.0f, u, v);
         if (d)
-            d[72] = ptp_4x4_vfirst(v) * 0.000362811785f;
+            ptp_4x4_vstoref(d + 72 * ds + l, v * 0.000362811785f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 72 */
         const ptp_4x4_vf m19_24 = x19 * y24 - y19 * x24;
@@ -10029,7 +10032,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g18, -m12_13, u);
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
-            d[73] = ptp_4x4_vfirst(v) * 0.000634920609f;
+            ptp_4x4_vstoref(d + 73 * ds + l, v * 0.000634920609f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 73 */
         u = g1 * (-m19_24);
@@ -10116,7 +10119,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g18, -m12_14, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[74] = ptp_4x4_vfirst(v) * 0.00507936487f;
+            ptp_4x4_vstoref(d + 74 * ds + l, v * 0.00507936487f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 74 */
         u = g2 * (-m19_24);
@@ -10182,7 +10185,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g18, -m13_14, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[75] = ptp_4x4_vfirst(v) * 0.00761904754f;
+            ptp_4x4_vstoref(d + 75 * ds + l, v * 0.00761904754f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 75 */
         u = -((g3 * m19_24 - g19 * m3_24) + g24 * m3_19);
@@ -10202,7 +10205,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g13 * m14_19 - g14 * m13_19) + g19 * m13_14);
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
-            d[76] = ptp_4x4_vfirst(v) * 0.0761904791f;
+            ptp_4x4_vstoref(d + 76 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 76 */
         const ptp_4x4_vf m20_21 = x20 * y21 - y20 * x21;
@@ -10219,7 +10222,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g10 * m15_16 - g15 * m10_16) + g16 * m10_15);
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
-            d[77] = ptp_4x4_vfirst(v) * 0.13333334f;
+            ptp_4x4_vstoref(d + 77 * ds + l, v * 0.13333334f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 77 */
         const ptp_4x4_vf m20_22 = x20 * y22 - y20 * x22;
@@ -10270,7 +10273,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g16, m11_15, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[78] = ptp_4x4_vfirst(v) * 0.0133333337f;
+            ptp_4x4_vstoref(d + 78 * ds + l, v * 0.0133333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 78 */
         const ptp_4x4_vf m20_23 = x20 * y23 - y20 * x23;
@@ -10344,7 +10347,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g17, m11_15, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[79] = ptp_4x4_vfirst(v) * 0.0088888891f;
+            ptp_4x4_vstoref(d + 79 * ds + l, v * 0.0088888891f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 79 */
         const ptp_4x4_vf m20_24 = x20 * y24 - y20 * x24;
@@ -10458,7 +10461,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g17, m11_16, u);
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
-            d[80] = ptp_4x4_vfirst(v) * 0.00111111114f;
+            ptp_4x4_vstoref(d + 80 * ds + l, v * 0.00111111114f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 80 */
         u = g4 * (m20_21);
@@ -10613,7 +10616,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g17, m12_16, u);
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
-            d[81] = ptp_4x4_vfirst(v) * 0.000634920609f;
+            ptp_4x4_vstoref(d + 81 * ds + l, v * 0.000634920609f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 81 */
         const ptp_4x4_vf m22_24 = x22 * y24 - y22 * x24;
@@ -10741,7 +10744,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g18, m12_16, u);
         v = PTP_4X4_VFMAS(384.0f, u, v);
         if (d)
-            d[82] = ptp_4x4_vfirst(v) * 0.00158730161f;
+            ptp_4x4_vstoref(d + 82 * ds + l, v * 0.00158730161f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 82 */
         const ptp_4x4_vf m23_24 = x23 * y24 - y23 * x24;
@@ -10895,7 +10898,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g18, m12_17, u);
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
-            d[83] = ptp_4x4_vfirst(v) * 0.000634920609f;
+            ptp_4x4_vstoref(d + 83 * ds + l, v * 0.000634920609f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 83 */
         u = g4 * (m20_24);
@@ -11007,7 +11010,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g18, m13_17, u);
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
-            d[84] = ptp_4x4_vfirst(v) * 0.00111111114f;
+            ptp_4x4_vstoref(d + 84 * ds + l, v * 0.00111111114f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 84 */
         u = g4 * (m21_24);
@@ -11079,7 +11082,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g19, m13_17, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[85] = ptp_4x4_vfirst(v) * 0.0088888891f;
+            ptp_4x4_vstoref(d + 85 * ds + l, v * 0.0088888891f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 85 */
         u = g4 * (m22_24);
@@ -11129,7 +11132,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g19, m13_18, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[86] = ptp_4x4_vfirst(v) * 0.0133333337f;
+            ptp_4x4_vstoref(d + 86 * ds + l, v * 0.0133333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 86 */
         u = ((g4 * m23_24 - g23 * m4_24) + g24 * m4_23);
@@ -11145,7 +11148,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g14 * m18_19 - g18 * m14_19) + g19 * m14_18);
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
-            d[87] = ptp_4x4_vfirst(v) * 0.13333334f;
+            ptp_4x4_vstoref(d + 87 * ds + l, v * 0.13333334f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 87 */
         u = ((g5 * m20_21 - g20 * m5_21) + g21 * m5_20);
@@ -11156,7 +11159,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g10 * m16_20 - g16 * m10_20) + g20 * m10_16);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[88] = ptp_4x4_vfirst(v) * 1.06666672f;
+            ptp_4x4_vstoref(d + 88 * ds + l, v * 1.06666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 88 */
         u = g5 * (m20_22);
@@ -11188,7 +11191,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g21, m11_15, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[89] = ptp_4x4_vfirst(v) * 0.106666669f;
+            ptp_4x4_vstoref(d + 89 * ds + l, v * 0.106666669f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 89 */
         u = g5 * (m20_23);
@@ -11221,7 +11224,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g22, m11_15, u);
         v = PTP_4X4_VFMAS(12.0f, u, v);
         if (d)
-            d[90] = ptp_4x4_vfirst(v) * 0.0711111128f;
+            ptp_4x4_vstoref(d + 90 * ds + l, v * 0.0711111128f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 90 */
         u = g5 * (m20_24);
@@ -11293,7 +11296,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g21, -m11_17, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[91] = ptp_4x4_vfirst(v) * 0.0088888891f;
+            ptp_4x4_vstoref(d + 91 * ds + l, v * 0.0088888891f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 91 */
         u = g9 * (m20_21);
@@ -11380,7 +11383,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g22, m12_16, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[92] = ptp_4x4_vfirst(v) * 0.00507936487f;
+            ptp_4x4_vstoref(d + 92 * ds + l, v * 0.00507936487f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 92 */
         u = g5 * (m22_24);
@@ -11441,7 +11444,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g23, m12_16, u);
         v = PTP_4X4_VFMAS(48.0f, u, v);
         if (d)
-            d[93] = ptp_4x4_vfirst(v) * 0.0126984129f;
+            ptp_4x4_vstoref(d + 93 * ds + l, v * 0.0126984129f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 93 */
         u = g5 * (m23_24);
@@ -11528,7 +11531,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g22, -m12_18, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[94] = ptp_4x4_vfirst(v) * 0.00507936487f;
+            ptp_4x4_vstoref(d + 94 * ds + l, v * 0.00507936487f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 94 */
         u = g9 * (m20_24);
@@ -11600,7 +11603,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g23, m13_17, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[95] = ptp_4x4_vfirst(v) * 0.0088888891f;
+            ptp_4x4_vstoref(d + 95 * ds + l, v * 0.0088888891f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 95 */
         u = g9 * (m21_24);
@@ -11633,7 +11636,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g24, m13_17, u);
         v = PTP_4X4_VFMAS(12.0f, u, v);
         if (d)
-            d[96] = ptp_4x4_vfirst(v) * 0.0711111128f;
+            ptp_4x4_vstoref(d + 96 * ds + l, v * 0.0711111128f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 96 */
         u = g9 * (m22_24);
@@ -11665,7 +11668,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g23, -m13_19, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[97] = ptp_4x4_vfirst(v) * 0.106666669f;
+            ptp_4x4_vstoref(d + 97 * ds + l, v * 0.106666669f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 97 */
         u = ((g9 * m23_24 - g23 * m9_24) + g24 * m9_23);
@@ -11676,7 +11679,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g14 * m18_24 - g18 * m14_24) + g24 * m14_18);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[98] = ptp_4x4_vfirst(v) * 1.06666672f;
+            ptp_4x4_vstoref(d + 98 * ds + l, v * 1.06666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 98 */
         u = ((g10 * m20_21 - g20 * m10_21) + g21 * m10_20);
@@ -11684,7 +11687,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g15 * m16_20 - g16 * m15_20) + g20 * m15_16);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[99] = ptp_4x4_vfirst(v) * 1.60000002f;
+            ptp_4x4_vstoref(d + 99 * ds + l, v * 1.60000002f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 99 */
         u = g10 * (m20_22);
@@ -11702,7 +11705,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g21, -m15_16, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[100] = ptp_4x4_vfirst(v) * 0.159999996f;
+            ptp_4x4_vstoref(d + 100 * ds + l, v * 0.159999996f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 100 */
         u = g10 * (m20_23);
@@ -11734,7 +11737,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g21, -m15_17, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[101] = ptp_4x4_vfirst(v) * 0.106666669f;
+            ptp_4x4_vstoref(d + 101 * ds + l, v * 0.106666669f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 101 */
         u = g10 * (m20_24);
@@ -11784,7 +11787,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g21, -m16_17, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[102] = ptp_4x4_vfirst(v) * 0.0133333337f;
+            ptp_4x4_vstoref(d + 102 * ds + l, v * 0.0133333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 102 */
         u = g14 * (m20_21);
@@ -11850,7 +11853,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g22, -m16_17, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[103] = ptp_4x4_vfirst(v) * 0.00761904754f;
+            ptp_4x4_vstoref(d + 103 * ds + l, v * 0.00761904754f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 103 */
         u = g10 * (m22_24);
@@ -11908,7 +11911,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g22, -m16_18, u);
         v = PTP_4X4_VFMAS(64.0f, u, v);
         if (d)
-            d[104] = ptp_4x4_vfirst(v) * 0.0190476198f;
+            ptp_4x4_vstoref(d + 104 * ds + l, v * 0.0190476198f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 104 */
         u = g10 * (m23_24);
@@ -11974,7 +11977,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g22, -m17_18, u);
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
-            d[105] = ptp_4x4_vfirst(v) * 0.00761904754f;
+            ptp_4x4_vstoref(d + 105 * ds + l, v * 0.00761904754f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 105 */
         u = g14 * (m20_24);
@@ -12024,7 +12027,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g23, -m17_18, u);
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
-            d[106] = ptp_4x4_vfirst(v) * 0.0133333337f;
+            ptp_4x4_vstoref(d + 106 * ds + l, v * 0.0133333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 106 */
         u = g14 * (m21_24);
@@ -12056,7 +12059,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g23, -m17_19, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[107] = ptp_4x4_vfirst(v) * 0.106666669f;
+            ptp_4x4_vstoref(d + 107 * ds + l, v * 0.106666669f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 107 */
         u = g14 * (m22_24);
@@ -12074,7 +12077,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g23, -m18_19, u);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[108] = ptp_4x4_vfirst(v) * 0.159999996f;
+            ptp_4x4_vstoref(d + 108 * ds + l, v * 0.159999996f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 108 */
         u = ((g14 * m23_24 - g23 * m14_24) + g24 * m14_23);
@@ -12082,13 +12085,13 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = -((g18 * m19_24 - g19 * m18_24) + g24 * m18_19);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[109] = ptp_4x4_vfirst(v) * 1.60000002f;
+            ptp_4x4_vstoref(d + 109 * ds + l, v * 1.60000002f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 109 */
         u = ((g15 * m20_21 - g20 * m15_21) + g21 * m15_20);
         v = u;
         if (d)
-            d[110] = ptp_4x4_vfirst(v) * 16.0f;
+            ptp_4x4_vstoref(d + 110 * ds + l, v * 16.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 110 */
         u = ((g15 * m20_22 - g20 * m15_22) + g22 * m15_20);
@@ -12096,7 +12099,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g16 * m20_21 - g20 * m16_21) + g21 * m16_20);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[111] = ptp_4x4_vfirst(v) * 1.60000002f;
+            ptp_4x4_vstoref(d + 111 * ds + l, v * 1.60000002f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 111 */
         u = ((g15 * m20_23 - g20 * m15_23) + g23 * m15_20);
@@ -12107,7 +12110,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g16 * m20_22 - g20 * m16_22) + g22 * m16_20);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[112] = ptp_4x4_vfirst(v) * 1.06666672f;
+            ptp_4x4_vstoref(d + 112 * ds + l, v * 1.06666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 112 */
         u = ((g15 * m20_24 - g20 * m15_24) + g24 * m15_20);
@@ -12123,7 +12126,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g16 * m21_22 - g21 * m16_22) + g22 * m16_21);
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
-            d[113] = ptp_4x4_vfirst(v) * 0.13333334f;
+            ptp_4x4_vstoref(d + 113 * ds + l, v * 0.13333334f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 113 */
         u = ((g19 * m20_21 - g20 * m19_21) + g21 * m19_20);
@@ -12143,7 +12146,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g17 * m21_22 - g21 * m17_22) + g22 * m17_21);
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
-            d[114] = ptp_4x4_vfirst(v) * 0.0761904791f;
+            ptp_4x4_vstoref(d + 114 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 114 */
         u = ((g15 * m22_24 - g22 * m15_24) + g24 * m15_22);
@@ -12160,7 +12163,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g17 * m21_23 - g21 * m17_23) + g23 * m17_21);
         v = PTP_4X4_VFMAS(16.0f, u, v);
         if (d)
-            d[115] = ptp_4x4_vfirst(v) * 0.190476194f;
+            ptp_4x4_vstoref(d + 115 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 115 */
         u = ((g15 * m23_24 - g23 * m15_24) + g24 * m15_23);
@@ -12180,7 +12183,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g17 * m22_23 - g22 * m17_23) + g23 * m17_22);
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
-            d[116] = ptp_4x4_vfirst(v) * 0.0761904791f;
+            ptp_4x4_vstoref(d + 116 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 116 */
         u = ((g19 * m20_24 - g20 * m19_24) + g24 * m19_20);
@@ -12196,7 +12199,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g18 * m22_23 - g22 * m18_23) + g23 * m18_22);
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
-            d[117] = ptp_4x4_vfirst(v) * 0.13333334f;
+            ptp_4x4_vstoref(d + 117 * ds + l, v * 0.13333334f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 117 */
         u = ((g19 * m21_24 - g21 * m19_24) + g24 * m19_21);
@@ -12207,7 +12210,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g18 * m22_24 - g22 * m18_24) + g24 * m18_22);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[118] = ptp_4x4_vfirst(v) * 1.06666672f;
+            ptp_4x4_vstoref(d + 118 * ds + l, v * 1.06666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 118 */
         u = ((g19 * m22_24 - g22 * m19_24) + g24 * m19_22);
@@ -12215,13 +12218,13 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = ((g18 * m23_24 - g23 * m18_24) + g24 * m18_23);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         if (d)
-            d[119] = ptp_4x4_vfirst(v) * 1.60000002f;
+            ptp_4x4_vstoref(d + 119 * ds + l, v * 1.60000002f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 119 */
         u = ((g19 * m23_24 - g23 * m19_24) + g24 * m19_23);
         v = u;
         if (d)
-            d[120] = ptp_4x4_vfirst(v) * 16.0f;
+            ptp_4x4_vstoref(d + 120 * ds + l, v * 16.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 120 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -12241,13 +12244,13 @@ __attribute__((noinline))
 static void ptp_4x4_lanes(const float *PTP_4X4_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                           unsigned char *PTP_4X4_RESTRICT cls)
 {
-    ptp_4x4_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_4x4_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_4x4_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_4x4_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_4x4_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

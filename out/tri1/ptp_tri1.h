@@ -134,10 +134,12 @@ static inline void ptp_tri1_vstore(unsigned char *cls, ptp_tri1_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI1_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_tri1_vfirst(ptp_tri1_vf v)
+/* d[i] = v[i] for the first count (at most PTP_TRI1_VW) lanes. */
+static inline void ptp_tri1_vstoref(float *d, ptp_tri1_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_TRI1_VW; i++)
+        d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
  * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
@@ -185,9 +187,10 @@ static inline ptp_tri1_vf ptp_tri1_vabsmax(ptp_tri1_vf r, ptp_tri1_vf x)
 {
     return PTP_TRI1_ABSMAX(r, x);
 }
-static inline float ptp_tri1_vfirst(ptp_tri1_vf v)
+static inline void ptp_tri1_vstoref(float *d, ptp_tri1_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_TRI1_VFMA(a, b, c) __builtin_fmaf(a, b, c)
@@ -278,16 +281,16 @@ void ptp_tri1_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI1_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_tri1_lanes_body(const float *PTP_TRI1_RESTRICT soa, size_t stride, size_t n,
                                         const float eye[4], unsigned char *PTP_TRI1_RESTRICT cls,
-                                        float *PTP_TRI1_RESTRICT d)
+                                        float *PTP_TRI1_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -323,7 +326,7 @@ static inline void ptp_tri1_lanes_body(const float *PTP_TRI1_RESTRICT soa, size_
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_tri1_vfirst(v);
+            ptp_tri1_vstoref(d + 0 * ds + l, v, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -343,13 +346,13 @@ __attribute__((noinline))
 static void ptp_tri1_lanes(const float *PTP_TRI1_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                            unsigned char *PTP_TRI1_RESTRICT cls)
 {
-    ptp_tri1_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_tri1_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_tri1_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_tri1_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_tri1_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

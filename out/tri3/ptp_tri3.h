@@ -134,10 +134,12 @@ static inline void ptp_tri3_vstore(unsigned char *cls, ptp_tri3_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_tri3_vfirst(ptp_tri3_vf v)
+/* d[i] = v[i] for the first count (at most PTP_TRI3_VW) lanes. */
+static inline void ptp_tri3_vstoref(float *d, ptp_tri3_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_TRI3_VW; i++)
+        d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
  * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
@@ -185,9 +187,10 @@ static inline ptp_tri3_vf ptp_tri3_vabsmax(ptp_tri3_vf r, ptp_tri3_vf x)
 {
     return PTP_TRI3_ABSMAX(r, x);
 }
-static inline float ptp_tri3_vfirst(ptp_tri3_vf v)
+static inline void ptp_tri3_vstoref(float *d, ptp_tri3_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_TRI3_VFMA(a, b, c) __builtin_fmaf(a, b, c)
@@ -486,16 +489,16 @@ void ptp_tri3_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_t stride, size_t n,
                                         const float eye[4], unsigned char *PTP_TRI3_RESTRICT cls,
-                                        float *PTP_TRI3_RESTRICT d)
+                                        float *PTP_TRI3_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -545,7 +548,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_tri3_vfirst(v) * 9.0f;
+            ptp_tri3_vstoref(d + 0 * ds + l, v * 9.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_tri3_vf m1_4 = x1 * y4 - y1 * x4;
@@ -556,7 +559,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
         if (d)
-            d[1] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 1 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_tri3_vf m1_5 = x1 * y5 - y1 * x5;
@@ -566,7 +569,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = u;
         if (d)
-            d[2] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 2 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_tri3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -583,7 +586,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[3] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 3 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -605,7 +608,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g4, -m1_2, u);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[4] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 4 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_tri3_vf m1_9 = x1 * y9 - y1 * x9;
@@ -621,7 +624,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[5] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 5 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_tri3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -634,7 +637,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[6] = ptp_tri3_vfirst(v) * 0.899999976f;
+            ptp_tri3_vstoref(d + 6 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_tri3_vf m4_7 = x4 * y7 - y4 * x7;
@@ -658,7 +661,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g7, -m1_2, u);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[7] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 7 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_tri3_vf m3_9 = x3 * y9 - y3 * x9;
@@ -682,7 +685,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g8, -m1_2, u);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[8] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 8 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_tri3_vf m4_9 = x4 * y9 - y4 * x9;
@@ -695,7 +698,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[9] = ptp_tri3_vfirst(v) * 0.899999976f;
+            ptp_tri3_vstoref(d + 9 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_tri3_vf m6_7 = x6 * y7 - y6 * x7;
@@ -708,7 +711,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[10] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 10 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri3_vf m6_8 = x6 * y8 - y6 * x8;
@@ -730,7 +733,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g8, m1_3, u);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[11] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 11 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_tri3_vf m6_9 = x6 * y9 - y6 * x9;
@@ -757,7 +760,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g8, m2_3, u);
         v = PTP_TRI3_VFMAS(9.0f, u, v);
         if (d)
-            d[12] = ptp_tri3_vfirst(v) * 0.100000001f;
+            ptp_tri3_vstoref(d + 12 * ds + l, v * 0.100000001f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_tri3_vf m7_9 = x7 * y9 - y7 * x9;
@@ -779,7 +782,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g8, m2_4 - m1_5, u);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[13] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 13 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         const ptp_tri3_vf m8_9 = x8 * y9 - y8 * x9;
@@ -792,14 +795,14 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[14] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 14 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         u -= ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v = u;
         if (d)
-            d[15] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 15 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         u = g2 * (m6_7);
@@ -817,7 +820,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g7, -m3_4, u);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[16] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 16 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         u = g1 * (m6_9);
@@ -838,7 +841,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g8, m1_7 - m3_4, u);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[17] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 17 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         u = g2 * (m6_9);
@@ -859,7 +862,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g8, m2_7 - m3_5, u);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[18] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 18 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = g1 * (m8_9);
@@ -877,27 +880,27 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = PTP_TRI3_VFMA(g8, -m4_5, u);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[19] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 19 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
         u -= ((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
         v = u;
         if (d)
-            d[20] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 20 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
         if (d)
-            d[21] = ptp_tri3_vfirst(v) * 9.0f;
+            ptp_tri3_vstoref(d + 21 * ds + l, v * 9.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
         u += ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v = u;
         if (d)
-            d[22] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 22 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = ((g3 * m6_9 - g6 * m3_9) + g9 * m3_6);
@@ -908,7 +911,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
         v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[23] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 23 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         u = ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
@@ -918,7 +921,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[24] = ptp_tri3_vfirst(v) * 0.899999976f;
+            ptp_tri3_vstoref(d + 24 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
@@ -929,20 +932,20 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
         v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[25] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 25 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         u += ((g5 * m7_9 - g7 * m5_9) + g9 * m5_7);
         v = u;
         if (d)
-            d[26] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 26 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v = u;
         if (d)
-            d[27] = ptp_tri3_vfirst(v) * 9.0f;
+            ptp_tri3_vstoref(d + 27 * ds + l, v * 9.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -962,13 +965,13 @@ __attribute__((noinline))
 static void ptp_tri3_lanes(const float *PTP_TRI3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                            unsigned char *PTP_TRI3_RESTRICT cls)
 {
-    ptp_tri3_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_tri3_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_tri3_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_tri3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_tri3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

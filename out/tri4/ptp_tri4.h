@@ -134,10 +134,12 @@ static inline void ptp_tri4_vstore(unsigned char *cls, ptp_tri4_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI4_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_tri4_vfirst(ptp_tri4_vf v)
+/* d[i] = v[i] for the first count (at most PTP_TRI4_VW) lanes. */
+static inline void ptp_tri4_vstoref(float *d, ptp_tri4_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_TRI4_VW; i++)
+        d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
  * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
@@ -185,9 +187,10 @@ static inline ptp_tri4_vf ptp_tri4_vabsmax(ptp_tri4_vf r, ptp_tri4_vf x)
 {
     return PTP_TRI4_ABSMAX(r, x);
 }
-static inline float ptp_tri4_vfirst(ptp_tri4_vf v)
+static inline void ptp_tri4_vstoref(float *d, ptp_tri4_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_TRI4_VFMA(a, b, c) __builtin_fmaf(a, b, c)
@@ -1090,16 +1093,16 @@ void ptp_tri4_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI4_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_t stride, size_t n,
                                         const float eye[4], unsigned char *PTP_TRI4_RESTRICT cls,
-                                        float *PTP_TRI4_RESTRICT d)
+                                        float *PTP_TRI4_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -1159,7 +1162,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_tri4_vfirst(v) * 16.0f;
+            ptp_tri4_vstoref(d + 0 * ds + l, v * 16.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_tri4_vf m1_4 = x1 * y4 - y1 * x4;
@@ -1170,7 +1173,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
         if (d)
-            d[1] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 1 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_tri4_vf m1_5 = x1 * y5 - y1 * x5;
@@ -1180,7 +1183,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = u;
         if (d)
-            d[2] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 2 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_tri4_vf m1_7 = x1 * y7 - y1 * x7;
@@ -1197,7 +1200,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[3] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri4_vf m1_8 = x1 * y8 - y1 * x8;
@@ -1219,7 +1222,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g4, -m1_2, u);
         v = PTP_TRI4_VFMAS(4.0f, u, v);
         if (d)
-            d[4] = ptp_tri4_vfirst(v) * 0.666666687f;
+            ptp_tri4_vstoref(d + 4 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_tri4_vf m1_9 = x1 * y9 - y1 * x9;
@@ -1235,7 +1238,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[5] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 5 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_tri4_vf m1_11 = x1 * y11 - y1 * x11;
@@ -1256,7 +1259,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[6] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 6 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_tri4_vf m1_12 = x1 * y12 - y1 * x12;
@@ -1290,7 +1293,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g7, -m1_2, u);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[7] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 7 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_tri4_vf m1_13 = x1 * y13 - y1 * x13;
@@ -1324,7 +1327,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, -m1_2, u);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[8] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 8 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_tri4_vf m1_14 = x1 * y14 - y1 * x14;
@@ -1344,7 +1347,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[9] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 9 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_tri4_vf m3_11 = x3 * y11 - y3 * x11;
@@ -1365,7 +1368,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[10] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 10 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri4_vf m5_10 = x5 * y10 - y5 * x10;
@@ -1406,7 +1409,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m1_3, u);
         v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[11] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 11 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_tri4_vf m3_13 = x3 * y13 - y3 * x13;
@@ -1441,7 +1444,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m2_3, u);
         v = PTP_TRI4_VFMAS(6.0f, u, v);
         if (d)
-            d[12] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 12 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_tri4_vf m3_14 = x3 * y14 - y3 * x14;
@@ -1482,7 +1485,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m2_4 - m1_5, u);
         v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[13] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 13 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         const ptp_tri4_vf m4_14 = x4 * y14 - y4 * x14;
@@ -1503,7 +1506,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[14] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 14 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_tri4_vf m6_11 = x6 * y11 - y6 * x11;
@@ -1522,7 +1525,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[15] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 15 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_tri4_vf m7_11 = x7 * y11 - y7 * x11;
@@ -1570,7 +1573,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g7, -m3_4, u);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[16] = ptp_tri4_vfirst(v) * 0.0761904791f;
+            ptp_tri4_vstoref(d + 16 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_tri4_vf m9_10 = x9 * y10 - y9 * x10;
@@ -1631,7 +1634,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m1_7, u);
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[17] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 17 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_tri4_vf m6_14 = x6 * y14 - y6 * x14;
@@ -1691,7 +1694,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m2_7, u);
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[18] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 18 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         const ptp_tri4_vf m8_13 = x8 * y13 - y8 * x13;
@@ -1739,7 +1742,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, -m4_5, u);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[19] = ptp_tri4_vfirst(v) * 0.0761904791f;
+            ptp_tri4_vstoref(d + 19 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         const ptp_tri4_vf m8_14 = x8 * y14 - y8 * x14;
@@ -1758,7 +1761,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[20] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 20 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         const ptp_tri4_vf m10_11 = x10 * y11 - y10 * x11;
@@ -1774,7 +1777,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[21] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 21 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         const ptp_tri4_vf m10_12 = x10 * y12 - y10 * x12;
@@ -1812,7 +1815,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, -m3_4, u);
         v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[22] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 22 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         const ptp_tri4_vf m10_13 = x10 * y13 - y10 * x13;
@@ -1870,7 +1873,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m4_6, u);
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[23] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 23 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_tri4_vf m10_14 = x10 * y14 - y10 * x14;
@@ -1918,7 +1921,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m4_7, u);
         v = PTP_TRI4_VFMAS(108.0f, u, v);
         if (d)
-            d[24] = ptp_tri4_vfirst(v) * 0.00952380989f;
+            ptp_tri4_vstoref(d + 24 * ds + l, v * 0.00952380989f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_tri4_vf m11_14 = x11 * y14 - y11 * x14;
@@ -1976,7 +1979,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, m4_7, u);
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[25] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 25 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_tri4_vf m12_14 = x12 * y14 - y12 * x14;
@@ -2014,7 +2017,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g13, -m4_5, u);
         v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[26] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 26 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         const ptp_tri4_vf m13_14 = x13 * y14 - y13 * x14;
@@ -2030,7 +2033,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[27] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 27 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         u = ((g1 * m10_11 - g10 * m1_11) + g11 * m1_10);
@@ -2041,7 +2044,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = -((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[28] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 28 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
         u = g2 * (m10_11);
@@ -2069,7 +2072,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, m4_6, u);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[29] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 29 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = g1 * (m10_13);
@@ -2100,7 +2103,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g12, m4_6, u);
         v = PTP_TRI4_VFMAS(6.0f, u, v);
         if (d)
-            d[30] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 30 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = g1 * (m10_14);
@@ -2156,7 +2159,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, -m4_8, u);
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[31] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 31 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = g2 * (m10_14);
@@ -2212,7 +2215,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g13, m4_7, u);
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[32] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 32 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = g1 * (m12_14);
@@ -2243,7 +2246,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g13, m5_7, u);
         v = PTP_TRI4_VFMAS(6.0f, u, v);
         if (d)
-            d[33] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 33 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = g1 * (m13_14);
@@ -2271,7 +2274,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g13, -m4_9, u);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[34] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 34 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         u = ((g2 * m13_14 - g13 * m2_14) + g14 * m2_13);
@@ -2282,14 +2285,14 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g5 * m8_14 - g8 * m5_14) + g14 * m5_8);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[35] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 35 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         u -= ((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
         v = u;
         if (d)
-            d[36] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 36 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         u = g4 * (m10_11);
@@ -2307,7 +2310,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, -m6_7, u);
         v = PTP_TRI4_VFMAS(4.0f, u, v);
         if (d)
-            d[37] = ptp_tri4_vfirst(v) * 0.666666687f;
+            ptp_tri4_vstoref(d + 37 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = g5 * (m10_11);
@@ -2335,7 +2338,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, -m6_8, u);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[38] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 38 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = g3 * (m10_14);
@@ -2372,7 +2375,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g12, m4_11 - m6_8, u);
         v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[39] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 39 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         u = g6 * (-m7_14);
@@ -2417,7 +2420,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g12, -m7_8, u);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[40] = ptp_tri4_vfirst(v) * 0.0761904791f;
+            ptp_tri4_vstoref(d + 40 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 40 */
         u = g5 * (m10_14);
@@ -2454,7 +2457,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g13, m4_12 - m7_8, u);
         v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[41] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 41 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 41 */
         u = g3 * (m13_14);
@@ -2482,7 +2485,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g13, -m7_9, u);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[42] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 42 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 42 */
         u = g4 * (m13_14);
@@ -2500,27 +2503,27 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g13, -m8_9, u);
         v = PTP_TRI4_VFMAS(4.0f, u, v);
         if (d)
-            d[43] = ptp_tri4_vfirst(v) * 0.666666687f;
+            ptp_tri4_vstoref(d + 43 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 43 */
         u = ((g5 * m13_14 - g13 * m5_14) + g14 * m5_13);
         u -= ((g8 * m9_14 - g9 * m8_14) + g14 * m8_9);
         v = u;
         if (d)
-            d[44] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 44 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 44 */
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v = u;
         if (d)
-            d[45] = ptp_tri4_vfirst(v) * 16.0f;
+            ptp_tri4_vstoref(d + 45 * ds + l, v * 16.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 45 */
         u = ((g6 * m10_12 - g10 * m6_12) + g12 * m6_10);
         u += ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = u;
         if (d)
-            d[46] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 46 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 46 */
         u = ((g6 * m10_13 - g10 * m6_13) + g13 * m6_10);
@@ -2531,7 +2534,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g7 * m10_12 - g10 * m7_12) + g12 * m7_10);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[47] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 47 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 47 */
         u = ((g6 * m10_14 - g10 * m6_14) + g14 * m6_10);
@@ -2545,7 +2548,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g7 * m11_12 - g11 * m7_12) + g12 * m7_11);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[48] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 48 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 48 */
         u = ((g6 * m11_14 - g11 * m6_14) + g14 * m6_11);
@@ -2561,7 +2564,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g7 * m11_13 - g11 * m7_13) + g13 * m7_11);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[49] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 49 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 49 */
         u = ((g6 * m12_14 - g12 * m6_14) + g14 * m6_12);
@@ -2577,7 +2580,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g8 * m11_13 - g11 * m8_13) + g13 * m8_11);
         v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[50] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 50 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 50 */
         u = ((g6 * m13_14 - g13 * m6_14) + g14 * m6_13);
@@ -2591,7 +2594,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[51] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 51 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 51 */
         u = ((g7 * m13_14 - g13 * m7_14) + g14 * m7_13);
@@ -2602,20 +2605,20 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[52] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 52 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 52 */
         u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
         u += ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
         v = u;
         if (d)
-            d[53] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 53 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 53 */
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v = u;
         if (d)
-            d[54] = ptp_tri4_vfirst(v) * 16.0f;
+            ptp_tri4_vstoref(d + 54 * ds + l, v * 16.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 54 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -2635,13 +2638,13 @@ __attribute__((noinline))
 static void ptp_tri4_lanes(const float *PTP_TRI4_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                            unsigned char *PTP_TRI4_RESTRICT cls)
 {
-    ptp_tri4_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_tri4_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_tri4_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_tri4_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_tri4_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

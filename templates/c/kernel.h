@@ -108,10 +108,12 @@ static inline void {{PREFIX}}vstore(unsigned char *cls, {{PREFIX}}vm c, size_t c
     for (i = 0; i < count && i < {{UPREFIX}}VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float {{PREFIX}}vfirst({{PREFIX}}vf v)
+/* d[i] = v[i] for the first count (at most {{UPREFIX}}VW) lanes. */
+static inline void {{PREFIX}}vstoref(float *d, {{PREFIX}}vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < {{UPREFIX}}VW; i++)
+        d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
  * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
@@ -159,9 +161,10 @@ static inline {{PREFIX}}vf {{PREFIX}}vabsmax({{PREFIX}}vf r, {{PREFIX}}vf x)
 {
     return {{UPREFIX}}ABSMAX(r, x);
 }
-static inline float {{PREFIX}}vfirst({{PREFIX}}vf v)
+static inline void {{PREFIX}}vstoref(float *d, {{PREFIX}}vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define {{UPREFIX}}VFMA(a, b, c) __builtin_fmaf(a, b, c)
