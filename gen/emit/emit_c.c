@@ -124,11 +124,11 @@ static size_t put_fused(sbuf *o, const slp_prog *p, size_t a, int world, const c
     size_t g, b, e, i;
     for (g = a; g < p->nentries && p->entries[g].plane == plane; g = e, first_group = 0) {
         e = slp_group_end(p, g);
-        for (i = g; i < e; i++)
-            put_minor(o, p, p->entries[i].pair, world, px, done);
         for (b = g; b < e; b = i) {
             int k, pt = p->entries[b].point;
             i = slp_point_end(p, b);
+            for (k = (int)b; k < (int)i; k++) /* the minors declared where first used */
+                put_minor(o, p, p->entries[k].pair, world, px, done);
             for (k = 0; k < (world ? 2 : 1); k++) {
                 char gl = world ? (k ? 'b' : 'a') : 'g', ml = world && !k ? 'n' : 'm';
                 if (b == g && k == 0)

@@ -550,8 +550,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = u;
         const ptp_2x2_vf m1_7 = x1 * y7 - y1 * x7;
         const ptp_2x2_vf m3_5 = x3 * y5 - y3 * x5;
-        const ptp_2x2_vf m0_7 = x0 * y7 - y0 * x7;
         u = g0 * (m3_5 - m1_7);
+        const ptp_2x2_vf m0_7 = x0 * y7 - y0 * x7;
         u = PTP_2X2_VFMA(g1, m0_7, u);
         u = PTP_2X2_VFMA(g3, -m0_5, u);
         u = PTP_2X2_VFMA(g5, m0_3, u);
@@ -566,8 +566,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_2x2_vf m1_8 = x1 * y8 - y1 * x8;
-        const ptp_2x2_vf m0_8 = x0 * y8 - y0 * x8;
         u = g0 * (-m1_8);
+        const ptp_2x2_vf m0_8 = x0 * y8 - y0 * x8;
         u = PTP_2X2_VFMA(g1, m0_8 - m2_6, u);
         u = PTP_2X2_VFMA(g2, m1_6, u);
         u = PTP_2X2_VFMA(g6, -m1_2, u);

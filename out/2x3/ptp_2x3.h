@@ -854,8 +854,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g8, -m0_2, u);
         v = 2.0f * u;
         const ptp_2x3_vf m1_9 = x1 * y9 - y1 * x9;
-        const ptp_2x3_vf m0_9 = x0 * y9 - y0 * x9;
         u = g0 * (-m1_9);
+        const ptp_2x3_vf m0_9 = x0 * y9 - y0 * x9;
         u = PTP_2X3_VFMA(g1, m0_9, u);
         u = PTP_2X3_VFMA(g9, -m0_1, u);
         v = PTP_2X3_VFMAS(3.0f, u, v);
@@ -883,8 +883,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g7, m0_4, u);
         v = PTP_2X3_VFMAS(2.0f, u, v);
         const ptp_2x3_vf m1_10 = x1 * y10 - y1 * x10;
-        const ptp_2x3_vf m0_10 = x0 * y10 - y0 * x10;
         u = g0 * (-m1_10);
+        const ptp_2x3_vf m0_10 = x0 * y10 - y0 * x10;
         u = PTP_2X3_VFMA(g1, m0_10 - m2_8, u);
         u = PTP_2X3_VFMA(g2, m1_8, u);
         u = PTP_2X3_VFMA(g8, -m1_2, u);
@@ -908,8 +908,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_2x3_vf m1_11 = x1 * y11 - y1 * x11;
-        const ptp_2x3_vf m0_11 = x0 * y11 - y0 * x11;
         u = g0 * (-m1_11);
+        const ptp_2x3_vf m0_11 = x0 * y11 - y0 * x11;
         u = PTP_2X3_VFMA(g1, m0_11, u);
         u = PTP_2X3_VFMA(g11, -m0_1, u);
         v = u;

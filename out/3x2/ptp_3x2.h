@@ -808,8 +808,8 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g5, m0_3, u);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         const ptp_3x2_vf m1_7 = x1 * y7 - y1 * x7;
-        const ptp_3x2_vf m0_7 = x0 * y7 - y0 * x7;
         u = g0 * (-m1_7);
+        const ptp_3x2_vf m0_7 = x0 * y7 - y0 * x7;
         u = PTP_3X2_VFMA(g1, m0_7, u);
         u = PTP_3X2_VFMA(g7, -m0_1, u);
         v = PTP_3X2_VFMAS(4.0f, u, v);
@@ -822,8 +822,8 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_3x2_vf m1_8 = x1 * y8 - y1 * x8;
-        const ptp_3x2_vf m0_8 = x0 * y8 - y0 * x8;
         u = g0 * (-m1_8);
+        const ptp_3x2_vf m0_8 = x0 * y8 - y0 * x8;
         u = PTP_3X2_VFMA(g1, m0_8 - m2_6, u);
         u = PTP_3X2_VFMA(g2, m1_6, u);
         u = PTP_3X2_VFMA(g6, -m1_2, u);
@@ -900,8 +900,8 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g9, -m0_2, u);
         v = u;
         const ptp_3x2_vf m1_10 = x1 * y10 - y1 * x10;
-        const ptp_3x2_vf m0_10 = x0 * y10 - y0 * x10;
         u = g0 * (-m1_10);
+        const ptp_3x2_vf m0_10 = x0 * y10 - y0 * x10;
         u = PTP_3X2_VFMA(g1, m0_10, u);
         u = PTP_3X2_VFMA(g10, -m0_1, u);
         v = PTP_3X2_VFMAS(2.0f, u, v);
@@ -930,8 +930,8 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_3x2_vf m1_11 = x1 * y11 - y1 * x11;
-        const ptp_3x2_vf m0_11 = x0 * y11 - y0 * x11;
         u = g0 * (-m1_11);
+        const ptp_3x2_vf m0_11 = x0 * y11 - y0 * x11;
         u = PTP_3X2_VFMA(g1, m0_11 - m2_9, u);
         u = PTP_3X2_VFMA(g2, m1_9, u);
         u = PTP_3X2_VFMA(g9, -m1_2, u);

@@ -1495,8 +1495,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = 4.0f * u;
         const ptp_3x3_vf m1_9 = x1 * y9 - y1 * x9;
         const ptp_3x3_vf m4_6 = x4 * y6 - y4 * x6;
-        const ptp_3x3_vf m0_9 = x0 * y9 - y0 * x9;
         u = g0 * (m4_6 - m1_9);
+        const ptp_3x3_vf m0_9 = x0 * y9 - y0 * x9;
         u = PTP_3X3_VFMA(g1, m0_9, u);
         u = PTP_3X3_VFMA(g4, -m0_6, u);
         u = PTP_3X3_VFMA(g6, m0_4, u);
@@ -1521,8 +1521,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g7, m0_4, u);
         v = PTP_3X3_VFMAS(3.0f, u, v);
         const ptp_3x3_vf m1_10 = x1 * y10 - y1 * x10;
-        const ptp_3x3_vf m0_10 = x0 * y10 - y0 * x10;
         u = g0 * (-m1_10);
+        const ptp_3x3_vf m0_10 = x0 * y10 - y0 * x10;
         u = PTP_3X3_VFMA(g1, m0_10 - m2_8, u);
         u = PTP_3X3_VFMA(g2, m1_8, u);
         u = PTP_3X3_VFMA(g8, -m1_2, u);
@@ -1549,8 +1549,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_3x3_vf m1_11 = x1 * y11 - y1 * x11;
-        const ptp_3x3_vf m0_11 = x0 * y11 - y0 * x11;
         u = g0 * (-m1_11);
+        const ptp_3x3_vf m0_11 = x0 * y11 - y0 * x11;
         u = PTP_3X3_VFMA(g1, m0_11, u);
         u = PTP_3X3_VFMA(g11, -m0_1, u);
         v = 2.0f * u;
@@ -1717,8 +1717,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g12, -m0_2, u);
         v = 2.0f * u;
         const ptp_3x3_vf m1_13 = x1 * y13 - y1 * x13;
-        const ptp_3x3_vf m0_13 = x0 * y13 - y0 * x13;
         u = g0 * (-m1_13);
+        const ptp_3x3_vf m0_13 = x0 * y13 - y0 * x13;
         u = PTP_3X3_VFMA(g1, m0_13, u);
         u = PTP_3X3_VFMA(g13, -m0_1, u);
         v = PTP_3X3_VFMAS(3.0f, u, v);
@@ -1756,8 +1756,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = u;
         const ptp_3x3_vf m1_14 = x1 * y14 - y1 * x14;
         const ptp_3x3_vf m4_11 = x4 * y11 - y4 * x11;
-        const ptp_3x3_vf m0_14 = x0 * y14 - y0 * x14;
         u = g0 * (m4_11 - m1_14);
+        const ptp_3x3_vf m0_14 = x0 * y14 - y0 * x14;
         u = PTP_3X3_VFMA(g1, m0_14 - m2_12, u);
         u = PTP_3X3_VFMA(g2, m1_12, u);
         u = PTP_3X3_VFMA(g3, m4_8, u);
@@ -1790,8 +1790,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         const ptp_3x3_vf m1_15 = x1 * y15 - y1 * x15;
-        const ptp_3x3_vf m0_15 = x0 * y15 - y0 * x15;
         u = g0 * (-m1_15);
+        const ptp_3x3_vf m0_15 = x0 * y15 - y0 * x15;
         u = PTP_3X3_VFMA(g1, m0_15, u);
         u = PTP_3X3_VFMA(g15, -m0_1, u);
         v = u;
@@ -2210,8 +2210,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g12, -m2_7, u);
         v = PTP_3X3_VFMAS(5.0f, u, v);
         const ptp_3x3_vf m10_11 = x10 * y11 - y10 * x11;
-        const ptp_3x3_vf m5_15 = x5 * y15 - y5 * x15;
         u = g0 * (m10_11);
+        const ptp_3x3_vf m5_15 = x5 * y15 - y5 * x15;
         u = PTP_3X3_VFMA(g1, m5_15, u);
         u = PTP_3X3_VFMA(g5, -m1_15, u);
         u = PTP_3X3_VFMA(g10, -m0_11, u);

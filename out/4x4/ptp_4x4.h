@@ -4851,8 +4851,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = 9.0f * u;
         const ptp_4x4_vf m1_11 = x1 * y11 - y1 * x11;
         const ptp_4x4_vf m5_7 = x5 * y7 - y5 * x7;
-        const ptp_4x4_vf m0_11 = x0 * y11 - y0 * x11;
         u = g0 * (m5_7 - m1_11);
+        const ptp_4x4_vf m0_11 = x0 * y11 - y0 * x11;
         u = PTP_4X4_VFMA(g1, m0_11, u);
         u = PTP_4X4_VFMA(g5, -m0_7, u);
         u = PTP_4X4_VFMA(g7, m0_5, u);
@@ -4877,8 +4877,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g8, m0_5, u);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         const ptp_4x4_vf m1_12 = x1 * y12 - y1 * x12;
-        const ptp_4x4_vf m0_12 = x0 * y12 - y0 * x12;
         u = g0 * (-m1_12);
+        const ptp_4x4_vf m0_12 = x0 * y12 - y0 * x12;
         u = PTP_4X4_VFMA(g1, m0_12 - m2_10, u);
         u = PTP_4X4_VFMA(g2, m1_10, u);
         u = PTP_4X4_VFMA(g10, -m1_2, u);
@@ -4915,8 +4915,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g9, m0_5, u);
         v = PTP_4X4_VFMAS(4.0f, u, v);
         const ptp_4x4_vf m1_13 = x1 * y13 - y1 * x13;
-        const ptp_4x4_vf m0_13 = x0 * y13 - y0 * x13;
         u = g0 * (-m1_13);
+        const ptp_4x4_vf m0_13 = x0 * y13 - y0 * x13;
         u = PTP_4X4_VFMA(g1, m0_13, u);
         u = PTP_4X4_VFMA(g13, -m0_1, u);
         v = PTP_4X4_VFMAS(12.0f, u, v);
@@ -4962,8 +4962,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_4x4_vf m1_14 = x1 * y14 - y1 * x14;
-        const ptp_4x4_vf m0_14 = x0 * y14 - y0 * x14;
         u = g0 * (-m1_14);
+        const ptp_4x4_vf m0_14 = x0 * y14 - y0 * x14;
         u = PTP_4X4_VFMA(g1, m0_14, u);
         u = PTP_4X4_VFMA(g14, -m0_1, u);
         v = 3.0f * u;
@@ -5296,8 +5296,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g15, -m0_2, u);
         v = 3.0f * u;
         const ptp_4x4_vf m1_16 = x1 * y16 - y1 * x16;
-        const ptp_4x4_vf m0_16 = x0 * y16 - y0 * x16;
         u = g0 * (-m1_16);
+        const ptp_4x4_vf m0_16 = x0 * y16 - y0 * x16;
         u = PTP_4X4_VFMA(g1, m0_16, u);
         u = PTP_4X4_VFMA(g16, -m0_1, u);
         v = PTP_4X4_VFMAS(4.0f, u, v);
@@ -5335,8 +5335,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = u;
         const ptp_4x4_vf m1_17 = x1 * y17 - y1 * x17;
         const ptp_4x4_vf m5_13 = x5 * y13 - y5 * x13;
-        const ptp_4x4_vf m0_17 = x0 * y17 - y0 * x17;
         u = g0 * (m5_13 - m1_17);
+        const ptp_4x4_vf m0_17 = x0 * y17 - y0 * x17;
         u = PTP_4X4_VFMA(g1, m0_17 - m2_15, u);
         u = PTP_4X4_VFMA(g2, m1_15, u);
         u = PTP_4X4_VFMA(g3, m5_10, u);
@@ -5382,8 +5382,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(2.0f, u, v);
         const ptp_4x4_vf m1_18 = x1 * y18 - y1 * x18;
         const ptp_4x4_vf m9_10 = x9 * y10 - y9 * x10;
-        const ptp_4x4_vf m0_18 = x0 * y18 - y0 * x18;
         u = g0 * (-m1_18 - m9_10);
+        const ptp_4x4_vf m0_18 = x0 * y18 - y0 * x18;
         u = PTP_4X4_VFMA(g1, m0_18, u);
         u = PTP_4X4_VFMA(g9, m0_10, u);
         u = PTP_4X4_VFMA(g10, -m0_9, u);
@@ -5452,8 +5452,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_4x4_vf m1_19 = x1 * y19 - y1 * x19;
-        const ptp_4x4_vf m0_19 = x0 * y19 - y0 * x19;
         u = g0 * (-m1_19);
+        const ptp_4x4_vf m0_19 = x0 * y19 - y0 * x19;
         u = PTP_4X4_VFMA(g1, m0_19, u);
         u = PTP_4X4_VFMA(g19, -m0_1, u);
         v = u;
@@ -5883,8 +5883,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g20, -m0_2, u);
         v = 3.0f * u;
         const ptp_4x4_vf m1_21 = x1 * y21 - y1 * x21;
-        const ptp_4x4_vf m0_21 = x0 * y21 - y0 * x21;
         u = g0 * (-m1_21);
+        const ptp_4x4_vf m0_21 = x0 * y21 - y0 * x21;
         u = PTP_4X4_VFMA(g1, m0_21, u);
         u = PTP_4X4_VFMA(g21, -m0_1, u);
         v = PTP_4X4_VFMAS(4.0f, u, v);
@@ -5940,8 +5940,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g20, -m0_3, u);
         v = u;
         const ptp_4x4_vf m1_22 = x1 * y22 - y1 * x22;
-        const ptp_4x4_vf m0_22 = x0 * y22 - y0 * x22;
         u = g0 * (-m1_22);
+        const ptp_4x4_vf m0_22 = x0 * y22 - y0 * x22;
         u = PTP_4X4_VFMA(g1, m0_22 - m2_20, u);
         u = PTP_4X4_VFMA(g2, m1_20, u);
         u = PTP_4X4_VFMA(g20, -m1_2, u);
@@ -6023,8 +6023,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = u;
         const ptp_4x4_vf m1_23 = x1 * y23 - y1 * x23;
         const ptp_4x4_vf m5_19 = x5 * y19 - y5 * x19;
-        const ptp_4x4_vf m0_23 = x0 * y23 - y0 * x23;
         u = g0 * (m5_19 - m1_23);
+        const ptp_4x4_vf m0_23 = x0 * y23 - y0 * x23;
         u = PTP_4X4_VFMA(g1, m0_23, u);
         u = PTP_4X4_VFMA(g5, -m0_19, u);
         u = PTP_4X4_VFMA(g19, m0_5, u);
@@ -6140,8 +6140,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         const ptp_4x4_vf m1_24 = x1 * y24 - y1 * x24;
-        const ptp_4x4_vf m0_24 = x0 * y24 - y0 * x24;
         u = g0 * (-m1_24);
+        const ptp_4x4_vf m0_24 = x0 * y24 - y0 * x24;
         u = PTP_4X4_VFMA(g1, m0_24, u);
         u = PTP_4X4_VFMA(g24, -m0_1, u);
         v = u;

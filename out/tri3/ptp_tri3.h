@@ -591,8 +591,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri3_vf m1_8 = x1 * y8 - y1 * x8;
         const ptp_tri3_vf m2_7 = x2 * y7 - y2 * x7;
-        const ptp_tri3_vf m0_8 = x0 * y8 - y0 * x8;
         u = g0 * (m1_8 - m2_7);
+        const ptp_tri3_vf m0_8 = x0 * y8 - y0 * x8;
         u = PTP_TRI3_VFMA(g1, -m0_8, u);
         u = PTP_TRI3_VFMA(g2, m0_7, u);
         u = PTP_TRI3_VFMA(g7, -m0_2, u);

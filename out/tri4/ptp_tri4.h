@@ -1205,8 +1205,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri4_vf m1_8 = x1 * y8 - y1 * x8;
         const ptp_tri4_vf m2_7 = x2 * y7 - y2 * x7;
-        const ptp_tri4_vf m0_8 = x0 * y8 - y0 * x8;
         u = g0 * (m1_8 - m2_7);
+        const ptp_tri4_vf m0_8 = x0 * y8 - y0 * x8;
         u = PTP_TRI4_VFMA(g1, -m0_8, u);
         u = PTP_TRI4_VFMA(g2, m0_7, u);
         u = PTP_TRI4_VFMA(g7, -m0_2, u);
@@ -1264,8 +1264,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_tri4_vf m1_12 = x1 * y12 - y1 * x12;
         const ptp_tri4_vf m2_11 = x2 * y11 - y2 * x11;
-        const ptp_tri4_vf m0_12 = x0 * y12 - y0 * x12;
         u = g0 * (m1_12 - m2_11);
+        const ptp_tri4_vf m0_12 = x0 * y12 - y0 * x12;
         u = PTP_TRI4_VFMA(g1, -m0_12, u);
         u = PTP_TRI4_VFMA(g2, m0_11, u);
         u = PTP_TRI4_VFMA(g11, -m0_2, u);
@@ -1298,8 +1298,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_tri4_vf m1_13 = x1 * y13 - y1 * x13;
         const ptp_tri4_vf m2_12 = x2 * y12 - y2 * x12;
-        const ptp_tri4_vf m0_13 = x0 * y13 - y0 * x13;
         u = g0 * (m1_13 - m2_12);
+        const ptp_tri4_vf m0_13 = x0 * y13 - y0 * x13;
         u = PTP_TRI4_VFMA(g1, -m0_13, u);
         u = PTP_TRI4_VFMA(g2, m0_12, u);
         u = PTP_TRI4_VFMA(g12, -m0_2, u);
