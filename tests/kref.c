@@ -1,6 +1,6 @@
 /* kref.c: test data and the double-precision reference for executing emitted kernels.
  * The bound on a float32 evaluation is (terms + 16) * 2^-24 times the sum of |monomials|; exact
- * zeros (two equal points in every term of a plane) have bound 0. */
+ * zeros (a plane along a boundary edge collapsed to one point) have bound 0. */
 #include "kref.h"
 #include "check.h"
 #include "core/i128.h"
@@ -228,6 +228,35 @@ static int integer_weights(kref_ref *r, ptp_error *err)
     return PTP_OK;
 }
 
+/* r->edge: the planes a collapsed boundary edge zeros exactly, those whose every term has two
+ * points on that edge (the contract's exact zeros); PTP_ENOMEM on failure. */
+static int edge_planes(kref_ref *r, ptp_error *err)
+{
+    int P, e, c;
+    size_t x, a = 0, b;
+    r->edge = calloc((size_t)r->L, 1);
+    if (!r->edge)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory");
+    for (P = 0; P < r->L; P++, a = b) {
+        for (b = a; b < r->t.nterms && r->t.terms[b].plane == P; b++)
+            ;
+        for (e = 0; e < tp_domain_edges(&r->t.dom) && !r->edge[P]; e++) {
+            for (x = a; x < b; x++) {
+                const int pt[3] = {r->t.terms[x].j, r->t.terms[x].k, r->t.terms[x].l};
+                int i, j, on = 0;
+                for (c = 0; c < 3; c++) {
+                    tp_domain_point_ij(&i, &j, &r->t.dom, pt[c]);
+                    on += tp_domain_on_edge(&r->t.dom, e, i, j) != 0;
+                }
+                if (on < 2)
+                    break;
+            }
+            r->edge[P] = x == b;
+        }
+    }
+    return PTP_OK;
+}
+
 int kref_init(kref_ref *r, tp_kind kind, int n, int m, kref_space space, kref_rule rule,
               ptp_error *err)
 {
@@ -240,8 +269,12 @@ int kref_init(kref_ref *r, tp_kind kind, int n, int m, kref_space space, kref_ru
     r->space = space;
     r->rule = rule;
     r->certified = 0;
-    if ((st = integer_weights(r, err)))
+    r->edge = NULL;
+    if ((st = integer_weights(r, err)) || (st = edge_planes(r, err))) {
+        free(r->wint);
+        free(r->den);
         tp_clear(&r->t);
+    }
     return st;
 }
 
@@ -259,8 +292,10 @@ void kref_clear(kref_ref *r)
     tp_clear(&r->t);
     free(r->wint);
     free(r->den);
+    free(r->edge);
     r->wint = NULL;
     r->den = NULL;
+    r->edge = NULL;
 }
 
 void kref_table_max(int *maxp, int *maxk, const tp_table *t)
@@ -964,13 +999,16 @@ done:
 }
 
 /* cross4 of Appendix A in double, and the sum of |monomials| of each component. With two equal
- * points it is exactly zero (t = mag = 0): a float evaluation without contracted multiply-adds
- * gives exactly zero too, so such planes, e.g. along a collapsed edge, have bound 0. */
-static void cross4_mag(double t[4], double mag[4], const float *a, const float *b, const float *c)
+ * points and exact set, it is exactly zero (t = mag = 0): the kernels evaluate the planes a
+ * collapsed edge zeros (kref_ref.edge) without contracted multiply-adds, so that their terms with
+ * two equal points are exactly zero too and such a plane has bound 0. */
+static void cross4_mag(double t[4], double mag[4], const float *a, const float *b, const float *c,
+                       int exact)
 {
     static const int rows[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
     int o;
-    if (!memcmp(a, b, 4 * sizeof *a) || !memcmp(a, c, 4 * sizeof *a) || !memcmp(b, c, 4 * sizeof *b)) {
+    if (exact && (!memcmp(a, b, 4 * sizeof *a) || !memcmp(a, c, 4 * sizeof *a) ||
+                  !memcmp(b, c, 4 * sizeof *b))) {
         for (o = 0; o < 4; o++)
             t[o] = mag[o] = 0;
         return;
@@ -1001,7 +1039,7 @@ void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, doub
         const tp_term *e = &r->t.terms[x];
         double t[4], mag[4], w = rat_get_d(&e->w), v = 0, mg = 0;
         int c;
-        cross4_mag(t, mag, b[e->j], b[e->k], b[e->l]);
+        cross4_mag(t, mag, b[e->j], b[e->k], b[e->l], r->edge[e->plane]);
         for (c = 0; c < 4; c++)
             if (r->space == KREF_WORLD || c == 2) {
                 v += s->eye[c] * t[c];

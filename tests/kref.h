@@ -35,6 +35,8 @@ typedef struct {
     int64_t *wint;     /* per term: den[plane] * w, an integer; NULL when a plane's sum of
                           |den * w| reaches 2^47 (exact sets are then refused) */
     ptp_i128 *den;     /* per plane: the lcm of its weights' denominators (> 0) */
+    unsigned char *edge; /* per plane: 1 when every term has two points on one boundary edge, so
+                            that collapsing that edge zeros the plane exactly (else NULL: none) */
 } kref_ref;
 
 /* Accumulated comparison of a kernel's output with the reference. */

@@ -262,6 +262,7 @@ mutant() {
 # The checks can fail: the table (values) and the straight-line code (classify) each.
 mutant '0,/-9.0f/s//-9.5f/' '.*plane values' "one table weight changed (-9 -> -9.5)"
 mutant '0,/u = -((g0 \* m1_5/s//u = ((g0 * m1_5/' 'classify_batch' "one straight-line term's sign flipped"
+mutant '0,/VFMA(g2, m0_8, u)/s//VFMA(g2, -m0_8, u)/' 'classify_batch' "one fused plane's minor's sign flipped"
 
 # The vectorized paths as users build them for speed: clang -O3 -march=native (its vectorizer),
 # gcc -O2 -march=native (GNU C vectors, AVX-512 here) and -mavx2 (8 lanes); with and without the

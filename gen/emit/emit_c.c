@@ -71,27 +71,85 @@ static void put_bracket(sbuf *o, const slp_prog *p, const slp_term *x, char g, c
                 q[x->pair[1]].l, g, x->point[2], m, q[x->pair[2]].k, q[x->pair[2]].l);
 }
 
-/* Declares the minors term x needs that are not declared yet. */
-static void put_minors(sbuf *o, const slp_prog *p, const slp_term *x, int world, const char *px,
-                       unsigned char *done)
+/* Declares the minor pair unless done[pair]. */
+static void put_minor(sbuf *o, const slp_prog *p, int pair, int world, const char *px,
+                      unsigned char *done)
 {
-    int i;
-    for (i = 0; i < 3; i++) {
-        const slp_pair *q = &p->pairs[x->pair[i]];
-        if (done[x->pair[i]])
-            continue;
-        done[x->pair[i]] = 1;
-        sbuf_printf(o, "        const %svf m%d_%d = x%d * y%d - y%d * x%d;\n", px, q->k, q->l, q->k,
+    const slp_pair *q = &p->pairs[pair];
+    if (done[pair])
+        return;
+    done[pair] = 1;
+    sbuf_printf(o, "        const %svf m%d_%d = x%d * y%d - y%d * x%d;\n", px, q->k, q->l, q->k, q->l,
+                q->k, q->l);
+    if (world)
+        sbuf_printf(o, "        const %svf n%d_%d = z%d * w%d - w%d * z%d;\n", px, q->k, q->l, q->k,
                     q->l, q->k, q->l);
-        if (world)
-            sbuf_printf(o, "        const %svf n%d_%d = z%d * w%d - w%d * z%d;\n", px, q->k, q->l,
-                        q->k, q->l, q->k, q->l);
+}
+
+/* The signed sum of the minors (letter m) of fused entries [a, b), positive ones first. */
+static void put_minor_sum(sbuf *o, const slp_prog *p, size_t a, size_t b, char m)
+{
+    size_t i;
+    int pass, n = 0;
+    for (pass = 0; pass < 2; pass++)
+        for (i = a; i < b; i++) {
+            const slp_entry *x = &p->entries[i];
+            const slp_pair *q = &p->pairs[x->pair];
+            if (x->neg != pass)
+                continue;
+            sbuf_printf(o, "%s%c%d_%d", n++ ? (x->neg ? " - " : " + ") : x->neg ? "-" : "", m, q->k,
+                        q->l);
+        }
+}
+
+/* Appends v's update with the group's sum u at scale s: assigned for the plane's first group. */
+static void put_group_end(sbuf *o, const rat *s, int first_group, const char *up)
+{
+    char sv[RAT_STRLEN];
+    rat one;
+    rat_set_si(&one, 1);
+    rat_get_str(sv, s);
+    if (rat_equal(s, &one))
+        sbuf_printf(o, "        v %s u;\n", first_group ? "=" : "+=");
+    else if (first_group)
+        sbuf_printf(o, "        v = %s.0f * u;\n", sv);
+    else
+        sbuf_printf(o, "        v = %sVFMAS(%s.0f, u, v);\n", up, sv);
+}
+
+/* A fused plane from entries [a, ...): per group u = sum over points b of G(b) times the signed
+ * sum of b's minors, with multiply-adds, then v; returns the end of the plane's entries. */
+static size_t put_fused(sbuf *o, const slp_prog *p, size_t a, int world, const char *px,
+                        const char *up, unsigned char *done)
+{
+    int plane = p->entries[a].plane, first_group = 1;
+    size_t g, b, e, i;
+    for (g = a; g < p->nentries && p->entries[g].plane == plane; g = e, first_group = 0) {
+        e = slp_group_end(p, g);
+        for (b = g; b < e; b = i) {
+            int k, pt = p->entries[b].point;
+            i = slp_point_end(p, b);
+            for (k = (int)b; k < (int)i; k++) /* the minors declared where first used */
+                put_minor(o, p, p->entries[k].pair, world, px, done);
+            for (k = 0; k < (world ? 2 : 1); k++) {
+                char gl = world ? (k ? 'b' : 'a') : 'g', ml = world && !k ? 'n' : 'm';
+                if (b == g && k == 0)
+                    sbuf_printf(o, "        u = %c%d * (", gl, pt);
+                else
+                    sbuf_printf(o, "        u = %sVFMA(%c%d, ", up, gl, pt);
+                put_minor_sum(o, p, b, i, ml);
+                sbuf_puts(o, b == g && k == 0 ? ");\n" : ", u);\n");
+            }
+        }
+        put_group_end(o, &p->s[p->entries[g].group], first_group, up);
     }
+    return g;
 }
 
 /* The statements of term i: its group's sum u and, at the end of a group, the plane's v
  * (assigned when the group is the plane's first, first_group). */
-static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_group)
+static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_group,
+                     const char *up)
 {
     const slp_term *x = &p->terms[i];
     int first = i == 0 || p->terms[i - 1].group != x->group;
@@ -109,17 +167,8 @@ static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_
     } else
         put_bracket(o, p, x, 'g', 'm');
     sbuf_puts(o, ";\n");
-    if (last) {
-        char sv[RAT_STRLEN];
-        rat one;
-        rat_set_si(&one, 1);
-        rat_get_str(sv, &p->s[x->group]);
-        sbuf_printf(o, "        v %s ", first_group ? "=" : "+=");
-        if (rat_equal(&p->s[x->group], &one))
-            sbuf_puts(o, "u;\n");
-        else
-            sbuf_printf(o, "%s.0f * u;\n", sv);
-    }
+    if (last)
+        put_group_end(o, &p->s[x->group], first_group, up);
 }
 
 /* Appends a constant double table NAME[n] (17 digits: each literal rounds back to its double;
@@ -232,14 +281,14 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
                 " * Laplace expansions over shared 2x2 minors. An iteration classifies %sVW patches,\n"
                 " * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations\n"
                 " * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last\n"
-                " * one. Products are never contracted into FMAs: equal points give exact zeros.\n"
-                " * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a\n"
-                " * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)\n"
-                " * and values. */\n"
+                " * one. Exact planes never contract products into FMAs (equal points give exact zeros);\n"
+                " * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P\n"
+                " * of patch l that decides, at true scale: times a positive float per plane, which keeps\n"
+                " * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */\n"
                 "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
                 "static inline void %slanes_body(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
                 "%*sconst float eye[4], unsigned char *%sRESTRICT cls,\n"
-                "%*sfloat *%sRESTRICT d)\n{\n"
+                "%*sfloat *%sRESTRICT d, size_t ds)\n{\n"
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
                 up, up, px, up, (int)strlen(px) + 31, "", up, (int)strlen(px) + 31, "", up);
     if (world)
@@ -320,54 +369,75 @@ static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const ce
     }
 }
 
-/* With d: d[P] = lane 0 of the value v of plane P times 1/c_P (its scale), which keeps v's sign. */
+/* With d: d[P * ds + l] = the value v of plane P of each patch l times 1/c_P (its scale), which
+ * keeps v's sign. */
 static void put_value_store(sbuf *o, const slp_prog *p, int plane, const char *px)
 {
     char k[40];
     rat one, inv;
     rat_set_si(&one, 1);
-    sbuf_printf(o, "        if (d)\n            d[%d] = %svfirst(v)", plane, px);
+    sbuf_printf(o, "        if (d)\n            %svstoref(d + %d * ds + l, v", px, plane);
     if (!rat_equal(&p->c[plane], &one) && !rat_div(&inv, &one, &p->c[plane]))
         sbuf_printf(o, " * %s", fmt_float_literal(k, &inv));
-    sbuf_puts(o, ";\n");
+    sbuf_puts(o, ", n - l);\n");
 }
 
-/* The straight-line program: every term and, after a plane's last, its value into the masks
- * (and into d). */
-static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
-                       ptp_error *err)
+/* The terms of exact plane from term a, in bracket form; returns the end of its terms. */
+static size_t put_exact(sbuf *o, const slp_prog *p, size_t a, int world, const char *px,
+                        const char *up, unsigned char *done)
 {
-    const char *px = info->prefix, *op;
-    int world = info->space == OUT_WORLD, first_group = 1;
-    int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
-    unsigned char *done = calloc(p->npairs + 1, 1);
     size_t i;
+    int first_group = 1, k;
+    for (i = a; i < p->nterms && p->terms[i].plane == p->terms[a].plane; i++) {
+        for (k = 0; k < 3; k++)
+            put_minor(o, p, p->terms[i].pair[k], world, px, done);
+        if (i > a && p->terms[i - 1].group != p->terms[i].group)
+            first_group = 0;
+        put_term(o, p, i, world, first_group, up);
+    }
+    return i;
+}
+
+/* Plane P's value v into the masks (set by the first plane, certified: by the size guard). */
+static void put_masks(sbuf *o, const cert_bounds *cb, const out_info *info, int plane, int first)
+{
+    const char *op = first ? "=" : "|=";
+    if (info->certified)
+        sbuf_printf(o, "        t = %.8ef * ER3 + %.8ef * F; /* the bound of plane %d */\n"
+                       "        notlt |= (v < -t) == 0;\n        notgt |= (v > t) == 0;\n"
+                       "        plt %s (v < 0.0f) == 0;\n        pgt %s (v > 0.0f) == 0;\n",
+                    (double)cb->k[plane], (double)cb->k2[plane], plane, op, op);
+    else if (info->rule == OUT_STRICT)
+        sbuf_printf(o, "        notlt %s (v < 0.0f) == 0;\n        notgt %s (v > 0.0f) == 0; /* plane %d */\n",
+                    op, op, plane);
+    else
+        sbuf_printf(o, "        lt %s v < 0.0f;\n        gt %s v > 0.0f;\n"
+                       "        nan %s v != v; /* plane %d */\n",
+                    op, op, op, plane);
+}
+
+/* The straight-line program: every plane, exact or fused, then its value into the masks (and
+ * into d). */
+static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
+                       const char *up, ptp_error *err)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD;
+    unsigned char *done = calloc(p->npairs + 1, 1);
+    size_t i = 0, e = 0;
     if (!done)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-    for (i = 0; i < p->nterms; i++) {
-        const slp_term *x = &p->terms[i];
-        int last = i + 1 == p->nterms || p->terms[i + 1].plane != x->plane;
-        put_minors(o, p, x, world, px, done);
-        if (i > 0 && p->terms[i - 1].group != x->group)
-            first_group = p->terms[i - 1].plane != x->plane;
-        put_term(o, p, i, world, first_group);
-        if (!last)
-            continue;
-        put_value_store(o, p, x->plane, px);
-        /* the masks: set by the first plane (certified: by the size guard), then or-ed */
-        op = x->plane == p->terms[0].plane ? "=" : "|=";
-        if (info->certified)
-            sbuf_printf(o, "        t = %.8ef * ER3 + %.8ef * F; /* the bound of plane %d */\n"
-                           "        notlt |= (v < -t) == 0;\n        notgt |= (v > t) == 0;\n"
-                           "        plt %s (v < 0.0f) == 0;\n        pgt %s (v > 0.0f) == 0;\n",
-                        (double)cb->k[x->plane], (double)cb->k2[x->plane], x->plane, op, op);
-        else if (strict)
-            sbuf_printf(o, "        notlt %s (v < 0.0f) == 0;\n        notgt %s (v > 0.0f) == 0; /* plane %d */\n",
-                        op, op, x->plane);
-        else
-            sbuf_printf(o, "        lt %s v < 0.0f;\n        gt %s v > 0.0f;\n"
-                           "        nan %s v != v; /* plane %d */\n",
-                        op, op, op, x->plane);
+    while (i < p->nterms) {
+        int plane = p->terms[i].plane;
+        if (p->exact[plane])
+            i = put_exact(o, p, i, world, px, up, done);
+        else {
+            e = put_fused(o, p, e, world, px, up, done);
+            while (i < p->nterms && p->terms[i].plane == plane)
+                i++;
+        }
+        put_value_store(o, p, plane, px);
+        put_masks(o, cb, info, plane, plane == p->terms[0].plane);
     }
     free(done);
     return PTP_OK;
@@ -406,12 +476,21 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
                    "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
                    "static void %slanes(const float *%sRESTRICT soa, size_t stride, size_t n, const float eye[4],\n"
                    "%*sunsigned char *%sRESTRICT cls)\n{\n"
-                   "    %slanes_body(soa, stride, n, eye, cls, NULL);\n}\n\n"
+                   "    %slanes_body(soa, stride, n, eye, cls, NULL, 0);\n}\n\n"
                    "void %svalues(const float cp[][4], const float eye[4], float d[])\n{\n"
                    "    unsigned char c;\n"
-                   "    %slanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */\n}\n"
-                   "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n",
+                   "    %slanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */\n}\n",
                 px, up, (int)strlen(px) + 18, "", up, px, px, px);
+    if (info->refine) /* classify_batch refines from the values of a whole block */
+        sbuf_printf(o, "\n/* The classes and values d[P * ds + l] of n patches (--refine: classify_batch). */\n"
+                       "#if defined(__GNUC__) && !defined(__clang__)\n"
+                       "__attribute__((noinline, noclone))\n"
+                       "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
+                       "static void %slanes_values(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
+                       "%*sconst float eye[4], unsigned char *%sRESTRICT cls, float *d, size_t ds)\n{\n"
+                       "    %slanes_body(soa, stride, n, eye, cls, d, ds);\n}\n",
+                    px, up, (int)strlen(px) + 25, "", up, px);
+    sbuf_puts(o, "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
 }
 
 /* The straight-line kernel over n patches in structure-of-arrays order (the lanes function). */
@@ -422,7 +501,7 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     put_lanes_head(o, info, up);
     put_lanes_loop(o, info, up);
     put_loads(o, t, info, cb);
-    if ((st = put_program(o, p, cb, info, err)) != PTP_OK)
+    if ((st = put_program(o, p, cb, info, up, err)) != PTP_OK)
         return st;
     put_lanes_class(o, info, up);
     return PTP_OK;
@@ -467,10 +546,13 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
 {
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
+    char lanes[80], dv[160]; /* --refine: the block's values dv */
+    snprintf(lanes, sizeof lanes, "%sLANES", up);
+    snprintf(dv, sizeof dv, ", dv[%sPLANES * %sLANES]", up, up);
     /* clip space never reads z: the transposition skips it */
     sbuf_printf(o, "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
                    "                    unsigned char *cls)\n{\n"
-                   "    float soa[%sPOINTS * 4 * %sLANES];\n"
+                   "    float soa[%sPOINTS * 4 * %sLANES]%s;\n"
                    "    size_t p, l, n;\n"
                    "    unsigned k, c;\n"
                    "    for (p = 0; p < patch_count; p += n) {\n"
@@ -486,7 +568,7 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
                    "                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);\n"
                    "                _mm_storeu_ps(soa + (k * 4 + 0) * %sLANES + l, r0);\n"
                    "                _mm_storeu_ps(soa + (k * 4 + 1) * %sLANES + l, r1);\n",
-                px, up, up, up, up, up, up, up, up, up, up, up, up);
+                px, up, up, info->refine ? dv : "", up, up, up, up, up, up, up, up, up, up);
     if (world)
         sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 2) * %sLANES + l, r2);\n", up);
     sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 3) * %sLANES + l, r3);\n"
@@ -507,9 +589,19 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
                    "                __builtin_prefetch(next + b, 0, 0);\n"
                    "        }\n"
                    "#endif\n"
-                   "        %slanes(soa, %sLANES, n, eye, cls + p);\n",
-                up, up, up, up, px, up);
-    if (second)
+                   "        %slanes%s(soa, %sLANES, n, eye, cls + p%s%s);\n",
+                up, up, up, up, px, info->refine ? "_values" : "", up,
+                info->refine ? ", dv, " : "", info->refine ? lanes : "");
+    if (info->refine) /* the silhouette patches refined from the block's values */
+        sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
+                       "            if (cls[p + l] == %sSILHOUETTE) {\n"
+                       "                float d[%sPLANES];\n"
+                       "                for (k = 0; k < %sPLANES; k++)\n"
+                       "                    d[k] = dv[k * %sLANES + l];\n"
+                       "                cls[p + l] = (unsigned char)%ssplit_class(d, %d);\n"
+                       "            }\n",
+                    up, up, up, up, px, info->refine);
+    else if (second)
         sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
                        "            if (cls[p + l] == %s)\n"
                        "                cls[p + l] = (unsigned char)%s%s(cp + (p + l) * %sPOINTS, eye);\n",
@@ -538,9 +630,10 @@ static int put_entries(sbuf *o, const tp_table *t, const out_info *info, const c
 }
 
 /* The code from the straight-line program: the lanes function, the second look and the entry
- * points; writes the program's flops per patch to flops (24 bytes). */
-static int put_code(sbuf *o, char *flops, const tp_table *t, const out_info *info, const char *up,
-                    ptp_error *err)
+ * points; writes the program's flops and multiply-pipe operations per patch to flops and muls
+ * (24 bytes each). */
+static int put_code(sbuf *o, char *flops, char *muls, const tp_table *t, const out_info *info,
+                    const char *up, ptp_error *err)
 {
     slp_prog prog;
     cert_bounds cb = {0};
@@ -548,6 +641,7 @@ static int put_code(sbuf *o, char *flops, const tp_table *t, const out_info *inf
     if (st)
         return st;
     snprintf(flops, 24, "%ld", slp_flops(&prog, info->space == OUT_WORLD));
+    snprintf(muls, 24, "%ld", slp_muls(&prog, info->space == OUT_WORLD));
     if (info->certified)
         st = cert_slp(&cb, &prog, info->space == OUT_WORLD, err);
     if (!st)
@@ -578,8 +672,8 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
     sbuf banner, tables, funcs, variant;
     out_info plain;
-    char up[64], file[96], points[16], planes[16], count[80], flops[24], name[80];
-    tpl_slot slots[10];
+    char up[64], file[96], points[16], planes[16], count[80], flops[24], muls[24], name[80];
+    tpl_slot slots[11];
     int st;
     fmt_upper(up, sizeof up, info->prefix);
     fmt_file_name(file, sizeof file, info->prefix, info->suffix);
@@ -602,7 +696,7 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     snprintf(name, sizeof name, "%sterm_", info->prefix);
     out_c_arrays(&tables, t, NULL, name, count, NULL, 0);
     put_functions(&funcs, info, up);
-    st = put_code(&funcs, flops, t, info, up, err);
+    st = put_code(&funcs, flops, muls, t, info, up, err);
     if (st) {
         sbuf_clear(&banner);
         sbuf_clear(&tables);
@@ -621,9 +715,10 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     slots[7] = (tpl_slot){"FUNCTIONS", funcs.s};
     slots[8] = (tpl_slot){"FLOPS", flops};
     slots[9] = (tpl_slot){"VARIANT", variant.s};
+    slots[10] = (tpl_slot){"MULS", muls};
     st = banner.failed || tables.failed || funcs.failed || variant.failed
              ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
-             : tpl_fill(o, "c/kernel.h", slots, 10, err);
+             : tpl_fill(o, "c/kernel.h", slots, 11, err);
     st = st ? st : emit_c_mesh(o, t, info, err); /* the degree-1 triangle's mesh entry points */
     sbuf_clear(&banner);
     sbuf_clear(&tables);

@@ -1,6 +1,7 @@
 /* out_stats.c: the human-readable term statistics.
  * The term count of every plane as the paper's matrix (section 6), the total, and the schedule. */
 #include "emit/out.h"
+#include "plan/slp.h"
 
 #include <stdlib.h>
 
@@ -44,9 +45,30 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
                 (long)s->rounds * s->threads, 100.0 * (double)t->nterms / ((double)s->rounds * s->threads));
 }
 
+/* The C header's straight-line program: its exact and fused planes, and the operations per
+ * patch in clip and world space, all of them and those on the multiply pipes. */
+static int put_slp(sbuf *o, const tp_table *t, ptp_error *err)
+{
+    slp_prog p;
+    size_t i, exact_terms = 0;
+    int P, exact = 0, st = slp_build(&p, t, err);
+    if (st)
+        return st;
+    for (P = 0; P < p.nplanes; P++)
+        exact += p.exact[P];
+    for (i = 0; i < p.nterms; i++)
+        exact_terms += p.exact[p.terms[i].plane];
+    sbuf_printf(o, "C straight-line code: %d exact planes (%zu terms), %d fused; per patch %ld flops, "
+                   "%ld on the multiply pipes (clip space), %ld and %ld (world space)\n",
+                exact, exact_terms, p.nplanes - exact, slp_flops(&p, 0), slp_muls(&p, 0),
+                slp_flops(&p, 1), slp_muls(&p, 1));
+    slp_clear(&p);
+    return PTP_OK;
+}
+
 int out_stats(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
-    int *counts = malloc((size_t)t->dom.nplanes * sizeof *counts), P, max = 0;
+    int *counts = malloc((size_t)t->dom.nplanes * sizeof *counts), P, max = 0, st;
     tp_domain_text x;
     if (!counts)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing stats");
@@ -60,5 +82,7 @@ int out_stats(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     sbuf_printf(o, "total %zu\n", t->nterms);
     put_schedule(o, t, info->sched);
     free(counts);
+    if ((st = put_slp(o, t, err)) != PTP_OK)
+        return st;
     return o->failed ? ptp_fail(err, PTP_ENOMEM, "out of memory writing stats") : PTP_OK;
 }

@@ -90,6 +90,39 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
     return PTP_OK;
 }
 
+/* The most roundings on a path to fused plane P's value, from entry a (README: Certified): a
+ * minor (2) and G (1, world 2) into a product with the signed sum of its point's minors; a
+ * multiply-add counts as a product and a sum (two roundings where the target has no FMA), and
+ * each later multiply-add of the group's chain and of the plane's groups rounds once more. */
+static double fused_depth(const slp_prog *p, size_t a, int world)
+{
+    int plane = p->entries[a].plane, kinds = world ? 2 : 1, groups = 0, gi = 0;
+    double best = 0;
+    size_t g, e, b, i;
+    rat one;
+    rat_set_si(&one, 1);
+    for (g = a; g < p->nentries && p->entries[g].plane == plane; g = slp_group_end(p, g))
+        groups++;
+    for (g = a; g < p->nentries && p->entries[g].plane == plane; g = e, gi++) {
+        int runs = 0, j = 0;
+        double u = 0;
+        e = slp_group_end(p, g);
+        for (b = g; b < e; b = slp_point_end(p, b))
+            runs += kinds;
+        for (b = g; b < e; b = i) {
+            int k;
+            i = slp_point_end(p, b);
+            for (k = 0; k < kinds; k++, j++) {
+                double r = (world ? 2 : 1) + 2 + (double)(i - b - 1) + 1 + (j > 0) + (runs - 1 - j);
+                u = r > u ? r : u;
+            }
+        }
+        u += !rat_equal(&p->s[p->entries[g].group], &one) + (gi > 0) + (groups - 1 - gi);
+        best = u > best ? u : best;
+    }
+    return best;
+}
+
 int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)
 {
     double *d, *S, *n;
@@ -100,12 +133,16 @@ int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)
     for (i = 0; i < p->nterms; i++) {
         const slp_term *x = &p->terms[i];
         int first = i == 0 || p->terms[i - 1].group != x->group;
-        d[x->plane] += first ? 2 : 1; /* the term's sum, and the group's */
+        if (p->exact[x->plane])
+            d[x->plane] += first ? 2 : 1; /* the term's sum, and the group's */
         S[x->plane] += rat_get_d(&p->s[x->group]) * (1 + 0x1p-50);
         n[x->plane] += world ? 32 : 12;
     }
     for (i = 0; i < (size_t)p->nplanes; i++)
-        d[i] += world ? 8 : 7;
+        if (p->exact[i])
+            d[i] += world ? 8 : 7;
+    for (i = 0; i < p->nentries; i = slp_plane_end(p, i))
+        d[p->entries[i].plane] = fused_depth(p, i, world);
     fill(b, d, S, n, world, 0x1p-150); /* IEEE float with subnormals */
     free(d);
     return PTP_OK;

@@ -1,5 +1,5 @@
 /* slp.c: builds the straight-line program of slp.h from the exact table: per-plane integer
- * weights grouped by value, and the 2x2 minors that terms share. */
+ * weights grouped by value, the 2x2 minors that terms share, and each plane's form. */
 #include "plan/slp.h"
 #include "core/i128.h"
 
@@ -51,6 +51,60 @@ static int by_scale(const void *a, const void *b)
     return (x->index > y->index) - (x->index < y->index);
 }
 
+/* 1 if every term of plane P (terms [a, b) of p) has two points on one boundary edge of d: a
+ * collapsed edge then zeros every bracket, and the plane needs the exact form. */
+static int plane_exact(const slp_prog *p, const tp_domain *d, size_t a, size_t b)
+{
+    int e, c, i;
+    size_t x;
+    for (e = 0; e < tp_domain_edges(d); e++) {
+        for (x = a; x < b; x++) {
+            for (c = 0, i = 0; i < 3; i++) {
+                int u, v;
+                tp_domain_point_ij(&u, &v, d, p->terms[x].point[i]);
+                c += tp_domain_on_edge(d, e, u, v) != 0;
+            }
+            if (c < 2)
+                break;
+        }
+        if (x == b)
+            return 1;
+    }
+    return 0;
+}
+
+/* Orders fused entries by group (which orders planes), point, then pair. */
+static int by_entry(const void *a, const void *b)
+{
+    const slp_entry *x = a, *y = b;
+    if (x->group != y->group)
+        return (x->group > y->group) - (x->group < y->group);
+    if (x->point != y->point)
+        return (x->point > y->point) - (x->point < y->point);
+    return (x->pair > y->pair) - (x->pair < y->pair);
+}
+
+/* Marks each plane exact or fused and lists the fused planes' entries (p->entries holds
+ * 3 nterms). */
+static void plan_forms(slp_prog *p, const tp_domain *d)
+{
+    size_t a, b, i;
+    int k;
+    for (a = 0; a < p->nterms; a = b) {
+        for (b = a; b < p->nterms && p->terms[b].plane == p->terms[a].plane; b++)
+            ;
+        p->exact[p->terms[a].plane] = (unsigned char)plane_exact(p, d, a, b);
+        for (i = a; i < b && !p->exact[p->terms[a].plane]; i++)
+            for (k = 0; k < 3; k++) {
+                const slp_term *x = &p->terms[i];
+                /* the bracket's middle product is subtracted */
+                p->entries[p->nentries++] = (slp_entry){x->plane, x->group, x->point[k],
+                                                        x->pair[k], x->neg ^ (k == 1)};
+            }
+    }
+    qsort(p->entries, p->nentries, sizeof *p->entries, by_entry);
+}
+
 int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
 {
     size_t a, b, i, n = t->nterms + 1;
@@ -64,7 +118,9 @@ int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
     p->s = malloc(n * sizeof *p->s);
     p->c = calloc((size_t)t->dom.nplanes, sizeof *p->c);
     p->terms = malloc(n * sizeof *p->terms);
-    if (!pair_of || !sc || !p->pairs || !p->s || !p->c || !p->terms) {
+    p->exact = calloc((size_t)t->dom.nplanes, 1);
+    p->entries = malloc(3 * n * sizeof *p->entries);
+    if (!pair_of || !sc || !p->pairs || !p->s || !p->c || !p->terms || !p->exact || !p->entries) {
         st = ptp_fail(err, PTP_ENOMEM, "out of memory building the straight-line program");
         goto done;
     }
@@ -108,6 +164,7 @@ int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
             y->pair[2] = pair_index(p, pair_of, x->j, x->k);
         }
     }
+    plan_forms(p, &t->dom);
 done:
     free(pair_of);
     free(sc);
@@ -122,22 +179,74 @@ void slp_clear(slp_prog *p)
     free(p->s);
     free(p->c);
     free(p->terms);
+    free(p->exact);
+    free(p->entries);
     memset(p, 0, sizeof *p);
+}
+
+size_t slp_group_end(const slp_prog *p, size_t a)
+{
+    size_t b = a;
+    while (b < p->nentries && p->entries[b].group == p->entries[a].group)
+        b++;
+    return b;
+}
+
+size_t slp_point_end(const slp_prog *p, size_t a)
+{
+    size_t b = a;
+    while (b < p->nentries && p->entries[b].group == p->entries[a].group &&
+           p->entries[b].point == p->entries[a].point)
+        b++;
+    return b;
+}
+
+size_t slp_plane_end(const slp_prog *p, size_t a)
+{
+    size_t b = a;
+    while (b < p->nentries && p->entries[b].plane == p->entries[a].plane)
+        b++;
+    return b;
+}
+
+/* Operation counts of the program: products (multiplies and multiply-adds) and sums (adds,
+ * subtracts, and the add of each multiply-add). */
+static void count_ops(long *prod, long *sum, const slp_prog *p, int world)
+{
+    int kinds = world ? 2 : 1;
+    size_t i, a, b;
+    rat one;
+    rat_set_si(&one, 1);
+    *prod = (long)p->npairs * 2 * kinds + (world ? 4L : 1L) * p->npoints; /* minors, G */
+    *sum = (long)p->npairs * kinds + (world ? 2L * p->npoints : 0);
+    for (i = 0; i < p->nterms; i++) {
+        const slp_term *x = &p->terms[i];
+        int first = i == 0 || p->terms[i - 1].group != x->group;
+        if (!p->exact[x->plane])
+            continue;
+        *prod += 3 * kinds;
+        *sum += 3 * kinds - first; /* the brackets, the kinds' sum, the group's sum */
+    }
+    for (a = 0; a < p->nentries; a = b) { /* fused: one product per point and kind */
+        b = slp_point_end(p, a);
+        *prod += kinds;
+        *sum += (long)(b - a - 1) * kinds + kinds - (a == 0 || p->entries[a - 1].group != p->entries[a].group);
+    }
+    for (i = 0; i < p->ngroups; i++)
+        *prod += !rat_equal(&p->s[i], &one); /* s * the group's sum */
+    *sum += (long)p->ngroups - p->nplanes;   /* the groups' sum */
 }
 
 long slp_flops(const slp_prog *p, int world)
 {
-    int kinds = world ? 2 : 1;
-    long f = world ? 6L * p->npoints : 0; /* G_0 and G_1 of every point */
-    size_t i;
-    rat one;
-    rat_set_si(&one, 1);
-    for (i = 0; i < p->ngroups; i++)
-        f += !rat_equal(&p->s[i], &one);             /* s * the group's sum */
-    f += (long)p->npairs * 3 * kinds;                /* the minors */
-    f += (long)p->nterms * (6 * kinds - 1);          /* the brackets */
-    f += (long)p->nterms - p->nplanes;               /* the sums */
-    if (!world)
-        f += p->npoints;                             /* G = e2 w */
-    return f;
+    long prod, sum;
+    count_ops(&prod, &sum, p, world);
+    return prod + sum;
+}
+
+long slp_muls(const slp_prog *p, int world)
+{
+    long prod, sum;
+    count_ops(&prod, &sum, p, world);
+    return prod;
 }

@@ -1,5 +1,5 @@
 /* slp.h: the straight-line program behind the C target's classify: every plane's value up to a
- * positive factor, from shared 2x2 minors and weight-scaled multipliers, exact zeros kept. */
+ * positive factor, from shared 2x2 minors; exact brackets where a collapsed boundary needs zeros. */
 #ifndef SLP_H
 #define SLP_H
 #include "core/tplane.h"
@@ -10,8 +10,12 @@
  * {0, 1}, so every monomial of the determinant appears once. World space has two kinds:
  *     G_0(x) = e0 x1 - e1 x0 with M_0 the (z, w) minor, G_1(x) = e2 x3 - e3 x2 with the (x, y) minor;
  * clip space (e = (0, 0, e2, 0)) only kind 1 with G_1(x) = e2 x3. Two equal points in a term
- * make its bracket exactly zero in float arithmetic without
- * contracted multiply-adds, so a plane whose terms all vanish is exactly zero. */
+ * make its bracket exactly zero in float arithmetic without contracted multiply-adds, so a plane
+ * whose terms all vanish is exactly zero. That form is kept on the exact planes: those whose every
+ * term has two points on one boundary edge, which a collapsed edge (all its points equal) zeros.
+ * Every other plane is fused: per group, sum over its points b of G_K(b) times the signed sum of
+ * the minors b meets in its terms, with multiply-adds:
+ *     s * sum over b of sum over kinds K of G_K(b) * (sum of +-M_K over b's terms in the group). */
 typedef struct {
     int k, l; /* the minor M(b_k, b_l), k < l */
 } slp_pair;
@@ -21,6 +25,10 @@ typedef struct {
     int point[3];    /* j < k < l */
     int pair[3];     /* the minors (k, l), (j, l), (j, k) */
 } slp_term;
+/* One entry of a fused plane: point b meets minor pair in a term of the group, signed. */
+typedef struct {
+    int plane, group, point, pair, neg;
+} slp_entry;
 typedef struct {
     int npoints, nplanes;
     size_t npairs, ngroups, nterms;
@@ -28,12 +36,23 @@ typedef struct {
     rat *s;          /* the scale s > 0 of every group; s == 1 needs no product */
     rat *c;          /* the scale c_P > 0 of every plane: its value is c_P times the true one */
     slp_term *terms; /* by plane, then group */
+    unsigned char *exact; /* per plane: 1 for the exact bracket form, 0 when fused */
+    size_t nentries;
+    slp_entry *entries;   /* of the fused planes, by plane, group, point, then pair */
 } slp_prog;
 /* Builds the program of t. p is uninitialized on entry and on failure (PTP_ENOMEM,
  * PTP_EOVERFLOW when a plane's scale does not fit). */
 int slp_build(slp_prog *p, const tp_table *t, ptp_error *err);
 /* Frees p's storage. */
 void slp_clear(slp_prog *p);
-/* Floating-point operations per patch (multiplies, adds, subtracts), clip or world space. */
+/* Floating-point operations per patch (multiplies, adds, subtracts; a multiply-add counts 2),
+ * clip or world space. */
 long slp_flops(const slp_prog *p, int world);
+/* Operations per patch on the multiply pipes (multiplies and multiply-adds). */
+long slp_muls(const slp_prog *p, int world);
+/* The fused planes' runs: the end b of the run at entry a, whose entries [a, b) share entry a's
+ * group (and its point; its plane). */
+size_t slp_group_end(const slp_prog *p, size_t a);
+size_t slp_point_end(const slp_prog *p, size_t a);
+size_t slp_plane_end(const slp_prog *p, size_t a);
 #endif

@@ -43,8 +43,10 @@ extern "C" {
 #define PTP_1X3_FRONT 0u
 #define PTP_1X3_BACK 1u
 #define PTP_1X3_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_1X3_FLOPS 396
+#define PTP_1X3_MULS 240
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_1X3_LANES
 #define PTP_1X3_LANES 16
@@ -133,11 +135,36 @@ static inline void ptp_1x3_vstore(unsigned char *cls, ptp_1x3_vm c, size_t count
     for (i = 0; i < count && i < PTP_1X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_1x3_vfirst(ptp_1x3_vf v)
+/* d[i] = v[i] for the first count (at most PTP_1X3_VW) lanes. */
+static inline void ptp_1x3_vstoref(float *d, ptp_1x3_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_1X3_VW; i++)
+        d[i] = v[i];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_1X3_VW == 16
+#include <immintrin.h>
+#define PTP_1X3_VFMA(a, b, c) ((ptp_1x3_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_1X3_VFMAS(a, b, c) PTP_1X3_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_1X3_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_1X3_VFMA(a, b, c) ((ptp_1x3_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_1X3_VFMAS(a, b, c) PTP_1X3_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_1X3_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_1X3_VFMA(a, b, c) ((ptp_1x3_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_1X3_VFMAS(a, b, c) PTP_1X3_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_1X3_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_1X3_VFMA(a, b, c) ((ptp_1x3_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_1X3_VFMAS(a, b, c) PTP_1X3_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_1X3_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_1X3_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_1x3_vf ptp_1x3_vabsmax(ptp_1x3_vf r, ptp_1x3_vf x)
 {
@@ -161,10 +188,17 @@ static inline ptp_1x3_vf ptp_1x3_vabsmax(ptp_1x3_vf r, ptp_1x3_vf x)
 {
     return PTP_1X3_ABSMAX(r, x);
 }
-static inline float ptp_1x3_vfirst(ptp_1x3_vf v)
+static inline void ptp_1x3_vstoref(float *d, ptp_1x3_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_1X3_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_1X3_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_1X3_VFMAS PTP_1X3_VFMA
 #endif
 
 float ptp_1x3_alpha(const float proj[16], int layout)
@@ -342,16 +376,16 @@ void ptp_1x3_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_1X3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t stride, size_t n,
                                        const float eye[4], unsigned char *PTP_1X3_RESTRICT cls,
-                                       float *PTP_1X3_RESTRICT d)
+                                       float *PTP_1X3_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -397,7 +431,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_1x3_vfirst(v) * 3.0f;
+            ptp_1x3_vstoref(d + 0 * ds + l, v * 3.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_1x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -407,9 +441,9 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         const ptp_1x3_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_1x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
-            d[1] = ptp_1x3_vfirst(v) * 0.428571433f;
+            ptp_1x3_vstoref(d + 1 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_1x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -421,12 +455,12 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
         const ptp_1x3_vf m1_2 = x1 * y2 - y1 * x2;
         u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         const ptp_1x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
-            d[2] = ptp_1x3_vfirst(v) * 0.142857149f;
+            ptp_1x3_vstoref(d + 2 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_1x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -435,17 +469,17 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         const ptp_1x3_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v += 2.0f * u;
+        v = PTP_1X3_VFMAS(2.0f, u, v);
         const ptp_1x3_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         const ptp_1x3_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v += 9.0f * u;
+        v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
-            d[3] = ptp_1x3_vfirst(v) * 0.0857142881f;
+            ptp_1x3_vstoref(d + 3 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_1x3_vf m2_3 = x2 * y3 - y2 * x3;
@@ -453,16 +487,16 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         const ptp_1x3_vf m2_7 = x2 * y7 - y2 * x7;
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
-        v += 2.0f * u;
+        v = PTP_1X3_VFMAS(2.0f, u, v);
         const ptp_1x3_vf m3_6 = x3 * y6 - y3 * x6;
         u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v += 9.0f * u;
+        v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
-            d[4] = ptp_1x3_vfirst(v) * 0.0857142881f;
+            ptp_1x3_vstoref(d + 4 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_1x3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -470,41 +504,41 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         u -= ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
-            d[5] = ptp_1x3_vfirst(v) * 0.142857149f;
+            ptp_1x3_vstoref(d + 5 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = 2.0f * u;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
-            d[6] = ptp_1x3_vfirst(v) * 0.428571433f;
+            ptp_1x3_vstoref(d + 6 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
         if (d)
-            d[7] = ptp_1x3_vfirst(v) * 3.0f;
+            ptp_1x3_vstoref(d + 7 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_1x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = u;
         if (d)
-            d[8] = ptp_1x3_vfirst(v) * 3.0f;
+            ptp_1x3_vstoref(d + 8 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_1x3_vf m4_6 = x4 * y6 - y4 * x6;
         u = ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
         v = 2.0f * u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
-            d[9] = ptp_1x3_vfirst(v) * 0.428571433f;
+            ptp_1x3_vstoref(d + 9 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_1x3_vf m4_7 = x4 * y7 - y4 * x7;
@@ -513,66 +547,66 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         const ptp_1x3_vf m5_6 = x5 * y6 - y5 * x6;
         u = ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
         u += ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
-            d[10] = ptp_1x3_vfirst(v) * 0.142857149f;
+            ptp_1x3_vstoref(d + 10 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
         v = u;
         const ptp_1x3_vf m5_7 = x5 * y7 - y5 * x7;
         u = ((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        v += 2.0f * u;
+        v = PTP_1X3_VFMAS(2.0f, u, v);
         u = ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v += 9.0f * u;
+        v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
-            d[11] = ptp_1x3_vfirst(v) * 0.0857142881f;
+            ptp_1x3_vstoref(d + 11 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_1x3_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         v = u;
         u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v += 2.0f * u;
+        v = PTP_1X3_VFMAS(2.0f, u, v);
         u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v += 9.0f * u;
+        v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
-            d[12] = ptp_1x3_vfirst(v) * 0.0857142881f;
+            ptp_1x3_vstoref(d + 12 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v = u;
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         u += ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v += 6.0f * u;
+        v = PTP_1X3_VFMAS(6.0f, u, v);
         if (d)
-            d[13] = ptp_1x3_vfirst(v) * 0.142857149f;
+            ptp_1x3_vstoref(d + 13 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
         v = 2.0f * u;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
-        v += 3.0f * u;
+        v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
-            d[14] = ptp_1x3_vfirst(v) * 0.428571433f;
+            ptp_1x3_vstoref(d + 14 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
         if (d)
-            d[15] = ptp_1x3_vfirst(v) * 3.0f;
+            ptp_1x3_vstoref(d + 15 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -592,13 +626,13 @@ __attribute__((noinline))
 static void ptp_1x3_lanes(const float *PTP_1X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                           unsigned char *PTP_1X3_RESTRICT cls)
 {
-    ptp_1x3_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_1x3_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_1x3_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_1x3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_1x3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -43,8 +43,10 @@ extern "C" {
 #define PTP_2X2_FRONT 0u
 #define PTP_2X2_BACK 1u
 #define PTP_2X2_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
-#define PTP_2X2_FLOPS 576
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
+#define PTP_2X2_FLOPS 552
+#define PTP_2X2_MULS 313
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_2X2_LANES
 #define PTP_2X2_LANES 16
@@ -133,11 +135,36 @@ static inline void ptp_2x2_vstore(unsigned char *cls, ptp_2x2_vm c, size_t count
     for (i = 0; i < count && i < PTP_2X2_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_2x2_vfirst(ptp_2x2_vf v)
+/* d[i] = v[i] for the first count (at most PTP_2X2_VW) lanes. */
+static inline void ptp_2x2_vstoref(float *d, ptp_2x2_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_2X2_VW; i++)
+        d[i] = v[i];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_2X2_VW == 16
+#include <immintrin.h>
+#define PTP_2X2_VFMA(a, b, c) ((ptp_2x2_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_2X2_VFMAS(a, b, c) PTP_2X2_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_2X2_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_2X2_VFMA(a, b, c) ((ptp_2x2_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_2X2_VFMAS(a, b, c) PTP_2X2_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_2X2_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_2X2_VFMA(a, b, c) ((ptp_2x2_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_2X2_VFMAS(a, b, c) PTP_2X2_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_2X2_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_2X2_VFMA(a, b, c) ((ptp_2x2_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_2X2_VFMAS(a, b, c) PTP_2X2_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_2X2_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_2X2_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_2x2_vf ptp_2x2_vabsmax(ptp_2x2_vf r, ptp_2x2_vf x)
 {
@@ -161,10 +188,17 @@ static inline ptp_2x2_vf ptp_2x2_vabsmax(ptp_2x2_vf r, ptp_2x2_vf x)
 {
     return PTP_2X2_ABSMAX(r, x);
 }
-static inline float ptp_2x2_vfirst(ptp_2x2_vf v)
+static inline void ptp_2x2_vstoref(float *d, ptp_2x2_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_2X2_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_2X2_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_2X2_VFMAS PTP_2X2_VFMA
 #endif
 
 float ptp_2x2_alpha(const float proj[16], int layout)
@@ -398,16 +432,16 @@ void ptp_2x2_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_2X2_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t stride, size_t n,
                                        const float eye[4], unsigned char *PTP_2X2_RESTRICT cls,
-                                       float *PTP_2X2_RESTRICT d)
+                                       float *PTP_2X2_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -455,7 +489,7 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_2x2_vfirst(v) * 4.0f;
+            ptp_2x2_vstoref(d + 0 * ds + l, v * 4.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_2x2_vf m2_3 = x2 * y3 - y2 * x3;
@@ -465,9 +499,9 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         const ptp_2x2_vf m1_4 = x1 * y4 - y1 * x4;
         const ptp_2x2_vf m0_4 = x0 * y4 - y0 * x4;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[1] = ptp_2x2_vfirst(v);
+            ptp_2x2_vstoref(d + 1 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_2x2_vf m1_5 = x1 * y5 - y1 * x5;
@@ -478,24 +512,24 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = u;
         const ptp_2x2_vf m2_4 = x2 * y4 - y2 * x4;
         u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[2] = ptp_2x2_vfirst(v) * 0.666666687f;
+            ptp_2x2_vstoref(d + 2 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_2x2_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v = u;
         u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[3] = ptp_2x2_vfirst(v);
+            ptp_2x2_vstoref(d + 3 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v = u;
         if (d)
-            d[4] = ptp_2x2_vfirst(v) * 4.0f;
+            ptp_2x2_vstoref(d + 4 * ds + l, v * 4.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_2x2_vf m1_6 = x1 * y6 - y1 * x6;
@@ -504,61 +538,83 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = u;
         const ptp_2x2_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[5] = ptp_2x2_vfirst(v);
+            ptp_2x2_vstoref(d + 5 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_2x2_vf m2_6 = x2 * y6 - y2 * x6;
-        u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+        u = g0 * (-m2_6);
+        u = PTP_2X2_VFMA(g2, m0_6, u);
+        u = PTP_2X2_VFMA(g6, -m0_2, u);
         v = u;
         const ptp_2x2_vf m1_7 = x1 * y7 - y1 * x7;
-        const ptp_2x2_vf m0_7 = x0 * y7 - y0 * x7;
-        u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
         const ptp_2x2_vf m3_5 = x3 * y5 - y3 * x5;
-        u += ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v += 2.0f * u;
-        u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v += 4.0f * u;
+        u = g0 * (m3_5 - m1_7);
+        const ptp_2x2_vf m0_7 = x0 * y7 - y0 * x7;
+        u = PTP_2X2_VFMA(g1, m0_7, u);
+        u = PTP_2X2_VFMA(g3, -m0_5, u);
+        u = PTP_2X2_VFMA(g5, m0_3, u);
+        u = PTP_2X2_VFMA(g7, -m0_1, u);
+        v = PTP_2X2_VFMAS(2.0f, u, v);
+        u = g1 * (m3_4);
+        u = PTP_2X2_VFMA(g3, -m1_4, u);
+        u = PTP_2X2_VFMA(g4, m1_3, u);
+        v = PTP_2X2_VFMAS(4.0f, u, v);
         if (d)
-            d[6] = ptp_2x2_vfirst(v) * 0.25f;
+            ptp_2x2_vstoref(d + 6 * ds + l, v * 0.25f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_2x2_vf m1_8 = x1 * y8 - y1 * x8;
+        u = g0 * (-m1_8);
         const ptp_2x2_vf m0_8 = x0 * y8 - y0 * x8;
-        u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
-        u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+        u = PTP_2X2_VFMA(g1, m0_8 - m2_6, u);
+        u = PTP_2X2_VFMA(g2, m1_6, u);
+        u = PTP_2X2_VFMA(g6, -m1_2, u);
+        u = PTP_2X2_VFMA(g8, -m0_1, u);
         v = u;
         const ptp_2x2_vf m2_7 = x2 * y7 - y2 * x7;
-        u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
         const ptp_2x2_vf m4_5 = x4 * y5 - y4 * x5;
-        u += ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v += 2.0f * u;
-        u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v += 4.0f * u;
+        u = g0 * (m4_5 - m2_7);
+        u = PTP_2X2_VFMA(g2, m3_4 + m0_7, u);
+        u = PTP_2X2_VFMA(g3, -m2_4, u);
+        u = PTP_2X2_VFMA(g4, m2_3 - m0_5, u);
+        u = PTP_2X2_VFMA(g5, m0_4, u);
+        u = PTP_2X2_VFMA(g7, -m0_2, u);
+        v = PTP_2X2_VFMAS(2.0f, u, v);
+        u = g1 * (m3_5);
+        u = PTP_2X2_VFMA(g3, -m1_5, u);
+        u = PTP_2X2_VFMA(g5, m1_3, u);
+        v = PTP_2X2_VFMAS(4.0f, u, v);
         if (d)
-            d[7] = ptp_2x2_vfirst(v) * 0.166666672f;
+            ptp_2x2_vstoref(d + 7 * ds + l, v * 0.166666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_2x2_vf m2_8 = x2 * y8 - y2 * x8;
-        u = -((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
+        u = g0 * (-m2_8);
+        u = PTP_2X2_VFMA(g2, m0_8, u);
+        u = PTP_2X2_VFMA(g8, -m0_2, u);
         v = u;
-        u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
-        u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v += 2.0f * u;
-        u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        v += 4.0f * u;
+        u = g1 * (-m2_7);
+        u = PTP_2X2_VFMA(g2, m1_7 + m3_5, u);
+        u = PTP_2X2_VFMA(g3, -m2_5, u);
+        u = PTP_2X2_VFMA(g5, m2_3, u);
+        u = PTP_2X2_VFMA(g7, -m1_2, u);
+        v = PTP_2X2_VFMAS(2.0f, u, v);
+        u = g1 * (m4_5);
+        u = PTP_2X2_VFMA(g4, -m1_5, u);
+        u = PTP_2X2_VFMA(g5, m1_4, u);
+        v = PTP_2X2_VFMAS(4.0f, u, v);
         if (d)
-            d[8] = ptp_2x2_vfirst(v) * 0.25f;
+            ptp_2x2_vstoref(d + 8 * ds + l, v * 0.25f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
         v = u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[9] = ptp_2x2_vfirst(v);
+            ptp_2x2_vstoref(d + 9 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_2x2_vf m3_7 = x3 * y7 - y3 * x7;
@@ -568,150 +624,192 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = u;
         const ptp_2x2_vf m4_6 = x4 * y6 - y4 * x6;
         u = -((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[10] = ptp_2x2_vfirst(v) * 0.666666687f;
+            ptp_2x2_vstoref(d + 10 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_2x2_vf m3_8 = x3 * y8 - y3 * x8;
-        u = ((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
-        u += ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+        u = g0 * (m3_8);
+        u = PTP_2X2_VFMA(g2, m3_6, u);
+        u = PTP_2X2_VFMA(g3, -m2_6 - m0_8, u);
+        u = PTP_2X2_VFMA(g6, m2_3, u);
+        u = PTP_2X2_VFMA(g8, m0_3, u);
         v = u;
         const ptp_2x2_vf m4_7 = x4 * y7 - y4 * x7;
-        u = -((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         const ptp_2x2_vf m5_6 = x5 * y6 - y5 * x6;
-        u -= ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
-        u -= ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v += 2.0f * u;
-        u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v += 4.0f * u;
+        u = g0 * (-m4_7 - m5_6);
+        u = PTP_2X2_VFMA(g1, -m4_6, u);
+        u = PTP_2X2_VFMA(g4, m1_6 + m0_7, u);
+        u = PTP_2X2_VFMA(g5, m0_6, u);
+        u = PTP_2X2_VFMA(g6, -m1_4 - m0_5, u);
+        u = PTP_2X2_VFMA(g7, -m0_4, u);
+        v = PTP_2X2_VFMAS(2.0f, u, v);
+        u = g1 * (m3_7);
+        u = PTP_2X2_VFMA(g3, -m1_7, u);
+        u = PTP_2X2_VFMA(g7, m1_3, u);
+        v = PTP_2X2_VFMAS(4.0f, u, v);
         if (d)
-            d[11] = ptp_2x2_vfirst(v) * 0.166666672f;
+            ptp_2x2_vstoref(d + 11 * ds + l, v * 0.166666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_2x2_vf m5_7 = x5 * y7 - y5 * x7;
-        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        u += ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
-        u -= ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
+        u = g0 * (-m5_7);
+        u = PTP_2X2_VFMA(g1, m3_8 - m5_6, u);
+        u = PTP_2X2_VFMA(g2, m3_7, u);
+        u = PTP_2X2_VFMA(g3, -m1_8 - m2_7, u);
+        u = PTP_2X2_VFMA(g5, m1_6 + m0_7, u);
+        u = PTP_2X2_VFMA(g6, -m1_5, u);
+        u = PTP_2X2_VFMA(g7, m2_3 - m0_5, u);
+        u = PTP_2X2_VFMA(g8, m1_3, u);
         v = u;
         if (d)
-            d[12] = ptp_2x2_vfirst(v) * 0.333333343f;
+            ptp_2x2_vstoref(d + 12 * ds + l, v * 0.333333343f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_2x2_vf m5_8 = x5 * y8 - y5 * x8;
-        u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
-        u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
+        u = g0 * (-m5_8);
+        u = PTP_2X2_VFMA(g2, -m5_6, u);
+        u = PTP_2X2_VFMA(g5, m2_6 + m0_8, u);
+        u = PTP_2X2_VFMA(g6, -m2_5, u);
+        u = PTP_2X2_VFMA(g8, -m0_5, u);
         v = u;
         const ptp_2x2_vf m4_8 = x4 * y8 - y4 * x8;
-        u = ((g1 * m4_8 - g4 * m1_8) + g8 * m1_4);
-        u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
-        u += ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
-        v += 2.0f * u;
-        u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        v += 4.0f * u;
+        u = g1 * (m4_8);
+        u = PTP_2X2_VFMA(g2, m3_8 + m4_7, u);
+        u = PTP_2X2_VFMA(g3, -m2_8, u);
+        u = PTP_2X2_VFMA(g4, -m1_8 - m2_7, u);
+        u = PTP_2X2_VFMA(g7, m2_4, u);
+        u = PTP_2X2_VFMA(g8, m2_3 + m1_4, u);
+        v = PTP_2X2_VFMAS(2.0f, u, v);
+        u = g1 * (-m5_7);
+        u = PTP_2X2_VFMA(g5, m1_7, u);
+        u = PTP_2X2_VFMA(g7, -m1_5, u);
+        v = PTP_2X2_VFMAS(4.0f, u, v);
         if (d)
-            d[13] = ptp_2x2_vfirst(v) * 0.166666672f;
+            ptp_2x2_vstoref(d + 13 * ds + l, v * 0.166666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
         u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         v = u;
         u = ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[14] = ptp_2x2_vfirst(v) * 0.666666687f;
+            ptp_2x2_vstoref(d + 14 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_2x2_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         v = u;
         u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[15] = ptp_2x2_vfirst(v);
+            ptp_2x2_vstoref(d + 15 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_2x2_vf m6_8 = x6 * y8 - y6 * x8;
-        u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
+        u = g0 * (m6_8);
+        u = PTP_2X2_VFMA(g6, -m0_8, u);
+        u = PTP_2X2_VFMA(g8, m0_6, u);
         v = u;
-        u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
-        u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
-        v += 2.0f * u;
-        u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
-        v += 4.0f * u;
+        u = g1 * (m6_7);
+        u = PTP_2X2_VFMA(g3, -m5_6, u);
+        u = PTP_2X2_VFMA(g5, m3_6, u);
+        u = PTP_2X2_VFMA(g6, -m1_7 - m3_5, u);
+        u = PTP_2X2_VFMA(g7, m1_6, u);
+        v = PTP_2X2_VFMAS(2.0f, u, v);
+        u = g3 * (-m4_7);
+        u = PTP_2X2_VFMA(g4, m3_7, u);
+        u = PTP_2X2_VFMA(g7, -m3_4, u);
+        v = PTP_2X2_VFMAS(4.0f, u, v);
         if (d)
-            d[16] = ptp_2x2_vfirst(v) * 0.25f;
+            ptp_2x2_vstoref(d + 16 * ds + l, v * 0.25f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_2x2_vf m7_8 = x7 * y8 - y7 * x8;
-        u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
-        u += ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
+        u = g0 * (m7_8);
+        u = PTP_2X2_VFMA(g2, m6_7, u);
+        u = PTP_2X2_VFMA(g6, -m2_7, u);
+        u = PTP_2X2_VFMA(g7, m2_6 - m0_8, u);
+        u = PTP_2X2_VFMA(g8, m0_7, u);
         v = u;
-        u = ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
-        u -= ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
-        u -= ((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
-        v += 2.0f * u;
-        u = -((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
-        v += 4.0f * u;
+        u = g1 * (m6_8);
+        u = PTP_2X2_VFMA(g3, -m4_8, u);
+        u = PTP_2X2_VFMA(g4, m3_8 - m5_6, u);
+        u = PTP_2X2_VFMA(g5, m4_6, u);
+        u = PTP_2X2_VFMA(g6, -m1_8 - m4_5, u);
+        u = PTP_2X2_VFMA(g8, m1_6 - m3_4, u);
+        v = PTP_2X2_VFMAS(2.0f, u, v);
+        u = g3 * (-m5_7);
+        u = PTP_2X2_VFMA(g5, m3_7, u);
+        u = PTP_2X2_VFMA(g7, -m3_5, u);
+        v = PTP_2X2_VFMAS(4.0f, u, v);
         if (d)
-            d[17] = ptp_2x2_vfirst(v) * 0.166666672f;
+            ptp_2x2_vstoref(d + 17 * ds + l, v * 0.166666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
-        u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
+        u = g2 * (m6_8);
+        u = PTP_2X2_VFMA(g6, -m2_8, u);
+        u = PTP_2X2_VFMA(g8, m2_6, u);
         v = u;
-        u = ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
-        u -= ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
-        v += 2.0f * u;
-        u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
-        v += 4.0f * u;
+        u = g1 * (m7_8);
+        u = PTP_2X2_VFMA(g3, -m5_8, u);
+        u = PTP_2X2_VFMA(g5, m3_8, u);
+        u = PTP_2X2_VFMA(g7, -m1_8, u);
+        u = PTP_2X2_VFMA(g8, m1_7 - m3_5, u);
+        v = PTP_2X2_VFMAS(2.0f, u, v);
+        u = g4 * (-m5_7);
+        u = PTP_2X2_VFMA(g5, m4_7, u);
+        u = PTP_2X2_VFMA(g7, -m4_5, u);
+        v = PTP_2X2_VFMAS(4.0f, u, v);
         if (d)
-            d[18] = ptp_2x2_vfirst(v) * 0.25f;
+            ptp_2x2_vstoref(d + 18 * ds + l, v * 0.25f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         v = u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[19] = ptp_2x2_vfirst(v);
+            ptp_2x2_vstoref(d + 19 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
         if (d)
-            d[20] = ptp_2x2_vfirst(v) * 4.0f;
+            ptp_2x2_vstoref(d + 20 * ds + l, v * 4.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
         v = u;
         u = ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[21] = ptp_2x2_vfirst(v);
+            ptp_2x2_vstoref(d + 21 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
         u += ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
         v = u;
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[22] = ptp_2x2_vfirst(v) * 0.666666687f;
+            ptp_2x2_vstoref(d + 22 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
         v = u;
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
-        v += 2.0f * u;
+        v = PTP_2X2_VFMAS(2.0f, u, v);
         if (d)
-            d[23] = ptp_2x2_vfirst(v);
+            ptp_2x2_vstoref(d + 23 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
         v = u;
         if (d)
-            d[24] = ptp_2x2_vfirst(v) * 4.0f;
+            ptp_2x2_vstoref(d + 24 * ds + l, v * 4.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -731,13 +829,13 @@ __attribute__((noinline))
 static void ptp_2x2_lanes(const float *PTP_2X2_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                           unsigned char *PTP_2X2_RESTRICT cls)
 {
-    ptp_2x2_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_2x2_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_2x2_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_2x2_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_2x2_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

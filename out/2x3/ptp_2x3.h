@@ -43,8 +43,10 @@ extern "C" {
 #define PTP_2X3_FRONT 0u
 #define PTP_2X3_BACK 1u
 #define PTP_2X3_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
-#define PTP_2X3_FLOPS 1492
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
+#define PTP_2X3_FLOPS 1448
+#define PTP_2X3_MULS 822
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_2X3_LANES
 #define PTP_2X3_LANES 16
@@ -133,11 +135,36 @@ static inline void ptp_2x3_vstore(unsigned char *cls, ptp_2x3_vm c, size_t count
     for (i = 0; i < count && i < PTP_2X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_2x3_vfirst(ptp_2x3_vf v)
+/* d[i] = v[i] for the first count (at most PTP_2X3_VW) lanes. */
+static inline void ptp_2x3_vstoref(float *d, ptp_2x3_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_2X3_VW; i++)
+        d[i] = v[i];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_2X3_VW == 16
+#include <immintrin.h>
+#define PTP_2X3_VFMA(a, b, c) ((ptp_2x3_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_2X3_VFMAS(a, b, c) PTP_2X3_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_2X3_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_2X3_VFMA(a, b, c) ((ptp_2x3_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_2X3_VFMAS(a, b, c) PTP_2X3_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_2X3_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_2X3_VFMA(a, b, c) ((ptp_2x3_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_2X3_VFMAS(a, b, c) PTP_2X3_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_2X3_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_2X3_VFMA(a, b, c) ((ptp_2x3_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_2X3_VFMAS(a, b, c) PTP_2X3_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_2X3_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_2X3_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_2x3_vf ptp_2x3_vabsmax(ptp_2x3_vf r, ptp_2x3_vf x)
 {
@@ -161,10 +188,17 @@ static inline ptp_2x3_vf ptp_2x3_vabsmax(ptp_2x3_vf r, ptp_2x3_vf x)
 {
     return PTP_2X3_ABSMAX(r, x);
 }
-static inline float ptp_2x3_vfirst(ptp_2x3_vf v)
+static inline void ptp_2x3_vstoref(float *d, ptp_2x3_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_2X3_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_2X3_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_2X3_VFMAS PTP_2X3_VFMA
 #endif
 
 float ptp_2x3_alpha(const float proj[16], int layout)
@@ -646,16 +680,16 @@ void ptp_2x3_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_2X3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t stride, size_t n,
                                        const float eye[4], unsigned char *PTP_2X3_RESTRICT cls,
-                                       float *PTP_2X3_RESTRICT d)
+                                       float *PTP_2X3_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -709,7 +743,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_2x3_vfirst(v) * 6.0f;
+            ptp_2x3_vstoref(d + 0 * ds + l, v * 6.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_2x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -719,9 +753,9 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         const ptp_2x3_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_2x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         if (d)
-            d[1] = ptp_2x3_vfirst(v) * 0.857142866f;
+            ptp_2x3_vstoref(d + 1 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_2x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -733,12 +767,12 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
         const ptp_2x3_vf m1_2 = x1 * y2 - y1 * x2;
         u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         const ptp_2x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
-        v += 6.0f * u;
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[2] = ptp_2x3_vfirst(v) * 0.285714298f;
+            ptp_2x3_vstoref(d + 2 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_2x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -747,17 +781,17 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = u;
         const ptp_2x3_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         const ptp_2x3_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         const ptp_2x3_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
-        v += 6.0f * u;
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v += 9.0f * u;
+        v = PTP_2X3_VFMAS(9.0f, u, v);
         if (d)
-            d[3] = ptp_2x3_vfirst(v) * 0.171428576f;
+            ptp_2x3_vstoref(d + 3 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_2x3_vf m2_3 = x2 * y3 - y2 * x3;
@@ -765,16 +799,16 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = u;
         const ptp_2x3_vf m2_7 = x2 * y7 - y2 * x7;
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         const ptp_2x3_vf m3_6 = x3 * y6 - y3 * x6;
         u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v += 6.0f * u;
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v += 9.0f * u;
+        v = PTP_2X3_VFMAS(9.0f, u, v);
         if (d)
-            d[4] = ptp_2x3_vfirst(v) * 0.171428576f;
+            ptp_2x3_vstoref(d + 4 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_2x3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -782,25 +816,25 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         u -= ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
-        v += 6.0f * u;
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[5] = ptp_2x3_vfirst(v) * 0.285714298f;
+            ptp_2x3_vstoref(d + 5 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = 2.0f * u;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         if (d)
-            d[6] = ptp_2x3_vfirst(v) * 0.857142866f;
+            ptp_2x3_vstoref(d + 6 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
         if (d)
-            d[7] = ptp_2x3_vfirst(v) * 6.0f;
+            ptp_2x3_vstoref(d + 7 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_2x3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -809,138 +843,216 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = u;
         const ptp_2x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         if (d)
-            d[8] = ptp_2x3_vfirst(v) * 1.5f;
+            ptp_2x3_vstoref(d + 8 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_2x3_vf m2_8 = x2 * y8 - y2 * x8;
-        u = -((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
+        u = g0 * (-m2_8);
+        u = PTP_2X3_VFMA(g2, m0_8, u);
+        u = PTP_2X3_VFMA(g8, -m0_2, u);
         v = 2.0f * u;
         const ptp_2x3_vf m1_9 = x1 * y9 - y1 * x9;
+        u = g0 * (-m1_9);
         const ptp_2x3_vf m0_9 = x0 * y9 - y0 * x9;
-        u = -((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
-        v += 3.0f * u;
+        u = PTP_2X3_VFMA(g1, m0_9, u);
+        u = PTP_2X3_VFMA(g9, -m0_1, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         const ptp_2x3_vf m4_6 = x4 * y6 - y4 * x6;
-        u = ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
-        v += 4.0f * u;
-        u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        v += 6.0f * u;
+        u = g0 * (m4_6);
+        u = PTP_2X3_VFMA(g4, -m0_6, u);
+        u = PTP_2X3_VFMA(g6, m0_4, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g1 * (m4_5);
+        u = PTP_2X3_VFMA(g4, -m1_5, u);
+        u = PTP_2X3_VFMA(g5, m1_4, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[9] = ptp_2x3_vfirst(v) * 0.214285716f;
+            ptp_2x3_vstoref(d + 9 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_2x3_vf m3_8 = x3 * y8 - y3 * x8;
-        u = -((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
+        u = g0 * (-m3_8);
+        u = PTP_2X3_VFMA(g3, m0_8, u);
+        u = PTP_2X3_VFMA(g8, -m0_3, u);
         v = u;
         const ptp_2x3_vf m4_7 = x4 * y7 - y4 * x7;
-        u = ((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
-        v += 2.0f * u;
+        u = g0 * (m4_7);
+        u = PTP_2X3_VFMA(g4, -m0_7, u);
+        u = PTP_2X3_VFMA(g7, m0_4, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         const ptp_2x3_vf m1_10 = x1 * y10 - y1 * x10;
+        u = g0 * (-m1_10);
         const ptp_2x3_vf m0_10 = x0 * y10 - y0 * x10;
-        u = -((g0 * m1_10 - g1 * m0_10) + g10 * m0_1);
-        u -= ((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
-        v += 3.0f * u;
+        u = PTP_2X3_VFMA(g1, m0_10 - m2_8, u);
+        u = PTP_2X3_VFMA(g2, m1_8, u);
+        u = PTP_2X3_VFMA(g8, -m1_2, u);
+        u = PTP_2X3_VFMA(g10, -m0_1, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         const ptp_2x3_vf m2_9 = x2 * y9 - y2 * x9;
-        u = -((g0 * m2_9 - g2 * m0_9) + g9 * m0_2);
         const ptp_2x3_vf m5_6 = x5 * y6 - y5 * x6;
-        u += ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
-        u += ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v += 6.0f * u;
-        u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v += 12.0f * u;
+        u = g0 * (m5_6 - m2_9);
+        u = PTP_2X3_VFMA(g2, m4_5 + m0_9, u);
+        u = PTP_2X3_VFMA(g4, -m2_5, u);
+        u = PTP_2X3_VFMA(g5, m2_4 - m0_6, u);
+        u = PTP_2X3_VFMA(g6, m0_5, u);
+        u = PTP_2X3_VFMA(g9, -m0_2, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g1 * (m4_6);
+        u = PTP_2X3_VFMA(g4, -m1_6, u);
+        u = PTP_2X3_VFMA(g6, m1_4, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
         if (d)
-            d[10] = ptp_2x3_vfirst(v) * 0.0714285746f;
+            ptp_2x3_vstoref(d + 10 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_2x3_vf m1_11 = x1 * y11 - y1 * x11;
+        u = g0 * (-m1_11);
         const ptp_2x3_vf m0_11 = x0 * y11 - y0 * x11;
-        u = -((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
+        u = PTP_2X3_VFMA(g1, m0_11, u);
+        u = PTP_2X3_VFMA(g11, -m0_1, u);
         v = u;
-        u = -((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
-        u += ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
-        v += 2.0f * u;
+        u = g1 * (-m3_8);
+        u = PTP_2X3_VFMA(g3, m1_8 + m4_5, u);
+        u = PTP_2X3_VFMA(g4, -m3_5, u);
+        u = PTP_2X3_VFMA(g5, m3_4, u);
+        u = PTP_2X3_VFMA(g8, -m1_3, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         const ptp_2x3_vf m3_9 = x3 * y9 - y3 * x9;
-        u = -((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
-        v += 3.0f * u;
+        u = g0 * (-m3_9);
+        u = PTP_2X3_VFMA(g3, m0_9, u);
+        u = PTP_2X3_VFMA(g9, -m0_3, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         const ptp_2x3_vf m5_7 = x5 * y7 - y5 * x7;
-        u = ((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        v += 4.0f * u;
+        u = g0 * (m5_7);
+        u = PTP_2X3_VFMA(g5, -m0_7, u);
+        u = PTP_2X3_VFMA(g7, m0_5, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
         const ptp_2x3_vf m2_10 = x2 * y10 - y2 * x10;
-        u = -((g0 * m2_10 - g2 * m0_10) + g10 * m0_2);
-        u += ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        v += 6.0f * u;
-        u = -((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
-        v += 9.0f * u;
-        u = ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
-        v += 12.0f * u;
-        u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v += 18.0f * u;
+        u = g0 * (-m2_10);
+        u = PTP_2X3_VFMA(g1, m4_7, u);
+        u = PTP_2X3_VFMA(g2, m0_10, u);
+        u = PTP_2X3_VFMA(g4, -m1_7, u);
+        u = PTP_2X3_VFMA(g7, m1_4, u);
+        u = PTP_2X3_VFMA(g10, -m0_2, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g1 * (-m2_9);
+        u = PTP_2X3_VFMA(g2, m1_9, u);
+        u = PTP_2X3_VFMA(g9, -m1_2, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = g2 * (m4_6);
+        u = PTP_2X3_VFMA(g4, -m2_6, u);
+        u = PTP_2X3_VFMA(g6, m2_4, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = g1 * (m5_6);
+        u = PTP_2X3_VFMA(g5, -m1_6, u);
+        u = PTP_2X3_VFMA(g6, m1_5, u);
+        v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
-            d[11] = ptp_2x3_vfirst(v) * 0.042857144f;
+            ptp_2x3_vstoref(d + 11 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
-        u = -((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
+        u = g2 * (-m3_8);
+        u = PTP_2X3_VFMA(g3, m2_8, u);
+        u = PTP_2X3_VFMA(g8, -m2_3, u);
         v = u;
         const ptp_2x3_vf m2_11 = x2 * y11 - y2 * x11;
-        u = -((g0 * m2_11 - g2 * m0_11) + g11 * m0_2);
         const ptp_2x3_vf m6_7 = x6 * y7 - y6 * x7;
-        u += ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
-        v += 2.0f * u;
+        u = g0 * (m6_7 - m2_11);
+        u = PTP_2X3_VFMA(g2, m0_11, u);
+        u = PTP_2X3_VFMA(g6, -m0_7, u);
+        u = PTP_2X3_VFMA(g7, m0_6, u);
+        u = PTP_2X3_VFMA(g11, -m0_2, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         const ptp_2x3_vf m3_10 = x3 * y10 - y3 * x10;
-        u = -((g0 * m3_10 - g3 * m0_10) + g10 * m0_3);
-        v += 3.0f * u;
-        u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v += 4.0f * u;
-        u = -((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
-        u += ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
-        v += 6.0f * u;
-        u = -((g1 * m2_10 - g2 * m1_10) + g10 * m1_2);
-        v += 9.0f * u;
-        u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        v += 12.0f * u;
-        u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v += 18.0f * u;
+        u = g0 * (-m3_10);
+        u = PTP_2X3_VFMA(g3, m0_10, u);
+        u = PTP_2X3_VFMA(g10, -m0_3, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g3 * (m4_6);
+        u = PTP_2X3_VFMA(g4, -m3_6, u);
+        u = PTP_2X3_VFMA(g6, m3_4, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g1 * (-m3_9);
+        u = PTP_2X3_VFMA(g2, m4_7, u);
+        u = PTP_2X3_VFMA(g3, m1_9, u);
+        u = PTP_2X3_VFMA(g4, -m2_7, u);
+        u = PTP_2X3_VFMA(g7, m2_4, u);
+        u = PTP_2X3_VFMA(g9, -m1_3, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g1 * (-m2_10);
+        u = PTP_2X3_VFMA(g2, m1_10, u);
+        u = PTP_2X3_VFMA(g10, -m1_2, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = g1 * (m5_7);
+        u = PTP_2X3_VFMA(g5, -m1_7, u);
+        u = PTP_2X3_VFMA(g7, m1_5, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = g2 * (m5_6);
+        u = PTP_2X3_VFMA(g5, -m2_6, u);
+        u = PTP_2X3_VFMA(g6, m2_5, u);
+        v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
-            d[12] = ptp_2x3_vfirst(v) * 0.042857144f;
+            ptp_2x3_vstoref(d + 12 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_2x3_vf m3_11 = x3 * y11 - y3 * x11;
-        u = -((g0 * m3_11 - g3 * m0_11) + g11 * m0_3);
+        u = g0 * (-m3_11);
+        u = PTP_2X3_VFMA(g3, m0_11, u);
+        u = PTP_2X3_VFMA(g11, -m0_3, u);
         v = u;
-        u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
-        v += 2.0f * u;
-        u = -((g1 * m2_11 - g2 * m1_11) + g11 * m1_2);
-        u -= ((g2 * m3_9 - g3 * m2_9) + g9 * m2_3);
-        v += 3.0f * u;
-        u = -((g1 * m3_10 - g3 * m1_10) + g10 * m1_3);
-        u += ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
-        u += ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
-        v += 6.0f * u;
-        u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v += 12.0f * u;
+        u = g3 * (m4_7);
+        u = PTP_2X3_VFMA(g4, -m3_7, u);
+        u = PTP_2X3_VFMA(g7, m3_4, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
+        u = g1 * (-m2_11);
+        u = PTP_2X3_VFMA(g2, m1_11 - m3_9, u);
+        u = PTP_2X3_VFMA(g3, m2_9, u);
+        u = PTP_2X3_VFMA(g9, -m2_3, u);
+        u = PTP_2X3_VFMA(g11, -m1_2, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g1 * (m6_7 - m3_10);
+        u = PTP_2X3_VFMA(g3, m1_10 + m5_6, u);
+        u = PTP_2X3_VFMA(g5, -m3_6, u);
+        u = PTP_2X3_VFMA(g6, m3_5 - m1_7, u);
+        u = PTP_2X3_VFMA(g7, m1_6, u);
+        u = PTP_2X3_VFMA(g10, -m1_3, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g2 * (m5_7);
+        u = PTP_2X3_VFMA(g5, -m2_7, u);
+        u = PTP_2X3_VFMA(g7, m2_5, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
         if (d)
-            d[13] = ptp_2x3_vfirst(v) * 0.0714285746f;
+            ptp_2x3_vstoref(d + 13 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
-        u = -((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
+        u = g1 * (-m3_11);
+        u = PTP_2X3_VFMA(g3, m1_11, u);
+        u = PTP_2X3_VFMA(g11, -m1_3, u);
         v = 2.0f * u;
-        u = -((g2 * m3_10 - g3 * m2_10) + g10 * m2_3);
-        v += 3.0f * u;
-        u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
-        v += 4.0f * u;
-        u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
-        v += 6.0f * u;
+        u = g2 * (-m3_10);
+        u = PTP_2X3_VFMA(g3, m2_10, u);
+        u = PTP_2X3_VFMA(g10, -m2_3, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g3 * (m5_7);
+        u = PTP_2X3_VFMA(g5, -m3_7, u);
+        u = PTP_2X3_VFMA(g7, m3_5, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g2 * (m6_7);
+        u = PTP_2X3_VFMA(g6, -m2_7, u);
+        u = PTP_2X3_VFMA(g7, m2_6, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[14] = ptp_2x3_vfirst(v) * 0.214285716f;
+            ptp_2x3_vstoref(d + 14 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
         v = u;
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         if (d)
-            d[15] = ptp_2x3_vfirst(v) * 1.5f;
+            ptp_2x3_vstoref(d + 15 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_2x3_vf m4_9 = x4 * y9 - y4 * x9;
@@ -950,335 +1062,489 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = u;
         const ptp_2x3_vf m5_8 = x5 * y8 - y5 * x8;
         u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         if (d)
-            d[16] = ptp_2x3_vfirst(v);
+            ptp_2x3_vstoref(d + 16 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_2x3_vf m4_10 = x4 * y10 - y4 * x10;
-        u = ((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
-        u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
+        u = g0 * (m4_10);
+        u = PTP_2X3_VFMA(g2, m4_8, u);
+        u = PTP_2X3_VFMA(g4, -m2_8 - m0_10, u);
+        u = PTP_2X3_VFMA(g8, m2_4, u);
+        u = PTP_2X3_VFMA(g10, m0_4, u);
         v = 2.0f * u;
         const ptp_2x3_vf m5_9 = x5 * y9 - y5 * x9;
-        u = -((g0 * m5_9 - g5 * m0_9) + g9 * m0_5);
-        u -= ((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
-        v += 3.0f * u;
+        u = g0 * (-m5_9);
+        u = PTP_2X3_VFMA(g1, -m5_8, u);
+        u = PTP_2X3_VFMA(g5, m1_8 + m0_9, u);
+        u = PTP_2X3_VFMA(g8, -m1_5, u);
+        u = PTP_2X3_VFMA(g9, -m0_5, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         const ptp_2x3_vf m6_8 = x6 * y8 - y6 * x8;
-        u = -((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
-        v += 4.0f * u;
-        u = ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
-        v += 6.0f * u;
+        u = g0 * (-m6_8);
+        u = PTP_2X3_VFMA(g6, m0_8, u);
+        u = PTP_2X3_VFMA(g8, -m0_6, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g1 * (m4_9);
+        u = PTP_2X3_VFMA(g4, -m1_9, u);
+        u = PTP_2X3_VFMA(g9, m1_4, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[17] = ptp_2x3_vfirst(v) * 0.142857149f;
+            ptp_2x3_vstoref(d + 17 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_2x3_vf m4_11 = x4 * y11 - y4 * x11;
-        u = ((g0 * m4_11 - g4 * m0_11) + g11 * m0_4);
-        u += ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
+        u = g0 * (m4_11);
+        u = PTP_2X3_VFMA(g3, m4_8, u);
+        u = PTP_2X3_VFMA(g4, -m3_8 - m0_11, u);
+        u = PTP_2X3_VFMA(g8, m3_4, u);
+        u = PTP_2X3_VFMA(g11, m0_4, u);
         v = u;
         const ptp_2x3_vf m7_8 = x7 * y8 - y7 * x8;
-        u = -((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
-        v += 2.0f * u;
+        u = g0 * (-m7_8);
+        u = PTP_2X3_VFMA(g7, m0_8, u);
+        u = PTP_2X3_VFMA(g8, -m0_7, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         const ptp_2x3_vf m6_9 = x6 * y9 - y6 * x9;
-        u = -((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
-        u += ((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
-        u -= ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
-        u += ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
-        v += 9.0f * u;
+        u = g0 * (-m6_9);
+        u = PTP_2X3_VFMA(g1, m4_10 - m6_8, u);
+        u = PTP_2X3_VFMA(g2, m4_9, u);
+        u = PTP_2X3_VFMA(g4, -m1_10 - m2_9, u);
+        u = PTP_2X3_VFMA(g6, m1_8 + m0_9, u);
+        u = PTP_2X3_VFMA(g8, -m1_6, u);
+        u = PTP_2X3_VFMA(g9, m2_4 - m0_6, u);
+        u = PTP_2X3_VFMA(g10, m1_4, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
         if (d)
-            d[18] = ptp_2x3_vfirst(v) * 0.0476190485f;
+            ptp_2x3_vstoref(d + 18 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         const ptp_2x3_vf m5_11 = x5 * y11 - y5 * x11;
-        u = ((g0 * m5_11 - g5 * m0_11) + g11 * m0_5);
-        u += ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
+        u = g0 * (m5_11);
+        u = PTP_2X3_VFMA(g3, m5_8, u);
+        u = PTP_2X3_VFMA(g5, -m3_8 - m0_11, u);
+        u = PTP_2X3_VFMA(g8, m3_5, u);
+        u = PTP_2X3_VFMA(g11, m0_5, u);
         v = u;
-        u = ((g1 * m4_11 - g4 * m1_11) + g11 * m1_4);
-        u += ((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
-        v += 4.0f * u;
+        u = g1 * (m4_11);
+        u = PTP_2X3_VFMA(g3, m4_9, u);
+        u = PTP_2X3_VFMA(g4, -m1_11 - m3_9, u);
+        u = PTP_2X3_VFMA(g9, m3_4, u);
+        u = PTP_2X3_VFMA(g11, m1_4, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
         const ptp_2x3_vf m7_9 = x7 * y9 - y7 * x9;
-        u = -((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
-        u -= ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
-        v += 5.0f * u;
+        u = g0 * (-m7_9);
+        u = PTP_2X3_VFMA(g1, -m7_8, u);
+        u = PTP_2X3_VFMA(g7, m1_8 + m0_9, u);
+        u = PTP_2X3_VFMA(g8, -m1_7, u);
+        u = PTP_2X3_VFMA(g9, -m0_7, u);
+        v = PTP_2X3_VFMAS(5.0f, u, v);
         const ptp_2x3_vf m6_10 = x6 * y10 - y6 * x10;
-        u = -((g0 * m6_10 - g6 * m0_10) + g10 * m0_6);
-        u -= ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
-        v += 6.0f * u;
+        u = g0 * (-m6_10);
+        u = PTP_2X3_VFMA(g2, -m6_8, u);
+        u = PTP_2X3_VFMA(g6, m2_8 + m0_10, u);
+        u = PTP_2X3_VFMA(g8, -m2_6, u);
+        u = PTP_2X3_VFMA(g10, -m0_6, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         const ptp_2x3_vf m5_10 = x5 * y10 - y5 * x10;
-        u = ((g1 * m5_10 - g5 * m1_10) + g10 * m1_5);
-        u += ((g2 * m5_9 - g5 * m2_9) + g9 * m2_5);
-        v += 9.0f * u;
-        u = ((g2 * m4_10 - g4 * m2_10) + g10 * m2_4);
-        v += 12.0f * u;
-        u = -((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
-        v += 18.0f * u;
+        u = g1 * (m5_10);
+        u = PTP_2X3_VFMA(g2, m5_9, u);
+        u = PTP_2X3_VFMA(g5, -m1_10 - m2_9, u);
+        u = PTP_2X3_VFMA(g9, m2_5, u);
+        u = PTP_2X3_VFMA(g10, m1_5, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = g2 * (m4_10);
+        u = PTP_2X3_VFMA(g4, -m2_10, u);
+        u = PTP_2X3_VFMA(g10, m2_4, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = g1 * (-m6_9);
+        u = PTP_2X3_VFMA(g6, m1_9, u);
+        u = PTP_2X3_VFMA(g9, -m1_6, u);
+        v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
-            d[19] = ptp_2x3_vfirst(v) * 0.0285714287f;
+            ptp_2x3_vstoref(d + 19 * ds + l, v * 0.0285714287f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         const ptp_2x3_vf m6_11 = x6 * y11 - y6 * x11;
-        u = -((g0 * m6_11 - g6 * m0_11) + g11 * m0_6);
-        u -= ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
+        u = g0 * (-m6_11);
+        u = PTP_2X3_VFMA(g3, -m6_8, u);
+        u = PTP_2X3_VFMA(g6, m3_8 + m0_11, u);
+        u = PTP_2X3_VFMA(g8, -m3_6, u);
+        u = PTP_2X3_VFMA(g11, -m0_6, u);
         v = u;
         const ptp_2x3_vf m7_10 = x7 * y10 - y7 * x10;
-        u = -((g0 * m7_10 - g7 * m0_10) + g10 * m0_7);
-        u -= ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
-        v += 4.0f * u;
-        u = ((g2 * m4_11 - g4 * m2_11) + g11 * m2_4);
-        u += ((g3 * m4_10 - g4 * m3_10) + g10 * m3_4);
-        v += 5.0f * u;
-        u = ((g1 * m5_11 - g5 * m1_11) + g11 * m1_5);
-        u += ((g3 * m5_9 - g5 * m3_9) + g9 * m3_5);
-        v += 6.0f * u;
-        u = -((g1 * m6_10 - g6 * m1_10) + g10 * m1_6);
-        u -= ((g2 * m6_9 - g6 * m2_9) + g9 * m2_6);
-        v += 9.0f * u;
-        u = -((g1 * m7_9 - g7 * m1_9) + g9 * m1_7);
-        v += 12.0f * u;
-        u = ((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
-        v += 18.0f * u;
+        u = g0 * (-m7_10);
+        u = PTP_2X3_VFMA(g2, -m7_8, u);
+        u = PTP_2X3_VFMA(g7, m2_8 + m0_10, u);
+        u = PTP_2X3_VFMA(g8, -m2_7, u);
+        u = PTP_2X3_VFMA(g10, -m0_7, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g2 * (m4_11);
+        u = PTP_2X3_VFMA(g3, m4_10, u);
+        u = PTP_2X3_VFMA(g4, -m2_11 - m3_10, u);
+        u = PTP_2X3_VFMA(g10, m3_4, u);
+        u = PTP_2X3_VFMA(g11, m2_4, u);
+        v = PTP_2X3_VFMAS(5.0f, u, v);
+        u = g1 * (m5_11);
+        u = PTP_2X3_VFMA(g3, m5_9, u);
+        u = PTP_2X3_VFMA(g5, -m1_11 - m3_9, u);
+        u = PTP_2X3_VFMA(g9, m3_5, u);
+        u = PTP_2X3_VFMA(g11, m1_5, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g1 * (-m6_10);
+        u = PTP_2X3_VFMA(g2, -m6_9, u);
+        u = PTP_2X3_VFMA(g6, m1_10 + m2_9, u);
+        u = PTP_2X3_VFMA(g9, -m2_6, u);
+        u = PTP_2X3_VFMA(g10, -m1_6, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = g1 * (-m7_9);
+        u = PTP_2X3_VFMA(g7, m1_9, u);
+        u = PTP_2X3_VFMA(g9, -m1_7, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = g2 * (m5_10);
+        u = PTP_2X3_VFMA(g5, -m2_10, u);
+        u = PTP_2X3_VFMA(g10, m2_5, u);
+        v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
-            d[20] = ptp_2x3_vfirst(v) * 0.0285714287f;
+            ptp_2x3_vstoref(d + 20 * ds + l, v * 0.0285714287f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         const ptp_2x3_vf m7_11 = x7 * y11 - y7 * x11;
-        u = -((g0 * m7_11 - g7 * m0_11) + g11 * m0_7);
-        u -= ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
+        u = g0 * (-m7_11);
+        u = PTP_2X3_VFMA(g3, -m7_8, u);
+        u = PTP_2X3_VFMA(g7, m3_8 + m0_11, u);
+        u = PTP_2X3_VFMA(g8, -m3_7, u);
+        u = PTP_2X3_VFMA(g11, -m0_7, u);
         v = u;
-        u = ((g3 * m4_11 - g4 * m3_11) + g11 * m3_4);
-        v += 2.0f * u;
-        u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
-        u += ((g2 * m5_11 - g5 * m2_11) + g11 * m2_5);
-        u -= ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
-        u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
-        v += 9.0f * u;
+        u = g3 * (m4_11);
+        u = PTP_2X3_VFMA(g4, -m3_11, u);
+        u = PTP_2X3_VFMA(g11, m3_4, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
+        u = g1 * (-m7_10);
+        u = PTP_2X3_VFMA(g2, m5_11 - m7_9, u);
+        u = PTP_2X3_VFMA(g3, m5_10, u);
+        u = PTP_2X3_VFMA(g5, -m2_11 - m3_10, u);
+        u = PTP_2X3_VFMA(g7, m1_10 + m2_9, u);
+        u = PTP_2X3_VFMA(g9, -m2_7, u);
+        u = PTP_2X3_VFMA(g10, m3_5 - m1_7, u);
+        u = PTP_2X3_VFMA(g11, m2_5, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
         if (d)
-            d[21] = ptp_2x3_vfirst(v) * 0.0476190485f;
+            ptp_2x3_vstoref(d + 21 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
-        u = -((g1 * m7_11 - g7 * m1_11) + g11 * m1_7);
-        u -= ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
+        u = g1 * (-m7_11);
+        u = PTP_2X3_VFMA(g3, -m7_9, u);
+        u = PTP_2X3_VFMA(g7, m1_11 + m3_9, u);
+        u = PTP_2X3_VFMA(g9, -m3_7, u);
+        u = PTP_2X3_VFMA(g11, -m1_7, u);
         v = 2.0f * u;
-        u = ((g2 * m6_11 - g6 * m2_11) + g11 * m2_6);
-        u += ((g3 * m6_10 - g6 * m3_10) + g10 * m3_6);
-        v += 3.0f * u;
-        u = ((g3 * m5_11 - g5 * m3_11) + g11 * m3_5);
-        v += 4.0f * u;
-        u = -((g2 * m7_10 - g7 * m2_10) + g10 * m2_7);
-        v += 6.0f * u;
+        u = g2 * (m6_11);
+        u = PTP_2X3_VFMA(g3, m6_10, u);
+        u = PTP_2X3_VFMA(g6, -m2_11 - m3_10, u);
+        u = PTP_2X3_VFMA(g10, m3_6, u);
+        u = PTP_2X3_VFMA(g11, m2_6, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g3 * (m5_11);
+        u = PTP_2X3_VFMA(g5, -m3_11, u);
+        u = PTP_2X3_VFMA(g11, m3_5, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g2 * (-m7_10);
+        u = PTP_2X3_VFMA(g7, m2_10, u);
+        u = PTP_2X3_VFMA(g10, -m2_7, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[22] = ptp_2x3_vfirst(v) * 0.142857149f;
+            ptp_2x3_vstoref(d + 22 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = -((g2 * m7_11 - g7 * m2_11) + g11 * m2_7);
         u -= ((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
         v = u;
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         if (d)
-            d[23] = ptp_2x3_vfirst(v);
+            ptp_2x3_vstoref(d + 23 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_2x3_vf m8_9 = x8 * y9 - y8 * x9;
         u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
         v = u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         if (d)
-            d[24] = ptp_2x3_vfirst(v) * 1.5f;
+            ptp_2x3_vstoref(d + 24 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_2x3_vf m8_10 = x8 * y10 - y8 * x10;
-        u = ((g0 * m8_10 - g8 * m0_10) + g10 * m0_8);
+        u = g0 * (m8_10);
+        u = PTP_2X3_VFMA(g8, -m0_10, u);
+        u = PTP_2X3_VFMA(g10, m0_8, u);
         v = 2.0f * u;
-        u = ((g1 * m8_9 - g8 * m1_9) + g9 * m1_8);
-        v += 3.0f * u;
-        u = -((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
-        v += 4.0f * u;
-        u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
-        v += 6.0f * u;
+        u = g1 * (m8_9);
+        u = PTP_2X3_VFMA(g8, -m1_9, u);
+        u = PTP_2X3_VFMA(g9, m1_8, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g4 * (-m6_8);
+        u = PTP_2X3_VFMA(g6, m4_8, u);
+        u = PTP_2X3_VFMA(g8, -m4_6, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g4 * (-m5_9);
+        u = PTP_2X3_VFMA(g5, m4_9, u);
+        u = PTP_2X3_VFMA(g9, -m4_5, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[25] = ptp_2x3_vfirst(v) * 0.214285716f;
+            ptp_2x3_vstoref(d + 25 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_2x3_vf m8_11 = x8 * y11 - y8 * x11;
-        u = ((g0 * m8_11 - g8 * m0_11) + g11 * m0_8);
+        u = g0 * (m8_11);
+        u = PTP_2X3_VFMA(g8, -m0_11, u);
+        u = PTP_2X3_VFMA(g11, m0_8, u);
         v = u;
-        u = -((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
-        v += 2.0f * u;
+        u = g4 * (-m7_8);
+        u = PTP_2X3_VFMA(g7, m4_8, u);
+        u = PTP_2X3_VFMA(g8, -m4_7, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         const ptp_2x3_vf m9_10 = x9 * y10 - y9 * x10;
-        u = ((g0 * m9_10 - g9 * m0_10) + g10 * m0_9);
-        u += ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
-        v += 3.0f * u;
-        u = ((g1 * m8_10 - g8 * m1_10) + g10 * m1_8);
-        u -= ((g4 * m5_10 - g5 * m4_10) + g10 * m4_5);
-        u -= ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
-        v += 6.0f * u;
-        u = -((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
-        v += 12.0f * u;
+        u = g0 * (m9_10);
+        u = PTP_2X3_VFMA(g2, m8_9, u);
+        u = PTP_2X3_VFMA(g8, -m2_9, u);
+        u = PTP_2X3_VFMA(g9, m2_8 - m0_10, u);
+        u = PTP_2X3_VFMA(g10, m0_9, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g1 * (m8_10);
+        u = PTP_2X3_VFMA(g4, -m5_10, u);
+        u = PTP_2X3_VFMA(g5, m4_10 - m6_8, u);
+        u = PTP_2X3_VFMA(g6, m5_8, u);
+        u = PTP_2X3_VFMA(g8, -m1_10 - m5_6, u);
+        u = PTP_2X3_VFMA(g10, m1_8 - m4_5, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g4 * (-m6_9);
+        u = PTP_2X3_VFMA(g6, m4_9, u);
+        u = PTP_2X3_VFMA(g9, -m4_6, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
         if (d)
-            d[26] = ptp_2x3_vfirst(v) * 0.0714285746f;
+            ptp_2x3_vstoref(d + 26 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
-        u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
+        u = g3 * (m8_9);
+        u = PTP_2X3_VFMA(g8, -m3_9, u);
+        u = PTP_2X3_VFMA(g9, m3_8, u);
         v = u;
         const ptp_2x3_vf m9_11 = x9 * y11 - y9 * x11;
-        u = ((g0 * m9_11 - g9 * m0_11) + g11 * m0_9);
-        u -= ((g4 * m5_11 - g5 * m4_11) + g11 * m4_5);
-        v += 2.0f * u;
-        u = ((g1 * m8_11 - g8 * m1_11) + g11 * m1_8);
-        v += 3.0f * u;
-        u = -((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
-        v += 4.0f * u;
-        u = ((g2 * m8_10 - g8 * m2_10) + g10 * m2_8);
-        u -= ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
-        v += 6.0f * u;
-        u = ((g1 * m9_10 - g9 * m1_10) + g10 * m1_9);
-        v += 9.0f * u;
-        u = -((g4 * m6_10 - g6 * m4_10) + g10 * m4_6);
-        v += 12.0f * u;
-        u = -((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
-        v += 18.0f * u;
+        u = g0 * (m9_11);
+        u = PTP_2X3_VFMA(g4, -m5_11, u);
+        u = PTP_2X3_VFMA(g5, m4_11, u);
+        u = PTP_2X3_VFMA(g9, -m0_11, u);
+        u = PTP_2X3_VFMA(g11, m0_9 - m4_5, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
+        u = g1 * (m8_11);
+        u = PTP_2X3_VFMA(g8, -m1_11, u);
+        u = PTP_2X3_VFMA(g11, m1_8, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g5 * (-m7_8);
+        u = PTP_2X3_VFMA(g7, m5_8, u);
+        u = PTP_2X3_VFMA(g8, -m5_7, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g2 * (m8_10);
+        u = PTP_2X3_VFMA(g4, -m7_9, u);
+        u = PTP_2X3_VFMA(g7, m4_9, u);
+        u = PTP_2X3_VFMA(g8, -m2_10, u);
+        u = PTP_2X3_VFMA(g9, -m4_7, u);
+        u = PTP_2X3_VFMA(g10, m2_8, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g1 * (m9_10);
+        u = PTP_2X3_VFMA(g9, -m1_10, u);
+        u = PTP_2X3_VFMA(g10, m1_9, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = g4 * (-m6_10);
+        u = PTP_2X3_VFMA(g6, m4_10, u);
+        u = PTP_2X3_VFMA(g10, -m4_6, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = g5 * (-m6_9);
+        u = PTP_2X3_VFMA(g6, m5_9, u);
+        u = PTP_2X3_VFMA(g9, -m5_6, u);
+        v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
-            d[27] = ptp_2x3_vfirst(v) * 0.042857144f;
+            ptp_2x3_vstoref(d + 27 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         const ptp_2x3_vf m10_11 = x10 * y11 - y10 * x11;
-        u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
+        u = g0 * (m10_11);
+        u = PTP_2X3_VFMA(g10, -m0_11, u);
+        u = PTP_2X3_VFMA(g11, m0_10, u);
         v = u;
-        u = ((g3 * m8_10 - g8 * m3_10) + g10 * m3_8);
-        u -= ((g6 * m7_8 - g7 * m6_8) + g8 * m6_7);
-        v += 2.0f * u;
-        u = ((g2 * m8_11 - g8 * m2_11) + g11 * m2_8);
-        v += 3.0f * u;
-        u = -((g4 * m6_11 - g6 * m4_11) + g11 * m4_6);
-        v += 4.0f * u;
-        u = ((g1 * m9_11 - g9 * m1_11) + g11 * m1_9);
-        u -= ((g4 * m7_10 - g7 * m4_10) + g10 * m4_7);
-        v += 6.0f * u;
-        u = ((g2 * m9_10 - g9 * m2_10) + g10 * m2_9);
-        v += 9.0f * u;
-        u = -((g5 * m7_9 - g7 * m5_9) + g9 * m5_7);
-        v += 12.0f * u;
-        u = -((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
-        v += 18.0f * u;
+        u = g3 * (m8_10);
+        u = PTP_2X3_VFMA(g6, -m7_8, u);
+        u = PTP_2X3_VFMA(g7, m6_8, u);
+        u = PTP_2X3_VFMA(g8, -m6_7 - m3_10, u);
+        u = PTP_2X3_VFMA(g10, m3_8, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
+        u = g2 * (m8_11);
+        u = PTP_2X3_VFMA(g8, -m2_11, u);
+        u = PTP_2X3_VFMA(g11, m2_8, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g4 * (-m6_11);
+        u = PTP_2X3_VFMA(g6, m4_11, u);
+        u = PTP_2X3_VFMA(g11, -m4_6, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g1 * (m9_11);
+        u = PTP_2X3_VFMA(g4, -m7_10, u);
+        u = PTP_2X3_VFMA(g7, m4_10, u);
+        u = PTP_2X3_VFMA(g9, -m1_11, u);
+        u = PTP_2X3_VFMA(g10, -m4_7, u);
+        u = PTP_2X3_VFMA(g11, m1_9, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g2 * (m9_10);
+        u = PTP_2X3_VFMA(g9, -m2_10, u);
+        u = PTP_2X3_VFMA(g10, m2_9, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = g5 * (-m7_9);
+        u = PTP_2X3_VFMA(g7, m5_9, u);
+        u = PTP_2X3_VFMA(g9, -m5_7, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = g5 * (-m6_10);
+        u = PTP_2X3_VFMA(g6, m5_10, u);
+        u = PTP_2X3_VFMA(g10, -m5_6, u);
+        v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
-            d[28] = ptp_2x3_vfirst(v) * 0.042857144f;
+            ptp_2x3_vstoref(d + 28 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
-        u = ((g3 * m8_11 - g8 * m3_11) + g11 * m3_8);
+        u = g3 * (m8_11);
+        u = PTP_2X3_VFMA(g8, -m3_11, u);
+        u = PTP_2X3_VFMA(g11, m3_8, u);
         v = u;
-        u = -((g4 * m7_11 - g7 * m4_11) + g11 * m4_7);
-        v += 2.0f * u;
-        u = ((g1 * m10_11 - g10 * m1_11) + g11 * m1_10);
-        u += ((g3 * m9_10 - g9 * m3_10) + g10 * m3_9);
-        v += 3.0f * u;
-        u = ((g2 * m9_11 - g9 * m2_11) + g11 * m2_9);
-        u -= ((g5 * m6_11 - g6 * m5_11) + g11 * m5_6);
-        u -= ((g6 * m7_9 - g7 * m6_9) + g9 * m6_7);
-        v += 6.0f * u;
-        u = -((g5 * m7_10 - g7 * m5_10) + g10 * m5_7);
-        v += 12.0f * u;
+        u = g4 * (-m7_11);
+        u = PTP_2X3_VFMA(g7, m4_11, u);
+        u = PTP_2X3_VFMA(g11, -m4_7, u);
+        v = PTP_2X3_VFMAS(2.0f, u, v);
+        u = g1 * (m10_11);
+        u = PTP_2X3_VFMA(g3, m9_10, u);
+        u = PTP_2X3_VFMA(g9, -m3_10, u);
+        u = PTP_2X3_VFMA(g10, m3_9 - m1_11, u);
+        u = PTP_2X3_VFMA(g11, m1_10, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g2 * (m9_11);
+        u = PTP_2X3_VFMA(g5, -m6_11, u);
+        u = PTP_2X3_VFMA(g6, m5_11 - m7_9, u);
+        u = PTP_2X3_VFMA(g7, m6_9, u);
+        u = PTP_2X3_VFMA(g9, -m2_11 - m6_7, u);
+        u = PTP_2X3_VFMA(g11, m2_9 - m5_6, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g5 * (-m7_10);
+        u = PTP_2X3_VFMA(g7, m5_10, u);
+        u = PTP_2X3_VFMA(g10, -m5_7, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
         if (d)
-            d[29] = ptp_2x3_vfirst(v) * 0.0714285746f;
+            ptp_2x3_vstoref(d + 29 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
-        u = ((g3 * m9_11 - g9 * m3_11) + g11 * m3_9);
+        u = g3 * (m9_11);
+        u = PTP_2X3_VFMA(g9, -m3_11, u);
+        u = PTP_2X3_VFMA(g11, m3_9, u);
         v = 2.0f * u;
-        u = ((g2 * m10_11 - g10 * m2_11) + g11 * m2_10);
-        v += 3.0f * u;
-        u = -((g5 * m7_11 - g7 * m5_11) + g11 * m5_7);
-        v += 4.0f * u;
-        u = -((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
-        v += 6.0f * u;
+        u = g2 * (m10_11);
+        u = PTP_2X3_VFMA(g10, -m2_11, u);
+        u = PTP_2X3_VFMA(g11, m2_10, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g5 * (-m7_11);
+        u = PTP_2X3_VFMA(g7, m5_11, u);
+        u = PTP_2X3_VFMA(g11, -m5_7, u);
+        v = PTP_2X3_VFMAS(4.0f, u, v);
+        u = g6 * (-m7_10);
+        u = PTP_2X3_VFMA(g7, m6_10, u);
+        u = PTP_2X3_VFMA(g10, -m6_7, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[30] = ptp_2x3_vfirst(v) * 0.214285716f;
+            ptp_2x3_vstoref(d + 30 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         v = u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         if (d)
-            d[31] = ptp_2x3_vfirst(v) * 1.5f;
+            ptp_2x3_vstoref(d + 31 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v = u;
         if (d)
-            d[32] = ptp_2x3_vfirst(v) * 6.0f;
+            ptp_2x3_vstoref(d + 32 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = ((g4 * m8_10 - g8 * m4_10) + g10 * m4_8);
         v = 2.0f * u;
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         if (d)
-            d[33] = ptp_2x3_vfirst(v) * 0.857142866f;
+            ptp_2x3_vstoref(d + 33 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = ((g4 * m8_11 - g8 * m4_11) + g11 * m4_8);
         v = u;
         u = ((g4 * m9_10 - g9 * m4_10) + g10 * m4_9);
         u += ((g6 * m8_9 - g8 * m6_9) + g9 * m6_8);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         u = ((g5 * m8_10 - g8 * m5_10) + g10 * m5_8);
-        v += 6.0f * u;
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[34] = ptp_2x3_vfirst(v) * 0.285714298f;
+            ptp_2x3_vstoref(d + 34 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         u = ((g7 * m8_9 - g8 * m7_9) + g9 * m7_8);
         v = u;
         u = ((g4 * m9_11 - g9 * m4_11) + g11 * m4_9);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         u = ((g5 * m8_11 - g8 * m5_11) + g11 * m5_8);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         u = ((g6 * m8_10 - g8 * m6_10) + g10 * m6_8);
-        v += 6.0f * u;
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         u = ((g5 * m9_10 - g9 * m5_10) + g10 * m5_9);
-        v += 9.0f * u;
+        v = PTP_2X3_VFMAS(9.0f, u, v);
         if (d)
-            d[35] = ptp_2x3_vfirst(v) * 0.171428576f;
+            ptp_2x3_vstoref(d + 35 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = ((g4 * m10_11 - g10 * m4_11) + g11 * m4_10);
         v = u;
         u = ((g7 * m8_10 - g8 * m7_10) + g10 * m7_8);
-        v += 2.0f * u;
+        v = PTP_2X3_VFMAS(2.0f, u, v);
         u = ((g6 * m8_11 - g8 * m6_11) + g11 * m6_8);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         u = ((g5 * m9_11 - g9 * m5_11) + g11 * m5_9);
-        v += 6.0f * u;
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         u = ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
-        v += 9.0f * u;
+        v = PTP_2X3_VFMAS(9.0f, u, v);
         if (d)
-            d[36] = ptp_2x3_vfirst(v) * 0.171428576f;
+            ptp_2x3_vstoref(d + 36 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
         u = ((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
         v = u;
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
         u += ((g7 * m9_10 - g9 * m7_10) + g10 * m7_9);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         u = ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
-        v += 6.0f * u;
+        v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
-            d[37] = ptp_2x3_vfirst(v) * 0.285714298f;
+            ptp_2x3_vstoref(d + 37 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
         v = 2.0f * u;
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
-        v += 3.0f * u;
+        v = PTP_2X3_VFMAS(3.0f, u, v);
         if (d)
-            d[38] = ptp_2x3_vfirst(v) * 0.857142866f;
+            ptp_2x3_vstoref(d + 38 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = u;
         if (d)
-            d[39] = ptp_2x3_vfirst(v) * 6.0f;
+            ptp_2x3_vstoref(d + 39 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -1298,13 +1564,13 @@ __attribute__((noinline))
 static void ptp_2x3_lanes(const float *PTP_2X3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                           unsigned char *PTP_2X3_RESTRICT cls)
 {
-    ptp_2x3_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_2x3_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_2x3_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_2x3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_2x3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

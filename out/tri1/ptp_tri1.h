@@ -42,8 +42,10 @@ extern "C" {
 #define PTP_TRI1_FRONT 0u
 #define PTP_TRI1_BACK 1u
 #define PTP_TRI1_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_TRI1_FLOPS 17
+#define PTP_TRI1_MULS 12
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI1_LANES
 #define PTP_TRI1_LANES 16
@@ -132,11 +134,36 @@ static inline void ptp_tri1_vstore(unsigned char *cls, ptp_tri1_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI1_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_tri1_vfirst(ptp_tri1_vf v)
+/* d[i] = v[i] for the first count (at most PTP_TRI1_VW) lanes. */
+static inline void ptp_tri1_vstoref(float *d, ptp_tri1_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_TRI1_VW; i++)
+        d[i] = v[i];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_TRI1_VW == 16
+#include <immintrin.h>
+#define PTP_TRI1_VFMA(a, b, c) ((ptp_tri1_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_TRI1_VFMAS(a, b, c) PTP_TRI1_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_TRI1_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI1_VFMA(a, b, c) ((ptp_tri1_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_TRI1_VFMAS(a, b, c) PTP_TRI1_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_TRI1_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI1_VFMA(a, b, c) ((ptp_tri1_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_TRI1_VFMAS(a, b, c) PTP_TRI1_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_TRI1_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_TRI1_VFMA(a, b, c) ((ptp_tri1_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_TRI1_VFMAS(a, b, c) PTP_TRI1_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_TRI1_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI1_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri1_vf ptp_tri1_vabsmax(ptp_tri1_vf r, ptp_tri1_vf x)
 {
@@ -160,10 +187,17 @@ static inline ptp_tri1_vf ptp_tri1_vabsmax(ptp_tri1_vf r, ptp_tri1_vf x)
 {
     return PTP_TRI1_ABSMAX(r, x);
 }
-static inline float ptp_tri1_vfirst(ptp_tri1_vf v)
+static inline void ptp_tri1_vstoref(float *d, ptp_tri1_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_TRI1_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_TRI1_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_TRI1_VFMAS PTP_TRI1_VFMA
 #endif
 
 float ptp_tri1_alpha(const float proj[16], int layout)
@@ -247,16 +281,16 @@ void ptp_tri1_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI1_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_tri1_lanes_body(const float *PTP_TRI1_RESTRICT soa, size_t stride, size_t n,
                                         const float eye[4], unsigned char *PTP_TRI1_RESTRICT cls,
-                                        float *PTP_TRI1_RESTRICT d)
+                                        float *PTP_TRI1_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -292,7 +326,7 @@ static inline void ptp_tri1_lanes_body(const float *PTP_TRI1_RESTRICT soa, size_
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_tri1_vfirst(v);
+            ptp_tri1_vstoref(d + 0 * ds + l, v, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -312,13 +346,13 @@ __attribute__((noinline))
 static void ptp_tri1_lanes(const float *PTP_TRI1_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                            unsigned char *PTP_TRI1_RESTRICT cls)
 {
-    ptp_tri1_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_tri1_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_tri1_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_tri1_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_tri1_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -42,8 +42,10 @@ extern "C" {
 #define PTP_TRI2_FRONT 0u
 #define PTP_TRI2_BACK 1u
 #define PTP_TRI2_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_TRI2_FLOPS 144
+#define PTP_TRI2_MULS 88
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI2_LANES
 #define PTP_TRI2_LANES 16
@@ -132,11 +134,36 @@ static inline void ptp_tri2_vstore(unsigned char *cls, ptp_tri2_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI2_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_tri2_vfirst(ptp_tri2_vf v)
+/* d[i] = v[i] for the first count (at most PTP_TRI2_VW) lanes. */
+static inline void ptp_tri2_vstoref(float *d, ptp_tri2_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_TRI2_VW; i++)
+        d[i] = v[i];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_TRI2_VW == 16
+#include <immintrin.h>
+#define PTP_TRI2_VFMA(a, b, c) ((ptp_tri2_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_TRI2_VFMAS(a, b, c) PTP_TRI2_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_TRI2_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI2_VFMA(a, b, c) ((ptp_tri2_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_TRI2_VFMAS(a, b, c) PTP_TRI2_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_TRI2_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI2_VFMA(a, b, c) ((ptp_tri2_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_TRI2_VFMAS(a, b, c) PTP_TRI2_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_TRI2_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_TRI2_VFMA(a, b, c) ((ptp_tri2_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_TRI2_VFMAS(a, b, c) PTP_TRI2_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_TRI2_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI2_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri2_vf ptp_tri2_vabsmax(ptp_tri2_vf r, ptp_tri2_vf x)
 {
@@ -160,10 +187,17 @@ static inline ptp_tri2_vf ptp_tri2_vabsmax(ptp_tri2_vf r, ptp_tri2_vf x)
 {
     return PTP_TRI2_ABSMAX(r, x);
 }
-static inline float ptp_tri2_vfirst(ptp_tri2_vf v)
+static inline void ptp_tri2_vstoref(float *d, ptp_tri2_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_TRI2_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_TRI2_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_TRI2_VFMAS PTP_TRI2_VFMA
 #endif
 
 float ptp_tri2_alpha(const float proj[16], int layout)
@@ -279,16 +313,16 @@ void ptp_tri2_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI2_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_t stride, size_t n,
                                         const float eye[4], unsigned char *PTP_TRI2_RESTRICT cls,
-                                        float *PTP_TRI2_RESTRICT d)
+                                        float *PTP_TRI2_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -330,7 +364,7 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_tri2_vfirst(v) * 4.0f;
+            ptp_tri2_vstoref(d + 0 * ds + l, v * 4.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_tri2_vf m1_4 = x1 * y4 - y1 * x4;
@@ -341,7 +375,7 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
         if (d)
-            d[1] = ptp_tri2_vfirst(v) * 1.33333337f;
+            ptp_tri2_vstoref(d + 1 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_tri2_vf m1_5 = x1 * y5 - y1 * x5;
@@ -351,7 +385,7 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = u;
         if (d)
-            d[2] = ptp_tri2_vfirst(v) * 1.33333337f;
+            ptp_tri2_vstoref(d + 2 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_tri2_vf m3_4 = x3 * y4 - y3 * x4;
@@ -360,16 +394,20 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         u -= ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
         v = u;
         if (d)
-            d[3] = ptp_tri2_vfirst(v) * 1.33333337f;
+            ptp_tri2_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri2_vf m3_5 = x3 * y5 - y3 * x5;
-        u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+        u = g0 * (m3_5);
+        u = PTP_TRI2_VFMA(g3, -m0_5, u);
+        u = PTP_TRI2_VFMA(g5, m0_3, u);
         v = u;
-        u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 2.0f * u;
+        u = g1 * (-m2_4);
+        u = PTP_TRI2_VFMA(g2, m1_4, u);
+        u = PTP_TRI2_VFMA(g4, -m1_2, u);
+        v = PTP_TRI2_VFMAS(2.0f, u, v);
         if (d)
-            d[4] = ptp_tri2_vfirst(v) * 0.666666687f;
+            ptp_tri2_vstoref(d + 4 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_tri2_vf m4_5 = x4 * y5 - y4 * x5;
@@ -378,33 +416,33 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         u -= ((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v = u;
         if (d)
-            d[5] = ptp_tri2_vfirst(v) * 1.33333337f;
+            ptp_tri2_vstoref(d + 5 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v = u;
         if (d)
-            d[6] = ptp_tri2_vfirst(v) * 4.0f;
+            ptp_tri2_vstoref(d + 6 * ds + l, v * 4.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = u;
         if (d)
-            d[7] = ptp_tri2_vfirst(v) * 1.33333337f;
+            ptp_tri2_vstoref(d + 7 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
         v = u;
         if (d)
-            d[8] = ptp_tri2_vfirst(v) * 1.33333337f;
+            ptp_tri2_vstoref(d + 8 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v = u;
         if (d)
-            d[9] = ptp_tri2_vfirst(v) * 4.0f;
+            ptp_tri2_vstoref(d + 9 * ds + l, v * 4.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -424,13 +462,13 @@ __attribute__((noinline))
 static void ptp_tri2_lanes(const float *PTP_TRI2_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                            unsigned char *PTP_TRI2_RESTRICT cls)
 {
-    ptp_tri2_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_tri2_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_tri2_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_tri2_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_tri2_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

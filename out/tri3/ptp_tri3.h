@@ -42,8 +42,10 @@ extern "C" {
 #define PTP_TRI3_FRONT 0u
 #define PTP_TRI3_BACK 1u
 #define PTP_TRI3_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
-#define PTP_TRI3_FLOPS 782
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
+#define PTP_TRI3_FLOPS 755
+#define PTP_TRI3_MULS 423
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI3_LANES
 #define PTP_TRI3_LANES 16
@@ -132,11 +134,36 @@ static inline void ptp_tri3_vstore(unsigned char *cls, ptp_tri3_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_tri3_vfirst(ptp_tri3_vf v)
+/* d[i] = v[i] for the first count (at most PTP_TRI3_VW) lanes. */
+static inline void ptp_tri3_vstoref(float *d, ptp_tri3_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_TRI3_VW; i++)
+        d[i] = v[i];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_TRI3_VW == 16
+#include <immintrin.h>
+#define PTP_TRI3_VFMA(a, b, c) ((ptp_tri3_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_TRI3_VFMAS(a, b, c) PTP_TRI3_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_TRI3_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI3_VFMA(a, b, c) ((ptp_tri3_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_TRI3_VFMAS(a, b, c) PTP_TRI3_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_TRI3_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI3_VFMA(a, b, c) ((ptp_tri3_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_TRI3_VFMAS(a, b, c) PTP_TRI3_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_TRI3_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_TRI3_VFMA(a, b, c) ((ptp_tri3_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_TRI3_VFMAS(a, b, c) PTP_TRI3_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_TRI3_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI3_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri3_vf ptp_tri3_vabsmax(ptp_tri3_vf r, ptp_tri3_vf x)
 {
@@ -160,10 +187,17 @@ static inline ptp_tri3_vf ptp_tri3_vabsmax(ptp_tri3_vf r, ptp_tri3_vf x)
 {
     return PTP_TRI3_ABSMAX(r, x);
 }
-static inline float ptp_tri3_vfirst(ptp_tri3_vf v)
+static inline void ptp_tri3_vstoref(float *d, ptp_tri3_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_TRI3_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_TRI3_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_TRI3_VFMAS PTP_TRI3_VFMA
 #endif
 
 float ptp_tri3_alpha(const float proj[16], int layout)
@@ -455,16 +489,16 @@ void ptp_tri3_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI3_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_t stride, size_t n,
                                         const float eye[4], unsigned char *PTP_TRI3_RESTRICT cls,
-                                        float *PTP_TRI3_RESTRICT d)
+                                        float *PTP_TRI3_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -514,7 +548,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_tri3_vfirst(v) * 9.0f;
+            ptp_tri3_vstoref(d + 0 * ds + l, v * 9.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_tri3_vf m1_4 = x1 * y4 - y1 * x4;
@@ -525,7 +559,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
         if (d)
-            d[1] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 1 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_tri3_vf m1_5 = x1 * y5 - y1 * x5;
@@ -535,7 +569,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = u;
         if (d)
-            d[2] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 2 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_tri3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -547,27 +581,34 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         const ptp_tri3_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         const ptp_tri3_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[3] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 3 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri3_vf m1_8 = x1 * y8 - y1 * x8;
-        const ptp_tri3_vf m0_8 = x0 * y8 - y0 * x8;
-        u = ((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
         const ptp_tri3_vf m2_7 = x2 * y7 - y2 * x7;
-        u -= ((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+        u = g0 * (m1_8 - m2_7);
+        const ptp_tri3_vf m0_8 = x0 * y8 - y0 * x8;
+        u = PTP_TRI3_VFMA(g1, -m0_8, u);
+        u = PTP_TRI3_VFMA(g2, m0_7, u);
+        u = PTP_TRI3_VFMA(g7, -m0_2, u);
+        u = PTP_TRI3_VFMA(g8, m0_1, u);
         v = u;
         const ptp_tri3_vf m3_5 = x3 * y5 - y3 * x5;
-        u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v += 2.0f * u;
-        u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 3.0f * u;
+        u = g0 * (m3_5);
+        u = PTP_TRI3_VFMA(g3, -m0_5, u);
+        u = PTP_TRI3_VFMA(g5, m0_3, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (-m2_4);
+        u = PTP_TRI3_VFMA(g2, m1_4, u);
+        u = PTP_TRI3_VFMA(g4, -m1_2, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[4] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 4 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_tri3_vf m1_9 = x1 * y9 - y1 * x9;
@@ -578,12 +619,12 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         const ptp_tri3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         const ptp_tri3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[5] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 5 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_tri3_vf m3_7 = x3 * y7 - y3 * x7;
@@ -594,41 +635,57 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v = u;
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[6] = ptp_tri3_vfirst(v) * 0.899999976f;
+            ptp_tri3_vstoref(d + 6 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_tri3_vf m4_7 = x4 * y7 - y4 * x7;
-        u = -((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         const ptp_tri3_vf m5_6 = x5 * y6 - y5 * x6;
-        u -= ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
+        u = g0 * (-m4_7 - m5_6);
+        u = PTP_TRI3_VFMA(g4, m0_7, u);
+        u = PTP_TRI3_VFMA(g5, m0_6, u);
+        u = PTP_TRI3_VFMA(g6, -m0_5, u);
+        u = PTP_TRI3_VFMA(g7, -m0_4, u);
         v = u;
         const ptp_tri3_vf m3_8 = x3 * y8 - y3 * x8;
-        u = ((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
-        v += 2.0f * u;
-        u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
-        u += ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v += 3.0f * u;
+        u = g0 * (m3_8);
+        u = PTP_TRI3_VFMA(g3, -m0_8, u);
+        u = PTP_TRI3_VFMA(g8, m0_3, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (m3_5 - m2_7);
+        u = PTP_TRI3_VFMA(g2, m1_7 + m3_4, u);
+        u = PTP_TRI3_VFMA(g3, -m1_5 - m2_4, u);
+        u = PTP_TRI3_VFMA(g4, m2_3, u);
+        u = PTP_TRI3_VFMA(g5, m1_3, u);
+        u = PTP_TRI3_VFMA(g7, -m1_2, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[7] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 7 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_tri3_vf m3_9 = x3 * y9 - y3 * x9;
-        u = ((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
         const ptp_tri3_vf m4_8 = x4 * y8 - y4 * x8;
-        u += ((g0 * m4_8 - g4 * m0_8) + g8 * m0_4);
+        u = g0 * (m3_9 + m4_8);
+        u = PTP_TRI3_VFMA(g3, -m0_9, u);
+        u = PTP_TRI3_VFMA(g4, -m0_8, u);
+        u = PTP_TRI3_VFMA(g8, m0_4, u);
+        u = PTP_TRI3_VFMA(g9, m0_3, u);
         v = u;
         const ptp_tri3_vf m5_7 = x5 * y7 - y5 * x7;
-        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        v += 2.0f * u;
-        u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
-        u += ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v += 3.0f * u;
+        u = g0 * (-m5_7);
+        u = PTP_TRI3_VFMA(g5, m0_7, u);
+        u = PTP_TRI3_VFMA(g7, -m0_5, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (m4_5 - m2_8);
+        u = PTP_TRI3_VFMA(g2, m1_8 + m3_5, u);
+        u = PTP_TRI3_VFMA(g3, -m2_5, u);
+        u = PTP_TRI3_VFMA(g4, -m1_5, u);
+        u = PTP_TRI3_VFMA(g5, m1_4 + m2_3, u);
+        u = PTP_TRI3_VFMA(g8, -m1_2, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[8] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 8 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_tri3_vf m4_9 = x4 * y9 - y4 * x9;
@@ -639,9 +696,9 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
         v = u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[9] = ptp_tri3_vfirst(v) * 0.899999976f;
+            ptp_tri3_vstoref(d + 9 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_tri3_vf m6_7 = x6 * y7 - y6 * x7;
@@ -650,54 +707,82 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v = u;
         u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[10] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 10 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri3_vf m6_8 = x6 * y8 - y6 * x8;
-        u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
-        u -= ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
+        u = g0 * (m6_8);
+        u = PTP_TRI3_VFMA(g2, -m4_6, u);
+        u = PTP_TRI3_VFMA(g4, m2_6, u);
+        u = PTP_TRI3_VFMA(g6, -m2_4 - m0_8, u);
+        u = PTP_TRI3_VFMA(g8, m0_6, u);
         v = u;
-        u = -((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v += 2.0f * u;
-        u = ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
-        u -= ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v += 3.0f * u;
+        u = g1 * (-m5_6);
+        u = PTP_TRI3_VFMA(g5, m1_6, u);
+        u = PTP_TRI3_VFMA(g6, -m1_5, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (m3_8 - m4_7);
+        u = PTP_TRI3_VFMA(g2, m3_7, u);
+        u = PTP_TRI3_VFMA(g3, -m1_8 - m2_7, u);
+        u = PTP_TRI3_VFMA(g4, m1_7, u);
+        u = PTP_TRI3_VFMA(g7, m2_3 - m1_4, u);
+        u = PTP_TRI3_VFMA(g8, m1_3, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[11] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 11 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_tri3_vf m6_9 = x6 * y9 - y6 * x9;
-        u = ((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
+        u = g0 * (m6_9);
+        u = PTP_TRI3_VFMA(g6, -m0_9, u);
+        u = PTP_TRI3_VFMA(g9, m0_6, u);
         v = u;
         const ptp_tri3_vf m7_8 = x7 * y8 - y7 * x8;
-        u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
-        u += ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
-        u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v += 3.0f * u;
-        u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
-        v += 9.0f * u;
+        u = g0 * (m7_8);
+        u = PTP_TRI3_VFMA(g1, m3_9, u);
+        u = PTP_TRI3_VFMA(g2, -m5_6, u);
+        u = PTP_TRI3_VFMA(g3, -m1_9, u);
+        u = PTP_TRI3_VFMA(g5, m2_6, u);
+        u = PTP_TRI3_VFMA(g6, -m2_5, u);
+        u = PTP_TRI3_VFMA(g7, -m0_8, u);
+        u = PTP_TRI3_VFMA(g8, m0_7, u);
+        u = PTP_TRI3_VFMA(g9, m1_3, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        u = g1 * (-m5_7);
+        u = PTP_TRI3_VFMA(g2, m3_8, u);
+        u = PTP_TRI3_VFMA(g3, -m2_8, u);
+        u = PTP_TRI3_VFMA(g5, m1_7, u);
+        u = PTP_TRI3_VFMA(g7, -m1_5, u);
+        u = PTP_TRI3_VFMA(g8, m2_3, u);
+        v = PTP_TRI3_VFMAS(9.0f, u, v);
         if (d)
-            d[12] = ptp_tri3_vfirst(v) * 0.100000001f;
+            ptp_tri3_vstoref(d + 12 * ds + l, v * 0.100000001f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_tri3_vf m7_9 = x7 * y9 - y7 * x9;
-        u = ((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
-        u += ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
+        u = g0 * (m7_9);
+        u = PTP_TRI3_VFMA(g1, m4_9, u);
+        u = PTP_TRI3_VFMA(g4, -m1_9, u);
+        u = PTP_TRI3_VFMA(g7, -m0_9, u);
+        u = PTP_TRI3_VFMA(g9, m1_4 + m0_7, u);
         v = u;
-        u = ((g2 * m3_9 - g3 * m2_9) + g9 * m2_3);
-        v += 2.0f * u;
-        u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
-        u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
-        u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v += 3.0f * u;
+        u = g2 * (m3_9);
+        u = PTP_TRI3_VFMA(g3, -m2_9, u);
+        u = PTP_TRI3_VFMA(g9, m2_3, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (-m5_8);
+        u = PTP_TRI3_VFMA(g2, m4_8 - m5_7, u);
+        u = PTP_TRI3_VFMA(g4, -m2_8, u);
+        u = PTP_TRI3_VFMA(g5, m1_8 + m2_7, u);
+        u = PTP_TRI3_VFMA(g7, -m2_5, u);
+        u = PTP_TRI3_VFMA(g8, m2_4 - m1_5, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[13] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 13 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         const ptp_tri3_vf m8_9 = x8 * y9 - y8 * x9;
@@ -706,97 +791,127 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
         v = u;
         u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[14] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 14 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         u -= ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v = u;
         if (d)
-            d[15] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 15 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
-        u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
-        u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
+        u = g2 * (m6_7);
+        u = PTP_TRI3_VFMA(g3, -m5_6, u);
+        u = PTP_TRI3_VFMA(g5, m3_6, u);
+        u = PTP_TRI3_VFMA(g6, -m2_7 - m3_5, u);
+        u = PTP_TRI3_VFMA(g7, m2_6, u);
         v = u;
-        u = ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
-        v += 2.0f * u;
-        u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
-        v += 3.0f * u;
+        u = g1 * (m6_8);
+        u = PTP_TRI3_VFMA(g6, -m1_8, u);
+        u = PTP_TRI3_VFMA(g8, m1_6, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g3 * (-m4_7);
+        u = PTP_TRI3_VFMA(g4, m3_7, u);
+        u = PTP_TRI3_VFMA(g7, -m3_4, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[16] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 16 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
-        u = ((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
-        u -= ((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
+        u = g1 * (m6_9);
+        u = PTP_TRI3_VFMA(g4, -m5_6, u);
+        u = PTP_TRI3_VFMA(g5, m4_6, u);
+        u = PTP_TRI3_VFMA(g6, -m1_9 - m4_5, u);
+        u = PTP_TRI3_VFMA(g9, m1_6, u);
         v = u;
-        u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
-        v += 2.0f * u;
-        u = ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
-        u -= ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
-        u -= ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
-        v += 3.0f * u;
+        u = g2 * (m6_8);
+        u = PTP_TRI3_VFMA(g6, -m2_8, u);
+        u = PTP_TRI3_VFMA(g8, m2_6, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g1 * (m7_8);
+        u = PTP_TRI3_VFMA(g3, -m4_8 - m5_7, u);
+        u = PTP_TRI3_VFMA(g4, m3_8, u);
+        u = PTP_TRI3_VFMA(g5, m3_7, u);
+        u = PTP_TRI3_VFMA(g7, -m1_8 - m3_5, u);
+        u = PTP_TRI3_VFMA(g8, m1_7 - m3_4, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[17] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 17 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
-        u = ((g2 * m6_9 - g6 * m2_9) + g9 * m2_6);
-        u -= ((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
+        u = g2 * (m6_9);
+        u = PTP_TRI3_VFMA(g3, -m4_9, u);
+        u = PTP_TRI3_VFMA(g4, m3_9, u);
+        u = PTP_TRI3_VFMA(g6, -m2_9, u);
+        u = PTP_TRI3_VFMA(g9, m2_6 - m3_4, u);
         v = u;
-        u = ((g1 * m7_9 - g7 * m1_9) + g9 * m1_7);
-        v += 2.0f * u;
-        u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
-        u -= ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
-        u -= ((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
-        v += 3.0f * u;
+        u = g1 * (m7_9);
+        u = PTP_TRI3_VFMA(g7, -m1_9, u);
+        u = PTP_TRI3_VFMA(g9, m1_7, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g2 * (m7_8);
+        u = PTP_TRI3_VFMA(g3, -m5_8, u);
+        u = PTP_TRI3_VFMA(g4, -m5_7, u);
+        u = PTP_TRI3_VFMA(g5, m4_7 + m3_8, u);
+        u = PTP_TRI3_VFMA(g7, -m2_8 - m4_5, u);
+        u = PTP_TRI3_VFMA(g8, m2_7 - m3_5, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[18] = ptp_tri3_vfirst(v) * 0.300000012f;
+            ptp_tri3_vstoref(d + 18 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
-        u = ((g1 * m8_9 - g8 * m1_9) + g9 * m1_8);
-        u -= ((g3 * m5_9 - g5 * m3_9) + g9 * m3_5);
+        u = g1 * (m8_9);
+        u = PTP_TRI3_VFMA(g3, -m5_9, u);
+        u = PTP_TRI3_VFMA(g5, m3_9, u);
+        u = PTP_TRI3_VFMA(g8, -m1_9, u);
+        u = PTP_TRI3_VFMA(g9, m1_8 - m3_5, u);
         v = u;
-        u = ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
-        v += 2.0f * u;
-        u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
-        v += 3.0f * u;
+        u = g2 * (m7_9);
+        u = PTP_TRI3_VFMA(g7, -m2_9, u);
+        u = PTP_TRI3_VFMA(g9, m2_7, u);
+        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        u = g4 * (-m5_8);
+        u = PTP_TRI3_VFMA(g5, m4_8, u);
+        u = PTP_TRI3_VFMA(g8, -m4_5, u);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[19] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 19 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
         u -= ((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
         v = u;
         if (d)
-            d[20] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 20 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
         if (d)
-            d[21] = ptp_tri3_vfirst(v) * 9.0f;
+            ptp_tri3_vstoref(d + 21 * ds + l, v * 9.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
         u += ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v = u;
         if (d)
-            d[22] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 22 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = ((g3 * m6_9 - g6 * m3_9) + g9 * m3_6);
         u += ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
         v = u;
         u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[23] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 23 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         u = ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
@@ -804,33 +919,33 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
         v = u;
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            d[24] = ptp_tri3_vfirst(v) * 0.899999976f;
+            ptp_tri3_vstoref(d + 24 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
         u += ((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
         v = u;
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
-        v += 3.0f * u;
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
-        v += 4.0f * u;
+        v = PTP_TRI3_VFMAS(4.0f, u, v);
         if (d)
-            d[25] = ptp_tri3_vfirst(v) * 0.600000024f;
+            ptp_tri3_vstoref(d + 25 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         u += ((g5 * m7_9 - g7 * m5_9) + g9 * m5_7);
         v = u;
         if (d)
-            d[26] = ptp_tri3_vfirst(v) * 3.0f;
+            ptp_tri3_vstoref(d + 26 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v = u;
         if (d)
-            d[27] = ptp_tri3_vfirst(v) * 9.0f;
+            ptp_tri3_vstoref(d + 27 * ds + l, v * 9.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -850,13 +965,13 @@ __attribute__((noinline))
 static void ptp_tri3_lanes(const float *PTP_TRI3_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                            unsigned char *PTP_TRI3_RESTRICT cls)
 {
-    ptp_tri3_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_tri3_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_tri3_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_tri3_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_tri3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -42,8 +42,10 @@ extern "C" {
 #define PTP_TRI4_FRONT 0u
 #define PTP_TRI4_BACK 1u
 #define PTP_TRI4_SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
-#define PTP_TRI4_FLOPS 2926
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
+#define PTP_TRI4_FLOPS 2818
+#define PTP_TRI4_MULS 1547
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI4_LANES
 #define PTP_TRI4_LANES 16
@@ -132,11 +134,36 @@ static inline void ptp_tri4_vstore(unsigned char *cls, ptp_tri4_vm c, size_t cou
     for (i = 0; i < count && i < PTP_TRI4_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float ptp_tri4_vfirst(ptp_tri4_vf v)
+/* d[i] = v[i] for the first count (at most PTP_TRI4_VW) lanes. */
+static inline void ptp_tri4_vstoref(float *d, ptp_tri4_vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < PTP_TRI4_VW; i++)
+        d[i] = v[i];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if PTP_TRI4_VW == 16
+#include <immintrin.h>
+#define PTP_TRI4_VFMA(a, b, c) ((ptp_tri4_vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define PTP_TRI4_VFMAS(a, b, c) PTP_TRI4_VFMA(_mm512_set1_ps(a), b, c)
+#elif PTP_TRI4_VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI4_VFMA(a, b, c) ((ptp_tri4_vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define PTP_TRI4_VFMAS(a, b, c) PTP_TRI4_VFMA(_mm256_set1_ps(a), b, c)
+#elif PTP_TRI4_VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define PTP_TRI4_VFMA(a, b, c) ((ptp_tri4_vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define PTP_TRI4_VFMAS(a, b, c) PTP_TRI4_VFMA(_mm_set1_ps(a), b, c)
+#elif PTP_TRI4_VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define PTP_TRI4_VFMA(a, b, c) ((ptp_tri4_vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define PTP_TRI4_VFMAS(a, b, c) PTP_TRI4_VFMA(vdupq_n_f32(a), b, c)
+#else
+#define PTP_TRI4_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI4_VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri4_vf ptp_tri4_vabsmax(ptp_tri4_vf r, ptp_tri4_vf x)
 {
@@ -160,10 +187,17 @@ static inline ptp_tri4_vf ptp_tri4_vabsmax(ptp_tri4_vf r, ptp_tri4_vf x)
 {
     return PTP_TRI4_ABSMAX(r, x);
 }
-static inline float ptp_tri4_vfirst(ptp_tri4_vf v)
+static inline void ptp_tri4_vstoref(float *d, ptp_tri4_vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define PTP_TRI4_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define PTP_TRI4_VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define PTP_TRI4_VFMAS PTP_TRI4_VFMA
 #endif
 
 float ptp_tri4_alpha(const float proj[16], int layout)
@@ -1059,16 +1093,16 @@ void ptp_tri4_planes(const float cp[][4], float t[][4])
  * Laplace expansions over shared 2x2 minors. An iteration classifies PTP_TRI4_VW patches,
  * branch-free: GNU C vectors with gcc, one patch that clang vectorizes across iterations
  * (-march=native for AVX2 or AVX-512). The last patches are padded with copies of the last
- * one. Products are never contracted into FMAs: equal points give exact zeros.
- * With d, d[P] = the value of plane P that decides (of patch 0), at true scale: times a
- * positive float per plane, which keeps its sign, zero or NaN. Inlined into lanes (d NULL)
- * and values. */
+ * one. Exact planes never contract products into FMAs (equal points give exact zeros);
+ * fused planes use explicit multiply-adds. With d, d[P * ds + l] = the value of plane P
+ * of patch l that decides, at true scale: times a positive float per plane, which keeps
+ * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_t stride, size_t n,
                                         const float eye[4], unsigned char *PTP_TRI4_RESTRICT cls,
-                                        float *PTP_TRI4_RESTRICT d)
+                                        float *PTP_TRI4_RESTRICT d, size_t ds)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -1128,7 +1162,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
         v = u;
         if (d)
-            d[0] = ptp_tri4_vfirst(v) * 16.0f;
+            ptp_tri4_vstoref(d + 0 * ds + l, v * 16.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
         const ptp_tri4_vf m1_4 = x1 * y4 - y1 * x4;
@@ -1139,7 +1173,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
         if (d)
-            d[1] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 1 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
         const ptp_tri4_vf m1_5 = x1 * y5 - y1 * x5;
@@ -1149,7 +1183,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = u;
         if (d)
-            d[2] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 2 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
         const ptp_tri4_vf m1_7 = x1 * y7 - y1 * x7;
@@ -1161,27 +1195,34 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         const ptp_tri4_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[3] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri4_vf m1_8 = x1 * y8 - y1 * x8;
-        const ptp_tri4_vf m0_8 = x0 * y8 - y0 * x8;
-        u = ((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
         const ptp_tri4_vf m2_7 = x2 * y7 - y2 * x7;
-        u -= ((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+        u = g0 * (m1_8 - m2_7);
+        const ptp_tri4_vf m0_8 = x0 * y8 - y0 * x8;
+        u = PTP_TRI4_VFMA(g1, -m0_8, u);
+        u = PTP_TRI4_VFMA(g2, m0_7, u);
+        u = PTP_TRI4_VFMA(g7, -m0_2, u);
+        u = PTP_TRI4_VFMA(g8, m0_1, u);
         v = 2.0f * u;
         const ptp_tri4_vf m3_5 = x3 * y5 - y3 * x5;
-        u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v += 3.0f * u;
-        u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v += 4.0f * u;
+        u = g0 * (m3_5);
+        u = PTP_TRI4_VFMA(g3, -m0_5, u);
+        u = PTP_TRI4_VFMA(g5, m0_3, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (-m2_4);
+        u = PTP_TRI4_VFMA(g2, m1_4, u);
+        u = PTP_TRI4_VFMA(g4, -m1_2, u);
+        v = PTP_TRI4_VFMAS(4.0f, u, v);
         if (d)
-            d[4] = ptp_tri4_vfirst(v) * 0.666666687f;
+            ptp_tri4_vstoref(d + 4 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_tri4_vf m1_9 = x1 * y9 - y1 * x9;
@@ -1192,12 +1233,12 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         const ptp_tri4_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[5] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 5 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_tri4_vf m1_11 = x1 * y11 - y1 * x11;
@@ -1209,60 +1250,84 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         const ptp_tri4_vf m1_6 = x1 * y6 - y1 * x6;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         const ptp_tri4_vf m3_7 = x3 * y7 - y3 * x7;
         u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         const ptp_tri4_vf m4_6 = x4 * y6 - y4 * x6;
         u -= ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
-        v += 9.0f * u;
+        v = PTP_TRI4_VFMAS(9.0f, u, v);
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v += 18.0f * u;
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[6] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 6 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_tri4_vf m1_12 = x1 * y12 - y1 * x12;
-        const ptp_tri4_vf m0_12 = x0 * y12 - y0 * x12;
-        u = ((g0 * m1_12 - g1 * m0_12) + g12 * m0_1);
         const ptp_tri4_vf m2_11 = x2 * y11 - y2 * x11;
-        u -= ((g0 * m2_11 - g2 * m0_11) + g11 * m0_2);
+        u = g0 * (m1_12 - m2_11);
+        const ptp_tri4_vf m0_12 = x0 * y12 - y0 * x12;
+        u = PTP_TRI4_VFMA(g1, -m0_12, u);
+        u = PTP_TRI4_VFMA(g2, m0_11, u);
+        u = PTP_TRI4_VFMA(g11, -m0_2, u);
+        u = PTP_TRI4_VFMA(g12, m0_1, u);
         v = u;
         const ptp_tri4_vf m4_7 = x4 * y7 - y4 * x7;
-        u = -((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         const ptp_tri4_vf m5_6 = x5 * y6 - y5 * x6;
-        u -= ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
-        v += 3.0f * u;
+        u = g0 * (-m4_7 - m5_6);
+        u = PTP_TRI4_VFMA(g4, m0_7, u);
+        u = PTP_TRI4_VFMA(g5, m0_6, u);
+        u = PTP_TRI4_VFMA(g6, -m0_5, u);
+        u = PTP_TRI4_VFMA(g7, -m0_4, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         const ptp_tri4_vf m3_8 = x3 * y8 - y3 * x8;
-        u = ((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
-        u += ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v += 6.0f * u;
-        u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
-        v += 8.0f * u;
+        u = g0 * (m3_8);
+        u = PTP_TRI4_VFMA(g1, m3_5, u);
+        u = PTP_TRI4_VFMA(g2, m3_4, u);
+        u = PTP_TRI4_VFMA(g3, -m1_5 - m2_4 - m0_8, u);
+        u = PTP_TRI4_VFMA(g4, m2_3, u);
+        u = PTP_TRI4_VFMA(g5, m1_3, u);
+        u = PTP_TRI4_VFMA(g8, m0_3, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (-m2_7);
+        u = PTP_TRI4_VFMA(g2, m1_7, u);
+        u = PTP_TRI4_VFMA(g7, -m1_2, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[7] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 7 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_tri4_vf m1_13 = x1 * y13 - y1 * x13;
-        const ptp_tri4_vf m0_13 = x0 * y13 - y0 * x13;
-        u = ((g0 * m1_13 - g1 * m0_13) + g13 * m0_1);
         const ptp_tri4_vf m2_12 = x2 * y12 - y2 * x12;
-        u -= ((g0 * m2_12 - g2 * m0_12) + g12 * m0_2);
+        u = g0 * (m1_13 - m2_12);
+        const ptp_tri4_vf m0_13 = x0 * y13 - y0 * x13;
+        u = PTP_TRI4_VFMA(g1, -m0_13, u);
+        u = PTP_TRI4_VFMA(g2, m0_12, u);
+        u = PTP_TRI4_VFMA(g12, -m0_2, u);
+        u = PTP_TRI4_VFMA(g13, m0_1, u);
         v = u;
         const ptp_tri4_vf m3_9 = x3 * y9 - y3 * x9;
-        u = ((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
         const ptp_tri4_vf m4_8 = x4 * y8 - y4 * x8;
-        u += ((g0 * m4_8 - g4 * m0_8) + g8 * m0_4);
-        v += 3.0f * u;
+        u = g0 * (m3_9 + m4_8);
+        u = PTP_TRI4_VFMA(g3, -m0_9, u);
+        u = PTP_TRI4_VFMA(g4, -m0_8, u);
+        u = PTP_TRI4_VFMA(g8, m0_4, u);
+        u = PTP_TRI4_VFMA(g9, m0_3, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         const ptp_tri4_vf m5_7 = x5 * y7 - y5 * x7;
-        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        u += ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v += 6.0f * u;
-        u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
-        v += 8.0f * u;
+        u = g0 * (-m5_7);
+        u = PTP_TRI4_VFMA(g1, m4_5, u);
+        u = PTP_TRI4_VFMA(g2, m3_5, u);
+        u = PTP_TRI4_VFMA(g3, -m2_5, u);
+        u = PTP_TRI4_VFMA(g4, -m1_5, u);
+        u = PTP_TRI4_VFMA(g5, m1_4 + m2_3 + m0_7, u);
+        u = PTP_TRI4_VFMA(g7, -m0_5, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (-m2_8);
+        u = PTP_TRI4_VFMA(g2, m1_8, u);
+        u = PTP_TRI4_VFMA(g8, -m1_2, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[8] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 8 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_tri4_vf m1_14 = x1 * y14 - y1 * x14;
@@ -1273,16 +1338,16 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         const ptp_tri4_vf m2_9 = x2 * y9 - y2 * x9;
         u = -((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         const ptp_tri4_vf m4_9 = x4 * y9 - y4 * x9;
         u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
         const ptp_tri4_vf m5_8 = x5 * y8 - y5 * x8;
         u -= ((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
-        v += 9.0f * u;
+        v = PTP_TRI4_VFMAS(9.0f, u, v);
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v += 18.0f * u;
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[9] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 9 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_tri4_vf m3_11 = x3 * y11 - y3 * x11;
@@ -1294,87 +1359,133 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         const ptp_tri4_vf m3_6 = x3 * y6 - y3 * x6;
         u = ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v += 6.0f * u;
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
         u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[10] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 10 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri4_vf m5_10 = x5 * y10 - y5 * x10;
-        u = -((g0 * m5_10 - g5 * m0_10) + g10 * m0_5);
+        u = g0 * (-m5_10);
+        u = PTP_TRI4_VFMA(g5, m0_10, u);
+        u = PTP_TRI4_VFMA(g10, -m0_5, u);
         v = u;
         const ptp_tri4_vf m4_11 = x4 * y11 - y4 * x11;
-        u = -((g0 * m4_11 - g4 * m0_11) + g11 * m0_4);
-        v += 2.0f * u;
+        u = g0 * (-m4_11);
+        u = PTP_TRI4_VFMA(g4, m0_11, u);
+        u = PTP_TRI4_VFMA(g11, -m0_4, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m3_12 = x3 * y12 - y3 * x12;
-        u = ((g0 * m3_12 - g3 * m0_12) + g12 * m0_3);
-        v += 3.0f * u;
-        u = -((g1 * m2_11 - g2 * m1_11) + g11 * m1_2);
-        u -= ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
-        v += 4.0f * u;
+        u = g0 * (m3_12);
+        u = PTP_TRI4_VFMA(g3, -m0_12, u);
+        u = PTP_TRI4_VFMA(g12, m0_3, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (-m2_11);
+        u = PTP_TRI4_VFMA(g2, m1_11 - m4_6, u);
+        u = PTP_TRI4_VFMA(g4, m2_6, u);
+        u = PTP_TRI4_VFMA(g6, -m2_4, u);
+        u = PTP_TRI4_VFMA(g11, -m1_2, u);
+        v = PTP_TRI4_VFMAS(4.0f, u, v);
         const ptp_tri4_vf m6_8 = x6 * y8 - y6 * x8;
-        u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
-        v += 6.0f * u;
-        u = -((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v += 8.0f * u;
-        u = ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
-        u -= ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v += 12.0f * u;
+        u = g0 * (m6_8);
+        u = PTP_TRI4_VFMA(g6, -m0_8, u);
+        u = PTP_TRI4_VFMA(g8, m0_6, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (-m5_6);
+        u = PTP_TRI4_VFMA(g5, m1_6, u);
+        u = PTP_TRI4_VFMA(g6, -m1_5, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g1 * (m3_8 - m4_7);
+        u = PTP_TRI4_VFMA(g2, m3_7, u);
+        u = PTP_TRI4_VFMA(g3, -m1_8 - m2_7, u);
+        u = PTP_TRI4_VFMA(g4, m1_7, u);
+        u = PTP_TRI4_VFMA(g7, m2_3 - m1_4, u);
+        u = PTP_TRI4_VFMA(g8, m1_3, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[11] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 11 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_tri4_vf m3_13 = x3 * y13 - y3 * x13;
-        u = ((g0 * m3_13 - g3 * m0_13) + g13 * m0_3);
         const ptp_tri4_vf m5_11 = x5 * y11 - y5 * x11;
-        u -= ((g0 * m5_11 - g5 * m0_11) + g11 * m0_5);
         const ptp_tri4_vf m6_9 = x6 * y9 - y6 * x9;
-        u += ((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
+        u = g0 * (m3_13 + m6_9 - m5_11);
+        u = PTP_TRI4_VFMA(g3, -m0_13, u);
+        u = PTP_TRI4_VFMA(g5, m0_11, u);
+        u = PTP_TRI4_VFMA(g6, -m0_9, u);
+        u = PTP_TRI4_VFMA(g9, m0_6, u);
+        u = PTP_TRI4_VFMA(g11, -m0_5, u);
+        u = PTP_TRI4_VFMA(g13, m0_3, u);
         v = u;
-        u = -((g1 * m2_12 - g2 * m1_12) + g12 * m1_2);
-        u += ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
-        u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v += 2.0f * u;
+        u = g1 * (m3_9 - m2_12);
+        u = PTP_TRI4_VFMA(g2, m1_12 - m5_6, u);
+        u = PTP_TRI4_VFMA(g3, -m1_9, u);
+        u = PTP_TRI4_VFMA(g5, m2_6, u);
+        u = PTP_TRI4_VFMA(g6, -m2_5, u);
+        u = PTP_TRI4_VFMA(g9, m1_3, u);
+        u = PTP_TRI4_VFMA(g12, -m1_2, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m7_8 = x7 * y8 - y7 * x8;
-        u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
-        v += 3.0f * u;
-        u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
-        v += 6.0f * u;
+        u = g0 * (m7_8);
+        u = PTP_TRI4_VFMA(g7, -m0_8, u);
+        u = PTP_TRI4_VFMA(g8, m0_7, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (-m5_7);
+        u = PTP_TRI4_VFMA(g2, m3_8, u);
+        u = PTP_TRI4_VFMA(g3, -m2_8, u);
+        u = PTP_TRI4_VFMA(g5, m1_7, u);
+        u = PTP_TRI4_VFMA(g7, -m1_5, u);
+        u = PTP_TRI4_VFMA(g8, m2_3, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
         if (d)
-            d[12] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 12 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
         const ptp_tri4_vf m3_14 = x3 * y14 - y3 * x14;
-        u = ((g0 * m3_14 - g3 * m0_14) + g14 * m0_3);
+        u = g0 * (m3_14);
+        u = PTP_TRI4_VFMA(g3, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_3, u);
         v = u;
         const ptp_tri4_vf m4_13 = x4 * y13 - y4 * x13;
-        u = ((g0 * m4_13 - g4 * m0_13) + g13 * m0_4);
-        v += 2.0f * u;
+        u = g0 * (m4_13);
+        u = PTP_TRI4_VFMA(g4, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_4, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m5_12 = x5 * y12 - y5 * x12;
-        u = -((g0 * m5_12 - g5 * m0_12) + g12 * m0_5);
-        v += 3.0f * u;
-        u = -((g1 * m2_13 - g2 * m1_13) + g13 * m1_2);
-        u += ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
-        v += 4.0f * u;
+        u = g0 * (-m5_12);
+        u = PTP_TRI4_VFMA(g5, m0_12, u);
+        u = PTP_TRI4_VFMA(g12, -m0_5, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (m4_9 - m2_13);
+        u = PTP_TRI4_VFMA(g2, m1_13, u);
+        u = PTP_TRI4_VFMA(g4, -m1_9, u);
+        u = PTP_TRI4_VFMA(g9, m1_4, u);
+        u = PTP_TRI4_VFMA(g13, -m1_2, u);
+        v = PTP_TRI4_VFMAS(4.0f, u, v);
         const ptp_tri4_vf m7_9 = x7 * y9 - y7 * x9;
-        u = ((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
-        v += 6.0f * u;
-        u = ((g2 * m3_9 - g3 * m2_9) + g9 * m2_3);
-        v += 8.0f * u;
-        u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
-        u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
-        u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v += 12.0f * u;
+        u = g0 * (m7_9);
+        u = PTP_TRI4_VFMA(g7, -m0_9, u);
+        u = PTP_TRI4_VFMA(g9, m0_7, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g2 * (m3_9);
+        u = PTP_TRI4_VFMA(g3, -m2_9, u);
+        u = PTP_TRI4_VFMA(g9, m2_3, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g1 * (-m5_8);
+        u = PTP_TRI4_VFMA(g2, m4_8 - m5_7, u);
+        u = PTP_TRI4_VFMA(g4, -m2_8, u);
+        u = PTP_TRI4_VFMA(g5, m1_8 + m2_7, u);
+        u = PTP_TRI4_VFMA(g7, -m2_5, u);
+        u = PTP_TRI4_VFMA(g8, m2_4 - m1_5, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[13] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 13 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
         const ptp_tri4_vf m4_14 = x4 * y14 - y4 * x14;
@@ -1386,16 +1497,16 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         const ptp_tri4_vf m5_9 = x5 * y9 - y5 * x9;
         u = -((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m8_9 = x8 * y9 - y8 * x9;
         u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
-        v += 6.0f * u;
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[14] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 14 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_tri4_vf m6_11 = x6 * y11 - y6 * x11;
@@ -1406,136 +1517,232 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g2 * m3_10 - g3 * m2_10) + g10 * m2_3);
         v = u;
         u = ((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         u = -((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v += 6.0f * u;
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[15] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 15 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_tri4_vf m7_11 = x7 * y11 - y7 * x11;
-        u = -((g0 * m7_11 - g7 * m0_11) + g11 * m0_7);
-        u -= ((g2 * m4_10 - g4 * m2_10) + g10 * m2_4);
+        u = g0 * (-m7_11);
+        u = PTP_TRI4_VFMA(g2, -m4_10, u);
+        u = PTP_TRI4_VFMA(g4, m2_10, u);
+        u = PTP_TRI4_VFMA(g7, m0_11, u);
+        u = PTP_TRI4_VFMA(g10, -m2_4, u);
+        u = PTP_TRI4_VFMA(g11, -m0_7, u);
         v = u;
         const ptp_tri4_vf m8_10 = x8 * y10 - y8 * x10;
-        u = -((g0 * m8_10 - g8 * m0_10) + g10 * m0_8);
-        v += 2.0f * u;
+        u = g0 * (-m8_10);
+        u = PTP_TRI4_VFMA(g8, m0_10, u);
+        u = PTP_TRI4_VFMA(g10, -m0_8, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m6_12 = x6 * y12 - y6 * x12;
-        u = ((g0 * m6_12 - g6 * m0_12) + g12 * m0_6);
-        u -= ((g1 * m5_10 - g5 * m1_10) + g10 * m1_5);
-        v += 3.0f * u;
-        u = ((g1 * m3_12 - g3 * m1_12) + g12 * m1_3);
-        u += ((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
-        u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
-        v += 6.0f * u;
-        u = -((g1 * m4_11 - g4 * m1_11) + g11 * m1_4);
-        u += ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
-        v += 8.0f * u;
-        u = ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
-        v += 16.0f * u;
-        u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
-        v += 18.0f * u;
+        u = g0 * (m6_12);
+        u = PTP_TRI4_VFMA(g1, -m5_10, u);
+        u = PTP_TRI4_VFMA(g5, m1_10, u);
+        u = PTP_TRI4_VFMA(g6, -m0_12, u);
+        u = PTP_TRI4_VFMA(g10, -m1_5, u);
+        u = PTP_TRI4_VFMA(g12, m0_6, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (m3_12);
+        u = PTP_TRI4_VFMA(g2, m3_11, u);
+        u = PTP_TRI4_VFMA(g3, -m1_12 - m2_11 - m5_6, u);
+        u = PTP_TRI4_VFMA(g5, m3_6, u);
+        u = PTP_TRI4_VFMA(g6, -m3_5, u);
+        u = PTP_TRI4_VFMA(g11, m2_3, u);
+        u = PTP_TRI4_VFMA(g12, m1_3, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (-m4_11);
+        u = PTP_TRI4_VFMA(g2, m6_7, u);
+        u = PTP_TRI4_VFMA(g4, m1_11, u);
+        u = PTP_TRI4_VFMA(g6, -m2_7, u);
+        u = PTP_TRI4_VFMA(g7, m2_6, u);
+        u = PTP_TRI4_VFMA(g11, -m1_4, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g1 * (m6_8);
+        u = PTP_TRI4_VFMA(g6, -m1_8, u);
+        u = PTP_TRI4_VFMA(g8, m1_6, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g3 * (-m4_7);
+        u = PTP_TRI4_VFMA(g4, m3_7, u);
+        u = PTP_TRI4_VFMA(g7, -m3_4, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[16] = ptp_tri4_vfirst(v) * 0.0761904791f;
+            ptp_tri4_vstoref(d + 16 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_tri4_vf m9_10 = x9 * y10 - y9 * x10;
-        u = -((g0 * m9_10 - g9 * m0_10) + g10 * m0_9);
+        u = g0 * (-m9_10);
+        u = PTP_TRI4_VFMA(g9, m0_10, u);
+        u = PTP_TRI4_VFMA(g10, -m0_9, u);
         v = u;
-        u = -((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
-        v += 2.0f * u;
+        u = g2 * (-m5_10);
+        u = PTP_TRI4_VFMA(g5, m2_10, u);
+        u = PTP_TRI4_VFMA(g10, -m2_5, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m6_13 = x6 * y13 - y6 * x13;
-        u = ((g0 * m6_13 - g6 * m0_13) + g13 * m0_6);
         const ptp_tri4_vf m7_12 = x7 * y12 - y7 * x12;
-        u += ((g0 * m7_12 - g7 * m0_12) + g12 * m0_7);
-        v += 3.0f * u;
+        u = g0 * (m6_13 + m7_12);
+        u = PTP_TRI4_VFMA(g6, -m0_13, u);
+        u = PTP_TRI4_VFMA(g7, -m0_12, u);
+        u = PTP_TRI4_VFMA(g12, m0_7, u);
+        u = PTP_TRI4_VFMA(g13, m0_6, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         const ptp_tri4_vf m8_11 = x8 * y11 - y8 * x11;
-        u = -((g0 * m8_11 - g8 * m0_11) + g11 * m0_8);
-        v += 5.0f * u;
-        u = ((g1 * m3_13 - g3 * m1_13) + g13 * m1_3);
+        u = g0 * (-m8_11);
+        u = PTP_TRI4_VFMA(g8, m0_11, u);
+        u = PTP_TRI4_VFMA(g11, -m0_8, u);
+        v = PTP_TRI4_VFMAS(5.0f, u, v);
         const ptp_tri4_vf m4_12 = x4 * y12 - y4 * x12;
-        u -= ((g1 * m4_12 - g4 * m1_12) + g12 * m1_4);
-        u -= ((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
-        v += 6.0f * u;
-        u = ((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
-        v += 8.0f * u;
-        u = -((g1 * m5_11 - g5 * m1_11) + g11 * m1_5);
-        v += 10.0f * u;
-        u = ((g2 * m3_12 - g3 * m2_12) + g12 * m2_3);
-        v += 12.0f * u;
-        u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
-        v += 16.0f * u;
-        u = -((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
-        u -= ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
-        v += 18.0f * u;
-        u = ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
-        v += 24.0f * u;
+        u = g1 * (m3_13 - m4_12);
+        u = PTP_TRI4_VFMA(g3, -m1_13, u);
+        u = PTP_TRI4_VFMA(g4, m1_12 - m5_6, u);
+        u = PTP_TRI4_VFMA(g5, m4_6, u);
+        u = PTP_TRI4_VFMA(g6, -m4_5, u);
+        u = PTP_TRI4_VFMA(g12, -m1_4, u);
+        u = PTP_TRI4_VFMA(g13, m1_3, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (m6_9);
+        u = PTP_TRI4_VFMA(g6, -m1_9, u);
+        u = PTP_TRI4_VFMA(g9, m1_6, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g1 * (-m5_11);
+        u = PTP_TRI4_VFMA(g5, m1_11, u);
+        u = PTP_TRI4_VFMA(g11, -m1_5, u);
+        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = g2 * (m3_12);
+        u = PTP_TRI4_VFMA(g3, -m2_12, u);
+        u = PTP_TRI4_VFMA(g12, m2_3, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = g2 * (m6_8);
+        u = PTP_TRI4_VFMA(g6, -m2_8, u);
+        u = PTP_TRI4_VFMA(g8, m2_6, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g3 * (-m4_8 - m5_7);
+        u = PTP_TRI4_VFMA(g4, m3_8, u);
+        u = PTP_TRI4_VFMA(g5, m3_7, u);
+        u = PTP_TRI4_VFMA(g7, -m3_5, u);
+        u = PTP_TRI4_VFMA(g8, -m3_4, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        u = g1 * (m7_8);
+        u = PTP_TRI4_VFMA(g7, -m1_8, u);
+        u = PTP_TRI4_VFMA(g8, m1_7, u);
+        v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[17] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 17 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_tri4_vf m6_14 = x6 * y14 - y6 * x14;
-        u = ((g0 * m6_14 - g6 * m0_14) + g14 * m0_6);
+        u = g0 * (m6_14);
+        u = PTP_TRI4_VFMA(g6, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_6, u);
         v = u;
-        u = ((g1 * m3_14 - g3 * m1_14) + g14 * m1_3);
-        v += 2.0f * u;
+        u = g1 * (m3_14);
+        u = PTP_TRI4_VFMA(g3, -m1_14, u);
+        u = PTP_TRI4_VFMA(g14, m1_3, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m8_12 = x8 * y12 - y8 * x12;
-        u = -((g0 * m8_12 - g8 * m0_12) + g12 * m0_8);
         const ptp_tri4_vf m9_11 = x9 * y11 - y9 * x11;
-        u -= ((g0 * m9_11 - g9 * m0_11) + g11 * m0_9);
-        v += 3.0f * u;
+        u = g0 * (-m8_12 - m9_11);
+        u = PTP_TRI4_VFMA(g8, m0_12, u);
+        u = PTP_TRI4_VFMA(g9, m0_11, u);
+        u = PTP_TRI4_VFMA(g11, -m0_9, u);
+        u = PTP_TRI4_VFMA(g12, -m0_8, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         const ptp_tri4_vf m7_13 = x7 * y13 - y7 * x13;
-        u = ((g0 * m7_13 - g7 * m0_13) + g13 * m0_7);
-        v += 5.0f * u;
-        u = ((g2 * m4_12 - g4 * m2_12) + g12 * m2_4);
-        u -= ((g2 * m5_11 - g5 * m2_11) + g11 * m2_5);
-        u -= ((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
-        v += 6.0f * u;
-        u = ((g2 * m6_9 - g6 * m2_9) + g9 * m2_6);
-        v += 8.0f * u;
-        u = ((g2 * m3_13 - g3 * m2_13) + g13 * m2_3);
-        v += 10.0f * u;
-        u = -((g1 * m5_12 - g5 * m1_12) + g12 * m1_5);
-        v += 12.0f * u;
-        u = ((g1 * m7_9 - g7 * m1_9) + g9 * m1_7);
-        v += 16.0f * u;
-        u = -((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
-        u -= ((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
-        v += 18.0f * u;
-        u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
-        v += 24.0f * u;
+        u = g0 * (m7_13);
+        u = PTP_TRI4_VFMA(g7, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_7, u);
+        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        u = g2 * (m4_12 - m5_11);
+        u = PTP_TRI4_VFMA(g3, -m4_9, u);
+        u = PTP_TRI4_VFMA(g4, m3_9 - m2_12, u);
+        u = PTP_TRI4_VFMA(g5, m2_11, u);
+        u = PTP_TRI4_VFMA(g9, -m3_4, u);
+        u = PTP_TRI4_VFMA(g11, -m2_5, u);
+        u = PTP_TRI4_VFMA(g12, m2_4, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g2 * (m6_9);
+        u = PTP_TRI4_VFMA(g6, -m2_9, u);
+        u = PTP_TRI4_VFMA(g9, m2_6, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g2 * (m3_13);
+        u = PTP_TRI4_VFMA(g3, -m2_13, u);
+        u = PTP_TRI4_VFMA(g13, m2_3, u);
+        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = g1 * (-m5_12);
+        u = PTP_TRI4_VFMA(g5, m1_12, u);
+        u = PTP_TRI4_VFMA(g12, -m1_5, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = g1 * (m7_9);
+        u = PTP_TRI4_VFMA(g7, -m1_9, u);
+        u = PTP_TRI4_VFMA(g9, m1_7, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g3 * (-m5_8);
+        u = PTP_TRI4_VFMA(g4, -m5_7, u);
+        u = PTP_TRI4_VFMA(g5, m4_7 + m3_8, u);
+        u = PTP_TRI4_VFMA(g7, -m4_5, u);
+        u = PTP_TRI4_VFMA(g8, -m3_5, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        u = g2 * (m7_8);
+        u = PTP_TRI4_VFMA(g7, -m2_8, u);
+        u = PTP_TRI4_VFMA(g8, m2_7, u);
+        v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[18] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 18 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 18 */
         const ptp_tri4_vf m8_13 = x8 * y13 - y8 * x13;
-        u = ((g0 * m8_13 - g8 * m0_13) + g13 * m0_8);
-        u += ((g1 * m4_14 - g4 * m1_14) + g14 * m1_4);
+        u = g0 * (m8_13);
+        u = PTP_TRI4_VFMA(g1, m4_14, u);
+        u = PTP_TRI4_VFMA(g4, -m1_14, u);
+        u = PTP_TRI4_VFMA(g8, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_8, u);
+        u = PTP_TRI4_VFMA(g14, m1_4, u);
         v = u;
         const ptp_tri4_vf m7_14 = x7 * y14 - y7 * x14;
-        u = ((g0 * m7_14 - g7 * m0_14) + g14 * m0_7);
-        v += 2.0f * u;
+        u = g0 * (m7_14);
+        u = PTP_TRI4_VFMA(g7, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_7, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         const ptp_tri4_vf m9_12 = x9 * y12 - y9 * x12;
-        u = -((g0 * m9_12 - g9 * m0_12) + g12 * m0_9);
-        u += ((g2 * m3_14 - g3 * m2_14) + g14 * m2_3);
-        v += 3.0f * u;
-        u = -((g1 * m5_13 - g5 * m1_13) + g13 * m1_5);
-        u -= ((g2 * m5_12 - g5 * m2_12) + g12 * m2_5);
-        u -= ((g3 * m5_9 - g5 * m3_9) + g9 * m3_5);
-        v += 6.0f * u;
-        u = ((g1 * m8_9 - g8 * m1_9) + g9 * m1_8);
-        u += ((g2 * m4_13 - g4 * m2_13) + g13 * m2_4);
-        v += 8.0f * u;
-        u = ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
-        v += 16.0f * u;
-        u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
-        v += 18.0f * u;
+        u = g0 * (-m9_12);
+        u = PTP_TRI4_VFMA(g2, m3_14, u);
+        u = PTP_TRI4_VFMA(g3, -m2_14, u);
+        u = PTP_TRI4_VFMA(g9, m0_12, u);
+        u = PTP_TRI4_VFMA(g12, -m0_9, u);
+        u = PTP_TRI4_VFMA(g14, m2_3, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (-m5_13);
+        u = PTP_TRI4_VFMA(g2, -m5_12, u);
+        u = PTP_TRI4_VFMA(g3, -m5_9, u);
+        u = PTP_TRI4_VFMA(g5, m1_13 + m2_12 + m3_9, u);
+        u = PTP_TRI4_VFMA(g9, -m3_5, u);
+        u = PTP_TRI4_VFMA(g12, -m2_5, u);
+        u = PTP_TRI4_VFMA(g13, -m1_5, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (m8_9);
+        u = PTP_TRI4_VFMA(g2, m4_13, u);
+        u = PTP_TRI4_VFMA(g4, -m2_13, u);
+        u = PTP_TRI4_VFMA(g8, -m1_9, u);
+        u = PTP_TRI4_VFMA(g9, m1_8, u);
+        u = PTP_TRI4_VFMA(g13, m2_4, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g2 * (m7_9);
+        u = PTP_TRI4_VFMA(g7, -m2_9, u);
+        u = PTP_TRI4_VFMA(g9, m2_7, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g4 * (-m5_8);
+        u = PTP_TRI4_VFMA(g5, m4_8, u);
+        u = PTP_TRI4_VFMA(g8, -m4_5, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[19] = ptp_tri4_vfirst(v) * 0.0761904791f;
+            ptp_tri4_vstoref(d + 19 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 19 */
         const ptp_tri4_vf m8_14 = x8 * y14 - y8 * x14;
@@ -1546,15 +1753,15 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u -= ((g1 * m5_14 - g5 * m1_14) + g14 * m1_5);
         v = u;
         u = -((g2 * m5_13 - g5 * m2_13) + g13 * m2_5);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         u = ((g2 * m4_14 - g4 * m2_14) + g14 * m2_4);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
-        v += 6.0f * u;
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
         u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[20] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 20 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 20 */
         const ptp_tri4_vf m10_11 = x10 * y11 - y10 * x11;
@@ -1563,151 +1770,254 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g2 * m6_10 - g6 * m2_10) + g10 * m2_6);
         v = u;
         u = ((g1 * m6_11 - g6 * m1_11) + g11 * m1_6);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
         u -= ((g3 * m4_10 - g4 * m3_10) + g10 * m3_4);
-        v += 9.0f * u;
+        v = PTP_TRI4_VFMAS(9.0f, u, v);
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
-        v += 18.0f * u;
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[21] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 21 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 21 */
         const ptp_tri4_vf m10_12 = x10 * y12 - y10 * x12;
-        u = ((g0 * m10_12 - g10 * m0_12) + g12 * m0_10);
+        u = g0 * (m10_12);
+        u = PTP_TRI4_VFMA(g10, -m0_12, u);
+        u = PTP_TRI4_VFMA(g12, m0_10, u);
         v = u;
-        u = -((g2 * m7_10 - g7 * m2_10) + g10 * m2_7);
-        v += 2.0f * u;
-        u = -((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
-        v += 3.0f * u;
-        u = -((g1 * m7_11 - g7 * m1_11) + g11 * m1_7);
-        u += ((g2 * m6_11 - g6 * m2_11) + g11 * m2_6);
-        v += 4.0f * u;
-        u = -((g1 * m8_10 - g8 * m1_10) + g10 * m1_8);
-        v += 6.0f * u;
-        u = ((g1 * m6_12 - g6 * m1_12) + g12 * m1_6);
-        v += 8.0f * u;
-        u = -((g3 * m4_11 - g4 * m3_11) + g11 * m3_4);
-        u += ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
-        u += ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
-        v += 12.0f * u;
+        u = g2 * (-m7_10);
+        u = PTP_TRI4_VFMA(g7, m2_10, u);
+        u = PTP_TRI4_VFMA(g10, -m2_7, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g3 * (-m5_10);
+        u = PTP_TRI4_VFMA(g5, m3_10, u);
+        u = PTP_TRI4_VFMA(g10, -m3_5, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (-m7_11);
+        u = PTP_TRI4_VFMA(g2, m6_11, u);
+        u = PTP_TRI4_VFMA(g6, -m2_11, u);
+        u = PTP_TRI4_VFMA(g7, m1_11, u);
+        u = PTP_TRI4_VFMA(g11, m2_6 - m1_7, u);
+        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        u = g1 * (-m8_10);
+        u = PTP_TRI4_VFMA(g8, m1_10, u);
+        u = PTP_TRI4_VFMA(g10, -m1_8, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (m6_12);
+        u = PTP_TRI4_VFMA(g6, -m1_12, u);
+        u = PTP_TRI4_VFMA(g12, m1_6, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g3 * (m6_8 - m4_11);
+        u = PTP_TRI4_VFMA(g4, m3_11 + m6_7, u);
+        u = PTP_TRI4_VFMA(g6, -m4_7 - m3_8, u);
+        u = PTP_TRI4_VFMA(g7, m4_6, u);
+        u = PTP_TRI4_VFMA(g8, m3_6, u);
+        u = PTP_TRI4_VFMA(g11, -m3_4, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[22] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 22 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 22 */
         const ptp_tri4_vf m10_13 = x10 * y13 - y10 * x13;
-        u = ((g0 * m10_13 - g10 * m0_13) + g13 * m0_10);
+        u = g0 * (m10_13);
+        u = PTP_TRI4_VFMA(g10, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_10, u);
         v = u;
         const ptp_tri4_vf m11_12 = x11 * y12 - y11 * x12;
-        u = ((g0 * m11_12 - g11 * m0_12) + g12 * m0_11);
-        v += 2.0f * u;
-        u = -((g1 * m9_10 - g9 * m1_10) + g10 * m1_9);
-        u -= ((g4 * m5_10 - g5 * m4_10) + g10 * m4_5);
-        v += 3.0f * u;
-        u = -((g2 * m8_10 - g8 * m2_10) + g10 * m2_8);
-        v += 5.0f * u;
-        u = ((g1 * m7_12 - g7 * m1_12) + g12 * m1_7);
-        u += ((g3 * m6_9 - g6 * m3_9) + g9 * m3_6);
-        u += ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
-        v += 6.0f * u;
-        u = ((g1 * m6_13 - g6 * m1_13) + g13 * m1_6);
-        v += 8.0f * u;
-        u = ((g2 * m6_12 - g6 * m2_12) + g12 * m2_6);
-        v += 10.0f * u;
-        u = -((g3 * m5_11 - g5 * m3_11) + g11 * m3_5);
-        v += 12.0f * u;
-        u = -((g1 * m8_11 - g8 * m1_11) + g11 * m1_8);
-        v += 16.0f * u;
-        u = -((g3 * m4_12 - g4 * m3_12) + g12 * m3_4);
-        u += ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
-        v += 18.0f * u;
-        u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
-        v += 24.0f * u;
+        u = g0 * (m11_12);
+        u = PTP_TRI4_VFMA(g11, -m0_12, u);
+        u = PTP_TRI4_VFMA(g12, m0_11, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g1 * (-m9_10);
+        u = PTP_TRI4_VFMA(g4, -m5_10, u);
+        u = PTP_TRI4_VFMA(g5, m4_10, u);
+        u = PTP_TRI4_VFMA(g9, m1_10, u);
+        u = PTP_TRI4_VFMA(g10, -m1_9 - m4_5, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g2 * (-m8_10);
+        u = PTP_TRI4_VFMA(g8, m2_10, u);
+        u = PTP_TRI4_VFMA(g10, -m2_8, u);
+        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        u = g1 * (m7_12);
+        u = PTP_TRI4_VFMA(g3, m6_9, u);
+        u = PTP_TRI4_VFMA(g5, m6_7, u);
+        u = PTP_TRI4_VFMA(g6, -m3_9 - m5_7, u);
+        u = PTP_TRI4_VFMA(g7, m5_6 - m1_12, u);
+        u = PTP_TRI4_VFMA(g9, m3_6, u);
+        u = PTP_TRI4_VFMA(g12, m1_7, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (m6_13);
+        u = PTP_TRI4_VFMA(g6, -m1_13, u);
+        u = PTP_TRI4_VFMA(g13, m1_6, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g2 * (m6_12);
+        u = PTP_TRI4_VFMA(g6, -m2_12, u);
+        u = PTP_TRI4_VFMA(g12, m2_6, u);
+        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = g3 * (-m5_11);
+        u = PTP_TRI4_VFMA(g5, m3_11, u);
+        u = PTP_TRI4_VFMA(g11, -m3_5, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = g1 * (-m8_11);
+        u = PTP_TRI4_VFMA(g8, m1_11, u);
+        u = PTP_TRI4_VFMA(g11, -m1_8, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g3 * (m7_8 - m4_12);
+        u = PTP_TRI4_VFMA(g4, m3_12, u);
+        u = PTP_TRI4_VFMA(g7, -m3_8, u);
+        u = PTP_TRI4_VFMA(g8, m3_7, u);
+        u = PTP_TRI4_VFMA(g12, -m3_4, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        u = g4 * (m6_8);
+        u = PTP_TRI4_VFMA(g6, -m4_8, u);
+        u = PTP_TRI4_VFMA(g8, m4_6, u);
+        v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[23] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 23 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
         const ptp_tri4_vf m10_14 = x10 * y14 - y10 * x14;
-        u = ((g0 * m10_14 - g10 * m0_14) + g14 * m0_10);
+        u = g0 * (m10_14);
+        u = PTP_TRI4_VFMA(g10, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_10, u);
         v = u;
         const ptp_tri4_vf m11_13 = x11 * y13 - y11 * x13;
-        u = ((g0 * m11_13 - g11 * m0_13) + g13 * m0_11);
-        u += ((g1 * m6_14 - g6 * m1_14) + g14 * m1_6);
-        u -= ((g2 * m9_10 - g9 * m2_10) + g10 * m2_9);
-        v += 8.0f * u;
-        u = -((g1 * m9_11 - g9 * m1_11) + g11 * m1_9);
-        u += ((g2 * m6_13 - g6 * m2_13) + g13 * m2_6);
-        v += 28.0f * u;
-        u = ((g1 * m7_13 - g7 * m1_13) + g13 * m1_7);
-        u -= ((g1 * m8_12 - g8 * m1_12) + g12 * m1_8);
-        u += ((g2 * m7_12 - g7 * m2_12) + g12 * m2_7);
-        u -= ((g2 * m8_11 - g8 * m2_11) + g11 * m2_8);
-        u -= ((g3 * m4_13 - g4 * m3_13) + g13 * m3_4);
-        u += ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
-        u -= ((g4 * m5_11 - g5 * m4_11) + g11 * m4_5);
-        u += ((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
-        u += ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
-        v += 36.0f * u;
-        u = -((g3 * m5_12 - g5 * m3_12) + g12 * m3_5);
-        v += 54.0f * u;
-        u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
-        v += 108.0f * u;
+        u = g0 * (m11_13);
+        u = PTP_TRI4_VFMA(g1, m6_14, u);
+        u = PTP_TRI4_VFMA(g2, -m9_10, u);
+        u = PTP_TRI4_VFMA(g6, -m1_14, u);
+        u = PTP_TRI4_VFMA(g9, m2_10, u);
+        u = PTP_TRI4_VFMA(g10, -m2_9, u);
+        u = PTP_TRI4_VFMA(g11, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_11, u);
+        u = PTP_TRI4_VFMA(g14, m1_6, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g1 * (-m9_11);
+        u = PTP_TRI4_VFMA(g2, m6_13, u);
+        u = PTP_TRI4_VFMA(g6, -m2_13, u);
+        u = PTP_TRI4_VFMA(g9, m1_11, u);
+        u = PTP_TRI4_VFMA(g11, -m1_9, u);
+        u = PTP_TRI4_VFMA(g13, m2_6, u);
+        v = PTP_TRI4_VFMAS(28.0f, u, v);
+        u = g1 * (m7_13 - m8_12);
+        u = PTP_TRI4_VFMA(g2, m7_12 - m8_11, u);
+        u = PTP_TRI4_VFMA(g3, m7_9 - m4_13, u);
+        u = PTP_TRI4_VFMA(g4, m3_13 + m6_9 - m5_11, u);
+        u = PTP_TRI4_VFMA(g5, m4_11 + m6_8, u);
+        u = PTP_TRI4_VFMA(g6, -m4_9 - m5_8, u);
+        u = PTP_TRI4_VFMA(g7, -m1_13 - m2_12 - m3_9, u);
+        u = PTP_TRI4_VFMA(g8, m1_12 + m2_11 + m5_6, u);
+        u = PTP_TRI4_VFMA(g9, m3_7 + m4_6, u);
+        u = PTP_TRI4_VFMA(g11, -m2_8 - m4_5, u);
+        u = PTP_TRI4_VFMA(g12, m2_7 - m1_8, u);
+        u = PTP_TRI4_VFMA(g13, m1_7 - m3_4, u);
+        v = PTP_TRI4_VFMAS(36.0f, u, v);
+        u = g3 * (-m5_12);
+        u = PTP_TRI4_VFMA(g5, m3_12, u);
+        u = PTP_TRI4_VFMA(g12, -m3_5, u);
+        v = PTP_TRI4_VFMAS(54.0f, u, v);
+        u = g4 * (m7_8);
+        u = PTP_TRI4_VFMA(g7, -m4_8, u);
+        u = PTP_TRI4_VFMA(g8, m4_7, u);
+        v = PTP_TRI4_VFMAS(108.0f, u, v);
         if (d)
-            d[24] = ptp_tri4_vfirst(v) * 0.00952380989f;
+            ptp_tri4_vstoref(d + 24 * ds + l, v * 0.00952380989f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
         const ptp_tri4_vf m11_14 = x11 * y14 - y11 * x14;
-        u = ((g0 * m11_14 - g11 * m0_14) + g14 * m0_11);
+        u = g0 * (m11_14);
+        u = PTP_TRI4_VFMA(g11, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_11, u);
         v = u;
         const ptp_tri4_vf m12_13 = x12 * y13 - y12 * x13;
-        u = ((g0 * m12_13 - g12 * m0_13) + g13 * m0_12);
-        v += 2.0f * u;
-        u = ((g2 * m6_14 - g6 * m2_14) + g14 * m2_6);
-        u -= ((g3 * m4_14 - g4 * m3_14) + g14 * m3_4);
-        v += 3.0f * u;
-        u = ((g1 * m7_14 - g7 * m1_14) + g14 * m1_7);
-        v += 5.0f * u;
-        u = -((g2 * m8_12 - g8 * m2_12) + g12 * m2_8);
-        u += ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
-        u += ((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
-        v += 6.0f * u;
-        u = -((g2 * m9_11 - g9 * m2_11) + g11 * m2_9);
-        v += 8.0f * u;
-        u = -((g1 * m9_12 - g9 * m1_12) + g12 * m1_9);
-        v += 10.0f * u;
-        u = -((g3 * m5_13 - g5 * m3_13) + g13 * m3_5);
-        v += 12.0f * u;
-        u = ((g2 * m7_13 - g7 * m2_13) + g13 * m2_7);
-        v += 16.0f * u;
-        u = -((g4 * m5_12 - g5 * m4_12) + g12 * m4_5);
-        u += ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
-        v += 18.0f * u;
-        u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
-        v += 24.0f * u;
+        u = g0 * (m12_13);
+        u = PTP_TRI4_VFMA(g12, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_12, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g2 * (m6_14);
+        u = PTP_TRI4_VFMA(g3, -m4_14, u);
+        u = PTP_TRI4_VFMA(g4, m3_14, u);
+        u = PTP_TRI4_VFMA(g6, -m2_14, u);
+        u = PTP_TRI4_VFMA(g14, m2_6 - m3_4, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (m7_14);
+        u = PTP_TRI4_VFMA(g7, -m1_14, u);
+        u = PTP_TRI4_VFMA(g14, m1_7, u);
+        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        u = g2 * (-m8_12);
+        u = PTP_TRI4_VFMA(g3, m8_9, u);
+        u = PTP_TRI4_VFMA(g5, m6_9, u);
+        u = PTP_TRI4_VFMA(g6, -m5_9, u);
+        u = PTP_TRI4_VFMA(g8, m2_12 - m3_9, u);
+        u = PTP_TRI4_VFMA(g9, m5_6 + m3_8, u);
+        u = PTP_TRI4_VFMA(g12, -m2_8, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g2 * (-m9_11);
+        u = PTP_TRI4_VFMA(g9, m2_11, u);
+        u = PTP_TRI4_VFMA(g11, -m2_9, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g1 * (-m9_12);
+        u = PTP_TRI4_VFMA(g9, m1_12, u);
+        u = PTP_TRI4_VFMA(g12, -m1_9, u);
+        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = g3 * (-m5_13);
+        u = PTP_TRI4_VFMA(g5, m3_13, u);
+        u = PTP_TRI4_VFMA(g13, -m3_5, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = g2 * (m7_13);
+        u = PTP_TRI4_VFMA(g7, -m2_13, u);
+        u = PTP_TRI4_VFMA(g13, m2_7, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g4 * (-m5_12);
+        u = PTP_TRI4_VFMA(g5, m7_8 + m4_12, u);
+        u = PTP_TRI4_VFMA(g7, -m5_8, u);
+        u = PTP_TRI4_VFMA(g8, m5_7, u);
+        u = PTP_TRI4_VFMA(g12, -m4_5, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        u = g4 * (m7_9);
+        u = PTP_TRI4_VFMA(g7, -m4_9, u);
+        u = PTP_TRI4_VFMA(g9, m4_7, u);
+        v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[25] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 25 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_tri4_vf m12_14 = x12 * y14 - y12 * x14;
-        u = ((g0 * m12_14 - g12 * m0_14) + g14 * m0_12);
+        u = g0 * (m12_14);
+        u = PTP_TRI4_VFMA(g12, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_12, u);
         v = u;
-        u = ((g1 * m8_14 - g8 * m1_14) + g14 * m1_8);
-        v += 2.0f * u;
-        u = -((g3 * m5_14 - g5 * m3_14) + g14 * m3_5);
-        v += 3.0f * u;
-        u = -((g1 * m9_13 - g9 * m1_13) + g13 * m1_9);
-        u += ((g2 * m8_13 - g8 * m2_13) + g13 * m2_8);
-        v += 4.0f * u;
-        u = ((g2 * m7_14 - g7 * m2_14) + g14 * m2_7);
-        v += 6.0f * u;
-        u = -((g2 * m9_12 - g9 * m2_12) + g12 * m2_9);
-        v += 8.0f * u;
-        u = -((g4 * m5_13 - g5 * m4_13) + g13 * m4_5);
-        u += ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
-        u += ((g5 * m7_9 - g7 * m5_9) + g9 * m5_7);
-        v += 12.0f * u;
+        u = g1 * (m8_14);
+        u = PTP_TRI4_VFMA(g8, -m1_14, u);
+        u = PTP_TRI4_VFMA(g14, m1_8, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g3 * (-m5_14);
+        u = PTP_TRI4_VFMA(g5, m3_14, u);
+        u = PTP_TRI4_VFMA(g14, -m3_5, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (-m9_13);
+        u = PTP_TRI4_VFMA(g2, m8_13, u);
+        u = PTP_TRI4_VFMA(g8, -m2_13, u);
+        u = PTP_TRI4_VFMA(g9, m1_13, u);
+        u = PTP_TRI4_VFMA(g13, m2_8 - m1_9, u);
+        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        u = g2 * (m7_14);
+        u = PTP_TRI4_VFMA(g7, -m2_14, u);
+        u = PTP_TRI4_VFMA(g14, m2_7, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g2 * (-m9_12);
+        u = PTP_TRI4_VFMA(g9, m2_12, u);
+        u = PTP_TRI4_VFMA(g12, -m2_9, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g4 * (m8_9 - m5_13);
+        u = PTP_TRI4_VFMA(g5, m4_13 + m7_9, u);
+        u = PTP_TRI4_VFMA(g7, -m5_9, u);
+        u = PTP_TRI4_VFMA(g8, -m4_9, u);
+        u = PTP_TRI4_VFMA(g9, m4_8 + m5_7, u);
+        u = PTP_TRI4_VFMA(g13, -m4_5, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[26] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 26 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         const ptp_tri4_vf m13_14 = x13 * y14 - y13 * x14;
@@ -1716,333 +2026,529 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u -= ((g1 * m9_14 - g9 * m1_14) + g14 * m1_9);
         v = u;
         u = -((g2 * m9_13 - g9 * m2_13) + g13 * m2_9);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         u = ((g2 * m8_14 - g8 * m2_14) + g14 * m2_8);
         u -= ((g4 * m5_14 - g5 * m4_14) + g14 * m4_5);
-        v += 9.0f * u;
+        v = PTP_TRI4_VFMAS(9.0f, u, v);
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
-        v += 18.0f * u;
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[27] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 27 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
         u = ((g1 * m10_11 - g10 * m1_11) + g11 * m1_10);
         u += ((g4 * m6_10 - g6 * m4_10) + g10 * m4_6);
         v = u;
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         u = -((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[28] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 28 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 28 */
-        u = ((g2 * m10_11 - g10 * m2_11) + g11 * m2_10);
-        u += ((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
+        u = g2 * (m10_11);
+        u = PTP_TRI4_VFMA(g5, m6_10, u);
+        u = PTP_TRI4_VFMA(g6, -m5_10, u);
+        u = PTP_TRI4_VFMA(g10, m5_6 - m2_11, u);
+        u = PTP_TRI4_VFMA(g11, m2_10, u);
         v = u;
-        u = ((g1 * m10_12 - g10 * m1_12) + g12 * m1_10);
-        u -= ((g4 * m7_10 - g7 * m4_10) + g10 * m4_7);
-        v += 3.0f * u;
-        u = ((g3 * m6_12 - g6 * m3_12) + g12 * m3_6);
-        u -= ((g3 * m7_11 - g7 * m3_11) + g11 * m3_7);
-        u -= ((g3 * m8_10 - g8 * m3_10) + g10 * m3_8);
-        v += 6.0f * u;
-        u = ((g4 * m6_11 - g6 * m4_11) + g11 * m4_6);
-        v += 8.0f * u;
+        u = g1 * (m10_12);
+        u = PTP_TRI4_VFMA(g4, -m7_10, u);
+        u = PTP_TRI4_VFMA(g7, m4_10, u);
+        u = PTP_TRI4_VFMA(g10, -m1_12 - m4_7, u);
+        u = PTP_TRI4_VFMA(g12, m1_10, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g3 * (m6_12 - m7_11 - m8_10);
+        u = PTP_TRI4_VFMA(g6, -m3_12, u);
+        u = PTP_TRI4_VFMA(g7, m3_11, u);
+        u = PTP_TRI4_VFMA(g8, m3_10, u);
+        u = PTP_TRI4_VFMA(g10, -m3_8, u);
+        u = PTP_TRI4_VFMA(g11, -m3_7, u);
+        u = PTP_TRI4_VFMA(g12, m3_6, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g4 * (m6_11);
+        u = PTP_TRI4_VFMA(g6, -m4_11, u);
+        u = PTP_TRI4_VFMA(g11, m4_6, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[29] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 29 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
-        u = ((g1 * m10_13 - g10 * m1_13) + g13 * m1_10);
-        u += ((g2 * m10_12 - g10 * m2_12) + g12 * m2_10);
-        u -= ((g3 * m9_10 - g9 * m3_10) + g10 * m3_9);
+        u = g1 * (m10_13);
+        u = PTP_TRI4_VFMA(g2, m10_12, u);
+        u = PTP_TRI4_VFMA(g3, -m9_10, u);
+        u = PTP_TRI4_VFMA(g9, m3_10, u);
+        u = PTP_TRI4_VFMA(g10, -m1_13 - m2_12 - m3_9, u);
+        u = PTP_TRI4_VFMA(g12, m2_10, u);
+        u = PTP_TRI4_VFMA(g13, m1_10, u);
         v = u;
-        u = ((g1 * m11_12 - g11 * m1_12) + g12 * m1_11);
-        u += ((g3 * m6_13 - g6 * m3_13) + g13 * m3_6);
-        u += ((g5 * m6_11 - g6 * m5_11) + g11 * m5_6);
-        v += 2.0f * u;
-        u = -((g4 * m8_10 - g8 * m4_10) + g10 * m4_8);
-        v += 3.0f * u;
-        u = -((g3 * m8_11 - g8 * m3_11) + g11 * m3_8);
-        u += ((g4 * m6_12 - g6 * m4_12) + g12 * m4_6);
-        v += 6.0f * u;
+        u = g1 * (m11_12);
+        u = PTP_TRI4_VFMA(g3, m6_13, u);
+        u = PTP_TRI4_VFMA(g5, m6_11, u);
+        u = PTP_TRI4_VFMA(g6, -m3_13 - m5_11, u);
+        u = PTP_TRI4_VFMA(g11, m5_6 - m1_12, u);
+        u = PTP_TRI4_VFMA(g12, m1_11, u);
+        u = PTP_TRI4_VFMA(g13, m3_6, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g4 * (-m8_10);
+        u = PTP_TRI4_VFMA(g8, m4_10, u);
+        u = PTP_TRI4_VFMA(g10, -m4_8, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g3 * (-m8_11);
+        u = PTP_TRI4_VFMA(g4, m6_12, u);
+        u = PTP_TRI4_VFMA(g6, -m4_12, u);
+        u = PTP_TRI4_VFMA(g8, m3_11, u);
+        u = PTP_TRI4_VFMA(g11, -m3_8, u);
+        u = PTP_TRI4_VFMA(g12, m4_6, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
         if (d)
-            d[30] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 30 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
-        u = ((g1 * m10_14 - g10 * m1_14) + g14 * m1_10);
+        u = g1 * (m10_14);
+        u = PTP_TRI4_VFMA(g10, -m1_14, u);
+        u = PTP_TRI4_VFMA(g14, m1_10, u);
         v = u;
-        u = ((g3 * m6_14 - g6 * m3_14) + g14 * m3_6);
-        v += 2.0f * u;
-        u = ((g2 * m10_13 - g10 * m2_13) + g13 * m2_10);
-        u -= ((g5 * m8_10 - g8 * m5_10) + g10 * m5_8);
-        v += 3.0f * u;
-        u = -((g4 * m9_10 - g9 * m4_10) + g10 * m4_9);
-        v += 5.0f * u;
-        u = ((g2 * m11_12 - g11 * m2_12) + g12 * m2_11);
-        u += ((g3 * m7_13 - g7 * m3_13) + g13 * m3_7);
-        u += ((g5 * m7_11 - g7 * m5_11) + g11 * m5_7);
-        v += 6.0f * u;
-        u = ((g1 * m11_13 - g11 * m1_13) + g13 * m1_11);
-        v += 8.0f * u;
-        u = -((g3 * m9_11 - g9 * m3_11) + g11 * m3_9);
-        v += 10.0f * u;
-        u = ((g5 * m6_12 - g6 * m5_12) + g12 * m5_6);
-        v += 12.0f * u;
-        u = ((g4 * m6_13 - g6 * m4_13) + g13 * m4_6);
-        v += 16.0f * u;
-        u = -((g3 * m8_12 - g8 * m3_12) + g12 * m3_8);
-        u += ((g4 * m7_12 - g7 * m4_12) + g12 * m4_7);
-        v += 18.0f * u;
-        u = -((g4 * m8_11 - g8 * m4_11) + g11 * m4_8);
-        v += 24.0f * u;
+        u = g3 * (m6_14);
+        u = PTP_TRI4_VFMA(g6, -m3_14, u);
+        u = PTP_TRI4_VFMA(g14, m3_6, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g2 * (m10_13);
+        u = PTP_TRI4_VFMA(g5, -m8_10, u);
+        u = PTP_TRI4_VFMA(g8, m5_10, u);
+        u = PTP_TRI4_VFMA(g10, -m2_13 - m5_8, u);
+        u = PTP_TRI4_VFMA(g13, m2_10, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g4 * (-m9_10);
+        u = PTP_TRI4_VFMA(g9, m4_10, u);
+        u = PTP_TRI4_VFMA(g10, -m4_9, u);
+        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        u = g2 * (m11_12);
+        u = PTP_TRI4_VFMA(g3, m7_13, u);
+        u = PTP_TRI4_VFMA(g5, m7_11, u);
+        u = PTP_TRI4_VFMA(g7, -m3_13 - m5_11, u);
+        u = PTP_TRI4_VFMA(g11, m5_7 - m2_12, u);
+        u = PTP_TRI4_VFMA(g12, m2_11, u);
+        u = PTP_TRI4_VFMA(g13, m3_7, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (m11_13);
+        u = PTP_TRI4_VFMA(g11, -m1_13, u);
+        u = PTP_TRI4_VFMA(g13, m1_11, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g3 * (-m9_11);
+        u = PTP_TRI4_VFMA(g9, m3_11, u);
+        u = PTP_TRI4_VFMA(g11, -m3_9, u);
+        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = g5 * (m6_12);
+        u = PTP_TRI4_VFMA(g6, -m5_12, u);
+        u = PTP_TRI4_VFMA(g12, m5_6, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = g4 * (m6_13);
+        u = PTP_TRI4_VFMA(g6, -m4_13, u);
+        u = PTP_TRI4_VFMA(g13, m4_6, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g3 * (-m8_12);
+        u = PTP_TRI4_VFMA(g4, m7_12, u);
+        u = PTP_TRI4_VFMA(g7, -m4_12, u);
+        u = PTP_TRI4_VFMA(g8, m3_12, u);
+        u = PTP_TRI4_VFMA(g12, m4_7 - m3_8, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        u = g4 * (-m8_11);
+        u = PTP_TRI4_VFMA(g8, m4_11, u);
+        u = PTP_TRI4_VFMA(g11, -m4_8, u);
+        v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[31] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 31 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
-        u = ((g2 * m10_14 - g10 * m2_14) + g14 * m2_10);
+        u = g2 * (m10_14);
+        u = PTP_TRI4_VFMA(g10, -m2_14, u);
+        u = PTP_TRI4_VFMA(g14, m2_10, u);
         v = u;
-        u = -((g5 * m9_10 - g9 * m5_10) + g10 * m5_9);
-        v += 2.0f * u;
-        u = ((g1 * m11_14 - g11 * m1_14) + g14 * m1_11);
-        u += ((g3 * m7_14 - g7 * m3_14) + g14 * m3_7);
-        v += 3.0f * u;
-        u = ((g4 * m6_14 - g6 * m4_14) + g14 * m4_6);
-        v += 5.0f * u;
-        u = ((g1 * m12_13 - g12 * m1_13) + g13 * m1_12);
-        u -= ((g3 * m8_13 - g8 * m3_13) + g13 * m3_8);
-        u -= ((g5 * m8_11 - g8 * m5_11) + g11 * m5_8);
-        v += 6.0f * u;
-        u = ((g2 * m11_13 - g11 * m2_13) + g13 * m2_11);
-        v += 8.0f * u;
-        u = ((g5 * m6_13 - g6 * m5_13) + g13 * m5_6);
-        v += 10.0f * u;
-        u = -((g3 * m9_12 - g9 * m3_12) + g12 * m3_9);
-        v += 12.0f * u;
-        u = -((g4 * m9_11 - g9 * m4_11) + g11 * m4_9);
-        v += 16.0f * u;
-        u = -((g4 * m8_12 - g8 * m4_12) + g12 * m4_8);
-        u += ((g5 * m7_12 - g7 * m5_12) + g12 * m5_7);
-        v += 18.0f * u;
-        u = ((g4 * m7_13 - g7 * m4_13) + g13 * m4_7);
-        v += 24.0f * u;
+        u = g5 * (-m9_10);
+        u = PTP_TRI4_VFMA(g9, m5_10, u);
+        u = PTP_TRI4_VFMA(g10, -m5_9, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g1 * (m11_14);
+        u = PTP_TRI4_VFMA(g3, m7_14, u);
+        u = PTP_TRI4_VFMA(g7, -m3_14, u);
+        u = PTP_TRI4_VFMA(g11, -m1_14, u);
+        u = PTP_TRI4_VFMA(g14, m1_11 + m3_7, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g4 * (m6_14);
+        u = PTP_TRI4_VFMA(g6, -m4_14, u);
+        u = PTP_TRI4_VFMA(g14, m4_6, u);
+        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        u = g1 * (m12_13);
+        u = PTP_TRI4_VFMA(g3, -m8_13, u);
+        u = PTP_TRI4_VFMA(g5, -m8_11, u);
+        u = PTP_TRI4_VFMA(g8, m3_13 + m5_11, u);
+        u = PTP_TRI4_VFMA(g11, -m5_8, u);
+        u = PTP_TRI4_VFMA(g12, -m1_13, u);
+        u = PTP_TRI4_VFMA(g13, m1_12 - m3_8, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g2 * (m11_13);
+        u = PTP_TRI4_VFMA(g11, -m2_13, u);
+        u = PTP_TRI4_VFMA(g13, m2_11, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g5 * (m6_13);
+        u = PTP_TRI4_VFMA(g6, -m5_13, u);
+        u = PTP_TRI4_VFMA(g13, m5_6, u);
+        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = g3 * (-m9_12);
+        u = PTP_TRI4_VFMA(g9, m3_12, u);
+        u = PTP_TRI4_VFMA(g12, -m3_9, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = g4 * (-m9_11);
+        u = PTP_TRI4_VFMA(g9, m4_11, u);
+        u = PTP_TRI4_VFMA(g11, -m4_9, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g4 * (-m8_12);
+        u = PTP_TRI4_VFMA(g5, m7_12, u);
+        u = PTP_TRI4_VFMA(g7, -m5_12, u);
+        u = PTP_TRI4_VFMA(g8, m4_12, u);
+        u = PTP_TRI4_VFMA(g12, m5_7 - m4_8, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        u = g4 * (m7_13);
+        u = PTP_TRI4_VFMA(g7, -m4_13, u);
+        u = PTP_TRI4_VFMA(g13, m4_7, u);
+        v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
-            d[32] = ptp_tri4_vfirst(v) * 0.0380952395f;
+            ptp_tri4_vstoref(d + 32 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
-        u = ((g1 * m12_14 - g12 * m1_14) + g14 * m1_12);
-        u += ((g2 * m11_14 - g11 * m2_14) + g14 * m2_11);
-        u += ((g5 * m6_14 - g6 * m5_14) + g14 * m5_6);
+        u = g1 * (m12_14);
+        u = PTP_TRI4_VFMA(g2, m11_14, u);
+        u = PTP_TRI4_VFMA(g5, m6_14, u);
+        u = PTP_TRI4_VFMA(g6, -m5_14, u);
+        u = PTP_TRI4_VFMA(g11, -m2_14, u);
+        u = PTP_TRI4_VFMA(g12, -m1_14, u);
+        u = PTP_TRI4_VFMA(g14, m1_12 + m2_11 + m5_6, u);
         v = u;
-        u = ((g2 * m12_13 - g12 * m2_13) + g13 * m2_12);
-        u -= ((g3 * m9_13 - g9 * m3_13) + g13 * m3_9);
-        u -= ((g5 * m9_11 - g9 * m5_11) + g11 * m5_9);
-        v += 2.0f * u;
-        u = ((g4 * m7_14 - g7 * m4_14) + g14 * m4_7);
-        v += 3.0f * u;
-        u = -((g4 * m9_12 - g9 * m4_12) + g12 * m4_9);
-        u += ((g5 * m7_13 - g7 * m5_13) + g13 * m5_7);
-        v += 6.0f * u;
+        u = g2 * (m12_13);
+        u = PTP_TRI4_VFMA(g3, -m9_13, u);
+        u = PTP_TRI4_VFMA(g5, -m9_11, u);
+        u = PTP_TRI4_VFMA(g9, m3_13 + m5_11, u);
+        u = PTP_TRI4_VFMA(g11, -m5_9, u);
+        u = PTP_TRI4_VFMA(g12, -m2_13, u);
+        u = PTP_TRI4_VFMA(g13, m2_12 - m3_9, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g4 * (m7_14);
+        u = PTP_TRI4_VFMA(g7, -m4_14, u);
+        u = PTP_TRI4_VFMA(g14, m4_7, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g4 * (-m9_12);
+        u = PTP_TRI4_VFMA(g5, m7_13, u);
+        u = PTP_TRI4_VFMA(g7, -m5_13, u);
+        u = PTP_TRI4_VFMA(g9, m4_12, u);
+        u = PTP_TRI4_VFMA(g12, -m4_9, u);
+        u = PTP_TRI4_VFMA(g13, m5_7, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
         if (d)
-            d[33] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 33 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
-        u = ((g1 * m13_14 - g13 * m1_14) + g14 * m1_13);
-        u -= ((g3 * m9_14 - g9 * m3_14) + g14 * m3_9);
+        u = g1 * (m13_14);
+        u = PTP_TRI4_VFMA(g3, -m9_14, u);
+        u = PTP_TRI4_VFMA(g9, m3_14, u);
+        u = PTP_TRI4_VFMA(g13, -m1_14, u);
+        u = PTP_TRI4_VFMA(g14, m1_13 - m3_9, u);
         v = u;
-        u = ((g2 * m12_14 - g12 * m2_14) + g14 * m2_12);
-        u += ((g4 * m8_14 - g8 * m4_14) + g14 * m4_8);
-        v += 3.0f * u;
-        u = ((g5 * m7_14 - g7 * m5_14) + g14 * m5_7);
-        u += ((g5 * m8_13 - g8 * m5_13) + g13 * m5_8);
-        u -= ((g5 * m9_12 - g9 * m5_12) + g12 * m5_9);
-        v += 6.0f * u;
-        u = -((g4 * m9_13 - g9 * m4_13) + g13 * m4_9);
-        v += 8.0f * u;
+        u = g2 * (m12_14);
+        u = PTP_TRI4_VFMA(g4, m8_14, u);
+        u = PTP_TRI4_VFMA(g8, -m4_14, u);
+        u = PTP_TRI4_VFMA(g12, -m2_14, u);
+        u = PTP_TRI4_VFMA(g14, m2_12 + m4_8, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g5 * (m8_13 + m7_14 - m9_12);
+        u = PTP_TRI4_VFMA(g7, -m5_14, u);
+        u = PTP_TRI4_VFMA(g8, -m5_13, u);
+        u = PTP_TRI4_VFMA(g9, m5_12, u);
+        u = PTP_TRI4_VFMA(g12, -m5_9, u);
+        u = PTP_TRI4_VFMA(g13, m5_8, u);
+        u = PTP_TRI4_VFMA(g14, m5_7, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g4 * (-m9_13);
+        u = PTP_TRI4_VFMA(g9, m4_13, u);
+        u = PTP_TRI4_VFMA(g13, -m4_9, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[34] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 34 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 34 */
         u = ((g2 * m13_14 - g13 * m2_14) + g14 * m2_13);
         u -= ((g4 * m9_14 - g9 * m4_14) + g14 * m4_9);
         v = u;
         u = -((g5 * m9_13 - g9 * m5_13) + g13 * m5_9);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         u = ((g5 * m8_14 - g8 * m5_14) + g14 * m5_8);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[35] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 35 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 35 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         u -= ((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
         v = u;
         if (d)
-            d[36] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 36 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 36 */
-        u = ((g4 * m10_11 - g10 * m4_11) + g11 * m4_10);
-        u -= ((g6 * m8_10 - g8 * m6_10) + g10 * m6_8);
+        u = g4 * (m10_11);
+        u = PTP_TRI4_VFMA(g6, -m8_10, u);
+        u = PTP_TRI4_VFMA(g8, m6_10, u);
+        u = PTP_TRI4_VFMA(g10, -m4_11 - m6_8, u);
+        u = PTP_TRI4_VFMA(g11, m4_10, u);
         v = 2.0f * u;
-        u = ((g3 * m10_12 - g10 * m3_12) + g12 * m3_10);
-        v += 3.0f * u;
-        u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
-        v += 4.0f * u;
+        u = g3 * (m10_12);
+        u = PTP_TRI4_VFMA(g10, -m3_12, u);
+        u = PTP_TRI4_VFMA(g12, m3_10, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g6 * (-m7_11);
+        u = PTP_TRI4_VFMA(g7, m6_11, u);
+        u = PTP_TRI4_VFMA(g11, -m6_7, u);
+        v = PTP_TRI4_VFMAS(4.0f, u, v);
         if (d)
-            d[37] = ptp_tri4_vfirst(v) * 0.666666687f;
+            ptp_tri4_vstoref(d + 37 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
-        u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
-        u -= ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
+        u = g5 * (m10_11);
+        u = PTP_TRI4_VFMA(g6, -m9_10, u);
+        u = PTP_TRI4_VFMA(g9, m6_10, u);
+        u = PTP_TRI4_VFMA(g10, -m5_11 - m6_9, u);
+        u = PTP_TRI4_VFMA(g11, m5_10, u);
         v = u;
-        u = ((g3 * m10_13 - g10 * m3_13) + g13 * m3_10);
-        u -= ((g7 * m8_10 - g8 * m7_10) + g10 * m7_8);
-        v += 3.0f * u;
-        u = ((g3 * m11_12 - g11 * m3_12) + g12 * m3_11);
-        u += ((g4 * m10_12 - g10 * m4_12) + g12 * m4_10);
-        u -= ((g6 * m7_12 - g7 * m6_12) + g12 * m6_7);
-        v += 6.0f * u;
-        u = -((g6 * m8_11 - g8 * m6_11) + g11 * m6_8);
-        v += 8.0f * u;
+        u = g3 * (m10_13);
+        u = PTP_TRI4_VFMA(g7, -m8_10, u);
+        u = PTP_TRI4_VFMA(g8, m7_10, u);
+        u = PTP_TRI4_VFMA(g10, -m3_13 - m7_8, u);
+        u = PTP_TRI4_VFMA(g13, m3_10, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g3 * (m11_12);
+        u = PTP_TRI4_VFMA(g4, m10_12, u);
+        u = PTP_TRI4_VFMA(g6, -m7_12, u);
+        u = PTP_TRI4_VFMA(g7, m6_12, u);
+        u = PTP_TRI4_VFMA(g10, -m4_12, u);
+        u = PTP_TRI4_VFMA(g11, -m3_12, u);
+        u = PTP_TRI4_VFMA(g12, m3_11 + m4_10 - m6_7, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g6 * (-m8_11);
+        u = PTP_TRI4_VFMA(g8, m6_11, u);
+        u = PTP_TRI4_VFMA(g11, -m6_8, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[38] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 38 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 38 */
-        u = ((g3 * m10_14 - g10 * m3_14) + g14 * m3_10);
+        u = g3 * (m10_14);
+        u = PTP_TRI4_VFMA(g10, -m3_14, u);
+        u = PTP_TRI4_VFMA(g14, m3_10, u);
         v = u;
-        u = -((g7 * m9_10 - g9 * m7_10) + g10 * m7_9);
-        v += 2.0f * u;
-        u = ((g5 * m10_12 - g10 * m5_12) + g12 * m5_10);
-        v += 3.0f * u;
-        u = -((g6 * m7_13 - g7 * m6_13) + g13 * m6_7);
-        u -= ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
-        v += 4.0f * u;
-        u = ((g4 * m10_13 - g10 * m4_13) + g13 * m4_10);
-        v += 6.0f * u;
-        u = ((g3 * m11_13 - g11 * m3_13) + g13 * m3_11);
-        v += 8.0f * u;
-        u = ((g4 * m11_12 - g11 * m4_12) + g12 * m4_11);
-        u -= ((g6 * m8_12 - g8 * m6_12) + g12 * m6_8);
-        u -= ((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
-        v += 12.0f * u;
+        u = g7 * (-m9_10);
+        u = PTP_TRI4_VFMA(g9, m7_10, u);
+        u = PTP_TRI4_VFMA(g10, -m7_9, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g5 * (m10_12);
+        u = PTP_TRI4_VFMA(g10, -m5_12, u);
+        u = PTP_TRI4_VFMA(g12, m5_10, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g6 * (-m9_11 - m7_13);
+        u = PTP_TRI4_VFMA(g7, m6_13, u);
+        u = PTP_TRI4_VFMA(g9, m6_11, u);
+        u = PTP_TRI4_VFMA(g11, -m6_9, u);
+        u = PTP_TRI4_VFMA(g13, -m6_7, u);
+        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        u = g4 * (m10_13);
+        u = PTP_TRI4_VFMA(g10, -m4_13, u);
+        u = PTP_TRI4_VFMA(g13, m4_10, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g3 * (m11_13);
+        u = PTP_TRI4_VFMA(g11, -m3_13, u);
+        u = PTP_TRI4_VFMA(g13, m3_11, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g4 * (m11_12);
+        u = PTP_TRI4_VFMA(g6, -m8_12, u);
+        u = PTP_TRI4_VFMA(g7, -m8_11, u);
+        u = PTP_TRI4_VFMA(g8, m7_11 + m6_12, u);
+        u = PTP_TRI4_VFMA(g11, -m7_8 - m4_12, u);
+        u = PTP_TRI4_VFMA(g12, m4_11 - m6_8, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[39] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 39 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
-        u = -((g6 * m7_14 - g7 * m6_14) + g14 * m6_7);
-        u -= ((g8 * m9_10 - g9 * m8_10) + g10 * m8_9);
+        u = g6 * (-m7_14);
+        u = PTP_TRI4_VFMA(g7, m6_14, u);
+        u = PTP_TRI4_VFMA(g8, -m9_10, u);
+        u = PTP_TRI4_VFMA(g9, m8_10, u);
+        u = PTP_TRI4_VFMA(g10, -m8_9, u);
+        u = PTP_TRI4_VFMA(g14, -m6_7, u);
         v = u;
-        u = ((g4 * m10_14 - g10 * m4_14) + g14 * m4_10);
-        v += 2.0f * u;
-        u = ((g3 * m11_14 - g11 * m3_14) + g14 * m3_11);
-        u += ((g5 * m10_13 - g10 * m5_13) + g13 * m5_10);
-        v += 3.0f * u;
-        u = ((g3 * m12_13 - g12 * m3_13) + g13 * m3_12);
-        u += ((g5 * m11_12 - g11 * m5_12) + g12 * m5_11);
-        u -= ((g6 * m9_12 - g9 * m6_12) + g12 * m6_9);
-        v += 6.0f * u;
-        u = -((g6 * m8_13 - g8 * m6_13) + g13 * m6_8);
-        u -= ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
-        v += 8.0f * u;
-        u = ((g4 * m11_13 - g11 * m4_13) + g13 * m4_11);
-        v += 16.0f * u;
-        u = -((g7 * m8_12 - g8 * m7_12) + g12 * m7_8);
-        v += 18.0f * u;
+        u = g4 * (m10_14);
+        u = PTP_TRI4_VFMA(g10, -m4_14, u);
+        u = PTP_TRI4_VFMA(g14, m4_10, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g3 * (m11_14);
+        u = PTP_TRI4_VFMA(g5, m10_13, u);
+        u = PTP_TRI4_VFMA(g10, -m5_13, u);
+        u = PTP_TRI4_VFMA(g11, -m3_14, u);
+        u = PTP_TRI4_VFMA(g13, m5_10, u);
+        u = PTP_TRI4_VFMA(g14, m3_11, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g3 * (m12_13);
+        u = PTP_TRI4_VFMA(g5, m11_12, u);
+        u = PTP_TRI4_VFMA(g6, -m9_12, u);
+        u = PTP_TRI4_VFMA(g9, m6_12, u);
+        u = PTP_TRI4_VFMA(g11, -m5_12, u);
+        u = PTP_TRI4_VFMA(g12, m5_11 - m3_13 - m6_9, u);
+        u = PTP_TRI4_VFMA(g13, m3_12, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g6 * (-m8_13);
+        u = PTP_TRI4_VFMA(g7, -m9_11, u);
+        u = PTP_TRI4_VFMA(g8, m6_13, u);
+        u = PTP_TRI4_VFMA(g9, m7_11, u);
+        u = PTP_TRI4_VFMA(g11, -m7_9, u);
+        u = PTP_TRI4_VFMA(g13, -m6_8, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g4 * (m11_13);
+        u = PTP_TRI4_VFMA(g11, -m4_13, u);
+        u = PTP_TRI4_VFMA(g13, m4_11, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g7 * (-m8_12);
+        u = PTP_TRI4_VFMA(g8, m7_12, u);
+        u = PTP_TRI4_VFMA(g12, -m7_8, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[40] = ptp_tri4_vfirst(v) * 0.0761904791f;
+            ptp_tri4_vstoref(d + 40 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 40 */
-        u = ((g5 * m10_14 - g10 * m5_14) + g14 * m5_10);
+        u = g5 * (m10_14);
+        u = PTP_TRI4_VFMA(g10, -m5_14, u);
+        u = PTP_TRI4_VFMA(g14, m5_10, u);
         v = u;
-        u = -((g6 * m8_14 - g8 * m6_14) + g14 * m6_8);
-        v += 2.0f * u;
-        u = ((g3 * m12_14 - g12 * m3_14) + g14 * m3_12);
-        v += 3.0f * u;
-        u = -((g6 * m9_13 - g9 * m6_13) + g13 * m6_9);
-        u -= ((g8 * m9_11 - g9 * m8_11) + g11 * m8_9);
-        v += 4.0f * u;
-        u = ((g4 * m11_14 - g11 * m4_14) + g14 * m4_11);
-        v += 6.0f * u;
-        u = ((g5 * m11_13 - g11 * m5_13) + g13 * m5_11);
-        v += 8.0f * u;
-        u = ((g4 * m12_13 - g12 * m4_13) + g13 * m4_12);
-        u -= ((g7 * m8_13 - g8 * m7_13) + g13 * m7_8);
-        u -= ((g7 * m9_12 - g9 * m7_12) + g12 * m7_9);
-        v += 12.0f * u;
+        u = g6 * (-m8_14);
+        u = PTP_TRI4_VFMA(g8, m6_14, u);
+        u = PTP_TRI4_VFMA(g14, -m6_8, u);
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        u = g3 * (m12_14);
+        u = PTP_TRI4_VFMA(g12, -m3_14, u);
+        u = PTP_TRI4_VFMA(g14, m3_12, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g6 * (-m9_13);
+        u = PTP_TRI4_VFMA(g8, -m9_11, u);
+        u = PTP_TRI4_VFMA(g9, m6_13 + m8_11, u);
+        u = PTP_TRI4_VFMA(g11, -m8_9, u);
+        u = PTP_TRI4_VFMA(g13, -m6_9, u);
+        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        u = g4 * (m11_14);
+        u = PTP_TRI4_VFMA(g11, -m4_14, u);
+        u = PTP_TRI4_VFMA(g14, m4_11, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g5 * (m11_13);
+        u = PTP_TRI4_VFMA(g11, -m5_13, u);
+        u = PTP_TRI4_VFMA(g13, m5_11, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g4 * (m12_13);
+        u = PTP_TRI4_VFMA(g7, -m8_13 - m9_12, u);
+        u = PTP_TRI4_VFMA(g8, m7_13, u);
+        u = PTP_TRI4_VFMA(g9, m7_12, u);
+        u = PTP_TRI4_VFMA(g12, -m4_13 - m7_9, u);
+        u = PTP_TRI4_VFMA(g13, m4_12 - m7_8, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
         if (d)
-            d[41] = ptp_tri4_vfirst(v) * 0.095238097f;
+            ptp_tri4_vstoref(d + 41 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 41 */
-        u = ((g3 * m13_14 - g13 * m3_14) + g14 * m3_13);
-        u -= ((g6 * m9_14 - g9 * m6_14) + g14 * m6_9);
+        u = g3 * (m13_14);
+        u = PTP_TRI4_VFMA(g6, -m9_14, u);
+        u = PTP_TRI4_VFMA(g9, m6_14, u);
+        u = PTP_TRI4_VFMA(g13, -m3_14, u);
+        u = PTP_TRI4_VFMA(g14, m3_13 - m6_9, u);
         v = u;
-        u = ((g5 * m11_14 - g11 * m5_14) + g14 * m5_11);
-        u -= ((g7 * m8_14 - g8 * m7_14) + g14 * m7_8);
-        v += 3.0f * u;
-        u = ((g4 * m12_14 - g12 * m4_14) + g14 * m4_12);
-        u += ((g5 * m12_13 - g12 * m5_13) + g13 * m5_12);
-        u -= ((g8 * m9_12 - g9 * m8_12) + g12 * m8_9);
-        v += 6.0f * u;
-        u = -((g7 * m9_13 - g9 * m7_13) + g13 * m7_9);
-        v += 8.0f * u;
+        u = g5 * (m11_14);
+        u = PTP_TRI4_VFMA(g7, -m8_14, u);
+        u = PTP_TRI4_VFMA(g8, m7_14, u);
+        u = PTP_TRI4_VFMA(g11, -m5_14, u);
+        u = PTP_TRI4_VFMA(g14, m5_11 - m7_8, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g4 * (m12_14);
+        u = PTP_TRI4_VFMA(g5, m12_13, u);
+        u = PTP_TRI4_VFMA(g8, -m9_12, u);
+        u = PTP_TRI4_VFMA(g9, m8_12, u);
+        u = PTP_TRI4_VFMA(g12, -m4_14 - m5_13 - m8_9, u);
+        u = PTP_TRI4_VFMA(g13, m5_12, u);
+        u = PTP_TRI4_VFMA(g14, m4_12, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g7 * (-m9_13);
+        u = PTP_TRI4_VFMA(g9, m7_13, u);
+        u = PTP_TRI4_VFMA(g13, -m7_9, u);
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[42] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 42 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 42 */
-        u = ((g4 * m13_14 - g13 * m4_14) + g14 * m4_13);
-        u -= ((g7 * m9_14 - g9 * m7_14) + g14 * m7_9);
+        u = g4 * (m13_14);
+        u = PTP_TRI4_VFMA(g7, -m9_14, u);
+        u = PTP_TRI4_VFMA(g9, m7_14, u);
+        u = PTP_TRI4_VFMA(g13, -m4_14, u);
+        u = PTP_TRI4_VFMA(g14, m4_13 - m7_9, u);
         v = 2.0f * u;
-        u = ((g5 * m12_14 - g12 * m5_14) + g14 * m5_12);
-        v += 3.0f * u;
-        u = -((g8 * m9_13 - g9 * m8_13) + g13 * m8_9);
-        v += 4.0f * u;
+        u = g5 * (m12_14);
+        u = PTP_TRI4_VFMA(g12, -m5_14, u);
+        u = PTP_TRI4_VFMA(g14, m5_12, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g8 * (-m9_13);
+        u = PTP_TRI4_VFMA(g9, m8_13, u);
+        u = PTP_TRI4_VFMA(g13, -m8_9, u);
+        v = PTP_TRI4_VFMAS(4.0f, u, v);
         if (d)
-            d[43] = ptp_tri4_vfirst(v) * 0.666666687f;
+            ptp_tri4_vstoref(d + 43 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 43 */
         u = ((g5 * m13_14 - g13 * m5_14) + g14 * m5_13);
         u -= ((g8 * m9_14 - g9 * m8_14) + g14 * m8_9);
         v = u;
         if (d)
-            d[44] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 44 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 44 */
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v = u;
         if (d)
-            d[45] = ptp_tri4_vfirst(v) * 16.0f;
+            ptp_tri4_vstoref(d + 45 * ds + l, v * 16.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 45 */
         u = ((g6 * m10_12 - g10 * m6_12) + g12 * m6_10);
         u += ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = u;
         if (d)
-            d[46] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 46 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 46 */
         u = ((g6 * m10_13 - g10 * m6_13) + g13 * m6_10);
         u += ((g8 * m10_11 - g10 * m8_11) + g11 * m8_10);
         v = u;
         u = ((g6 * m11_12 - g11 * m6_12) + g12 * m6_11);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         u = ((g7 * m10_12 - g10 * m7_12) + g12 * m7_10);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[47] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 47 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 47 */
         u = ((g6 * m10_14 - g10 * m6_14) + g14 * m6_10);
         u += ((g9 * m10_11 - g10 * m9_11) + g11 * m9_10);
         v = u;
         u = ((g6 * m11_13 - g11 * m6_13) + g13 * m6_11);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         u = ((g7 * m10_13 - g10 * m7_13) + g13 * m7_10);
         u += ((g8 * m10_12 - g10 * m8_12) + g12 * m8_10);
-        v += 9.0f * u;
+        v = PTP_TRI4_VFMAS(9.0f, u, v);
         u = ((g7 * m11_12 - g11 * m7_12) + g12 * m7_11);
-        v += 18.0f * u;
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[48] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 48 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 48 */
         u = ((g6 * m11_14 - g11 * m6_14) + g14 * m6_11);
@@ -2050,15 +2556,15 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g9 * m10_12 - g10 * m9_12) + g12 * m9_10);
         v = u;
         u = ((g6 * m12_13 - g12 * m6_13) + g13 * m6_12);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         u = ((g8 * m10_13 - g10 * m8_13) + g13 * m8_10);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         u = ((g8 * m11_12 - g11 * m8_12) + g12 * m8_11);
-        v += 6.0f * u;
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
         u = ((g7 * m11_13 - g11 * m7_13) + g13 * m7_11);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[49] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 49 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 49 */
         u = ((g6 * m12_14 - g12 * m6_14) + g14 * m6_12);
@@ -2066,53 +2572,53 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g9 * m10_13 - g10 * m9_13) + g13 * m9_10);
         v = u;
         u = ((g9 * m11_12 - g11 * m9_12) + g12 * m9_11);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         u = ((g7 * m11_14 - g11 * m7_14) + g14 * m7_11);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         u = ((g7 * m12_13 - g12 * m7_13) + g13 * m7_12);
-        v += 6.0f * u;
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
         u = ((g8 * m11_13 - g11 * m8_13) + g13 * m8_11);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         if (d)
-            d[50] = ptp_tri4_vfirst(v) * 0.380952388f;
+            ptp_tri4_vstoref(d + 50 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 50 */
         u = ((g6 * m13_14 - g13 * m6_14) + g14 * m6_13);
         u += ((g9 * m10_14 - g10 * m9_14) + g14 * m9_10);
         v = u;
         u = ((g9 * m11_13 - g11 * m9_13) + g13 * m9_11);
-        v += 8.0f * u;
+        v = PTP_TRI4_VFMAS(8.0f, u, v);
         u = ((g7 * m12_14 - g12 * m7_14) + g14 * m7_12);
         u += ((g8 * m11_14 - g11 * m8_14) + g14 * m8_11);
-        v += 9.0f * u;
+        v = PTP_TRI4_VFMAS(9.0f, u, v);
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
-        v += 18.0f * u;
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            d[51] = ptp_tri4_vfirst(v) * 0.190476194f;
+            ptp_tri4_vstoref(d + 51 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 51 */
         u = ((g7 * m13_14 - g13 * m7_14) + g14 * m7_13);
         u += ((g9 * m11_14 - g11 * m9_14) + g14 * m9_11);
         v = u;
         u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
-        v += 2.0f * u;
+        v = PTP_TRI4_VFMAS(2.0f, u, v);
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
-        v += 3.0f * u;
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
-            d[52] = ptp_tri4_vfirst(v) * 1.33333337f;
+            ptp_tri4_vstoref(d + 52 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 52 */
         u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
         u += ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
         v = u;
         if (d)
-            d[53] = ptp_tri4_vfirst(v) * 5.33333349f;
+            ptp_tri4_vstoref(d + 53 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 53 */
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v = u;
         if (d)
-            d[54] = ptp_tri4_vfirst(v) * 16.0f;
+            ptp_tri4_vstoref(d + 54 * ds + l, v * 16.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 54 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
@@ -2132,13 +2638,13 @@ __attribute__((noinline))
 static void ptp_tri4_lanes(const float *PTP_TRI4_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                            unsigned char *PTP_TRI4_RESTRICT cls)
 {
-    ptp_tri4_lanes_body(soa, stride, n, eye, cls, NULL);
+    ptp_tri4_lanes_body(soa, stride, n, eye, cls, NULL, 0);
 }
 
 void ptp_tri4_values(const float cp[][4], const float eye[4], float d[])
 {
     unsigned char c;
-    ptp_tri4_lanes_body(cp[0], 1, 1, eye, &c, d); /* one patch is the SoA layout with stride 1 */
+    ptp_tri4_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options

@@ -16,8 +16,10 @@ extern "C" {
 #define {{UPREFIX}}FRONT 0u
 #define {{UPREFIX}}BACK 1u
 #define {{UPREFIX}}SILHOUETTE 2u
-/* Floating-point operations per patch of classify, classify_batch and classify_soa. */
+/* Floating-point operations per patch of classify, classify_batch and classify_soa (a
+ * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define {{UPREFIX}}FLOPS {{FLOPS}}
+#define {{UPREFIX}}MULS {{MULS}}
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef {{UPREFIX}}LANES
 #define {{UPREFIX}}LANES 16
@@ -106,11 +108,36 @@ static inline void {{PREFIX}}vstore(unsigned char *cls, {{PREFIX}}vm c, size_t c
     for (i = 0; i < count && i < {{UPREFIX}}VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* Lane 0 of v. */
-static inline float {{PREFIX}}vfirst({{PREFIX}}vf v)
+/* d[i] = v[i] for the first count (at most {{UPREFIX}}VW) lanes. */
+static inline void {{PREFIX}}vstoref(float *d, {{PREFIX}}vf v, size_t count)
 {
-    return v[0];
+    size_t i;
+    for (i = 0; i < count && i < {{UPREFIX}}VW; i++)
+        d[i] = v[i];
 }
+/* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
+ * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
+#if {{UPREFIX}}VW == 16
+#include <immintrin.h>
+#define {{UPREFIX}}VFMA(a, b, c) (({{PREFIX}}vf)_mm512_fmadd_ps((__m512)(a), (__m512)(b), (__m512)(c)))
+#define {{UPREFIX}}VFMAS(a, b, c) {{UPREFIX}}VFMA(_mm512_set1_ps(a), b, c)
+#elif {{UPREFIX}}VW == 8 && defined(__FMA__)
+#include <immintrin.h>
+#define {{UPREFIX}}VFMA(a, b, c) (({{PREFIX}}vf)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define {{UPREFIX}}VFMAS(a, b, c) {{UPREFIX}}VFMA(_mm256_set1_ps(a), b, c)
+#elif {{UPREFIX}}VW == 4 && defined(__FMA__)
+#include <immintrin.h>
+#define {{UPREFIX}}VFMA(a, b, c) (({{PREFIX}}vf)_mm_fmadd_ps((__m128)(a), (__m128)(b), (__m128)(c)))
+#define {{UPREFIX}}VFMAS(a, b, c) {{UPREFIX}}VFMA(_mm_set1_ps(a), b, c)
+#elif {{UPREFIX}}VW == 4 && defined(__ARM_FEATURE_FMA)
+#include <arm_neon.h>
+#define {{UPREFIX}}VFMA(a, b, c) (({{PREFIX}}vf)vfmaq_f32((float32x4_t)(c), (float32x4_t)(a), (float32x4_t)(b)))
+#define {{UPREFIX}}VFMAS(a, b, c) {{UPREFIX}}VFMA(vdupq_n_f32(a), b, c)
+#else
+#define {{UPREFIX}}VFMA(a, b, c) ((a) * (b) + (c))
+#define {{UPREFIX}}VFMAS(a, b, c) ((a) * (b) + (c))
+#endif
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline {{PREFIX}}vf {{PREFIX}}vabsmax({{PREFIX}}vf r, {{PREFIX}}vf x)
 {
@@ -134,10 +161,17 @@ static inline {{PREFIX}}vf {{PREFIX}}vabsmax({{PREFIX}}vf r, {{PREFIX}}vf x)
 {
     return {{UPREFIX}}ABSMAX(r, x);
 }
-static inline float {{PREFIX}}vfirst({{PREFIX}}vf v)
+static inline void {{PREFIX}}vstoref(float *d, {{PREFIX}}vf v, size_t count)
 {
-    return v;
+    (void)count;
+    *d = v;
 }
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
+#define {{UPREFIX}}VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define {{UPREFIX}}VFMA(a, b, c) ((a) * (b) + (c))
+#endif
+#define {{UPREFIX}}VFMAS {{UPREFIX}}VFMA
 #endif
 
 float {{PREFIX}}alpha(const float proj[16], int layout)
