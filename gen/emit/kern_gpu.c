@@ -640,10 +640,10 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
     }
     if (info->certified)
         sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * ER3 + %stau_f[plane] * F);\n", px, px, px);
-    if (second_look(info, g))
-        sbuf_printf(o, "        pf |= %sflags(d, 0.0f);\n", px);
     else
         sbuf_printf(o, "        f |= %sflags(d);\n", px);
+    if (second_look(info, g))
+        sbuf_printf(o, "        pf |= %sflags(d, 0.0f);\n", px);
     sbuf_puts(o, "    }\n");
 }
 
