@@ -23,4 +23,5 @@ const kern_target kern_opencl = {
         " * work-group (x, y) handles the patches of block y * num_groups(0) + x.\n",
     .fabs = "fabs", .fmax = "fmax",
     .vec2 = "float2", .vec2_make = "(float2)(%s, %s)",
+    .fma = "fma(%s, %s, %s)", /* correctly rounded: one rounding */
 };

@@ -90,6 +90,9 @@ struct kern_target {
      * constructor, a printf format of two floats; NULL: no second look (WGSL: the language
      * cannot forbid reassociating the error-free transformations). */
     const char *vec2, *vec2_make;
+    /* a fused multiply-add with one rounding, printf format of a, b, c for a * b + c (the second
+     * look's exact two-product), or NULL: Dekker's product on Veltkamp's split instead */
+    const char *fma;
 };
 
 /* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */

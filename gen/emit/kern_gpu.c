@@ -345,7 +345,7 @@ static void put_cross4(sbuf *o, const out_info *info, const kern_target *g)
 }
 
 /* Appends src with its shorthands expanded: $ is the prefix, {a*b} the target's product of the
- * operands a and b, {h;l} the double-float of the floats h and l. */
+ * operands a and b, {a*b+c} its fused multiply-add, {h;l} the double-float of the floats h, l. */
 static void put_df_text(sbuf *o, const out_info *info, const kern_target *g, const char *src)
 {
     while (*src) {
@@ -354,11 +354,13 @@ static void put_df_text(sbuf *o, const out_info *info, const kern_target *g, con
             sbuf_puts(o, info->prefix);
             src++;
         } else if (end) {
-            char a[64], b[64];
-            size_t n = strcspn(src + 1, "*;");
+            char a[64], b[64], c[64] = "";
+            size_t n = strcspn(src + 1, "*;"), m = strcspn(src + n + 2, "+}");
             snprintf(a, sizeof a, "%.*s", (int)n, src + 1);
-            snprintf(b, sizeof b, "%.*s", (int)(end - src - n - 2), src + n + 2);
-            sbuf_printf(o, src[1 + n] == '*' ? g->mul : g->vec2_make, a, b);
+            snprintf(b, sizeof b, "%.*s", (int)m, src + n + 2);
+            if (src[n + 2 + m] == '+')
+                snprintf(c, sizeof c, "%.*s", (int)(end - src - n - m - 3), src + n + m + 3);
+            sbuf_printf(o, *c ? g->fma : src[1 + n] == '*' ? g->mul : g->vec2_make, a, b, c);
             src = end + 1;
         } else {
             sbuf_printf(o, "%c", *src++);
@@ -371,30 +373,32 @@ static void put_df_text(sbuf *o, const out_info *info, const kern_target *g, con
  * returns, all in put_df_text's shorthand. Every local is exact (never contracted). */
 typedef struct {
     const char *name, *params[6], *locals[6], *ret;
+    int fma; /* 1: only for a target with a one-rounding FMA; -1: only without; 0: always */
 } df_helper;
 
-/* The double-float operations: error-free two-sum (Knuth), fast two-sum, Veltkamp's split and
- * Dekker's two-product (exact for 24-bit floats), and from them (Joldes, Muller and Popescu
+/* The double-float operations: error-free two-sum (Knuth), fast two-sum, the two-product (with a
+ * one-rounding FMA, or Dekker's on Veltkamp's split, exact for 24-bit floats), and from them (Joldes, Muller and Popescu
  * 2017) the pair times a float, times a pair, and the accurate sum; then 2x2 minors and cofactor
  * sums of the determinants. */
 static const df_helper df_helpers[] = {
-    {"df_two_sum", {"fa", "fb"}, {"fs=a + b", "fv=s - a", "fe=(a - (s - v)) + (b - v)"}, "{s;e}"},
-    {"df_fast_two_sum", {"fa", "fb"}, {"fs=a + b", "fe=b - (s - a)"}, "{s;e}"},
-    {"df_split", {"fa"}, {"fc={4097.0f*a}", "fh=c - (c - a)", "fl=a - h"}, "{h;l}"},
+    {"df_two_sum", {"fa", "fb"}, {"fs=a + b", "fv=s - a", "fe=(a - (s - v)) + (b - v)"}, "{s;e}", 0},
+    {"df_fast_two_sum", {"fa", "fb"}, {"fs=a + b", "fe=b - (s - a)"}, "{s;e}", 0},
+    {"df_split", {"fa"}, {"fc={4097.0f*a}", "fh=c - (c - a)", "fl=a - h"}, "{h;l}", -1},
     {"df_two_prod", {"fa", "fb"},
      {"vx=$df_split(a)", "vy=$df_split(b)", "fp={a*b}",
-      "fe=(({x.x*y.x} - p) + {x.x*y.y} + {x.y*y.x}) + {x.y*y.y}"}, "{p;e}"},
+      "fe=(({x.x*y.x} - p) + {x.x*y.y} + {x.y*y.x}) + {x.y*y.y}"}, "{p;e}", -1},
+    {"df_two_prod", {"fa", "fb"}, {"fp={a*b}", "fe={a*b+-p}"}, "{p;e}", 1},
     {"df_mul_f", {"vx", "fb"}, {"vc=$df_two_prod(x.x, b)", "fl=c.y + {x.y*b}"},
-     "$df_fast_two_sum(c.x, l)"},
+     "$df_fast_two_sum(c.x, l)", 0},
     {"df_mul", {"vx", "vy"}, {"vc=$df_two_prod(x.x, y.x)", "fl=c.y + ({x.x*y.y} + {x.y*y.x})"},
-     "$df_fast_two_sum(c.x, l)"},
+     "$df_fast_two_sum(c.x, l)", 0},
     {"df_add", {"vx", "vy"},
      {"vs=$df_two_sum(x.x, y.x)", "vt=$df_two_sum(x.y, y.y)", "fh=s.y + t.x",
-      "vv=$df_fast_two_sum(s.x, h)", "fl=v.y + t.y"}, "$df_fast_two_sum(v.x, l)"},
-    {"df_sub", {"vx", "vy"}, {NULL}, "$df_add(x, {-y.x;-y.y})"},
-    {"df_minor", {"fa", "fb", "fc", "fd"}, {NULL}, "$df_sub($df_two_prod(a, b), $df_two_prod(c, d))"},
+      "vv=$df_fast_two_sum(s.x, h)", "fl=v.y + t.y"}, "$df_fast_two_sum(v.x, l)", 0},
+    {"df_sub", {"vx", "vy"}, {NULL}, "$df_add(x, {-y.x;-y.y})", 0},
+    {"df_minor", {"fa", "fb", "fc", "fd"}, {NULL}, "$df_sub($df_two_prod(a, b), $df_two_prod(c, d))", 0},
     {"df_cof", {"vm0", "fa0", "vm1", "fa1", "vm2", "fa2"}, {NULL},
-     "$df_add($df_sub($df_mul_f(m0, a0), $df_mul_f(m1, a1)), $df_mul_f(m2, a2))"},
+     "$df_add($df_sub($df_mul_f(m0, a0), $df_mul_f(m1, a1)), $df_mul_f(m2, a2))", 0},
 };
 
 /* The type a df_helper's letter names. */
@@ -456,7 +460,8 @@ static void put_df_functions(sbuf *o, const out_info *info, const kern_target *g
     sbuf_puts(o, "/* Second look: double-float arithmetic (hi .x + lo .y) from error-free transformations\n"
                  " * with + - * only, none contracted into an FMA. */\n");
     for (c = 0; c < (int)(sizeof df_helpers / sizeof *df_helpers); c++)
-        put_df_helper(o, info, g, &df_helpers[c]);
+        if (df_helpers[c].fma != (g->fma ? -1 : 1))
+            put_df_helper(o, info, g, &df_helpers[c]);
     sbuf_printf(o, "/* %s, in double-float. */\n", world ? "e . cross4(a, b, c)" : "cross4z(a, b, c)");
     snprintf(name, sizeof name, "%sdf_%s", info->prefix, world ? "eye_cross4" : "cross4z");
     g->syntax->function(o, g, g->vec2, name, p, world ? 4 : 3);
