@@ -89,6 +89,7 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/test_refine.sh env PTPGEN=build/gcc/ptpgen bash tests/test_refine.sh
     run tests/test_mesh.sh env PTPGEN=build/gcc/ptpgen bash tests/test_mesh.sh
     run tests/test_kernels.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_kernels.sh
+    run tests/test_second_look.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_second_look.sh
 fi
 run tests/test_wgpu.sh env BUILD=build/gcc bash tests/test_wgpu.sh
 

@@ -442,8 +442,9 @@ done
 # under the strict rule ("unsafe"); the plain float kernel, on the first fifth of the same data,
 # must be unsafe somewhere, which shows that the data reach the rounding. Each certified kernel
 # also runs on random data, where its classes must be the double reference's or silhouette.
-# Every target's certified kernel sees 10^6 exact patches (lavapipe, at about 25 us a patch,
-# takes about 25 s for each of its four).
+# Every target's certified kernel sees 10^6 exact patches (lavapipe, at about 200 to 400 us a
+# patch since nearly every exact patch takes the GPU kernels' double-float second look, takes
+# about 3 to 7 minutes for each of its four).
 cert_data="--exact 100 10000 41" cert_short="--exact 20 10000 41"
 # exact_run NAME KIND CMD...: runs a host like run_host; KIND plain also requires the first
 # "kernel unsafe N" the host prints to be at least 1 (a host with no GPU prints none: skipped).

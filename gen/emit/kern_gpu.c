@@ -171,6 +171,27 @@ static void put_owners(sbuf *o, const tp_table *t, const out_info *info, const k
     sbuf_puts(o, "\n");
 }
 
+/* With the second look, round r's weights' low parts wl: the float nearest w - w[t], so that
+ * w[t] + wl[t] is w within 2^-47 |w|. */
+static void put_weight_lo(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                          int r)
+{
+    const sched *s = info->sched;
+    float lo[SCHED_MAX_THREADS];
+    char name[32], lit[48];
+    int th;
+    for (th = 0; th < s->threads; th++) {
+        long x = s->slot[(long)r * s->threads + th];
+        lo[th] = 0.0f;
+        if (x >= 0) {
+            double w = rat_get_d(&t->terms[x].w);
+            lo[th] = (float)(w - (double)strtof(fmt_float_literal(lit, &t->terms[x].w), NULL));
+        }
+    }
+    snprintf(name, sizeof name, "wl%d", r);
+    put_float_table(o, g, info->prefix, name, lo, s->threads);
+}
+
 /* Round r's tables: the slots of the P threads (packed indices pj, kl and weights w); padding
  * slots name an owned plane with weight 0. One small table per field, indexed by the thread:
  * no shader indexes a large constant array dynamically (lavapipe copies such an array on every
@@ -203,28 +224,48 @@ static void put_round(sbuf *o, const tp_table *t, const out_info *info, const ke
         sbuf_printf(o, "%s%s", table_sep(th, 8), lit);
     }
     sbuf_puts(o, g->syntax->table_close);
+    if (info->certified && g->vec2)
+        put_weight_lo(o, t, info, g, r);
     sbuf_puts(o, "\n");
 }
 
-/* --certified: QMAX and the bounds' factors tau_k, tau_f of every plane. */
+/* Appends the constant <UP>QMAX<n> and the tables tau<n>_k, tau<n>_f of cb (n: "" or "2"), after
+ * the comment what, which ends with "for max(E, 1) R^3 < ". Clears cb. */
+static void put_bounds(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                       cert_bounds *cb, const char *n, const char *what)
+{
+    char name[128], lit[48];
+    sbuf_printf(o, "%s%sQMAX%s. */\n", what, up, n);
+    snprintf(name, sizeof name, "%sQMAX%s", up, n);
+    snprintf(lit, sizeof lit, "%.9gf", (double)cb->q_max);
+    g->syntax->constant(o, g, name, g->real, lit, NULL);
+    snprintf(name, sizeof name, "tau%s_k", n);
+    put_float_table(o, g, info->prefix, name, cb->k, cb->nplanes);
+    snprintf(name, sizeof name, "tau%s_f", n);
+    put_float_table(o, g, info->prefix, name, cb->k2, cb->nplanes);
+    sbuf_puts(o, "\n");
+    cert_clear(cb);
+}
+
+/* --certified: QMAX and the bounds' factors tau_k, tau_f of every plane; with the second look,
+ * QMAX2, tau2_k and tau2_f of its double-float evaluation too. */
 static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                            const char *up, ptp_error *err)
 {
     cert_bounds cb;
-    char name[128], lit[48];
     int st = cert_table(&cb, t, info->space == OUT_WORLD, err);
     if (st)
         return st;
-    sbuf_printf(o, "/* Certified: |d_P - exact| <= tau_k[P] * E R^3 + tau_f[P] * (1 + R)^3 (1 + E), R the\n"
-                   " * patch's largest |coordinate|, E the eye's; for max(E, 1) R^3 < %sQMAX. */\n",
-                up);
-    snprintf(name, sizeof name, "%sQMAX", up);
-    snprintf(lit, sizeof lit, "%.9gf", (double)cb.q_max);
-    g->syntax->constant(o, g, name, g->real, lit, NULL);
-    put_float_table(o, g, info->prefix, "tau_k", cb.k, cb.nplanes);
-    put_float_table(o, g, info->prefix, "tau_f", cb.k2, cb.nplanes);
-    sbuf_puts(o, "\n");
-    cert_clear(&cb);
+    put_bounds(o, info, g, up, &cb, "",
+               "/* Certified: |d_P - exact| <= tau_k[P] * E R^3 + tau_f[P] * (1 + R)^3 (1 + E), R the\n"
+               " * patch's largest |coordinate|, E the eye's; for max(E, 1) R^3 < ");
+    if (!g->vec2)
+        return PTP_OK;
+    if ((st = cert_table_df(&cb, t, info->space == OUT_WORLD, err)))
+        return st;
+    put_bounds(o, info, g, up, &cb, "2",
+               "/* Second look, in double-float: |hi + lo - exact| <= tau2_k[P] * E R^3 + tau2_f[P] *\n"
+               " * (1 + R)^3 (1 + E), for max(E, 1) R^3 < ");
     return PTP_OK;
 }
 
@@ -303,6 +344,140 @@ static void put_cross4(sbuf *o, const out_info *info, const kern_target *g)
     }
 }
 
+/* Appends src with its shorthands expanded: $ is the prefix, {a*b} the target's product of the
+ * operands a and b, {a*b+c} its fused multiply-add, {h;l} the double-float of the floats h, l. */
+static void put_df_text(sbuf *o, const out_info *info, const kern_target *g, const char *src)
+{
+    while (*src) {
+        const char *end = *src == '{' ? strchr(src, '}') : NULL;
+        if (*src == '$') {
+            sbuf_puts(o, info->prefix);
+            src++;
+        } else if (end) {
+            char a[64], b[64], c[64] = "";
+            size_t n = strcspn(src + 1, "*;"), m = strcspn(src + n + 2, "+}");
+            snprintf(a, sizeof a, "%.*s", (int)n, src + 1);
+            snprintf(b, sizeof b, "%.*s", (int)m, src + n + 2);
+            if (src[n + 2 + m] == '+')
+                snprintf(c, sizeof c, "%.*s", (int)(end - src - n - m - 3), src + n + m + 3);
+            sbuf_printf(o, *c ? g->fma : src[1 + n] == '*' ? g->mul : g->vec2_make, a, b, c);
+            src = end + 1;
+        } else {
+            sbuf_printf(o, "%c", *src++);
+        }
+    }
+}
+
+/* A double-float helper: its name (after the prefix), parameters and locals as a type letter
+ * (f real, v the pair, 4 vec4) and a name, the locals with their initializers, and the value it
+ * returns, all in put_df_text's shorthand. Every local is exact (never contracted). */
+typedef struct {
+    const char *name, *params[6], *locals[6], *ret;
+    int fma; /* 1: only for a target with a one-rounding FMA; -1: only without; 0: always */
+} df_helper;
+
+/* The double-float operations: error-free two-sum (Knuth), fast two-sum, the two-product (with a
+ * one-rounding FMA, or Dekker's on Veltkamp's split, exact for 24-bit floats), and from them (Joldes, Muller and Popescu
+ * 2017) the pair times a float, times a pair, and the accurate sum; then 2x2 minors and cofactor
+ * sums of the determinants. */
+static const df_helper df_helpers[] = {
+    {"df_two_sum", {"fa", "fb"}, {"fs=a + b", "fv=s - a", "fe=(a - (s - v)) + (b - v)"}, "{s;e}", 0},
+    {"df_fast_two_sum", {"fa", "fb"}, {"fs=a + b", "fe=b - (s - a)"}, "{s;e}", 0},
+    {"df_split", {"fa"}, {"fc={4097.0f*a}", "fh=c - (c - a)", "fl=a - h"}, "{h;l}", -1},
+    {"df_two_prod", {"fa", "fb"},
+     {"vx=$df_split(a)", "vy=$df_split(b)", "fp={a*b}",
+      "fe=(({x.x*y.x} - p) + {x.x*y.y} + {x.y*y.x}) + {x.y*y.y}"}, "{p;e}", -1},
+    {"df_two_prod", {"fa", "fb"}, {"fp={a*b}", "fe={a*b+-p}"}, "{p;e}", 1},
+    {"df_mul_f", {"vx", "fb"}, {"vc=$df_two_prod(x.x, b)", "fl=c.y + {x.y*b}"},
+     "$df_fast_two_sum(c.x, l)", 0},
+    {"df_mul", {"vx", "vy"}, {"vc=$df_two_prod(x.x, y.x)", "fl=c.y + ({x.x*y.y} + {x.y*y.x})"},
+     "$df_fast_two_sum(c.x, l)", 0},
+    {"df_add", {"vx", "vy"},
+     {"vs=$df_two_sum(x.x, y.x)", "vt=$df_two_sum(x.y, y.y)", "fh=s.y + t.x",
+      "vv=$df_fast_two_sum(s.x, h)", "fl=v.y + t.y"}, "$df_fast_two_sum(v.x, l)", 0},
+    {"df_sub", {"vx", "vy"}, {NULL}, "$df_add(x, {-y.x;-y.y})", 0},
+    {"df_minor", {"fa", "fb", "fc", "fd"}, {NULL}, "$df_sub($df_two_prod(a, b), $df_two_prod(c, d))", 0},
+    {"df_cof", {"vm0", "fa0", "vm1", "fa1", "vm2", "fa2"}, {NULL},
+     "$df_add($df_sub($df_mul_f(m0, a0), $df_mul_f(m1, a1)), $df_mul_f(m2, a2))", 0},
+};
+
+/* The type a df_helper's letter names. */
+static const char *df_type(const kern_target *g, char c)
+{
+    return c == 'f' ? g->real : c == 'v' ? g->vec2 : g->vec4;
+}
+
+/* Appends helper h's function. */
+static void put_df_helper(sbuf *o, const out_info *info, const kern_target *g, const df_helper *h)
+{
+    kern_param p[6];
+    char name[128];
+    sbuf e;
+    int n, i;
+    for (n = 0; n < 6 && h->params[n]; n++)
+        p[n] = (kern_param){df_type(g, h->params[n][0]), h->params[n] + 1};
+    snprintf(name, sizeof name, "%s%s", info->prefix, h->name);
+    g->syntax->function(o, g, g->vec2, name, p, n);
+    for (i = 0; i < 6 && h->locals[i]; i++) {
+        char var[8];
+        const char *eq = strchr(h->locals[i], '=');
+        snprintf(var, sizeof var, "%.*s", (int)(eq - h->locals[i] - 1), h->locals[i] + 1);
+        sbuf_init(&e);
+        put_df_text(&e, info, g, eq + 1);
+        g->syntax->locals(o, g, "    ", df_type(g, h->locals[i][0]), &(kern_var){var, opt(e.s), 0},
+                          1, 1);
+        o->failed |= e.failed;
+        sbuf_clear(&e);
+    }
+    sbuf_puts(o, "    return ");
+    put_df_text(o, info, g, h->ret);
+    sbuf_puts(o, ";\n}\n\n");
+}
+
+/* Writes to d (256 bytes) the double-float det[a b c] of rows p, q, s, as put_det expands it. */
+static void put_df_det(char *d, int p, int q, int s)
+{
+    static const char comp[] = "xyzw";
+    const char *u = "baa", *v = "ccb";
+    size_t n = (size_t)snprintf(d, 256, "$df_cof(");
+    int i;
+    for (i = 0; i < 3; i++)
+        n += (size_t)snprintf(d + n, 256 - n, "%s$df_minor(%c.%c, %c.%c, %c.%c, %c.%c), %c.%c",
+                              i ? ",\n        " : "", u[i], comp[q], v[i], comp[s], u[i], comp[s],
+                              v[i], comp[q], "abc"[i], comp[p]);
+    snprintf(d + n, 256 - n, ")");
+}
+
+/* --certified's second look: the double-float helpers and the term, as put_cross4's. */
+static void put_df_functions(sbuf *o, const out_info *info, const kern_target *g)
+{
+    static const int rows[5][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}, {0, 1, 3}};
+    static const char *const names[4] = {"x", "y", "z", "w"};
+    const char *v = g->vec4;
+    kern_param p[4] = {{v, "a"}, {v, "b"}, {v, "c"}, {v, "e"}};
+    int world = info->space == OUT_WORLD, c;
+    char name[128], det[256];
+    sbuf_puts(o, "/* Second look: double-float arithmetic (hi .x + lo .y) from error-free transformations\n"
+                 " * with + - * only, none contracted into an FMA. */\n");
+    for (c = 0; c < (int)(sizeof df_helpers / sizeof *df_helpers); c++)
+        if (df_helpers[c].fma != (g->fma ? -1 : 1))
+            put_df_helper(o, info, g, &df_helpers[c]);
+    sbuf_printf(o, "/* %s, in double-float. */\n", world ? "e . cross4(a, b, c)" : "cross4z(a, b, c)");
+    snprintf(name, sizeof name, "%sdf_%s", info->prefix, world ? "eye_cross4" : "cross4z");
+    g->syntax->function(o, g, g->vec2, name, p, world ? 4 : 3);
+    for (c = world ? 0 : 4; c < (world ? 4 : 5); c++) {
+        put_df_det(det, rows[c][0], rows[c][1], rows[c][2]);
+        sbuf_printf(o, "    %s %s = ", g->vec2, world ? names[c] : "z");
+        put_df_text(o, info, g, det);
+        sbuf_puts(o, ";\n");
+    }
+    if (world)
+        put_df_text(o, info, g, "    return $df_sub($df_add($df_sub($df_mul_f(x, e.x), $df_mul_f(y, e.y)),\n"
+                                "        $df_mul_f(z, e.z)), $df_mul_f(w, e.w));\n}\n\n");
+    else
+        sbuf_puts(o, "    return z;\n}\n\n");
+}
+
 /* The flags of one value and the class of a patch's flags, per rule: flags sets bit b where
  * bits[b][0] holds; class_of is the class of the first condition that holds, as selects. */
 static void put_classify(sbuf *o, const out_info *info, const kern_target *g)
@@ -342,14 +517,24 @@ static void put_classify(sbuf *o, const out_info *info, const kern_target *g)
     sbuf_printf(o, "    return %s;\n}\n\n", e[k]);
 }
 
-/* The workgroup-shared arrays: the patches' points, the planes' accumulators, the flags. */
-static void put_shared(sbuf *o, const kern_target *g, const char *up, const char *indent)
+/* Whether the kernel has the second look: --certified on a target with double-float. */
+static int second_look(const out_info *info, const kern_target *g)
+{
+    return info->certified && g->vec2;
+}
+
+/* The workgroup-shared arrays: the patches' points, the planes' accumulators (with the second
+ * look, their low parts acc2 too), the flags. */
+static void put_shared(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                       const char *indent)
 {
     char count[160];
     snprintf(count, sizeof count, "%sQ * %sK", up, up);
     g->syntax->shared(o, g, indent, g->vec4, "pts", count);
     snprintf(count, sizeof count, "%sQ * %sL", up, up);
     g->syntax->shared(o, g, indent, g->real, "acc", count);
+    if (second_look(info, g))
+        g->syntax->shared(o, g, indent, g->real, "acc2", count);
     snprintf(count, sizeof count, "%sQ * %sP", up, up);
     g->syntax->shared(o, g, indent, g->uint, "flags", count);
 }
@@ -435,6 +620,8 @@ static void put_scale(sbuf *o, const out_info *info, const kern_target *g, const
     put_then(o, g);
     sbuf_puts(o, "        f = 3u; /* too large for the bound, or NaN: never certified */\n");
     put_end(o, g, "    ");
+    if (second_look(info, g))
+        put_local(o, g, g->uint, "pf", "0u", 1); /* the plain float signs' flags */
 }
 
 /* The values and flags of the owned planes (and with --planes, the values written out). */
@@ -460,7 +647,83 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
         sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * ER3 + %stau_f[plane] * F);\n", px, px, px);
     else
         sbuf_printf(o, "        f |= %sflags(d);\n", px);
+    if (second_look(info, g))
+        sbuf_printf(o, "        pf |= %sflags(d, 0.0f);\n", px);
     sbuf_puts(o, "    }\n");
+}
+
+/* The second look's decision: every thread of a patch combines the first look's certified flags
+ * and plain flags (pf, shifted by 2) into all; again: the plain signs decide, the bounds do not. */
+static void put_again(sbuf *o, const kern_target *g, const char *up)
+{
+    sbuf_printf(o,
+                "\n    /* Second look: a patch whose plain float signs decide but whose bounds do not is\n"
+                "     * evaluated again in double-float, against its own bound. */\n"
+                "    flags[q * %sP + t] = f | (pf << 2u);\n"
+                "    %s\n",
+                up, g->barrier);
+    put_local(o, g, g->uint, "all", "0u", 1);
+    sbuf_printf(o, "    for (i = 0u; i < %sP; i++)", up);
+    put_then(o, g);
+    sbuf_printf(o, "        all |= flags[q * %sP + i];\n", up);
+    put_end(o, g, "    ");
+    put_local(o, g, "bool", "again", "live && ((all & 5u) == 1u || (all & 10u) == 2u)", 0);
+    sbuf_printf(o, "    %s\n", g->barrier);
+}
+
+/* The second look's accumulation: put_accumulate's rounds in double-float into acc and acc2. */
+static void put_df_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
+    char hi[96], lo[96], w[96], wl[96], x[256], y[256];
+    int r;
+    kern_var v[2] = {{"at", NULL, 1}, {"s", NULL, 1}};
+    g->syntax->locals(o, g, "        ", g->uint, v, 1, 0);
+    g->syntax->locals(o, g, "        ", g->vec2, v + 1, 1, 0);
+    sbuf_printf(o, "        for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n"
+                   "            acc[q * %sL + %sown_plane[i]] = 0.0f;\n"
+                   "            acc2[q * %sL + %sown_plane[i]] = 0.0f;\n        }\n",
+                px, px, up, px, up, px);
+    snprintf(x, sizeof x, g->vec2_make, "acc[at]", "acc2[at]");
+    for (r = 0; r < info->sched->rounds; r++) {
+        snprintf(hi, sizeof hi, "%sw%d[t]", px, r);
+        snprintf(lo, sizeof lo, "%swl%d[t]", px, r);
+        snprintf(y, sizeof y, g->vec2_make, hi, lo);
+        snprintf(w, sizeof w, "%spj%d[t]", px, r);
+        snprintf(wl, sizeof wl, "%skl%d[t]", px, r);
+        sbuf_printf(o, "        pj = %s;\n        kl = %s;\n        at = q * %sL + (pj & 0xffffu);\n"
+                       "        s = %sdf_add(%s, %sdf_mul(%s, %sdf_%s(pts[q * %sK + (pj >> 16)],\n"
+                       "            pts[q * %sK + (kl & 0xffffu)], pts[q * %sK + (kl >> 16)]%s)));\n"
+                       "        acc[at] = s.x;\n        acc2[at] = s.y;\n",
+                    w, wl, up, px, x, px, y, px, fn, up, up, up,
+                    info->space == OUT_CLIP ? "" : ", eye");
+    }
+}
+
+/* The second look for the patches put_again chose: their flags f again, from the double-float
+ * values and the bounds tau2 (plus twice the low part, for comparing the high part alone). */
+static void put_second_look(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *px = info->prefix;
+    char a[128], b[160];
+    put_again(o, g, up);
+    sbuf_puts(o, "    if (again) {\n");
+    put_df_accumulate(o, info, g, up);
+    sbuf_printf(o, "        f = 0u;\n        if (!(%s(E, 1.0f) * R3 < %sQMAX2))", g->fmax, up);
+    put_then(o, g);
+    sbuf_puts(o, "            f = 3u;\n");
+    put_end(o, g, "        ");
+    sbuf_printf(o, "        for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n", px, px);
+    sbuf_printf(o, "            at = q * %sL + %sown_plane[i];\n", up, px);
+    snprintf(a, sizeof a, g->vec2_make, "acc[at]", "acc2[at]");
+    if (info->space == OUT_CLIP)
+        snprintf(b, sizeof b, "%sdf_mul_f(%s, eye.z)", px, a);
+    g->syntax->locals(o, g, "            ", g->vec2,
+                      &(kern_var){"d", info->space == OUT_CLIP ? b : a, 0}, 1, 0);
+    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[%sown_plane[i]] * ER3 +\n"
+                   "                %stau2_f[%sown_plane[i]] * F + 2.0f * %s(d.y));\n"
+                   "        }\n    }\n",
+                px, px, px, px, px, g->fabs);
 }
 
 /* The end: the threads' flags through shared memory, and thread 0 of a patch writes its class. */
@@ -484,12 +747,14 @@ static void put_combine(sbuf *o, const out_info *info, const kern_target *g, con
 static void put_body(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     if (g->shared_in_body)
-        put_shared(o, g, up, "    ");
+        put_shared(o, info, g, up, "    ");
     put_load(o, g, up);
     put_accumulate(o, info, g, up);
     if (info->certified)
         put_scale(o, info, g, up);
     put_signs(o, info, g, up);
+    if (second_look(info, g))
+        put_second_look(o, info, g, up);
     put_combine(o, info, g, up);
 }
 
@@ -512,6 +777,8 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     fmt_banner(&banner, t, info, file, g->language, g->interface);
     st = put_tables(&tables, t, info, g, up, err);
     put_cross4(&funcs, info, g);
+    if (second_look(info, g))
+        put_df_functions(&funcs, info, g);
     put_classify(&funcs, info, g);
     put_body(&body, info, g, up);
     slots[n++] = (tpl_slot){"BANNER", banner.s};
@@ -522,7 +789,7 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     slots[n++] = (tpl_slot){"FUNCTIONS", funcs.s};
     slots[n++] = (tpl_slot){"BODY", body.s};
     if (!g->shared_in_body) {
-        put_shared(&shared, g, up, "");
+        put_shared(&shared, info, g, up, "");
         slots[n++] = (tpl_slot){"SHARED", shared.s};
     }
     if (g->planes_buffer)

@@ -70,21 +70,28 @@ static int alloc(cert_bounds *b, int nplanes, int with64, double **d, double **S
     return ptp_fail(err, PTP_ENOMEM, "out of memory computing the certified bounds");
 }
 
-int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
+/* Per plane of the table loop: d the rounded operations on a path (terms + 16), S the sum of
+ * |weights| and n the rounded operations that may underflow, ops per term. */
+static void table_sums(double *d, double *S, double *n, const tp_table *t, double ops)
 {
-    double *d, *S, *n;
     size_t i;
-    int st = alloc(b, t->dom.nplanes, 1, &d, &S, &n, err);
-    if (st)
-        return st;
     for (i = 0; i < t->nterms; i++) {
         double w = rat_get_d(&t->terms[i].w);
         d[t->terms[i].plane] += 1;
         S[t->terms[i].plane] += (w < 0 ? -w : w) * (1 + 0x1p-50);
-        n[t->terms[i].plane] += world ? 44 : 12;
+        n[t->terms[i].plane] += ops;
     }
     for (i = 0; i < (size_t)t->dom.nplanes; i++)
         d[i] += 16;
+}
+
+int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
+{
+    double *d, *S, *n;
+    int st = alloc(b, t->dom.nplanes, 1, &d, &S, &n, err);
+    if (st)
+        return st;
+    table_sums(d, S, n, t, world ? 44 : 12);
     fill(b, d, S, n, world, 0x1p-126); /* GPUs may flush subnormals to zero */
     free(d);
     return PTP_OK;
@@ -121,6 +128,29 @@ static double fused_depth(const slp_prog *p, size_t a, int world)
         best = u > best ? u : best;
     }
     return best;
+}
+
+int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
+{
+    /* u2: the largest relative error of the double-float + - * and of the weights' hi + lo (at
+     * most 7u^2 and 2^-47), doubled; (1 - u2)^-1 and the 2^-50 of the double sums below are in
+     * float_up's widening. */
+    const double u2 = 0x1p-44, widen = 1.0000006 * (1 + 0x1p-40);
+    double *d, *S, *n, smax = 0;
+    int st = alloc(b, t->dom.nplanes, 0, &d, &S, &n, err), i;
+    if (st)
+        return st;
+    table_sums(d, S, n, t, world ? 2048 : 512); /* float operations of a term, generously */
+    for (i = 0; i < b->nplanes; i++) {
+        double m = world ? 24 : 6;
+        b->k[i] = float_up(d[i] * u2 / (1 - d[i] * u2) * m * S[i] * widen);
+        b->k2[i] = float_up(4 * 0x1p-126 * n[i] * (S[i] > 1 ? S[i] : 1) * widen);
+        smax = m * S[i] > smax ? m * S[i] : smax;
+    }
+    /* Every intermediate is at most 2 (m S + 24) max(E, 1) R^3, times 4097 in the splitter. */
+    b->q_max = (float)(0x1p100 / (smax + 24));
+    free(d);
+    return PTP_OK;
 }
 
 int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)

@@ -19,6 +19,11 @@ typedef struct {
 /* The bounds of the table loop (the GPU kernels; in double, the C target's recheck): float
  * weights, (terms + 16) roundings on a path as derived in README. PTP_ENOMEM on failure. */
 int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
+/* The bounds of the GPU kernels' second look: the table loop again in double-float arithmetic
+ * (hi + lo floats from error-free transformations, + - * only), each double-float operation with
+ * relative error at most 2^-44, eta = 2^-126 per float operation, and q_max low enough that the
+ * splitter's 4097 x never overflows (README: Certified). k64 and k2_64 stay NULL. */
+int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
 /* The bounds of the straight-line program p (the C target's classify), at its planes' scales. */
 int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err);
 void cert_clear(cert_bounds *b);
