@@ -14,35 +14,38 @@ typedef struct {
     int wide; /* AVX-512: compare masks; AVX: compares to all-ones floats */
 } fused_isa;
 
-/* r = fam_op_ps(a, b) as text. */
-static void op(char *r, size_t n, const fused_isa *isa, const char *o, const char *a, const char *b)
+/* Appends fam_mul_ps(a, b). */
+static void put_mul(sbuf *o, const fused_isa *isa, const char *a, const char *b)
 {
-    snprintf(r, n, "%s_%s_ps(%s, %s)", isa->fam, o, a, b);
+    sbuf_printf(o, "%s_mul_ps(%s, %s)", isa->fam, a, b);
 }
 
-/* r = a * b - c * d as the fused kernel's text. */
-static void diff(char *r, size_t n, const fused_isa *isa, const char *a, const char *b, const char *c,
-                 const char *d)
+/* Appends a * b - c * d as the fused kernel's text. */
+static void put_diff(sbuf *o, const fused_isa *isa, const char *a, const char *b, const char *c,
+                     const char *d)
 {
-    char ab[256], cd[256];
-    op(ab, sizeof ab, isa, "mul", a, b);
-    op(cd, sizeof cd, isa, "mul", c, d);
-    op(r, n, isa, "sub", ab, cd);
+    sbuf_printf(o, "%s_sub_ps(", isa->fam);
+    put_mul(o, isa, a, b);
+    sbuf_puts(o, ", ");
+    put_mul(o, isa, c, d);
+    sbuf_puts(o, ")");
 }
 
-/* r = (a0 m1_2 - a1 m0_2) + a2 m0_1: one plane's Laplace expansion over the minors m. */
-static void plane(char *r, size_t n, const fused_isa *isa, char a, char m)
+/* Appends (a0 m1_2 - a1 m0_2) + a2 m0_1: one plane's Laplace expansion over the minors m. */
+static void put_plane(sbuf *o, const fused_isa *isa, char a, char m)
 {
-    char x[6][16], d[512], p[256];
-    snprintf(x[0], 16, "%c0", a);
-    snprintf(x[1], 16, "%c1_2", m);
-    snprintf(x[2], 16, "%c1", a);
-    snprintf(x[3], 16, "%c0_2", m);
-    snprintf(x[4], 16, "%c2", a);
-    snprintf(x[5], 16, "%c0_1", m);
-    diff(d, sizeof d, isa, x[0], x[1], x[2], x[3]);
-    op(p, sizeof p, isa, "mul", x[4], x[5]);
-    op(r, n, isa, "add", d, p);
+    char x[6][8];
+    snprintf(x[0], sizeof x[0], "%c0", a);
+    snprintf(x[1], sizeof x[1], "%c1_2", m);
+    snprintf(x[2], sizeof x[2], "%c1", a);
+    snprintf(x[3], sizeof x[3], "%c0_2", m);
+    snprintf(x[4], sizeof x[4], "%c2", a);
+    snprintf(x[5], sizeof x[5], "%c0_1", m);
+    sbuf_printf(o, "%s_add_ps(", isa->fam);
+    put_diff(o, isa, x[0], x[1], x[2], x[3]);
+    sbuf_puts(o, ", ");
+    put_mul(o, isa, x[4], x[5]);
+    sbuf_puts(o, ")");
 }
 
 /* The gather's stores for one vector width: the rows of the in-lane 4x4 transpose (one vertex of
@@ -93,38 +96,45 @@ static void put_eye(sbuf *o, const out_info *info, const fused_isa *isa)
 static void put_value(sbuf *o, const out_info *info, const fused_isa *isa)
 {
     static const int pair[3][2] = {{1, 2}, {0, 2}, {0, 1}};
-    char r[1024], q[512], t[4][16];
+    char t[4][32];
     int k, c, world = info->space == OUT_WORLD;
     for (k = 0; k < 3; k++) {
         for (c = 0; c < 4; c++)
             snprintf(t[c], sizeof t[c], "v[%d][%d]", k, c);
         if (world) {
-            diff(r, sizeof r, isa, "e0", t[1], "e1", t[0]);
-            diff(q, sizeof q, isa, "e2", t[3], "e3", t[2]);
-            sbuf_printf(o, "        const %s a%d = %s, b%d = %s;\n", isa->vec, k, r, k, q);
+            sbuf_printf(o, "        const %s a%d = ", isa->vec, k);
+            put_diff(o, isa, "e0", t[1], "e1", t[0]);
+            sbuf_printf(o, ", b%d = ", k);
+            put_diff(o, isa, "e2", t[3], "e3", t[2]);
         } else {
-            op(r, sizeof r, isa, "mul", "e2", t[3]);
-            sbuf_printf(o, "        const %s g%d = %s;\n", isa->vec, k, r);
+            sbuf_printf(o, "        const %s g%d = ", isa->vec, k);
+            put_mul(o, isa, "e2", t[3]);
         }
+        sbuf_puts(o, ";\n");
     }
     for (k = 0; k < 3; k++)
         for (c = 0; c < 4; c += 2)
             if (c == 0 || world) {
                 int i = pair[k][0], j = pair[k][1];
-                char a[16], b[16], e[16], f[16];
+                char a[32], b[32], e[32], f[32];
                 snprintf(a, sizeof a, "v[%d][%d]", i, c);
                 snprintf(b, sizeof b, "v[%d][%d]", j, c + 1);
                 snprintf(e, sizeof e, "v[%d][%d]", i, c + 1);
                 snprintf(f, sizeof f, "v[%d][%d]", j, c);
-                diff(r, sizeof r, isa, a, b, e, f);
-                sbuf_printf(o, "        const %s %c%d_%d = %s;\n", isa->vec, c ? 'n' : 'm', i, j, r);
+                sbuf_printf(o, "        const %s %c%d_%d = ", isa->vec, c ? 'n' : 'm', i, j);
+                put_diff(o, isa, a, b, e, f);
+                sbuf_puts(o, ";\n");
             }
-    plane(r, sizeof r, isa, world ? 'a' : 'g', world ? 'n' : 'm');
+    sbuf_puts(o, "        u = ");
     if (world) {
-        plane(q, sizeof q, isa, 'b', 'm');
-        sbuf_printf(o, "        u = %s_add_ps(%s, %s);\n", isa->fam, r, q);
+        sbuf_printf(o, "%s_add_ps(", isa->fam);
+        put_plane(o, isa, 'a', 'n');
+        sbuf_puts(o, ", ");
+        put_plane(o, isa, 'b', 'm');
+        sbuf_puts(o, ")");
     } else
-        sbuf_printf(o, "        u = %s;\n", r);
+        put_plane(o, isa, 'g', 'm');
+    sbuf_puts(o, ";\n");
 }
 
 /* The fused kernel's class words c from u: strict, back (1) iff u < 0, front (0) iff u > 0,
