@@ -207,8 +207,8 @@ static int parse_one(int *v, const char *s, const char **end, const char *arg, c
 int tp_domain_parse(tp_domain *d, tp_kind kind, const char *arg, ptp_error *err)
 {
     const kind_ops *k = &kinds[kind];
-    const char *p;
-    int n, m, st;
+    const char *p = arg;
+    int n = 0, m, st;
     if ((st = parse_one(&n, arg, &p, arg, k, err)))
         return st;
     m = n;
