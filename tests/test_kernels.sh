@@ -564,3 +564,15 @@ for cfg in "clip gcc -O2" "world clang -O3 -march=native"; do
         notok "$name compiles" "$(head -5 "$tmp/err")"
     fi
 done
+# ... and the exact check can fail there: a header that counts every plane as zero where edge 0 is
+# collapsed, not only the planes along it, must be caught calling patches back that are not.
+"$P" --degree 3 --space clip --rule degenerate --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" &&
+    sed -i 's/notlt |= (v < -t) == 0;/notlt |= ((v < -t) | c0) == 0;/; s/plt |= (v < 0.0f) == 0;/plt |= ((v < 0.0f) | c0) == 0;/; s/notlt |= ((d\[x\] < -bound) | z) == 0;/notlt |= ((d[x] < -bound) | (col \& 1)) == 0;/' "$tmp/k.h"
+if grep -q '(v < -t) | c0) == 0' "$tmp/k.h" && grep -q 'col & 1' "$tmp/k.h" &&
+    build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
+    ! "$tmp/host_c" --degree 3 3 --space clip --rule degenerate --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
+    grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
+    ok "a certified degenerate C header that zeros planes off the collapsed edge is caught unsafe on exact data"
+else
+    notok "a certified degenerate C header that zeros planes off the collapsed edge is caught unsafe" "it passed, or its masks were not found"
+fi
