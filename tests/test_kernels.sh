@@ -527,17 +527,21 @@ for space in clip world; do
         fi
     done
 done
+# mutant_caught RULE MARK LABEL: the mutated certified clip header $tmp/k.h (of --rule RULE), which
+# must contain MARK (a grep pattern), is caught calling unsafe classes on exact data.
+mutant_caught() {
+    if grep -q "$2" "$tmp/k.h" && build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
+        ! "$tmp/host_c" --degree 3 3 --space clip --rule $1 --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
+        grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
+        ok "$3 is caught unsafe on exact data"
+    else
+        notok "$3 is caught unsafe" "it passed, or its mutation was not found"
+    fi
+}
 # The exact check can fail: a certified header whose bounds are 2^10 times too small must be
 # caught calling patches back or front that are not.
 "$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /' "$tmp/k.h"
-if grep -q 'ER3 \* 0x1p-10f' "$tmp/k.h" &&
-    build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
-    ! "$tmp/host_c" --degree 3 3 --space clip --rule strict --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
-    grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
-    ok "a certified C header with its bounds 2^10 times too small is caught unsafe on exact data"
-else
-    notok "a certified C header with its bounds 2^10 times too small is caught unsafe" "it passed, or its bounds were not found"
-fi
+mutant_caught strict 'ER3 \* 0x1p-10f' "a certified C header with its bounds 2^10 times too small"
 # Certified C headers under the degenerate rule: a plane that a collapsed boundary edge zeros is
 # exactly 0 there, so they keep the degenerate rule's culls of such patches (the teapot's lid and
 # bottom, and the random sets' collapsed quarter) while staying safe on the exact data. Headers
@@ -568,11 +572,4 @@ done
 # collapsed, not only the planes along it, must be caught calling patches back that are not.
 "$P" --degree 3 --space clip --rule degenerate --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" &&
     sed -i 's/notlt |= (v < -t) == 0;/notlt |= ((v < -t) | c0) == 0;/; s/plt |= (v < 0.0f) == 0;/plt |= ((v < 0.0f) | c0) == 0;/; s/notlt |= ((d\[x\] < -bound) | z) == 0;/notlt |= ((d[x] < -bound) | (col \& 1)) == 0;/' "$tmp/k.h"
-if grep -q '(v < -t) | c0) == 0' "$tmp/k.h" && grep -q 'col & 1' "$tmp/k.h" &&
-    build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
-    ! "$tmp/host_c" --degree 3 3 --space clip --rule degenerate --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
-    grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
-    ok "a certified degenerate C header that zeros planes off the collapsed edge is caught unsafe on exact data"
-else
-    notok "a certified degenerate C header that zeros planes off the collapsed edge is caught unsafe" "it passed, or its masks were not found"
-fi
+mutant_caught degenerate '(v < -t) | c0) == 0' "a certified degenerate C header that zeros planes off the collapsed edge"
