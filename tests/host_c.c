@@ -8,14 +8,14 @@
 #include <string.h>
 
 /* Nonzero when class c is not the one values d (L of them, from values()) give under the rule:
- * certified, a class other than silhouette must be the strict rule's. v: L doubles of scratch. */
+ * certified, a class other than silhouette must be the rule's. v: L doubles of scratch. */
 static int class_not_of_values(double *v, unsigned c, const float *d, int L, const kref_ref *ref)
 {
     int x;
     for (x = 0; x < L; x++)
         v[x] = d[x]; /* exact: the signs, zeros and NaNs are the floats' */
     if (ref->certified)
-        return c != MACRO(SILHOUETTE) && (int)c != kref_classify(v, L, KREF_STRICT);
+        return c != MACRO(SILHOUETTE) && (int)c != kref_classify(v, L, ref->rule);
     return (int)c != kref_classify(v, L, ref->rule);
 }
 

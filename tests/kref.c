@@ -1071,13 +1071,14 @@ int kref_classify(const double *d, int L, kref_rule rule)
 }
 
 /* Compares the kernel's class cls of patch p of the exact set s with its exact class (s->exact)
- * under the strict rule (certified kernels) or r->rule, and describes the first unsafe one with
- * its exact values (ev, and cr for exact_values, are scratch). */
+ * under r->rule (a certified kernel too: under the degenerate rule it may call back a patch with
+ * exactly zero values), and describes the first unsafe one with its exact values (ev, and cr for
+ * exact_values, are scratch). */
 static void check_exact(kref_result *res, const kref_ref *r, const kref_set *s, size_t p,
                         unsigned cls, int64_t (*cr)[3], ptp_i128 *ev)
 {
     static const char *const names[] = {"front", "back", "silhouette"};
-    int strict = r->certified || r->rule == KREF_STRICT, i, n, first;
+    int strict = r->rule == KREF_STRICT, i, n, first;
     int cl[2] = {s->exact[p] & 3, s->exact[p] >> 2}, want = cl[strict ? 0 : 1];
     size_t len;
     res->exact++;
@@ -1165,6 +1166,7 @@ void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const un
     }
     res->certified = r->certified;
     res->one_sided = r->L == 1 && r->rule == KREF_DEGENERATE;
+    res->degenerate = r->rule == KREF_DEGENERATE;
     for (p = 0; p < s->count; p++) {
         int ambiguous = 0, want;
         if (s->exact) {
@@ -1228,8 +1230,9 @@ static int report_exact(const kref_result *res, const char *name)
                 res->exact_bad, res->exact_bad ? res->first_exact : "none compared");
     if (res->certified) {
         snprintf(label, sizeof label, "%s: certified: no unsafe class on %zu exact patches "
-                 "(back only if every exact value < 0, front only if every one > 0)", name,
-                 res->exact);
+                 "(back only if every exact value %s 0, front only if every one %s 0)", name,
+                 res->exact, res->degenerate ? "<=" : "<",
+                 res->degenerate ? ">=" : ">");
         ok &= check(unsafe == 0, label, "%zu unsafe (back %zu, front %zu), first: %s", unsafe,
                     res->unsafe_back, res->unsafe_front, res->first_unsafe);
     } else {

@@ -52,6 +52,7 @@ typedef struct {
     char first_class[256], first_value[256]; /* the first failures, for the report */
     int certified;     /* checked as a certified kernel (kref_ref.certified) */
     int one_sided;     /* a single plane under the degenerate rule: no patch can be silhouette */
+    int degenerate;    /* checked under the degenerate rule */
     size_t given_up;   /* certified: silhouette where the unambiguous reference is back or front */
     /* Sets from kref_exact_sets: every patch is classified exactly (in integers), the double
      * reference above runs on every KREF_EXACT_SAMPLE-th patch only. */
@@ -79,7 +80,7 @@ typedef struct {
  * --domain triangle: triangular patches of degree N (M is ignored).
  * --certified: the kernel was generated with --certified: it may answer silhouette wherever the
  * reference says back or front (counted as given up), and on --exact data it must never call a
- * patch back or front unless the exact class under the strict rule is that class. */
+ * patch back or front unless the exact class under --rule is that class. */
 #define KREF_MAX_SOURCES 16
 typedef enum { KREF_SRC_RANDOM, KREF_SRC_MODEL, KREF_SRC_EXACT } kref_source_kind;
 typedef struct {
@@ -174,8 +175,8 @@ int kref_classify(const double *d, int L, kref_rule rule);
 /* Compares a kernel's classes cls[count] and, if planes is not NULL, its values
  * planes[p*L + i] for every patch of s; accumulates into res. The class of a certified kernel
  * (r->certified) may also be silhouette where the reference is back or front. For an exact set
- * every class is also compared with the exact one (under the strict rule for a certified
- * kernel, else under r->rule), and the double reference runs on every KREF_EXACT_SAMPLE-th
+ * every class is also compared with the exact one under r->rule, and the double reference runs
+ * on every KREF_EXACT_SAMPLE-th
  * patch, where the exact values must agree with it. */
 void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const unsigned *cls,
                 const float *planes);

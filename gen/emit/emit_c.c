@@ -229,21 +229,78 @@ static void put_terms64(sbuf *o, int world, const char *px, const char *up)
     }
 }
 
+/* Nonzero for a certified header under the degenerate rule: a plane that a collapsed boundary
+ * edge zeros (slp_prog.zero) counts as exactly 0 there, both <= 0 and >= 0. */
+static int zeros_certified(const out_info *info)
+{
+    return info->certified && info->rule == OUT_DEGENERATE;
+}
+
+/* The first point on boundary edge e of d. */
+static int edge_first(const tp_domain *d, int e)
+{
+    int k, i, j;
+    for (k = 0; k < d->npoints; k++) {
+        tp_domain_point_ij(&i, &j, d, k);
+        if (tp_domain_on_edge(d, e, i, j))
+            break;
+    }
+    return k;
+}
+
+/* certify64's collapsed edges (degenerate rule): each plane's edges zero[], same(), and
+ * collapsed(cp): bit e where edge e's points are equal and every coordinate is finite. */
+static void put_collapsed64(sbuf *o, const slp_prog *p, const tp_domain *d, const out_info *info,
+                            const char *up)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD, e, k, i, j;
+    sbuf_printf(o, "\n/* Degenerate rule: bit e of zero[P] where every term of plane P has two points on boundary\n"
+                   " * edge e, so that the plane is exactly 0 when that edge is collapsed. */\n"
+                   "static const unsigned char %szero[%sPLANES] = {", px, up);
+    for (k = 0; k < p->nplanes; k++)
+        sbuf_printf(o, "%s%d", k == 0 ? "\n    " : k % 16 ? ", " : ",\n    ", p->zero[k]);
+    sbuf_printf(o, "\n};\n\n/* 1 if a and b are equal in every coordinate the kernel reads (+0 == -0, NaN never). */\n"
+                   "static unsigned %ssame(const float a[4], const float b[4])\n{\n"
+                   "    return (a[0] == b[0]) & (a[1] == b[1]) & %s(a[3] == b[3]);\n}\n\n"
+                   "/* Bit e where boundary edge e of cp is collapsed: its points equal, every coordinate finite. */\n"
+                   "static unsigned %scollapsed(const float cp[][4])\n{\n"
+                   "    unsigned x, k, fin = 1, col = 0;\n"
+                   "    for (x = 0; x < %sPOINTS; x++)\n"
+                   "        for (k = 0; k < 4; k++)\n"
+                   "            fin &= %scp[x][k] - cp[x][k] == 0;\n",
+                px, world ? "(a[2] == b[2]) & " : "", px, up, world ? "" : "k == 2 || ");
+    for (e = 0; e < tp_domain_edges(d); e++) {
+        int f = edge_first(d, e), n = 0;
+        sbuf_printf(o, "    col |= (");
+        for (k = f + 1; k < d->npoints; k++) {
+            tp_domain_point_ij(&i, &j, d, k);
+            if (tp_domain_on_edge(d, e, i, j))
+                sbuf_printf(o, "%s%ssame(cp[%d], cp[%d])", n++ ? " & " : "", px, k, f);
+        }
+        sbuf_printf(o, ") << %d;\n", e);
+    }
+    sbuf_puts(o, "    return fin * col;\n}\n");
+}
+
 /* --certified: the second look at a patch float cannot certify, in double. The table loop with
- * double weights and the bounds of cert_table for u = 2^-53, which are 2^29 times smaller. */
-static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const char *up,
-                         ptp_error *err)
+ * double weights and the bounds of cert_table for u = 2^-53, which are 2^29 times smaller; under
+ * the degenerate rule a plane of a collapsed edge counts as exactly 0. */
+static int put_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const out_info *info,
+                         const char *up, ptp_error *err)
 {
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD, st = put_tables64(o, t, info, err);
     if (st)
         return st;
+    if (zeros_certified(info))
+        put_collapsed64(o, p, &t->dom, info, up);
     sbuf_printf(o,
                 "\n/* The certified class of a patch whose plain float signs decide but whose bounds do not, from\n"
                 " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
                 "static unsigned %scertify64(const float cp[][4], const float eye[4])\n{\n"
                 "    double d[%sPLANES], R = 0, E = 0, ER3, F;\n"
-                "    unsigned x, k, notlt = 0, notgt = 0;\n"
+                "    unsigned x, k, notlt = 0, notgt = 0%s;\n"
                 "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
                 "    for (x = 0; x < %sPOINTS; x++)\n"
                 "        for (k = 0; k < 4; k++)\n"
@@ -256,16 +313,28 @@ static int put_certify64(sbuf *o, const tp_table *t, const out_info *info, const
                 "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
                 "    for (x = 0; x < %sTERMS; x++) {\n"
                 "        const float *a = cp[%sterm_idx[x][1]], *b = cp[%sterm_idx[x][2]], *c = cp[%sterm_idx[x][3]];\n",
-                px, up, up, up, world ? "1" : "k != 2", up, world ? "1" : "k == 2", up, up, px, px, px);
+                px, up, zeros_certified(info) ? ", col" : "", up, up, world ? "1" : "k != 2", up,
+                world ? "1" : "k == 2", up, up, px, px, px);
     put_terms64(o, world, px, up);
-    sbuf_printf(o,
-                "    for (x = 0; x < %sPLANES; x++) {\n"
-                "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
-                "        notlt |= !(d[x] < -bound);\n"
-                "        notgt |= !(d[x] > bound);\n"
-                "    }\n"
-                "    return (1u - notlt) + 2u * (notlt & notgt);\n}\n\n",
-                up, px, px);
+    if (zeros_certified(info))
+        sbuf_printf(o,
+                    "    col = %scollapsed(cp);\n"
+                    "    for (x = 0; x < %sPLANES; x++) {\n"
+                    "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
+                    "        unsigned z = (%szero[x] & col) != 0; /* exactly 0 */\n"
+                    "        notlt |= ((d[x] < -bound) | z) == 0;\n"
+                    "        notgt |= ((d[x] > bound) | z) == 0;\n"
+                    "    }\n",
+                    px, up, px, px, px);
+    else
+        sbuf_printf(o,
+                    "    for (x = 0; x < %sPLANES; x++) {\n"
+                    "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
+                    "        notlt |= !(d[x] < -bound);\n"
+                    "        notgt |= !(d[x] > bound);\n"
+                    "    }\n",
+                    up, px, px);
+    sbuf_puts(o, "    return (1u - notlt) + 2u * (notlt & notgt);\n}\n\n");
     return PTP_OK;
 }
 
@@ -332,8 +401,41 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
                 world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
 }
 
+/* The lanes' masks c<e>: boundary edge e is collapsed, its points equal in every coordinate the
+ * kernel reads (== : +0 and -0 are one number, NaN never equal) and every coordinate finite. */
+static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
+{
+    static const char crd[] = "xyzw";
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD, e, k, c;
+    sbuf_printf(o, "        /* Certified, degenerate rule: c<e> where boundary edge e is collapsed (its points\n"
+                   "         * equal, every coordinate finite); the planes it zeros are then exactly 0. */\n"
+                   "        const %svm fin =", px);
+    for (k = 0; k < d->npoints; k++)
+        for (c = 0; c < 4; c++)
+            if (world || c != 2)
+                sbuf_printf(o, "%s(%c%d - %c%d == 0.0f)", c ? " & " : k ? " &\n            " : "\n            ",
+                            crd[c], k, crd[c], k);
+    sbuf_puts(o, ";\n");
+    for (e = 0; e < tp_domain_edges(d); e++) {
+        int f = edge_first(d, e);
+        sbuf_printf(o, "        const %svm c%d = fin", px, e);
+        for (k = f + 1; k < d->npoints; k++) {
+            int i, j;
+            tp_domain_point_ij(&i, &j, d, k);
+            if (!tp_domain_on_edge(d, e, i, j))
+                continue;
+            sbuf_puts(o, " &\n            ");
+            for (c = 0; c < 4; c++)
+                if (world || c != 2)
+                    sbuf_printf(o, "%s(%c%d == %c%d)", c ? " & " : "", crd[c], k, crd[c], f);
+        }
+        sbuf_puts(o, ";\n");
+    }
+}
+
 /* The loads of every point's coordinates (world: with the eye's products a, b; clip: g = e2 w)
- * and, certified, R and the size guard. */
+ * and, certified, R and the size guard (degenerate rule: and the collapsed edges). */
 static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const cert_bounds *cb)
 {
     const char *px = info->prefix;
@@ -367,6 +469,8 @@ static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const ce
                        "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n",
                     px, px, (double)cb->q_max);
     }
+    if (zeros_certified(info))
+        put_collapsed(o, &t->dom, info);
 }
 
 /* With d: d[P * ds + l] = the value v of plane P of each patch l times 1/c_P (its scale), which
@@ -398,16 +502,36 @@ static size_t put_exact(sbuf *o, const slp_prog *p, size_t a, int world, const c
     return i;
 }
 
-/* Plane P's value v into the masks (set by the first plane, certified: by the size guard). */
-static void put_masks(sbuf *o, const cert_bounds *cb, const out_info *info, int plane, int first)
+/* Appends "(cond)", or "((cond) | c0 | c2)" with the masks of the collapsed edges in bits zero. */
+static void put_cond(sbuf *o, const char *cond, unsigned zero)
 {
+    int e;
+    sbuf_printf(o, zero ? "((%s)" : "(%s", cond);
+    for (e = 0; e < 8; e++)
+        if (zero >> e & 1)
+            sbuf_printf(o, " | c%d", e);
+    sbuf_puts(o, ")");
+}
+
+/* Plane P's value v into the masks (set by the first plane, certified: by the size guard; under
+ * the degenerate rule a plane that a collapsed edge zeros counts as both < 0 and > 0). */
+static void put_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
+                      int plane, int first)
+{
+    static const char *const mask[4] = {"notlt", "notgt", "plt", "pgt"};
+    static const char *const cond[4] = {"v < -t", "v > t", "v < 0.0f", "v > 0.0f"};
+    unsigned zero = zeros_certified(info) ? p->zero[plane] : 0;
     const char *op = first ? "=" : "|=";
-    if (info->certified)
-        sbuf_printf(o, "        t = %.8ef * ER3 + %.8ef * F; /* the bound of plane %d */\n"
-                       "        notlt |= (v < -t) == 0;\n        notgt |= (v > t) == 0;\n"
-                       "        plt %s (v < 0.0f) == 0;\n        pgt %s (v > 0.0f) == 0;\n",
-                    (double)cb->k[plane], (double)cb->k2[plane], plane, op, op);
-    else if (info->rule == OUT_STRICT)
+    int i;
+    if (info->certified) {
+        sbuf_printf(o, "        t = %.8ef * ER3 + %.8ef * F; /* the bound of plane %d */\n",
+                    (double)cb->k[plane], (double)cb->k2[plane], plane);
+        for (i = 0; i < 4; i++) { /* notlt, notgt: set by the size guard */
+            sbuf_printf(o, "        %s %s ", mask[i], i < 2 ? "|=" : op);
+            put_cond(o, cond[i], zero);
+            sbuf_puts(o, " == 0;\n");
+        }
+    } else if (info->rule == OUT_STRICT)
         sbuf_printf(o, "        notlt %s (v < 0.0f) == 0;\n        notgt %s (v > 0.0f) == 0; /* plane %d */\n",
                     op, op, plane);
     else
@@ -437,7 +561,7 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
                 i++;
         }
         put_value_store(o, p, plane, px);
-        put_masks(o, cb, info, plane, plane == p->terms[0].plane);
+        put_masks(o, p, cb, info, plane, plane == p->terms[0].plane);
     }
     free(done);
     return PTP_OK;
@@ -611,8 +735,8 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
 
 /* The second look, if any, and the three entry points on the lanes: classify (one patch),
  * classify_soa and classify_batch (patch-major). */
-static int put_entries(sbuf *o, const tp_table *t, const out_info *info, const char *up,
-                       ptp_error *err)
+static int put_entries(sbuf *o, const tp_table *t, const slp_prog *p, const out_info *info,
+                       const char *up, ptp_error *err)
 {
     /* what silhouette patches get a second look from: refinement, or certification in double */
     const char *second = info->refine ? "refined" : info->certified ? "certify64" : NULL;
@@ -622,7 +746,7 @@ static int put_entries(sbuf *o, const tp_table *t, const out_info *info, const c
              info->certified ? "3u" : "SILHOUETTE");
     if (info->refine)
         emit_c_refine(o, t, info, up);
-    else if (info->certified && (st = put_certify64(o, t, info, up, err)) != PTP_OK)
+    else if (info->certified && (st = put_certify64(o, t, p, info, up, err)) != PTP_OK)
         return st;
     put_classify(o, info, up, second, again);
     put_classify_batch(o, info, up, second, again);
@@ -647,7 +771,7 @@ static int put_code(sbuf *o, char *flops, char *muls, const tp_table *t, const o
     if (!st)
         st = put_lanes(o, &prog, &cb, t, info, up, err);
     if (!st)
-        st = put_entries(o, t, info, up, err);
+        st = put_entries(o, t, &prog, info, up, err);
     cert_clear(&cb);
     slp_clear(&prog);
     return st;

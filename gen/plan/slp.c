@@ -51,11 +51,12 @@ static int by_scale(const void *a, const void *b)
     return (x->index > y->index) - (x->index < y->index);
 }
 
-/* 1 if every term of plane P (terms [a, b) of p) has two points on one boundary edge of d: a
- * collapsed edge then zeros every bracket, and the plane needs the exact form. */
-static int plane_exact(const slp_prog *p, const tp_domain *d, size_t a, size_t b)
+/* The boundary edges e of d (bit e) on which every term of a plane (terms [a, b) of p) has two
+ * points: collapsing any of them zeros every bracket, and the plane needs the exact form. */
+static unsigned char plane_zero(const slp_prog *p, const tp_domain *d, size_t a, size_t b)
 {
     int e, c, i;
+    unsigned char z = 0;
     size_t x;
     for (e = 0; e < tp_domain_edges(d); e++) {
         for (x = a; x < b; x++) {
@@ -68,9 +69,9 @@ static int plane_exact(const slp_prog *p, const tp_domain *d, size_t a, size_t b
                 break;
         }
         if (x == b)
-            return 1;
+            z |= (unsigned char)(1u << e);
     }
-    return 0;
+    return z;
 }
 
 /* Orders fused entries by group (which orders planes), point, then pair. */
@@ -93,7 +94,8 @@ static void plan_forms(slp_prog *p, const tp_domain *d)
     for (a = 0; a < p->nterms; a = b) {
         for (b = a; b < p->nterms && p->terms[b].plane == p->terms[a].plane; b++)
             ;
-        p->exact[p->terms[a].plane] = (unsigned char)plane_exact(p, d, a, b);
+        p->zero[p->terms[a].plane] = plane_zero(p, d, a, b);
+        p->exact[p->terms[a].plane] = p->zero[p->terms[a].plane] != 0;
         for (i = a; i < b && !p->exact[p->terms[a].plane]; i++)
             for (k = 0; k < 3; k++) {
                 const slp_term *x = &p->terms[i];
@@ -119,8 +121,10 @@ int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
     p->c = calloc((size_t)t->dom.nplanes, sizeof *p->c);
     p->terms = malloc(n * sizeof *p->terms);
     p->exact = calloc((size_t)t->dom.nplanes, 1);
+    p->zero = calloc((size_t)t->dom.nplanes, 1);
     p->entries = malloc(3 * n * sizeof *p->entries);
-    if (!pair_of || !sc || !p->pairs || !p->s || !p->c || !p->terms || !p->exact || !p->entries) {
+    if (!pair_of || !sc || !p->pairs || !p->s || !p->c || !p->terms || !p->exact || !p->zero ||
+        !p->entries) {
         st = ptp_fail(err, PTP_ENOMEM, "out of memory building the straight-line program");
         goto done;
     }
@@ -180,6 +184,7 @@ void slp_clear(slp_prog *p)
     free(p->c);
     free(p->terms);
     free(p->exact);
+    free(p->zero);
     free(p->entries);
     memset(p, 0, sizeof *p);
 }

@@ -37,6 +37,9 @@ typedef struct {
     rat *c;          /* the scale c_P > 0 of every plane: its value is c_P times the true one */
     slp_term *terms; /* by plane, then group */
     unsigned char *exact; /* per plane: 1 for the exact bracket form, 0 when fused */
+    unsigned char *zero;  /* per plane: bit e set when every term has two points on boundary
+                             edge e (tp_domain_on_edge), so that collapsing e zeros the plane
+                             exactly; a plane is exact iff zero is nonzero */
     size_t nentries;
     slp_entry *entries;   /* of the fused planes, by plane, group, point, then pair */
 } slp_prog;
