@@ -166,12 +166,10 @@ int main(int argc, char **argv)
     kref_args o;
     kref_ref ref;
     char label[200];
-    int ok = 1;
-    if (kref_parse_args(&o, argc, argv, "host_mesh", 0))
-        return 2;
+    int ok = 1, st;
     memset(&r, 0, sizeof r);
-    if (kref_init_args(&ref, &o))
-        return 1;
+    if ((st = kref_start(&o, &ref, NULL, argc, argv, "host_mesh", 0)))
+        return st;
     if (o.kind != TP_TRI || o.n != 1 || ref.K != MACRO(POINTS)) {
         kref_clear(&ref);
         return !check(0, o.label, "the mesh entry points are the degree-1 triangle's");
