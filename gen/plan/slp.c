@@ -1,6 +1,7 @@
 /* slp.c: builds the straight-line program of slp.h from the exact table: per-plane integer
- * weights grouped by value, the 2x2 minors that terms share, and each plane's form. */
+ * weights grouped by value, the 2x2 minors that terms share, and the planes a collapsed edge zeros. */
 #include "plan/slp.h"
+#include "plan/slp_cost.h"
 #include "core/i128.h"
 
 #include <stdlib.h>
@@ -85,8 +86,8 @@ static int by_entry(const void *a, const void *b)
     return (x->pair > y->pair) - (x->pair < y->pair);
 }
 
-/* Marks each plane exact or fused and lists the fused planes' entries (p->entries holds
- * 3 nterms). */
+/* Marks each plane exact or fused (the zero planes exact, the others by slp_cost_forms) and
+ * lists the fused planes' entries (p->entries holds 3 nterms). */
 static void plan_forms(slp_prog *p, const tp_domain *d)
 {
     size_t a, b, i;
@@ -95,15 +96,15 @@ static void plan_forms(slp_prog *p, const tp_domain *d)
         for (b = a; b < p->nterms && p->terms[b].plane == p->terms[a].plane; b++)
             ;
         p->zero[p->terms[a].plane] = plane_zero(p, d, a, b);
-        p->exact[p->terms[a].plane] = p->zero[p->terms[a].plane] != 0;
-        for (i = a; i < b && !p->exact[p->terms[a].plane]; i++)
-            for (k = 0; k < 3; k++) {
-                const slp_term *x = &p->terms[i];
-                /* the bracket's middle product is subtracted */
-                p->entries[p->nentries++] = (slp_entry){x->plane, x->group, x->point[k],
-                                                        x->pair[k], x->neg ^ (k == 1)};
-            }
     }
+    slp_cost_forms(p);
+    for (i = 0; i < p->nterms; i++)
+        for (k = 0; k < 3 && !p->exact[p->terms[i].plane]; k++) {
+            const slp_term *x = &p->terms[i];
+            /* the bracket's middle product is subtracted */
+            p->entries[p->nentries++] = (slp_entry){x->plane, x->group, x->point[k], x->pair[k],
+                                                    x->neg ^ (k == 1)};
+        }
     qsort(p->entries, p->nentries, sizeof *p->entries, by_entry);
 }
 

@@ -12,9 +12,10 @@
  * clip space (e = (0, 0, e2, 0)) only kind 1 with G_1(x) = e2 x3. Two equal points in a term
  * make its bracket exactly zero in float arithmetic without contracted multiply-adds, so a plane
  * whose terms all vanish is exactly zero. That form is kept on the exact planes: those whose every
- * term has two points on one boundary edge, which a collapsed edge (all its points equal) zeros.
- * Every other plane is fused: per group, sum over its points b of G_K(b) times the signed sum of
- * the minors b meets in its terms, with multiply-adds:
+ * term has two points on one boundary edge, which a collapsed edge (all its points equal) zeros,
+ * and those where the cost model (plan/slp_cost.h) finds that fusing does not pay. The other
+ * planes are fused: per group, sum over its points b of G_K(b) times the signed sum of the
+ * minors b meets in its terms, with multiply-adds:
  *     s * sum over b of sum over kinds K of G_K(b) * (sum of +-M_K over b's terms in the group). */
 typedef struct {
     int k, l; /* the minor M(b_k, b_l), k < l */
@@ -39,7 +40,7 @@ typedef struct {
     unsigned char *exact; /* per plane: 1 for the exact bracket form, 0 when fused */
     unsigned char *zero;  /* per plane: bit e set when every term has two points on boundary
                              edge e (tp_domain_on_edge), so that collapsing e zeros the plane
-                             exactly; a plane is exact iff zero is nonzero */
+                             exactly; a plane with zero nonzero is exact */
     size_t nentries;
     slp_entry *entries;   /* of the fused planes, by plane, group, point, then pair */
 } slp_prog;

@@ -1,0 +1,83 @@
+/* slp_cost.c: per-plane costs of the bracket and the fused form of slp.h's straight-line
+ * program, and the choice between them. */
+#include "plan/slp_cost.h"
+
+enum { LAT_MUL = 3, LAT_ADD = 3, LAT_FMA = 4 };
+
+static long max_l(long x, long y)
+{
+    return x > y ? x : y;
+}
+
+/* The number of distinct points of terms [g, e): the products of the group's fused form. */
+static long group_points(const slp_prog *p, size_t g, size_t e)
+{
+    long n = 0;
+    size_t i, j;
+    int k, m;
+    for (i = g; i < e; i++)
+        for (k = 0; k < 3; k++) {
+            int seen = 0, pt = p->terms[i].point[k];
+            for (j = g; j < i && !seen; j++)
+                for (m = 0; m < 3; m++)
+                    seen |= p->terms[j].point[m] == pt;
+            n += !seen;
+        }
+    return n;
+}
+
+void slp_cost_plane(slp_cost *bracket, slp_cost *fused, const slp_prog *p, size_t a, size_t b)
+{
+    size_t g, e;
+    long groups = 0, cb = 0, cf = 0;
+    rat one;
+    rat_set_si(&one, 1);
+    *bracket = *fused = (slp_cost){0, 0, 0};
+    for (g = a; g < b; g = e, groups++) {
+        long t, pts, scale = !rat_equal(&p->s[p->terms[g].group], &one);
+        for (e = g; e < b && p->terms[e].group == p->terms[g].group; e++)
+            ;
+        t = (long)(e - g);
+        pts = group_points(p, g, e);
+        bracket->muls += 3 * t + scale;
+        bracket->ops += 6 * t - 1 + scale;
+        fused->muls += pts + scale;
+        fused->ops += 3 * t + scale;
+        /* bracket: three products, two sums, then the terms' sums in turn; fused: the sums of a
+           point's minors, then one multiply-add per point in turn */
+        cb = max_l(cb, LAT_MUL + 2 * LAT_ADD + LAT_ADD * (t - 1) + scale * LAT_MUL);
+        cf = max_l(cf, LAT_ADD * (3 * t > pts) + LAT_MUL + LAT_FMA * (pts - 1) + scale * LAT_MUL);
+    }
+    bracket->ops += groups - 1; /* the groups' sum */
+    fused->ops += groups - 1;
+    bracket->chain = cb + LAT_FMA * (groups - 1);
+    fused->chain = cf + LAT_FMA * (groups - 1);
+}
+
+/* The end of plane p->terms[a]'s terms. */
+static size_t plane_end(const slp_prog *p, size_t a)
+{
+    size_t b = a;
+    while (b < p->nterms && p->terms[b].plane == p->terms[a].plane)
+        b++;
+    return b;
+}
+
+void slp_cost_forms(slp_prog *p)
+{
+    long ops = 3L * (long)p->npairs + p->npoints; /* the minors and G's */
+    size_t a, b;
+    slp_cost br, fu;
+    for (a = 0; a < p->nterms; a = plane_end(p, a)) {
+        slp_cost_plane(&br, &fu, p, a, plane_end(p, a));
+        ops += br.ops;
+    }
+    for (a = 0; a < p->nterms; a = b) {
+        int plane = p->terms[a].plane;
+        b = plane_end(p, a);
+        slp_cost_plane(&br, &fu, p, a, b);
+        p->exact[plane] = p->zero[plane] || fu.ops >= br.ops ||
+                          (ops <= SLP_COST_ICACHE_OPS &&
+                           2 * (br.ops - fu.ops) < 3 * (fu.chain - br.chain));
+    }
+}
