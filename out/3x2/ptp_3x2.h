@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_3X2_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_3X2_FLOPS 1448
-#define PTP_3X2_MULS 822
+#define PTP_3X2_FLOPS 1462
+#define PTP_3X2_MULS 836
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X2_LANES
 #define PTP_3X2_LANES 16
@@ -822,28 +822,18 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_3x2_vf m1_8 = x1 * y8 - y1 * x8;
-        u = g0 * (-m1_8);
         const ptp_3x2_vf m0_8 = x0 * y8 - y0 * x8;
-        u = PTP_3X2_VFMA(g1, m0_8 - m2_6, u);
-        u = PTP_3X2_VFMA(g2, m1_6, u);
-        u = PTP_3X2_VFMA(g6, -m1_2, u);
-        u = PTP_3X2_VFMA(g8, -m0_1, u);
+        u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
+        u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v = 2.0f * u;
         const ptp_3x2_vf m4_5 = x4 * y5 - y4 * x5;
-        u = g0 * (m4_5);
-        u = PTP_3X2_VFMA(g2, m3_4, u);
-        u = PTP_3X2_VFMA(g3, -m2_4, u);
-        u = PTP_3X2_VFMA(g4, m2_3 - m0_5, u);
-        u = PTP_3X2_VFMA(g5, m0_4, u);
+        u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         const ptp_3x2_vf m2_7 = x2 * y7 - y2 * x7;
-        u = g0 * (-m2_7);
-        u = PTP_3X2_VFMA(g2, m0_7, u);
-        u = PTP_3X2_VFMA(g7, -m0_2, u);
+        u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
         v = PTP_3X2_VFMAS(4.0f, u, v);
-        u = g1 * (m3_5);
-        u = PTP_3X2_VFMA(g3, -m1_5, u);
-        u = PTP_3X2_VFMA(g5, m1_3, u);
+        u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
             ptp_3x2_vstoref(d + 7 * ds + l, v * 0.142857149f, n - l);
@@ -930,27 +920,18 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_3x2_vf m1_11 = x1 * y11 - y1 * x11;
-        u = g0 * (-m1_11);
         const ptp_3x2_vf m0_11 = x0 * y11 - y0 * x11;
-        u = PTP_3X2_VFMA(g1, m0_11 - m2_9, u);
-        u = PTP_3X2_VFMA(g2, m1_9, u);
-        u = PTP_3X2_VFMA(g9, -m1_2, u);
-        u = PTP_3X2_VFMA(g11, -m0_1, u);
+        u = -((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
+        u -= ((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
         v = u;
         const ptp_3x2_vf m2_10 = x2 * y10 - y2 * x10;
-        u = g0 * (-m2_10);
-        u = PTP_3X2_VFMA(g2, m0_10, u);
-        u = PTP_3X2_VFMA(g10, -m0_2, u);
+        u = -((g0 * m2_10 - g2 * m0_10) + g10 * m0_2);
         v = PTP_3X2_VFMAS(2.0f, u, v);
         const ptp_3x2_vf m5_7 = x5 * y7 - y5 * x7;
-        u = g0 * (-m5_7);
-        u = PTP_3X2_VFMA(g1, m3_8 - m5_6, u);
-        u = PTP_3X2_VFMA(g2, m3_7, u);
-        u = PTP_3X2_VFMA(g3, -m1_8 - m2_7, u);
-        u = PTP_3X2_VFMA(g5, m1_6 + m0_7, u);
-        u = PTP_3X2_VFMA(g6, -m1_5, u);
-        u = PTP_3X2_VFMA(g7, m2_3 - m0_5, u);
-        u = PTP_3X2_VFMA(g8, m1_3, u);
+        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
+        u += ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
+        u -= ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
+        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = PTP_3X2_VFMAS(9.0f, u, v);
         if (d)
             ptp_3x2_vstoref(d + 12 * ds + l, v * 0.0476190485f, n - l);
@@ -1367,24 +1348,15 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         const ptp_3x2_vf m10_11 = x10 * y11 - y10 * x11;
-        u = g0 * (m10_11);
-        u = PTP_3X2_VFMA(g2, m9_10, u);
-        u = PTP_3X2_VFMA(g9, -m2_10, u);
-        u = PTP_3X2_VFMA(g10, m2_9 - m0_11, u);
-        u = PTP_3X2_VFMA(g11, m0_10, u);
+        u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
+        u += ((g2 * m9_10 - g9 * m2_10) + g10 * m2_9);
         v = u;
-        u = g1 * (m9_11);
-        u = PTP_3X2_VFMA(g9, -m1_11, u);
-        u = PTP_3X2_VFMA(g11, m1_9, u);
+        u = ((g1 * m9_11 - g9 * m1_11) + g11 * m1_9);
         v = PTP_3X2_VFMAS(2.0f, u, v);
-        u = g3 * (-m8_10);
-        u = PTP_3X2_VFMA(g4, m6_11 - m8_9, u);
-        u = PTP_3X2_VFMA(g5, m6_10, u);
-        u = PTP_3X2_VFMA(g6, -m4_11 - m5_10, u);
-        u = PTP_3X2_VFMA(g8, m3_10 + m4_9, u);
-        u = PTP_3X2_VFMA(g9, -m4_8, u);
-        u = PTP_3X2_VFMA(g10, m5_6 - m3_8, u);
-        u = PTP_3X2_VFMA(g11, m4_6, u);
+        u = -((g3 * m8_10 - g8 * m3_10) + g10 * m3_8);
+        u += ((g4 * m6_11 - g6 * m4_11) + g11 * m4_6);
+        u -= ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
+        u += ((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
         v = PTP_3X2_VFMAS(9.0f, u, v);
         if (d)
             ptp_3x2_vstoref(d + 27 * ds + l, v * 0.0476190485f, n - l);
@@ -1458,25 +1430,15 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 31 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 31 */
-        u = g3 * (m10_11);
-        u = PTP_3X2_VFMA(g5, m9_10, u);
-        u = PTP_3X2_VFMA(g9, -m5_10, u);
-        u = PTP_3X2_VFMA(g10, m5_9 - m3_11, u);
-        u = PTP_3X2_VFMA(g11, m3_10, u);
+        u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
+        u += ((g5 * m9_10 - g9 * m5_10) + g10 * m5_9);
         v = 2.0f * u;
-        u = g6 * (-m7_11);
-        u = PTP_3X2_VFMA(g7, m6_11 - m8_9, u);
-        u = PTP_3X2_VFMA(g8, m7_9, u);
-        u = PTP_3X2_VFMA(g9, -m7_8, u);
-        u = PTP_3X2_VFMA(g11, -m6_7, u);
+        u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
+        u -= ((g7 * m8_9 - g8 * m7_9) + g9 * m7_8);
         v = PTP_3X2_VFMAS(3.0f, u, v);
-        u = g4 * (m9_11);
-        u = PTP_3X2_VFMA(g9, -m4_11, u);
-        u = PTP_3X2_VFMA(g11, m4_9, u);
+        u = ((g4 * m9_11 - g9 * m4_11) + g11 * m4_9);
         v = PTP_3X2_VFMAS(4.0f, u, v);
-        u = g6 * (-m8_10);
-        u = PTP_3X2_VFMA(g8, m6_10, u);
-        u = PTP_3X2_VFMA(g10, -m6_8, u);
+        u = -((g6 * m8_10 - g8 * m6_10) + g10 * m6_8);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
             ptp_3x2_vstoref(d + 32 * ds + l, v * 0.142857149f, n - l);
