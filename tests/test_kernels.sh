@@ -527,11 +527,12 @@ for space in clip world; do
         fi
     done
 done
-# mutant_caught RULE MARK LABEL: the mutated certified clip header $tmp/k.h (of --rule RULE), which
-# must contain MARK (a grep pattern), is caught calling unsafe classes on exact data.
+# mutant_caught RULE MARK LABEL [DATA]: the mutated certified clip header $tmp/k.h (of --rule RULE),
+# which must contain MARK (a grep pattern), is caught calling unsafe classes on exact data (DATA,
+# else $cert_short).
 mutant_caught() {
     if grep -q "$2" "$tmp/k.h" && build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
-        ! "$tmp/host_c" --degree 3 3 --space clip --rule $1 --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
+        ! "$tmp/host_c" --degree 3 3 --space clip --rule $1 --certified ${4:-$cert_short} --name mutant >"$tmp/out" 2>&1 &&
         grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
         ok "$3 is caught unsafe on exact data"
     else
@@ -542,6 +543,11 @@ mutant_caught() {
 # caught calling patches back or front that are not.
 "$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /' "$tmp/k.h"
 mutant_caught strict 'ER3 \* 0x1p-10f' "a certified C header with its bounds 2^10 times too small"
+# The bound is near the errors the exact data reach: 2^6 times too small, it is caught as well
+# (about 40 unsafe of 10^6; with each plane's largest rounding depth for all its monomials and
+# E R^3 for every monomial, the bound was about twice as loose, and such a mutant was unsafe once).
+"$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-6f + /' "$tmp/k.h"
+mutant_caught strict 'ER3 \* 0x1p-6f' "a certified C header with its bounds 2^6 times too small" "$cert_data"
 # Certified C headers under the degenerate rule: a plane that a collapsed boundary edge zeros is
 # exactly 0 there, so they keep the degenerate rule's culls of such patches (the teapot's lid and
 # bottom, and the random sets' collapsed quarter) while staying safe on the exact data. Headers

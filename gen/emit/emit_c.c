@@ -366,10 +366,10 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
         sbuf_puts(o, "    const float e2 = eye[2];\n");
     if (info->certified) {
         if (world)
-            sbuf_printf(o, "    float E = 0.0f;\n"
-                           "    E = %sABSMAX(E, e0);\n    E = %sABSMAX(E, e1);\n"
-                           "    E = %sABSMAX(E, e2);\n    E = %sABSMAX(E, e3);\n",
-                        up, up, up, up);
+            sbuf_printf(o, "    const float E0 = %sABSMAX(0.0f, e0), E1 = %sABSMAX(0.0f, e1),\n"
+                           "        E2 = %sABSMAX(0.0f, e2), E3 = %sABSMAX(0.0f, e3);\n"
+                           "    const float E = %sABSMAX(%sABSMAX(E0, E1), %sABSMAX(E2, E3));\n",
+                        up, up, up, up, up, up, up);
         else
             sbuf_printf(o, "    const float E = %sABSMAX(0.0f, e2);\n", up);
     }
@@ -434,8 +434,43 @@ static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
     }
 }
 
+/* Certified: the largest |coordinate| Rc of each coordinate c the kernel reads, their maximum R,
+ * ER3 >= every monomial's magnitude (clip: E Rx Ry Rw; world: |e_i| times the other three
+ * coordinates' Rc, e_i x_j y_k z_l with i, j, k, l distinct), F, and the size guard. */
+static void put_magnitudes(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb)
+{
+    static const char crd[] = "xyzw";
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD, k, c;
+    float k2 = 0;
+    sbuf_puts(o, "        /* Certified: Rc, the largest |coordinate c|, bound every value's rounding error. */\n");
+    for (c = 0; c < 4; c++)
+        if (world || c != 2)
+            sbuf_printf(o, "        %svf R%c = %svabsmax(%c0, %c0);\n", px, crd[c], px, crd[c], crd[c]);
+    for (k = 1; k < npoints; k++)
+        for (c = 0; c < 4; c++)
+            if (world || c != 2)
+                sbuf_printf(o, "        R%c = %svabsmax(R%c, %c%d);\n", crd[c], px, crd[c], crd[c], k);
+    if (world)
+        sbuf_printf(o, "        const %svf R = %svabsmax(%svabsmax(Rx, Ry), %svabsmax(Rz, Rw)), R3 = R * R * R;\n"
+                       "        const %svf ER3 = %svabsmax(%svabsmax(E0 * Ry, E1 * Rx) * (Rz * Rw),\n"
+                       "                                   %svabsmax(E2 * Rw, E3 * Rz) * (Rx * Ry));\n",
+                    px, px, px, px, px, px, px, px);
+    else
+        sbuf_printf(o, "        const %svf R = %svabsmax(%svabsmax(Rx, Ry), Rw), R3 = R * R * R;\n"
+                       "        const %svf ER3 = E * (Rx * Ry * Rw);\n",
+                    px, px, px, px);
+    for (k = 0; k < cb->nplanes; k++)
+        k2 = cb->k2[k] > k2 ? cb->k2[k] : k2;
+    sbuf_printf(o, "        /* F: the underflow term of every plane's bound, with the largest K2. */\n"
+                   "        const %svf F = %.8ef * ((1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E));\n"
+                   "        /* Patches too large for the bound (or NaN) are never certified. */\n"
+                   "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n",
+                px, (double)k2, (double)cb->q_max);
+}
+
 /* The loads of every point's coordinates (world: with the eye's products a, b; clip: g = e2 w)
- * and, certified, R and the size guard (degenerate rule: and the collapsed edges). */
+ * and, certified, the magnitudes and the size guard (degenerate rule: and the collapsed edges). */
 static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const cert_bounds *cb)
 {
     const char *px = info->prefix;
@@ -452,23 +487,8 @@ static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const ce
                            "            w%d = %svload(q + %d * qs), g%d = e2 * w%d;\n",
                         px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 3, k, k);
     }
-    if (info->certified) {
-        sbuf_printf(o, "        /* Certified: R, the largest |coordinate|, bounds every value's rounding error. */\n"
-                       "        %svf R = %svabsmax(x0, x0);\n", px, px);
-        for (k = 0; k < t->dom.npoints; k++) {
-            if (k > 0)
-                sbuf_printf(o, "        R = %svabsmax(R, x%d);\n", px, k);
-            sbuf_printf(o, "        R = %svabsmax(R, y%d);\n", px, k);
-            if (world)
-                sbuf_printf(o, "        R = %svabsmax(R, z%d);\n", px, k);
-            sbuf_printf(o, "        R = %svabsmax(R, w%d);\n", px, k);
-        }
-        sbuf_printf(o, "        const %svf R3 = R * R * R, ER3 = E * R3;\n"
-                       "        const %svf F = (1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E);\n"
-                       "        /* Patches too large for the bound (or NaN) are never certified. */\n"
-                       "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n",
-                    px, px, (double)cb->q_max);
-    }
+    if (info->certified)
+        put_magnitudes(o, t->dom.npoints, info, cb);
     if (zeros_certified(info))
         put_collapsed(o, &t->dom, info);
 }
@@ -524,8 +544,8 @@ static void put_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const o
     const char *op = first ? "=" : "|=";
     int i;
     if (info->certified) {
-        sbuf_printf(o, "        t = %.8ef * ER3 + %.8ef * F; /* the bound of plane %d */\n",
-                    (double)cb->k[plane], (double)cb->k2[plane], plane);
+        sbuf_printf(o, "        t = %.8ef * ER3 + F; /* the bound of plane %d */\n",
+                    (double)cb->k[plane], plane);
         for (i = 0; i < 4; i++) { /* notlt, notgt: set by the size guard */
             sbuf_printf(o, "        %s %s ", mask[i], i < 2 ? "|=" : op);
             put_cond(o, cond[i], zero);

@@ -20,9 +20,11 @@ static float float_up(double x)
     return f;
 }
 
-/* Fills b from per-plane depth d, weight sum S and rounded-product count n (arrays of L). */
-static void fill(cert_bounds *b, const double *d, const double *S, const double *n, int world,
-                 double eta)
+/* Fills b from per-plane depth d (the most roundings on a path), depth-weighted mass D (the sum
+ * over monomials of its roundings times |weight|, m monomials a term), weight sum S and
+ * rounded-product count n (arrays of L). */
+static void fill(cert_bounds *b, const double *d, const double *D, const double *S, const double *n,
+                 int world, double eta)
 {
     const double u = 0x1p-24, m = world ? 24 : 6;
     /* (1 - u)^-10 for the float evaluation of the bound, 1 + 2^-40 for this double arithmetic */
@@ -30,7 +32,8 @@ static void fill(cert_bounds *b, const double *d, const double *S, const double 
     double smax = 0;
     int i;
     for (i = 0; i < b->nplanes; i++) {
-        double gamma = d[i] * u / (1 - d[i] * u), k = gamma * m * S[i] * widen;
+        /* gamma_k <= k u / (1 - d u) for every k <= d */
+        double k = u / (1 - d[i] * u) * D[i] * widen;
         b->k[i] = float_up(k);
         /* eta per product, scaled by at most 2 (1 + R)^3 (1 + E) and the weights; doubled
          * again for the rounding of a subnormal K2 * F. */
@@ -49,8 +52,8 @@ static void fill(cert_bounds *b, const double *d, const double *S, const double 
     b->q_max = (float)(0x1p120 / (smax + 1));
 }
 
-static int alloc(cert_bounds *b, int nplanes, int with64, double **d, double **S, double **n,
-                 ptp_error *err)
+static int alloc(cert_bounds *b, int nplanes, int with64, double **d, double **D, double **S,
+                 double **n, ptp_error *err)
 {
     memset(b, 0, sizeof *b);
     b->nplanes = nplanes;
@@ -60,9 +63,10 @@ static int alloc(cert_bounds *b, int nplanes, int with64, double **d, double **S
         b->k64 = malloc((size_t)nplanes * sizeof *b->k64);
         b->k2_64 = malloc((size_t)nplanes * sizeof *b->k2_64);
     }
-    *d = calloc((size_t)nplanes * 3, sizeof **d);
-    *S = *d ? *d + nplanes : NULL;
-    *n = *d ? *d + 2 * nplanes : NULL;
+    *d = calloc((size_t)nplanes * 4, sizeof **d);
+    *D = *d ? *d + nplanes : NULL;
+    *S = *d ? *d + 2 * nplanes : NULL;
+    *n = *d ? *d + 3 * nplanes : NULL;
     if (b->k && b->k2 && *d && (!with64 || (b->k64 && b->k2_64)))
         return PTP_OK;
     free(*d);
@@ -87,32 +91,43 @@ static void table_sums(double *d, double *S, double *n, const tp_table *t, doubl
 
 int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
 {
-    double *d, *S, *n;
-    int st = alloc(b, t->dom.nplanes, 1, &d, &S, &n, err);
+    double *d, *D, *S, *n;
+    int st = alloc(b, t->dom.nplanes, 1, &d, &D, &S, &n, err), i;
     if (st)
         return st;
     table_sums(d, S, n, t, world ? 44 : 12);
-    fill(b, d, S, n, world, 0x1p-126); /* GPUs may flush subnormals to zero */
+    for (i = 0; i < b->nplanes; i++) /* every monomial at depth d */
+        D[i] = d[i] * (world ? 24 : 6) * S[i];
+    fill(b, d, D, S, n, world, 0x1p-126); /* GPUs may flush subnormals to zero */
     free(d);
     return PTP_OK;
 }
 
-/* The most roundings on a path to fused plane P's value, from entry a (README: Certified): a
- * minor (2) and G (1, world 2) into a product with the signed sum of its point's minors; a
- * multiply-add counts as a product and a sum (two roundings where the target has no FMA), and
- * each later multiply-add of the group's chain and of the plane's groups rounds once more. */
-static double fused_depth(const slp_prog *p, size_t a, int world)
+/* Roundings on the path from a group's u to its plane's value: the product by s (or one more
+ * rounding where s is 1), and the plane's chain: group gi of groups (README: Certified). */
+static double group_depth(int gi, int groups)
+{
+    return 1 + (gi > 0) + (groups - 1 - gi);
+}
+
+/* Fused plane P from entry a (README: Certified): into d[P] the most roundings on a path, into
+ * D[P] the sum over its monomials of their path's roundings times |s|. Run j of a group (a point
+ * b and a kind K: G_K(b) times the signed sum of b's n minors) has 2 n (world: 4 n) monomials,
+ * each through a minor (2) and G (1, world 2), the n - 1 sums of the minors, the product with G
+ * (a multiply-add counts as a product and a sum: two roundings where the target has no FMA),
+ * the first multiply-add after it (j > 0) and the runs - 1 - j later ones of the group. */
+static void fused_sums(double *d, double *D, const slp_prog *p, size_t a, int world)
 {
     int plane = p->entries[a].plane, kinds = world ? 2 : 1, groups = 0, gi = 0;
-    double best = 0;
     size_t g, e, b, i;
     rat one;
     rat_set_si(&one, 1);
     for (g = a; g < p->nentries && p->entries[g].plane == plane; g = slp_group_end(p, g))
         groups++;
     for (g = a; g < p->nentries && p->entries[g].plane == plane; g = e, gi++) {
+        const double s = rat_get_d(&p->s[p->entries[g].group]);
+        double tail = group_depth(gi, groups) - rat_equal(&p->s[p->entries[g].group], &one);
         int runs = 0, j = 0;
-        double u = 0;
         e = slp_group_end(p, g);
         for (b = g; b < e; b = slp_point_end(p, b))
             runs += kinds;
@@ -121,13 +136,35 @@ static double fused_depth(const slp_prog *p, size_t a, int world)
             i = slp_point_end(p, b);
             for (k = 0; k < kinds; k++, j++) {
                 double r = (world ? 2 : 1) + 2 + (double)(i - b - 1) + 1 + (j > 0) + (runs - 1 - j);
-                u = r > u ? r : u;
+                d[plane] = r + tail > d[plane] ? r + tail : d[plane];
+                D[plane] += (r + tail) * (double)(i - b) * (world ? 4 : 2) * s * (1 + 0x1p-50);
             }
         }
-        u += !rat_equal(&p->s[p->entries[g].group], &one) + (gi > 0) + (groups - 1 - gi);
-        best = u > best ? u : best;
     }
-    return best;
+}
+
+/* Exact plane P from term a (README: Certified): d[P] and D[P] as for fused_sums. Term q of a
+ * group of L (u = t_0; u += t_1 ...) has 7 (world 8) roundings in its bracket, L - max(q, 1) in
+ * the group's sum, one more, and the group's path to the plane's value. Returns the next term. */
+static size_t exact_sums(double *d, double *D, const slp_prog *p, size_t a, int world)
+{
+    int plane = p->terms[a].plane, groups = 0, gi = 0;
+    size_t g, e, i;
+    for (g = a; g < p->nterms && p->terms[g].plane == plane; g = e, groups++)
+        for (e = g; e < p->nterms && p->terms[e].group == p->terms[g].group; e++)
+            ;
+    for (g = a; g < p->nterms && p->terms[g].plane == plane; g = e, gi++) {
+        const double s = rat_get_d(&p->s[p->terms[g].group]);
+        for (e = g; e < p->nterms && p->terms[e].group == p->terms[g].group; e++)
+            ;
+        for (i = g; i < e; i++) {
+            double q = (double)(i - g), r = (world ? 8 : 7) + (double)(e - g) - (q > 1 ? q : 1) + 1 +
+                                            group_depth(gi, groups);
+            d[plane] = r > d[plane] ? r : d[plane];
+            D[plane] += r * (world ? 24 : 6) * s * (1 + 0x1p-50);
+        }
+    }
+    return g;
 }
 
 int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
@@ -136,8 +173,8 @@ int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
      * most 7u^2 and 2^-47), doubled; (1 - u2)^-1 and the 2^-50 of the double sums below are in
      * float_up's widening. */
     const double u2 = 0x1p-44, widen = 1.0000006 * (1 + 0x1p-40);
-    double *d, *S, *n, smax = 0;
-    int st = alloc(b, t->dom.nplanes, 0, &d, &S, &n, err), i;
+    double *d, *D, *S, *n, smax = 0;
+    int st = alloc(b, t->dom.nplanes, 0, &d, &D, &S, &n, err), i;
     if (st)
         return st;
     table_sums(d, S, n, t, world ? 2048 : 512); /* float operations of a term, generously */
@@ -155,25 +192,24 @@ int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
 
 int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)
 {
-    double *d, *S, *n;
+    double *d, *D, *S, *n;
     size_t i;
-    int st = alloc(b, p->nplanes, 0, &d, &S, &n, err);
+    int st = alloc(b, p->nplanes, 0, &d, &D, &S, &n, err);
     if (st)
         return st;
     for (i = 0; i < p->nterms; i++) {
         const slp_term *x = &p->terms[i];
-        int first = i == 0 || p->terms[i - 1].group != x->group;
-        if (p->exact[x->plane])
-            d[x->plane] += first ? 2 : 1; /* the term's sum, and the group's */
         S[x->plane] += rat_get_d(&p->s[x->group]) * (1 + 0x1p-50);
         n[x->plane] += world ? 32 : 12;
     }
-    for (i = 0; i < (size_t)p->nplanes; i++)
-        if (p->exact[i])
-            d[i] += world ? 8 : 7;
+    for (i = 0; i < p->nterms;)
+        if (p->exact[p->terms[i].plane])
+            i = exact_sums(d, D, p, i, world);
+        else
+            i++;
     for (i = 0; i < p->nentries; i = slp_plane_end(p, i))
-        d[p->entries[i].plane] = fused_depth(p, i, world);
-    fill(b, d, S, n, world, 0x1p-150); /* IEEE float with subnormals */
+        fused_sums(d, D, p, i, world);
+    fill(b, d, D, S, n, world, 0x1p-150); /* IEEE float with subnormals */
     free(d);
     return PTP_OK;
 }

@@ -4,12 +4,15 @@
 #define CERT_H
 #include "plan/slp.h"
 /* R is the largest |coordinate| a value reads, E the largest |eye component| (clip: |eye[2]|).
- * For the evaluation with d rounded operations on any path, the error of a plane's value is at
- * most gamma_d times its absolute-value evaluation A <= m S E R^3 (m = 6 monomials per clip term,
- * 24 in world space, S the sum of |weights|), plus at most eta per rounded product for
- * underflow (2^-150 in C; 2^-126 on GPUs, which may flush subnormals to zero), scaled by at most
- * three further factors. K and K2 come rounded up, widened for the
- * float evaluation of the bound (ten roundings) and for their own double computation. */
+ * For an evaluation whose monomial i (times weight w_i) passes d_i rounded operations on its
+ * path, at most d on any, the error of a plane's value is at most
+ *     sum_i gamma_{d_i} |w_i monomial_i| <= u / (1 - d u) * D * M,   D = sum_i d_i |w_i|,
+ * with M >= every |monomial|: E R^3 (the C target: per-coordinate maxima, README: Certified),
+ * plus at most eta per rounded product for underflow (2^-150 in C; 2^-126 on GPUs, which may
+ * flush subnormals to zero), scaled by at most three further factors. K = u D / (1 - d u) and
+ * K2 come rounded up, widened for the float evaluation of the bound (ten roundings) and for their
+ * own double computation. The table loop has d_i = d for all i (D = d m S, m = 6 monomials per
+ * clip term, 24 in world space, S the sum of |weights|); cert_slp counts d_i per monomial. */
 typedef struct {
     float *k, *k2; /* per plane */
     float q_max;   /* certify only patches with max(E, 1) R^3 < q_max: nothing overflows */
@@ -24,7 +27,8 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
  * relative error at most 2^-44, eta = 2^-126 per float operation, and q_max low enough that the
  * splitter's 4097 x never overflows (README: Certified). k64 and k2_64 stay NULL. */
 int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
-/* The bounds of the straight-line program p (the C target's classify), at its planes' scales. */
+/* The bounds of the straight-line program p (the C target's classify), at its planes' scales:
+ * each monomial's roundings d_i from the program's summation trees as emitted. */
 int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err);
 void cert_clear(cert_bounds *b);
 #endif
