@@ -201,7 +201,7 @@ static void put_round(sbuf *o, const tp_table *t, const out_info *info, const ke
 {
     const sched *s = info->sched;
     int P = s->threads, th;
-    char name[32], lit[48];
+    char name[128], lit[48];
     for (th = 0; th < P; th++) {
         long x = s->slot[(long)r * P + th];
         int plane = x >= 0 ? t->terms[x].plane : sched_padding_plane(s, th);
