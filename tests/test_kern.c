@@ -1,10 +1,11 @@
 /* test_kern.c: checks that the GPU emitter writes every construct of the C family through its
- * syntax hooks: a kernel of the WGSL target, whose syntax is of another form, keeps none of C's. */
+ * syntax hooks (a WGSL kernel keeps none of C's), and the GPU kernels' exact-zero edge masks. */
 #include "check.h"
 #include "emit/targets.h"
 #include "plan/sched.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The first line of the kernel's text s (banner and template boilerplate left out: the tables
@@ -32,6 +33,61 @@ static const char *c_construct(const char *s, char *why, size_t size)
             return line;
     }
     return NULL;
+}
+
+/* Reads the values of the table named ptp_zero in s (one a line after its head) into v (room for
+ * n); returns how many, or -1 when s has no such table. */
+static int zero_table(long *v, int n, const char *s)
+{
+    const char *p = strstr(s, "ptp_zero");
+    int k = 0;
+    if (!p || !(p = strchr(p, '\n')))
+        return -1;
+    while (k < n) {
+        char *end;
+        p += strspn(p, " ,u\n");
+        v[k] = strtol(p, &end, 10);
+        if (end == p)
+            break;
+        p = end, k++;
+    }
+    return k;
+}
+
+/* Every GPU target's certified degenerate kernel of t lists the C header's per-plane edge masks
+ * (each computed its own way); the strict rule's kernels list none. */
+static void check_zeros(const tp_table *t, const sched *s)
+{
+    static const char *const targets[] = {"glsl", "hlsl", "opencl", "cuda", "wgsl"};
+    long ref[2][1024], v[1024];
+    int i, c, n[2] = {-1, -1}, k, st;
+    for (i = -1; i < 5; i++)
+        for (c = 0; c < 2; c++) {
+            out_info info = {"test", "ptp_", s, c ? OUT_WORLD : OUT_CLIP, OUT_DEGENERATE, 0, 1, 0, NULL};
+            ptp_error err = {0};
+            char name[160], deg[32];
+            sbuf o;
+            sbuf_init(&o);
+            st = tgt_emit_target(&o, tgt_find(i < 0 ? "c" : targets[i]), t, &info, &err);
+            k = st ? -1 : zero_table(i < 0 ? ref[c] : v, 1024, o.s);
+            sbuf_clear(&o);
+            snprintf(name, sizeof name, "%s %s %s certified degenerate: the edge masks of the C header",
+                     i < 0 ? "c" : targets[i], tp_domain_format(deg, sizeof deg, &t->dom), c ? "world" : "clip");
+            if (i < 0) {
+                n[c] = k;
+                check(k == t->dom.nplanes, name, "%d values, %s", k, err.msg);
+                continue;
+            }
+            check(k == n[c] && k > 0 && !memcmp(ref[c], v, (size_t)k * sizeof *v), name,
+                  "%d values against %d, %s", k, n[c], err.msg);
+            info.rule = OUT_STRICT;
+            sbuf_init(&o);
+            st = tgt_emit_target(&o, tgt_find(targets[i]), t, &info, &err);
+            snprintf(name, sizeof name, "%s %s %s strict certified: no edge masks", targets[i], deg,
+                     c ? "world" : "clip");
+            check(!st && zero_table(v, 1, o.s) < 0, name, "a zero table, or %s", err.msg);
+            sbuf_clear(&o);
+        }
 }
 
 int main(void)
@@ -65,6 +121,7 @@ int main(void)
                       name, "kept: %s", why);
             sbuf_clear(&o);
         }
+        check_zeros(&t, &s);
         sched_clear(&s);
         tp_clear(&t);
     }

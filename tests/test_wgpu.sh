@@ -86,7 +86,8 @@ nan_check() {
     shift 2
     run_host "$name" "$PY" tests/wgsl_nan.py "$file" "$@" "$name"
 }
-for cfg in "1x1 clip --rule strict" "1x1 world --rule degenerate" "2x3 world --certified"; do
+for cfg in "1x1 clip --rule strict" "1x1 world --rule degenerate" "2x3 world --certified" \
+    "2x3 clip --rule degenerate --certified"; do
     set -- $cfg
     d=$1 space=$2
     shift 2

@@ -290,6 +290,20 @@ int tp_domain_on_edge(const tp_domain *d, int e, int i, int j)
     return e == 0 ? i == 0 : e == 1 ? i == d->n : e == 2 ? j == 0 : j == d->m;
 }
 
+unsigned tp_domain_term_edges(const tp_domain *d, const int k[3])
+{
+    unsigned z = 0;
+    int e, x, i, j, c;
+    for (e = 0; e < tp_domain_edges(d); e++) {
+        for (x = 0, c = 0; x < 3; x++) {
+            tp_domain_point_ij(&i, &j, d, k[x]);
+            c += tp_domain_on_edge(d, e, i, j) != 0;
+        }
+        z |= (unsigned)(c >= 2) << e;
+    }
+    return z;
+}
+
 char *tp_domain_format(char *buf, size_t size, const tp_domain *d)
 {
     put_degrees(buf, size, &kinds[d->kind], d->n, d->m, "x");

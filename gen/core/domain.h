@@ -83,6 +83,9 @@ int tp_domain_plane_row_start(const tp_domain *d, int P);
  * 2 k = 0 (i + j = d)). */
 int tp_domain_edges(const tp_domain *d);
 int tp_domain_on_edge(const tp_domain *d, int e, int i, int j);
+/* The boundary edges e of d (bit e) on which at least two of the points k[0..2] lie: collapsing
+ * such an edge (all its points equal) makes the term det[b_k0 b_k1 b_k2 ...] exactly zero. */
+unsigned tp_domain_term_edges(const tp_domain *d, const int k[3]);
 
 /* Writes the degree as --degree reads it ("3x3") to buf (size bytes); returns buf. */
 char *tp_domain_format(char *buf, size_t size, const tp_domain *d);

@@ -24,5 +24,6 @@ const kern_target kern_hlsl = {
         " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
         " * workgroup (x, y) handles the patches of block y * groups_x + x.\n",
     .fabs = "abs", .fmax = "max",
+    .bits = "asuint(%s)",
     .vec2 = "float2", .vec2_make = "float2(%s, %s)",
 };

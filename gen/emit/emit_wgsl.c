@@ -89,4 +89,5 @@ const kern_target kern_wgsl = {
         " * workgroups, in 2-D (x, y) when x would exceed the limit: workgroup (x, y) handles the\n"
         " * patches of block y * num_workgroups.x + x.\n",
     .fabs = "abs", .fmax = "max",
+    .bits = "bitcast<u32>(%s)",
 };

@@ -86,9 +86,11 @@ struct kern_target {
                                   NULL when it is a kernel parameter that may be null */
     const char *interface;     /* the banner's description of bindings / signature and dispatch */
     const char *fabs, *fmax;   /* absolute value and maximum of floats (--certified) */
+    const char *bits;          /* a float's bits as a uint, printf format of the float (--certified
+                                  --rule degenerate: the exact tests of collapsed edges) */
     /* --certified's second look in double-float: the type of two floats (.x hi, .y lo) and its
-     * constructor, a printf format of two floats; NULL: no second look (WGSL: the language
-     * cannot forbid reassociating the error-free transformations). */
+     * constructor, a printf format of two floats; NULL: no second look (WGSL: the language may
+     * reassociate and fuse the error-free transformations and fixes no rounding mode). */
     const char *vec2, *vec2_make;
     /* a fused multiply-add with one rounding, printf format of a, b, c for a * b + c (the second
      * look's exact two-product), or NULL: Dekker's product on Veltkamp's split instead */

@@ -201,7 +201,7 @@ static void put_round(sbuf *o, const tp_table *t, const out_info *info, const ke
 {
     const sched *s = info->sched;
     int P = s->threads, th;
-    char name[32], lit[48];
+    char name[128], lit[48];
     for (th = 0; th < P; th++) {
         long x = s->slot[(long)r * P + th];
         int plane = x >= 0 ? t->terms[x].plane : sched_padding_plane(s, th);
@@ -247,8 +247,38 @@ static void put_bounds(sbuf *o, const out_info *info, const kern_target *g, cons
     cert_clear(cb);
 }
 
+/* Whether the kernel knows exact zeros: --certified under the degenerate rule, where a plane that
+ * a collapsed boundary edge zeros counts as exactly 0 (both <= 0 and >= 0), as in the C header. */
+static int exact_zeros(const out_info *info)
+{
+    return info->certified && info->rule == OUT_DEGENERATE;
+}
+
+/* With exact zeros, the table zero: per plane the boundary edges (bit e) on which every term has
+ * two points, so that collapsing any of them makes the plane exactly 0. */
+static int put_zero_table(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                          ptp_error *err)
+{
+    unsigned long *z = calloc((size_t)t->dom.nplanes, sizeof *z);
+    size_t x;
+    if (!z)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
+    for (x = 0; x < t->nterms; x++) { /* sorted by plane */
+        const tp_term *a = &t->terms[x];
+        int k[3] = {a->j, a->k, a->l};
+        unsigned long e = tp_domain_term_edges(&t->dom, k);
+        z[a->plane] = x > 0 && t->terms[x - 1].plane == a->plane ? z[a->plane] & e : e;
+    }
+    sbuf_puts(o, "/* Degenerate rule: bit e of zero[P] where every term of plane P has two points on boundary\n"
+                 " * edge e, so that the plane is exactly 0 when that edge is collapsed. */\n");
+    put_uint_table(o, g, info->prefix, "zero", z, t->dom.nplanes, 16, 0);
+    sbuf_puts(o, "\n");
+    free(z);
+    return PTP_OK;
+}
+
 /* --certified: QMAX and the bounds' factors tau_k, tau_f of every plane; with the second look,
- * QMAX2, tau2_k and tau2_f of its double-float evaluation too. */
+ * QMAX2, tau2_k and tau2_f of its double-float evaluation too; with exact zeros, zero. */
 static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                            const char *up, ptp_error *err)
 {
@@ -259,6 +289,8 @@ static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, con
     put_bounds(o, info, g, up, &cb, "",
                "/* Certified: |d_P - exact| <= tau_k[P] * E R^3 + tau_f[P] * (1 + R)^3 (1 + E), R the\n"
                " * patch's largest |coordinate|, E the eye's; for max(E, 1) R^3 < ");
+    if (exact_zeros(info) && (st = put_zero_table(o, t, info, g, err)))
+        return st;
     if (!g->vec2)
         return PTP_OK;
     if ((st = cert_table_df(&cb, t, info->space == OUT_WORLD, err)))
@@ -341,6 +373,34 @@ static void put_cross4(sbuf *o, const out_info *info, const kern_target *g)
             g->syntax->locals(o, g, "    ", g->real, &x, 1, 1);
         }
         sbuf_puts(o, "    return e.x * x - e.y * y + e.z * z - e.w * w;\n}\n\n");
+    }
+}
+
+/* With exact zeros, finite(a): every coordinate of a the kernel reads is finite; and same(a, b):
+ * a and b are bitwise equal in those coordinates. Bits, not ==, so that no float mode bends the
+ * test: a flushed subnormal never equals 0 (-0 is not +0 either, which only gives up a cull). */
+static void put_edge_functions(sbuf *o, const out_info *info, const kern_target *g)
+{
+    kern_param p[2] = {{g->vec4, "a"}, {g->vec4, "b"}};
+    char name[128], x[64], y[64], v[8];
+    int c, f, n;
+    for (f = 0; f < 2; f++) {
+        snprintf(name, sizeof name, "%s%s", info->prefix, f ? "same" : "finite");
+        g->syntax->function(o, g, "bool", name, p, f + 1);
+        sbuf_puts(o, "    return ");
+        for (c = 0, n = 0; c < 4; c++) {
+            if (info->space == OUT_CLIP && c == 2)
+                continue; /* clip space reads no z */
+            snprintf(v, sizeof v, "a.%c", "xyzw"[c]);
+            snprintf(x, sizeof x, g->bits, v);
+            v[0] = 'b';
+            snprintf(y, sizeof y, g->bits, v);
+            if (f)
+                sbuf_printf(o, "%s(%s == %s)", n++ ? " &&\n        " : "", x, y);
+            else
+                sbuf_printf(o, "%s((%s & 0x7f800000u) != 0x7f800000u)", n++ ? " &&\n        " : "", x);
+        }
+        sbuf_puts(o, ";\n}\n\n");
     }
 }
 
@@ -590,24 +650,68 @@ static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, 
     sbuf_puts(o, "\n");
 }
 
+/* With exact zeros, col: bit e where boundary edge e of d is collapsed, its points bitwise equal
+ * and every coordinate of the patch finite (fin). */
+static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+                          const char *up)
+{
+    char base[96], bit[16];
+    int e, k, f, i, j;
+    sbuf_puts(o, "    /* Degenerate rule: bit e of col where boundary edge e is collapsed (its points bitwise\n"
+                 "     * equal, every coordinate finite); the planes of zero[] with bit e are then exactly 0. */\n");
+    put_local(o, g, g->uint, "col", "0u", 1);
+    snprintf(base, sizeof base, "q * %sK", up);
+    put_local(o, g, g->uint, "base", base, 0);
+    for (e = 0; e < tp_domain_edges(d); e++) {
+        sbuf cond;
+        char *sel;
+        sbuf_init(&cond);
+        sbuf_puts(&cond, "fin");
+        for (k = 0, f = -1; k < d->npoints; k++) {
+            tp_domain_point_ij(&i, &j, d, k);
+            if (!tp_domain_on_edge(d, e, i, j))
+                continue;
+            if (f < 0)
+                f = k;
+            else
+                sbuf_printf(&cond, " &&\n        %ssame(pts[base + %du], pts[base + %du])", info->prefix, k, f);
+        }
+        snprintf(bit, sizeof bit, "%uu", 1u << e);
+        sel = cond.failed ? NULL : malloc(strlen(cond.s) + 64);
+        if (sel) {
+            g->syntax->select(sel, strlen(cond.s) + 64, cond.s, bit, "0u");
+            sbuf_printf(o, "    col |= %s;\n", sel);
+        }
+        o->failed |= !sel;
+        free(sel);
+        sbuf_clear(&cond);
+    }
+}
+
 /* --certified: R, the patch's largest |coordinate|, E, the eye's, and the terms of the bounds;
- * patches too large for the bound get flags 3 (never certified). */
-static void put_scale(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+ * patches too large for the bound get flags 3 (never certified). With exact zeros, the collapsed
+ * edges of d too. */
+static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+                      const char *up)
 {
     const char *ab = g->fabs, *mx = g->fmax, *f = g->real;
     char e[256];
     kern_var r3[2] = {{"R3", "R * R * R", 0}, {"ER3", "E * R3", 0}};
     sbuf_puts(o, "    /* Certified: R, the patch's largest |coordinate|, and E, the eye's, bound the errors. */\n");
     put_local(o, g, f, "R", "0.0f", 1);
+    if (exact_zeros(info))
+        put_local(o, g, "bool", "fin", "true", 1);
     sbuf_printf(o, "    for (i = 0u; i < %sK; i++) {\n", up);
     snprintf(e, sizeof e, "pts[q * %sK + i]", up);
     g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"a", e, 0}, 1, 0);
     if (info->space == OUT_CLIP)
-        sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(a.w)));\n    }\n", mx, mx, mx, ab,
-                    ab, ab);
+        sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(a.w)));\n", mx, mx, mx, ab, ab, ab);
     else
-        sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(%s(a.z), %s(a.w))));\n    }\n", mx,
-                    mx, mx, ab, ab, mx, ab, ab);
+        sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(%s(a.z), %s(a.w))));\n", mx, mx,
+                    mx, ab, ab, mx, ab, ab);
+    if (exact_zeros(info))
+        sbuf_printf(o, "        fin = fin && %sfinite(a);\n", info->prefix);
+    sbuf_puts(o, "    }\n");
     if (info->space == OUT_CLIP)
         snprintf(e, sizeof e, "%s(eye.z)", ab);
     else
@@ -620,8 +724,21 @@ static void put_scale(sbuf *o, const out_info *info, const kern_target *g, const
     put_then(o, g);
     sbuf_puts(o, "        f = 3u; /* too large for the bound, or NaN: never certified */\n");
     put_end(o, g, "    ");
+    if (exact_zeros(info))
+        put_collapsed(o, d, info, g, up);
     if (second_look(info, g))
         put_local(o, g, g->uint, "pf", "0u", 1); /* the plain float signs' flags */
+}
+
+/* With exact zeros, the local keep of the plane numbered by the expression plane: 0u where a
+ * collapsed edge makes it exactly 0, so that its flags certify both signs; else 3u. */
+static void put_keep(sbuf *o, const out_info *info, const kern_target *g, const char *indent,
+                     const char *plane)
+{
+    char cond[160], e[256];
+    snprintf(cond, sizeof cond, "(%szero[%s] & col) == 0u", info->prefix, plane);
+    g->syntax->select(e, sizeof e, cond, "3u", "0u");
+    g->syntax->locals(o, g, indent, g->uint, &(kern_var){"keep", e, 0}, 1, 0);
 }
 
 /* The values and flags of the owned planes (and with --planes, the values written out). */
@@ -643,12 +760,15 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
         sbuf_printf(o, "            planes[pid * %sL + plane] = d;\n", up);
         put_end(o, g, "        ");
     }
+    if (exact_zeros(info))
+        put_keep(o, info, g, "        ", "plane");
     if (info->certified)
-        sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * ER3 + %stau_f[plane] * F);\n", px, px, px);
+        sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * ER3 + %stau_f[plane] * F)%s;\n", px, px, px,
+                    exact_zeros(info) ? " & keep" : "");
     else
         sbuf_printf(o, "        f |= %sflags(d);\n", px);
     if (second_look(info, g))
-        sbuf_printf(o, "        pf |= %sflags(d, 0.0f);\n", px);
+        sbuf_printf(o, "        pf |= %sflags(d, 0.0f)%s;\n", px, exact_zeros(info) ? " & keep" : "");
     sbuf_puts(o, "    }\n");
 }
 
@@ -715,15 +835,19 @@ static void put_second_look(sbuf *o, const out_info *info, const kern_target *g,
     put_end(o, g, "        ");
     sbuf_printf(o, "        for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n", px, px);
     sbuf_printf(o, "            at = q * %sL + %sown_plane[i];\n", up, px);
+    if (exact_zeros(info)) {
+        snprintf(b, sizeof b, "%sown_plane[i]", px);
+        put_keep(o, info, g, "            ", b);
+    }
     snprintf(a, sizeof a, g->vec2_make, "acc[at]", "acc2[at]");
     if (info->space == OUT_CLIP)
         snprintf(b, sizeof b, "%sdf_mul_f(%s, eye.z)", px, a);
     g->syntax->locals(o, g, "            ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? b : a, 0}, 1, 0);
     sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[%sown_plane[i]] * ER3 +\n"
-                   "                %stau2_f[%sown_plane[i]] * F + 2.0f * %s(d.y));\n"
+                   "                %stau2_f[%sown_plane[i]] * F + 2.0f * %s(d.y))%s;\n"
                    "        }\n    }\n",
-                px, px, px, px, px, g->fabs);
+                px, px, px, px, px, g->fabs, exact_zeros(info) ? " & keep" : "");
 }
 
 /* The end: the threads' flags through shared memory, and thread 0 of a patch writes its class. */
@@ -744,14 +868,15 @@ static void put_combine(sbuf *o, const out_info *info, const kern_target *g, con
 }
 
 /* The kernel body, with the target's names and syntax. */
-static void put_body(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+static void put_body(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+                     const char *up)
 {
     if (g->shared_in_body)
         put_shared(o, info, g, up, "    ");
     put_load(o, g, up);
     put_accumulate(o, info, g, up);
     if (info->certified)
-        put_scale(o, info, g, up);
+        put_scale(o, d, info, g, up);
     put_signs(o, info, g, up);
     if (second_look(info, g))
         put_second_look(o, info, g, up);
@@ -777,10 +902,12 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     fmt_banner(&banner, t, info, file, g->language, g->interface);
     st = put_tables(&tables, t, info, g, up, err);
     put_cross4(&funcs, info, g);
+    if (exact_zeros(info))
+        put_edge_functions(&funcs, info, g);
     if (second_look(info, g))
         put_df_functions(&funcs, info, g);
     put_classify(&funcs, info, g);
-    put_body(&body, info, g, up);
+    put_body(&body, &t->dom, info, g, up);
     slots[n++] = (tpl_slot){"BANNER", banner.s};
     if (g->named_kernel)
         slots[n++] = (tpl_slot){"PREFIX", info->prefix};
