@@ -1323,6 +1323,12 @@ int kref_report(const kref_result *res, const char *name)
            "patches: %zu wrong, %zu undecided in double\n", name, res->kernel_counts[0],
            res->kernel_counts[1], res->kernel_counts[2], res->ambiguous_culled, res->culled_wrong,
            res->culled_undecided);
+    if (res->certified && res->ambiguous_culled) {
+        snprintf(label, sizeof label, "%s: certified: its back or front classes of %zu ambiguous "
+                 "patches agree with the double reference where it decides them", name,
+                 res->ambiguous_culled);
+        ok &= check(res->culled_wrong == 0, label, "%zu wrong", res->culled_wrong);
+    }
     if (res->exact)
         ok &= report_exact(res, name);
     return ok;

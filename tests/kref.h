@@ -198,7 +198,9 @@ void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const un
 /* Prints the check lines for res ("ok - NAME: ..." or "not ok - ..."); returns 1 if all passed.
  * The caller's exit status must use it: check.h's failure count is per source file.
  * Also prints a "# " line with the counts (ambiguous patches, classes, worst value error) and
- * one with the kernel's classes ("# NAME: kernel front F, back B, silhouette S; ...").
+ * one with the kernel's classes ("# NAME: kernel front F, back B, silhouette S; ..."); for a
+ * certified kernel, a check that its back or front classes of ambiguous patches agree with the
+ * double reference wherever every value is beyond KREF_DOUBLE_SCALE times its bound.
  * After exact sets: a check that the sampled exact values agree with the double reference, and
  * for a certified kernel that no class is unsafe (for a plain one the unsafe count is printed
  * with an "ok" line: float may be wrong near zero), and a "# NAME: exact: ..." line with the
