@@ -1,25 +1,18 @@
 #!/usr/bin/env bash
 # gpu_cullrate.sh: what the certified GPU kernels cull on BigGuy as the GPU targets compute them
 # (GLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native), against the plain kernels of the same rule.
-#   bash bench/gpu_cullrate.sh BUILD [NEYES]   (BUILD holds ptpgen and the hosts; default 4 eyes
+#   bash bench/gpu_cullrate.sh BUILD [NEYES]   (BUILD holds ptpgen and the hosts; default 2 eyes
 #   per radius and space; MODELS names the models' folder). `make cullrate-gpu` runs it.
 # Columns: the patches plain and certified call back and front (b/f); the back or front classes
-# certified gives up against plain (the difference of the counts, and its share of plain's) and against the double reference outside its float
-# bound (kref's "given up"); certified culls that are wrong: on BigGuy, decided by the double
-# reference (outside the float bound, or within it to the double's own rounding: "undecided"
-# counts the rest), and on kref's exact integer sets (--exact 5 200), decided exactly.
+# certified gives up against plain (the difference of the counts, and its share of plain's) and
+# against the double reference outside its float bound (kref's "given up"); certified culls that
+# are wrong: on BigGuy, of patches within the float bound, decided by the double reference to its
+# own rounding ("undecided" counts the rest; outside the bound the host's checks fail on any),
+# and on kref's exact integer sets (--exact 5 200), decided exactly.
 set -u
-B=$1 neyes=${2:-4}
-models=${MODELS:-../shared/models}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-export MESA_SHADER_CACHE_DIR=$PWD/build/cache/mesa
-export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
-mkdir -p "$MESA_SHADER_CACHE_DIR"
+B=$1 neyes=${2:-2}
+. bench/gpu_lib.sh
 [ -e "$models/bigguy.bez" ] || { echo "# skip: no $models/bigguy.bez"; exit 0; }
-
-"$B/ptpgen" --degree 3 --target json -o "$tmp/k.json" || exit 1
-read -r PQ Q < <(python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$tmp/k.json")
 
 targets=""
 if command -v glslangValidator >/dev/null && [ -x "$B/host_vulkan" ]; then targets="$targets glsl"
