@@ -274,12 +274,24 @@ FORCE:
 # (strict, degenerate, certified) cull from 10,000 random eye points around each model of
 # $(CULLRATE_MODELS) and the PN triangles of two of them (--pn), with a bracket of the exact answer
 # (CVis). CULLRATE_ARGS passes options, e.g. `make cullrate CULLRATE_ARGS=--quick`, or `CULLRATE_ARGS="--model my.bez"` to measure your own models.
+# It ends with `make cullrate-gpu` (below).
 CULLRATE_MODELS ?= ../shared/models
 CULLRATE_ARGS ?=
 CR = $(B)/cullrate
 
 cullrate: $(CR)/cullrate
 	$(CR)/cullrate --models $(CULLRATE_MODELS) $(CULLRATE_ARGS)
+	@$(MAKE) -s cullrate-gpu
+
+# `make cullrate-gpu`: the certified GPU kernels' culls on BigGuy as the GPU targets compute them
+# (GLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native; bench/gpu_cullrate.sh), at
+# CULLRATE_GPU_EYES eyes per radius. A target whose host cannot be built is skipped.
+CULLRATE_GPU_EYES ?= 2
+
+cullrate-gpu: $(B)/ptpgen
+	@mkdir -p $(CR)
+	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan $(B)/host_wgpu >$(CR)/hosts.log 2>&1 || true
+	MODELS=$(CULLRATE_MODELS) bash bench/gpu_cullrate.sh $(B) $(CULLRATE_GPU_EYES)
 
 $(CR)/cr_s.h: $(B)/ptpgen
 	@mkdir -p $(CR)
@@ -333,4 +345,4 @@ $(CR)/cullrate: $(CR_SRC) $(CR_HDR) Makefile
 $(CR)/pn_check: tests/pn_check.c $(filter-out bench/cullrate.c,$(CR_SRC)) $(CR_HDR) Makefile
 	$(CC) $(STD) $(CFLAGS) -Ibench -I$(CR) -o $@ $< $(filter-out bench/cullrate.c,$(CR_SRC)) -lm
 
-.PHONY: cullrate
+.PHONY: cullrate cullrate-gpu

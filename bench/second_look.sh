@@ -5,15 +5,7 @@
 #   bash bench/second_look.sh BUILD [NEYES [SPACE]]   (BUILD holds ptpgen and host_vulkan; default 24 world)
 set -u
 B=$1 neyes=${2:-24} space=${3:-world}
-models=${MODELS:-../shared/models}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-export MESA_SHADER_CACHE_DIR=$PWD/build/cache/mesa
-export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
-mkdir -p "$MESA_SHADER_CACHE_DIR"
-
-"$B/ptpgen" --degree 3 --target json -o "$tmp/k.json" || exit 1
-read -r PQ Q < <(python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$tmp/k.json")
+. bench/gpu_lib.sh
 "$B/ptpgen" --degree 3 --space "$space" --target glsl -o "$tmp/plain.comp" &&
     "$B/ptpgen" --degree 3 --space "$space" --certified --target glsl -o "$tmp/on.comp" || exit 1
 sed 's/bool again = live &&/bool again = false \&\& live \&\&/' "$tmp/on.comp" >"$tmp/off.comp"

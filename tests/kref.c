@@ -21,7 +21,7 @@ static int usage(const char *host, const char *label, const char *detail)
           "%s; usage: %s [FILE] [--kernel NAME] --degree N M --space clip|world "
           "--rule strict|degenerate [--block-threads PQ --patches-per-block Q] [--planes] "
           "[--groups-x-constant] [--certified] (--random SETS COUNT SEED | "
-          "--model PATH NEYES SEED | --exact SETS COUNT SEED)... --name LABEL",
+          "--model PATH NEYES SEED | --exact SETS COUNT SEED)... [--eye-radius R] --name LABEL",
           detail, host);
     return 2;
 }
@@ -50,7 +50,7 @@ static int choice(const char *s, const char *first, const char *second)
 
 int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsigned need)
 {
-    int i, k, have_degree = 0, have_space = 0, have_rule = 0;
+    int i, k, have_degree = 0, have_space = 0, have_rule = 0, radius = 0;
     unsigned long long a, b, c;
     memset(o, 0, sizeof *o);
     /* the label first, so that every usage failure carries it */
@@ -100,6 +100,10 @@ int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsig
             o->groups_x_constant = 1;
         } else if (!strcmp(s, "--certified")) {
             o->certified = 1;
+        } else if (!strcmp(s, "--eye-radius") && left >= 1) {
+            if (parse_ull(argv[++i], 1, 1000, &a))
+                return usage(host, o->label, "--eye-radius takes R, 1..1000 bounding radii");
+            radius = (int)a;
         } else if ((!strcmp(s, "--random") || !strcmp(s, "--model") || !strcmp(s, "--exact")) &&
                    left >= 3) {
             kref_source *sr;
@@ -148,6 +152,8 @@ int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsig
         return usage(host, o->label, "--block-threads PQ must be a multiple of --patches-per-block Q");
     if (!o->nsources)
         return usage(host, o->label, "give at least one --random, --model or --exact");
+    for (i = 0; i < o->nsources; i++)
+        o->src[i].radius = radius;
     return 0;
 }
 
@@ -156,7 +162,7 @@ kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char
     ptp_error err;
     kref_set *sets;
     if (src->kind == KREF_SRC_MODEL) {
-        if (!(sets = kref_model_sets(r, src->path, (int)src->nsets, src->seed, &err)))
+        if (!(sets = kref_model_sets_at(r, src->path, (int)src->nsets, src->seed, src->radius, &err)))
             check(0, label, "model %s: %s", src->path, err.msg);
     } else if (src->kind == KREF_SRC_EXACT) {
         if (!(sets = kref_exact_sets(r, (int)src->nsets, src->count, src->seed, &err)))
@@ -935,6 +941,12 @@ static void camera(double M[16], double *alpha, const double E[3], const double 
 kref_set *kref_model_sets(const kref_ref *r, const char *path, int neyes, uint64_t seed,
                           ptp_error *err)
 {
+    return kref_model_sets_at(r, path, neyes, seed, 0, err);
+}
+
+kref_set *kref_model_sets_at(const kref_ref *r, const char *path, int neyes, uint64_t seed,
+                             int radius, ptp_error *err)
+{
     bez_model mo;
     kref_set *sets;
     double C[3] = {0, 0, 0}, R = 0;
@@ -970,6 +982,8 @@ kref_set *kref_model_sets(const kref_ref *r, const char *path, int neyes, uint64
                 len += dir[c] * dir[c];
             }
         } while (len > 1 || len < 1e-4);
+        if (radius)
+            dist = radius * R;
         for (c = 0; c < 3; c++)
             E[c] = C[c] + dist * dir[c] / sqrt(len);
         snprintf(s->name, sizeof s->name, "%.*s eye %d", 40, base, e);
@@ -1149,6 +1163,22 @@ static void compare_exact(kref_result *res, const kref_ref *r, const kref_set *s
     }
 }
 
+/* Counts a back or front class cls of an ambiguous patch of values d within bound: wrong when
+ * every value is beyond KREF_DOUBLE_SCALE times its bound (or exactly zero) and their class
+ * differs, undecided when some value is not. */
+static void check_ambiguous_cull(kref_result *res, const kref_ref *r, const double *d,
+                                 const double *bound, unsigned cls)
+{
+    int i;
+    res->ambiguous_culled++;
+    for (i = 0; i < r->L; i++)
+        if (bound[i] > 0 && fabs(d[i]) <= bound[i] * KREF_DOUBLE_SCALE) {
+            res->culled_undecided++;
+            return;
+        }
+    res->culled_wrong += (int)cls != kref_classify(d, r->L, r->rule);
+}
+
 void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const unsigned *cls,
                 const float *planes)
 {
@@ -1169,6 +1199,8 @@ void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const un
     res->degenerate = r->rule == KREF_DEGENERATE;
     for (p = 0; p < s->count; p++) {
         int ambiguous = 0, want;
+        if (cls[p] <= 2)
+            res->kernel_counts[cls[p]]++;
         if (s->exact) {
             check_exact(res, r, s, p, cls[p], cr, ev);
             if (p % KREF_EXACT_SAMPLE) {
@@ -1195,9 +1227,11 @@ void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const un
         for (i = 0; i < r->L && !(bound[i] == 0 && d[i] == 0); i++)
             ;
         res->exact_zero += i < r->L;
-        if (ambiguous)
+        if (ambiguous) {
             res->ambiguous++;
-        else
+            if (cls[p] == KREF_FRONT || cls[p] == KREF_BACK)
+                check_ambiguous_cull(res, r, d, bound, cls[p]);
+        } else
             res->counts[want]++;
         for (i = 0; planes && i < r->L; i++) {
             double got = planes[p * (size_t)r->L + (size_t)i], e = fabs(got - d[i]);
@@ -1285,7 +1319,16 @@ int kref_report(const kref_result *res, const char *name)
         printf(", certified: given up %zu of %zu back or front (%.2f%%)", res->given_up,
                certain, certain ? 100.0 * (double)res->given_up / (double)certain : 0.0);
     }
-    printf("\n");
+    printf("\n# %s: kernel front %zu, back %zu, silhouette %zu; back or front on %zu ambiguous "
+           "patches: %zu wrong, %zu undecided in double\n", name, res->kernel_counts[0],
+           res->kernel_counts[1], res->kernel_counts[2], res->ambiguous_culled, res->culled_wrong,
+           res->culled_undecided);
+    if (res->certified && res->ambiguous_culled) {
+        snprintf(label, sizeof label, "%s: certified: its back or front classes of %zu ambiguous "
+                 "patches agree with the double reference where it decides them", name,
+                 res->ambiguous_culled);
+        ok &= check(res->culled_wrong == 0, label, "%zu wrong", res->culled_wrong);
+    }
     if (res->exact)
         ok &= report_exact(res, name);
     return ok;

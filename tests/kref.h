@@ -54,6 +54,11 @@ typedef struct {
     int one_sided;     /* a single plane under the degenerate rule: no patch can be silhouette */
     int degenerate;    /* checked under the degenerate rule */
     size_t given_up;   /* certified: silhouette where the unambiguous reference is back or front */
+    size_t kernel_counts[3]; /* the kernel's classes of every patch checked: front, back, silhouette */
+    size_t ambiguous_culled; /* ambiguous patches the kernel called back or front */
+    size_t culled_wrong;     /* of those, the ones whose class the double reference decides
+                                (every value beyond KREF_DOUBLE_SCALE times its bound) otherwise */
+    size_t culled_undecided; /* of those, the ones it cannot decide so */
     /* Sets from kref_exact_sets: every patch is classified exactly (in integers), the double
      * reference above runs on every KREF_EXACT_SAMPLE-th patch only. */
     size_t exact;            /* patches classified exactly */
@@ -68,6 +73,10 @@ typedef struct {
     char first_unsafe[512], first_exact[256];
 } kref_result;
 
+/* The double reference's own rounding error, as a share of the float32 bound of the same sums
+ * (2^-29 for unit roundoff 2^-53 against 2^-24, with a factor 2 to spare). */
+#define KREF_DOUBLE_SCALE 0x1p-28
+
 /* kref_check runs the double reference on every KREF_EXACT_SAMPLE-th patch of an exact set. */
 #define KREF_EXACT_SAMPLE 64
 
@@ -76,7 +85,8 @@ typedef struct {
  *   --rule strict|degenerate
  *   [--block-threads PQ --patches-per-block Q] [--planes] [--groups-x-constant] [--certified]
  *   (--random SETS COUNT SEED | --model PATH NEYES SEED | --exact SETS COUNT SEED)...
- *   --name LABEL
+ *   [--eye-radius R] --name LABEL
+ * --eye-radius R: the eyes of every --model at R bounding radii (1..1000) instead of 2 to 5.
  * --domain triangle: triangular patches of degree N (M is ignored).
  * --certified: the kernel was generated with --certified: it may answer silhouette wherever the
  * reference says back or front (counted as given up), and on --exact data it must never call a
@@ -89,6 +99,7 @@ typedef struct {
     long nsets;       /* random, exact: sets; model: eyes */
     size_t count;     /* random, exact: patches per set */
     uint64_t seed;
+    int radius;       /* model: eyes at this many bounding radii; 0: uniform in 2 to 5 */
 } kref_source;
 
 typedef struct {
@@ -143,6 +154,10 @@ kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t 
  * Returns NULL (message in err) if the file cannot be read. */
 kref_set *kref_model_sets(const kref_ref *r, const char *path, int neyes, uint64_t seed,
                           ptp_error *err);
+/* kref_model_sets with every eye at radius bounding radii (the same directions); radius 0 is
+ * kref_model_sets. */
+kref_set *kref_model_sets_at(const kref_ref *r, const char *path, int neyes, uint64_t seed,
+                             int radius, ptp_error *err);
 /* nsets sets of count patches each (deterministic in seed) whose coordinates and eye are small
  * integers, stored exactly in float, built to sit on the edge between the classes; set s is of
  * kind s % 5 with magnitudes varying with s / 5:
@@ -182,7 +197,10 @@ void kref_check(kref_result *res, const kref_ref *r, const kref_set *s, const un
                 const float *planes);
 /* Prints the check lines for res ("ok - NAME: ..." or "not ok - ..."); returns 1 if all passed.
  * The caller's exit status must use it: check.h's failure count is per source file.
- * Also prints a "# " line with the counts (ambiguous patches, classes, worst value error).
+ * Also prints a "# " line with the counts (ambiguous patches, classes, worst value error) and
+ * one with the kernel's classes ("# NAME: kernel front F, back B, silhouette S; ..."); for a
+ * certified kernel, a check that its back or front classes of ambiguous patches agree with the
+ * double reference wherever every value is beyond KREF_DOUBLE_SCALE times its bound.
  * After exact sets: a check that the sampled exact values agree with the double reference, and
  * for a certified kernel that no class is unsafe (for a plain one the unsafe count is printed
  * with an "ok" line: float may be wrong near zero), and a "# NAME: exact: ..." line with the
