@@ -360,9 +360,6 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
         return ptp_fail(err, PTP_EUSAGE, "%s applies to target%s %s (not %s)", opts[k].name,
                         n == 1 ? "" : "s", names, o->target->name);
     }
-    if (o->refine && o->certified)
-        return ptp_fail(err, PTP_EUSAGE, "--refine and --certified do not go together: the "
-                                         "subdivision is not certified");
     return PTP_OK;
 }
 
