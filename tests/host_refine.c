@@ -86,6 +86,33 @@ static unsigned split_exact(const float *f, int L)
 #endif
 }
 
+#if MACRO(CERTIFIED)
+/* The number of random pairs (a, b) whose mid bound is below the exact error of the average: the
+ * inputs' bounds averaged plus half the rounding error of s = a.v + b.v (Knuth's two-sum, exact).
+ * Half the pairs have exact inputs (bound 0), so that only the rounding term covers the error. */
+static size_t mid_short(void)
+{
+    uint64_t rng = 12345;
+    size_t bad = 0, i;
+    for (i = 0; i < 200000; i++) {
+        FN(cval) a, b, r;
+        double s, bb, err, need;
+        rng = rng * 6364136223846793005u + 1442695040888963407u;
+        a.v = ldexp((double)(rng >> 11), (int)(rng % 41) - 73);
+        b.v = ldexp((double)(rng >> 13) * (rng & 1 ? 1 : -1), (int)(rng % 37) - 70);
+        a.b = i % 2 ? 0 : ldexp(fabs(a.v), -50 - (int)(rng % 9));
+        b.b = i % 2 ? 0 : ldexp(fabs(b.v), -52);
+        r = FN(mid)(a, b);
+        s = a.v + b.v;
+        bb = s - a.v;
+        err = (a.v - (s - bb)) + (b.v - bb); /* a.v + b.v = s + err exactly */
+        need = 0.5 * (a.b + b.b) + 0.5 * fabs(err);
+        bad += !(r.b >= need) || r.v != 0.5 * s;
+    }
+    return bad;
+}
+#endif
+
 /* The crafted functions: for every plane P, its basis function less r times its peak (at the
  * point its indices name), r = 0.8 and 0.9: positive only around that point, so that a
  * subdivision that misses a region calls some of them back. Counts into t. */
@@ -248,6 +275,10 @@ int main(int argc, char **argv)
     }
     snprintf(name, sizeof name, "%s: classify_batch equals classify", o.label);
     ok &= check(t.batch_bad == 0, name, "they differ on %zu patches", t.batch_bad);
+#if MACRO(CERTIFIED)
+    snprintf(name, sizeof name, "%s: mid's bound covers the rounding of 200000 random averages", o.label);
+    ok &= check(mid_short() == 0, name, "it is short on %zu", mid_short());
+#endif
     if (ref.certified) /* as the certified header without --refine (tests/host_c.c) */
         printf("# %s: certified: silhouette where the control planes clearly decide: %zu\n", o.label,
                t.given_up);

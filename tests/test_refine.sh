@@ -100,3 +100,11 @@ if host 3x3 world strict "3 --certified" gcc 's/\.v < -d\[/.v < d[/g' &&
 else
     notok "a --refine --certified header that certifies values within their bound fails the exact check" "it passed"
 fi
+# A certified header whose averages drop the rounding term (|s| 2^-54) must fail the check of mid.
+if host 3x3 world strict "3 --certified" gcc 's/(s < 0 ? -s : s) \* 5.5511151231257827e-17/0.0/' &&
+    ! "$tmp/hr" $dom --space world --rule strict --certified --random 1 200 5 --name mutant >"$tmp/out" 2>&1 &&
+    grep -q "^not ok - mutant: mid's bound covers the rounding" "$tmp/out"; then
+    ok "a --refine --certified header whose averages drop the rounding term fails the check of mid"
+else
+    notok "a --refine --certified header whose averages drop the rounding term fails the check of mid" "it passed"
+fi
