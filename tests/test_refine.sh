@@ -91,20 +91,21 @@ mutant "a --refine header (tri3) whose four pieces miss the middle triangle fail
     tri3 's|{{1, 2}, {0, 2}, {0, 1}}}|{{0, 0}, {0, 1}, {0, 2}}}|'
 mutant "a --refine header (tri3) whose de Casteljau step takes a wrong neighbour fails the sample check" \
     tri3 's|b = w\[x + (e\[1\] ? r + e\[1\] : 0)\]|b = w[x + (e[1] ? r + 1 : 0)]|'
-# A certified header that ignores the bound's sign (v < b for v < -b: values within their bound
-# of zero certified) must make unsafe classes on the exact data.
-if host 3x3 world strict "3 --certified" gcc 's/\.v < -d\[/.v < d[/g' &&
-    ! "$tmp/hr" $dom --space world --rule strict --certified --exact 20 200 7 --name mutant >"$tmp/out" 2>&1 &&
-    grep -q '^not ok - mutant: on exact data no back or front is unsafe' "$tmp/out"; then
-    ok "a --refine --certified header that certifies values within their bound fails the exact check"
-else
-    notok "a --refine --certified header that certifies values within their bound fails the exact check" "it passed"
-fi
-# A certified header whose averages drop the rounding term (|s| 2^-54) must fail the check of mid.
-if host 3x3 world strict "3 --certified" gcc 's/(s < 0 ? -s : s) \* 5.5511151231257827e-17/0.0/' &&
-    ! "$tmp/hr" $dom --space world --rule strict --certified --random 1 200 5 --name mutant >"$tmp/out" 2>&1 &&
-    grep -q "^not ok - mutant: mid's bound covers the rounding" "$tmp/out"; then
-    ok "a --refine --certified header whose averages drop the rounding term fails the check of mid"
-else
-    notok "a --refine --certified header whose averages drop the rounding term fails the check of mid" "it passed"
-fi
+# cmutant NAME SED DATA CHECK: a 3x3 world strict --refine 3 --certified header edited by SED must
+# fail the check named CHECK on DATA.
+cmutant() {
+    if host 3x3 world strict "3 --certified" gcc "$2" &&
+        ! "$tmp/hr" $dom --space world --rule strict --certified $3 --name mutant >"$tmp/out" 2>&1 &&
+        grep -q "^not ok - mutant: $4" "$tmp/out"; then
+        ok "$1"
+    else
+        notok "$1" "it passed"
+    fi
+}
+# One that ignores the bound's sign (v < b for v < -b: values within their bound of zero
+# certified) must make unsafe classes on the exact data.
+cmutant "a --refine --certified header that certifies values within their bound fails the exact check" \
+    's/\.v < -d\[/.v < d[/g' "--exact 20 200 7" "on exact data no back or front is unsafe"
+# One whose averages drop the rounding term (|s| 2^-54) must fail the check of mid.
+cmutant "a --refine --certified header whose averages drop the rounding term fails the check of mid" \
+    's/(s < 0 ? -s : s) \* 5.5511151231257827e-17/0.0/' "--random 1 200 5" "mid's bound covers the rounding"
