@@ -87,8 +87,8 @@ BENCH_CFLAGS = -O3 -march=native
 # clang its own vectorization of the loop).
 BENCH_CC ?= $(CC)
 
-# Variants of the bicubic header whose batch path is timed too: --refine 3 and --certified.
-BENCH_VARIANTS = refine3 certified
+# Variants of the bicubic header whose batch path is timed too: --refine 3, --certified and both.
+BENCH_VARIANTS = refine3 certified certified_refine3
 
 bench: ptpgen $(B)/bench/peak $(addprefix $(B)/bench/bench_cull_,$(BENCH_DEGREES)) \
     $(addprefix $(B)/bench/bench_cull_3x3_,$(BENCH_VARIANTS)) $(B)/bench/bench_tri
@@ -124,10 +124,15 @@ $(B)/bench/ptp_3x3_certified.h: $(B)/ptpgen
 	@mkdir -p $(@D)
 	$(B)/ptpgen --degree 3 --target c --certified --prefix ptp_3x3_ -o $@
 
+$(B)/bench/ptp_3x3_certified_refine3.h: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target c --certified --refine 3 --prefix ptp_3x3_ -o $@
+
 $(B)/bench/bench_cull_3x3_%: bench/bench_cull.c $(B)/bench/ptp_3x3_%.h Makefile $(B)/bench/cc.txt
 	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -D_GNU_SOURCE -include $(B)/bench/ptp_3x3_$*.h \
 	    -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ -DDEGREE='"3x3"' \
-	    -DVARIANT='"$(subst refine,--refine ,$(subst certified,--certified,$*))"' -o $@ $< -lm -pthread
+	    -DVARIANT='"$(subst _, ,$(subst refine,--refine ,$(subst certified,--certified,$*)))"' \
+	    -o $@ $< -lm -pthread
 
 # The triangle benchmark's headers: degree 1 in world (ptp_tri1w_) and clip space, the cubic
 # triangle (PN triangles) and the bicubic patch, all in one program.
@@ -271,8 +276,9 @@ FORCE:
 .PHONY: all test install bench-gen build-tests out fuzz clean FORCE
 
 # `make cullrate`: the average number of patches NCONE, TCONE and ptpgen's tangent-plane test
-# (strict, degenerate, certified) cull from 10,000 random eye points around each model of
-# $(CULLRATE_MODELS) and the PN triangles of two of them (--pn), with a bracket of the exact answer
+# (strict, degenerate, certified, --refine 1 to 3, --refine 3 --certified) cull from 10,000
+# random eye points around each model of $(CULLRATE_MODELS) and the PN triangles of two of them
+# (--pn), with a bracket of the exact answer
 # (CVis). CULLRATE_ARGS passes options, e.g. `make cullrate CULLRATE_ARGS=--quick`, or `CULLRATE_ARGS="--model my.bez"` to measure your own models.
 # It ends with `make cullrate-gpu` (below).
 CULLRATE_MODELS ?= ../shared/models
@@ -309,6 +315,10 @@ $(CR)/cr_r%.h: $(B)/ptpgen
 	@mkdir -p $(CR)
 	$(B)/ptpgen --degree 3 --target c --space world --refine $* --prefix cr_r$*_ -o $@
 
+$(CR)/cr_cr3.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --degree 3 --target c --space world --certified --refine 3 --prefix cr_cr3_ -o $@
+
 $(CR)/cr_t.h: $(B)/ptpgen
 	@mkdir -p $(CR)
 	$(B)/ptpgen --degree 3 --target table --prefix cr_t_ -o $@
@@ -335,7 +345,7 @@ $(CR)/cr_tt.h: $(B)/ptpgen
 
 CR_SRC = bench/cullrate.c bench/cones.c bench/exact.c bench/pn.c bench/tess.c
 CR_HDR = bench/cones.h bench/exact.h bench/pn.h bench/tess.h tests/float_widen.h \
-    $(addprefix $(CR)/,cr_s.h cr_d.h cr_c.h cr_r1.h cr_r2.h cr_r3.h cr_t.h) \
+    $(addprefix $(CR)/,cr_s.h cr_d.h cr_c.h cr_r1.h cr_r2.h cr_r3.h cr_cr3.h cr_t.h) \
     $(addprefix $(CR)/,cr_ts.h cr_td.h cr_tc.h cr_tt.h)
 
 $(CR)/cullrate: $(CR_SRC) $(CR_HDR) Makefile

@@ -830,6 +830,21 @@ kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t s
     return sets;
 }
 
+int kref_exact_signs(const kref_ref *r, const kref_set *s, size_t p, signed char *sign,
+                     double *x)
+{
+    ptp_i128 *ev = malloc((size_t)r->L * sizeof *ev);
+    int64_t(*cr)[3] = malloc((size_t)r->K * (size_t)r->K * sizeof *cr);
+    int i, st = !ev || !cr || exact_values(r, s, p, cr, ev) ? -1 : 0;
+    for (i = 0; !st && i < r->L; i++) {
+        sign[i] = (signed char)((ev[i] > 0) - (ev[i] < 0));
+        x[i] = (double)ev[i] / (double)r->den[i];
+    }
+    free(ev);
+    free(cr);
+    return st;
+}
+
 /* The BEZ model: patches of 16 1-based vertex indices and the vertices. */
 typedef struct {
     int npatches, nverts;

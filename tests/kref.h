@@ -176,6 +176,11 @@ kref_set *kref_model_sets_at(const kref_ref *r, const char *path, int neyes, uin
 kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed,
                           ptp_error *err);
 void kref_free_sets(kref_set *sets, int nsets);
+/* The exact signs (sign[L]: -1, 0 or 1) of the plane values of patch p of an exact set s, and
+ * the values rounded to double (x[L], within 2^-51 of each relative). Returns 0, or -1 when they
+ * cannot be computed (out of memory, or s not from kref_exact_sets). */
+int kref_exact_signs(const kref_ref *r, const kref_set *s, size_t p, signed char *sign,
+                     double *x);
 /* A view matrix (row-major, a rotation and translation) putting the eye E at the origin, looking
  * at C along -z (OpenGL, d3d == 0) or +z (Direct3D). */
 void kref_look_at(double V[16], const double E[3], const double C[3], int d3d);

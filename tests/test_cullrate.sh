@@ -36,6 +36,9 @@ two_models() {
 ln -s "$(realpath "$models/teacup.bez")" "$tmp/my cup.bez"
 two_models out --model '^teaspoon: 16 patches\|^my cup: 26 patches' \
     --model "$models/teaspoon.bez" --model "$tmp/my cup.bez"
+[ "$(grep -c '^  ptpgen cert ref 3 .* 0       0         - .* 0       0         -$' "$tmp/out")" = 2 ] &&
+    ok "cullrate --model: no unsafe --refine 3 --certified cull and no false alarm" ||
+    notok "cullrate --model: --refine 3 --certified rows" "$(grep 'ptpgen cert ref' "$tmp/out")"
 
 # PN triangles: pn_check's unit checks, then cullrate on two tessellated models (2 triangles a
 # quad of the --grid tessellation).

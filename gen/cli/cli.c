@@ -55,7 +55,8 @@ void cli_usage(sbuf *o)
         "                   bound on its float rounding error (README: Certified classification)\n"
         "  --refine K       C only: split the patch's scalar Bezier function e.T by de Casteljau,\n"
         "                   up to K levels (1 to %d), while its control values have mixed signs\n"
-        "                   (quads into quarters, triangles at their edge midpoints)\n"
+        "                   (quads into quarters, triangles at their edge midpoints); with\n"
+        "                   --certified in double, every value with a bound on its error\n"
         "  --prefix NAME    prefix of generated names (default ptp_NxM_ or ptp_triN_, then world_,\n"
         "                   degenerate_, certified_, refineK_ for the options given)\n"
         "  --threads-per-patch P\n"
@@ -360,9 +361,6 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
         return ptp_fail(err, PTP_EUSAGE, "%s applies to target%s %s (not %s)", opts[k].name,
                         n == 1 ? "" : "s", names, o->target->name);
     }
-    if (o->refine && o->certified)
-        return ptp_fail(err, PTP_EUSAGE, "--refine and --certified do not go together: the "
-                                         "subdivision is not certified");
     return PTP_OK;
 }
 

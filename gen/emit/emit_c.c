@@ -285,7 +285,8 @@ static void put_collapsed64(sbuf *o, const slp_prog *p, const tp_domain *d, cons
 
 /* --certified: the second look at a patch float cannot certify, in double. The table loop with
  * double weights and the bounds of cert_table for u = 2^-53, which are 2^29 times smaller; under
- * the degenerate rule a plane of a collapsed edge counts as exactly 0. */
+ * the degenerate rule a plane of a collapsed edge counts as exactly 0. With --refine it also
+ * writes the values and bounds (an exact zero: both 0) to d[] and b[] for refined. */
 static int put_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const out_info *info,
                          const char *up, ptp_error *err)
 {
@@ -298,8 +299,8 @@ static int put_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const ou
     sbuf_printf(o,
                 "\n/* The certified class of a patch whose plain float signs decide but whose bounds do not, from\n"
                 " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
-                "static unsigned %scertify64(const float cp[][4], const float eye[4])\n{\n"
-                "    double d[%sPLANES], R = 0, E = 0, ER3, F;\n"
+                "static unsigned %scertify64(const float cp[][4], const float eye[4]%s)\n{\n"
+                "    double %s%s%sR = 0, E = 0, ER3, F;\n"
                 "    unsigned x, k, notlt = 0, notgt = 0%s;\n"
                 "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
                 "    for (x = 0; x < %sPOINTS; x++)\n"
@@ -313,7 +314,9 @@ static int put_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const ou
                 "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
                 "    for (x = 0; x < %sTERMS; x++) {\n"
                 "        const float *a = cp[%sterm_idx[x][1]], *b = cp[%sterm_idx[x][2]], *c = cp[%sterm_idx[x][3]];\n",
-                px, up, zeros_certified(info) ? ", col" : "", up, up, world ? "1" : "k != 2", up,
+                px, info->refine ? ", double d[], double b[]" : "", info->refine ? "" : "d[",
+                info->refine ? "" : up, info->refine ? "" : "PLANES], ",
+                zeros_certified(info) ? ", col" : "", up, up, world ? "1" : "k != 2", up,
                 world ? "1" : "k == 2", up, up, px, px, px);
     put_terms64(o, world, px, up);
     if (zeros_certified(info))
@@ -323,17 +326,19 @@ static int put_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const ou
                     "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
                     "        unsigned z = (%szero[x] & col) != 0; /* exactly 0 */\n"
                     "        notlt |= ((d[x] < -bound) | z) == 0;\n"
-                    "        notgt |= ((d[x] > bound) | z) == 0;\n"
+                    "        notgt |= ((d[x] > bound) | z) == 0;\n%s"
                     "    }\n",
-                    px, up, px, px, px);
+                    px, up, px, px, px,
+                    info->refine ? "        d[x] = z ? 0.0 : d[x]; /* for refined */\n"
+                                   "        b[x] = z ? 0.0 : bound;\n" : "");
     else
         sbuf_printf(o,
                     "    for (x = 0; x < %sPLANES; x++) {\n"
                     "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
                     "        notlt |= !(d[x] < -bound);\n"
-                    "        notgt |= !(d[x] > bound);\n"
+                    "        notgt |= !(d[x] > bound);\n%s"
                     "    }\n",
-                    up, px, px);
+                    up, px, px, info->refine ? "        b[x] = bound; /* for refined */\n" : "");
     sbuf_puts(o, "    return (1u - notlt) + 2u * (notlt & notgt);\n}\n\n");
     return PTP_OK;
 }
@@ -625,7 +630,7 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
                    "    unsigned char c;\n"
                    "    %slanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */\n}\n",
                 px, up, (int)strlen(px) + 18, "", up, px, px, px);
-    if (info->refine) /* classify_batch refines from the values of a whole block */
+    if (info->refine && !info->certified) /* classify_batch refines from a whole block's values */
         sbuf_printf(o, "\n/* The classes and values d[P * ds + l] of n patches (--refine: classify_batch). */\n"
                        "#if defined(__GNUC__) && !defined(__clang__)\n"
                        "__attribute__((noinline, noclone))\n"
@@ -662,7 +667,7 @@ static void put_classify(sbuf *o, const out_info *info, const char *up, const ch
                    "    %slanes(cp[0], 1, 1, eye, &c); /* one patch is the SoA layout with stride 1 */\n",
                 px, px);
     if (second)
-        sbuf_printf(o, "    if (c == %s)\n        c = (unsigned char)%s%s(cp, eye);\n", again,
+        sbuf_printf(o, "    if (c %s)\n        c = (unsigned char)%s%s(cp, eye);\n", again,
                     px, second);
     sbuf_puts(o, "    return c;\n}\n\n");
     sbuf_printf(o, "void %sclassify_soa(const float *soa, size_t stride, size_t patch_count,\n"
@@ -672,7 +677,7 @@ static void put_classify(sbuf *o, const out_info *info, const char *up, const ch
     if (second)
         sbuf_printf(o, "    size_t p;\n    unsigned k, c;\n"
                        "    for (p = 0; p < patch_count; p++)\n"
-                       "        if (cls[p] == %s) {\n"
+                       "        if (cls[p] %s) {\n"
                        "            float cp[%sPOINTS][4];\n"
                        "            for (k = 0; k < %sPOINTS; k++)\n"
                        "                for (c = 0; c < 4; c++)\n"
@@ -690,7 +695,8 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
 {
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
-    char lanes[80], dv[160]; /* --refine: the block's values dv */
+    int block = info->refine && !info->certified; /* refined from the block's values dv */
+    char lanes[80], dv[160];
     snprintf(lanes, sizeof lanes, "%sLANES", up);
     snprintf(dv, sizeof dv, ", dv[%sPLANES * %sLANES]", up, up);
     /* clip space never reads z: the transposition skips it */
@@ -712,7 +718,7 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
                    "                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);\n"
                    "                _mm_storeu_ps(soa + (k * 4 + 0) * %sLANES + l, r0);\n"
                    "                _mm_storeu_ps(soa + (k * 4 + 1) * %sLANES + l, r1);\n",
-                px, up, up, info->refine ? dv : "", up, up, up, up, up, up, up, up, up, up);
+                px, up, up, block ? dv : "", up, up, up, up, up, up, up, up, up, up);
     if (world)
         sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 2) * %sLANES + l, r2);\n", up);
     sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 3) * %sLANES + l, r3);\n"
@@ -734,9 +740,9 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
                    "        }\n"
                    "#endif\n"
                    "        %slanes%s(soa, %sLANES, n, eye, cls + p%s%s);\n",
-                up, up, up, up, px, info->refine ? "_values" : "", up,
-                info->refine ? ", dv, " : "", info->refine ? lanes : "");
-    if (info->refine) /* the silhouette patches refined from the block's values */
+                up, up, up, up, px, block ? "_values" : "", up, block ? ", dv, " : "",
+                block ? lanes : "");
+    if (block) /* the silhouette patches refined from the block's values */
         sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
                        "            if (cls[p + l] == %sSILHOUETTE) {\n"
                        "                float d[%sPLANES];\n"
@@ -747,7 +753,7 @@ static void put_classify_batch(sbuf *o, const out_info *info, const char *up, co
                     up, up, up, up, px, info->refine);
     else if (second)
         sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
-                       "            if (cls[p + l] == %s)\n"
+                       "            if (cls[p + l] %s)\n"
                        "                cls[p + l] = (unsigned char)%s%s(cp + (p + l) * %sPOINTS, eye);\n",
                     again, px, second, up);
     sbuf_puts(o, "    }\n}\n");
@@ -760,14 +766,16 @@ static int put_entries(sbuf *o, const tp_table *t, const slp_prog *p, const out_
 {
     /* what silhouette patches get a second look from: refinement, or certification in double */
     const char *second = info->refine ? "refined" : info->certified ? "certify64" : NULL;
-    char again[96]; /* the class the lanes leave for it: silhouette, or 3 (only plain signs decide) */
+    /* the test of the classes the lanes leave for it: silhouette, 3 (certified: only the plain
+     * signs decide), or both (certified refinement) */
+    char again[96];
     int st;
-    snprintf(again, sizeof again, "%s%s", info->certified ? "" : up,
-             info->certified ? "3u" : "SILHOUETTE");
+    snprintf(again, sizeof again, "%s%s%s", info->certified ? "" : "== ", info->certified ? "" : up,
+             !info->certified ? "SILHOUETTE" : info->refine ? ">= 2u" : "== 3u");
+    if (info->certified && (st = put_certify64(o, t, p, info, up, err)) != PTP_OK)
+        return st;
     if (info->refine)
         emit_c_refine(o, t, info, up);
-    else if (info->certified && (st = put_certify64(o, t, p, info, up, err)) != PTP_OK)
-        return st;
     put_classify(o, info, up, second, again);
     put_classify_batch(o, info, up, second, again);
     return PTP_OK;
