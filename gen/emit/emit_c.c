@@ -125,20 +125,18 @@ static void put_minor_sum(sbuf *o, const slp_prog *p, size_t a, size_t b, char m
         }
 }
 
-/* e = s u as k doublings for s = 2^k, 0 < k <= 3, ((u + u) + (u + u)): exact, so v + s u rounds
- * as the multiply-add does, on the adders instead of the multiplier; 0 for any other s. */
+/* e = s u as slp_doublings(s) doublings, ((u + u) + (u + u)): exact, so v + s u rounds as the
+ * multiply-add does, on the adders instead of the multiplier; 0 when s is no such power of 2. */
 static int doubled(char e[64], const rat *s)
 {
-    int k;
+    int k, n = slp_doublings(s);
     strcpy(e, "u");
-    for (k = 1; k <= 3; k++) {
+    for (k = 0; k < n; k++) {
         char t[64];
         snprintf(t, sizeof t, "(%s + %s)", e, e);
         strcpy(e, t);
-        if (s->den == 1 && s->num == (ptp_i128)1 << k)
-            return 1;
     }
-    return 0;
+    return n > 0;
 }
 
 /* Appends v's update with the group's sum u at scale s: assigned for the plane's first group. */

@@ -46,7 +46,7 @@ extern "C" {
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_1X3_FLOPS 396
-#define PTP_1X3_MULS 240
+#define PTP_1X3_MULS 232
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_1X3_LANES
 #define PTP_1X3_LANES 16

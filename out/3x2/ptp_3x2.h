@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_3X2_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_3X2_FLOPS 1448
-#define PTP_3X2_MULS 822
+#define PTP_3X2_FLOPS 1460
+#define PTP_3X2_MULS 780
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X2_LANES
 #define PTP_3X2_LANES 16

@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_4X4_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_4X4_FLOPS 14352
-#define PTP_4X4_MULS 7729
+#define PTP_4X4_FLOPS 14559
+#define PTP_4X4_MULS 7535
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_4X4_LANES
 #define PTP_4X4_LANES 16

@@ -45,7 +45,7 @@ extern "C" {
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_TRI2_FLOPS 144
-#define PTP_TRI2_MULS 88
+#define PTP_TRI2_MULS 87
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI2_LANES
 #define PTP_TRI2_LANES 16

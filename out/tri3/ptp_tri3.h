@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI3_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI3_FLOPS 755
-#define PTP_TRI3_MULS 423
+#define PTP_TRI3_FLOPS 761
+#define PTP_TRI3_MULS 408
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI3_LANES
 #define PTP_TRI3_LANES 16

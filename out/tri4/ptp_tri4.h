@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI4_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI4_FLOPS 2818
-#define PTP_TRI4_MULS 1547
+#define PTP_TRI4_FLOPS 2895
+#define PTP_TRI4_MULS 1471
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI4_LANES
 #define PTP_TRI4_LANES 16
