@@ -1,5 +1,5 @@
-/* test_slp_order.c: checks slp_order's plane orders: each plane with terms exactly once, number
- * order with a window of one, and a reordering (not number order) with the C target's settings. */
+/* test_slp_order.c: checks slp_order's plane orders (each plane with terms exactly once, number
+ * order with a window of one, a reordering with the C target's settings) and slp_doublings. */
 #include "check.h"
 #include "core/tplane.h"
 #include "plan/slp_order.h"
@@ -63,9 +63,24 @@ static void check_domain(tp_kind kind, int n)
     tp_clear(&t);
 }
 
+/* slp_doublings: k for the scales 2, 4 and 8 only. */
+static void check_doublings(void)
+{
+    static const long num[7] = {1, 2, 3, 4, 8, 16, 1}, den[7] = {1, 1, 1, 1, 1, 1, 2};
+    static const int want[7] = {0, 1, 0, 2, 3, 0, 0};
+    int i, ok = 1;
+    for (i = 0; i < 7; i++) {
+        rat s;
+        ok = ok && rat_set_frac(&s, num[i], den[i]) == PTP_OK && slp_doublings(&s) == want[i];
+    }
+    check(ok, "slp_doublings: 2, 4 and 8 are 1, 2 and 3 doublings; 1, 3, 16 and 1/2 none",
+          "case %d", i);
+}
+
 int main(void)
 {
     int n;
+    check_doublings();
     for (n = 1; n <= 4; n++) {
         check_domain(TP_QUAD, n);
         check_domain(TP_TRI, n);
