@@ -6,6 +6,7 @@
 #include "emit/kern.h"
 #include "plan/cert.h"
 #include "plan/slp.h"
+#include "plan/slp_order.h"
 #include "emit/template.h"
 
 #include <stdio.h>
@@ -71,7 +72,27 @@ static void put_bracket(sbuf *o, const slp_prog *p, const slp_term *x, char g, c
                 q[x->pair[1]].l, g, x->point[2], m, q[x->pair[2]].k, q[x->pair[2]].l);
 }
 
-/* Declares the minor pair unless done[pair]. */
+/* Loads point k's coordinates (world: with the eye's products a, b; clip: g = e2 w) unless
+ * done[npairs + k]: where first read, or all up front (put_loads). */
+static void put_point(sbuf *o, const slp_prog *p, int k, int world, const char *px,
+                      unsigned char *done)
+{
+    if (done[p->npairs + (size_t)k])
+        return;
+    done[p->npairs + (size_t)k] = 1;
+    if (world)
+        sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
+                       "            z%d = %svload(q + %d * qs), w%d = %svload(q + %d * qs);\n"
+                       "        const %svf a%d = e0 * y%d - e1 * x%d, b%d = e2 * w%d - e3 * z%d;\n",
+                    px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 2, k, px, 4 * k + 3, px, k,
+                    k, k, k, k, k);
+    else
+        sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
+                       "            w%d = %svload(q + %d * qs), g%d = e2 * w%d;\n",
+                    px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 3, k, k);
+}
+
+/* Declares the minor pair unless done[pair], after its points. */
 static void put_minor(sbuf *o, const slp_prog *p, int pair, int world, const char *px,
                       unsigned char *done)
 {
@@ -79,6 +100,8 @@ static void put_minor(sbuf *o, const slp_prog *p, int pair, int world, const cha
     if (done[pair])
         return;
     done[pair] = 1;
+    put_point(o, p, q->k, world, px, done);
+    put_point(o, p, q->l, world, px, done);
     sbuf_printf(o, "        const %svf m%d_%d = x%d * y%d - y%d * x%d;\n", px, q->k, q->l, q->k, q->l,
                 q->k, q->l);
     if (world)
@@ -102,15 +125,31 @@ static void put_minor_sum(sbuf *o, const slp_prog *p, size_t a, size_t b, char m
         }
 }
 
+/* e = s u as slp_doublings(s) doublings, ((u + u) + (u + u)): exact, so v + s u rounds as the
+ * multiply-add does, on the adders instead of the multiplier; 0 when s is no such power of 2. */
+static int doubled(char e[64], const rat *s)
+{
+    int k, n = slp_doublings(s);
+    strcpy(e, "u");
+    for (k = 0; k < n; k++) {
+        char t[64];
+        snprintf(t, sizeof t, "(%s + %s)", e, e);
+        strcpy(e, t);
+    }
+    return n > 0;
+}
+
 /* Appends v's update with the group's sum u at scale s: assigned for the plane's first group. */
 static void put_group_end(sbuf *o, const rat *s, int first_group, const char *up)
 {
-    char sv[RAT_STRLEN];
+    char sv[RAT_STRLEN], e[64];
     rat one;
     rat_set_si(&one, 1);
     rat_get_str(sv, s);
     if (rat_equal(s, &one))
         sbuf_printf(o, "        v %s u;\n", first_group ? "=" : "+=");
+    else if (doubled(e, s))
+        sbuf_printf(o, "        v %s %s;\n", first_group ? "=" : "+=", e);
     else if (first_group)
         sbuf_printf(o, "        v = %s.0f * u;\n", sv);
     else
@@ -131,6 +170,7 @@ static size_t put_fused(sbuf *o, const slp_prog *p, size_t a, int world, const c
             i = slp_point_end(p, b);
             for (k = (int)b; k < (int)i; k++) /* the minors declared where first used */
                 put_minor(o, p, p->entries[k].pair, world, px, done);
+            put_point(o, p, pt, world, px, done);
             for (k = 0; k < (world ? 2 : 1); k++) {
                 char gl = world ? (k ? 'b' : 'a') : 'g', ml = world && !k ? 'n' : 'm';
                 if (b == g && k == 0)
@@ -474,26 +514,17 @@ static void put_magnitudes(sbuf *o, int npoints, const out_info *info, const cer
                 px, (double)k2, (double)cb->q_max);
 }
 
-/* The loads of every point's coordinates (world: with the eye's products a, b; clip: g = e2 w)
- * and, certified, the magnitudes and the size guard (degenerate rule: and the collapsed edges). */
-static void put_loads(sbuf *o, const tp_table *t, const out_info *info, const cert_bounds *cb)
+/* Certified: the loads of every point's coordinates up front (put_point; elsewhere each where
+ * first read), the magnitudes and the size guard (degenerate rule: and the collapsed edges). */
+static void put_loads(sbuf *o, const slp_prog *p, const tp_table *t, const out_info *info,
+                      const cert_bounds *cb, unsigned char *done)
 {
-    const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, k;
-    for (k = 0; k < t->dom.npoints; k++) {
-        if (world)
-            sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
-                           "            z%d = %svload(q + %d * qs), w%d = %svload(q + %d * qs);\n"
-                           "        const %svf a%d = e0 * y%d - e1 * x%d, b%d = e2 * w%d - e3 * z%d;\n",
-                        px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 2, k, px, 4 * k + 3, px,
-                        k, k, k, k, k, k);
-        else
-            sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
-                           "            w%d = %svload(q + %d * qs), g%d = e2 * w%d;\n",
-                        px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 3, k, k);
-    }
-    if (info->certified)
-        put_magnitudes(o, t->dom.npoints, info, cb);
+    int k;
+    if (!info->certified)
+        return;
+    for (k = 0; k < t->dom.npoints; k++)
+        put_point(o, p, k, info->space == OUT_WORLD, info->prefix, done);
+    put_magnitudes(o, t->dom.npoints, info, cb);
     if (zeros_certified(info))
         put_collapsed(o, &t->dom, info);
 }
@@ -520,6 +551,8 @@ static size_t put_exact(sbuf *o, const slp_prog *p, size_t a, int world, const c
     for (i = a; i < p->nterms && p->terms[i].plane == p->terms[a].plane; i++) {
         for (k = 0; k < 3; k++)
             put_minor(o, p, p->terms[i].pair[k], world, px, done);
+        for (k = 0; k < 3; k++)
+            put_point(o, p, p->terms[i].point[k], world, px, done);
         if (i > a && p->terms[i - 1].group != p->terms[i].group)
             first_group = 0;
         put_term(o, p, i, world, first_group, up);
@@ -565,31 +598,43 @@ static void put_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const o
                     op, op, op, plane);
 }
 
-/* The straight-line program: every plane, exact or fused, then its value into the masks (and
- * into d). */
+/* slp_order's registers (AVX-512 has 32 vector registers; 8 left for sums and temporaries) and
+ * window (the planes it picks from): the fastest of those tried with gcc 12 and clang 14 on
+ * bicubic patches (bench/README: Plane order). */
+#define SLP_ORDER_CAP 24
+#define SLP_ORDER_WIN 4
+
+/* The straight-line program: every plane, exact or fused, in slp_order's order (consecutive
+ * planes share registers), then its value into the masks (and into d). */
 static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
-                       const char *up, ptp_error *err)
+                       const char *up, unsigned char *done, ptp_error *err)
 {
     const char *px = info->prefix;
-    int world = info->space == OUT_WORLD;
-    unsigned char *done = calloc(p->npairs + 1, 1);
-    size_t i = 0, e = 0;
-    if (!done)
-        return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-    while (i < p->nterms) {
-        int plane = p->terms[i].plane;
-        if (p->exact[plane])
-            i = put_exact(o, p, i, world, px, up, done);
-        else {
-            e = put_fused(o, p, e, world, px, up, done);
-            while (i < p->nterms && p->terms[i].plane == plane)
-                i++;
-        }
-        put_value_store(o, p, plane, px);
-        put_masks(o, p, cb, info, plane, plane == p->terms[0].plane);
+    int world = info->space == OUT_WORLD, n = 0, k, st;
+    size_t *term = malloc(((size_t)p->nplanes + 1) * 2 * sizeof *term), *entry = term + p->nplanes, i;
+    int *order = malloc(((size_t)p->nplanes + 1) * sizeof *order);
+    if (!term || !order) {
+        st = ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
+        goto out;
     }
-    free(done);
-    return PTP_OK;
+    for (i = p->nterms; i-- > 0;) /* each plane's first term and first fused entry */
+        term[p->terms[i].plane] = i;
+    for (i = p->nentries; i-- > 0;)
+        entry[p->entries[i].plane] = i;
+    if ((st = slp_order(order, &n, p, SLP_ORDER_CAP, SLP_ORDER_WIN, err)) != PTP_OK)
+        goto out;
+    for (k = 0; k < n; k++) {
+        if (p->exact[order[k]])
+            put_exact(o, p, term[order[k]], world, px, up, done);
+        else
+            put_fused(o, p, entry[order[k]], world, px, up, done);
+        put_value_store(o, p, order[k], px);
+        put_masks(o, p, cb, info, order[k], k == 0);
+    }
+out:
+    free(term);
+    free(order);
+    return st;
 }
 
 /* The lanes and certify64 compute a class arithmetically from 0/1 masks, in these numbers. */
@@ -646,14 +691,18 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
 static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
                      const out_info *info, const char *up, ptp_error *err)
 {
+    unsigned char *done = calloc(p->npairs + (size_t)p->npoints, 1); /* minors, then points */
     int st;
+    if (!done)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
     put_lanes_head(o, info, up);
     put_lanes_loop(o, info, up);
-    put_loads(o, t, info, cb);
-    if ((st = put_program(o, p, cb, info, up, err)) != PTP_OK)
-        return st;
-    put_lanes_class(o, info, up);
-    return PTP_OK;
+    put_loads(o, p, t, info, cb, done);
+    st = put_program(o, p, cb, info, up, done, err);
+    free(done);
+    if (st == PTP_OK)
+        put_lanes_class(o, info, up);
+    return st;
 }
 
 /* classify (one patch, the SoA layout with stride 1) and classify_soa (the caller's SoA array):

@@ -215,6 +215,15 @@ size_t slp_plane_end(const slp_prog *p, size_t a)
     return b;
 }
 
+int slp_doublings(const rat *s)
+{
+    int k;
+    for (k = 1; k <= 3; k++)
+        if (s->den == 1 && s->num == (ptp_i128)1 << k)
+            return k;
+    return 0;
+}
+
 /* Operation counts of the program: products (multiplies and multiply-adds) and sums (adds,
  * subtracts, and the add of each multiply-add). */
 static void count_ops(long *prod, long *sum, const slp_prog *p, int world)
@@ -238,8 +247,10 @@ static void count_ops(long *prod, long *sum, const slp_prog *p, int world)
         *prod += kinds;
         *sum += (long)(b - a - 1) * kinds + kinds - (a == 0 || p->entries[a - 1].group != p->entries[a].group);
     }
-    for (i = 0; i < p->ngroups; i++)
-        *prod += !rat_equal(&p->s[i], &one); /* s * the group's sum */
+    for (i = 0; i < p->ngroups; i++) { /* s * the group's sum: doublings or a product */
+        *sum += slp_doublings(&p->s[i]);
+        *prod += !rat_equal(&p->s[i], &one) && !slp_doublings(&p->s[i]);
+    }
     *sum += (long)p->ngroups - p->nplanes;   /* the groups' sum */
 }
 

@@ -49,6 +49,9 @@ typedef struct {
 int slp_build(slp_prog *p, const tp_table *t, ptp_error *err);
 /* Frees p's storage. */
 void slp_clear(slp_prog *p);
+/* k when the group scale s is 2^k, 0 < k <= 3 (s u is then k exact doublings, ((u + u) + (u + u)),
+ * which round as the product does), else 0. */
+int slp_doublings(const rat *s);
 /* Floating-point operations per patch (multiplies, adds, subtracts; a multiply-add counts 2),
  * clip or world space. */
 long slp_flops(const slp_prog *p, int world);

@@ -321,15 +321,13 @@ static inline void ptp_1x1_lanes_body(const float *PTP_1X1_RESTRICT soa, size_t 
             qs = PTP_1X1_VW;
         }
 #endif
-        const ptp_1x1_vf x0 = ptp_1x1_vload(q + 0 * qs), y0 = ptp_1x1_vload(q + 1 * qs),
-            w0 = ptp_1x1_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_1x1_vf x1 = ptp_1x1_vload(q + 4 * qs), y1 = ptp_1x1_vload(q + 5 * qs),
             w1 = ptp_1x1_vload(q + 7 * qs), g1 = e2 * w1;
         const ptp_1x1_vf x2 = ptp_1x1_vload(q + 8 * qs), y2 = ptp_1x1_vload(q + 9 * qs),
             w2 = ptp_1x1_vload(q + 11 * qs), g2 = e2 * w2;
-        const ptp_1x1_vf x3 = ptp_1x1_vload(q + 12 * qs), y3 = ptp_1x1_vload(q + 13 * qs),
-            w3 = ptp_1x1_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_1x1_vf m1_2 = x1 * y2 - y1 * x2;
+        const ptp_1x1_vf x0 = ptp_1x1_vload(q + 0 * qs), y0 = ptp_1x1_vload(q + 1 * qs),
+            w0 = ptp_1x1_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_1x1_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_1x1_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
@@ -338,6 +336,8 @@ static inline void ptp_1x1_lanes_body(const float *PTP_1X1_RESTRICT soa, size_t 
             ptp_1x1_vstoref(d + 0 * ds + l, v, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
+        const ptp_1x1_vf x3 = ptp_1x1_vload(q + 12 * qs), y3 = ptp_1x1_vload(q + 13 * qs),
+            w3 = ptp_1x1_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_1x1_vf m1_3 = x1 * y3 - y1 * x3;
         const ptp_1x1_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);

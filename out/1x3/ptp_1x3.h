@@ -46,7 +46,7 @@ extern "C" {
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_1X3_FLOPS 396
-#define PTP_1X3_MULS 240
+#define PTP_1X3_MULS 232
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_1X3_LANES
 #define PTP_1X3_LANES 16
@@ -409,23 +409,13 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
             qs = PTP_1X3_VW;
         }
 #endif
-        const ptp_1x3_vf x0 = ptp_1x3_vload(q + 0 * qs), y0 = ptp_1x3_vload(q + 1 * qs),
-            w0 = ptp_1x3_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_1x3_vf x1 = ptp_1x3_vload(q + 4 * qs), y1 = ptp_1x3_vload(q + 5 * qs),
             w1 = ptp_1x3_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_1x3_vf x2 = ptp_1x3_vload(q + 8 * qs), y2 = ptp_1x3_vload(q + 9 * qs),
-            w2 = ptp_1x3_vload(q + 11 * qs), g2 = e2 * w2;
-        const ptp_1x3_vf x3 = ptp_1x3_vload(q + 12 * qs), y3 = ptp_1x3_vload(q + 13 * qs),
-            w3 = ptp_1x3_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_1x3_vf x4 = ptp_1x3_vload(q + 16 * qs), y4 = ptp_1x3_vload(q + 17 * qs),
             w4 = ptp_1x3_vload(q + 19 * qs), g4 = e2 * w4;
-        const ptp_1x3_vf x5 = ptp_1x3_vload(q + 20 * qs), y5 = ptp_1x3_vload(q + 21 * qs),
-            w5 = ptp_1x3_vload(q + 23 * qs), g5 = e2 * w5;
-        const ptp_1x3_vf x6 = ptp_1x3_vload(q + 24 * qs), y6 = ptp_1x3_vload(q + 25 * qs),
-            w6 = ptp_1x3_vload(q + 27 * qs), g6 = e2 * w6;
-        const ptp_1x3_vf x7 = ptp_1x3_vload(q + 28 * qs), y7 = ptp_1x3_vload(q + 29 * qs),
-            w7 = ptp_1x3_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_1x3_vf m1_4 = x1 * y4 - y1 * x4;
+        const ptp_1x3_vf x0 = ptp_1x3_vload(q + 0 * qs), y0 = ptp_1x3_vload(q + 1 * qs),
+            w0 = ptp_1x3_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_1x3_vf m0_4 = x0 * y4 - y0 * x4;
         const ptp_1x3_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
@@ -434,10 +424,14 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
             ptp_1x3_vstoref(d + 0 * ds + l, v * 3.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
+        const ptp_1x3_vf x2 = ptp_1x3_vload(q + 8 * qs), y2 = ptp_1x3_vload(q + 9 * qs),
+            w2 = ptp_1x3_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_1x3_vf m2_4 = x2 * y4 - y2 * x4;
         const ptp_1x3_vf m0_2 = x0 * y2 - y0 * x2;
         u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
-        v = 2.0f * u;
+        v = (u + u);
+        const ptp_1x3_vf x5 = ptp_1x3_vload(q + 20 * qs), y5 = ptp_1x3_vload(q + 21 * qs),
+            w5 = ptp_1x3_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_1x3_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_1x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
@@ -446,10 +440,14 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
             ptp_1x3_vstoref(d + 1 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
+        const ptp_1x3_vf x3 = ptp_1x3_vload(q + 12 * qs), y3 = ptp_1x3_vload(q + 13 * qs),
+            w3 = ptp_1x3_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_1x3_vf m3_4 = x3 * y4 - y3 * x4;
         const ptp_1x3_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v = u;
+        const ptp_1x3_vf x6 = ptp_1x3_vload(q + 24 * qs), y6 = ptp_1x3_vload(q + 25 * qs),
+            w6 = ptp_1x3_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_1x3_vf m1_6 = x1 * y6 - y1 * x6;
         const ptp_1x3_vf m0_6 = x0 * y6 - y0 * x6;
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
@@ -463,13 +461,15 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
             ptp_1x3_vstoref(d + 2 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
+        const ptp_1x3_vf x7 = ptp_1x3_vload(q + 28 * qs), y7 = ptp_1x3_vload(q + 29 * qs),
+            w7 = ptp_1x3_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_1x3_vf m1_7 = x1 * y7 - y1 * x7;
         const ptp_1x3_vf m0_7 = x0 * y7 - y0 * x7;
         u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
         v = u;
         const ptp_1x3_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v = PTP_1X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         const ptp_1x3_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
         v = PTP_1X3_VFMAS(3.0f, u, v);
@@ -482,24 +482,24 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
             ptp_1x3_vstoref(d + 3 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
-        const ptp_1x3_vf m2_3 = x2 * y3 - y2 * x3;
-        u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v = u;
-        const ptp_1x3_vf m2_7 = x2 * y7 - y2 * x7;
-        u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
-        v = PTP_1X3_VFMAS(2.0f, u, v);
-        const ptp_1x3_vf m3_6 = x3 * y6 - y3 * x6;
-        u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
-        u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
-        u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v = PTP_1X3_VFMAS(9.0f, u, v);
-        if (d)
-            ptp_1x3_vstoref(d + 4 * ds + l, v * 0.0857142881f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_1x3_vf m3_7 = x3 * y7 - y3 * x7;
+        u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+        v = (u + u);
+        const ptp_1x3_vf m3_6 = x3 * y6 - y3 * x6;
+        const ptp_1x3_vf m2_3 = x2 * y3 - y2 * x3;
+        u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+        v = PTP_1X3_VFMAS(3.0f, u, v);
+        if (d)
+            ptp_1x3_vstoref(d + 6 * ds + l, v * 0.428571433f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        const ptp_1x3_vf m2_7 = x2 * y7 - y2 * x7;
+        u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
+        v = u;
+        if (d)
+            ptp_1x3_vstoref(d + 7 * ds + l, v * 3.0f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 7 */
         u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
@@ -511,20 +511,20 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
             ptp_1x3_vstoref(d + 5 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
-        u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v = 2.0f * u;
-        u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
-        if (d)
-            ptp_1x3_vstoref(d + 6 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
-        u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
+        u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = u;
+        u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+        v += (u + u);
+        u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
+        v = PTP_1X3_VFMAS(3.0f, u, v);
+        u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+        v = PTP_1X3_VFMAS(9.0f, u, v);
         if (d)
-            ptp_1x3_vstoref(d + 7 * ds + l, v * 3.0f, n - l);
+            ptp_1x3_vstoref(d + 4 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_1x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = u;
@@ -534,7 +534,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         notgt |= (v > 0.0f) == 0; /* plane 8 */
         const ptp_1x3_vf m4_6 = x4 * y6 - y4 * x6;
         u = ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
-        v = 2.0f * u;
+        v = (u + u);
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
@@ -558,7 +558,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         const ptp_1x3_vf m5_7 = x5 * y7 - y5 * x7;
         u = ((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        v = PTP_1X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
         v = PTP_1X3_VFMAS(3.0f, u, v);
         u = ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
@@ -569,34 +569,9 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
             ptp_1x3_vstoref(d + 11 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
-        const ptp_1x3_vf m6_7 = x6 * y7 - y6 * x7;
-        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
-        v = u;
-        u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v = PTP_1X3_VFMAS(2.0f, u, v);
-        u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
-        u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
-        u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v = PTP_1X3_VFMAS(9.0f, u, v);
-        if (d)
-            ptp_1x3_vstoref(d + 12 * ds + l, v * 0.0857142881f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 12 */
-        u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
-        v = u;
-        u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
-        u += ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
-        u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
-        if (d)
-            ptp_1x3_vstoref(d + 13 * ds + l, v * 0.142857149f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
-        v = 2.0f * u;
+        v = (u + u);
+        const ptp_1x3_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v = PTP_1X3_VFMAS(3.0f, u, v);
         if (d)
@@ -609,6 +584,31 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
             ptp_1x3_vstoref(d + 15 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 15 */
+        u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
+        v = u;
+        u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
+        u += ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
+        v = PTP_1X3_VFMAS(3.0f, u, v);
+        u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
+        v = PTP_1X3_VFMAS(6.0f, u, v);
+        if (d)
+            ptp_1x3_vstoref(d + 13 * ds + l, v * 0.142857149f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+        v = u;
+        u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+        v += (u + u);
+        u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
+        v = PTP_1X3_VFMAS(3.0f, u, v);
+        u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
+        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
+        v = PTP_1X3_VFMAS(9.0f, u, v);
+        if (d)
+            ptp_1x3_vstoref(d + 12 * ds + l, v * 0.0857142881f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 12 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
          * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
         notlt &= 1;

@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_2X3_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_2X3_FLOPS 1462
-#define PTP_2X3_MULS 836
+#define PTP_2X3_FLOPS 1474
+#define PTP_2X3_MULS 794
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_2X3_LANES
 #define PTP_2X3_LANES 16
@@ -713,31 +713,13 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             qs = PTP_2X3_VW;
         }
 #endif
-        const ptp_2x3_vf x0 = ptp_2x3_vload(q + 0 * qs), y0 = ptp_2x3_vload(q + 1 * qs),
-            w0 = ptp_2x3_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_2x3_vf x1 = ptp_2x3_vload(q + 4 * qs), y1 = ptp_2x3_vload(q + 5 * qs),
             w1 = ptp_2x3_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_2x3_vf x2 = ptp_2x3_vload(q + 8 * qs), y2 = ptp_2x3_vload(q + 9 * qs),
-            w2 = ptp_2x3_vload(q + 11 * qs), g2 = e2 * w2;
-        const ptp_2x3_vf x3 = ptp_2x3_vload(q + 12 * qs), y3 = ptp_2x3_vload(q + 13 * qs),
-            w3 = ptp_2x3_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_2x3_vf x4 = ptp_2x3_vload(q + 16 * qs), y4 = ptp_2x3_vload(q + 17 * qs),
             w4 = ptp_2x3_vload(q + 19 * qs), g4 = e2 * w4;
-        const ptp_2x3_vf x5 = ptp_2x3_vload(q + 20 * qs), y5 = ptp_2x3_vload(q + 21 * qs),
-            w5 = ptp_2x3_vload(q + 23 * qs), g5 = e2 * w5;
-        const ptp_2x3_vf x6 = ptp_2x3_vload(q + 24 * qs), y6 = ptp_2x3_vload(q + 25 * qs),
-            w6 = ptp_2x3_vload(q + 27 * qs), g6 = e2 * w6;
-        const ptp_2x3_vf x7 = ptp_2x3_vload(q + 28 * qs), y7 = ptp_2x3_vload(q + 29 * qs),
-            w7 = ptp_2x3_vload(q + 31 * qs), g7 = e2 * w7;
-        const ptp_2x3_vf x8 = ptp_2x3_vload(q + 32 * qs), y8 = ptp_2x3_vload(q + 33 * qs),
-            w8 = ptp_2x3_vload(q + 35 * qs), g8 = e2 * w8;
-        const ptp_2x3_vf x9 = ptp_2x3_vload(q + 36 * qs), y9 = ptp_2x3_vload(q + 37 * qs),
-            w9 = ptp_2x3_vload(q + 39 * qs), g9 = e2 * w9;
-        const ptp_2x3_vf x10 = ptp_2x3_vload(q + 40 * qs), y10 = ptp_2x3_vload(q + 41 * qs),
-            w10 = ptp_2x3_vload(q + 43 * qs), g10 = e2 * w10;
-        const ptp_2x3_vf x11 = ptp_2x3_vload(q + 44 * qs), y11 = ptp_2x3_vload(q + 45 * qs),
-            w11 = ptp_2x3_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_2x3_vf m1_4 = x1 * y4 - y1 * x4;
+        const ptp_2x3_vf x0 = ptp_2x3_vload(q + 0 * qs), y0 = ptp_2x3_vload(q + 1 * qs),
+            w0 = ptp_2x3_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_2x3_vf m0_4 = x0 * y4 - y0 * x4;
         const ptp_2x3_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
@@ -746,10 +728,14 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             ptp_2x3_vstoref(d + 0 * ds + l, v * 6.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
+        const ptp_2x3_vf x2 = ptp_2x3_vload(q + 8 * qs), y2 = ptp_2x3_vload(q + 9 * qs),
+            w2 = ptp_2x3_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_2x3_vf m2_4 = x2 * y4 - y2 * x4;
         const ptp_2x3_vf m0_2 = x0 * y2 - y0 * x2;
         u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
-        v = 2.0f * u;
+        v = (u + u);
+        const ptp_2x3_vf x5 = ptp_2x3_vload(q + 20 * qs), y5 = ptp_2x3_vload(q + 21 * qs),
+            w5 = ptp_2x3_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_2x3_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_2x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
@@ -758,10 +744,14 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             ptp_2x3_vstoref(d + 1 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
+        const ptp_2x3_vf x3 = ptp_2x3_vload(q + 12 * qs), y3 = ptp_2x3_vload(q + 13 * qs),
+            w3 = ptp_2x3_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_2x3_vf m3_4 = x3 * y4 - y3 * x4;
         const ptp_2x3_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v = u;
+        const ptp_2x3_vf x6 = ptp_2x3_vload(q + 24 * qs), y6 = ptp_2x3_vload(q + 25 * qs),
+            w6 = ptp_2x3_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_2x3_vf m1_6 = x1 * y6 - y1 * x6;
         const ptp_2x3_vf m0_6 = x0 * y6 - y0 * x6;
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
@@ -775,13 +765,15 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             ptp_2x3_vstoref(d + 2 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
+        const ptp_2x3_vf x7 = ptp_2x3_vload(q + 28 * qs), y7 = ptp_2x3_vload(q + 29 * qs),
+            w7 = ptp_2x3_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_2x3_vf m1_7 = x1 * y7 - y1 * x7;
         const ptp_2x3_vf m0_7 = x0 * y7 - y0 * x7;
         u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
         v = u;
         const ptp_2x3_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         const ptp_2x3_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
         v = PTP_2X3_VFMAS(3.0f, u, v);
@@ -794,24 +786,24 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             ptp_2x3_vstoref(d + 3 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
-        const ptp_2x3_vf m2_3 = x2 * y3 - y2 * x3;
-        u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v = u;
-        const ptp_2x3_vf m2_7 = x2 * y7 - y2 * x7;
-        u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
-        const ptp_2x3_vf m3_6 = x3 * y6 - y3 * x6;
-        u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
-        u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
-        u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 4 * ds + l, v * 0.171428576f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
         const ptp_2x3_vf m3_7 = x3 * y7 - y3 * x7;
+        u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+        v = (u + u);
+        const ptp_2x3_vf m3_6 = x3 * y6 - y3 * x6;
+        const ptp_2x3_vf m2_3 = x2 * y3 - y2 * x3;
+        u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        if (d)
+            ptp_2x3_vstoref(d + 6 * ds + l, v * 0.857142866f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        const ptp_2x3_vf m2_7 = x2 * y7 - y2 * x7;
+        u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
+        v = u;
+        if (d)
+            ptp_2x3_vstoref(d + 7 * ds + l, v * 6.0f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 7 */
         u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
@@ -823,27 +815,29 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             ptp_2x3_vstoref(d + 5 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
-        u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v = 2.0f * u;
-        u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 6 * ds + l, v * 0.857142866f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
-        u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
+        u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = u;
+        u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+        v += (u + u);
+        u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
         if (d)
-            ptp_2x3_vstoref(d + 7 * ds + l, v * 6.0f, n - l);
+            ptp_2x3_vstoref(d + 4 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        const ptp_2x3_vf x8 = ptp_2x3_vload(q + 32 * qs), y8 = ptp_2x3_vload(q + 33 * qs),
+            w8 = ptp_2x3_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_2x3_vf m1_8 = x1 * y8 - y1 * x8;
         const ptp_2x3_vf m0_8 = x0 * y8 - y0 * x8;
         u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
         v = u;
         const ptp_2x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 8 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -852,7 +846,9 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g0 * (-m2_8);
         u = PTP_2X3_VFMA(g2, m0_8, u);
         u = PTP_2X3_VFMA(g8, -m0_2, u);
-        v = 2.0f * u;
+        v = (u + u);
+        const ptp_2x3_vf x9 = ptp_2x3_vload(q + 36 * qs), y9 = ptp_2x3_vload(q + 37 * qs),
+            w9 = ptp_2x3_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_2x3_vf m1_9 = x1 * y9 - y1 * x9;
         u = g0 * (-m1_9);
         const ptp_2x3_vf m0_9 = x0 * y9 - y0 * x9;
@@ -863,7 +859,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g0 * (m4_6);
         u = PTP_2X3_VFMA(g4, -m0_6, u);
         u = PTP_2X3_VFMA(g6, m0_4, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g1 * (m4_5);
         u = PTP_2X3_VFMA(g4, -m1_5, u);
         u = PTP_2X3_VFMA(g5, m1_4, u);
@@ -881,7 +877,9 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g0 * (m4_7);
         u = PTP_2X3_VFMA(g4, -m0_7, u);
         u = PTP_2X3_VFMA(g7, m0_4, u);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
+        const ptp_2x3_vf x10 = ptp_2x3_vload(q + 40 * qs), y10 = ptp_2x3_vload(q + 41 * qs),
+            w10 = ptp_2x3_vload(q + 43 * qs), g10 = e2 * w10;
         const ptp_2x3_vf m1_10 = x1 * y10 - y1 * x10;
         u = g0 * (-m1_10);
         const ptp_2x3_vf m0_10 = x0 * y10 - y0 * x10;
@@ -907,65 +905,130 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             ptp_2x3_vstoref(d + 10 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
+        const ptp_2x3_vf x11 = ptp_2x3_vload(q + 44 * qs), y11 = ptp_2x3_vload(q + 45 * qs),
+            w11 = ptp_2x3_vload(q + 47 * qs), g11 = e2 * w11;
+        const ptp_2x3_vf m3_11 = x3 * y11 - y3 * x11;
+        u = g1 * (-m3_11);
         const ptp_2x3_vf m1_11 = x1 * y11 - y1 * x11;
-        u = g0 * (-m1_11);
-        const ptp_2x3_vf m0_11 = x0 * y11 - y0 * x11;
-        u = PTP_2X3_VFMA(g1, m0_11, u);
-        u = PTP_2X3_VFMA(g11, -m0_1, u);
-        v = u;
-        u = g1 * (-m3_8);
-        u = PTP_2X3_VFMA(g3, m1_8 + m4_5, u);
-        u = PTP_2X3_VFMA(g4, -m3_5, u);
-        u = PTP_2X3_VFMA(g5, m3_4, u);
-        u = PTP_2X3_VFMA(g8, -m1_3, u);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
-        const ptp_2x3_vf m3_9 = x3 * y9 - y3 * x9;
-        u = g0 * (-m3_9);
-        u = PTP_2X3_VFMA(g3, m0_9, u);
-        u = PTP_2X3_VFMA(g9, -m0_3, u);
+        u = PTP_2X3_VFMA(g3, m1_11, u);
+        u = PTP_2X3_VFMA(g11, -m1_3, u);
+        v = (u + u);
+        const ptp_2x3_vf m3_10 = x3 * y10 - y3 * x10;
+        u = g2 * (-m3_10);
+        const ptp_2x3_vf m2_10 = x2 * y10 - y2 * x10;
+        u = PTP_2X3_VFMA(g3, m2_10, u);
+        u = PTP_2X3_VFMA(g10, -m2_3, u);
         v = PTP_2X3_VFMAS(3.0f, u, v);
         const ptp_2x3_vf m5_7 = x5 * y7 - y5 * x7;
-        u = g0 * (m5_7);
-        u = PTP_2X3_VFMA(g5, -m0_7, u);
-        u = PTP_2X3_VFMA(g7, m0_5, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
-        const ptp_2x3_vf m2_10 = x2 * y10 - y2 * x10;
-        u = g0 * (-m2_10);
-        u = PTP_2X3_VFMA(g1, m4_7, u);
-        u = PTP_2X3_VFMA(g2, m0_10, u);
-        u = PTP_2X3_VFMA(g4, -m1_7, u);
-        u = PTP_2X3_VFMA(g7, m1_4, u);
-        u = PTP_2X3_VFMA(g10, -m0_2, u);
+        u = g3 * (m5_7);
+        u = PTP_2X3_VFMA(g5, -m3_7, u);
+        u = PTP_2X3_VFMA(g7, m3_5, u);
+        v += ((u + u) + (u + u));
+        const ptp_2x3_vf m6_7 = x6 * y7 - y6 * x7;
+        u = g2 * (m6_7);
+        u = PTP_2X3_VFMA(g6, -m2_7, u);
+        u = PTP_2X3_VFMA(g7, m2_6, u);
         v = PTP_2X3_VFMAS(6.0f, u, v);
-        u = g1 * (-m2_9);
-        u = PTP_2X3_VFMA(g2, m1_9, u);
-        u = PTP_2X3_VFMA(g9, -m1_2, u);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
-        u = g2 * (m4_6);
-        u = PTP_2X3_VFMA(g4, -m2_6, u);
-        u = PTP_2X3_VFMA(g6, m2_4, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
-        u = g1 * (m5_6);
-        u = PTP_2X3_VFMA(g5, -m1_6, u);
-        u = PTP_2X3_VFMA(g6, m1_5, u);
-        v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
-            ptp_2x3_vstoref(d + 11 * ds + l, v * 0.042857144f, n - l);
+            ptp_2x3_vstoref(d + 14 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        const ptp_2x3_vf m2_11 = x2 * y11 - y2 * x11;
+        u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
+        v = u;
+        u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+        v += (u + u);
+        if (d)
+            ptp_2x3_vstoref(d + 15 * ds + l, v * 1.5f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        const ptp_2x3_vf m4_9 = x4 * y9 - y4 * x9;
+        u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
+        const ptp_2x3_vf m4_8 = x4 * y8 - y4 * x8;
+        u += ((g1 * m4_8 - g4 * m1_8) + g8 * m1_4);
+        v = u;
+        const ptp_2x3_vf m5_8 = x5 * y8 - y5 * x8;
+        u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
+        v += (u + u);
+        if (d)
+            ptp_2x3_vstoref(d + 16 * ds + l, v, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 16 */
+        const ptp_2x3_vf m4_10 = x4 * y10 - y4 * x10;
+        u = ((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
+        u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
+        v = (u + u);
+        const ptp_2x3_vf m5_9 = x5 * y9 - y5 * x9;
+        u = -((g0 * m5_9 - g5 * m0_9) + g9 * m0_5);
+        u -= ((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        const ptp_2x3_vf m6_8 = x6 * y8 - y6 * x8;
+        u = -((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
+        v += ((u + u) + (u + u));
+        u = ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        if (d)
+            ptp_2x3_vstoref(d + 17 * ds + l, v * 0.142857149f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        const ptp_2x3_vf m4_11 = x4 * y11 - y4 * x11;
+        const ptp_2x3_vf m0_11 = x0 * y11 - y0 * x11;
+        u = ((g0 * m4_11 - g4 * m0_11) + g11 * m0_4);
+        u += ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
+        v = u;
+        const ptp_2x3_vf m7_8 = x7 * y8 - y7 * x8;
+        u = -((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
+        v += (u + u);
+        const ptp_2x3_vf m6_9 = x6 * y9 - y6 * x9;
+        u = -((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
+        u += ((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
+        u -= ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
+        u += ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        if (d)
+            ptp_2x3_vstoref(d + 18 * ds + l, v * 0.0476190485f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        u = g0 * (-m3_11);
+        u = PTP_2X3_VFMA(g3, m0_11, u);
+        u = PTP_2X3_VFMA(g11, -m0_3, u);
+        v = u;
+        u = g3 * (m4_7);
+        u = PTP_2X3_VFMA(g4, -m3_7, u);
+        u = PTP_2X3_VFMA(g7, m3_4, u);
+        v += (u + u);
+        u = g1 * (-m2_11);
+        const ptp_2x3_vf m3_9 = x3 * y9 - y3 * x9;
+        u = PTP_2X3_VFMA(g2, m1_11 - m3_9, u);
+        u = PTP_2X3_VFMA(g3, m2_9, u);
+        u = PTP_2X3_VFMA(g9, -m2_3, u);
+        u = PTP_2X3_VFMA(g11, -m1_2, u);
+        v = PTP_2X3_VFMAS(3.0f, u, v);
+        u = g1 * (m6_7 - m3_10);
+        u = PTP_2X3_VFMA(g3, m1_10 + m5_6, u);
+        u = PTP_2X3_VFMA(g5, -m3_6, u);
+        u = PTP_2X3_VFMA(g6, m3_5 - m1_7, u);
+        u = PTP_2X3_VFMA(g7, m1_6, u);
+        u = PTP_2X3_VFMA(g10, -m1_3, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g2 * (m5_7);
+        u = PTP_2X3_VFMA(g5, -m2_7, u);
+        u = PTP_2X3_VFMA(g7, m2_5, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
+        if (d)
+            ptp_2x3_vstoref(d + 13 * ds + l, v * 0.0714285746f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 13 */
         u = g2 * (-m3_8);
         u = PTP_2X3_VFMA(g3, m2_8, u);
         u = PTP_2X3_VFMA(g8, -m2_3, u);
         v = u;
-        const ptp_2x3_vf m2_11 = x2 * y11 - y2 * x11;
-        const ptp_2x3_vf m6_7 = x6 * y7 - y6 * x7;
         u = g0 * (m6_7 - m2_11);
         u = PTP_2X3_VFMA(g2, m0_11, u);
         u = PTP_2X3_VFMA(g6, -m0_7, u);
         u = PTP_2X3_VFMA(g7, m0_6, u);
         u = PTP_2X3_VFMA(g11, -m0_2, u);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
-        const ptp_2x3_vf m3_10 = x3 * y10 - y3 * x10;
+        v += (u + u);
         u = g0 * (-m3_10);
         u = PTP_2X3_VFMA(g3, m0_10, u);
         u = PTP_2X3_VFMA(g10, -m0_3, u);
@@ -973,7 +1036,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g3 * (m4_6);
         u = PTP_2X3_VFMA(g4, -m3_6, u);
         u = PTP_2X3_VFMA(g6, m3_4, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g1 * (-m3_9);
         u = PTP_2X3_VFMA(g2, m4_7, u);
         u = PTP_2X3_VFMA(g3, m1_9, u);
@@ -997,223 +1060,61 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             ptp_2x3_vstoref(d + 12 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
-        const ptp_2x3_vf m3_11 = x3 * y11 - y3 * x11;
-        u = g0 * (-m3_11);
-        u = PTP_2X3_VFMA(g3, m0_11, u);
-        u = PTP_2X3_VFMA(g11, -m0_3, u);
+        u = g0 * (-m1_11);
+        u = PTP_2X3_VFMA(g1, m0_11, u);
+        u = PTP_2X3_VFMA(g11, -m0_1, u);
         v = u;
-        u = g3 * (m4_7);
-        u = PTP_2X3_VFMA(g4, -m3_7, u);
-        u = PTP_2X3_VFMA(g7, m3_4, u);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
-        u = g1 * (-m2_11);
-        u = PTP_2X3_VFMA(g2, m1_11 - m3_9, u);
-        u = PTP_2X3_VFMA(g3, m2_9, u);
-        u = PTP_2X3_VFMA(g9, -m2_3, u);
-        u = PTP_2X3_VFMA(g11, -m1_2, u);
+        u = g1 * (-m3_8);
+        u = PTP_2X3_VFMA(g3, m1_8 + m4_5, u);
+        u = PTP_2X3_VFMA(g4, -m3_5, u);
+        u = PTP_2X3_VFMA(g5, m3_4, u);
+        u = PTP_2X3_VFMA(g8, -m1_3, u);
+        v += (u + u);
+        u = g0 * (-m3_9);
+        u = PTP_2X3_VFMA(g3, m0_9, u);
+        u = PTP_2X3_VFMA(g9, -m0_3, u);
         v = PTP_2X3_VFMAS(3.0f, u, v);
-        u = g1 * (m6_7 - m3_10);
-        u = PTP_2X3_VFMA(g3, m1_10 + m5_6, u);
-        u = PTP_2X3_VFMA(g5, -m3_6, u);
-        u = PTP_2X3_VFMA(g6, m3_5 - m1_7, u);
-        u = PTP_2X3_VFMA(g7, m1_6, u);
-        u = PTP_2X3_VFMA(g10, -m1_3, u);
+        u = g0 * (m5_7);
+        u = PTP_2X3_VFMA(g5, -m0_7, u);
+        u = PTP_2X3_VFMA(g7, m0_5, u);
+        v += ((u + u) + (u + u));
+        u = g0 * (-m2_10);
+        u = PTP_2X3_VFMA(g1, m4_7, u);
+        u = PTP_2X3_VFMA(g2, m0_10, u);
+        u = PTP_2X3_VFMA(g4, -m1_7, u);
+        u = PTP_2X3_VFMA(g7, m1_4, u);
+        u = PTP_2X3_VFMA(g10, -m0_2, u);
         v = PTP_2X3_VFMAS(6.0f, u, v);
-        u = g2 * (m5_7);
-        u = PTP_2X3_VFMA(g5, -m2_7, u);
-        u = PTP_2X3_VFMA(g7, m2_5, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 13 * ds + l, v * 0.0714285746f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
-        u = g1 * (-m3_11);
-        u = PTP_2X3_VFMA(g3, m1_11, u);
-        u = PTP_2X3_VFMA(g11, -m1_3, u);
-        v = 2.0f * u;
-        u = g2 * (-m3_10);
-        u = PTP_2X3_VFMA(g3, m2_10, u);
-        u = PTP_2X3_VFMA(g10, -m2_3, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
-        u = g3 * (m5_7);
-        u = PTP_2X3_VFMA(g5, -m3_7, u);
-        u = PTP_2X3_VFMA(g7, m3_5, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
-        u = g2 * (m6_7);
-        u = PTP_2X3_VFMA(g6, -m2_7, u);
-        u = PTP_2X3_VFMA(g7, m2_6, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 14 * ds + l, v * 0.214285716f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
-        u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
-        v = u;
-        u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 15 * ds + l, v * 1.5f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
-        const ptp_2x3_vf m4_9 = x4 * y9 - y4 * x9;
-        u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
-        const ptp_2x3_vf m4_8 = x4 * y8 - y4 * x8;
-        u += ((g1 * m4_8 - g4 * m1_8) + g8 * m1_4);
-        v = u;
-        const ptp_2x3_vf m5_8 = x5 * y8 - y5 * x8;
-        u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 16 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 16 */
-        const ptp_2x3_vf m4_10 = x4 * y10 - y4 * x10;
-        u = ((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
-        u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
-        v = 2.0f * u;
-        const ptp_2x3_vf m5_9 = x5 * y9 - y5 * x9;
-        u = -((g0 * m5_9 - g5 * m0_9) + g9 * m0_5);
-        u -= ((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
-        const ptp_2x3_vf m6_8 = x6 * y8 - y6 * x8;
-        u = -((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
-        u = ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 17 * ds + l, v * 0.142857149f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 17 */
-        const ptp_2x3_vf m4_11 = x4 * y11 - y4 * x11;
-        u = ((g0 * m4_11 - g4 * m0_11) + g11 * m0_4);
-        u += ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
-        v = u;
-        const ptp_2x3_vf m7_8 = x7 * y8 - y7 * x8;
-        u = -((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
-        const ptp_2x3_vf m6_9 = x6 * y9 - y6 * x9;
-        u = -((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
-        u += ((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
-        u -= ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
-        u += ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
+        u = g1 * (-m2_9);
+        u = PTP_2X3_VFMA(g2, m1_9, u);
+        u = PTP_2X3_VFMA(g9, -m1_2, u);
         v = PTP_2X3_VFMAS(9.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 18 * ds + l, v * 0.0476190485f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
-        const ptp_2x3_vf m5_11 = x5 * y11 - y5 * x11;
-        u = g0 * (m5_11);
-        u = PTP_2X3_VFMA(g3, m5_8, u);
-        u = PTP_2X3_VFMA(g5, -m3_8 - m0_11, u);
-        u = PTP_2X3_VFMA(g8, m3_5, u);
-        u = PTP_2X3_VFMA(g11, m0_5, u);
-        v = u;
-        u = g1 * (m4_11);
-        u = PTP_2X3_VFMA(g3, m4_9, u);
-        u = PTP_2X3_VFMA(g4, -m1_11 - m3_9, u);
-        u = PTP_2X3_VFMA(g9, m3_4, u);
-        u = PTP_2X3_VFMA(g11, m1_4, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
-        const ptp_2x3_vf m7_9 = x7 * y9 - y7 * x9;
-        u = g0 * (-m7_9);
-        u = PTP_2X3_VFMA(g1, -m7_8, u);
-        u = PTP_2X3_VFMA(g7, m1_8 + m0_9, u);
-        u = PTP_2X3_VFMA(g8, -m1_7, u);
-        u = PTP_2X3_VFMA(g9, -m0_7, u);
-        v = PTP_2X3_VFMAS(5.0f, u, v);
-        const ptp_2x3_vf m6_10 = x6 * y10 - y6 * x10;
-        u = g0 * (-m6_10);
-        u = PTP_2X3_VFMA(g2, -m6_8, u);
-        u = PTP_2X3_VFMA(g6, m2_8 + m0_10, u);
-        u = PTP_2X3_VFMA(g8, -m2_6, u);
-        u = PTP_2X3_VFMA(g10, -m0_6, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
-        const ptp_2x3_vf m5_10 = x5 * y10 - y5 * x10;
-        u = g1 * (m5_10);
-        u = PTP_2X3_VFMA(g2, m5_9, u);
-        u = PTP_2X3_VFMA(g5, -m1_10 - m2_9, u);
-        u = PTP_2X3_VFMA(g9, m2_5, u);
-        u = PTP_2X3_VFMA(g10, m1_5, u);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
-        u = g2 * (m4_10);
-        u = PTP_2X3_VFMA(g4, -m2_10, u);
-        u = PTP_2X3_VFMA(g10, m2_4, u);
+        u = g2 * (m4_6);
+        u = PTP_2X3_VFMA(g4, -m2_6, u);
+        u = PTP_2X3_VFMA(g6, m2_4, u);
         v = PTP_2X3_VFMAS(12.0f, u, v);
-        u = g1 * (-m6_9);
-        u = PTP_2X3_VFMA(g6, m1_9, u);
-        u = PTP_2X3_VFMA(g9, -m1_6, u);
+        u = g1 * (m5_6);
+        u = PTP_2X3_VFMA(g5, -m1_6, u);
+        u = PTP_2X3_VFMA(g6, m1_5, u);
         v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
-            ptp_2x3_vstoref(d + 19 * ds + l, v * 0.0285714287f, n - l);
+            ptp_2x3_vstoref(d + 11 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 19 */
-        const ptp_2x3_vf m6_11 = x6 * y11 - y6 * x11;
-        u = g0 * (-m6_11);
-        u = PTP_2X3_VFMA(g3, -m6_8, u);
-        u = PTP_2X3_VFMA(g6, m3_8 + m0_11, u);
-        u = PTP_2X3_VFMA(g8, -m3_6, u);
-        u = PTP_2X3_VFMA(g11, -m0_6, u);
-        v = u;
-        const ptp_2x3_vf m7_10 = x7 * y10 - y7 * x10;
-        u = g0 * (-m7_10);
-        u = PTP_2X3_VFMA(g2, -m7_8, u);
-        u = PTP_2X3_VFMA(g7, m2_8 + m0_10, u);
-        u = PTP_2X3_VFMA(g8, -m2_7, u);
-        u = PTP_2X3_VFMA(g10, -m0_7, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
-        u = g2 * (m4_11);
-        u = PTP_2X3_VFMA(g3, m4_10, u);
-        u = PTP_2X3_VFMA(g4, -m2_11 - m3_10, u);
-        u = PTP_2X3_VFMA(g10, m3_4, u);
-        u = PTP_2X3_VFMA(g11, m2_4, u);
-        v = PTP_2X3_VFMAS(5.0f, u, v);
-        u = g1 * (m5_11);
-        u = PTP_2X3_VFMA(g3, m5_9, u);
-        u = PTP_2X3_VFMA(g5, -m1_11 - m3_9, u);
-        u = PTP_2X3_VFMA(g9, m3_5, u);
-        u = PTP_2X3_VFMA(g11, m1_5, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
-        u = g1 * (-m6_10);
-        u = PTP_2X3_VFMA(g2, -m6_9, u);
-        u = PTP_2X3_VFMA(g6, m1_10 + m2_9, u);
-        u = PTP_2X3_VFMA(g9, -m2_6, u);
-        u = PTP_2X3_VFMA(g10, -m1_6, u);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
-        u = g1 * (-m7_9);
-        u = PTP_2X3_VFMA(g7, m1_9, u);
-        u = PTP_2X3_VFMA(g9, -m1_7, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
-        u = g2 * (m5_10);
-        u = PTP_2X3_VFMA(g5, -m2_10, u);
-        u = PTP_2X3_VFMA(g10, m2_5, u);
-        v = PTP_2X3_VFMAS(18.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 20 * ds + l, v * 0.0285714287f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_2x3_vf m7_11 = x7 * y11 - y7 * x11;
-        u = -((g0 * m7_11 - g7 * m0_11) + g11 * m0_7);
-        u -= ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
-        v = u;
-        u = ((g3 * m4_11 - g4 * m3_11) + g11 * m3_4);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
-        u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
-        u += ((g2 * m5_11 - g5 * m2_11) + g11 * m2_5);
-        u -= ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
-        u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
-        if (d)
-            ptp_2x3_vstoref(d + 21 * ds + l, v * 0.0476190485f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 21 */
         u = -((g1 * m7_11 - g7 * m1_11) + g11 * m1_7);
+        const ptp_2x3_vf m7_9 = x7 * y9 - y7 * x9;
         u -= ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
-        v = 2.0f * u;
+        v = (u + u);
+        const ptp_2x3_vf m6_11 = x6 * y11 - y6 * x11;
         u = ((g2 * m6_11 - g6 * m2_11) + g11 * m2_6);
+        const ptp_2x3_vf m6_10 = x6 * y10 - y6 * x10;
         u += ((g3 * m6_10 - g6 * m3_10) + g10 * m3_6);
         v = PTP_2X3_VFMAS(3.0f, u, v);
+        const ptp_2x3_vf m5_11 = x5 * y11 - y5 * x11;
         u = ((g3 * m5_11 - g5 * m3_11) + g11 * m3_5);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
+        const ptp_2x3_vf m7_10 = x7 * y10 - y7 * x10;
         u = -((g2 * m7_10 - g7 * m2_10) + g10 * m2_7);
         v = PTP_2X3_VFMAS(6.0f, u, v);
         if (d)
@@ -1224,7 +1125,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u -= ((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
         v = u;
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 23 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1233,7 +1134,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
         v = u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 24 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1242,7 +1143,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g0 * (m8_10);
         u = PTP_2X3_VFMA(g8, -m0_10, u);
         u = PTP_2X3_VFMA(g10, m0_8, u);
-        v = 2.0f * u;
+        v = (u + u);
         u = g1 * (m8_9);
         u = PTP_2X3_VFMA(g8, -m1_9, u);
         u = PTP_2X3_VFMA(g9, m1_8, u);
@@ -1250,7 +1151,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g4 * (-m6_8);
         u = PTP_2X3_VFMA(g6, m4_8, u);
         u = PTP_2X3_VFMA(g8, -m4_6, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g4 * (-m5_9);
         u = PTP_2X3_VFMA(g5, m4_9, u);
         u = PTP_2X3_VFMA(g9, -m4_5, u);
@@ -1267,7 +1168,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g4 * (-m7_8);
         u = PTP_2X3_VFMA(g7, m4_8, u);
         u = PTP_2X3_VFMA(g8, -m4_7, u);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         const ptp_2x3_vf m9_10 = x9 * y10 - y9 * x10;
         u = g0 * (m9_10);
         u = PTP_2X3_VFMA(g2, m8_9, u);
@@ -1276,6 +1177,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g10, m0_9, u);
         v = PTP_2X3_VFMAS(3.0f, u, v);
         u = g1 * (m8_10);
+        const ptp_2x3_vf m5_10 = x5 * y10 - y5 * x10;
         u = PTP_2X3_VFMA(g4, -m5_10, u);
         u = PTP_2X3_VFMA(g5, m4_10 - m6_8, u);
         u = PTP_2X3_VFMA(g6, m5_8, u);
@@ -1300,7 +1202,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g5, m4_11, u);
         u = PTP_2X3_VFMA(g9, -m0_11, u);
         u = PTP_2X3_VFMA(g11, m0_9 - m4_5, u);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g1 * (m8_11);
         u = PTP_2X3_VFMA(g8, -m1_11, u);
         u = PTP_2X3_VFMA(g11, m1_8, u);
@@ -1308,7 +1210,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g5 * (-m7_8);
         u = PTP_2X3_VFMA(g7, m5_8, u);
         u = PTP_2X3_VFMA(g8, -m5_7, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g2 * (m8_10);
         u = PTP_2X3_VFMA(g4, -m7_9, u);
         u = PTP_2X3_VFMA(g7, m4_9, u);
@@ -1342,7 +1244,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g7, m6_8, u);
         u = PTP_2X3_VFMA(g8, -m6_7 - m3_10, u);
         u = PTP_2X3_VFMA(g10, m3_8, u);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g2 * (m8_11);
         u = PTP_2X3_VFMA(g8, -m2_11, u);
         u = PTP_2X3_VFMA(g11, m2_8, u);
@@ -1350,7 +1252,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g4 * (-m6_11);
         u = PTP_2X3_VFMA(g6, m4_11, u);
         u = PTP_2X3_VFMA(g11, -m4_6, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g1 * (m9_11);
         u = PTP_2X3_VFMA(g4, -m7_10, u);
         u = PTP_2X3_VFMA(g7, m4_10, u);
@@ -1381,7 +1283,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g4 * (-m7_11);
         u = PTP_2X3_VFMA(g7, m4_11, u);
         u = PTP_2X3_VFMA(g11, -m4_7, u);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g1 * (m10_11);
         u = PTP_2X3_VFMA(g3, m9_10, u);
         u = PTP_2X3_VFMA(g9, -m3_10, u);
@@ -1406,7 +1308,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g3 * (m9_11);
         u = PTP_2X3_VFMA(g9, -m3_11, u);
         u = PTP_2X3_VFMA(g11, m3_9, u);
-        v = 2.0f * u;
+        v = (u + u);
         u = g2 * (m10_11);
         u = PTP_2X3_VFMA(g10, -m2_11, u);
         u = PTP_2X3_VFMA(g11, m2_10, u);
@@ -1414,7 +1316,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g5 * (-m7_11);
         u = PTP_2X3_VFMA(g7, m5_11, u);
         u = PTP_2X3_VFMA(g11, -m5_7, u);
-        v = PTP_2X3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g6 * (-m7_10);
         u = PTP_2X3_VFMA(g7, m6_10, u);
         u = PTP_2X3_VFMA(g10, -m6_7, u);
@@ -1426,7 +1328,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         v = u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 31 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1438,7 +1340,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 32 */
         u = ((g4 * m8_10 - g8 * m4_10) + g10 * m4_8);
-        v = 2.0f * u;
+        v = (u + u);
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v = PTP_2X3_VFMAS(3.0f, u, v);
         if (d)
@@ -1459,7 +1361,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = ((g7 * m8_9 - g8 * m7_9) + g9 * m7_8);
         v = u;
         u = ((g4 * m9_11 - g9 * m4_11) + g11 * m4_9);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g5 * m8_11 - g8 * m5_11) + g11 * m5_8);
         v = PTP_2X3_VFMAS(3.0f, u, v);
         u = ((g6 * m8_10 - g8 * m6_10) + g10 * m6_8);
@@ -1473,7 +1375,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = ((g4 * m10_11 - g10 * m4_11) + g11 * m4_10);
         v = u;
         u = ((g7 * m8_10 - g8 * m7_10) + g10 * m7_8);
-        v = PTP_2X3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g6 * m8_11 - g8 * m6_11) + g11 * m6_8);
         v = PTP_2X3_VFMAS(3.0f, u, v);
         u = ((g5 * m9_11 - g9 * m5_11) + g11 * m5_9);
@@ -1496,7 +1398,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 37 */
         u = ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
-        v = 2.0f * u;
+        v = (u + u);
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v = PTP_2X3_VFMAS(3.0f, u, v);
         if (d)
@@ -1509,6 +1411,104 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             ptp_2x3_vstoref(d + 39 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
+        u = -((g0 * m7_11 - g7 * m0_11) + g11 * m0_7);
+        u -= ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
+        v = u;
+        u = ((g3 * m4_11 - g4 * m3_11) + g11 * m3_4);
+        v += (u + u);
+        u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
+        u += ((g2 * m5_11 - g5 * m2_11) + g11 * m2_5);
+        u -= ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
+        u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        if (d)
+            ptp_2x3_vstoref(d + 21 * ds + l, v * 0.0476190485f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 21 */
+        u = g0 * (-m6_11);
+        u = PTP_2X3_VFMA(g3, -m6_8, u);
+        u = PTP_2X3_VFMA(g6, m3_8 + m0_11, u);
+        u = PTP_2X3_VFMA(g8, -m3_6, u);
+        u = PTP_2X3_VFMA(g11, -m0_6, u);
+        v = u;
+        u = g0 * (-m7_10);
+        u = PTP_2X3_VFMA(g2, -m7_8, u);
+        u = PTP_2X3_VFMA(g7, m2_8 + m0_10, u);
+        u = PTP_2X3_VFMA(g8, -m2_7, u);
+        u = PTP_2X3_VFMA(g10, -m0_7, u);
+        v += ((u + u) + (u + u));
+        u = g2 * (m4_11);
+        u = PTP_2X3_VFMA(g3, m4_10, u);
+        u = PTP_2X3_VFMA(g4, -m2_11 - m3_10, u);
+        u = PTP_2X3_VFMA(g10, m3_4, u);
+        u = PTP_2X3_VFMA(g11, m2_4, u);
+        v = PTP_2X3_VFMAS(5.0f, u, v);
+        u = g1 * (m5_11);
+        u = PTP_2X3_VFMA(g3, m5_9, u);
+        u = PTP_2X3_VFMA(g5, -m1_11 - m3_9, u);
+        u = PTP_2X3_VFMA(g9, m3_5, u);
+        u = PTP_2X3_VFMA(g11, m1_5, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g1 * (-m6_10);
+        u = PTP_2X3_VFMA(g2, -m6_9, u);
+        u = PTP_2X3_VFMA(g6, m1_10 + m2_9, u);
+        u = PTP_2X3_VFMA(g9, -m2_6, u);
+        u = PTP_2X3_VFMA(g10, -m1_6, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = g1 * (-m7_9);
+        u = PTP_2X3_VFMA(g7, m1_9, u);
+        u = PTP_2X3_VFMA(g9, -m1_7, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = g2 * (m5_10);
+        u = PTP_2X3_VFMA(g5, -m2_10, u);
+        u = PTP_2X3_VFMA(g10, m2_5, u);
+        v = PTP_2X3_VFMAS(18.0f, u, v);
+        if (d)
+            ptp_2x3_vstoref(d + 20 * ds + l, v * 0.0285714287f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        u = g0 * (m5_11);
+        u = PTP_2X3_VFMA(g3, m5_8, u);
+        u = PTP_2X3_VFMA(g5, -m3_8 - m0_11, u);
+        u = PTP_2X3_VFMA(g8, m3_5, u);
+        u = PTP_2X3_VFMA(g11, m0_5, u);
+        v = u;
+        u = g1 * (m4_11);
+        u = PTP_2X3_VFMA(g3, m4_9, u);
+        u = PTP_2X3_VFMA(g4, -m1_11 - m3_9, u);
+        u = PTP_2X3_VFMA(g9, m3_4, u);
+        u = PTP_2X3_VFMA(g11, m1_4, u);
+        v += ((u + u) + (u + u));
+        u = g0 * (-m7_9);
+        u = PTP_2X3_VFMA(g1, -m7_8, u);
+        u = PTP_2X3_VFMA(g7, m1_8 + m0_9, u);
+        u = PTP_2X3_VFMA(g8, -m1_7, u);
+        u = PTP_2X3_VFMA(g9, -m0_7, u);
+        v = PTP_2X3_VFMAS(5.0f, u, v);
+        u = g0 * (-m6_10);
+        u = PTP_2X3_VFMA(g2, -m6_8, u);
+        u = PTP_2X3_VFMA(g6, m2_8 + m0_10, u);
+        u = PTP_2X3_VFMA(g8, -m2_6, u);
+        u = PTP_2X3_VFMA(g10, -m0_6, u);
+        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = g1 * (m5_10);
+        u = PTP_2X3_VFMA(g2, m5_9, u);
+        u = PTP_2X3_VFMA(g5, -m1_10 - m2_9, u);
+        u = PTP_2X3_VFMA(g9, m2_5, u);
+        u = PTP_2X3_VFMA(g10, m1_5, u);
+        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = g2 * (m4_10);
+        u = PTP_2X3_VFMA(g4, -m2_10, u);
+        u = PTP_2X3_VFMA(g10, m2_4, u);
+        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = g1 * (-m6_9);
+        u = PTP_2X3_VFMA(g6, m1_9, u);
+        u = PTP_2X3_VFMA(g9, -m1_6, u);
+        v = PTP_2X3_VFMAS(18.0f, u, v);
+        if (d)
+            ptp_2x3_vstoref(d + 19 * ds + l, v * 0.0285714287f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 19 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
          * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
         notlt &= 1;

@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_3X2_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_3X2_FLOPS 1462
-#define PTP_3X2_MULS 836
+#define PTP_3X2_FLOPS 1474
+#define PTP_3X2_MULS 794
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X2_LANES
 #define PTP_3X2_LANES 16
@@ -713,31 +713,13 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             qs = PTP_3X2_VW;
         }
 #endif
-        const ptp_3x2_vf x0 = ptp_3x2_vload(q + 0 * qs), y0 = ptp_3x2_vload(q + 1 * qs),
-            w0 = ptp_3x2_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_3x2_vf x1 = ptp_3x2_vload(q + 4 * qs), y1 = ptp_3x2_vload(q + 5 * qs),
             w1 = ptp_3x2_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_3x2_vf x2 = ptp_3x2_vload(q + 8 * qs), y2 = ptp_3x2_vload(q + 9 * qs),
-            w2 = ptp_3x2_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_3x2_vf x3 = ptp_3x2_vload(q + 12 * qs), y3 = ptp_3x2_vload(q + 13 * qs),
             w3 = ptp_3x2_vload(q + 15 * qs), g3 = e2 * w3;
-        const ptp_3x2_vf x4 = ptp_3x2_vload(q + 16 * qs), y4 = ptp_3x2_vload(q + 17 * qs),
-            w4 = ptp_3x2_vload(q + 19 * qs), g4 = e2 * w4;
-        const ptp_3x2_vf x5 = ptp_3x2_vload(q + 20 * qs), y5 = ptp_3x2_vload(q + 21 * qs),
-            w5 = ptp_3x2_vload(q + 23 * qs), g5 = e2 * w5;
-        const ptp_3x2_vf x6 = ptp_3x2_vload(q + 24 * qs), y6 = ptp_3x2_vload(q + 25 * qs),
-            w6 = ptp_3x2_vload(q + 27 * qs), g6 = e2 * w6;
-        const ptp_3x2_vf x7 = ptp_3x2_vload(q + 28 * qs), y7 = ptp_3x2_vload(q + 29 * qs),
-            w7 = ptp_3x2_vload(q + 31 * qs), g7 = e2 * w7;
-        const ptp_3x2_vf x8 = ptp_3x2_vload(q + 32 * qs), y8 = ptp_3x2_vload(q + 33 * qs),
-            w8 = ptp_3x2_vload(q + 35 * qs), g8 = e2 * w8;
-        const ptp_3x2_vf x9 = ptp_3x2_vload(q + 36 * qs), y9 = ptp_3x2_vload(q + 37 * qs),
-            w9 = ptp_3x2_vload(q + 39 * qs), g9 = e2 * w9;
-        const ptp_3x2_vf x10 = ptp_3x2_vload(q + 40 * qs), y10 = ptp_3x2_vload(q + 41 * qs),
-            w10 = ptp_3x2_vload(q + 43 * qs), g10 = e2 * w10;
-        const ptp_3x2_vf x11 = ptp_3x2_vload(q + 44 * qs), y11 = ptp_3x2_vload(q + 45 * qs),
-            w11 = ptp_3x2_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_3x2_vf m1_3 = x1 * y3 - y1 * x3;
+        const ptp_3x2_vf x0 = ptp_3x2_vload(q + 0 * qs), y0 = ptp_3x2_vload(q + 1 * qs),
+            w0 = ptp_3x2_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_3x2_vf m0_3 = x0 * y3 - y0 * x3;
         const ptp_3x2_vf m0_1 = x0 * y1 - y0 * x1;
         u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
@@ -746,50 +728,58 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 0 * ds + l, v * 6.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
-        const ptp_3x2_vf m2_3 = x2 * y3 - y2 * x3;
-        const ptp_3x2_vf m0_2 = x0 * y2 - y0 * x2;
-        u = -((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
-        v = u;
-        const ptp_3x2_vf m1_4 = x1 * y4 - y1 * x4;
-        const ptp_3x2_vf m0_4 = x0 * y4 - y0 * x4;
-        u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 1 * ds + l, v * 1.5f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
-        const ptp_3x2_vf m1_5 = x1 * y5 - y1 * x5;
-        const ptp_3x2_vf m0_5 = x0 * y5 - y0 * x5;
-        u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
-        const ptp_3x2_vf m1_2 = x1 * y2 - y1 * x2;
-        u -= ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
-        v = u;
-        const ptp_3x2_vf m2_4 = x2 * y4 - y2 * x4;
-        u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 2 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        const ptp_3x2_vf x2 = ptp_3x2_vload(q + 8 * qs), y2 = ptp_3x2_vload(q + 9 * qs),
+            w2 = ptp_3x2_vload(q + 11 * qs), g2 = e2 * w2;
+        const ptp_3x2_vf x5 = ptp_3x2_vload(q + 20 * qs), y5 = ptp_3x2_vload(q + 21 * qs),
+            w5 = ptp_3x2_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_3x2_vf m2_5 = x2 * y5 - y2 * x5;
-        u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
-        v = u;
-        u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 3 * ds + l, v * 1.5f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        const ptp_3x2_vf m1_5 = x1 * y5 - y1 * x5;
+        const ptp_3x2_vf m1_2 = x1 * y2 - y1 * x2;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
         v = u;
         if (d)
             ptp_3x2_vstoref(d + 4 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
+        const ptp_3x2_vf m2_3 = x2 * y3 - y2 * x3;
+        const ptp_3x2_vf m0_2 = x0 * y2 - y0 * x2;
+        u = -((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
+        v = u;
+        const ptp_3x2_vf x4 = ptp_3x2_vload(q + 16 * qs), y4 = ptp_3x2_vload(q + 17 * qs),
+            w4 = ptp_3x2_vload(q + 19 * qs), g4 = e2 * w4;
+        const ptp_3x2_vf m1_4 = x1 * y4 - y1 * x4;
+        const ptp_3x2_vf m0_4 = x0 * y4 - y0 * x4;
+        u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+        v += (u + u);
+        if (d)
+            ptp_3x2_vstoref(d + 1 * ds + l, v * 1.5f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        const ptp_3x2_vf m0_5 = x0 * y5 - y0 * x5;
+        u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+        u -= ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+        v = u;
+        const ptp_3x2_vf m2_4 = x2 * y4 - y2 * x4;
+        u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+        v += (u + u);
+        if (d)
+            ptp_3x2_vstoref(d + 2 * ds + l, v, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
+        v = u;
+        u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
+        v += (u + u);
+        if (d)
+            ptp_3x2_vstoref(d + 3 * ds + l, v * 1.5f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        const ptp_3x2_vf x6 = ptp_3x2_vload(q + 24 * qs), y6 = ptp_3x2_vload(q + 25 * qs),
+            w6 = ptp_3x2_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_3x2_vf m1_6 = x1 * y6 - y1 * x6;
         const ptp_3x2_vf m0_6 = x0 * y6 - y0 * x6;
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
-        v = 2.0f * u;
+        v = (u + u);
         const ptp_3x2_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v = PTP_3X2_VFMAS(3.0f, u, v);
@@ -797,22 +787,37 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 5 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
+        const ptp_3x2_vf x8 = ptp_3x2_vload(q + 32 * qs), y8 = ptp_3x2_vload(q + 33 * qs),
+            w8 = ptp_3x2_vload(q + 35 * qs), g8 = e2 * w8;
+        const ptp_3x2_vf m2_8 = x2 * y8 - y2 * x8;
+        const ptp_3x2_vf m1_8 = x1 * y8 - y1 * x8;
+        u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
+        v = (u + u);
+        const ptp_3x2_vf m4_5 = x4 * y5 - y4 * x5;
+        u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+        v = PTP_3X2_VFMAS(3.0f, u, v);
+        if (d)
+            ptp_3x2_vstoref(d + 9 * ds + l, v * 0.857142866f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 9 */
         const ptp_3x2_vf m2_6 = x2 * y6 - y2 * x6;
         u = g0 * (-m2_6);
         u = PTP_3X2_VFMA(g2, m0_6, u);
         u = PTP_3X2_VFMA(g6, -m0_2, u);
-        v = 2.0f * u;
+        v = (u + u);
         const ptp_3x2_vf m3_5 = x3 * y5 - y3 * x5;
         u = g0 * (m3_5);
         u = PTP_3X2_VFMA(g3, -m0_5, u);
         u = PTP_3X2_VFMA(g5, m0_3, u);
         v = PTP_3X2_VFMAS(3.0f, u, v);
+        const ptp_3x2_vf x7 = ptp_3x2_vload(q + 28 * qs), y7 = ptp_3x2_vload(q + 29 * qs),
+            w7 = ptp_3x2_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_3x2_vf m1_7 = x1 * y7 - y1 * x7;
         u = g0 * (-m1_7);
         const ptp_3x2_vf m0_7 = x0 * y7 - y0 * x7;
         u = PTP_3X2_VFMA(g1, m0_7, u);
         u = PTP_3X2_VFMA(g7, -m0_1, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g1 * (m3_4);
         u = PTP_3X2_VFMA(g3, -m1_4, u);
         u = PTP_3X2_VFMA(g4, m1_3, u);
@@ -821,37 +826,20 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 6 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
-        const ptp_3x2_vf m1_8 = x1 * y8 - y1 * x8;
-        const ptp_3x2_vf m0_8 = x0 * y8 - y0 * x8;
-        u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
-        u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v = 2.0f * u;
-        const ptp_3x2_vf m4_5 = x4 * y5 - y4 * x5;
-        u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
-        const ptp_3x2_vf m2_7 = x2 * y7 - y2 * x7;
-        u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
-        u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 7 * ds + l, v * 0.142857149f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
-        const ptp_3x2_vf m2_8 = x2 * y8 - y2 * x8;
         u = g0 * (-m2_8);
+        const ptp_3x2_vf m0_8 = x0 * y8 - y0 * x8;
         u = PTP_3X2_VFMA(g2, m0_8, u);
         u = PTP_3X2_VFMA(g8, -m0_2, u);
-        v = 2.0f * u;
+        v = (u + u);
         u = g2 * (m3_5);
         u = PTP_3X2_VFMA(g3, -m2_5, u);
         u = PTP_3X2_VFMA(g5, m2_3, u);
         v = PTP_3X2_VFMAS(3.0f, u, v);
+        const ptp_3x2_vf m2_7 = x2 * y7 - y2 * x7;
         u = g1 * (-m2_7);
         u = PTP_3X2_VFMA(g2, m1_7, u);
         u = PTP_3X2_VFMA(g7, -m1_2, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g1 * (m4_5);
         u = PTP_3X2_VFMA(g4, -m1_5, u);
         u = PTP_3X2_VFMA(g5, m1_4, u);
@@ -860,14 +848,22 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 8 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
-        u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
-        v = 2.0f * u;
-        u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+        u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
+        u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+        v = (u + u);
+        u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = PTP_3X2_VFMAS(3.0f, u, v);
+        u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+        v += ((u + u) + (u + u));
+        u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+        v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
-            ptp_3x2_vstoref(d + 9 * ds + l, v * 0.857142866f, n - l);
+            ptp_3x2_vstoref(d + 7 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        const ptp_3x2_vf x9 = ptp_3x2_vload(q + 36 * qs), y9 = ptp_3x2_vload(q + 37 * qs),
+            w9 = ptp_3x2_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_3x2_vf m1_9 = x1 * y9 - y1 * x9;
         const ptp_3x2_vf m0_9 = x0 * y9 - y0 * x9;
         u = -((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
@@ -884,6 +880,45 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 10 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
+        const ptp_3x2_vf x11 = ptp_3x2_vload(q + 44 * qs), y11 = ptp_3x2_vload(q + 45 * qs),
+            w11 = ptp_3x2_vload(q + 47 * qs), g11 = e2 * w11;
+        const ptp_3x2_vf m2_11 = x2 * y11 - y2 * x11;
+        const ptp_3x2_vf m1_11 = x1 * y11 - y1 * x11;
+        u = -((g1 * m2_11 - g2 * m1_11) + g11 * m1_2);
+        v = u;
+        const ptp_3x2_vf m5_8 = x5 * y8 - y5 * x8;
+        u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
+        const ptp_3x2_vf m5_7 = x5 * y7 - y5 * x7;
+        u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
+        v = PTP_3X2_VFMAS(3.0f, u, v);
+        const ptp_3x2_vf m4_8 = x4 * y8 - y4 * x8;
+        u = ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
+        v = PTP_3X2_VFMAS(6.0f, u, v);
+        if (d)
+            ptp_3x2_vstoref(d + 14 * ds + l, v * 0.285714298f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        const ptp_3x2_vf x10 = ptp_3x2_vload(q + 40 * qs), y10 = ptp_3x2_vload(q + 41 * qs),
+            w10 = ptp_3x2_vload(q + 43 * qs), g10 = e2 * w10;
+        const ptp_3x2_vf m3_10 = x3 * y10 - y3 * x10;
+        const ptp_3x2_vf m0_10 = x0 * y10 - y0 * x10;
+        u = ((g0 * m3_10 - g3 * m0_10) + g10 * m0_3);
+        v = u;
+        const ptp_3x2_vf m3_9 = x3 * y9 - y3 * x9;
+        u = ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
+        v += (u + u);
+        const ptp_3x2_vf m4_9 = x4 * y9 - y4 * x9;
+        u = -((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
+        v = PTP_3X2_VFMAS(3.0f, u, v);
+        const ptp_3x2_vf m6_7 = x6 * y7 - y6 * x7;
+        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+        v = PTP_3X2_VFMAS(9.0f, u, v);
+        if (d)
+            ptp_3x2_vstoref(d + 15 * ds + l, v * 0.171428576f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_3x2_vf m2_9 = x2 * y9 - y2 * x9;
         u = g0 * (-m2_9);
         u = PTP_3X2_VFMA(g2, m0_9, u);
@@ -891,10 +926,9 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v = u;
         const ptp_3x2_vf m1_10 = x1 * y10 - y1 * x10;
         u = g0 * (-m1_10);
-        const ptp_3x2_vf m0_10 = x0 * y10 - y0 * x10;
         u = PTP_3X2_VFMA(g1, m0_10, u);
         u = PTP_3X2_VFMA(g10, -m0_1, u);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
+        v += (u + u);
         const ptp_3x2_vf m3_8 = x3 * y8 - y3 * x8;
         u = g0 * (m3_8);
         u = PTP_3X2_VFMA(g2, m3_6, u);
@@ -919,15 +953,13 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 11 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
-        const ptp_3x2_vf m1_11 = x1 * y11 - y1 * x11;
         const ptp_3x2_vf m0_11 = x0 * y11 - y0 * x11;
         u = -((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
         u -= ((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
         v = u;
         const ptp_3x2_vf m2_10 = x2 * y10 - y2 * x10;
         u = -((g0 * m2_10 - g2 * m0_10) + g10 * m0_2);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        const ptp_3x2_vf m5_7 = x5 * y7 - y5 * x7;
+        v += (u + u);
         u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
         u += ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
         u -= ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
@@ -937,7 +969,6 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 12 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
-        const ptp_3x2_vf m2_11 = x2 * y11 - y2 * x11;
         u = g0 * (-m2_11);
         u = PTP_3X2_VFMA(g2, m0_11, u);
         u = PTP_3X2_VFMA(g11, -m0_2, u);
@@ -945,15 +976,13 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g1 * (-m2_10);
         u = PTP_3X2_VFMA(g2, m1_10, u);
         u = PTP_3X2_VFMA(g10, -m1_2, u);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        const ptp_3x2_vf m5_8 = x5 * y8 - y5 * x8;
+        v += (u + u);
         u = g0 * (-m5_8);
         u = PTP_3X2_VFMA(g2, -m5_6, u);
         u = PTP_3X2_VFMA(g5, m2_6 + m0_8, u);
         u = PTP_3X2_VFMA(g6, -m2_5, u);
         u = PTP_3X2_VFMA(g8, -m0_5, u);
         v = PTP_3X2_VFMAS(3.0f, u, v);
-        const ptp_3x2_vf m4_8 = x4 * y8 - y4 * x8;
         u = g1 * (m4_8);
         u = PTP_3X2_VFMA(g2, m3_8 + m4_7, u);
         u = PTP_3X2_VFMA(g3, -m2_8, u);
@@ -969,35 +998,88 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 13 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
-        u = -((g1 * m2_11 - g2 * m1_11) + g11 * m1_2);
+        const ptp_3x2_vf m5_10 = x5 * y10 - y5 * x10;
+        u = -((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
         v = u;
-        u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
-        u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
+        const ptp_3x2_vf m5_11 = x5 * y11 - y5 * x11;
+        u = -((g1 * m5_11 - g5 * m1_11) + g11 * m1_5);
+        v += (u + u);
+        const ptp_3x2_vf m4_11 = x4 * y11 - y4 * x11;
+        u = ((g2 * m4_11 - g4 * m2_11) + g11 * m2_4);
         v = PTP_3X2_VFMAS(3.0f, u, v);
-        u = ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
+        const ptp_3x2_vf m7_8 = x7 * y8 - y7 * x8;
+        u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         v = PTP_3X2_VFMAS(6.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 14 * ds + l, v * 0.285714298f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
-        const ptp_3x2_vf m3_10 = x3 * y10 - y3 * x10;
-        u = ((g0 * m3_10 - g3 * m0_10) + g10 * m0_3);
-        v = u;
-        const ptp_3x2_vf m3_9 = x3 * y9 - y3 * x9;
-        u = ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        const ptp_3x2_vf m4_9 = x4 * y9 - y4 * x9;
-        u = -((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
-        const ptp_3x2_vf m6_7 = x6 * y7 - y6 * x7;
-        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
-        u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+        u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v = PTP_3X2_VFMAS(9.0f, u, v);
         if (d)
-            ptp_3x2_vstoref(d + 15 * ds + l, v * 0.171428576f, n - l);
+            ptp_3x2_vstoref(d + 19 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        notgt |= (v > 0.0f) == 0; /* plane 19 */
+        const ptp_3x2_vf m6_9 = x6 * y9 - y6 * x9;
+        u = ((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
+        v = u;
+        const ptp_3x2_vf m6_10 = x6 * y10 - y6 * x10;
+        u = ((g0 * m6_10 - g6 * m0_10) + g10 * m0_6);
+        v += (u + u);
+        const ptp_3x2_vf m7_9 = x7 * y9 - y7 * x9;
+        u = -((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
+        v = PTP_3X2_VFMAS(3.0f, u, v);
+        u = -((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
+        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+        v = PTP_3X2_VFMAS(9.0f, u, v);
+        if (d)
+            ptp_3x2_vstoref(d + 20 * ds + l, v * 0.171428576f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        u = g2 * (m6_9);
+        u = PTP_3X2_VFMA(g6, -m2_9, u);
+        u = PTP_3X2_VFMA(g9, m2_6, u);
+        v = u;
+        const ptp_3x2_vf m6_11 = x6 * y11 - y6 * x11;
+        const ptp_3x2_vf m7_10 = x7 * y10 - y7 * x10;
+        u = g0 * (m6_11 - m7_10);
+        u = PTP_3X2_VFMA(g6, -m0_11, u);
+        u = PTP_3X2_VFMA(g7, m0_10, u);
+        u = PTP_3X2_VFMA(g10, -m0_7, u);
+        u = PTP_3X2_VFMA(g11, m0_6, u);
+        v += (u + u);
+        const ptp_3x2_vf m8_9 = x8 * y9 - y8 * x9;
+        u = g0 * (-m8_9);
+        u = PTP_3X2_VFMA(g8, m0_9, u);
+        u = PTP_3X2_VFMA(g9, -m0_8, u);
+        v = PTP_3X2_VFMAS(3.0f, u, v);
+        u = g1 * (-m7_9);
+        u = PTP_3X2_VFMA(g7, m1_9, u);
+        u = PTP_3X2_VFMA(g9, -m1_7, u);
+        v += ((u + u) + (u + u));
+        u = g1 * (m6_10);
+        const ptp_3x2_vf m5_9 = x5 * y9 - y5 * x9;
+        u = PTP_3X2_VFMA(g3, -m5_9, u);
+        u = PTP_3X2_VFMA(g5, m3_9, u);
+        u = PTP_3X2_VFMA(g6, -m1_10, u);
+        u = PTP_3X2_VFMA(g9, -m3_5, u);
+        u = PTP_3X2_VFMA(g10, m1_6, u);
+        v = PTP_3X2_VFMAS(6.0f, u, v);
+        const ptp_3x2_vf m6_8 = x6 * y8 - y6 * x8;
+        u = g3 * (m6_8);
+        u = PTP_3X2_VFMA(g6, -m3_8, u);
+        u = PTP_3X2_VFMA(g8, m3_6, u);
+        v = PTP_3X2_VFMAS(9.0f, u, v);
+        const ptp_3x2_vf m4_10 = x4 * y10 - y4 * x10;
+        u = g3 * (-m4_10);
+        u = PTP_3X2_VFMA(g4, m3_10, u);
+        u = PTP_3X2_VFMA(g10, -m3_4, u);
+        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = g4 * (m6_7);
+        u = PTP_3X2_VFMA(g6, -m4_7, u);
+        u = PTP_3X2_VFMA(g7, m4_6, u);
+        v = PTP_3X2_VFMAS(18.0f, u, v);
+        if (d)
+            ptp_3x2_vstoref(d + 21 * ds + l, v * 0.042857144f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 21 */
         const ptp_3x2_vf m3_11 = x3 * y11 - y3 * x11;
         u = g0 * (m3_11);
         u = PTP_3X2_VFMA(g3, -m0_11, u);
@@ -1008,18 +1090,15 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g3, -m2_9, u);
         u = PTP_3X2_VFMA(g4, m1_9, u);
         u = PTP_3X2_VFMA(g9, m2_3 - m1_4, u);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        const ptp_3x2_vf m5_9 = x5 * y9 - y5 * x9;
+        v += (u + u);
         u = g0 * (-m5_9);
         u = PTP_3X2_VFMA(g5, m0_9, u);
         u = PTP_3X2_VFMA(g9, -m0_5, u);
         v = PTP_3X2_VFMAS(3.0f, u, v);
-        const ptp_3x2_vf m4_10 = x4 * y10 - y4 * x10;
         u = g0 * (-m4_10);
         u = PTP_3X2_VFMA(g4, m0_10, u);
         u = PTP_3X2_VFMA(g10, -m0_4, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
-        const ptp_3x2_vf m6_8 = x6 * y8 - y6 * x8;
+        v += ((u + u) + (u + u));
         u = g0 * (m6_8);
         u = PTP_3X2_VFMA(g1, m3_10, u);
         u = PTP_3X2_VFMA(g3, -m1_10, u);
@@ -1043,212 +1122,6 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 16 * ds + l, v * 0.042857144f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
-        const ptp_3x2_vf m4_11 = x4 * y11 - y4 * x11;
-        u = g0 * (-m4_11);
-        u = PTP_3X2_VFMA(g2, m4_9, u);
-        u = PTP_3X2_VFMA(g4, m0_11 - m2_9, u);
-        u = PTP_3X2_VFMA(g9, m2_4, u);
-        u = PTP_3X2_VFMA(g11, -m0_4, u);
-        v = u;
-        u = g1 * (m3_11 - m5_9);
-        u = PTP_3X2_VFMA(g3, -m1_11, u);
-        u = PTP_3X2_VFMA(g5, m1_9, u);
-        u = PTP_3X2_VFMA(g9, -m1_5, u);
-        u = PTP_3X2_VFMA(g11, m1_3, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
-        const ptp_3x2_vf m5_10 = x5 * y10 - y5 * x10;
-        u = g0 * (-m5_10);
-        u = PTP_3X2_VFMA(g2, m3_10, u);
-        u = PTP_3X2_VFMA(g3, -m2_10, u);
-        u = PTP_3X2_VFMA(g5, m0_10, u);
-        u = PTP_3X2_VFMA(g10, m2_3 - m0_5, u);
-        v = PTP_3X2_VFMAS(5.0f, u, v);
-        const ptp_3x2_vf m7_8 = x7 * y8 - y7 * x8;
-        u = g0 * (m7_8);
-        u = PTP_3X2_VFMA(g2, m6_7, u);
-        u = PTP_3X2_VFMA(g6, -m2_7, u);
-        u = PTP_3X2_VFMA(g7, m2_6 - m0_8, u);
-        u = PTP_3X2_VFMA(g8, m0_7, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
-        u = g3 * (-m4_8);
-        u = PTP_3X2_VFMA(g4, m3_8 - m5_6, u);
-        u = PTP_3X2_VFMA(g5, m4_6, u);
-        u = PTP_3X2_VFMA(g6, -m4_5, u);
-        u = PTP_3X2_VFMA(g8, -m3_4, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
-        u = g1 * (m6_8);
-        u = PTP_3X2_VFMA(g6, -m1_8, u);
-        u = PTP_3X2_VFMA(g8, m1_6, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
-        u = g3 * (-m5_7);
-        u = PTP_3X2_VFMA(g5, m3_7, u);
-        u = PTP_3X2_VFMA(g7, -m3_5, u);
-        v = PTP_3X2_VFMAS(18.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 17 * ds + l, v * 0.0285714287f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 17 */
-        u = g2 * (-m5_9);
-        u = PTP_3X2_VFMA(g5, m2_9, u);
-        u = PTP_3X2_VFMA(g9, -m2_5, u);
-        v = u;
-        const ptp_3x2_vf m5_11 = x5 * y11 - y5 * x11;
-        u = g0 * (-m5_11);
-        u = PTP_3X2_VFMA(g1, m4_11, u);
-        u = PTP_3X2_VFMA(g4, -m1_11, u);
-        u = PTP_3X2_VFMA(g5, m0_11, u);
-        u = PTP_3X2_VFMA(g11, m1_4 - m0_5, u);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        u = g2 * (m3_11);
-        u = PTP_3X2_VFMA(g3, -m2_11, u);
-        u = PTP_3X2_VFMA(g11, m2_3, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
-        u = g2 * (m4_10);
-        u = PTP_3X2_VFMA(g4, -m2_10, u);
-        u = PTP_3X2_VFMA(g10, m2_4, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
-        u = g1 * (-m5_10);
-        u = PTP_3X2_VFMA(g2, m6_8, u);
-        u = PTP_3X2_VFMA(g5, m1_10, u);
-        u = PTP_3X2_VFMA(g6, -m2_8, u);
-        u = PTP_3X2_VFMA(g8, m2_6, u);
-        u = PTP_3X2_VFMA(g10, -m1_5, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
-        u = g3 * (-m5_8);
-        u = PTP_3X2_VFMA(g5, m3_8, u);
-        u = PTP_3X2_VFMA(g8, -m3_5, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
-        u = g1 * (m7_8);
-        u = PTP_3X2_VFMA(g7, -m1_8, u);
-        u = PTP_3X2_VFMA(g8, m1_7, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
-        u = g4 * (-m5_7);
-        u = PTP_3X2_VFMA(g5, m4_7, u);
-        u = PTP_3X2_VFMA(g7, -m4_5, u);
-        v = PTP_3X2_VFMAS(18.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 18 * ds + l, v * 0.042857144f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
-        u = -((g2 * m5_10 - g5 * m2_10) + g10 * m2_5);
-        v = u;
-        u = -((g1 * m5_11 - g5 * m1_11) + g11 * m1_5);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        u = ((g2 * m4_11 - g4 * m2_11) + g11 * m2_4);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
-        u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
-        u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 19 * ds + l, v * 0.171428576f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 19 */
-        const ptp_3x2_vf m6_9 = x6 * y9 - y6 * x9;
-        u = ((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
-        v = u;
-        const ptp_3x2_vf m6_10 = x6 * y10 - y6 * x10;
-        u = ((g0 * m6_10 - g6 * m0_10) + g10 * m0_6);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        const ptp_3x2_vf m7_9 = x7 * y9 - y7 * x9;
-        u = -((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
-        u = -((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
-        u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 20 * ds + l, v * 0.171428576f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 20 */
-        u = g2 * (m6_9);
-        u = PTP_3X2_VFMA(g6, -m2_9, u);
-        u = PTP_3X2_VFMA(g9, m2_6, u);
-        v = u;
-        const ptp_3x2_vf m6_11 = x6 * y11 - y6 * x11;
-        const ptp_3x2_vf m7_10 = x7 * y10 - y7 * x10;
-        u = g0 * (m6_11 - m7_10);
-        u = PTP_3X2_VFMA(g6, -m0_11, u);
-        u = PTP_3X2_VFMA(g7, m0_10, u);
-        u = PTP_3X2_VFMA(g10, -m0_7, u);
-        u = PTP_3X2_VFMA(g11, m0_6, u);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
-        const ptp_3x2_vf m8_9 = x8 * y9 - y8 * x9;
-        u = g0 * (-m8_9);
-        u = PTP_3X2_VFMA(g8, m0_9, u);
-        u = PTP_3X2_VFMA(g9, -m0_8, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
-        u = g1 * (-m7_9);
-        u = PTP_3X2_VFMA(g7, m1_9, u);
-        u = PTP_3X2_VFMA(g9, -m1_7, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
-        u = g1 * (m6_10);
-        u = PTP_3X2_VFMA(g3, -m5_9, u);
-        u = PTP_3X2_VFMA(g5, m3_9, u);
-        u = PTP_3X2_VFMA(g6, -m1_10, u);
-        u = PTP_3X2_VFMA(g9, -m3_5, u);
-        u = PTP_3X2_VFMA(g10, m1_6, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
-        u = g3 * (m6_8);
-        u = PTP_3X2_VFMA(g6, -m3_8, u);
-        u = PTP_3X2_VFMA(g8, m3_6, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
-        u = g3 * (-m4_10);
-        u = PTP_3X2_VFMA(g4, m3_10, u);
-        u = PTP_3X2_VFMA(g10, -m3_4, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
-        u = g4 * (m6_7);
-        u = PTP_3X2_VFMA(g6, -m4_7, u);
-        u = PTP_3X2_VFMA(g7, m4_6, u);
-        v = PTP_3X2_VFMAS(18.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 21 * ds + l, v * 0.042857144f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 21 */
-        const ptp_3x2_vf m7_11 = x7 * y11 - y7 * x11;
-        u = g0 * (m7_11);
-        u = PTP_3X2_VFMA(g2, -m7_9, u);
-        u = PTP_3X2_VFMA(g7, m2_9 - m0_11, u);
-        u = PTP_3X2_VFMA(g9, -m2_7, u);
-        u = PTP_3X2_VFMA(g11, m0_7, u);
-        v = u;
-        const ptp_3x2_vf m8_10 = x8 * y10 - y8 * x10;
-        u = g0 * (-m8_10);
-        u = PTP_3X2_VFMA(g2, m6_10, u);
-        u = PTP_3X2_VFMA(g6, -m2_10, u);
-        u = PTP_3X2_VFMA(g8, m0_10, u);
-        u = PTP_3X2_VFMA(g10, m2_6 - m0_8, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
-        u = g1 * (m6_11 - m8_9);
-        u = PTP_3X2_VFMA(g6, -m1_11, u);
-        u = PTP_3X2_VFMA(g8, m1_9, u);
-        u = PTP_3X2_VFMA(g9, -m1_8, u);
-        u = PTP_3X2_VFMA(g11, m1_6, u);
-        v = PTP_3X2_VFMAS(5.0f, u, v);
-        u = g3 * (-m4_11);
-        u = PTP_3X2_VFMA(g4, m3_11 - m5_9, u);
-        u = PTP_3X2_VFMA(g5, m4_9, u);
-        u = PTP_3X2_VFMA(g9, -m4_5, u);
-        u = PTP_3X2_VFMA(g11, -m3_4, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
-        u = g3 * (m7_8);
-        u = PTP_3X2_VFMA(g5, m6_7, u);
-        u = PTP_3X2_VFMA(g6, -m5_7, u);
-        u = PTP_3X2_VFMA(g7, m5_6 - m3_8, u);
-        u = PTP_3X2_VFMA(g8, m3_7, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
-        u = g3 * (-m5_10);
-        u = PTP_3X2_VFMA(g5, m3_10, u);
-        u = PTP_3X2_VFMA(g10, -m3_5, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
-        u = g4 * (m6_8);
-        u = PTP_3X2_VFMA(g6, -m4_8, u);
-        u = PTP_3X2_VFMA(g8, m4_6, u);
-        v = PTP_3X2_VFMAS(18.0f, u, v);
-        if (d)
-            ptp_3x2_vstoref(d + 22 * ds + l, v * 0.0285714287f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 22 */
         const ptp_3x2_vf m8_11 = x8 * y11 - y8 * x11;
         u = g0 * (-m8_11);
         u = PTP_3X2_VFMA(g8, m0_11, u);
@@ -1259,15 +1132,17 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g8, m2_9, u);
         u = PTP_3X2_VFMA(g9, -m2_8, u);
         u = PTP_3X2_VFMA(g10, m2_7, u);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g2 * (m6_11);
         u = PTP_3X2_VFMA(g6, -m2_11, u);
         u = PTP_3X2_VFMA(g11, m2_6, u);
         v = PTP_3X2_VFMAS(3.0f, u, v);
+        const ptp_3x2_vf m7_11 = x7 * y11 - y7 * x11;
         u = g1 * (m7_11);
         u = PTP_3X2_VFMA(g7, -m1_11, u);
         u = PTP_3X2_VFMA(g11, m1_7, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
+        const ptp_3x2_vf m8_10 = x8 * y10 - y8 * x10;
         u = g1 * (-m8_10);
         u = PTP_3X2_VFMA(g3, -m5_11, u);
         u = PTP_3X2_VFMA(g5, m3_11, u);
@@ -1294,7 +1169,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g1 * m8_11 - g8 * m1_11) + g11 * m1_8);
         v = u;
         u = -((g2 * m8_10 - g8 * m2_10) + g10 * m2_8);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g2 * m7_11 - g7 * m2_11) + g11 * m2_7);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         u = -((g4 * m5_11 - g5 * m4_11) + g11 * m4_5);
@@ -1325,7 +1200,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g1 * (m9_10);
         u = PTP_3X2_VFMA(g9, -m1_10, u);
         u = PTP_3X2_VFMA(g10, m1_9, u);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g3 * (m6_11);
         u = PTP_3X2_VFMA(g5, m6_9, u);
         u = PTP_3X2_VFMA(g6, -m3_11 - m5_9, u);
@@ -1352,7 +1227,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u += ((g2 * m9_10 - g9 * m2_10) + g10 * m2_9);
         v = u;
         u = ((g1 * m9_11 - g9 * m1_11) + g11 * m1_9);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = -((g3 * m8_10 - g8 * m3_10) + g10 * m3_8);
         u += ((g4 * m6_11 - g6 * m4_11) + g11 * m4_6);
         u -= ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
@@ -1369,7 +1244,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g1 * (m10_11);
         u = PTP_3X2_VFMA(g10, -m1_11, u);
         u = PTP_3X2_VFMA(g11, m1_10, u);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g3 * (-m8_11);
         u = PTP_3X2_VFMA(g5, -m8_9, u);
         u = PTP_3X2_VFMA(g8, m3_11 + m5_9, u);
@@ -1403,7 +1278,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 29 */
         u = ((g3 * m9_10 - g9 * m3_10) + g10 * m3_9);
-        v = 2.0f * u;
+        v = (u + u);
         u = -((g6 * m7_9 - g7 * m6_9) + g9 * m6_7);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         if (d)
@@ -1413,7 +1288,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g3 * (m9_11);
         u = PTP_3X2_VFMA(g9, -m3_11, u);
         u = PTP_3X2_VFMA(g11, m3_9, u);
-        v = 2.0f * u;
+        v = (u + u);
         u = g6 * (-m8_9);
         u = PTP_3X2_VFMA(g8, m6_9, u);
         u = PTP_3X2_VFMA(g9, -m6_8, u);
@@ -1421,7 +1296,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g4 * (m9_10);
         u = PTP_3X2_VFMA(g9, -m4_10, u);
         u = PTP_3X2_VFMA(g10, m4_9, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g6 * (-m7_10);
         u = PTP_3X2_VFMA(g7, m6_10, u);
         u = PTP_3X2_VFMA(g10, -m6_7, u);
@@ -1432,12 +1307,12 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         notgt |= (v > 0.0f) == 0; /* plane 31 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         u += ((g5 * m9_10 - g9 * m5_10) + g10 * m5_9);
-        v = 2.0f * u;
+        v = (u + u);
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         u -= ((g7 * m8_9 - g8 * m7_9) + g9 * m7_8);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         u = ((g4 * m9_11 - g9 * m4_11) + g11 * m4_9);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = -((g6 * m8_10 - g8 * m6_10) + g10 * m6_8);
         v = PTP_3X2_VFMAS(6.0f, u, v);
         if (d)
@@ -1447,7 +1322,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g5 * (m9_11);
         u = PTP_3X2_VFMA(g9, -m5_11, u);
         u = PTP_3X2_VFMA(g11, m5_9, u);
-        v = 2.0f * u;
+        v = (u + u);
         u = g6 * (-m8_11);
         u = PTP_3X2_VFMA(g8, m6_11, u);
         u = PTP_3X2_VFMA(g11, -m6_8, u);
@@ -1455,7 +1330,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g4 * (m10_11);
         u = PTP_3X2_VFMA(g10, -m4_11, u);
         u = PTP_3X2_VFMA(g11, m4_10, u);
-        v = PTP_3X2_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g7 * (-m8_10);
         u = PTP_3X2_VFMA(g8, m7_10, u);
         u = PTP_3X2_VFMA(g10, -m7_8, u);
@@ -1465,7 +1340,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 33 */
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
-        v = 2.0f * u;
+        v = (u + u);
         u = -((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
         v = PTP_3X2_VFMAS(3.0f, u, v);
         if (d)
@@ -1481,7 +1356,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
         v = u;
         u = ((g7 * m9_10 - g9 * m7_10) + g10 * m7_9);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
+        v += (u + u);
         if (d)
             ptp_3x2_vstoref(d + 36 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1490,7 +1365,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u += ((g8 * m9_10 - g9 * m8_10) + g10 * m8_9);
         v = u;
         u = ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
+        v += (u + u);
         if (d)
             ptp_3x2_vstoref(d + 37 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1498,7 +1373,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g8 * m9_11 - g9 * m8_11) + g11 * m8_9);
         v = u;
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
-        v = PTP_3X2_VFMAS(2.0f, u, v);
+        v += (u + u);
         if (d)
             ptp_3x2_vstoref(d + 38 * ds + l, v * 1.5f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1509,6 +1384,131 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 39 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
+        u = g2 * (-m5_9);
+        u = PTP_3X2_VFMA(g5, m2_9, u);
+        u = PTP_3X2_VFMA(g9, -m2_5, u);
+        v = u;
+        u = g0 * (-m5_11);
+        u = PTP_3X2_VFMA(g1, m4_11, u);
+        u = PTP_3X2_VFMA(g4, -m1_11, u);
+        u = PTP_3X2_VFMA(g5, m0_11, u);
+        u = PTP_3X2_VFMA(g11, m1_4 - m0_5, u);
+        v += (u + u);
+        u = g2 * (m3_11);
+        u = PTP_3X2_VFMA(g3, -m2_11, u);
+        u = PTP_3X2_VFMA(g11, m2_3, u);
+        v = PTP_3X2_VFMAS(3.0f, u, v);
+        u = g2 * (m4_10);
+        u = PTP_3X2_VFMA(g4, -m2_10, u);
+        u = PTP_3X2_VFMA(g10, m2_4, u);
+        v += ((u + u) + (u + u));
+        u = g1 * (-m5_10);
+        u = PTP_3X2_VFMA(g2, m6_8, u);
+        u = PTP_3X2_VFMA(g5, m1_10, u);
+        u = PTP_3X2_VFMA(g6, -m2_8, u);
+        u = PTP_3X2_VFMA(g8, m2_6, u);
+        u = PTP_3X2_VFMA(g10, -m1_5, u);
+        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = g3 * (-m5_8);
+        u = PTP_3X2_VFMA(g5, m3_8, u);
+        u = PTP_3X2_VFMA(g8, -m3_5, u);
+        v = PTP_3X2_VFMAS(9.0f, u, v);
+        u = g1 * (m7_8);
+        u = PTP_3X2_VFMA(g7, -m1_8, u);
+        u = PTP_3X2_VFMA(g8, m1_7, u);
+        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = g4 * (-m5_7);
+        u = PTP_3X2_VFMA(g5, m4_7, u);
+        u = PTP_3X2_VFMA(g7, -m4_5, u);
+        v = PTP_3X2_VFMAS(18.0f, u, v);
+        if (d)
+            ptp_3x2_vstoref(d + 18 * ds + l, v * 0.042857144f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        u = g0 * (-m4_11);
+        u = PTP_3X2_VFMA(g2, m4_9, u);
+        u = PTP_3X2_VFMA(g4, m0_11 - m2_9, u);
+        u = PTP_3X2_VFMA(g9, m2_4, u);
+        u = PTP_3X2_VFMA(g11, -m0_4, u);
+        v = u;
+        u = g1 * (m3_11 - m5_9);
+        u = PTP_3X2_VFMA(g3, -m1_11, u);
+        u = PTP_3X2_VFMA(g5, m1_9, u);
+        u = PTP_3X2_VFMA(g9, -m1_5, u);
+        u = PTP_3X2_VFMA(g11, m1_3, u);
+        v += ((u + u) + (u + u));
+        u = g0 * (-m5_10);
+        u = PTP_3X2_VFMA(g2, m3_10, u);
+        u = PTP_3X2_VFMA(g3, -m2_10, u);
+        u = PTP_3X2_VFMA(g5, m0_10, u);
+        u = PTP_3X2_VFMA(g10, m2_3 - m0_5, u);
+        v = PTP_3X2_VFMAS(5.0f, u, v);
+        u = g0 * (m7_8);
+        u = PTP_3X2_VFMA(g2, m6_7, u);
+        u = PTP_3X2_VFMA(g6, -m2_7, u);
+        u = PTP_3X2_VFMA(g7, m2_6 - m0_8, u);
+        u = PTP_3X2_VFMA(g8, m0_7, u);
+        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = g3 * (-m4_8);
+        u = PTP_3X2_VFMA(g4, m3_8 - m5_6, u);
+        u = PTP_3X2_VFMA(g5, m4_6, u);
+        u = PTP_3X2_VFMA(g6, -m4_5, u);
+        u = PTP_3X2_VFMA(g8, -m3_4, u);
+        v = PTP_3X2_VFMAS(9.0f, u, v);
+        u = g1 * (m6_8);
+        u = PTP_3X2_VFMA(g6, -m1_8, u);
+        u = PTP_3X2_VFMA(g8, m1_6, u);
+        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = g3 * (-m5_7);
+        u = PTP_3X2_VFMA(g5, m3_7, u);
+        u = PTP_3X2_VFMA(g7, -m3_5, u);
+        v = PTP_3X2_VFMAS(18.0f, u, v);
+        if (d)
+            ptp_3x2_vstoref(d + 17 * ds + l, v * 0.0285714287f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        u = g0 * (m7_11);
+        u = PTP_3X2_VFMA(g2, -m7_9, u);
+        u = PTP_3X2_VFMA(g7, m2_9 - m0_11, u);
+        u = PTP_3X2_VFMA(g9, -m2_7, u);
+        u = PTP_3X2_VFMA(g11, m0_7, u);
+        v = u;
+        u = g0 * (-m8_10);
+        u = PTP_3X2_VFMA(g2, m6_10, u);
+        u = PTP_3X2_VFMA(g6, -m2_10, u);
+        u = PTP_3X2_VFMA(g8, m0_10, u);
+        u = PTP_3X2_VFMA(g10, m2_6 - m0_8, u);
+        v += ((u + u) + (u + u));
+        u = g1 * (m6_11 - m8_9);
+        u = PTP_3X2_VFMA(g6, -m1_11, u);
+        u = PTP_3X2_VFMA(g8, m1_9, u);
+        u = PTP_3X2_VFMA(g9, -m1_8, u);
+        u = PTP_3X2_VFMA(g11, m1_6, u);
+        v = PTP_3X2_VFMAS(5.0f, u, v);
+        u = g3 * (-m4_11);
+        u = PTP_3X2_VFMA(g4, m3_11 - m5_9, u);
+        u = PTP_3X2_VFMA(g5, m4_9, u);
+        u = PTP_3X2_VFMA(g9, -m4_5, u);
+        u = PTP_3X2_VFMA(g11, -m3_4, u);
+        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = g3 * (m7_8);
+        u = PTP_3X2_VFMA(g5, m6_7, u);
+        u = PTP_3X2_VFMA(g6, -m5_7, u);
+        u = PTP_3X2_VFMA(g7, m5_6 - m3_8, u);
+        u = PTP_3X2_VFMA(g8, m3_7, u);
+        v = PTP_3X2_VFMAS(9.0f, u, v);
+        u = g3 * (-m5_10);
+        u = PTP_3X2_VFMA(g5, m3_10, u);
+        u = PTP_3X2_VFMA(g10, -m3_5, u);
+        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = g4 * (m6_8);
+        u = PTP_3X2_VFMA(g6, -m4_8, u);
+        u = PTP_3X2_VFMA(g8, m4_6, u);
+        v = PTP_3X2_VFMAS(18.0f, u, v);
+        if (d)
+            ptp_3x2_vstoref(d + 22 * ds + l, v * 0.0285714287f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 22 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
          * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
         notlt &= 1;

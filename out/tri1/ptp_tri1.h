@@ -314,13 +314,13 @@ static inline void ptp_tri1_lanes_body(const float *PTP_TRI1_RESTRICT soa, size_
             qs = PTP_TRI1_VW;
         }
 #endif
-        const ptp_tri1_vf x0 = ptp_tri1_vload(q + 0 * qs), y0 = ptp_tri1_vload(q + 1 * qs),
-            w0 = ptp_tri1_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri1_vf x1 = ptp_tri1_vload(q + 4 * qs), y1 = ptp_tri1_vload(q + 5 * qs),
             w1 = ptp_tri1_vload(q + 7 * qs), g1 = e2 * w1;
         const ptp_tri1_vf x2 = ptp_tri1_vload(q + 8 * qs), y2 = ptp_tri1_vload(q + 9 * qs),
             w2 = ptp_tri1_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_tri1_vf m1_2 = x1 * y2 - y1 * x2;
+        const ptp_tri1_vf x0 = ptp_tri1_vload(q + 0 * qs), y0 = ptp_tri1_vload(q + 1 * qs),
+            w0 = ptp_tri1_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri1_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_tri1_vf m0_1 = x0 * y1 - y0 * x1;
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);

@@ -45,7 +45,7 @@ extern "C" {
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_TRI2_FLOPS 144
-#define PTP_TRI2_MULS 88
+#define PTP_TRI2_MULS 87
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI2_LANES
 #define PTP_TRI2_LANES 16
@@ -346,19 +346,13 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
             qs = PTP_TRI2_VW;
         }
 #endif
-        const ptp_tri2_vf x0 = ptp_tri2_vload(q + 0 * qs), y0 = ptp_tri2_vload(q + 1 * qs),
-            w0 = ptp_tri2_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri2_vf x1 = ptp_tri2_vload(q + 4 * qs), y1 = ptp_tri2_vload(q + 5 * qs),
             w1 = ptp_tri2_vload(q + 7 * qs), g1 = e2 * w1;
         const ptp_tri2_vf x2 = ptp_tri2_vload(q + 8 * qs), y2 = ptp_tri2_vload(q + 9 * qs),
             w2 = ptp_tri2_vload(q + 11 * qs), g2 = e2 * w2;
-        const ptp_tri2_vf x3 = ptp_tri2_vload(q + 12 * qs), y3 = ptp_tri2_vload(q + 13 * qs),
-            w3 = ptp_tri2_vload(q + 15 * qs), g3 = e2 * w3;
-        const ptp_tri2_vf x4 = ptp_tri2_vload(q + 16 * qs), y4 = ptp_tri2_vload(q + 17 * qs),
-            w4 = ptp_tri2_vload(q + 19 * qs), g4 = e2 * w4;
-        const ptp_tri2_vf x5 = ptp_tri2_vload(q + 20 * qs), y5 = ptp_tri2_vload(q + 21 * qs),
-            w5 = ptp_tri2_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_tri2_vf m1_2 = x1 * y2 - y1 * x2;
+        const ptp_tri2_vf x0 = ptp_tri2_vload(q + 0 * qs), y0 = ptp_tri2_vload(q + 1 * qs),
+            w0 = ptp_tri2_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri2_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_tri2_vf m0_1 = x0 * y1 - y0 * x1;
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
@@ -367,9 +361,13 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
             ptp_tri2_vstoref(d + 0 * ds + l, v * 4.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
+        const ptp_tri2_vf x4 = ptp_tri2_vload(q + 16 * qs), y4 = ptp_tri2_vload(q + 17 * qs),
+            w4 = ptp_tri2_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_tri2_vf m1_4 = x1 * y4 - y1 * x4;
         const ptp_tri2_vf m0_4 = x0 * y4 - y0 * x4;
         u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+        const ptp_tri2_vf x3 = ptp_tri2_vload(q + 12 * qs), y3 = ptp_tri2_vload(q + 13 * qs),
+            w3 = ptp_tri2_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_tri2_vf m2_3 = x2 * y3 - y2 * x3;
         const ptp_tri2_vf m0_3 = x0 * y3 - y0 * x3;
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
@@ -378,6 +376,23 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
             ptp_tri2_vstoref(d + 1 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
+        const ptp_tri2_vf m3_4 = x3 * y4 - y3 * x4;
+        u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+        const ptp_tri2_vf m1_3 = x1 * y3 - y1 * x3;
+        u -= ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+        v = u;
+        if (d)
+            ptp_tri2_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+        v = u;
+        if (d)
+            ptp_tri2_vstoref(d + 6 * ds + l, v * 4.0f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        const ptp_tri2_vf x5 = ptp_tri2_vload(q + 20 * qs), y5 = ptp_tri2_vload(q + 21 * qs),
+            w5 = ptp_tri2_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_tri2_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_tri2_vf m0_5 = x0 * y5 - y0 * x5;
         u = ((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
@@ -388,15 +403,6 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
             ptp_tri2_vstoref(d + 2 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
-        const ptp_tri2_vf m3_4 = x3 * y4 - y3 * x4;
-        u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        const ptp_tri2_vf m1_3 = x1 * y3 - y1 * x3;
-        u -= ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
-        v = u;
-        if (d)
-            ptp_tri2_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
         const ptp_tri2_vf m3_5 = x3 * y5 - y3 * x5;
         u = g0 * (m3_5);
         u = PTP_TRI2_VFMA(g3, -m0_5, u);
@@ -405,11 +411,18 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         u = g1 * (-m2_4);
         u = PTP_TRI2_VFMA(g2, m1_4, u);
         u = PTP_TRI2_VFMA(g4, -m1_2, u);
-        v = PTP_TRI2_VFMAS(2.0f, u, v);
+        v += (u + u);
         if (d)
             ptp_tri2_vstoref(d + 4 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
+        u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
+        v = u;
+        if (d)
+            ptp_tri2_vstoref(d + 7 * ds + l, v * 1.33333337f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 7 */
         const ptp_tri2_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         const ptp_tri2_vf m2_5 = x2 * y5 - y2 * x5;
@@ -419,19 +432,6 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
             ptp_tri2_vstoref(d + 5 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
-        u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v = u;
-        if (d)
-            ptp_tri2_vstoref(d + 6 * ds + l, v * 4.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
-        u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v = u;
-        if (d)
-            ptp_tri2_vstoref(d + 7 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
         v = u;

@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI3_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI3_FLOPS 782
-#define PTP_TRI3_MULS 450
+#define PTP_TRI3_FLOPS 788
+#define PTP_TRI3_MULS 435
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI3_LANES
 #define PTP_TRI3_LANES 16
@@ -522,27 +522,13 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
             qs = PTP_TRI3_VW;
         }
 #endif
-        const ptp_tri3_vf x0 = ptp_tri3_vload(q + 0 * qs), y0 = ptp_tri3_vload(q + 1 * qs),
-            w0 = ptp_tri3_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri3_vf x1 = ptp_tri3_vload(q + 4 * qs), y1 = ptp_tri3_vload(q + 5 * qs),
             w1 = ptp_tri3_vload(q + 7 * qs), g1 = e2 * w1;
         const ptp_tri3_vf x2 = ptp_tri3_vload(q + 8 * qs), y2 = ptp_tri3_vload(q + 9 * qs),
             w2 = ptp_tri3_vload(q + 11 * qs), g2 = e2 * w2;
-        const ptp_tri3_vf x3 = ptp_tri3_vload(q + 12 * qs), y3 = ptp_tri3_vload(q + 13 * qs),
-            w3 = ptp_tri3_vload(q + 15 * qs), g3 = e2 * w3;
-        const ptp_tri3_vf x4 = ptp_tri3_vload(q + 16 * qs), y4 = ptp_tri3_vload(q + 17 * qs),
-            w4 = ptp_tri3_vload(q + 19 * qs), g4 = e2 * w4;
-        const ptp_tri3_vf x5 = ptp_tri3_vload(q + 20 * qs), y5 = ptp_tri3_vload(q + 21 * qs),
-            w5 = ptp_tri3_vload(q + 23 * qs), g5 = e2 * w5;
-        const ptp_tri3_vf x6 = ptp_tri3_vload(q + 24 * qs), y6 = ptp_tri3_vload(q + 25 * qs),
-            w6 = ptp_tri3_vload(q + 27 * qs), g6 = e2 * w6;
-        const ptp_tri3_vf x7 = ptp_tri3_vload(q + 28 * qs), y7 = ptp_tri3_vload(q + 29 * qs),
-            w7 = ptp_tri3_vload(q + 31 * qs), g7 = e2 * w7;
-        const ptp_tri3_vf x8 = ptp_tri3_vload(q + 32 * qs), y8 = ptp_tri3_vload(q + 33 * qs),
-            w8 = ptp_tri3_vload(q + 35 * qs), g8 = e2 * w8;
-        const ptp_tri3_vf x9 = ptp_tri3_vload(q + 36 * qs), y9 = ptp_tri3_vload(q + 37 * qs),
-            w9 = ptp_tri3_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_tri3_vf m1_2 = x1 * y2 - y1 * x2;
+        const ptp_tri3_vf x0 = ptp_tri3_vload(q + 0 * qs), y0 = ptp_tri3_vload(q + 1 * qs),
+            w0 = ptp_tri3_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri3_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_tri3_vf m0_1 = x0 * y1 - y0 * x1;
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
@@ -551,9 +537,13 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
             ptp_tri3_vstoref(d + 0 * ds + l, v * 9.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
+        const ptp_tri3_vf x4 = ptp_tri3_vload(q + 16 * qs), y4 = ptp_tri3_vload(q + 17 * qs),
+            w4 = ptp_tri3_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_tri3_vf m1_4 = x1 * y4 - y1 * x4;
         const ptp_tri3_vf m0_4 = x0 * y4 - y0 * x4;
         u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+        const ptp_tri3_vf x3 = ptp_tri3_vload(q + 12 * qs), y3 = ptp_tri3_vload(q + 13 * qs),
+            w3 = ptp_tri3_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_tri3_vf m2_3 = x2 * y3 - y2 * x3;
         const ptp_tri3_vf m0_3 = x0 * y3 - y0 * x3;
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
@@ -562,6 +552,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
             ptp_tri3_vstoref(d + 1 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
+        const ptp_tri3_vf x5 = ptp_tri3_vload(q + 20 * qs), y5 = ptp_tri3_vload(q + 21 * qs),
+            w5 = ptp_tri3_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_tri3_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_tri3_vf m0_5 = x0 * y5 - y0 * x5;
         u = ((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
@@ -572,9 +564,30 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
             ptp_tri3_vstoref(d + 2 * ds + l, v * 3.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
-        const ptp_tri3_vf m1_7 = x1 * y7 - y1 * x7;
+        const ptp_tri3_vf x8 = ptp_tri3_vload(q + 32 * qs), y8 = ptp_tri3_vload(q + 33 * qs),
+            w8 = ptp_tri3_vload(q + 35 * qs), g8 = e2 * w8;
+        const ptp_tri3_vf m1_8 = x1 * y8 - y1 * x8;
+        const ptp_tri3_vf m0_8 = x0 * y8 - y0 * x8;
+        u = ((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
+        const ptp_tri3_vf x7 = ptp_tri3_vload(q + 28 * qs), y7 = ptp_tri3_vload(q + 29 * qs),
+            w7 = ptp_tri3_vload(q + 31 * qs), g7 = e2 * w7;
+        const ptp_tri3_vf m2_7 = x2 * y7 - y2 * x7;
         const ptp_tri3_vf m0_7 = x0 * y7 - y0 * x7;
+        u -= ((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+        v = u;
+        const ptp_tri3_vf m3_5 = x3 * y5 - y3 * x5;
+        u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+        v += (u + u);
+        u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        if (d)
+            ptp_tri3_vstoref(d + 4 * ds + l, v * 0.600000024f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        const ptp_tri3_vf m1_7 = x1 * y7 - y1 * x7;
         u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+        const ptp_tri3_vf x6 = ptp_tri3_vload(q + 24 * qs), y6 = ptp_tri3_vload(q + 25 * qs),
+            w6 = ptp_tri3_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_tri3_vf m2_6 = x2 * y6 - y2 * x6;
         const ptp_tri3_vf m0_6 = x0 * y6 - y0 * x6;
         u -= ((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
@@ -584,42 +597,11 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         const ptp_tri3_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v = PTP_TRI3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 3 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 3 */
-        const ptp_tri3_vf m1_8 = x1 * y8 - y1 * x8;
-        const ptp_tri3_vf m0_8 = x0 * y8 - y0 * x8;
-        u = ((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
-        const ptp_tri3_vf m2_7 = x2 * y7 - y2 * x7;
-        u -= ((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
-        v = u;
-        const ptp_tri3_vf m3_5 = x3 * y5 - y3 * x5;
-        u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v = PTP_TRI3_VFMAS(2.0f, u, v);
-        u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
-        if (d)
-            ptp_tri3_vstoref(d + 4 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
-        const ptp_tri3_vf m1_9 = x1 * y9 - y1 * x9;
-        const ptp_tri3_vf m0_9 = x0 * y9 - y0 * x9;
-        u = ((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
-        const ptp_tri3_vf m2_8 = x2 * y8 - y2 * x8;
-        u -= ((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
-        v = u;
-        const ptp_tri3_vf m2_5 = x2 * y5 - y2 * x5;
-        u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
-        const ptp_tri3_vf m4_5 = x4 * y5 - y4 * x5;
-        u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        v = PTP_TRI3_VFMAS(4.0f, u, v);
-        if (d)
-            ptp_tri3_vstoref(d + 5 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_tri3_vf m3_7 = x3 * y7 - y3 * x7;
         u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         const ptp_tri3_vf m4_6 = x4 * y6 - y4 * x6;
@@ -640,7 +622,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         const ptp_tri3_vf m3_8 = x3 * y8 - y3 * x8;
         u = ((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
-        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         u += ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
@@ -649,22 +631,51 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
             ptp_tri3_vstoref(d + 7 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
-        const ptp_tri3_vf m3_9 = x3 * y9 - y3 * x9;
-        u = ((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
-        const ptp_tri3_vf m4_8 = x4 * y8 - y4 * x8;
-        u += ((g0 * m4_8 - g4 * m0_8) + g8 * m0_4);
+        const ptp_tri3_vf m6_7 = x6 * y7 - y6 * x7;
+        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+        const ptp_tri3_vf m3_6 = x3 * y6 - y3 * x6;
+        u += ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v = u;
-        const ptp_tri3_vf m5_7 = x5 * y7 - y5 * x7;
-        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        v = PTP_TRI3_VFMAS(2.0f, u, v);
-        u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
-        u += ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
+        u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
+        v += ((u + u) + (u + u));
+        if (d)
+            ptp_tri3_vstoref(d + 10 * ds + l, v * 0.600000024f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        const ptp_tri3_vf m6_8 = x6 * y8 - y6 * x8;
+        u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
+        u -= ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
+        v = u;
+        u = -((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
+        v += (u + u);
+        u = ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
+        u -= ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
+        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
-            ptp_tri3_vstoref(d + 8 * ds + l, v * 0.300000012f, n - l);
+            ptp_tri3_vstoref(d + 11 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        const ptp_tri3_vf x9 = ptp_tri3_vload(q + 36 * qs), y9 = ptp_tri3_vload(q + 37 * qs),
+            w9 = ptp_tri3_vload(q + 39 * qs), g9 = e2 * w9;
+        const ptp_tri3_vf m1_9 = x1 * y9 - y1 * x9;
+        const ptp_tri3_vf m0_9 = x0 * y9 - y0 * x9;
+        u = ((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
+        const ptp_tri3_vf m2_8 = x2 * y8 - y2 * x8;
+        u -= ((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
+        v = u;
+        const ptp_tri3_vf m2_5 = x2 * y5 - y2 * x5;
+        u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        const ptp_tri3_vf m4_5 = x4 * y5 - y4 * x5;
+        u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+        v += ((u + u) + (u + u));
+        if (d)
+            ptp_tri3_vstoref(d + 5 * ds + l, v * 0.600000024f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 5 */
         const ptp_tri3_vf m4_9 = x4 * y9 - y4 * x9;
         u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
         const ptp_tri3_vf m5_8 = x5 * y8 - y5 * x8;
@@ -678,62 +689,6 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
             ptp_tri3_vstoref(d + 9 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 9 */
-        const ptp_tri3_vf m6_7 = x6 * y7 - y6 * x7;
-        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
-        const ptp_tri3_vf m3_6 = x3 * y6 - y3 * x6;
-        u += ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v = u;
-        u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
-        u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v = PTP_TRI3_VFMAS(4.0f, u, v);
-        if (d)
-            ptp_tri3_vstoref(d + 10 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 10 */
-        const ptp_tri3_vf m6_8 = x6 * y8 - y6 * x8;
-        u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
-        u -= ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
-        v = u;
-        u = -((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v = PTP_TRI3_VFMAS(2.0f, u, v);
-        u = ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
-        u -= ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
-        if (d)
-            ptp_tri3_vstoref(d + 11 * ds + l, v * 0.300000012f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 11 */
-        const ptp_tri3_vf m6_9 = x6 * y9 - y6 * x9;
-        u = ((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
-        v = u;
-        const ptp_tri3_vf m7_8 = x7 * y8 - y7 * x8;
-        u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
-        u += ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
-        u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
-        u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
-        v = PTP_TRI3_VFMAS(9.0f, u, v);
-        if (d)
-            ptp_tri3_vstoref(d + 12 * ds + l, v * 0.100000001f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 12 */
-        const ptp_tri3_vf m7_9 = x7 * y9 - y7 * x9;
-        u = ((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
-        u += ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
-        v = u;
-        u = ((g2 * m3_9 - g3 * m2_9) + g9 * m2_3);
-        v = PTP_TRI3_VFMAS(2.0f, u, v);
-        u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
-        u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
-        u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
-        if (d)
-            ptp_tri3_vstoref(d + 13 * ds + l, v * 0.300000012f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
         const ptp_tri3_vf m8_9 = x8 * y9 - y8 * x9;
         u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
         const ptp_tri3_vf m5_9 = x5 * y9 - y5 * x9;
@@ -742,7 +697,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
-        v = PTP_TRI3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 14 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -758,20 +713,24 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
         v = u;
         u = ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
-        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
             ptp_tri3_vstoref(d + 16 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
+        const ptp_tri3_vf m6_9 = x6 * y9 - y6 * x9;
         u = ((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
         u -= ((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
         v = u;
         u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
-        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        v += (u + u);
+        const ptp_tri3_vf m7_8 = x7 * y8 - y7 * x8;
         u = ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
+        const ptp_tri3_vf m4_8 = x4 * y8 - y4 * x8;
         u -= ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
+        const ptp_tri3_vf m5_7 = x5 * y7 - y5 * x7;
         u -= ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
@@ -779,10 +738,12 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         u = ((g2 * m6_9 - g6 * m2_9) + g9 * m2_6);
+        const ptp_tri3_vf m3_9 = x3 * y9 - y3 * x9;
         u -= ((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
         v = u;
+        const ptp_tri3_vf m7_9 = x7 * y9 - y7 * x9;
         u = ((g1 * m7_9 - g7 * m1_9) + g9 * m1_7);
-        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         u -= ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
         u -= ((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
@@ -795,7 +756,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g3 * m5_9 - g5 * m3_9) + g9 * m3_5);
         v = u;
         u = ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
-        v = PTP_TRI3_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         if (d)
@@ -828,7 +789,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
-        v = PTP_TRI3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 23 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -849,7 +810,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
         v = PTP_TRI3_VFMAS(3.0f, u, v);
         u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
-        v = PTP_TRI3_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 25 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -867,6 +828,45 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
             ptp_tri3_vstoref(d + 27 * ds + l, v * 9.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 27 */
+        u = ((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
+        v = u;
+        u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
+        u += ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
+        u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
+        u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
+        v = PTP_TRI3_VFMAS(9.0f, u, v);
+        if (d)
+            ptp_tri3_vstoref(d + 12 * ds + l, v * 0.100000001f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        u = ((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
+        u += ((g0 * m4_8 - g4 * m0_8) + g8 * m0_4);
+        v = u;
+        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
+        v += (u + u);
+        u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
+        u += ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
+        u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        if (d)
+            ptp_tri3_vstoref(d + 8 * ds + l, v * 0.300000012f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        u = ((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
+        u += ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
+        v = u;
+        u = ((g2 * m3_9 - g3 * m2_9) + g9 * m2_3);
+        v += (u + u);
+        u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
+        u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
+        u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
+        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        if (d)
+            ptp_tri3_vstoref(d + 13 * ds + l, v * 0.300000012f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 13 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
          * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
         notlt &= 1;

@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI4_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI4_FLOPS 2818
-#define PTP_TRI4_MULS 1547
+#define PTP_TRI4_FLOPS 2895
+#define PTP_TRI4_MULS 1471
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI4_LANES
 #define PTP_TRI4_LANES 16
@@ -1126,37 +1126,13 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             qs = PTP_TRI4_VW;
         }
 #endif
-        const ptp_tri4_vf x0 = ptp_tri4_vload(q + 0 * qs), y0 = ptp_tri4_vload(q + 1 * qs),
-            w0 = ptp_tri4_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri4_vf x1 = ptp_tri4_vload(q + 4 * qs), y1 = ptp_tri4_vload(q + 5 * qs),
             w1 = ptp_tri4_vload(q + 7 * qs), g1 = e2 * w1;
         const ptp_tri4_vf x2 = ptp_tri4_vload(q + 8 * qs), y2 = ptp_tri4_vload(q + 9 * qs),
             w2 = ptp_tri4_vload(q + 11 * qs), g2 = e2 * w2;
-        const ptp_tri4_vf x3 = ptp_tri4_vload(q + 12 * qs), y3 = ptp_tri4_vload(q + 13 * qs),
-            w3 = ptp_tri4_vload(q + 15 * qs), g3 = e2 * w3;
-        const ptp_tri4_vf x4 = ptp_tri4_vload(q + 16 * qs), y4 = ptp_tri4_vload(q + 17 * qs),
-            w4 = ptp_tri4_vload(q + 19 * qs), g4 = e2 * w4;
-        const ptp_tri4_vf x5 = ptp_tri4_vload(q + 20 * qs), y5 = ptp_tri4_vload(q + 21 * qs),
-            w5 = ptp_tri4_vload(q + 23 * qs), g5 = e2 * w5;
-        const ptp_tri4_vf x6 = ptp_tri4_vload(q + 24 * qs), y6 = ptp_tri4_vload(q + 25 * qs),
-            w6 = ptp_tri4_vload(q + 27 * qs), g6 = e2 * w6;
-        const ptp_tri4_vf x7 = ptp_tri4_vload(q + 28 * qs), y7 = ptp_tri4_vload(q + 29 * qs),
-            w7 = ptp_tri4_vload(q + 31 * qs), g7 = e2 * w7;
-        const ptp_tri4_vf x8 = ptp_tri4_vload(q + 32 * qs), y8 = ptp_tri4_vload(q + 33 * qs),
-            w8 = ptp_tri4_vload(q + 35 * qs), g8 = e2 * w8;
-        const ptp_tri4_vf x9 = ptp_tri4_vload(q + 36 * qs), y9 = ptp_tri4_vload(q + 37 * qs),
-            w9 = ptp_tri4_vload(q + 39 * qs), g9 = e2 * w9;
-        const ptp_tri4_vf x10 = ptp_tri4_vload(q + 40 * qs), y10 = ptp_tri4_vload(q + 41 * qs),
-            w10 = ptp_tri4_vload(q + 43 * qs), g10 = e2 * w10;
-        const ptp_tri4_vf x11 = ptp_tri4_vload(q + 44 * qs), y11 = ptp_tri4_vload(q + 45 * qs),
-            w11 = ptp_tri4_vload(q + 47 * qs), g11 = e2 * w11;
-        const ptp_tri4_vf x12 = ptp_tri4_vload(q + 48 * qs), y12 = ptp_tri4_vload(q + 49 * qs),
-            w12 = ptp_tri4_vload(q + 51 * qs), g12 = e2 * w12;
-        const ptp_tri4_vf x13 = ptp_tri4_vload(q + 52 * qs), y13 = ptp_tri4_vload(q + 53 * qs),
-            w13 = ptp_tri4_vload(q + 55 * qs), g13 = e2 * w13;
-        const ptp_tri4_vf x14 = ptp_tri4_vload(q + 56 * qs), y14 = ptp_tri4_vload(q + 57 * qs),
-            w14 = ptp_tri4_vload(q + 59 * qs), g14 = e2 * w14;
         const ptp_tri4_vf m1_2 = x1 * y2 - y1 * x2;
+        const ptp_tri4_vf x0 = ptp_tri4_vload(q + 0 * qs), y0 = ptp_tri4_vload(q + 1 * qs),
+            w0 = ptp_tri4_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri4_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_tri4_vf m0_1 = x0 * y1 - y0 * x1;
         u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
@@ -1165,9 +1141,13 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 0 * ds + l, v * 16.0f, n - l);
         notlt = (v < 0.0f) == 0;
         notgt = (v > 0.0f) == 0; /* plane 0 */
+        const ptp_tri4_vf x4 = ptp_tri4_vload(q + 16 * qs), y4 = ptp_tri4_vload(q + 17 * qs),
+            w4 = ptp_tri4_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_tri4_vf m1_4 = x1 * y4 - y1 * x4;
         const ptp_tri4_vf m0_4 = x0 * y4 - y0 * x4;
         u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+        const ptp_tri4_vf x3 = ptp_tri4_vload(q + 12 * qs), y3 = ptp_tri4_vload(q + 13 * qs),
+            w3 = ptp_tri4_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_tri4_vf m2_3 = x2 * y3 - y2 * x3;
         const ptp_tri4_vf m0_3 = x0 * y3 - y0 * x3;
         u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
@@ -1176,6 +1156,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 1 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 1 */
+        const ptp_tri4_vf x5 = ptp_tri4_vload(q + 20 * qs), y5 = ptp_tri4_vload(q + 21 * qs),
+            w5 = ptp_tri4_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_tri4_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_tri4_vf m0_5 = x0 * y5 - y0 * x5;
         u = ((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
@@ -1186,32 +1168,20 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 2 * ds + l, v * 5.33333349f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 2 */
-        const ptp_tri4_vf m1_7 = x1 * y7 - y1 * x7;
-        const ptp_tri4_vf m0_7 = x0 * y7 - y0 * x7;
-        u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
-        const ptp_tri4_vf m2_6 = x2 * y6 - y2 * x6;
-        const ptp_tri4_vf m0_6 = x0 * y6 - y0 * x6;
-        u -= ((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
-        v = u;
-        const ptp_tri4_vf m1_3 = x1 * y3 - y1 * x3;
-        u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        const ptp_tri4_vf m3_4 = x3 * y4 - y3 * x4;
-        u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        const ptp_tri4_vf x8 = ptp_tri4_vload(q + 32 * qs), y8 = ptp_tri4_vload(q + 33 * qs),
+            w8 = ptp_tri4_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_tri4_vf m1_8 = x1 * y8 - y1 * x8;
+        const ptp_tri4_vf x7 = ptp_tri4_vload(q + 28 * qs), y7 = ptp_tri4_vload(q + 29 * qs),
+            w7 = ptp_tri4_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_tri4_vf m2_7 = x2 * y7 - y2 * x7;
         u = g0 * (m1_8 - m2_7);
         const ptp_tri4_vf m0_8 = x0 * y8 - y0 * x8;
         u = PTP_TRI4_VFMA(g1, -m0_8, u);
+        const ptp_tri4_vf m0_7 = x0 * y7 - y0 * x7;
         u = PTP_TRI4_VFMA(g2, m0_7, u);
         u = PTP_TRI4_VFMA(g7, -m0_2, u);
         u = PTP_TRI4_VFMA(g8, m0_1, u);
-        v = 2.0f * u;
+        v = (u + u);
         const ptp_tri4_vf m3_5 = x3 * y5 - y3 * x5;
         u = g0 * (m3_5);
         u = PTP_TRI4_VFMA(g3, -m0_5, u);
@@ -1220,11 +1190,31 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (-m2_4);
         u = PTP_TRI4_VFMA(g2, m1_4, u);
         u = PTP_TRI4_VFMA(g4, -m1_2, u);
-        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         if (d)
             ptp_tri4_vstoref(d + 4 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 4 */
+        const ptp_tri4_vf m1_7 = x1 * y7 - y1 * x7;
+        u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+        const ptp_tri4_vf x6 = ptp_tri4_vload(q + 24 * qs), y6 = ptp_tri4_vload(q + 25 * qs),
+            w6 = ptp_tri4_vload(q + 27 * qs), g6 = e2 * w6;
+        const ptp_tri4_vf m2_6 = x2 * y6 - y2 * x6;
+        const ptp_tri4_vf m0_6 = x0 * y6 - y0 * x6;
+        u -= ((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+        v = u;
+        const ptp_tri4_vf m1_3 = x1 * y3 - y1 * x3;
+        u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+        v += (u + u);
+        const ptp_tri4_vf m3_4 = x3 * y4 - y3 * x4;
+        u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        if (d)
+            ptp_tri4_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        const ptp_tri4_vf x9 = ptp_tri4_vload(q + 36 * qs), y9 = ptp_tri4_vload(q + 37 * qs),
+            w9 = ptp_tri4_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_tri4_vf m1_9 = x1 * y9 - y1 * x9;
         const ptp_tri4_vf m0_9 = x0 * y9 - y0 * x9;
         u = ((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
@@ -1233,7 +1223,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         const ptp_tri4_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         const ptp_tri4_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
@@ -1241,16 +1231,81 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 5 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 5 */
+        const ptp_tri4_vf x14 = ptp_tri4_vload(q + 56 * qs), y14 = ptp_tri4_vload(q + 57 * qs),
+            w14 = ptp_tri4_vload(q + 59 * qs), g14 = e2 * w14;
+        const ptp_tri4_vf m1_14 = x1 * y14 - y1 * x14;
+        const ptp_tri4_vf m0_14 = x0 * y14 - y0 * x14;
+        u = ((g0 * m1_14 - g1 * m0_14) + g14 * m0_1);
+        const ptp_tri4_vf x13 = ptp_tri4_vload(q + 52 * qs), y13 = ptp_tri4_vload(q + 53 * qs),
+            w13 = ptp_tri4_vload(q + 55 * qs), g13 = e2 * w13;
+        const ptp_tri4_vf m2_13 = x2 * y13 - y2 * x13;
+        const ptp_tri4_vf m0_13 = x0 * y13 - y0 * x13;
+        u -= ((g0 * m2_13 - g2 * m0_13) + g13 * m0_2);
+        v = u;
+        const ptp_tri4_vf m2_9 = x2 * y9 - y2 * x9;
+        u = -((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        const ptp_tri4_vf m4_9 = x4 * y9 - y4 * x9;
+        u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
+        const ptp_tri4_vf m5_8 = x5 * y8 - y5 * x8;
+        u -= ((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
+        v = PTP_TRI4_VFMAS(9.0f, u, v);
+        u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        if (d)
+            ptp_tri4_vstoref(d + 9 * ds + l, v * 0.190476194f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        const ptp_tri4_vf m1_13 = x1 * y13 - y1 * x13;
+        const ptp_tri4_vf x12 = ptp_tri4_vload(q + 48 * qs), y12 = ptp_tri4_vload(q + 49 * qs),
+            w12 = ptp_tri4_vload(q + 51 * qs), g12 = e2 * w12;
+        const ptp_tri4_vf m2_12 = x2 * y12 - y2 * x12;
+        u = g0 * (m1_13 - m2_12);
+        u = PTP_TRI4_VFMA(g1, -m0_13, u);
+        const ptp_tri4_vf m0_12 = x0 * y12 - y0 * x12;
+        u = PTP_TRI4_VFMA(g2, m0_12, u);
+        u = PTP_TRI4_VFMA(g12, -m0_2, u);
+        u = PTP_TRI4_VFMA(g13, m0_1, u);
+        v = u;
+        const ptp_tri4_vf m3_9 = x3 * y9 - y3 * x9;
+        const ptp_tri4_vf m4_8 = x4 * y8 - y4 * x8;
+        u = g0 * (m3_9 + m4_8);
+        u = PTP_TRI4_VFMA(g3, -m0_9, u);
+        u = PTP_TRI4_VFMA(g4, -m0_8, u);
+        u = PTP_TRI4_VFMA(g8, m0_4, u);
+        u = PTP_TRI4_VFMA(g9, m0_3, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        const ptp_tri4_vf m5_7 = x5 * y7 - y5 * x7;
+        u = g0 * (-m5_7);
+        u = PTP_TRI4_VFMA(g1, m4_5, u);
+        u = PTP_TRI4_VFMA(g2, m3_5, u);
+        u = PTP_TRI4_VFMA(g3, -m2_5, u);
+        u = PTP_TRI4_VFMA(g4, -m1_5, u);
+        u = PTP_TRI4_VFMA(g5, m1_4 + m2_3 + m0_7, u);
+        u = PTP_TRI4_VFMA(g7, -m0_5, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g1 * (-m2_8);
+        u = PTP_TRI4_VFMA(g2, m1_8, u);
+        u = PTP_TRI4_VFMA(g8, -m1_2, u);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        if (d)
+            ptp_tri4_vstoref(d + 8 * ds + l, v * 0.190476194f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        const ptp_tri4_vf x11 = ptp_tri4_vload(q + 44 * qs), y11 = ptp_tri4_vload(q + 45 * qs),
+            w11 = ptp_tri4_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_tri4_vf m1_11 = x1 * y11 - y1 * x11;
         const ptp_tri4_vf m0_11 = x0 * y11 - y0 * x11;
         u = ((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
+        const ptp_tri4_vf x10 = ptp_tri4_vload(q + 40 * qs), y10 = ptp_tri4_vload(q + 41 * qs),
+            w10 = ptp_tri4_vload(q + 43 * qs), g10 = e2 * w10;
         const ptp_tri4_vf m2_10 = x2 * y10 - y2 * x10;
         const ptp_tri4_vf m0_10 = x0 * y10 - y0 * x10;
         u -= ((g0 * m2_10 - g2 * m0_10) + g10 * m0_2);
         v = u;
         const ptp_tri4_vf m1_6 = x1 * y6 - y1 * x6;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         const ptp_tri4_vf m3_7 = x3 * y7 - y3 * x7;
         u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         const ptp_tri4_vf m4_6 = x4 * y6 - y4 * x6;
@@ -1262,10 +1317,30 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 6 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
+        const ptp_tri4_vf m3_11 = x3 * y11 - y3 * x11;
+        u = ((g0 * m3_11 - g3 * m0_11) + g11 * m0_3);
+        const ptp_tri4_vf m4_10 = x4 * y10 - y4 * x10;
+        u -= ((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
+        const ptp_tri4_vf m1_10 = x1 * y10 - y1 * x10;
+        u -= ((g1 * m2_10 - g2 * m1_10) + g10 * m1_2);
+        v = u;
+        const ptp_tri4_vf m3_6 = x3 * y6 - y3 * x6;
+        u = ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+        v += (u + u);
+        const ptp_tri4_vf m6_7 = x6 * y7 - y6 * x7;
+        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        if (d)
+            ptp_tri4_vstoref(d + 10 * ds + l, v * 0.380952388f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri4_vf m1_12 = x1 * y12 - y1 * x12;
         const ptp_tri4_vf m2_11 = x2 * y11 - y2 * x11;
         u = g0 * (m1_12 - m2_11);
-        const ptp_tri4_vf m0_12 = x0 * y12 - y0 * x12;
         u = PTP_TRI4_VFMA(g1, -m0_12, u);
         u = PTP_TRI4_VFMA(g2, m0_11, u);
         u = PTP_TRI4_VFMA(g11, -m0_2, u);
@@ -1291,86 +1366,11 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (-m2_7);
         u = PTP_TRI4_VFMA(g2, m1_7, u);
         u = PTP_TRI4_VFMA(g7, -m1_2, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 7 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
-        const ptp_tri4_vf m1_13 = x1 * y13 - y1 * x13;
-        const ptp_tri4_vf m2_12 = x2 * y12 - y2 * x12;
-        u = g0 * (m1_13 - m2_12);
-        const ptp_tri4_vf m0_13 = x0 * y13 - y0 * x13;
-        u = PTP_TRI4_VFMA(g1, -m0_13, u);
-        u = PTP_TRI4_VFMA(g2, m0_12, u);
-        u = PTP_TRI4_VFMA(g12, -m0_2, u);
-        u = PTP_TRI4_VFMA(g13, m0_1, u);
-        v = u;
-        const ptp_tri4_vf m3_9 = x3 * y9 - y3 * x9;
-        const ptp_tri4_vf m4_8 = x4 * y8 - y4 * x8;
-        u = g0 * (m3_9 + m4_8);
-        u = PTP_TRI4_VFMA(g3, -m0_9, u);
-        u = PTP_TRI4_VFMA(g4, -m0_8, u);
-        u = PTP_TRI4_VFMA(g8, m0_4, u);
-        u = PTP_TRI4_VFMA(g9, m0_3, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
-        const ptp_tri4_vf m5_7 = x5 * y7 - y5 * x7;
-        u = g0 * (-m5_7);
-        u = PTP_TRI4_VFMA(g1, m4_5, u);
-        u = PTP_TRI4_VFMA(g2, m3_5, u);
-        u = PTP_TRI4_VFMA(g3, -m2_5, u);
-        u = PTP_TRI4_VFMA(g4, -m1_5, u);
-        u = PTP_TRI4_VFMA(g5, m1_4 + m2_3 + m0_7, u);
-        u = PTP_TRI4_VFMA(g7, -m0_5, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
-        u = g1 * (-m2_8);
-        u = PTP_TRI4_VFMA(g2, m1_8, u);
-        u = PTP_TRI4_VFMA(g8, -m1_2, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 8 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
-        const ptp_tri4_vf m1_14 = x1 * y14 - y1 * x14;
-        const ptp_tri4_vf m0_14 = x0 * y14 - y0 * x14;
-        u = ((g0 * m1_14 - g1 * m0_14) + g14 * m0_1);
-        const ptp_tri4_vf m2_13 = x2 * y13 - y2 * x13;
-        u -= ((g0 * m2_13 - g2 * m0_13) + g13 * m0_2);
-        v = u;
-        const ptp_tri4_vf m2_9 = x2 * y9 - y2 * x9;
-        u = -((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        const ptp_tri4_vf m4_9 = x4 * y9 - y4 * x9;
-        u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
-        const ptp_tri4_vf m5_8 = x5 * y8 - y5 * x8;
-        u -= ((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
-        v = PTP_TRI4_VFMAS(9.0f, u, v);
-        u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v = PTP_TRI4_VFMAS(18.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 9 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
-        const ptp_tri4_vf m3_11 = x3 * y11 - y3 * x11;
-        u = ((g0 * m3_11 - g3 * m0_11) + g11 * m0_3);
-        const ptp_tri4_vf m4_10 = x4 * y10 - y4 * x10;
-        u -= ((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
-        const ptp_tri4_vf m1_10 = x1 * y10 - y1 * x10;
-        u -= ((g1 * m2_10 - g2 * m1_10) + g10 * m1_2);
-        v = u;
-        const ptp_tri4_vf m3_6 = x3 * y6 - y3 * x6;
-        u = ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        const ptp_tri4_vf m6_7 = x6 * y7 - y6 * x7;
-        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
-        u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
-        u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 10 * ds + l, v * 0.380952388f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri4_vf m5_10 = x5 * y10 - y5 * x10;
         u = g0 * (-m5_10);
         u = PTP_TRI4_VFMA(g5, m0_10, u);
@@ -1380,7 +1380,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g0 * (-m4_11);
         u = PTP_TRI4_VFMA(g4, m0_11, u);
         u = PTP_TRI4_VFMA(g11, -m0_4, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         const ptp_tri4_vf m3_12 = x3 * y12 - y3 * x12;
         u = g0 * (m3_12);
         u = PTP_TRI4_VFMA(g3, -m0_12, u);
@@ -1391,7 +1391,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g4, m2_6, u);
         u = PTP_TRI4_VFMA(g6, -m2_4, u);
         u = PTP_TRI4_VFMA(g11, -m1_2, u);
-        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         const ptp_tri4_vf m6_8 = x6 * y8 - y6 * x8;
         u = g0 * (m6_8);
         u = PTP_TRI4_VFMA(g6, -m0_8, u);
@@ -1400,7 +1400,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (-m5_6);
         u = PTP_TRI4_VFMA(g5, m1_6, u);
         u = PTP_TRI4_VFMA(g6, -m1_5, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g1 * (m3_8 - m4_7);
         u = PTP_TRI4_VFMA(g2, m3_7, u);
         u = PTP_TRI4_VFMA(g3, -m1_8 - m2_7, u);
@@ -1412,6 +1412,46 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 11 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
+        const ptp_tri4_vf m6_11 = x6 * y11 - y6 * x11;
+        u = ((g0 * m6_11 - g6 * m0_11) + g11 * m0_6);
+        const ptp_tri4_vf m7_10 = x7 * y10 - y7 * x10;
+        u -= ((g0 * m7_10 - g7 * m0_10) + g10 * m0_7);
+        const ptp_tri4_vf m3_10 = x3 * y10 - y3 * x10;
+        u += ((g2 * m3_10 - g3 * m2_10) + g10 * m2_3);
+        v = u;
+        u = ((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
+        v += (u + u);
+        u = -((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        if (d)
+            ptp_tri4_vstoref(d + 15 * ds + l, v * 0.380952388f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        const ptp_tri4_vf m4_14 = x4 * y14 - y4 * x14;
+        u = ((g0 * m4_14 - g4 * m0_14) + g14 * m0_4);
+        const ptp_tri4_vf m5_13 = x5 * y13 - y5 * x13;
+        u -= ((g0 * m5_13 - g5 * m0_13) + g13 * m0_5);
+        const ptp_tri4_vf m2_14 = x2 * y14 - y2 * x14;
+        u -= ((g1 * m2_14 - g2 * m1_14) + g14 * m1_2);
+        v = u;
+        const ptp_tri4_vf m5_9 = x5 * y9 - y5 * x9;
+        u = -((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
+        v += (u + u);
+        const ptp_tri4_vf m8_9 = x8 * y9 - y8 * x9;
+        u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        if (d)
+            ptp_tri4_vstoref(d + 14 * ds + l, v * 0.380952388f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 14 */
         const ptp_tri4_vf m3_13 = x3 * y13 - y3 * x13;
         const ptp_tri4_vf m5_11 = x5 * y11 - y5 * x11;
         const ptp_tri4_vf m6_9 = x6 * y9 - y6 * x9;
@@ -1430,7 +1470,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g6, -m2_5, u);
         u = PTP_TRI4_VFMA(g9, m1_3, u);
         u = PTP_TRI4_VFMA(g12, -m1_2, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         const ptp_tri4_vf m7_8 = x7 * y8 - y7 * x8;
         u = g0 * (m7_8);
         u = PTP_TRI4_VFMA(g7, -m0_8, u);
@@ -1456,7 +1496,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g0 * (m4_13);
         u = PTP_TRI4_VFMA(g4, -m0_13, u);
         u = PTP_TRI4_VFMA(g13, m0_4, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         const ptp_tri4_vf m5_12 = x5 * y12 - y5 * x12;
         u = g0 * (-m5_12);
         u = PTP_TRI4_VFMA(g5, m0_12, u);
@@ -1467,7 +1507,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g4, -m1_9, u);
         u = PTP_TRI4_VFMA(g9, m1_4, u);
         u = PTP_TRI4_VFMA(g13, -m1_2, u);
-        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         const ptp_tri4_vf m7_9 = x7 * y9 - y7 * x9;
         u = g0 * (m7_9);
         u = PTP_TRI4_VFMA(g7, -m0_9, u);
@@ -1476,7 +1516,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g2 * (m3_9);
         u = PTP_TRI4_VFMA(g3, -m2_9, u);
         u = PTP_TRI4_VFMA(g9, m2_3, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g1 * (-m5_8);
         u = PTP_TRI4_VFMA(g2, m4_8 - m5_7, u);
         u = PTP_TRI4_VFMA(g4, -m2_8, u);
@@ -1488,47 +1528,130 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 13 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 13 */
-        const ptp_tri4_vf m4_14 = x4 * y14 - y4 * x14;
-        u = ((g0 * m4_14 - g4 * m0_14) + g14 * m0_4);
-        const ptp_tri4_vf m5_13 = x5 * y13 - y5 * x13;
-        u -= ((g0 * m5_13 - g5 * m0_13) + g13 * m0_5);
-        const ptp_tri4_vf m2_14 = x2 * y14 - y2 * x14;
-        u -= ((g1 * m2_14 - g2 * m1_14) + g14 * m1_2);
+        const ptp_tri4_vf m8_13 = x8 * y13 - y8 * x13;
+        u = g0 * (m8_13);
+        u = PTP_TRI4_VFMA(g1, m4_14, u);
+        u = PTP_TRI4_VFMA(g4, -m1_14, u);
+        u = PTP_TRI4_VFMA(g8, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_8, u);
+        u = PTP_TRI4_VFMA(g14, m1_4, u);
         v = u;
-        const ptp_tri4_vf m5_9 = x5 * y9 - y5 * x9;
-        u = -((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        const ptp_tri4_vf m8_9 = x8 * y9 - y8 * x9;
-        u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
+        const ptp_tri4_vf m7_14 = x7 * y14 - y7 * x14;
+        u = g0 * (m7_14);
+        u = PTP_TRI4_VFMA(g7, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_7, u);
+        v += (u + u);
+        const ptp_tri4_vf m9_12 = x9 * y12 - y9 * x12;
+        u = g0 * (-m9_12);
+        u = PTP_TRI4_VFMA(g2, m3_14, u);
+        u = PTP_TRI4_VFMA(g3, -m2_14, u);
+        u = PTP_TRI4_VFMA(g9, m0_12, u);
+        u = PTP_TRI4_VFMA(g12, -m0_9, u);
+        u = PTP_TRI4_VFMA(g14, m2_3, u);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
-        u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
+        u = g1 * (-m5_13);
+        u = PTP_TRI4_VFMA(g2, -m5_12, u);
+        u = PTP_TRI4_VFMA(g3, -m5_9, u);
+        u = PTP_TRI4_VFMA(g5, m1_13 + m2_12 + m3_9, u);
+        u = PTP_TRI4_VFMA(g9, -m3_5, u);
+        u = PTP_TRI4_VFMA(g12, -m2_5, u);
+        u = PTP_TRI4_VFMA(g13, -m1_5, u);
         v = PTP_TRI4_VFMAS(6.0f, u, v);
-        u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = g1 * (m8_9);
+        u = PTP_TRI4_VFMA(g2, m4_13, u);
+        u = PTP_TRI4_VFMA(g4, -m2_13, u);
+        u = PTP_TRI4_VFMA(g8, -m1_9, u);
+        u = PTP_TRI4_VFMA(g9, m1_8, u);
+        u = PTP_TRI4_VFMA(g13, m2_4, u);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        u = g2 * (m7_9);
+        u = PTP_TRI4_VFMA(g7, -m2_9, u);
+        u = PTP_TRI4_VFMA(g9, m2_7, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g4 * (-m5_8);
+        u = PTP_TRI4_VFMA(g5, m4_8, u);
+        u = PTP_TRI4_VFMA(g8, -m4_5, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
-            ptp_tri4_vstoref(d + 14 * ds + l, v * 0.380952388f, n - l);
+            ptp_tri4_vstoref(d + 19 * ds + l, v * 0.0761904791f, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
-        const ptp_tri4_vf m6_11 = x6 * y11 - y6 * x11;
-        u = ((g0 * m6_11 - g6 * m0_11) + g11 * m0_6);
-        const ptp_tri4_vf m7_10 = x7 * y10 - y7 * x10;
-        u -= ((g0 * m7_10 - g7 * m0_10) + g10 * m0_7);
-        const ptp_tri4_vf m3_10 = x3 * y10 - y3 * x10;
-        u += ((g2 * m3_10 - g3 * m2_10) + g10 * m2_3);
+        notgt |= (v > 0.0f) == 0; /* plane 19 */
+        const ptp_tri4_vf m8_14 = x8 * y14 - y8 * x14;
+        u = ((g0 * m8_14 - g8 * m0_14) + g14 * m0_8);
+        const ptp_tri4_vf m9_13 = x9 * y13 - y9 * x13;
+        u -= ((g0 * m9_13 - g9 * m0_13) + g13 * m0_9);
+        const ptp_tri4_vf m5_14 = x5 * y14 - y5 * x14;
+        u -= ((g1 * m5_14 - g5 * m1_14) + g14 * m1_5);
         v = u;
-        u = ((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        u = -((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
+        u = -((g2 * m5_13 - g5 * m2_13) + g13 * m2_5);
+        v += (u + u);
+        u = ((g2 * m4_14 - g4 * m2_14) + g14 * m2_4);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
-        u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+        u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
         v = PTP_TRI4_VFMAS(6.0f, u, v);
-        u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
-            ptp_tri4_vstoref(d + 15 * ds + l, v * 0.380952388f, n - l);
+            ptp_tri4_vstoref(d + 20 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        const ptp_tri4_vf m10_11 = x10 * y11 - y10 * x11;
+        u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
+        const ptp_tri4_vf m6_10 = x6 * y10 - y6 * x10;
+        u += ((g2 * m6_10 - g6 * m2_10) + g10 * m2_6);
+        v = u;
+        u = ((g1 * m6_11 - g6 * m1_11) + g11 * m1_6);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
+        u -= ((g3 * m4_10 - g4 * m3_10) + g10 * m3_4);
+        v = PTP_TRI4_VFMAS(9.0f, u, v);
+        u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        if (d)
+            ptp_tri4_vstoref(d + 21 * ds + l, v * 0.190476194f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 21 */
+        const ptp_tri4_vf m10_12 = x10 * y12 - y10 * x12;
+        u = g0 * (m10_12);
+        u = PTP_TRI4_VFMA(g10, -m0_12, u);
+        u = PTP_TRI4_VFMA(g12, m0_10, u);
+        v = u;
+        u = g2 * (-m7_10);
+        u = PTP_TRI4_VFMA(g7, m2_10, u);
+        u = PTP_TRI4_VFMA(g10, -m2_7, u);
+        v += (u + u);
+        u = g3 * (-m5_10);
+        u = PTP_TRI4_VFMA(g5, m3_10, u);
+        u = PTP_TRI4_VFMA(g10, -m3_5, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
         const ptp_tri4_vf m7_11 = x7 * y11 - y7 * x11;
+        u = g1 * (-m7_11);
+        u = PTP_TRI4_VFMA(g2, m6_11, u);
+        u = PTP_TRI4_VFMA(g6, -m2_11, u);
+        u = PTP_TRI4_VFMA(g7, m1_11, u);
+        u = PTP_TRI4_VFMA(g11, m2_6 - m1_7, u);
+        v += ((u + u) + (u + u));
+        const ptp_tri4_vf m8_10 = x8 * y10 - y8 * x10;
+        u = g1 * (-m8_10);
+        u = PTP_TRI4_VFMA(g8, m1_10, u);
+        u = PTP_TRI4_VFMA(g10, -m1_8, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        const ptp_tri4_vf m6_12 = x6 * y12 - y6 * x12;
+        u = g1 * (m6_12);
+        u = PTP_TRI4_VFMA(g6, -m1_12, u);
+        u = PTP_TRI4_VFMA(g12, m1_6, u);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        u = g3 * (m6_8 - m4_11);
+        u = PTP_TRI4_VFMA(g4, m3_11 + m6_7, u);
+        u = PTP_TRI4_VFMA(g6, -m4_7 - m3_8, u);
+        u = PTP_TRI4_VFMA(g7, m4_6, u);
+        u = PTP_TRI4_VFMA(g8, m3_6, u);
+        u = PTP_TRI4_VFMA(g11, -m3_4, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        if (d)
+            ptp_tri4_vstoref(d + 22 * ds + l, v * 0.095238097f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 22 */
         u = g0 * (-m7_11);
         u = PTP_TRI4_VFMA(g2, -m4_10, u);
         u = PTP_TRI4_VFMA(g4, m2_10, u);
@@ -1536,12 +1659,10 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g10, -m2_4, u);
         u = PTP_TRI4_VFMA(g11, -m0_7, u);
         v = u;
-        const ptp_tri4_vf m8_10 = x8 * y10 - y8 * x10;
         u = g0 * (-m8_10);
         u = PTP_TRI4_VFMA(g8, m0_10, u);
         u = PTP_TRI4_VFMA(g10, -m0_8, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        const ptp_tri4_vf m6_12 = x6 * y12 - y6 * x12;
+        v += (u + u);
         u = g0 * (m6_12);
         u = PTP_TRI4_VFMA(g1, -m5_10, u);
         u = PTP_TRI4_VFMA(g5, m1_10, u);
@@ -1563,7 +1684,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g6, -m2_7, u);
         u = PTP_TRI4_VFMA(g7, m2_6, u);
         u = PTP_TRI4_VFMA(g11, -m1_4, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g1 * (m6_8);
         u = PTP_TRI4_VFMA(g6, -m1_8, u);
         u = PTP_TRI4_VFMA(g8, m1_6, u);
@@ -1584,7 +1705,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g2 * (-m5_10);
         u = PTP_TRI4_VFMA(g5, m2_10, u);
         u = PTP_TRI4_VFMA(g10, -m2_5, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         const ptp_tri4_vf m6_13 = x6 * y13 - y6 * x13;
         const ptp_tri4_vf m7_12 = x7 * y12 - y7 * x12;
         u = g0 * (m6_13 + m7_12);
@@ -1610,7 +1731,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (m6_9);
         u = PTP_TRI4_VFMA(g6, -m1_9, u);
         u = PTP_TRI4_VFMA(g9, m1_6, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g1 * (-m5_11);
         u = PTP_TRI4_VFMA(g5, m1_11, u);
         u = PTP_TRI4_VFMA(g11, -m1_5, u);
@@ -1637,187 +1758,6 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 17 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
-        const ptp_tri4_vf m6_14 = x6 * y14 - y6 * x14;
-        u = g0 * (m6_14);
-        u = PTP_TRI4_VFMA(g6, -m0_14, u);
-        u = PTP_TRI4_VFMA(g14, m0_6, u);
-        v = u;
-        u = g1 * (m3_14);
-        u = PTP_TRI4_VFMA(g3, -m1_14, u);
-        u = PTP_TRI4_VFMA(g14, m1_3, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        const ptp_tri4_vf m8_12 = x8 * y12 - y8 * x12;
-        const ptp_tri4_vf m9_11 = x9 * y11 - y9 * x11;
-        u = g0 * (-m8_12 - m9_11);
-        u = PTP_TRI4_VFMA(g8, m0_12, u);
-        u = PTP_TRI4_VFMA(g9, m0_11, u);
-        u = PTP_TRI4_VFMA(g11, -m0_9, u);
-        u = PTP_TRI4_VFMA(g12, -m0_8, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
-        const ptp_tri4_vf m7_13 = x7 * y13 - y7 * x13;
-        u = g0 * (m7_13);
-        u = PTP_TRI4_VFMA(g7, -m0_13, u);
-        u = PTP_TRI4_VFMA(g13, m0_7, u);
-        v = PTP_TRI4_VFMAS(5.0f, u, v);
-        u = g2 * (m4_12 - m5_11);
-        u = PTP_TRI4_VFMA(g3, -m4_9, u);
-        u = PTP_TRI4_VFMA(g4, m3_9 - m2_12, u);
-        u = PTP_TRI4_VFMA(g5, m2_11, u);
-        u = PTP_TRI4_VFMA(g9, -m3_4, u);
-        u = PTP_TRI4_VFMA(g11, -m2_5, u);
-        u = PTP_TRI4_VFMA(g12, m2_4, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
-        u = g2 * (m6_9);
-        u = PTP_TRI4_VFMA(g6, -m2_9, u);
-        u = PTP_TRI4_VFMA(g9, m2_6, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        u = g2 * (m3_13);
-        u = PTP_TRI4_VFMA(g3, -m2_13, u);
-        u = PTP_TRI4_VFMA(g13, m2_3, u);
-        v = PTP_TRI4_VFMAS(10.0f, u, v);
-        u = g1 * (-m5_12);
-        u = PTP_TRI4_VFMA(g5, m1_12, u);
-        u = PTP_TRI4_VFMA(g12, -m1_5, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
-        u = g1 * (m7_9);
-        u = PTP_TRI4_VFMA(g7, -m1_9, u);
-        u = PTP_TRI4_VFMA(g9, m1_7, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
-        u = g3 * (-m5_8);
-        u = PTP_TRI4_VFMA(g4, -m5_7, u);
-        u = PTP_TRI4_VFMA(g5, m4_7 + m3_8, u);
-        u = PTP_TRI4_VFMA(g7, -m4_5, u);
-        u = PTP_TRI4_VFMA(g8, -m3_5, u);
-        v = PTP_TRI4_VFMAS(18.0f, u, v);
-        u = g2 * (m7_8);
-        u = PTP_TRI4_VFMA(g7, -m2_8, u);
-        u = PTP_TRI4_VFMA(g8, m2_7, u);
-        v = PTP_TRI4_VFMAS(24.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 18 * ds + l, v * 0.0380952395f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
-        const ptp_tri4_vf m8_13 = x8 * y13 - y8 * x13;
-        u = g0 * (m8_13);
-        u = PTP_TRI4_VFMA(g1, m4_14, u);
-        u = PTP_TRI4_VFMA(g4, -m1_14, u);
-        u = PTP_TRI4_VFMA(g8, -m0_13, u);
-        u = PTP_TRI4_VFMA(g13, m0_8, u);
-        u = PTP_TRI4_VFMA(g14, m1_4, u);
-        v = u;
-        const ptp_tri4_vf m7_14 = x7 * y14 - y7 * x14;
-        u = g0 * (m7_14);
-        u = PTP_TRI4_VFMA(g7, -m0_14, u);
-        u = PTP_TRI4_VFMA(g14, m0_7, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        const ptp_tri4_vf m9_12 = x9 * y12 - y9 * x12;
-        u = g0 * (-m9_12);
-        u = PTP_TRI4_VFMA(g2, m3_14, u);
-        u = PTP_TRI4_VFMA(g3, -m2_14, u);
-        u = PTP_TRI4_VFMA(g9, m0_12, u);
-        u = PTP_TRI4_VFMA(g12, -m0_9, u);
-        u = PTP_TRI4_VFMA(g14, m2_3, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
-        u = g1 * (-m5_13);
-        u = PTP_TRI4_VFMA(g2, -m5_12, u);
-        u = PTP_TRI4_VFMA(g3, -m5_9, u);
-        u = PTP_TRI4_VFMA(g5, m1_13 + m2_12 + m3_9, u);
-        u = PTP_TRI4_VFMA(g9, -m3_5, u);
-        u = PTP_TRI4_VFMA(g12, -m2_5, u);
-        u = PTP_TRI4_VFMA(g13, -m1_5, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
-        u = g1 * (m8_9);
-        u = PTP_TRI4_VFMA(g2, m4_13, u);
-        u = PTP_TRI4_VFMA(g4, -m2_13, u);
-        u = PTP_TRI4_VFMA(g8, -m1_9, u);
-        u = PTP_TRI4_VFMA(g9, m1_8, u);
-        u = PTP_TRI4_VFMA(g13, m2_4, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        u = g2 * (m7_9);
-        u = PTP_TRI4_VFMA(g7, -m2_9, u);
-        u = PTP_TRI4_VFMA(g9, m2_7, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
-        u = g4 * (-m5_8);
-        u = PTP_TRI4_VFMA(g5, m4_8, u);
-        u = PTP_TRI4_VFMA(g8, -m4_5, u);
-        v = PTP_TRI4_VFMAS(18.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 19 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 19 */
-        const ptp_tri4_vf m8_14 = x8 * y14 - y8 * x14;
-        u = ((g0 * m8_14 - g8 * m0_14) + g14 * m0_8);
-        const ptp_tri4_vf m9_13 = x9 * y13 - y9 * x13;
-        u -= ((g0 * m9_13 - g9 * m0_13) + g13 * m0_9);
-        const ptp_tri4_vf m5_14 = x5 * y14 - y5 * x14;
-        u -= ((g1 * m5_14 - g5 * m1_14) + g14 * m1_5);
-        v = u;
-        u = -((g2 * m5_13 - g5 * m2_13) + g13 * m2_5);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        u = ((g2 * m4_14 - g4 * m2_14) + g14 * m2_4);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
-        u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
-        u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 20 * ds + l, v * 0.380952388f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 20 */
-        const ptp_tri4_vf m10_11 = x10 * y11 - y10 * x11;
-        u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
-        const ptp_tri4_vf m6_10 = x6 * y10 - y6 * x10;
-        u += ((g2 * m6_10 - g6 * m2_10) + g10 * m2_6);
-        v = u;
-        u = ((g1 * m6_11 - g6 * m1_11) + g11 * m1_6);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
-        u -= ((g3 * m4_10 - g4 * m3_10) + g10 * m3_4);
-        v = PTP_TRI4_VFMAS(9.0f, u, v);
-        u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
-        v = PTP_TRI4_VFMAS(18.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 21 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 21 */
-        const ptp_tri4_vf m10_12 = x10 * y12 - y10 * x12;
-        u = g0 * (m10_12);
-        u = PTP_TRI4_VFMA(g10, -m0_12, u);
-        u = PTP_TRI4_VFMA(g12, m0_10, u);
-        v = u;
-        u = g2 * (-m7_10);
-        u = PTP_TRI4_VFMA(g7, m2_10, u);
-        u = PTP_TRI4_VFMA(g10, -m2_7, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        u = g3 * (-m5_10);
-        u = PTP_TRI4_VFMA(g5, m3_10, u);
-        u = PTP_TRI4_VFMA(g10, -m3_5, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
-        u = g1 * (-m7_11);
-        u = PTP_TRI4_VFMA(g2, m6_11, u);
-        u = PTP_TRI4_VFMA(g6, -m2_11, u);
-        u = PTP_TRI4_VFMA(g7, m1_11, u);
-        u = PTP_TRI4_VFMA(g11, m2_6 - m1_7, u);
-        v = PTP_TRI4_VFMAS(4.0f, u, v);
-        u = g1 * (-m8_10);
-        u = PTP_TRI4_VFMA(g8, m1_10, u);
-        u = PTP_TRI4_VFMA(g10, -m1_8, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
-        u = g1 * (m6_12);
-        u = PTP_TRI4_VFMA(g6, -m1_12, u);
-        u = PTP_TRI4_VFMA(g12, m1_6, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        u = g3 * (m6_8 - m4_11);
-        u = PTP_TRI4_VFMA(g4, m3_11 + m6_7, u);
-        u = PTP_TRI4_VFMA(g6, -m4_7 - m3_8, u);
-        u = PTP_TRI4_VFMA(g7, m4_6, u);
-        u = PTP_TRI4_VFMA(g8, m3_6, u);
-        u = PTP_TRI4_VFMA(g11, -m3_4, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 22 * ds + l, v * 0.095238097f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 22 */
         const ptp_tri4_vf m10_13 = x10 * y13 - y10 * x13;
         u = g0 * (m10_13);
         u = PTP_TRI4_VFMA(g10, -m0_13, u);
@@ -1827,7 +1767,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g0 * (m11_12);
         u = PTP_TRI4_VFMA(g11, -m0_12, u);
         u = PTP_TRI4_VFMA(g12, m0_11, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g1 * (-m9_10);
         u = PTP_TRI4_VFMA(g4, -m5_10, u);
         u = PTP_TRI4_VFMA(g5, m4_10, u);
@@ -1849,7 +1789,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (m6_13);
         u = PTP_TRI4_VFMA(g6, -m1_13, u);
         u = PTP_TRI4_VFMA(g13, m1_6, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g2 * (m6_12);
         u = PTP_TRI4_VFMA(g6, -m2_12, u);
         u = PTP_TRI4_VFMA(g12, m2_6, u);
@@ -1876,112 +1816,6 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 23 * ds + l, v * 0.0380952395f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 23 */
-        const ptp_tri4_vf m10_14 = x10 * y14 - y10 * x14;
-        u = g0 * (m10_14);
-        u = PTP_TRI4_VFMA(g10, -m0_14, u);
-        u = PTP_TRI4_VFMA(g14, m0_10, u);
-        v = u;
-        const ptp_tri4_vf m11_13 = x11 * y13 - y11 * x13;
-        u = g0 * (m11_13);
-        u = PTP_TRI4_VFMA(g1, m6_14, u);
-        u = PTP_TRI4_VFMA(g2, -m9_10, u);
-        u = PTP_TRI4_VFMA(g6, -m1_14, u);
-        u = PTP_TRI4_VFMA(g9, m2_10, u);
-        u = PTP_TRI4_VFMA(g10, -m2_9, u);
-        u = PTP_TRI4_VFMA(g11, -m0_13, u);
-        u = PTP_TRI4_VFMA(g13, m0_11, u);
-        u = PTP_TRI4_VFMA(g14, m1_6, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        u = g1 * (-m9_11);
-        u = PTP_TRI4_VFMA(g2, m6_13, u);
-        u = PTP_TRI4_VFMA(g6, -m2_13, u);
-        u = PTP_TRI4_VFMA(g9, m1_11, u);
-        u = PTP_TRI4_VFMA(g11, -m1_9, u);
-        u = PTP_TRI4_VFMA(g13, m2_6, u);
-        v = PTP_TRI4_VFMAS(28.0f, u, v);
-        u = g1 * (m7_13 - m8_12);
-        u = PTP_TRI4_VFMA(g2, m7_12 - m8_11, u);
-        u = PTP_TRI4_VFMA(g3, m7_9 - m4_13, u);
-        u = PTP_TRI4_VFMA(g4, m3_13 + m6_9 - m5_11, u);
-        u = PTP_TRI4_VFMA(g5, m4_11 + m6_8, u);
-        u = PTP_TRI4_VFMA(g6, -m4_9 - m5_8, u);
-        u = PTP_TRI4_VFMA(g7, -m1_13 - m2_12 - m3_9, u);
-        u = PTP_TRI4_VFMA(g8, m1_12 + m2_11 + m5_6, u);
-        u = PTP_TRI4_VFMA(g9, m3_7 + m4_6, u);
-        u = PTP_TRI4_VFMA(g11, -m2_8 - m4_5, u);
-        u = PTP_TRI4_VFMA(g12, m2_7 - m1_8, u);
-        u = PTP_TRI4_VFMA(g13, m1_7 - m3_4, u);
-        v = PTP_TRI4_VFMAS(36.0f, u, v);
-        u = g3 * (-m5_12);
-        u = PTP_TRI4_VFMA(g5, m3_12, u);
-        u = PTP_TRI4_VFMA(g12, -m3_5, u);
-        v = PTP_TRI4_VFMAS(54.0f, u, v);
-        u = g4 * (m7_8);
-        u = PTP_TRI4_VFMA(g7, -m4_8, u);
-        u = PTP_TRI4_VFMA(g8, m4_7, u);
-        v = PTP_TRI4_VFMAS(108.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 24 * ds + l, v * 0.00952380989f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 24 */
-        const ptp_tri4_vf m11_14 = x11 * y14 - y11 * x14;
-        u = g0 * (m11_14);
-        u = PTP_TRI4_VFMA(g11, -m0_14, u);
-        u = PTP_TRI4_VFMA(g14, m0_11, u);
-        v = u;
-        const ptp_tri4_vf m12_13 = x12 * y13 - y12 * x13;
-        u = g0 * (m12_13);
-        u = PTP_TRI4_VFMA(g12, -m0_13, u);
-        u = PTP_TRI4_VFMA(g13, m0_12, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
-        u = g2 * (m6_14);
-        u = PTP_TRI4_VFMA(g3, -m4_14, u);
-        u = PTP_TRI4_VFMA(g4, m3_14, u);
-        u = PTP_TRI4_VFMA(g6, -m2_14, u);
-        u = PTP_TRI4_VFMA(g14, m2_6 - m3_4, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
-        u = g1 * (m7_14);
-        u = PTP_TRI4_VFMA(g7, -m1_14, u);
-        u = PTP_TRI4_VFMA(g14, m1_7, u);
-        v = PTP_TRI4_VFMAS(5.0f, u, v);
-        u = g2 * (-m8_12);
-        u = PTP_TRI4_VFMA(g3, m8_9, u);
-        u = PTP_TRI4_VFMA(g5, m6_9, u);
-        u = PTP_TRI4_VFMA(g6, -m5_9, u);
-        u = PTP_TRI4_VFMA(g8, m2_12 - m3_9, u);
-        u = PTP_TRI4_VFMA(g9, m5_6 + m3_8, u);
-        u = PTP_TRI4_VFMA(g12, -m2_8, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
-        u = g2 * (-m9_11);
-        u = PTP_TRI4_VFMA(g9, m2_11, u);
-        u = PTP_TRI4_VFMA(g11, -m2_9, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
-        u = g1 * (-m9_12);
-        u = PTP_TRI4_VFMA(g9, m1_12, u);
-        u = PTP_TRI4_VFMA(g12, -m1_9, u);
-        v = PTP_TRI4_VFMAS(10.0f, u, v);
-        u = g3 * (-m5_13);
-        u = PTP_TRI4_VFMA(g5, m3_13, u);
-        u = PTP_TRI4_VFMA(g13, -m3_5, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
-        u = g2 * (m7_13);
-        u = PTP_TRI4_VFMA(g7, -m2_13, u);
-        u = PTP_TRI4_VFMA(g13, m2_7, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
-        u = g4 * (-m5_12);
-        u = PTP_TRI4_VFMA(g5, m7_8 + m4_12, u);
-        u = PTP_TRI4_VFMA(g7, -m5_8, u);
-        u = PTP_TRI4_VFMA(g8, m5_7, u);
-        u = PTP_TRI4_VFMA(g12, -m4_5, u);
-        v = PTP_TRI4_VFMAS(18.0f, u, v);
-        u = g4 * (m7_9);
-        u = PTP_TRI4_VFMA(g7, -m4_9, u);
-        u = PTP_TRI4_VFMA(g9, m4_7, u);
-        v = PTP_TRI4_VFMAS(24.0f, u, v);
-        if (d)
-            ptp_tri4_vstoref(d + 25 * ds + l, v * 0.0380952395f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 25 */
         const ptp_tri4_vf m12_14 = x12 * y14 - y12 * x14;
         u = g0 * (m12_14);
         u = PTP_TRI4_VFMA(g12, -m0_14, u);
@@ -1990,7 +1824,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (m8_14);
         u = PTP_TRI4_VFMA(g8, -m1_14, u);
         u = PTP_TRI4_VFMA(g14, m1_8, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g3 * (-m5_14);
         u = PTP_TRI4_VFMA(g5, m3_14, u);
         u = PTP_TRI4_VFMA(g14, -m3_5, u);
@@ -2000,7 +1834,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, -m2_13, u);
         u = PTP_TRI4_VFMA(g9, m1_13, u);
         u = PTP_TRI4_VFMA(g13, m2_8 - m1_9, u);
-        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g2 * (m7_14);
         u = PTP_TRI4_VFMA(g7, -m2_14, u);
         u = PTP_TRI4_VFMA(g14, m2_7, u);
@@ -2008,7 +1842,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g2 * (-m9_12);
         u = PTP_TRI4_VFMA(g9, m2_12, u);
         u = PTP_TRI4_VFMA(g12, -m2_9, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g4 * (m8_9 - m5_13);
         u = PTP_TRI4_VFMA(g5, m4_13 + m7_9, u);
         u = PTP_TRI4_VFMA(g7, -m5_9, u);
@@ -2026,7 +1860,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u -= ((g1 * m9_14 - g9 * m1_14) + g14 * m1_9);
         v = u;
         u = -((g2 * m9_13 - g9 * m2_13) + g13 * m2_9);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = ((g2 * m8_14 - g8 * m2_14) + g14 * m2_8);
         u -= ((g4 * m5_14 - g5 * m4_14) + g14 * m4_5);
         v = PTP_TRI4_VFMAS(9.0f, u, v);
@@ -2040,7 +1874,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g4 * m6_10 - g6 * m4_10) + g10 * m4_6);
         v = u;
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = -((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
@@ -2070,7 +1904,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g4 * (m6_11);
         u = PTP_TRI4_VFMA(g6, -m4_11, u);
         u = PTP_TRI4_VFMA(g11, m4_6, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 29 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2090,7 +1924,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, m5_6 - m1_12, u);
         u = PTP_TRI4_VFMA(g12, m1_11, u);
         u = PTP_TRI4_VFMA(g13, m3_6, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g4 * (-m8_10);
         u = PTP_TRI4_VFMA(g8, m4_10, u);
         u = PTP_TRI4_VFMA(g10, -m4_8, u);
@@ -2106,14 +1940,16 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 30 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 30 */
+        const ptp_tri4_vf m10_14 = x10 * y14 - y10 * x14;
         u = g1 * (m10_14);
         u = PTP_TRI4_VFMA(g10, -m1_14, u);
         u = PTP_TRI4_VFMA(g14, m1_10, u);
         v = u;
+        const ptp_tri4_vf m6_14 = x6 * y14 - y6 * x14;
         u = g3 * (m6_14);
         u = PTP_TRI4_VFMA(g6, -m3_14, u);
         u = PTP_TRI4_VFMA(g14, m3_6, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g2 * (m10_13);
         u = PTP_TRI4_VFMA(g5, -m8_10, u);
         u = PTP_TRI4_VFMA(g8, m5_10, u);
@@ -2125,6 +1961,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g10, -m4_9, u);
         v = PTP_TRI4_VFMAS(5.0f, u, v);
         u = g2 * (m11_12);
+        const ptp_tri4_vf m7_13 = x7 * y13 - y7 * x13;
         u = PTP_TRI4_VFMA(g3, m7_13, u);
         u = PTP_TRI4_VFMA(g5, m7_11, u);
         u = PTP_TRI4_VFMA(g7, -m3_13 - m5_11, u);
@@ -2132,10 +1969,12 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g12, m2_11, u);
         u = PTP_TRI4_VFMA(g13, m3_7, u);
         v = PTP_TRI4_VFMAS(6.0f, u, v);
+        const ptp_tri4_vf m11_13 = x11 * y13 - y11 * x13;
         u = g1 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m1_13, u);
         u = PTP_TRI4_VFMA(g13, m1_11, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        const ptp_tri4_vf m9_11 = x9 * y11 - y9 * x11;
         u = g3 * (-m9_11);
         u = PTP_TRI4_VFMA(g9, m3_11, u);
         u = PTP_TRI4_VFMA(g11, -m3_9, u);
@@ -2148,6 +1987,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g6, -m4_13, u);
         u = PTP_TRI4_VFMA(g13, m4_6, u);
         v = PTP_TRI4_VFMAS(16.0f, u, v);
+        const ptp_tri4_vf m8_12 = x8 * y12 - y8 * x12;
         u = g3 * (-m8_12);
         u = PTP_TRI4_VFMA(g4, m7_12, u);
         u = PTP_TRI4_VFMA(g7, -m4_12, u);
@@ -2169,7 +2009,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g5 * (-m9_10);
         u = PTP_TRI4_VFMA(g9, m5_10, u);
         u = PTP_TRI4_VFMA(g10, -m5_9, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
+        const ptp_tri4_vf m11_14 = x11 * y14 - y11 * x14;
         u = g1 * (m11_14);
         u = PTP_TRI4_VFMA(g3, m7_14, u);
         u = PTP_TRI4_VFMA(g7, -m3_14, u);
@@ -2180,6 +2021,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g6, -m4_14, u);
         u = PTP_TRI4_VFMA(g14, m4_6, u);
         v = PTP_TRI4_VFMAS(5.0f, u, v);
+        const ptp_tri4_vf m12_13 = x12 * y13 - y12 * x13;
         u = g1 * (m12_13);
         u = PTP_TRI4_VFMA(g3, -m8_13, u);
         u = PTP_TRI4_VFMA(g5, -m8_11, u);
@@ -2191,7 +2033,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g2 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m2_13, u);
         u = PTP_TRI4_VFMA(g13, m2_11, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g5 * (m6_13);
         u = PTP_TRI4_VFMA(g6, -m5_13, u);
         u = PTP_TRI4_VFMA(g13, m5_6, u);
@@ -2233,7 +2075,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, -m5_9, u);
         u = PTP_TRI4_VFMA(g12, -m2_13, u);
         u = PTP_TRI4_VFMA(g13, m2_12 - m3_9, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g4 * (m7_14);
         u = PTP_TRI4_VFMA(g7, -m4_14, u);
         u = PTP_TRI4_VFMA(g14, m4_7, u);
@@ -2272,7 +2114,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g4 * (-m9_13);
         u = PTP_TRI4_VFMA(g9, m4_13, u);
         u = PTP_TRI4_VFMA(g13, -m4_9, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 34 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2281,7 +2123,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u -= ((g4 * m9_14 - g9 * m4_14) + g14 * m4_9);
         v = u;
         u = -((g5 * m9_13 - g9 * m5_13) + g13 * m5_9);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g5 * m8_14 - g8 * m5_14) + g14 * m5_8);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
@@ -2300,7 +2142,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m6_10, u);
         u = PTP_TRI4_VFMA(g10, -m4_11 - m6_8, u);
         u = PTP_TRI4_VFMA(g11, m4_10, u);
-        v = 2.0f * u;
+        v = (u + u);
         u = g3 * (m10_12);
         u = PTP_TRI4_VFMA(g10, -m3_12, u);
         u = PTP_TRI4_VFMA(g12, m3_10, u);
@@ -2308,7 +2150,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g6 * (-m7_11);
         u = PTP_TRI4_VFMA(g7, m6_11, u);
         u = PTP_TRI4_VFMA(g11, -m6_7, u);
-        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         if (d)
             ptp_tri4_vstoref(d + 37 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2336,7 +2178,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g6 * (-m8_11);
         u = PTP_TRI4_VFMA(g8, m6_11, u);
         u = PTP_TRI4_VFMA(g11, -m6_8, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 38 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2348,7 +2190,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g7 * (-m9_10);
         u = PTP_TRI4_VFMA(g9, m7_10, u);
         u = PTP_TRI4_VFMA(g10, -m7_9, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g5 * (m10_12);
         u = PTP_TRI4_VFMA(g10, -m5_12, u);
         u = PTP_TRI4_VFMA(g12, m5_10, u);
@@ -2358,7 +2200,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, m6_11, u);
         u = PTP_TRI4_VFMA(g11, -m6_9, u);
         u = PTP_TRI4_VFMA(g13, -m6_7, u);
-        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g4 * (m10_13);
         u = PTP_TRI4_VFMA(g10, -m4_13, u);
         u = PTP_TRI4_VFMA(g13, m4_10, u);
@@ -2366,7 +2208,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g3 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m3_13, u);
         u = PTP_TRI4_VFMA(g13, m3_11, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g4 * (m11_12);
         u = PTP_TRI4_VFMA(g6, -m8_12, u);
         u = PTP_TRI4_VFMA(g7, -m8_11, u);
@@ -2388,7 +2230,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g4 * (m10_14);
         u = PTP_TRI4_VFMA(g10, -m4_14, u);
         u = PTP_TRI4_VFMA(g14, m4_10, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g3 * (m11_14);
         u = PTP_TRI4_VFMA(g5, m10_13, u);
         u = PTP_TRI4_VFMA(g10, -m5_13, u);
@@ -2410,7 +2252,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, m7_11, u);
         u = PTP_TRI4_VFMA(g11, -m7_9, u);
         u = PTP_TRI4_VFMA(g13, -m6_8, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g4 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m4_13, u);
         u = PTP_TRI4_VFMA(g13, m4_11, u);
@@ -2430,7 +2272,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g6 * (-m8_14);
         u = PTP_TRI4_VFMA(g8, m6_14, u);
         u = PTP_TRI4_VFMA(g14, -m6_8, u);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = g3 * (m12_14);
         u = PTP_TRI4_VFMA(g12, -m3_14, u);
         u = PTP_TRI4_VFMA(g14, m3_12, u);
@@ -2440,7 +2282,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, m6_13 + m8_11, u);
         u = PTP_TRI4_VFMA(g11, -m8_9, u);
         u = PTP_TRI4_VFMA(g13, -m6_9, u);
-        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         u = g4 * (m11_14);
         u = PTP_TRI4_VFMA(g11, -m4_14, u);
         u = PTP_TRI4_VFMA(g14, m4_11, u);
@@ -2448,7 +2290,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g5 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m5_13, u);
         u = PTP_TRI4_VFMA(g13, m5_11, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = g4 * (m12_13);
         u = PTP_TRI4_VFMA(g7, -m8_13 - m9_12, u);
         u = PTP_TRI4_VFMA(g8, m7_13, u);
@@ -2483,7 +2325,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g7 * (-m9_13);
         u = PTP_TRI4_VFMA(g9, m7_13, u);
         u = PTP_TRI4_VFMA(g13, -m7_9, u);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 42 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2493,7 +2335,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, m7_14, u);
         u = PTP_TRI4_VFMA(g13, -m4_14, u);
         u = PTP_TRI4_VFMA(g14, m4_13 - m7_9, u);
-        v = 2.0f * u;
+        v = (u + u);
         u = g5 * (m12_14);
         u = PTP_TRI4_VFMA(g12, -m5_14, u);
         u = PTP_TRI4_VFMA(g14, m5_12, u);
@@ -2501,7 +2343,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g8 * (-m9_13);
         u = PTP_TRI4_VFMA(g9, m8_13, u);
         u = PTP_TRI4_VFMA(g13, -m8_9, u);
-        v = PTP_TRI4_VFMAS(4.0f, u, v);
+        v += ((u + u) + (u + u));
         if (d)
             ptp_tri4_vstoref(d + 43 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2530,7 +2372,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g8 * m10_11 - g10 * m8_11) + g11 * m8_10);
         v = u;
         u = ((g6 * m11_12 - g11 * m6_12) + g12 * m6_11);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g7 * m10_12 - g10 * m7_12) + g12 * m7_10);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
@@ -2541,7 +2383,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g9 * m10_11 - g10 * m9_11) + g11 * m9_10);
         v = u;
         u = ((g6 * m11_13 - g11 * m6_13) + g13 * m6_11);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = ((g7 * m10_13 - g10 * m7_13) + g13 * m7_10);
         u += ((g8 * m10_12 - g10 * m8_12) + g12 * m8_10);
         v = PTP_TRI4_VFMAS(9.0f, u, v);
@@ -2556,13 +2398,13 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g9 * m10_12 - g10 * m9_12) + g12 * m9_10);
         v = u;
         u = ((g6 * m12_13 - g12 * m6_13) + g13 * m6_12);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g8 * m10_13 - g10 * m8_13) + g13 * m8_10);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         u = ((g8 * m11_12 - g11 * m8_12) + g12 * m8_11);
         v = PTP_TRI4_VFMAS(6.0f, u, v);
         u = ((g7 * m11_13 - g11 * m7_13) + g13 * m7_11);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 49 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2572,13 +2414,13 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g9 * m10_13 - g10 * m9_13) + g13 * m9_10);
         v = u;
         u = ((g9 * m11_12 - g11 * m9_12) + g12 * m9_11);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g7 * m11_14 - g11 * m7_14) + g14 * m7_11);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         u = ((g7 * m12_13 - g12 * m7_13) + g13 * m7_12);
         v = PTP_TRI4_VFMAS(6.0f, u, v);
         u = ((g8 * m11_13 - g11 * m8_13) + g13 * m8_11);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 50 * ds + l, v * 0.380952388f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2587,7 +2429,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g9 * m10_14 - g10 * m9_14) + g14 * m9_10);
         v = u;
         u = ((g9 * m11_13 - g11 * m9_13) + g13 * m9_11);
-        v = PTP_TRI4_VFMAS(8.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = ((g7 * m12_14 - g12 * m7_14) + g14 * m7_12);
         u += ((g8 * m11_14 - g11 * m8_14) + g14 * m8_11);
         v = PTP_TRI4_VFMAS(9.0f, u, v);
@@ -2601,7 +2443,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u += ((g9 * m11_14 - g11 * m9_14) + g14 * m9_11);
         v = u;
         u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
-        v = PTP_TRI4_VFMAS(2.0f, u, v);
+        v += (u + u);
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
         v = PTP_TRI4_VFMAS(3.0f, u, v);
         if (d)
@@ -2621,6 +2463,164 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 54 * ds + l, v * 16.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 54 */
+        u = g0 * (m11_14);
+        u = PTP_TRI4_VFMA(g11, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_11, u);
+        v = u;
+        u = g0 * (m12_13);
+        u = PTP_TRI4_VFMA(g12, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_12, u);
+        v += (u + u);
+        u = g2 * (m6_14);
+        u = PTP_TRI4_VFMA(g3, -m4_14, u);
+        u = PTP_TRI4_VFMA(g4, m3_14, u);
+        u = PTP_TRI4_VFMA(g6, -m2_14, u);
+        u = PTP_TRI4_VFMA(g14, m2_6 - m3_4, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g1 * (m7_14);
+        u = PTP_TRI4_VFMA(g7, -m1_14, u);
+        u = PTP_TRI4_VFMA(g14, m1_7, u);
+        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        u = g2 * (-m8_12);
+        u = PTP_TRI4_VFMA(g3, m8_9, u);
+        u = PTP_TRI4_VFMA(g5, m6_9, u);
+        u = PTP_TRI4_VFMA(g6, -m5_9, u);
+        u = PTP_TRI4_VFMA(g8, m2_12 - m3_9, u);
+        u = PTP_TRI4_VFMA(g9, m5_6 + m3_8, u);
+        u = PTP_TRI4_VFMA(g12, -m2_8, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g2 * (-m9_11);
+        u = PTP_TRI4_VFMA(g9, m2_11, u);
+        u = PTP_TRI4_VFMA(g11, -m2_9, u);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        u = g1 * (-m9_12);
+        u = PTP_TRI4_VFMA(g9, m1_12, u);
+        u = PTP_TRI4_VFMA(g12, -m1_9, u);
+        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = g3 * (-m5_13);
+        u = PTP_TRI4_VFMA(g5, m3_13, u);
+        u = PTP_TRI4_VFMA(g13, -m3_5, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = g2 * (m7_13);
+        u = PTP_TRI4_VFMA(g7, -m2_13, u);
+        u = PTP_TRI4_VFMA(g13, m2_7, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g4 * (-m5_12);
+        u = PTP_TRI4_VFMA(g5, m7_8 + m4_12, u);
+        u = PTP_TRI4_VFMA(g7, -m5_8, u);
+        u = PTP_TRI4_VFMA(g8, m5_7, u);
+        u = PTP_TRI4_VFMA(g12, -m4_5, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        u = g4 * (m7_9);
+        u = PTP_TRI4_VFMA(g7, -m4_9, u);
+        u = PTP_TRI4_VFMA(g9, m4_7, u);
+        v = PTP_TRI4_VFMAS(24.0f, u, v);
+        if (d)
+            ptp_tri4_vstoref(d + 25 * ds + l, v * 0.0380952395f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 25 */
+        u = g0 * (m6_14);
+        u = PTP_TRI4_VFMA(g6, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_6, u);
+        v = u;
+        u = g1 * (m3_14);
+        u = PTP_TRI4_VFMA(g3, -m1_14, u);
+        u = PTP_TRI4_VFMA(g14, m1_3, u);
+        v += (u + u);
+        u = g0 * (-m8_12 - m9_11);
+        u = PTP_TRI4_VFMA(g8, m0_12, u);
+        u = PTP_TRI4_VFMA(g9, m0_11, u);
+        u = PTP_TRI4_VFMA(g11, -m0_9, u);
+        u = PTP_TRI4_VFMA(g12, -m0_8, u);
+        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        u = g0 * (m7_13);
+        u = PTP_TRI4_VFMA(g7, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_7, u);
+        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        u = g2 * (m4_12 - m5_11);
+        u = PTP_TRI4_VFMA(g3, -m4_9, u);
+        u = PTP_TRI4_VFMA(g4, m3_9 - m2_12, u);
+        u = PTP_TRI4_VFMA(g5, m2_11, u);
+        u = PTP_TRI4_VFMA(g9, -m3_4, u);
+        u = PTP_TRI4_VFMA(g11, -m2_5, u);
+        u = PTP_TRI4_VFMA(g12, m2_4, u);
+        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = g2 * (m6_9);
+        u = PTP_TRI4_VFMA(g6, -m2_9, u);
+        u = PTP_TRI4_VFMA(g9, m2_6, u);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        u = g2 * (m3_13);
+        u = PTP_TRI4_VFMA(g3, -m2_13, u);
+        u = PTP_TRI4_VFMA(g13, m2_3, u);
+        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = g1 * (-m5_12);
+        u = PTP_TRI4_VFMA(g5, m1_12, u);
+        u = PTP_TRI4_VFMA(g12, -m1_5, u);
+        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = g1 * (m7_9);
+        u = PTP_TRI4_VFMA(g7, -m1_9, u);
+        u = PTP_TRI4_VFMA(g9, m1_7, u);
+        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        u = g3 * (-m5_8);
+        u = PTP_TRI4_VFMA(g4, -m5_7, u);
+        u = PTP_TRI4_VFMA(g5, m4_7 + m3_8, u);
+        u = PTP_TRI4_VFMA(g7, -m4_5, u);
+        u = PTP_TRI4_VFMA(g8, -m3_5, u);
+        v = PTP_TRI4_VFMAS(18.0f, u, v);
+        u = g2 * (m7_8);
+        u = PTP_TRI4_VFMA(g7, -m2_8, u);
+        u = PTP_TRI4_VFMA(g8, m2_7, u);
+        v = PTP_TRI4_VFMAS(24.0f, u, v);
+        if (d)
+            ptp_tri4_vstoref(d + 18 * ds + l, v * 0.0380952395f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        u = g0 * (m10_14);
+        u = PTP_TRI4_VFMA(g10, -m0_14, u);
+        u = PTP_TRI4_VFMA(g14, m0_10, u);
+        v = u;
+        u = g0 * (m11_13);
+        u = PTP_TRI4_VFMA(g1, m6_14, u);
+        u = PTP_TRI4_VFMA(g2, -m9_10, u);
+        u = PTP_TRI4_VFMA(g6, -m1_14, u);
+        u = PTP_TRI4_VFMA(g9, m2_10, u);
+        u = PTP_TRI4_VFMA(g10, -m2_9, u);
+        u = PTP_TRI4_VFMA(g11, -m0_13, u);
+        u = PTP_TRI4_VFMA(g13, m0_11, u);
+        u = PTP_TRI4_VFMA(g14, m1_6, u);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+        u = g1 * (-m9_11);
+        u = PTP_TRI4_VFMA(g2, m6_13, u);
+        u = PTP_TRI4_VFMA(g6, -m2_13, u);
+        u = PTP_TRI4_VFMA(g9, m1_11, u);
+        u = PTP_TRI4_VFMA(g11, -m1_9, u);
+        u = PTP_TRI4_VFMA(g13, m2_6, u);
+        v = PTP_TRI4_VFMAS(28.0f, u, v);
+        u = g1 * (m7_13 - m8_12);
+        u = PTP_TRI4_VFMA(g2, m7_12 - m8_11, u);
+        u = PTP_TRI4_VFMA(g3, m7_9 - m4_13, u);
+        u = PTP_TRI4_VFMA(g4, m3_13 + m6_9 - m5_11, u);
+        u = PTP_TRI4_VFMA(g5, m4_11 + m6_8, u);
+        u = PTP_TRI4_VFMA(g6, -m4_9 - m5_8, u);
+        u = PTP_TRI4_VFMA(g7, -m1_13 - m2_12 - m3_9, u);
+        u = PTP_TRI4_VFMA(g8, m1_12 + m2_11 + m5_6, u);
+        u = PTP_TRI4_VFMA(g9, m3_7 + m4_6, u);
+        u = PTP_TRI4_VFMA(g11, -m2_8 - m4_5, u);
+        u = PTP_TRI4_VFMA(g12, m2_7 - m1_8, u);
+        u = PTP_TRI4_VFMA(g13, m1_7 - m3_4, u);
+        v = PTP_TRI4_VFMAS(36.0f, u, v);
+        u = g3 * (-m5_12);
+        u = PTP_TRI4_VFMA(g5, m3_12, u);
+        u = PTP_TRI4_VFMA(g12, -m3_5, u);
+        v = PTP_TRI4_VFMAS(54.0f, u, v);
+        u = g4 * (m7_8);
+        u = PTP_TRI4_VFMA(g7, -m4_8, u);
+        u = PTP_TRI4_VFMA(g8, m4_7, u);
+        v = PTP_TRI4_VFMAS(108.0f, u, v);
+        if (d)
+            ptp_tri4_vstoref(d + 24 * ds + l, v * 0.00952380989f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 24 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
          * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
         notlt &= 1;
