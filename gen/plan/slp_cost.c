@@ -34,19 +34,22 @@ void slp_cost_plane(slp_cost *bracket, slp_cost *fused, const slp_prog *p, size_
     rat_set_si(&one, 1);
     *bracket = *fused = (slp_cost){0, 0, 0};
     for (g = a; g < b; g = e, groups++) {
-        long t, pts, scale = !rat_equal(&p->s[p->terms[g].group], &one);
+        const rat *s = &p->s[p->terms[g].group];
+        long t, pts, dbl = slp_doublings(s), scale = !rat_equal(s, &one) && !dbl;
         for (e = g; e < b && p->terms[e].group == p->terms[g].group; e++)
             ;
         t = (long)(e - g);
         pts = group_points(p, g, e);
         bracket->muls += 3 * t + scale;
-        bracket->ops += 6 * t - 1 + scale;
+        bracket->ops += 6 * t - 1 + scale + dbl;
         fused->muls += pts + scale;
-        fused->ops += 3 * t + scale;
+        fused->ops += 3 * t + scale + dbl;
         /* bracket: three products, two sums, then the terms' sums in turn; fused: the sums of a
-           point's minors, then one multiply-add per point in turn */
-        cb = max_l(cb, LAT_MUL + 2 * LAT_ADD + LAT_ADD * (t - 1) + scale * LAT_MUL);
-        cf = max_l(cf, LAT_ADD * (3 * t > pts) + LAT_MUL + LAT_FMA * (pts - 1) + scale * LAT_MUL);
+           point's minors, then one multiply-add per point in turn; the scale s: a product, or
+           dbl doublings when s = 2^dbl */
+        cb = max_l(cb, LAT_MUL + 2 * LAT_ADD + LAT_ADD * (t - 1) + scale * LAT_MUL + dbl * LAT_ADD);
+        cf = max_l(cf, LAT_ADD * (3 * t > pts) + LAT_MUL + LAT_FMA * (pts - 1) + scale * LAT_MUL +
+                    dbl * LAT_ADD);
     }
     bracket->ops += groups - 1; /* the groups' sum */
     fused->ops += groups - 1;
