@@ -651,3 +651,19 @@ if [ -x "$B/host_opencl" ]; then
             "it passed, or its mutation was not found"
     fi
 fi
+# The GPU kernels' float bound is near the errors the exact data reach too: an OpenCL kernel whose
+# float-pass bounds are 2^6 times too small is caught (about 24 unsafe of 200,000), though its second
+# look, against the right bound, still runs where the mutated bound does not decide.
+if [ -x "$B/host_opencl" ]; then
+    sed 's/tau_k\[plane\] \* M + /tau_k[plane] * M * 0x1p-6f + /' "$tmp/cert/clip-certified/ptp_3x3.cl" >"$tmp/m.cl"
+    if grep -q 'M \* 0x1p-6f' "$tmp/m.cl" && ! "$B/host_opencl" "$tmp/m.cl" --kernel ptp_3x3_classify \
+        --block-threads $(schedule "$tmp/cert/clip-certified/ptp_3x3.json" | cut -d' ' -f1) \
+        --patches-per-block $(schedule "$tmp/cert/clip-certified/ptp_3x3.json" | cut -d' ' -f2) \
+        --degree 3 3 --space clip --rule strict --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
+        grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
+        ok "a certified OpenCL kernel with its float bounds 2^6 times too small is caught unsafe on exact data"
+    else
+        notok "a certified OpenCL kernel with its float bounds 2^6 times too small is caught unsafe" \
+            "it passed, or its mutation was not found"
+    fi
+fi

@@ -287,9 +287,9 @@ static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, con
     if (st)
         return st;
     put_bounds(o, info, g, up, &cb, "",
-               "/* Certified: |d_P - exact| <= tau_k[P] * M + tau_f[P] * (1 + R)^3 (1 + E), M the largest\n"
-               " * |monomial| from the patch's largest |coordinates| and the eye, R the largest of them,\n"
-               " * E the eye's largest |component|; for max(E, 1) R^3 < ");
+               "/* Certified: |d_P - exact| <= tau_k[P] * M + tau_f[P] * (1 + R)^3 (1 + E), M from the\n"
+               " * patch's largest |coordinates| and the eye, R the largest of them, E the eye's largest\n"
+               " * |component|; for max(E, 1) R^3 < ");
     if (exact_zeros(info) && (st = put_zero_table(o, t, info, g, err)))
         return st;
     if (!g->vec2)
@@ -689,17 +689,18 @@ static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, con
     }
 }
 
-/* Into e (256 bytes), M: the largest |monomial| of a value, from the eye and the patch's largest
- * |coordinates| Rx, Ry, Rz, Rw (README: Certified). */
+/* Into e (256 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
+ * largest |monomial| (clip space); in world space the sum over the eye's components of the
+ * largest |monomial| with that component (README: Certified). */
 static void put_monomial_max(char *e, const out_info *info, const kern_target *g)
 {
-    const char *ab = g->fabs, *mx = g->fmax;
+    const char *ab = g->fabs;
     if (info->space == OUT_CLIP)
         snprintf(e, 256, "E * (Rx * Ry * Rw)");
     else
-        snprintf(e, 256, "%s(%s(%s(eye.x) * Ry, %s(eye.y) * Rx) * (Rz * Rw),\n"
-                         "        %s(%s(eye.z) * Rw, %s(eye.w) * Rz) * (Rx * Ry))",
-                 mx, mx, ab, ab, mx, ab, ab);
+        snprintf(e, 256, "(%s(eye.x) * Ry + %s(eye.y) * Rx) * (Rz * Rw) +\n"
+                         "        (%s(eye.z) * Rw + %s(eye.w) * Rz) * (Rx * Ry)",
+                 ab, ab, ab, ab);
 }
 
 /* --certified: the patch's largest |coordinates| Rx, Ry, (Rz,) Rw, R the largest of them, E the

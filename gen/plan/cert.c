@@ -110,25 +110,25 @@ static int cmp_desc(const void *a, const void *b)
     return (x < y) - (x > y);
 }
 
-/* Into D[P] (and d[P]) for the n terms of one plane whose |weights| are a (sorted here, largest
- * first), each monomial with base roundings of its own and those of the plane's sum of n terms,
- * in whatever order and association: at most the depths n - 1, n - 1, n - 2, ..., 1 of a chain,
- * the deepest given to the heaviest terms (README: Certified). */
-static void gpu_sums(double *d, double *D, double *a, size_t n, double base, double m)
+/* Into d[P] and D[P] for the n terms of one plane whose |weights| are a (sorted here, largest
+ * first): each term's m monomials have own roundings own in all (at most own_max on one), plus
+ * those of the plane's sum of n terms in whatever order and association: at most the depths
+ * n - 1, n - 1, n - 2, ..., 1 of a chain, the deepest given to the heaviest (README: Certified). */
+static void gpu_sums(double *d, double *D, double *a, size_t n, double own, double own_max, double m)
 {
     size_t k;
     qsort(a, n, sizeof *a, cmp_desc);
-    *d = base + (double)(n - 1);
+    *d = own_max + (double)(n - 1);
     for (k = 0; k < n; k++)
-        *D += (base + (double)(n - (k > 0 ? k : 1))) * m * a[k] * (1 + 0x1p-50);
+        *D += (own + m * (double)(n - (k > 0 ? k : 1))) * a[k] * (1 + 0x1p-50);
 }
 
 int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, ptp_error *err)
 {
-    /* a term's own roundings: its cross4 (clip: a minor 2, the cofactor 1, the sum of three 2;
-     * world: 5, the eye 1, the sum of four 3), its weight's rounding to float, the product by
-     * it and, in clip space, the product by eye[2] */
-    const double base = world ? 11 : 8, m = world ? 24 : 6;
+    /* A term's monomials (of one eye component in world space, where the kernel's M sums the
+     * components' bounds) and their own roundings (README: Certified): clip space 6, 46 in all,
+     * at most 8; world space 6, 64, at most 11. */
+    const double own = world ? 64 : 46, own_max = world ? 11 : 8, m = 6;
     double *d, *D, *S, *n, *a = malloc((t->nterms + 1) * sizeof *a);
     int st = a ? alloc(b, t->dom.nplanes, 0, &d, &D, &S, &n, err)
                : ptp_fail(err, PTP_ENOMEM, "out of memory computing the certified bounds");
@@ -143,7 +143,7 @@ int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, ptp_error *
         a[i] = w < 0 ? -w : w;
         if (i + 1 == t->nterms || t->terms[i + 1].plane != t->terms[i].plane) {
             int p = t->terms[i].plane;
-            gpu_sums(&d[p], &D[p], a + first, i + 1 - first, base, m);
+            gpu_sums(&d[p], &D[p], a + first, i + 1 - first, own, own_max, m);
             first = i + 1;
         }
     }
@@ -229,8 +229,9 @@ int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
         return st;
     table_sums(d, S, n, t, world ? 2048 : 512); /* float operations of a term, generously */
     for (i = 0; i < b->nplanes; i++) {
+        /* 6 monomials a term for each eye component, whose bounds the kernel's M sums */
         double m = world ? 24 : 6;
-        b->k[i] = float_up(d[i] * u2 / (1 - d[i] * u2) * m * S[i] * widen);
+        b->k[i] = float_up(d[i] * u2 / (1 - d[i] * u2) * 6 * S[i] * widen);
         b->k2[i] = float_up(4 * 0x1p-126 * n[i] * (S[i] > 1 ? S[i] : 1) * widen);
         smax = m * S[i] > smax ? m * S[i] : smax;
     }

@@ -24,9 +24,10 @@ typedef struct {
  * weights, (terms + 16) roundings on a path as derived in README. PTP_ENOMEM on failure. */
 int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
 /* The bounds of the GPU kernels' float pass for float operations of relative error at most u:
- * a term's own roundings (8, world 11) and its plane's sum in any order and association, each
- * monomial counted at its own depth, for M the largest |monomial| (README: Certified). k64 and
- * k2_64 stay NULL. */
+ * each monomial at its own depth, a term's own roundings and its plane's sum in any order and
+ * association, for M the largest |monomial| (clip space) or the sum over the eye's components of
+ * the largest |monomial| with that component (world space) (README: Certified). k64 and k2_64
+ * stay NULL. */
 int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, ptp_error *err);
 /* The bounds of the GPU kernels' second look: the table loop again in double-float arithmetic
  * (hi + lo floats from error-free transformations, + - * only), each double-float operation with
