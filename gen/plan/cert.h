@@ -7,7 +7,7 @@
  * For an evaluation whose monomial i (times weight w_i) passes d_i rounded operations on its
  * path, at most d on any, the error of a plane's value is at most
  *     sum_i gamma_{d_i} |w_i monomial_i| <= u / (1 - d u) * D * M,   D = sum_i d_i |w_i|,
- * with M >= every |monomial|: E R^3 (the C target and the GPU kernels: per-coordinate maxima),
+ * with M >= every |monomial|: E R^3, or from per-coordinate maxima (the C target, the GPU kernels),
  * plus at most eta per rounded product for underflow (2^-150 in C; 2^-126 on GPUs, which may
  * flush subnormals to zero), scaled by at most three further factors. K = u D / (1 - d u) and
  * K2 come rounded up, widened for the float evaluation of the bound (ten roundings) and for their
