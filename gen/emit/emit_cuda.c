@@ -22,6 +22,7 @@ const kern_target kern_cuda = {
         " * d[p*L + P] when not NULL. Launch P*Q threads per block and ceil(patch_count / Q) blocks,\n"
         " * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.\n",
     .fabs = "fabsf", .fmax = "fmaxf",
+    .unit_roundoff = 0x1p-24, /* round to nearest */
     .bits = "__float_as_uint(%s)",
     .vec2 = "float2", .vec2_make = "make_float2(%s, %s)",
     .fma = "__fmaf_rn(%s, %s, %s)", /* correctly rounded: one rounding */

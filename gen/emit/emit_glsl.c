@@ -22,6 +22,7 @@ const kern_target kern_glsl = {
         " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
         " * workgroup (x, y) handles the patches of block y * num_groups_x + x.\n",
     .fabs = "abs", .fmax = "max",
+    .unit_roundoff = 0x1p-24, /* round to nearest */
     .bits = "floatBitsToUint(%s)",
     .vec2 = "vec2", .vec2_make = "vec2(%s, %s)",
 };

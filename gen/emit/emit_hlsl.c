@@ -24,6 +24,7 @@ const kern_target kern_hlsl = {
         " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
         " * workgroup (x, y) handles the patches of block y * groups_x + x.\n",
     .fabs = "abs", .fmax = "max",
+    .unit_roundoff = 0x1p-24, /* round to nearest */
     .bits = "asuint(%s)",
     .vec2 = "float2", .vec2_make = "float2(%s, %s)",
 };

@@ -22,6 +22,7 @@ const kern_target kern_opencl = {
         " * NULL. Work-group size exactly P*Q; ceil(patch_count / Q) work-groups, 1-D or 2-D:\n"
         " * work-group (x, y) handles the patches of block y * num_groups(0) + x.\n",
     .fabs = "fabs", .fmax = "fmax",
+    .unit_roundoff = 0x1p-24, /* round to nearest */
     .bits = "as_uint(%s)",
     .vec2 = "float2", .vec2_make = "(float2)(%s, %s)",
     .fma = "fma(%s, %s, %s)", /* correctly rounded: one rounding */

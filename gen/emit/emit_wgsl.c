@@ -89,5 +89,6 @@ const kern_target kern_wgsl = {
         " * workgroups, in 2-D (x, y) when x would exceed the limit: workgroup (x, y) handles the\n"
         " * patches of block y * num_workgroups.x + x.\n",
     .fabs = "abs", .fmax = "max",
+    .unit_roundoff = 0x1p-23, /* no rounding mode specified: either neighbour */
     .bits = "bitcast<u32>(%s)",
 };

@@ -86,6 +86,9 @@ struct kern_target {
                                   NULL when it is a kernel parameter that may be null */
     const char *interface;     /* the banner's description of bindings / signature and dispatch */
     const char *fabs, *fmax;   /* absolute value and maximum of floats (--certified) */
+    double unit_roundoff;      /* --certified: the largest relative error of one float + - *:
+                                  0x1p-24 rounding to nearest, 0x1p-23 where the language lets a
+                                  result be either neighbour of the exact value */
     const char *bits;          /* a float's bits as a uint, printf format of the float (--certified
                                   --rule degenerate: the exact tests of collapsed edges) */
     /* --certified's second look in double-float: the type of two floats (.x hi, .y lo) and its

@@ -283,12 +283,13 @@ static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, con
                            const char *up, ptp_error *err)
 {
     cert_bounds cb;
-    int st = cert_table(&cb, t, info->space == OUT_WORLD, err);
+    int st = cert_gpu(&cb, t, info->space == OUT_WORLD, g->unit_roundoff, err);
     if (st)
         return st;
     put_bounds(o, info, g, up, &cb, "",
-               "/* Certified: |d_P - exact| <= tau_k[P] * E R^3 + tau_f[P] * (1 + R)^3 (1 + E), R the\n"
-               " * patch's largest |coordinate|, E the eye's; for max(E, 1) R^3 < ");
+               "/* Certified: |d_P - exact| <= tau_k[P] * M + tau_f[P] * (1 + R)^3 (1 + E), M from the\n"
+               " * patch's largest |coordinates| and the eye, R the largest of them, E the eye's largest\n"
+               " * |component|; for max(E, 1) R^3 < ");
     if (exact_zeros(info) && (st = put_zero_table(o, t, info, g, err)))
         return st;
     if (!g->vec2)
@@ -296,7 +297,7 @@ static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, con
     if ((st = cert_table_df(&cb, t, info->space == OUT_WORLD, err)))
         return st;
     put_bounds(o, info, g, up, &cb, "2",
-               "/* Second look, in double-float: |hi + lo - exact| <= tau2_k[P] * E R^3 + tau2_f[P] *\n"
+               "/* Second look, in double-float: |hi + lo - exact| <= tau2_k[P] * M + tau2_f[P] *\n"
                " * (1 + R)^3 (1 + E), for max(E, 1) R^3 < ");
     return PTP_OK;
 }
@@ -688,37 +689,61 @@ static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, con
     }
 }
 
-/* --certified: R, the patch's largest |coordinate|, E, the eye's, and the terms of the bounds;
- * patches too large for the bound get flags 3 (never certified). With exact zeros, the collapsed
- * edges of d too. */
+/* Into e (256 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
+ * largest |monomial| (clip space); in world space the sum over the eye's components of the
+ * largest |monomial| with that component (README: Certified). */
+static void put_monomial_max(char *e, const out_info *info, const kern_target *g)
+{
+    const char *ab = g->fabs;
+    if (info->space == OUT_CLIP)
+        snprintf(e, 256, "E * (Rx * Ry * Rw)");
+    else
+        snprintf(e, 256, "(%s(eye.x) * Ry + %s(eye.y) * Rx) * (Rz * Rw) +\n"
+                         "        (%s(eye.z) * Rw + %s(eye.w) * Rz) * (Rx * Ry)",
+                 ab, ab, ab, ab);
+}
+
+/* --certified: the patch's largest |coordinates| Rx, Ry, (Rz,) Rw, R the largest of them, E the
+ * eye's largest |component|, M the largest |monomial| and F the underflow term's factor; patches
+ * too large for the bound get flags 3 (never certified). With exact zeros, the collapsed edges of
+ * d too. */
 static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
                       const char *up)
 {
-    const char *ab = g->fabs, *mx = g->fmax, *f = g->real;
-    char e[256];
-    kern_var r3[2] = {{"R3", "R * R * R", 0}, {"ER3", "E * R3", 0}};
-    sbuf_puts(o, "    /* Certified: R, the patch's largest |coordinate|, and E, the eye's, bound the errors. */\n");
-    put_local(o, g, f, "R", "0.0f", 1);
+    const char *ab = g->fabs, *mx = g->fmax, *f = g->real, *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
+    char e[256], rc[4][4];
+    kern_var r[4], r3 = {"R3", "R * R * R", 0};
+    int k, n = (int)strlen(c);
+    sbuf_puts(o, "    /* Certified: the patch's largest |coordinates| and the eye's bound the errors. */\n");
+    for (k = 0; k < n; k++) {
+        snprintf(rc[k], sizeof rc[k], "R%c", c[k]);
+        r[k] = (kern_var){rc[k], "0.0f", 1};
+    }
+    g->syntax->locals(o, g, "    ", f, r, n, 0);
     if (exact_zeros(info))
         put_local(o, g, "bool", "fin", "true", 1);
     sbuf_printf(o, "    for (i = 0u; i < %sK; i++) {\n", up);
     snprintf(e, sizeof e, "pts[q * %sK + i]", up);
     g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"a", e, 0}, 1, 0);
-    if (info->space == OUT_CLIP)
-        sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(a.w)));\n", mx, mx, mx, ab, ab, ab);
-    else
-        sbuf_printf(o, "        R = %s(R, %s(%s(%s(a.x), %s(a.y)), %s(%s(a.z), %s(a.w))));\n", mx, mx,
-                    mx, ab, ab, mx, ab, ab);
+    for (k = 0; k < n; k++)
+        sbuf_printf(o, "        R%c = %s(R%c, %s(a.%c));\n", c[k], mx, c[k], ab, c[k]);
     if (exact_zeros(info))
         sbuf_printf(o, "        fin = fin && %sfinite(a);\n", info->prefix);
     sbuf_puts(o, "    }\n");
-    if (info->space == OUT_CLIP)
+    if (info->space == OUT_CLIP) {
+        snprintf(e, sizeof e, "%s(%s(Rx, Ry), Rw)", mx, mx);
+        put_local(o, g, f, "R", e, 0);
         snprintf(e, sizeof e, "%s(eye.z)", ab);
-    else
+    } else {
+        snprintf(e, sizeof e, "%s(%s(Rx, Ry), %s(Rz, Rw))", mx, mx, mx);
+        put_local(o, g, f, "R", e, 0);
         snprintf(e, sizeof e, "%s(%s(%s(eye.x), %s(eye.y)), %s(%s(eye.z), %s(eye.w)))", mx, mx, ab, ab,
                  mx, ab, ab);
+    }
     put_local(o, g, f, "E", e, 0);
-    g->syntax->locals(o, g, "    ", f, r3, 2, 0);
+    g->syntax->locals(o, g, "    ", f, &r3, 1, 0);
+    put_monomial_max(e, info, g);
+    put_local(o, g, f, "M", e, 0);
     put_local(o, g, f, "F", "(1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E)", 0);
     sbuf_printf(o, "    if (!(%s(E, 1.0f) * R3 < %sQMAX))", mx, up);
     put_then(o, g);
@@ -763,7 +788,7 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
     if (exact_zeros(info))
         put_keep(o, info, g, "        ", "plane");
     if (info->certified)
-        sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * ER3 + %stau_f[plane] * F)%s;\n", px, px, px,
+        sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * M + %stau_f[plane] * F)%s;\n", px, px, px,
                     exact_zeros(info) ? " & keep" : "");
     else
         sbuf_printf(o, "        f |= %sflags(d);\n", px);
@@ -844,7 +869,7 @@ static void put_second_look(sbuf *o, const out_info *info, const kern_target *g,
         snprintf(b, sizeof b, "%sdf_mul_f(%s, eye.z)", px, a);
     g->syntax->locals(o, g, "            ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? b : a, 0}, 1, 0);
-    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[%sown_plane[i]] * ER3 +\n"
+    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[%sown_plane[i]] * M +\n"
                    "                %stau2_f[%sown_plane[i]] * F + 2.0f * %s(d.y))%s;\n"
                    "        }\n    }\n",
                 px, px, px, px, px, g->fabs, exact_zeros(info) ? " & keep" : "");

@@ -22,13 +22,14 @@ static float float_up(double x)
 
 /* Fills b from per-plane depth d (the most roundings on a path), depth-weighted mass D (the sum
  * over monomials of its roundings times |weight|, m monomials a term), weight sum S and
- * rounded-product count n (arrays of L). */
+ * rounded-product count n (arrays of L), for float operations of relative error at most u. */
 static void fill(cert_bounds *b, const double *d, const double *D, const double *S, const double *n,
-                 int world, double eta)
+                 int world, double eta, double u)
 {
-    const double u = 0x1p-24, m = world ? 24 : 6;
-    /* (1 - u)^-10 for the float evaluation of the bound, 1 + 2^-40 for this double arithmetic */
-    const double widen = 1.0000006 * (1 + 0x1p-40);
+    const double m = world ? 24 : 6;
+    /* (1 - u)^-10 for the float evaluation of the bound (1.0000006 for u = 2^-24), 1 + 2^-40 for
+     * this double arithmetic */
+    const double widen = (1 + 0.0000006 * (u * 0x1p24)) * (1 + 0x1p-40);
     double smax = 0;
     int i;
     for (i = 0; i < b->nplanes; i++) {
@@ -98,8 +99,57 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
     table_sums(d, S, n, t, world ? 44 : 12);
     for (i = 0; i < b->nplanes; i++) /* every monomial at depth d */
         D[i] = d[i] * (world ? 24 : 6) * S[i];
-    fill(b, d, D, S, n, world, 0x1p-126); /* GPUs may flush subnormals to zero */
+    fill(b, d, D, S, n, world, 0x1p-126, 0x1p-24); /* GPUs may flush subnormals to zero */
     free(d);
+    return PTP_OK;
+}
+
+static int cmp_desc(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x < y) - (x > y);
+}
+
+/* Into d[P] and D[P] for the n terms of one plane whose |weights| are a (sorted here, largest
+ * first): each term's m monomials have own roundings own in all (at most own_max on one), plus
+ * those of the plane's sum of n terms in whatever order and association: at most the depths
+ * n - 1, n - 1, n - 2, ..., 1 of a chain, the deepest given to the heaviest (README: Certified). */
+static void gpu_sums(double *d, double *D, double *a, size_t n, double own, double own_max, double m)
+{
+    size_t k;
+    qsort(a, n, sizeof *a, cmp_desc);
+    *d = own_max + (double)(n - 1);
+    for (k = 0; k < n; k++)
+        *D += (own + m * (double)(n - (k > 0 ? k : 1))) * a[k] * (1 + 0x1p-50);
+}
+
+int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, ptp_error *err)
+{
+    /* A term's monomials (of one eye component in world space, where the kernel's M sums the
+     * components' bounds) and their own roundings (README: Certified): clip space 6, 46 in all,
+     * at most 8; world space 6, 64, at most 11. */
+    const double own = world ? 64 : 46, own_max = world ? 11 : 8, m = 6;
+    double *d, *D, *S, *n, *a = malloc((t->nterms + 1) * sizeof *a);
+    int st = a ? alloc(b, t->dom.nplanes, 0, &d, &D, &S, &n, err)
+               : ptp_fail(err, PTP_ENOMEM, "out of memory computing the certified bounds");
+    size_t i, first = 0;
+    if (st) {
+        free(a);
+        return st;
+    }
+    table_sums(d, S, n, t, world ? 44 : 12);
+    for (i = 0; i < t->nterms; i++) {
+        double w = rat_get_d(&t->terms[i].w);
+        a[i] = w < 0 ? -w : w;
+        if (i + 1 == t->nterms || t->terms[i + 1].plane != t->terms[i].plane) {
+            int p = t->terms[i].plane;
+            gpu_sums(&d[p], &D[p], a + first, i + 1 - first, own, own_max, m);
+            first = i + 1;
+        }
+    }
+    fill(b, d, D, S, n, world, 0x1p-126, u); /* GPUs may flush subnormals to zero */
+    free(d);
+    free(a);
     return PTP_OK;
 }
 
@@ -179,8 +229,9 @@ int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
         return st;
     table_sums(d, S, n, t, world ? 2048 : 512); /* float operations of a term, generously */
     for (i = 0; i < b->nplanes; i++) {
+        /* 6 monomials a term for each eye component, whose bounds the kernel's M sums */
         double m = world ? 24 : 6;
-        b->k[i] = float_up(d[i] * u2 / (1 - d[i] * u2) * m * S[i] * widen);
+        b->k[i] = float_up(d[i] * u2 / (1 - d[i] * u2) * 6 * S[i] * widen);
         b->k2[i] = float_up(4 * 0x1p-126 * n[i] * (S[i] > 1 ? S[i] : 1) * widen);
         smax = m * S[i] > smax ? m * S[i] : smax;
     }
@@ -209,7 +260,7 @@ int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)
             i++;
     for (i = 0; i < p->nentries; i = slp_plane_end(p, i))
         fused_sums(d, D, p, i, world);
-    fill(b, d, D, S, n, world, 0x1p-150); /* IEEE float with subnormals */
+    fill(b, d, D, S, n, world, 0x1p-150, 0x1p-24); /* IEEE float with subnormals */
     free(d);
     return PTP_OK;
 }

@@ -7,21 +7,28 @@
  * For an evaluation whose monomial i (times weight w_i) passes d_i rounded operations on its
  * path, at most d on any, the error of a plane's value is at most
  *     sum_i gamma_{d_i} |w_i monomial_i| <= u / (1 - d u) * D * M,   D = sum_i d_i |w_i|,
- * with M >= every |monomial|: E R^3 (the C target: per-coordinate maxima, README: Certified),
+ * with M >= every |monomial|: E R^3, or from per-coordinate maxima (the C target, the GPU kernels),
  * plus at most eta per rounded product for underflow (2^-150 in C; 2^-126 on GPUs, which may
  * flush subnormals to zero), scaled by at most three further factors. K = u D / (1 - d u) and
  * K2 come rounded up, widened for the float evaluation of the bound (ten roundings) and for their
  * own double computation. The table loop has d_i = d for all i (D = d m S, m = 6 monomials per
- * clip term, 24 in world space, S the sum of |weights|); cert_slp counts d_i per monomial. */
+ * clip term, 24 in world space, S the sum of |weights|); cert_slp and cert_gpu count d_i per
+ * monomial. */
 typedef struct {
     float *k, *k2; /* per plane */
     float q_max;   /* certify only patches with max(E, 1) R^3 < q_max: nothing overflows */
     double *k64, *k2_64; /* cert_table: the same for the table loop in double (else NULL) */
     int nplanes;
 } cert_bounds;
-/* The bounds of the table loop (the GPU kernels; in double, the C target's recheck): float
+/* The bounds of the table loop (in double, the C target's recheck): float
  * weights, (terms + 16) roundings on a path as derived in README. PTP_ENOMEM on failure. */
 int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
+/* The bounds of the GPU kernels' float pass for float operations of relative error at most u:
+ * each monomial at its own depth, a term's own roundings and its plane's sum in any order and
+ * association, for M the largest |monomial| (clip space) or the sum over the eye's components of
+ * the largest |monomial| with that component (world space) (README: Certified). k64 and k2_64
+ * stay NULL. */
+int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, ptp_error *err);
 /* The bounds of the GPU kernels' second look: the table loop again in double-float arithmetic
  * (hi + lo floats from error-free transformations, + - * only), each double-float operation with
  * relative error at most 2^-44, eta = 2^-126 per float operation, and q_max low enough that the
