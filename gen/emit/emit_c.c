@@ -125,30 +125,26 @@ static void put_minor_sum(sbuf *o, const slp_prog *p, size_t a, size_t b, char m
         }
 }
 
-/* e = s u as slp_doublings(s) doublings, ((u + u) + (u + u)): exact, so v + s u rounds as the
- * multiply-add does, on the adders instead of the multiplier; 0 when s is no such power of 2. */
-static int doubled(char e[64], const rat *s)
+/* s u as slp_doublings(s) doublings, ((u + u) + (u + u)): exact, so v + s u rounds as the
+ * multiply-add does, on the adders instead of the multiplier; NULL when s is no such power of 2. */
+static const char *doubled(const rat *s)
 {
-    int k, n = slp_doublings(s);
-    strcpy(e, "u");
-    for (k = 0; k < n; k++) {
-        char t[64];
-        snprintf(t, sizeof t, "(%s + %s)", e, e);
-        strcpy(e, t);
-    }
-    return n > 0;
+    static const char *const sum[] = {NULL, "(u + u)", "((u + u) + (u + u))",
+                                       "(((u + u) + (u + u)) + ((u + u) + (u + u)))"};
+    return sum[slp_doublings(s)];
 }
 
 /* Appends v's update with the group's sum u at scale s: assigned for the plane's first group. */
 static void put_group_end(sbuf *o, const rat *s, int first_group, const char *up)
 {
-    char sv[RAT_STRLEN], e[64];
+    char sv[RAT_STRLEN];
+    const char *e = doubled(s);
     rat one;
     rat_set_si(&one, 1);
     rat_get_str(sv, s);
     if (rat_equal(s, &one))
         sbuf_printf(o, "        v %s u;\n", first_group ? "=" : "+=");
-    else if (doubled(e, s))
+    else if (e)
         sbuf_printf(o, "        v %s %s;\n", first_group ? "=" : "+=", e);
     else if (first_group)
         sbuf_printf(o, "        v = %s.0f * u;\n", sv);

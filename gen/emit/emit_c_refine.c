@@ -213,7 +213,7 @@ static void put_test(sbuf *o, const refine_num *num, const out_info *info, const
 static void put_corner_sum(sbuf *o, char (*c)[16], int n, const refine_num *num,
                            const out_info *info, int neg)
 {
-    char e[24];
+    char e[80];
     int i;
     for (i = 0; i < n; i++) {
         snprintf(e, sizeof e, "d[%s]", c[i]);

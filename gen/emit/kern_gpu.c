@@ -760,7 +760,7 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
 static void put_keep(sbuf *o, const out_info *info, const kern_target *g, const char *indent,
                      const char *plane)
 {
-    char cond[160], e[256];
+    char cond[224], e[320];
     snprintf(cond, sizeof cond, "(%szero[%s] & col) == 0u", info->prefix, plane);
     g->syntax->select(e, sizeof e, cond, "3u", "0u");
     g->syntax->locals(o, g, indent, g->uint, &(kern_var){"keep", e, 0}, 1, 0);
