@@ -56,23 +56,11 @@ static int by_scale(const void *a, const void *b)
  * points: collapsing any of them zeros every bracket, and the plane needs the exact form. */
 static unsigned char plane_zero(const slp_prog *p, const tp_domain *d, size_t a, size_t b)
 {
-    int e, c, i;
-    unsigned char z = 0;
+    unsigned z = (1u << tp_domain_edges(d)) - 1;
     size_t x;
-    for (e = 0; e < tp_domain_edges(d); e++) {
-        for (x = a; x < b; x++) {
-            for (c = 0, i = 0; i < 3; i++) {
-                int u, v;
-                tp_domain_point_ij(&u, &v, d, p->terms[x].point[i]);
-                c += tp_domain_on_edge(d, e, u, v) != 0;
-            }
-            if (c < 2)
-                break;
-        }
-        if (x == b)
-            z |= (unsigned char)(1u << e);
-    }
-    return z;
+    for (x = a; x < b; x++)
+        z &= tp_domain_term_edges(d, p->terms[x].point);
+    return (unsigned char)z;
 }
 
 /* Orders fused entries by group (which orders planes), point, then pair. */
