@@ -27,4 +27,5 @@ const kern_target kern_hlsl = {
     .unit_roundoff = 0x1p-24, /* round to nearest */
     .bits = "asuint(%s)",
     .vec2 = "float2", .vec2_make = "float2(%s, %s)",
+    .split_rounds = 1,
 };

@@ -98,6 +98,10 @@ struct kern_target {
     /* a fused multiply-add with one rounding, printf format of a, b, c for a * b + c (the second
      * look's exact two-product), or NULL: Dekker's product on Veltkamp's split instead */
     const char *fma;
+    /* 1: the second look tests each round's weight, so that every round is a basic block of its
+     * own: HLSL's SPIR-V legalization (glslang, DXC) inlines every call, in a time quadratic in
+     * the size of the block that receives the inlined code */
+    int split_rounds;
 };
 
 /* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */

@@ -816,7 +816,8 @@ static void put_again(sbuf *o, const kern_target *g, const char *up)
     sbuf_printf(o, "    %s\n", g->barrier);
 }
 
-/* The second look's accumulation: put_accumulate's rounds in double-float into acc and acc2. */
+/* The second look's accumulation: put_accumulate's rounds in double-float into acc and acc2;
+ * with split_rounds each round under a test of its weight (padding slots' is 0). */
 static void put_df_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
@@ -831,17 +832,22 @@ static void put_df_accumulate(sbuf *o, const out_info *info, const kern_target *
                 px, px, up, px, up, px);
     snprintf(x, sizeof x, g->vec2_make, "acc[at]", "acc2[at]");
     for (r = 0; r < info->sched->rounds; r++) {
+        const char *in = g->split_rounds ? "            " : "        ";
         snprintf(hi, sizeof hi, "%sw%d[t]", px, r);
         snprintf(lo, sizeof lo, "%swl%d[t]", px, r);
         snprintf(y, sizeof y, g->vec2_make, hi, lo);
         snprintf(w, sizeof w, "%spj%d[t]", px, r);
         snprintf(wl, sizeof wl, "%skl%d[t]", px, r);
-        sbuf_printf(o, "        pj = %s;\n        kl = %s;\n        at = q * %sL + (pj & 0xffffu);\n"
-                       "        s = %sdf_add(%s, %sdf_mul(%s, %sdf_%s(pts[q * %sK + (pj >> 16)],\n"
-                       "            pts[q * %sK + (kl & 0xffffu)], pts[q * %sK + (kl >> 16)]%s)));\n"
-                       "        acc[at] = s.x;\n        acc2[at] = s.y;\n",
-                    w, wl, up, px, x, px, y, px, fn, up, up, up,
-                    info->space == OUT_CLIP ? "" : ", eye");
+        if (g->split_rounds)
+            sbuf_printf(o, "        if (%s != 0.0f) {\n", hi);
+        sbuf_printf(o, "%spj = %s;\n%skl = %s;\n%sat = q * %sL + (pj & 0xffffu);\n"
+                       "%ss = %sdf_add(%s, %sdf_mul(%s, %sdf_%s(pts[q * %sK + (pj >> 16)],\n"
+                       "%s    pts[q * %sK + (kl & 0xffffu)], pts[q * %sK + (kl >> 16)]%s)));\n"
+                       "%sacc[at] = s.x;\n%sacc2[at] = s.y;\n",
+                    in, w, in, wl, in, up, in, px, x, px, y, px, fn, up, in, up, up,
+                    info->space == OUT_CLIP ? "" : ", eye", in, in);
+        if (g->split_rounds)
+            sbuf_puts(o, "        }\n");
     }
 }
 
