@@ -590,8 +590,8 @@ mutant_caught degenerate '(v < -t) | c0) == 0' "a certified degenerate C header 
 # Certified GPU kernels under the degenerate rule test the patch's edges too (their points'
 # bits) and count the planes along a collapsed one as exactly 0: like the C headers they keep the
 # degenerate rule's culls (kernels without the test gave up about a quarter) and stay safe on the
-# exact data (clip space on every target; world space on PoCL, lavapipe's GLSL and wgpu). WGSL,
-# with no second look, may give up 5% (a few float bounds that do not clear).
+# exact data (clip space on every target; world space on PoCL, lavapipe's GLSL and HLSL, and
+# wgpu). WGSL, with no second look, may give up 5% (a few float bounds that do not clear).
 # gpu_degenerate TARGET SPACE CMD...: the host CMD on exact data, and on random and teapot patches.
 gpu_degenerate() {
     local target=$1 space=$2 name="certified degenerate $1 3x3 $2" out
@@ -615,7 +615,6 @@ for space in clip world; do
         --kernel ptp_3x3_classify --block-threads $PQ --patches-per-block $Q
     for lang in glsl hlsl; do
         [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ] || continue
-        [ $lang = hlsl ] && [ $space = world ] && continue # glslang takes minutes on it
         if to_spirv $lang "$dir/ptp_3x3"; then
             gpu_degenerate $lang $space "$B/host_vulkan" "$tmp/k.spv" --block-threads $PQ \
                 --patches-per-block $Q $extra
