@@ -290,7 +290,7 @@ cullrate: $(CR)/cullrate
 	@$(MAKE) -s cullrate-gpu
 
 # `make cullrate-gpu`: the certified GPU kernels' culls on BigGuy as the GPU targets compute them
-# (GLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native; bench/gpu_cullrate.sh), at
+# (GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native; bench/gpu_cullrate.sh), at
 # CULLRATE_GPU_EYES eyes per radius. A target whose host cannot be built is skipped.
 CULLRATE_GPU_EYES ?= 2
 

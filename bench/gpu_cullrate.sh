@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # gpu_cullrate.sh: what the certified GPU kernels cull on BigGuy as the GPU targets compute them
-# (GLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native), against the plain kernels of the same rule.
+# (GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native), against the plain kernels of the
+# same rule.
 #   bash bench/gpu_cullrate.sh BUILD [NEYES]   (BUILD holds ptpgen and the hosts; default 2 eyes
 #   per radius and space; MODELS names the models' folder). `make cullrate-gpu` runs it.
 # Columns: the patches plain and certified call back and front (b/f); the back or front classes
@@ -15,8 +16,8 @@ B=$1 neyes=${2:-2}
 [ -e "$models/bigguy.bez" ] || { echo "# skip: no $models/bigguy.bez"; exit 0; }
 
 targets=""
-if command -v glslangValidator >/dev/null && [ -x "$B/host_vulkan" ]; then targets="$targets glsl"
-else echo "# skip glsl: needs glslangValidator and $B/host_vulkan"; fi
+if command -v glslangValidator >/dev/null && [ -x "$B/host_vulkan" ]; then targets="$targets glsl hlsl"
+else echo "# skip glsl and hlsl: need glslangValidator and $B/host_vulkan"; fi
 if [ -x "$B/host_opencl" ]; then targets="$targets opencl"; else echo "# skip opencl: no $B/host_opencl"; fi
 if [ -x "$B/host_wgpu" ]; then targets="$targets wgsl"; else echo "# skip wgsl: no $B/host_wgpu"; fi
 
@@ -30,6 +31,8 @@ kernel() {
     case $1 in
     glsl) glslangValidator -S comp -V "$f.glsl" -o "$f.spv" >"$f.err" || { head -3 "$f.err" >&2; return; }
           echo "$B/host_vulkan $f.spv" ;;
+    hlsl) glslangValidator -D -S comp -e main -V "$f.hlsl" -o "$f.spv" >"$f.err" || { head -3 "$f.err" >&2; return; }
+          echo "$B/host_vulkan $f.spv --groups-x-constant" ;;
     opencl) echo "$B/host_opencl $f.opencl --kernel gc_classify" ;;
     wgsl) echo "$B/host_wgpu $f.wgsl" ;;
     esac
