@@ -1,5 +1,5 @@
 /* test_kern.c: checks that the GPU emitter writes every construct of the C family through its
- * syntax hooks (a WGSL kernel keeps none of C's), and the GPU kernels' exact-zero edge masks. */
+ * syntax hooks (a WGSL kernel keeps none of C's), the exact-zero edge masks and split rounds. */
 #include "check.h"
 #include "emit/targets.h"
 #include "plan/sched.h"
@@ -90,6 +90,48 @@ static void check_zeros(const tp_table *t, const sched *s)
         }
 }
 
+/* The number of tests of a round's weight in s ("if (ptp_w<r>[t] != 0.0f) {"), when they are
+ * those of rounds 0, 1, ... in order; else -1. */
+static int round_tests(const char *s, int rounds)
+{
+    int n = 0, all = 0;
+    const char *p;
+    char head[64];
+    for (p = s; (p = strstr(p, "[t] != 0.0f) {")); p++)
+        all++;
+    for (p = s; n < rounds; n++) {
+        snprintf(head, sizeof head, "if (ptp_w%d[t] != 0.0f) {", n);
+        if (!(p = strstr(p, head)))
+            break;
+    }
+    return n == all ? n : -1;
+}
+
+/* The certified kernels of the targets with split_rounds (HLSL) put each round of the second look
+ * under a test of its weight, a basic block of its own (a legalizer inlines every call, in a time
+ * quadratic in a block's size); the others keep the rounds in one block. */
+static void check_split_rounds(const tp_table *t, const sched *s)
+{
+    int i, c;
+    for (i = 0; i < tgt_count; i++)
+        for (c = 0; c < 2 && tgt_targets[i].gpu && tgt_targets[i].gpu->vec2; c++) {
+            const kern_target *g = tgt_targets[i].gpu;
+            out_info info = {"test", "ptp_", s, c ? OUT_WORLD : OUT_CLIP, c ? OUT_DEGENERATE : OUT_STRICT, 0, 1, 0,
+                             NULL};
+            ptp_error err = {0};
+            char name[160], deg[32];
+            int st, n, want = g->split_rounds ? s->rounds : 0;
+            sbuf o;
+            sbuf_init(&o);
+            st = tgt_emit_target(&o, &tgt_targets[i], t, &info, &err);
+            n = st ? -2 : round_tests(o.s, s->rounds);
+            sbuf_clear(&o);
+            snprintf(name, sizeof name, "%s %s %s certified: %d of %d second-look rounds under a test of their weight",
+                     g->name, tp_domain_format(deg, sizeof deg, &t->dom), c ? "world" : "clip", want, s->rounds);
+            check(n == want, name, "%d, %s", n, err.msg);
+        }
+}
+
 int main(void)
 {
     static const int degrees[][2] = {{1, 1}, {2, 3}, {3, 3}};
@@ -122,6 +164,7 @@ int main(void)
             sbuf_clear(&o);
         }
         check_zeros(&t, &s);
+        check_split_rounds(&t, &s);
         sched_clear(&s);
         tp_clear(&t);
     }
