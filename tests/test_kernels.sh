@@ -662,3 +662,18 @@ ocl_mutant_caught "$tmp/cert/clip-degenerate" degenerate \
 # second look, against the right bound, still runs where the mutated bound does not decide.
 ocl_mutant_caught "$tmp/cert/clip-certified" strict 's/tau_k\[plane\] \* M + /tau_k[plane] * M * 0x1p-6f + /' \
     'M \* 0x1p-6f' "a certified OpenCL kernel with its float bounds 2^6 times too small"
+# The certified WGSL kernel's terms read differences of points, whose float errors on the exact
+# data are far below its bound (none unsafe at 2^-10 of it): a kernel whose bounds are 2^12 times
+# too small is caught (about 290 unsafe of 200,000).
+if [ -x "$B/host_wgpu" ]; then
+    sed 's/_tau_k\[plane\] \* M + /_tau_k[plane] * M * 0x1p-12f + /' "$tmp/cert/clip-certified/ptp_3x3.wgsl" >"$tmp/m.wgsl"
+    if grep -q 'M \* 0x1p-12f' "$tmp/m.wgsl" && ! "$B/host_wgpu" "$tmp/m.wgsl" \
+        $(schedule "$tmp/cert/clip-certified/ptp_3x3.json" | sed 's/^/--block-threads /; s/ / --patches-per-block /2') \
+        --degree 3 3 --space clip --rule strict --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
+        grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
+        ok "a certified WGSL kernel with its float bounds 2^12 times too small is caught unsafe on exact data"
+    else
+        notok "a certified WGSL kernel with its float bounds 2^12 times too small is caught unsafe" \
+            "it passed, or its mutation was not found"
+    fi
+fi
