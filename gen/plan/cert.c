@@ -22,19 +22,8 @@ static float float_up(double x)
 
 /* Fills b from per-plane depth d (the most roundings on a path), depth-weighted mass D (the sum
  * over monomials of its roundings times |weight|, m monomials a term), weight sum S and
- * rounded-product count n (arrays of L), for float operations of relative error at most u. */
-static void fill_widened(cert_bounds *b, const double *d, const double *D, const double *S,
-                         const double *n, int world, double eta, double u, double widen);
-
-static void fill(cert_bounds *b, const double *d, const double *D, const double *S, const double *n,
-                 int world, double eta, double u)
-{
-    /* (1 - u)^-10 for the float evaluation of the bound (1.0000006 for u = 2^-24), 1 + 2^-40 for
-     * this double arithmetic */
-    fill_widened(b, d, D, S, n, world, eta, u, (1 + 0.0000006 * (u * 0x1p24)) * (1 + 0x1p-40));
-}
-
-/* fill with the factor widen >= 1 on K and K2 for the float evaluation of the bound. */
+ * rounded-product count n (arrays of L), for float operations of relative error at most u,
+ * with K and K2 widened by widen >= 1 for the float evaluation of the bound. */
 static void fill_widened(cert_bounds *b, const double *d, const double *D, const double *S,
                          const double *n, int world, double eta, double u, double widen)
 {
@@ -60,6 +49,14 @@ static void fill_widened(cert_bounds *b, const double *d, const double *D, const
     /* Every intermediate is at most max(E, 1) R^3 m S (1 + gamma): certifying only patches with
      * max(E, 1) R^3 < 2^120 / max(m S) keeps all of them below FLT_MAX. */
     b->q_max = (float)(0x1p120 / (smax + 1));
+}
+
+/* fill_widened for a bound evaluated in at most ten roundings: (1 - u)^-10 (1.0000006 for
+ * u = 2^-24), and 1 + 2^-40 for this double arithmetic. */
+static void fill(cert_bounds *b, const double *d, const double *D, const double *S, const double *n,
+                 int world, double eta, double u)
+{
+    fill_widened(b, d, D, S, n, world, eta, u, (1 + 0.0000006 * (u * 0x1p24)) * (1 + 0x1p-40));
 }
 
 static int alloc(cert_bounds *b, int nplanes, int with64, double **d, double **D, double **S,
@@ -159,9 +156,9 @@ int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differe
             first = i + 1;
         }
     }
-    /* GPUs may flush subnormals to zero. With differences: (1 - u)^-12 for M's evaluation (its
-     * extents D = H + L included) and the bound's, and ((1 + u) / (1 - u))^2 for the computed
-     * differences, at most (1 + u) |exact| <= (1 + u) D / (1 - u) each. */
+    /* GPUs may flush subnormals to zero. With differences, M from the extents takes more
+     * roundings: 1 + 20 u >= (1 - u)^-19 covers M's float evaluation (the extents H + L
+     * included, in any association) and the bound's. */
     if (differences) {
         fill_widened(b, d, D, S, n, world, 0x1p-126, u, (1 + 20 * u) * (1 + 0x1p-40));
         b->q_max /= 4; /* a difference is at most 2 R */
