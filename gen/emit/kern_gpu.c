@@ -254,6 +254,12 @@ static int exact_zeros(const out_info *info)
     return info->certified && info->rule == OUT_DEGENERATE;
 }
 
+/* Whether the terms read differences of points (the target's sub_fenced, --certified). */
+static int differences(const out_info *info, const kern_target *g)
+{
+    return info->certified && g->sub_fenced;
+}
+
 /* With exact zeros, the table zero: per plane the boundary edges (bit e) on which every term has
  * two points, so that collapsing any of them makes the plane exactly 0. */
 static int put_zero_table(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
@@ -283,7 +289,7 @@ static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, con
                            const char *up, ptp_error *err)
 {
     cert_bounds cb;
-    int st = cert_gpu(&cb, t, info->space == OUT_WORLD, g->unit_roundoff, err);
+    int st = cert_gpu(&cb, t, info->space == OUT_WORLD, g->unit_roundoff, differences(info, g), err);
     if (st)
         return st;
     put_bounds(o, info, g, up, &cb, "",
@@ -626,10 +632,12 @@ static void put_load(sbuf *o, const kern_target *g, const char *up)
     sbuf_printf(o, "    %s\n\n", g->barrier);
 }
 
-/* The accumulation of the planes this thread owns, one round at a time. */
+/* The accumulation of the planes this thread owns, one round at a time; with differences, term
+ * (j, k, l) reads b_j, b_k - b_j, b_l - b_j (the same determinant). */
 static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
+    char a[128], b[320], c[320], x[320]; /* up has at most 63 bytes */
     int r;
     sbuf_printf(o,
                 "    /* Accumulate the planes this thread owns, one round at a time: no other thread\n"
@@ -639,14 +647,23 @@ static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, 
     put_then(o, g);
     sbuf_printf(o, "        acc[q * %sL + %sown_plane[i]] = 0.0f;\n", up, px);
     put_end(o, g, "    ");
+    snprintf(a, sizeof a, "pts[q * %sK + (pj >> 16)]", up);
+    snprintf(b, sizeof b, "pts[q * %sK + (kl & 0xffffu)]", up);
+    snprintf(c, sizeof c, "pts[q * %sK + (kl >> 16)]", up);
+    if (differences(info, g)) { /* b_k - b_j and b_l - b_j */
+        snprintf(x, sizeof x, g->sub_fenced, b, a);
+        snprintf(b, sizeof b, "%s", x);
+        snprintf(x, sizeof x, g->sub_fenced, c, a);
+        snprintf(c, sizeof c, "%s", x);
+    }
     for (r = 0; r < info->sched->rounds; r++) {
         sbuf_printf(o, "    pj = %spj%d[t];\n    kl = %skl%d[t];\n"
                        "    acc[q * %sL + (pj & 0xffffu)] += %sw%d[t] *\n",
                     px, r, px, r, up, px, r);
-        sbuf_printf(o, "        %s%s(pts[q * %sK + (pj >> 16)], pts[q * %sK + (kl & 0xffffu)],\n"
-                       "        %*s pts[q * %sK + (kl >> 16)]%s);\n",
-                    px, fn, up, up, (int)(strlen(px) + strlen(fn)), "", up,
-                    info->space == OUT_CLIP ? "" : ", eye");
+        int w = (int)(strlen(px) + strlen(fn));
+        sbuf_printf(o, "        %s%s(%s,%s%*s %s,\n        %*s %s%s);\n", px, fn, a,
+                    differences(info, g) ? "\n        " : "", differences(info, g) ? w : 0, "", b, w,
+                    "", c, info->space == OUT_CLIP ? "" : ", eye");
     }
     sbuf_puts(o, "\n");
 }
@@ -689,18 +706,64 @@ static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, con
     }
 }
 
-/* Into e (256 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
+/* Into e (size bytes) the largest |monomial| of one coordinate and two differences over the
+ * coordinates u: (Ru0 Du1 Du2 + Du0 Ru1 Du2 + Du0 Du1 Ru2), D the extents. Returns its length. */
+static size_t put_diff_monomial(char *e, size_t size, const char *u)
+{
+    return (size_t)snprintf(e, size, "(R%c * D%c * D%c + D%c * R%c * D%c + D%c * D%c * R%c)", u[0], u[1],
+                            u[2], u[0], u[1], u[2], u[0], u[1], u[2]);
+}
+
+/* Into e (512 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
  * largest |monomial| (clip space); in world space the sum over the eye's components of the
- * largest |monomial| with that component (README: Certified). */
+ * largest |monomial| with that component (README: Certified). With differences, a monomial has
+ * one coordinate and two differences instead (put_diff_monomial). */
 static void put_monomial_max(char *e, const out_info *info, const kern_target *g)
 {
+    static const char *const other[4] = {"yzw", "xzw", "xyw", "xyz"};
     const char *ab = g->fabs;
-    if (info->space == OUT_CLIP)
-        snprintf(e, 256, "E * (Rx * Ry * Rw)");
-    else
-        snprintf(e, 256, "(%s(eye.x) * Ry + %s(eye.y) * Rx) * (Rz * Rw) +\n"
+    size_t n = 0;
+    int c;
+    if (!differences(info, g) && info->space == OUT_CLIP)
+        snprintf(e, 512, "E * (Rx * Ry * Rw)");
+    else if (!differences(info, g))
+        snprintf(e, 512, "(%s(eye.x) * Ry + %s(eye.y) * Rx) * (Rz * Rw) +\n"
                          "        (%s(eye.z) * Rw + %s(eye.w) * Rz) * (Rx * Ry)",
                  ab, ab, ab, ab);
+    else if (info->space == OUT_CLIP)
+        put_diff_monomial(e + snprintf(e, 512, "E * "), 508, "xyw");
+    else
+        for (c = 0; c < 4; c++) {
+            n += (size_t)snprintf(e + n, 512 - n, "%s%s(eye.%c) * ", c ? " +\n        " : "", ab, "xyzw"[c]);
+            n += put_diff_monomial(e + n, 512 - n, other[c]);
+        }
+}
+
+/* With differences, the patch's extents over the coordinates c (n of them): step 0 declares
+ * Hc = max b.c and Lc = max -b.c from the first point, step 1 (in the loop over the points a)
+ * updates them, step 2 declares the extents Dc = Hc + Lc (README: The WGSL target). */
+static void put_extents(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                        const char *c, int n, int step)
+{
+    char name[2][4], init[2][96];
+    int k;
+    for (k = 0; differences(info, g) && k < n; k++) {
+        snprintf(name[0], sizeof name[0], "H%c", c[k]);
+        snprintf(name[1], sizeof name[1], "L%c", c[k]);
+        snprintf(init[0], sizeof init[0], "pts[q * %sK].%c", up, c[k]);
+        snprintf(init[1], sizeof init[1], "-pts[q * %sK].%c", up, c[k]);
+        if (step == 0)
+            g->syntax->locals(o, g, "    ", g->real,
+                              (kern_var[2]){{name[0], init[0], 1}, {name[1], init[1], 1}}, 2, 0);
+        else if (step == 1)
+            sbuf_printf(o, "        H%c = %s(H%c, a.%c);\n        L%c = %s(L%c, -a.%c);\n", c[k], g->fmax,
+                        c[k], c[k], c[k], g->fmax, c[k], c[k]);
+        else {
+            snprintf(name[0], sizeof name[0], "D%c", c[k]);
+            snprintf(init[0], sizeof init[0], "H%c + L%c", c[k], c[k]);
+            put_local(o, g, g->real, name[0], init[0], 0);
+        }
+    }
 }
 
 /* --certified: the patch's largest |coordinates| Rx, Ry, (Rz,) Rw, R the largest of them, E the
@@ -711,7 +774,7 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
                       const char *up)
 {
     const char *ab = g->fabs, *mx = g->fmax, *f = g->real, *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
-    char e[256], rc[4][4];
+    char e[512], rc[4][4];
     kern_var r[4], r3 = {"R3", "R * R * R", 0};
     int k, n = (int)strlen(c);
     sbuf_puts(o, "    /* Certified: the patch's largest |coordinates| and the eye's bound the errors. */\n");
@@ -720,6 +783,7 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
         r[k] = (kern_var){rc[k], "0.0f", 1};
     }
     g->syntax->locals(o, g, "    ", f, r, n, 0);
+    put_extents(o, info, g, up, c, n, 0);
     if (exact_zeros(info))
         put_local(o, g, "bool", "fin", "true", 1);
     sbuf_printf(o, "    for (i = 0u; i < %sK; i++) {\n", up);
@@ -727,6 +791,7 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
     g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"a", e, 0}, 1, 0);
     for (k = 0; k < n; k++)
         sbuf_printf(o, "        R%c = %s(R%c, %s(a.%c));\n", c[k], mx, c[k], ab, c[k]);
+    put_extents(o, info, g, up, c, n, 1);
     if (exact_zeros(info))
         sbuf_printf(o, "        fin = fin && %sfinite(a);\n", info->prefix);
     sbuf_puts(o, "    }\n");
@@ -742,6 +807,7 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
     }
     put_local(o, g, f, "E", e, 0);
     g->syntax->locals(o, g, "    ", f, &r3, 1, 0);
+    put_extents(o, info, g, up, c, n, 2);
     put_monomial_max(e, info, g);
     put_local(o, g, f, "M", e, 0);
     put_local(o, g, f, "F", "(1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E)", 0);

@@ -22,14 +22,12 @@ static float float_up(double x)
 
 /* Fills b from per-plane depth d (the most roundings on a path), depth-weighted mass D (the sum
  * over monomials of its roundings times |weight|, m monomials a term), weight sum S and
- * rounded-product count n (arrays of L), for float operations of relative error at most u. */
-static void fill(cert_bounds *b, const double *d, const double *D, const double *S, const double *n,
-                 int world, double eta, double u)
+ * rounded-product count n (arrays of L), for float operations of relative error at most u,
+ * with K and K2 widened by widen >= 1 for the float evaluation of the bound. */
+static void fill_widened(cert_bounds *b, const double *d, const double *D, const double *S,
+                         const double *n, int world, double eta, double u, double widen)
 {
     const double m = world ? 24 : 6;
-    /* (1 - u)^-10 for the float evaluation of the bound (1.0000006 for u = 2^-24), 1 + 2^-40 for
-     * this double arithmetic */
-    const double widen = (1 + 0.0000006 * (u * 0x1p24)) * (1 + 0x1p-40);
     double smax = 0;
     int i;
     for (i = 0; i < b->nplanes; i++) {
@@ -51,6 +49,14 @@ static void fill(cert_bounds *b, const double *d, const double *D, const double 
     /* Every intermediate is at most max(E, 1) R^3 m S (1 + gamma): certifying only patches with
      * max(E, 1) R^3 < 2^120 / max(m S) keeps all of them below FLT_MAX. */
     b->q_max = (float)(0x1p120 / (smax + 1));
+}
+
+/* fill_widened for a bound evaluated in at most ten roundings: (1 - u)^-10 (1.0000006 for
+ * u = 2^-24), and 1 + 2^-40 for this double arithmetic. */
+static void fill(cert_bounds *b, const double *d, const double *D, const double *S, const double *n,
+                 int world, double eta, double u)
+{
+    fill_widened(b, d, D, S, n, world, eta, u, (1 + 0.0000006 * (u * 0x1p24)) * (1 + 0x1p-40));
 }
 
 static int alloc(cert_bounds *b, int nplanes, int with64, double **d, double **D, double **S,
@@ -123,12 +129,13 @@ static void gpu_sums(double *d, double *D, double *a, size_t n, double own, doub
         *D += (own + m * (double)(n - (k > 0 ? k : 1))) * a[k] * (1 + 0x1p-50);
 }
 
-int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, ptp_error *err)
+int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differences, ptp_error *err)
 {
     /* A term's monomials (of one eye component in world space, where the kernel's M sums the
      * components' bounds) and their own roundings (README: Certified): clip space 6, 46 in all,
-     * at most 8; world space 6, 64, at most 11. */
-    const double own = world ? 64 : 46, own_max = world ? 11 : 8, m = 6;
+     * at most 8; world space 6, 64, at most 11; with differences 2 more on every monomial. */
+    const double m = 6, own = (world ? 64 : 46) + (differences ? 2 * m : 0),
+                 own_max = (world ? 11 : 8) + (differences ? 2 : 0);
     double *d, *D, *S, *n, *a = malloc((t->nterms + 1) * sizeof *a);
     int st = a ? alloc(b, t->dom.nplanes, 0, &d, &D, &S, &n, err)
                : ptp_fail(err, PTP_ENOMEM, "out of memory computing the certified bounds");
@@ -137,7 +144,9 @@ int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, ptp_error *
         free(a);
         return st;
     }
-    table_sums(d, S, n, t, world ? 44 : 12);
+    /* With differences: 8 more products that may underflow, at up to 4 times the scale (a
+     * difference is at most 2 R), and their flush to zero */
+    table_sums(d, S, n, t, (world ? 44 : 12) * (differences ? 8 : 1));
     for (i = 0; i < t->nterms; i++) {
         double w = rat_get_d(&t->terms[i].w);
         a[i] = w < 0 ? -w : w;
@@ -147,7 +156,15 @@ int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, ptp_error *
             first = i + 1;
         }
     }
-    fill(b, d, D, S, n, world, 0x1p-126, u); /* GPUs may flush subnormals to zero */
+    /* GPUs may flush subnormals to zero. With differences, M from the extents takes more
+     * roundings: 1 + 20 u >= (1 - u)^-19 covers M's float evaluation (the extents H + L
+     * included, in any association) and the bound's. */
+    if (differences) {
+        fill_widened(b, d, D, S, n, world, 0x1p-126, u, (1 + 20 * u) * (1 + 0x1p-40));
+        b->q_max /= 4; /* a difference is at most 2 R */
+    } else {
+        fill(b, d, D, S, n, world, 0x1p-126, u);
+    }
     free(d);
     free(a);
     return PTP_OK;

@@ -26,9 +26,11 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
 /* The bounds of the GPU kernels' float pass for float operations of relative error at most u:
  * each monomial at its own depth, a term's own roundings and its plane's sum in any order and
  * association, for M the largest |monomial| (clip space) or the sum over the eye's components of
- * the largest |monomial| with that component (world space) (README: Certified). k64 and k2_64
- * stay NULL. */
-int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, ptp_error *err);
+ * the largest |monomial| with that component (world space) (README: Certified). With
+ * differences, the terms read b_j, b_k - b_j, b_l - b_j, the differences computed in float (two
+ * more roundings a monomial), and M from the largest coordinates and the extents (README: The
+ * WGSL target). k64 and k2_64 stay NULL. */
+int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differences, ptp_error *err);
 /* The bounds of the GPU kernels' second look: the table loop again in double-float arithmetic
  * (hi + lo floats from error-free transformations, + - * only), each double-float operation with
  * relative error at most 2^-44, eta = 2^-126 per float operation, and q_max low enough that the

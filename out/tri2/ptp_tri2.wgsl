@@ -39,6 +39,11 @@ fn mul_rn(x: f32, y: f32) -> f32 {
     return bitcast<f32>(bitcast<u32>(x * y) ^ params.zero);
 }
 
+/* b - a rounded to floats, through the same XOR: no reassociation or contraction crosses it. */
+fn sub_rn(b: vec4<f32>, a: vec4<f32>) -> vec4<f32> {
+    return bitcast<vec4<f32>>(bitcast<vec4<u32>>(b - a) ^ vec4<u32>(params.zero));
+}
+
 const PTP_TRI2_P: u32 = 1u; /* threads per patch */
 const PTP_TRI2_Q: u32 = 128u; /* patches per workgroup */
 const PTP_TRI2_K: u32 = 6u; /* control points per patch */

@@ -15,6 +15,11 @@ fn mul_rn(x: f32, y: f32) -> f32 {
     return bitcast<f32>(bitcast<u32>(x * y) ^ params.zero);
 }
 
+/* b - a rounded to floats, through the same XOR: no reassociation or contraction crosses it. */
+fn sub_rn(b: vec4<f32>, a: vec4<f32>) -> vec4<f32> {
+    return bitcast<vec4<f32>>(bitcast<vec4<u32>>(b - a) ^ vec4<u32>(params.zero));
+}
+
 {{TABLES}}{{SHARED}}
 {{FUNCTIONS}}@compute @workgroup_size({{BLOCK_THREADS}})
 fn main(@builtin(local_invocation_id) lid3: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>,
