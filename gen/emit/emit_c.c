@@ -140,8 +140,8 @@ static void put_doubled(sbuf *o, int a)
 }
 
 /* Appends v's update with the group's sum u at scale s: assigned for the plane's first group.
- * s on the adders (slp_scale_of): u's doublings and all factors but the last into u, the last
- * into v; else a product, or a multiply-add into v. */
+ * s on the adders (slp_scale_of): 2^k u as one sum of doublings; else u's doublings and all
+ * factors but the last into u, the last into v. Any other s: a product, or a multiply-add. */
 static void put_group_end(sbuf *o, const rat *s, int first_group, const char *up)
 {
     char sv[RAT_STRLEN];
@@ -153,7 +153,11 @@ static void put_group_end(sbuf *o, const rat *s, int first_group, const char *up
     rat_get_str(sv, s);
     if (rat_equal(s, &one))
         sbuf_printf(o, "        v %s u;\n", to);
-    else if (slp_scale_of(&c, s)) {
+    else if (slp_scale_of(&c, s) && c.nf == 0) {
+        sbuf_printf(o, "        v %s ", to);
+        put_doubled(o, c.shift);
+        sbuf_puts(o, ";\n");
+    } else if (slp_scale_of(&c, s)) {
         for (i = 0; i < c.shift; i++)
             sbuf_puts(o, "        u = u + u;\n");
         for (i = 0; i < c.nf; i++) {
@@ -161,8 +165,6 @@ static void put_group_end(sbuf *o, const rat *s, int first_group, const char *up
             put_doubled(o, c.a[i]);
             sbuf_puts(o, c.sign[i] > 0 ? " + u;\n" : " - u;\n");
         }
-        if (c.nf == 0)
-            sbuf_printf(o, "        v %s u;\n", to);
     } else if (first_group)
         sbuf_printf(o, "        v = %s.0f * u;\n", sv);
     else
