@@ -57,9 +57,10 @@ typedef struct {
     int shift, nf, adds;
     int a[2], sign[2];
 } slp_scale;
-/* The most adds that replace one product by s (slp_scale_of): the scales 2 to 10, 12 and 16. Longer chains load the add pipes (which clip space's batch path shares with its
- * transposes' shuffles) past the multiply pipes and lengthen the planes' chains; 4 was the
- * fastest of 3 to 8 for bicubic patches on Zen 4 (bench/README: Scales on the adders). */
+/* The most adds that replace one product by s (slp_scale_of): the scales 2 to 10, 12 and 16.
+ * Longer chains load the add pipes (which the batch path's transposes also use) past the multiply
+ * pipes and lengthen the planes' chains; 4 was the fastest of 3 to 8 for bicubic classify_batch
+ * on Zen 4 (bench/README: Scales on the adders). */
 #define SLP_SCALE_ADDS 4
 /* 1 and the cheapest chain into c (fewest adds, then fewest roundings) when s > 1 is an integer
  * with a chain of at most SLP_SCALE_ADDS adds and 2 factors; else 0 (s = 1 needs no operation,
