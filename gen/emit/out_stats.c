@@ -46,7 +46,7 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
 }
 
 /* The C header's straight-line program: its exact and fused planes, and the operations per
- * patch in clip and world space, all of them and those on the multiply pipes. */
+ * patch in clip and world space: all of them, those on the multiply pipes and those on the adders. */
 static int put_slp(sbuf *o, const tp_table *t, ptp_error *err)
 {
     slp_prog p;
