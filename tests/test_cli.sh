@@ -268,6 +268,40 @@ fi
 "$P" --degree 2x4 --target stats | grep -q 'planes of bidegree 4x10' && ok "stats 2x4 names the plane bidegree 4x10" ||
     notok "stats 2x4" "plane bidegree missing"
 
+# The operation counts of stats and of the header's MULS and FLOPS are those of the straight-line
+# code as emitted: products " * ", multiply-adds VFMA(S), sums " + ", " - ", "+=", "-=" in the
+# lanes body (loads, value stores and masks aside), in clip and world space; a doubling's repeats
+# in a statement, ((u + u) + (u + u)), are one sum each (the compiler shares them).
+count_ops() { # HEADER -> "muls flops adds"
+    awk '/_vload\(q/ && !f {f = 1} /\/\* Strict:/ {f = 0}
+         f && !/if \(d\)|vstoref\(|notlt|notgt/ {
+             gsub(/_vload\([^)]*\)/, "L"); line = $0
+             for (k = 1; k <= 6; k++)
+                 if (gsub("\\(" (k > 1 ? "D" k - 1 : "u") " \\+ " (k > 1 ? "D" k - 1 : "u") "\\)", "D" k, line))
+                     a++
+             p += gsub(/ \* /, "", line); m += gsub(/VFMAS?\(/, "", line)
+             a += gsub(/ \+ | - |\+=|-=/, "", line)
+         } END {print p + m, p + 2 * m + a, a}' "$1"
+}
+for args in "--degree 3" "--domain triangle --degree 3" "--degree 2x3 --space world"; do
+    stats=${args% --space world}
+    sp=clip
+    case $args in *world*) sp=world ;; esac
+    # shellcheck disable=SC2086
+    "$P" $args --target c -o "$tmp/ops.h" && "$P" $stats --target stats >"$tmp/ops.txt"
+    got=$(count_ops "$tmp/ops.h")
+    line=$(grep '^C straight-line code' "$tmp/ops.txt")
+    if [ $sp = clip ]; then
+        want=$(echo "$line" | sed -E 's/.*per patch ([0-9]+) flops, ([0-9]+) on the multiply pipes, ([0-9]+) on the add.*/\2 \1 \3/')
+    else
+        want=$(echo "$line" | sed -E 's/.*\), ([0-9]+), ([0-9]+) and ([0-9]+) \(world.*/\2 \1 \3/')
+    fi
+    hdr="$(grep -E '#define [A-Z0-9_]+_MULS ' "$tmp/ops.h" | awk '{print $3}') $(grep -E '#define [A-Z0-9_]+_FLOPS ' "$tmp/ops.h" | awk '{print $3}')"
+    [ "$got" = "$want" ] && [ "$hdr" = "${want% *}" ] &&
+        ok "$args: stats and MULS/FLOPS count the emitted code's operations ($got: multiply pipes, flops, add pipes)" ||
+        notok "$args: operation counts" "emitted $got, stats $want, header $hdr"
+done
+
 # --refine and --certified: where they apply, and --refine's range.
 expect_fail "--refine 7 names the limit" 2 "largest allowed is 6" --degree 3 --target c --refine 7
 expect_fail "--refine x is a usage error" 2 "expected a whole number" --degree 3 --target c --refine x

@@ -1,9 +1,10 @@
 /* test_slp_order.c: checks slp_order's plane orders (each plane with terms exactly once, number
- * order with a window of one, a reordering with the C target's settings) and slp_doublings. */
+ * order with a window of one, a reordering with the C target's settings) and slp_scale_of. */
 #include "check.h"
 #include "core/tplane.h"
 #include "plan/slp_order.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 /* Nonzero when order[0 .. n) holds every plane of p with terms exactly once. */
@@ -63,24 +64,70 @@ static void check_domain(tp_kind kind, int n)
     tp_clear(&t);
 }
 
-/* slp_doublings: k for the scales 2, 4 and 8 only. */
-static void check_doublings(void)
+/* s u by chain c in float, as emitted: doublings, then per factor 2^a x +- x. */
+static float run_chain(const slp_scale *c, float u)
 {
-    static const long num[7] = {1, 2, 3, 4, 8, 16, 1}, den[7] = {1, 1, 1, 1, 1, 1, 2};
-    static const int want[7] = {0, 1, 0, 2, 3, 0, 0};
-    int i, ok = 1;
-    for (i = 0; i < 7; i++) {
-        rat s;
-        ok = ok && rat_set_frac(&s, num[i], den[i]) == PTP_OK && slp_doublings(&s) == want[i];
+    float x = u;
+    int i, k;
+    for (k = 0; k < c->shift; k++)
+        x = x + x;
+    for (i = 0; i < c->nf; i++) {
+        float t = x;
+        for (k = 0; k < c->a[i]; k++)
+            t = t + t;
+        x = c->sign[i] > 0 ? t + x : t - x;
     }
-    check(ok, "slp_doublings: 2, 4 and 8 are 1, 2 and 3 doublings; 1, 3, 16 and 1/2 none",
-          "case %d", i);
+    return x;
+}
+
+/* Nonzero when chain c of s computes s (2^shift times its factors) in c->adds adds, at most
+ * SLP_SCALE_ADDS, and in float rounds as its nf roundings allow: exactly s u for nf = 0, the
+ * correctly rounded s u for nf = 1, within 2 roundings for nf = 2, on a sweep of u (s u is exact
+ * in double). */
+static int chain_ok(const slp_scale *c, long s)
+{
+    long f = 1L << c->shift;
+    int i, adds = c->shift;
+    float u = -1.0f;
+    for (i = 0; i < c->nf; i++) {
+        f *= (1L << c->a[i]) + c->sign[i];
+        adds += c->a[i] + 1;
+    }
+    if (f != s || adds != c->adds || adds > SLP_SCALE_ADDS || c->nf > 2)
+        return 0;
+    for (i = 0; i < 4096; i++, u = u * 1.0009765625f + 0x1p-13f) {
+        double exact = (double)s * u, got = run_chain(c, u);
+        if (c->nf <= 1 ? got != (double)(float)exact : fabs(got - exact) > 0x1p-23 * fabs(exact))
+            return 0;
+    }
+    return 1;
+}
+
+/* slp_scale_of: the scales 2 to 10, 12 and 16 on the adders (at most SLP_SCALE_ADDS = 4 adds),
+ * with the fewest adds and roundings: 3 = 2 + 1 (2 adds, 1 rounding), 9 = 8 + 1 (not 3 3), 7 =
+ * 8 - 1, 12 = 4 (2 + 1); no other scale (1 needs nothing, 1/2 is no integer). */
+static void check_scales(void)
+{
+    static const long num[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 27, 1};
+    static const long den[] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 2};
+    static const int adds[] = {0, 1, 2, 2, 3, 3, 4, 3, 4, 4, 0, 4, 0, 0, 0, 4, 0, 0, 0, 0};
+    static const int nf[] = {0, 0, 1, 0, 1, 1, 1, 0, 1, 1, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0};
+    int i, ok = SLP_SCALE_ADDS == 4;
+    for (i = 0; ok && i < (int)(sizeof num / sizeof *num); i++) {
+        rat s;
+        slp_scale c;
+        int has = rat_set_frac(&s, num[i], den[i]) == PTP_OK && slp_scale_of(&c, &s);
+        ok = has == (adds[i] > 0) && (!has || (c.adds == adds[i] && c.nf == nf[i] && chain_ok(&c, num[i])));
+    }
+    check(ok, "slp_scale_of: 2 to 10, 12 and 16 as doublings and one rounded add (9 = 8 + 1, 12 = 4 (2 + 1)), "
+              "correctly rounded in float; 1, 11, 13 to 15, 17, 18, 27 and 1/2 not",
+          "case %d", i - 1);
 }
 
 int main(void)
 {
     int n;
-    check_doublings();
+    check_scales();
     for (n = 1; n <= 4; n++) {
         check_domain(TP_QUAD, n);
         check_domain(TP_TRI, n);

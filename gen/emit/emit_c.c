@@ -125,28 +125,47 @@ static void put_minor_sum(sbuf *o, const slp_prog *p, size_t a, size_t b, char m
         }
 }
 
-/* s u as slp_doublings(s) doublings, ((u + u) + (u + u)): exact, so v + s u rounds as the
- * multiply-add does, on the adders instead of the multiplier; NULL when s is no such power of 2. */
-static const char *doubled(const rat *s)
+/* Appends 2^a u as a doublings, ((u + u) + (u + u)) (the compiler shares the repeats). */
+static void put_doubled(sbuf *o, int a)
 {
-    static const char *const sum[] = {NULL, "(u + u)", "((u + u) + (u + u))",
-                                       "(((u + u) + (u + u)) + ((u + u) + (u + u)))"};
-    return sum[slp_doublings(s)];
+    if (a == 0) {
+        sbuf_puts(o, "u");
+        return;
+    }
+    sbuf_puts(o, "(");
+    put_doubled(o, a - 1);
+    sbuf_puts(o, " + ");
+    put_doubled(o, a - 1);
+    sbuf_puts(o, ")");
 }
 
-/* Appends v's update with the group's sum u at scale s: assigned for the plane's first group. */
+/* Appends v's update with the group's sum u at scale s: assigned for the plane's first group.
+ * s on the adders (slp_scale_of): 2^k u as one sum of doublings; else u's doublings and all
+ * factors but the last into u, the last into v. Any other s: a product, or a multiply-add. */
 static void put_group_end(sbuf *o, const rat *s, int first_group, const char *up)
 {
     char sv[RAT_STRLEN];
-    const char *e = doubled(s);
+    const char *to = first_group ? "=" : "+=";
+    slp_scale c;
+    int i;
     rat one;
     rat_set_si(&one, 1);
     rat_get_str(sv, s);
     if (rat_equal(s, &one))
-        sbuf_printf(o, "        v %s u;\n", first_group ? "=" : "+=");
-    else if (e)
-        sbuf_printf(o, "        v %s %s;\n", first_group ? "=" : "+=", e);
-    else if (first_group)
+        sbuf_printf(o, "        v %s u;\n", to);
+    else if (slp_scale_of(&c, s) && c.nf == 0) {
+        sbuf_printf(o, "        v %s ", to);
+        put_doubled(o, c.shift);
+        sbuf_puts(o, ";\n");
+    } else if (slp_scale_of(&c, s)) {
+        for (i = 0; i < c.shift; i++)
+            sbuf_puts(o, "        u = u + u;\n");
+        for (i = 0; i < c.nf; i++) {
+            sbuf_printf(o, i + 1 < c.nf ? "        u = " : "        v %s ", to);
+            put_doubled(o, c.a[i]);
+            sbuf_puts(o, c.sign[i] > 0 ? " + u;\n" : " - u;\n");
+        }
+    } else if (first_group)
         sbuf_printf(o, "        v = %s.0f * u;\n", sv);
     else
         sbuf_printf(o, "        v = %sVFMAS(%s.0f, u, v);\n", up, sv);

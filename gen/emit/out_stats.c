@@ -46,7 +46,7 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
 }
 
 /* The C header's straight-line program: its exact and fused planes, and the operations per
- * patch in clip and world space, all of them and those on the multiply pipes. */
+ * patch in clip and world space: all of them, those on the multiply pipes and those on the adders. */
 static int put_slp(sbuf *o, const tp_table *t, ptp_error *err)
 {
     slp_prog p;
@@ -59,9 +59,10 @@ static int put_slp(sbuf *o, const tp_table *t, ptp_error *err)
     for (i = 0; i < p.nterms; i++)
         exact_terms += p.exact[p.terms[i].plane];
     sbuf_printf(o, "C straight-line code: %d exact planes (%zu terms), %d fused; per patch %ld flops, "
-                   "%ld on the multiply pipes (clip space), %ld and %ld (world space)\n",
+                   "%ld on the multiply pipes, %ld on the add pipes (clip space), %ld, %ld and %ld "
+                   "(world space)\n",
                 exact, exact_terms, p.nplanes - exact, slp_flops(&p, 0), slp_muls(&p, 0),
-                slp_flops(&p, 1), slp_muls(&p, 1));
+                slp_adds(&p, 0), slp_flops(&p, 1), slp_muls(&p, 1), slp_adds(&p, 1));
     slp_clear(&p);
     return PTP_OK;
 }

@@ -46,8 +46,9 @@ static void fill_widened(cert_bounds *b, const double *d, const double *D, const
             b->k2_64[i] = 4 * 0x1p-1074 * n[i] * (S[i] > 1 ? S[i] : 1) * (1 + 0x1p-40);
         }
     }
-    /* Every intermediate is at most max(E, 1) R^3 m S (1 + gamma): certifying only patches with
-     * max(E, 1) R^3 < 2^120 / max(m S) keeps all of them below FLT_MAX. */
+    /* Every intermediate is at most max(E, 1) R^3 m S (1 + gamma), 4/3 of that in a scale's chain
+     * (2^a x on the way to (2^a - 1) x): certifying only patches with max(E, 1) R^3 <
+     * 2^120 / max(m S) keeps all of them below FLT_MAX. */
     b->q_max = (float)(0x1p120 / (smax + 1));
 }
 
@@ -170,11 +171,15 @@ int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differe
     return PTP_OK;
 }
 
-/* Roundings on the path from a group's u to its plane's value: the product by s (or one more
- * rounding where s is 1), and the plane's chain: group gi of groups (README: Certified). */
-static double group_depth(int gi, int groups)
+/* Roundings on the path from a group's u at scale s to its plane's value: s u's own (none for
+ * s = 1; the rounded adds of its chain, whose doublings are exact; else one product), v's update
+ * (an add, or a multiply-add counted as a product and an add) unless the group is the plane's
+ * first, and the adds of the later groups: group gi of groups (README: Certified). */
+static double group_depth(const rat *s, int gi, int groups)
 {
-    return 1 + (gi > 0) + (groups - 1 - gi);
+    slp_scale c;
+    double own = s->den == 1 && s->num == 1 ? 0 : slp_scale_of(&c, s) ? c.nf : 1;
+    return own + (gi > 0) + (groups - 1 - gi);
 }
 
 /* Fused plane P from entry a (README: Certified): into d[P] the most roundings on a path, into
@@ -187,13 +192,11 @@ static void fused_sums(double *d, double *D, const slp_prog *p, size_t a, int wo
 {
     int plane = p->entries[a].plane, kinds = world ? 2 : 1, groups = 0, gi = 0;
     size_t g, e, b, i;
-    rat one;
-    rat_set_si(&one, 1);
     for (g = a; g < p->nentries && p->entries[g].plane == plane; g = slp_group_end(p, g))
         groups++;
     for (g = a; g < p->nentries && p->entries[g].plane == plane; g = e, gi++) {
         const double s = rat_get_d(&p->s[p->entries[g].group]);
-        double tail = group_depth(gi, groups) - rat_equal(&p->s[p->entries[g].group], &one);
+        double tail = group_depth(&p->s[p->entries[g].group], gi, groups);
         int runs = 0, j = 0;
         e = slp_group_end(p, g);
         for (b = g; b < e; b = slp_point_end(p, b))
@@ -226,7 +229,7 @@ static size_t exact_sums(double *d, double *D, const slp_prog *p, size_t a, int 
             ;
         for (i = g; i < e; i++) {
             double q = (double)(i - g), r = (world ? 8 : 7) + (double)(e - g) - (q > 1 ? q : 1) + 1 +
-                                            group_depth(gi, groups);
+                                            group_depth(&p->s[p->terms[g].group], gi, groups);
             d[plane] = r > d[plane] ? r : d[plane];
             D[plane] += r * (world ? 24 : 6) * s * (1 + 0x1p-50);
         }

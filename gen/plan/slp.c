@@ -203,55 +203,103 @@ size_t slp_plane_end(const slp_prog *p, size_t a)
     return b;
 }
 
-int slp_doublings(const rat *s)
+/* Sets c's chain of factors 2^a[i] + sign[i], i < nf, after shift doublings, if it computes
+ * t 2^shift (t odd) in fewer adds than c has; 1 when it does. */
+static int try_chain(slp_scale *c, ptp_i128 t, int shift, int nf, const int *a, const int *sign)
 {
-    int k;
-    for (k = 1; k <= 3; k++)
-        if (s->den == 1 && s->num == (ptp_i128)1 << k)
-            return k;
-    return 0;
+    ptp_i128 f = 1;
+    int i, adds = shift;
+    for (i = 0; i < nf; i++) {
+        f *= ((ptp_i128)1 << a[i]) + sign[i];
+        adds += a[i] + 1;
+    }
+    if (f != t || adds >= c->adds)
+        return 0;
+    *c = (slp_scale){shift, nf, adds, {a[0], nf > 1 ? a[1] : 0}, {sign[0], nf > 1 ? sign[1] : 0}};
+    return 1;
 }
 
-/* Operation counts of the program: products (multiplies and multiply-adds) and sums (adds,
- * subtracts, and the add of each multiply-add). */
-static void count_ops(long *prod, long *sum, const slp_prog *p, int world)
+int slp_scale_of(slp_scale *c, const rat *s)
+{
+    /* the factors 2^a + sign, a <= 4: 3, 5, 7, 9, 15, 17 (3 as 2 + 1), chains of up to 6 adds */
+    static const int fa[] = {1, 2, 3, 3, 4, 4}, fs[] = {1, 1, -1, 1, -1, 1};
+    const int nfac = (int)(sizeof fa / sizeof *fa);
+    ptp_i128 t;
+    int shift = 0, i, j;
+    if (s->den != 1 || s->num <= 1)
+        return 0;
+    for (t = s->num; t % 2 == 0; t /= 2)
+        shift++;
+    c->adds = SLP_SCALE_ADDS + 1;
+    try_chain(c, t, shift, 0, fa, fs);
+    for (i = 0; i < nfac; i++) /* one factor, then two: fewer roundings first */
+        try_chain(c, t, shift, 1, &fa[i], &fs[i]);
+    for (i = 0; i < nfac; i++)
+        for (j = i; j < nfac; j++) {
+            const int a[2] = {fa[i], fa[j]}, sign[2] = {fs[i], fs[j]};
+            try_chain(c, t, shift, 2, a, sign);
+        }
+    return c->adds <= SLP_SCALE_ADDS;
+}
+
+/* Operation counts of the program: multiplies, multiply-adds and adds (or subtracts). */
+static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int world)
 {
     int kinds = world ? 2 : 1;
     size_t i, a, b;
-    rat one;
-    rat_set_si(&one, 1);
-    *prod = (long)p->npairs * 2 * kinds + (world ? 4L : 1L) * p->npoints; /* minors, G */
-    *sum = (long)p->npairs * kinds + (world ? 2L * p->npoints : 0);
+    *mul = (long)p->npairs * 2 * kinds + (world ? 4L : 1L) * p->npoints; /* minors, G */
+    *fma = 0;
+    *add = (long)p->npairs * kinds + (world ? 2L * p->npoints : 0);
     for (i = 0; i < p->nterms; i++) {
         const slp_term *x = &p->terms[i];
         int first = i == 0 || p->terms[i - 1].group != x->group;
         if (!p->exact[x->plane])
             continue;
-        *prod += 3 * kinds;
-        *sum += 3 * kinds - first; /* the brackets, the kinds' sum, the group's sum */
+        *mul += 3 * kinds;
+        *add += 3 * kinds - first; /* the brackets, the kinds' sum, the group's sum */
     }
     for (a = 0; a < p->nentries; a = b) { /* fused: one product per point and kind */
+        int first = a == 0 || p->entries[a - 1].group != p->entries[a].group;
         b = slp_point_end(p, a);
-        *prod += kinds;
-        *sum += (long)(b - a - 1) * kinds + kinds - (a == 0 || p->entries[a - 1].group != p->entries[a].group);
+        *mul += first;
+        *fma += kinds - first;
+        *add += (long)(b - a - 1) * kinds;
     }
-    for (i = 0; i < p->ngroups; i++) { /* s * the group's sum: doublings or a product */
-        *sum += slp_doublings(&p->s[i]);
-        *prod += !rat_equal(&p->s[i], &one) && !slp_doublings(&p->s[i]);
+    for (i = 0; i < p->nterms; i++) { /* each group's v (+)= s u: adds, a product or an FMA */
+        const slp_term *x = &p->terms[i];
+        const rat *s = &p->s[x->group];
+        int first = i == 0 || p->terms[i - 1].plane != x->plane;
+        slp_scale c;
+        if (i > 0 && p->terms[i - 1].group == x->group)
+            continue;
+        if (slp_scale_of(&c, s))
+            *add += c.adds + !first;
+        else if (s->den == 1 && s->num == 1)
+            *add += !first;
+        else if (first)
+            *mul += 1;
+        else
+            *fma += 1;
     }
-    *sum += (long)p->ngroups - p->nplanes;   /* the groups' sum */
 }
 
 long slp_flops(const slp_prog *p, int world)
 {
-    long prod, sum;
-    count_ops(&prod, &sum, p, world);
-    return prod + sum;
+    long mul, fma, add;
+    count_ops(&mul, &fma, &add, p, world);
+    return mul + 2 * fma + add;
 }
 
 long slp_muls(const slp_prog *p, int world)
 {
-    long prod, sum;
-    count_ops(&prod, &sum, p, world);
-    return prod;
+    long mul, fma, add;
+    count_ops(&mul, &fma, &add, p, world);
+    return mul + fma;
+}
+
+long slp_adds(const slp_prog *p, int world)
+{
+    long mul, fma, add;
+    count_ops(&mul, &fma, &add, p, world);
+    return add;
 }

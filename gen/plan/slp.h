@@ -49,14 +49,30 @@ typedef struct {
 int slp_build(slp_prog *p, const tp_table *t, ptp_error *err);
 /* Frees p's storage. */
 void slp_clear(slp_prog *p);
-/* k when the group scale s is 2^k, 0 < k <= 3 (s u is then k exact doublings, ((u + u) + (u + u)),
- * which round as the product does), else 0. */
-int slp_doublings(const rat *s);
+/* A group scale s on the adders: s u = 2^shift u (exact doublings), then nf factors
+ * f_i = 2^a_i + sign_i (sign_i = +-1), each x <- 2^a_i x + sign_i x: a_i exact doublings and one
+ * rounded add (3 u = (u + u) + u). adds = shift + sum (a_i + 1) operations, all on the add pipes,
+ * and nf roundings on every path through it. */
+typedef struct {
+    int shift, nf, adds;
+    int a[2], sign[2];
+} slp_scale;
+/* The most adds that replace one product by s (slp_scale_of): the scales 2 to 10, 12 and 16.
+ * Longer chains load the add pipes (which the batch path's transposes also use) past the multiply
+ * pipes and lengthen the planes' chains; 4 was the fastest of 3 to 8 for bicubic classify_batch
+ * on Zen 4 (bench/README: Scales on the adders). */
+#define SLP_SCALE_ADDS 4
+/* 1 and the cheapest chain into c (fewest adds, then fewest roundings) when s > 1 is an integer
+ * with a chain of at most SLP_SCALE_ADDS adds and 2 factors; else 0 (s = 1 needs no operation,
+ * another s one product, or one multiply-add into the plane's value). */
+int slp_scale_of(slp_scale *c, const rat *s);
 /* Floating-point operations per patch (multiplies, adds, subtracts; a multiply-add counts 2),
  * clip or world space. */
 long slp_flops(const slp_prog *p, int world);
 /* Operations per patch on the multiply pipes (multiplies and multiply-adds). */
 long slp_muls(const slp_prog *p, int world);
+/* Operations per patch on the add pipes (adds and subtracts that are no part of a multiply-add). */
+long slp_adds(const slp_prog *p, int world);
 /* The fused planes' runs: the end b of the run at entry a, whose entries [a, b) share entry a's
  * group (and its point; its plane). */
 size_t slp_group_end(const slp_prog *p, size_t a);

@@ -35,7 +35,8 @@ void slp_cost_plane(slp_cost *bracket, slp_cost *fused, const slp_prog *p, size_
     *bracket = *fused = (slp_cost){0, 0, 0};
     for (g = a; g < b; g = e, groups++) {
         const rat *s = &p->s[p->terms[g].group];
-        long t, pts, dbl = slp_doublings(s), scale = !rat_equal(s, &one) && !dbl;
+        slp_scale c;
+        long t, pts, dbl = slp_scale_of(&c, s) ? c.adds : 0, scale = !rat_equal(s, &one) && !dbl;
         for (e = g; e < b && p->terms[e].group == p->terms[g].group; e++)
             ;
         t = (long)(e - g);
@@ -46,7 +47,7 @@ void slp_cost_plane(slp_cost *bracket, slp_cost *fused, const slp_prog *p, size_
         fused->ops += 3 * t + scale + dbl;
         /* bracket: three products, two sums, then the terms' sums in turn; fused: the sums of a
            point's minors, then one multiply-add per point in turn; the scale s: a product, or
-           dbl doublings when s = 2^dbl */
+           dbl adds (slp_scale_of) */
         cb = max_l(cb, LAT_MUL + 2 * LAT_ADD + LAT_ADD * (t - 1) + scale * LAT_MUL + dbl * LAT_ADD);
         cf = max_l(cf, LAT_ADD * (3 * t > pts) + LAT_MUL + LAT_FMA * (pts - 1) + scale * LAT_MUL +
                     dbl * LAT_ADD);

@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_1X3_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_1X3_FLOPS 396
-#define PTP_1X3_MULS 232
+#define PTP_1X3_FLOPS 436
+#define PTP_1X3_MULS 208
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_1X3_LANES
 #define PTP_1X3_LANES 16
@@ -435,7 +435,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         const ptp_1x3_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_1x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 1 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -453,10 +453,11 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
         const ptp_1x3_vf m1_2 = x1 * y2 - y1 * x2;
         u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_1x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 2 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -472,12 +473,13 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (u + u);
         const ptp_1x3_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_1x3_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v = PTP_1X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_1x3_vstoref(d + 3 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -488,7 +490,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         const ptp_1x3_vf m3_6 = x3 * y6 - y3 * x6;
         const ptp_1x3_vf m2_3 = x2 * y3 - y2 * x3;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 6 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -504,9 +506,10 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         u -= ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 5 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -516,11 +519,12 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
         v += (u + u);
         u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v = PTP_1X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_1x3_vstoref(d + 4 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -536,7 +540,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
         v = (u + u);
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 9 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -547,9 +551,10 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         const ptp_1x3_vf m5_6 = x5 * y6 - y5 * x6;
         u = ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
         u += ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 10 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -560,11 +565,12 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
         v += (u + u);
         u = ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v = PTP_1X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_1x3_vstoref(d + 11 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -573,7 +579,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = (u + u);
         const ptp_1x3_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 14 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -588,9 +594,10 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         u += ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 13 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -600,11 +607,12 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v += (u + u);
         u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
-        v = PTP_1X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        v = PTP_1X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v = PTP_1X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_1x3_vstoref(d + 12 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;

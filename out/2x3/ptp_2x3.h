@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_2X3_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_2X3_FLOPS 1474
-#define PTP_2X3_MULS 794
+#define PTP_2X3_FLOPS 1618
+#define PTP_2X3_MULS 720
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_2X3_LANES
 #define PTP_2X3_LANES 16
@@ -739,7 +739,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         const ptp_2x3_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_2x3_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 1 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -757,10 +757,11 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
         const ptp_2x3_vf m1_2 = x1 * y2 - y1 * x2;
         u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_2x3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 2 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -776,12 +777,13 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u);
         const ptp_2x3_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_2x3_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 3 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -792,7 +794,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         const ptp_2x3_vf m3_6 = x3 * y6 - y3 * x6;
         const ptp_2x3_vf m2_3 = x2 * y3 - y2 * x3;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 6 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -808,9 +810,10 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         u -= ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 5 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -820,11 +823,12 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
         v += (u + u);
         u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 4 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -854,7 +858,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         const ptp_2x3_vf m0_9 = x0 * y9 - y0 * x9;
         u = PTP_2X3_VFMA(g1, m0_9, u);
         u = PTP_2X3_VFMA(g9, -m0_1, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_2x3_vf m4_6 = x4 * y6 - y4 * x6;
         u = g0 * (m4_6);
         u = PTP_2X3_VFMA(g4, -m0_6, u);
@@ -863,7 +867,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g1 * (m4_5);
         u = PTP_2X3_VFMA(g4, -m1_5, u);
         u = PTP_2X3_VFMA(g5, m1_4, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 9 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -887,7 +892,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g2, m1_8, u);
         u = PTP_2X3_VFMA(g8, -m1_2, u);
         u = PTP_2X3_VFMA(g10, -m0_1, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_2x3_vf m2_9 = x2 * y9 - y2 * x9;
         const ptp_2x3_vf m5_6 = x5 * y6 - y5 * x6;
         u = g0 * (m5_6 - m2_9);
@@ -896,11 +901,14 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g5, m2_4 - m0_6, u);
         u = PTP_2X3_VFMA(g6, m0_5, u);
         u = PTP_2X3_VFMA(g9, -m0_2, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (m4_6);
         u = PTP_2X3_VFMA(g4, -m1_6, u);
         u = PTP_2X3_VFMA(g6, m1_4, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 10 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -918,7 +926,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         const ptp_2x3_vf m2_10 = x2 * y10 - y2 * x10;
         u = PTP_2X3_VFMA(g3, m2_10, u);
         u = PTP_2X3_VFMA(g10, -m2_3, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_2x3_vf m5_7 = x5 * y7 - y5 * x7;
         u = g3 * (m5_7);
         u = PTP_2X3_VFMA(g5, -m3_7, u);
@@ -928,7 +936,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g2 * (m6_7);
         u = PTP_2X3_VFMA(g6, -m2_7, u);
         u = PTP_2X3_VFMA(g7, m2_6, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 14 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -961,12 +970,13 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         const ptp_2x3_vf m5_9 = x5 * y9 - y5 * x9;
         u = -((g0 * m5_9 - g5 * m0_9) + g9 * m0_5);
         u -= ((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_2x3_vf m6_8 = x6 * y8 - y6 * x8;
         u = -((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
         v += ((u + u) + (u + u));
         u = ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 17 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -984,7 +994,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u += ((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
         u -= ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
         u += ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 18 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1003,18 +1013,21 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g3, m2_9, u);
         u = PTP_2X3_VFMA(g9, -m2_3, u);
         u = PTP_2X3_VFMA(g11, -m1_2, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (m6_7 - m3_10);
         u = PTP_2X3_VFMA(g3, m1_10 + m5_6, u);
         u = PTP_2X3_VFMA(g5, -m3_6, u);
         u = PTP_2X3_VFMA(g6, m3_5 - m1_7, u);
         u = PTP_2X3_VFMA(g7, m1_6, u);
         u = PTP_2X3_VFMA(g10, -m1_3, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (m5_7);
         u = PTP_2X3_VFMA(g5, -m2_7, u);
         u = PTP_2X3_VFMA(g7, m2_5, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 13 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1032,7 +1045,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g0 * (-m3_10);
         u = PTP_2X3_VFMA(g3, m0_10, u);
         u = PTP_2X3_VFMA(g10, -m0_3, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g3 * (m4_6);
         u = PTP_2X3_VFMA(g4, -m3_6, u);
         u = PTP_2X3_VFMA(g6, m3_4, u);
@@ -1043,15 +1056,18 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g4, -m2_7, u);
         u = PTP_2X3_VFMA(g7, m2_4, u);
         u = PTP_2X3_VFMA(g9, -m1_3, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m2_10);
         u = PTP_2X3_VFMA(g2, m1_10, u);
         u = PTP_2X3_VFMA(g10, -m1_2, u);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g1 * (m5_7);
         u = PTP_2X3_VFMA(g5, -m1_7, u);
         u = PTP_2X3_VFMA(g7, m1_5, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (m5_6);
         u = PTP_2X3_VFMA(g5, -m2_6, u);
         u = PTP_2X3_VFMA(g6, m2_5, u);
@@ -1073,7 +1089,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g0 * (-m3_9);
         u = PTP_2X3_VFMA(g3, m0_9, u);
         u = PTP_2X3_VFMA(g9, -m0_3, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g0 * (m5_7);
         u = PTP_2X3_VFMA(g5, -m0_7, u);
         u = PTP_2X3_VFMA(g7, m0_5, u);
@@ -1084,15 +1100,18 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g4, -m1_7, u);
         u = PTP_2X3_VFMA(g7, m1_4, u);
         u = PTP_2X3_VFMA(g10, -m0_2, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m2_9);
         u = PTP_2X3_VFMA(g2, m1_9, u);
         u = PTP_2X3_VFMA(g9, -m1_2, u);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g2 * (m4_6);
         u = PTP_2X3_VFMA(g4, -m2_6, u);
         u = PTP_2X3_VFMA(g6, m2_4, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (m5_6);
         u = PTP_2X3_VFMA(g5, -m1_6, u);
         u = PTP_2X3_VFMA(g6, m1_5, u);
@@ -1110,13 +1129,14 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = ((g2 * m6_11 - g6 * m2_11) + g11 * m2_6);
         const ptp_2x3_vf m6_10 = x6 * y10 - y6 * x10;
         u += ((g3 * m6_10 - g6 * m3_10) + g10 * m3_6);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_2x3_vf m5_11 = x5 * y11 - y5 * x11;
         u = ((g3 * m5_11 - g5 * m3_11) + g11 * m3_5);
         v += ((u + u) + (u + u));
         const ptp_2x3_vf m7_10 = x7 * y10 - y7 * x10;
         u = -((g2 * m7_10 - g7 * m2_10) + g10 * m2_7);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 22 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1147,7 +1167,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g1 * (m8_9);
         u = PTP_2X3_VFMA(g8, -m1_9, u);
         u = PTP_2X3_VFMA(g9, m1_8, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g4 * (-m6_8);
         u = PTP_2X3_VFMA(g6, m4_8, u);
         u = PTP_2X3_VFMA(g8, -m4_6, u);
@@ -1155,7 +1175,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g4 * (-m5_9);
         u = PTP_2X3_VFMA(g5, m4_9, u);
         u = PTP_2X3_VFMA(g9, -m4_5, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 25 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1175,7 +1196,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g8, -m2_9, u);
         u = PTP_2X3_VFMA(g9, m2_8 - m0_10, u);
         u = PTP_2X3_VFMA(g10, m0_9, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (m8_10);
         const ptp_2x3_vf m5_10 = x5 * y10 - y5 * x10;
         u = PTP_2X3_VFMA(g4, -m5_10, u);
@@ -1183,11 +1204,14 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g6, m5_8, u);
         u = PTP_2X3_VFMA(g8, -m1_10 - m5_6, u);
         u = PTP_2X3_VFMA(g10, m1_8 - m4_5, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (-m6_9);
         u = PTP_2X3_VFMA(g6, m4_9, u);
         u = PTP_2X3_VFMA(g9, -m4_6, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 26 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1206,7 +1230,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g1 * (m8_11);
         u = PTP_2X3_VFMA(g8, -m1_11, u);
         u = PTP_2X3_VFMA(g11, m1_8, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g5 * (-m7_8);
         u = PTP_2X3_VFMA(g7, m5_8, u);
         u = PTP_2X3_VFMA(g8, -m5_7, u);
@@ -1217,15 +1241,18 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g8, -m2_10, u);
         u = PTP_2X3_VFMA(g9, -m4_7, u);
         u = PTP_2X3_VFMA(g10, m2_8, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (m9_10);
         u = PTP_2X3_VFMA(g9, -m1_10, u);
         u = PTP_2X3_VFMA(g10, m1_9, u);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g4 * (-m6_10);
         u = PTP_2X3_VFMA(g6, m4_10, u);
         u = PTP_2X3_VFMA(g10, -m4_6, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g5 * (-m6_9);
         u = PTP_2X3_VFMA(g6, m5_9, u);
         u = PTP_2X3_VFMA(g9, -m5_6, u);
@@ -1248,7 +1275,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g2 * (m8_11);
         u = PTP_2X3_VFMA(g8, -m2_11, u);
         u = PTP_2X3_VFMA(g11, m2_8, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g4 * (-m6_11);
         u = PTP_2X3_VFMA(g6, m4_11, u);
         u = PTP_2X3_VFMA(g11, -m4_6, u);
@@ -1259,15 +1286,18 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g9, -m1_11, u);
         u = PTP_2X3_VFMA(g10, -m4_7, u);
         u = PTP_2X3_VFMA(g11, m1_9, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (m9_10);
         u = PTP_2X3_VFMA(g9, -m2_10, u);
         u = PTP_2X3_VFMA(g10, m2_9, u);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g5 * (-m7_9);
         u = PTP_2X3_VFMA(g7, m5_9, u);
         u = PTP_2X3_VFMA(g9, -m5_7, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g5 * (-m6_10);
         u = PTP_2X3_VFMA(g6, m5_10, u);
         u = PTP_2X3_VFMA(g10, -m5_6, u);
@@ -1289,18 +1319,21 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g9, -m3_10, u);
         u = PTP_2X3_VFMA(g10, m3_9 - m1_11, u);
         u = PTP_2X3_VFMA(g11, m1_10, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g2 * (m9_11);
         u = PTP_2X3_VFMA(g5, -m6_11, u);
         u = PTP_2X3_VFMA(g6, m5_11 - m7_9, u);
         u = PTP_2X3_VFMA(g7, m6_9, u);
         u = PTP_2X3_VFMA(g9, -m2_11 - m6_7, u);
         u = PTP_2X3_VFMA(g11, m2_9 - m5_6, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g5 * (-m7_10);
         u = PTP_2X3_VFMA(g7, m5_10, u);
         u = PTP_2X3_VFMA(g10, -m5_7, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 29 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1312,7 +1345,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g2 * (m10_11);
         u = PTP_2X3_VFMA(g10, -m2_11, u);
         u = PTP_2X3_VFMA(g11, m2_10, u);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g5 * (-m7_11);
         u = PTP_2X3_VFMA(g7, m5_11, u);
         u = PTP_2X3_VFMA(g11, -m5_7, u);
@@ -1320,7 +1353,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = g6 * (-m7_10);
         u = PTP_2X3_VFMA(g7, m6_10, u);
         u = PTP_2X3_VFMA(g10, -m6_7, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 30 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1342,7 +1376,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = ((g4 * m8_10 - g8 * m4_10) + g10 * m4_8);
         v = (u + u);
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 33 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1351,9 +1385,10 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = u;
         u = ((g4 * m9_10 - g9 * m4_10) + g10 * m4_9);
         u += ((g6 * m8_9 - g8 * m6_9) + g9 * m6_8);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g5 * m8_10 - g8 * m5_10) + g10 * m5_8);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 34 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1363,11 +1398,12 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = ((g4 * m9_11 - g9 * m4_11) + g11 * m4_9);
         v += (u + u);
         u = ((g5 * m8_11 - g8 * m5_11) + g11 * m5_8);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g6 * m8_10 - g8 * m6_10) + g10 * m6_8);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g5 * m9_10 - g9 * m5_10) + g10 * m5_9);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 35 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1377,11 +1413,12 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = ((g7 * m8_10 - g8 * m7_10) + g10 * m7_8);
         v += (u + u);
         u = ((g6 * m8_11 - g8 * m6_11) + g11 * m6_8);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g5 * m9_11 - g9 * m5_11) + g11 * m5_9);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g6 * m9_10 - g9 * m6_10) + g10 * m6_9);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 36 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1390,9 +1427,10 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = u;
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
         u += ((g7 * m9_10 - g9 * m7_10) + g10 * m7_9);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g6 * m9_11 - g9 * m6_11) + g11 * m6_9);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 37 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1400,7 +1438,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
         v = (u + u);
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
-        v = PTP_2X3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 38 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1420,7 +1458,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u += ((g2 * m5_11 - g5 * m2_11) + g11 * m2_5);
         u -= ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
         u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 21 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1442,23 +1480,26 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g4, -m2_11 - m3_10, u);
         u = PTP_2X3_VFMA(g10, m3_4, u);
         u = PTP_2X3_VFMA(g11, m2_4, u);
-        v = PTP_2X3_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         u = g1 * (m5_11);
         u = PTP_2X3_VFMA(g3, m5_9, u);
         u = PTP_2X3_VFMA(g5, -m1_11 - m3_9, u);
         u = PTP_2X3_VFMA(g9, m3_5, u);
         u = PTP_2X3_VFMA(g11, m1_5, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m6_10);
         u = PTP_2X3_VFMA(g2, -m6_9, u);
         u = PTP_2X3_VFMA(g6, m1_10 + m2_9, u);
         u = PTP_2X3_VFMA(g9, -m2_6, u);
         u = PTP_2X3_VFMA(g10, -m1_6, u);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g1 * (-m7_9);
         u = PTP_2X3_VFMA(g7, m1_9, u);
         u = PTP_2X3_VFMA(g9, -m1_7, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (m5_10);
         u = PTP_2X3_VFMA(g5, -m2_10, u);
         u = PTP_2X3_VFMA(g10, m2_5, u);
@@ -1484,23 +1525,26 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         u = PTP_2X3_VFMA(g7, m1_8 + m0_9, u);
         u = PTP_2X3_VFMA(g8, -m1_7, u);
         u = PTP_2X3_VFMA(g9, -m0_7, u);
-        v = PTP_2X3_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         u = g0 * (-m6_10);
         u = PTP_2X3_VFMA(g2, -m6_8, u);
         u = PTP_2X3_VFMA(g6, m2_8 + m0_10, u);
         u = PTP_2X3_VFMA(g8, -m2_6, u);
         u = PTP_2X3_VFMA(g10, -m0_6, u);
-        v = PTP_2X3_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (m5_10);
         u = PTP_2X3_VFMA(g2, m5_9, u);
         u = PTP_2X3_VFMA(g5, -m1_10 - m2_9, u);
         u = PTP_2X3_VFMA(g9, m2_5, u);
         u = PTP_2X3_VFMA(g10, m1_5, u);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g2 * (m4_10);
         u = PTP_2X3_VFMA(g4, -m2_10, u);
         u = PTP_2X3_VFMA(g10, m2_4, u);
-        v = PTP_2X3_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m6_9);
         u = PTP_2X3_VFMA(g6, m1_9, u);
         u = PTP_2X3_VFMA(g9, -m1_6, u);

@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_3X1_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_3X1_FLOPS 396
-#define PTP_3X1_MULS 232
+#define PTP_3X1_FLOPS 436
+#define PTP_3X1_MULS 208
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X1_LANES
 #define PTP_3X1_LANES 16
@@ -442,7 +442,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = (u + u);
         const ptp_3x1_vf m2_3 = x2 * y3 - y2 * x3;
         u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_3x1_vstoref(d + 2 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -454,7 +454,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         v = (u + u);
         u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_3x1_vstoref(d + 3 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -469,10 +469,11 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = ((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         const ptp_3x1_vf m2_4 = x2 * y4 - y2 * x4;
         u += ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x1_vf m3_4 = x3 * y4 - y3 * x4;
         u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v = PTP_3X1_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x1_vstoref(d + 4 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -486,9 +487,10 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         const ptp_3x1_vf m3_5 = x3 * y5 - y3 * x5;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
         u -= ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v = PTP_3X1_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x1_vstoref(d + 5 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -501,12 +503,13 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v += (u + u);
         const ptp_3x1_vf m3_6 = x3 * y6 - y3 * x6;
         u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x1_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        v = PTP_3X1_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v = PTP_3X1_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x1_vstoref(d + 6 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -519,11 +522,12 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v += (u + u);
         const ptp_3x1_vf m5_6 = x5 * y6 - y5 * x6;
         u = -((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v = PTP_3X1_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v = PTP_3X1_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x1_vstoref(d + 8 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -533,9 +537,10 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = u;
         u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
         u += ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v = PTP_3X1_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x1_vstoref(d + 10 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -543,7 +548,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         v = (u + u);
         u = -((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_3x1_vstoref(d + 12 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -553,7 +558,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = (u + u);
         const ptp_3x1_vf m5_7 = x5 * y7 - y5 * x7;
         u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_3x1_vstoref(d + 13 * ds + l, v * 0.428571433f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -574,9 +579,10 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         v = u;
         u = -((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
         u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
-        v = PTP_3X1_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x1_vstoref(d + 11 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -586,11 +592,12 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = -((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         v += (u + u);
         u = ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v = PTP_3X1_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
-        v = PTP_3X1_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x1_vstoref(d + 9 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -600,11 +607,12 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
         u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         v += (u + u);
         u = ((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
-        v = PTP_3X1_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        v = PTP_3X1_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = -((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v = PTP_3X1_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x1_vstoref(d + 7 * ds + l, v * 0.0857142881f, n - l);
         notlt |= (v < 0.0f) == 0;

@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_3X2_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_3X2_FLOPS 1474
-#define PTP_3X2_MULS 794
+#define PTP_3X2_FLOPS 1618
+#define PTP_3X2_MULS 720
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X2_LANES
 #define PTP_3X2_LANES 16
@@ -782,7 +782,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v = (u + u);
         const ptp_3x2_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 5 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -795,7 +795,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v = (u + u);
         const ptp_3x2_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 9 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -809,7 +809,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g0 * (m3_5);
         u = PTP_3X2_VFMA(g3, -m0_5, u);
         u = PTP_3X2_VFMA(g5, m0_3, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x2_vf x7 = ptp_3x2_vload(q + 28 * qs), y7 = ptp_3x2_vload(q + 29 * qs),
             w7 = ptp_3x2_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_3x2_vf m1_7 = x1 * y7 - y1 * x7;
@@ -821,7 +821,8 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g1 * (m3_4);
         u = PTP_3X2_VFMA(g3, -m1_4, u);
         u = PTP_3X2_VFMA(g4, m1_3, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 6 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -834,7 +835,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g2 * (m3_5);
         u = PTP_3X2_VFMA(g3, -m2_5, u);
         u = PTP_3X2_VFMA(g5, m2_3, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x2_vf m2_7 = x2 * y7 - y2 * x7;
         u = g1 * (-m2_7);
         u = PTP_3X2_VFMA(g2, m1_7, u);
@@ -843,7 +844,8 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g1 * (m4_5);
         u = PTP_3X2_VFMA(g4, -m1_5, u);
         u = PTP_3X2_VFMA(g5, m1_4, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 8 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -853,11 +855,12 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v = (u + u);
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
         v += ((u + u) + (u + u));
         u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 7 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -872,10 +875,11 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         const ptp_3x2_vf m3_6 = x3 * y6 - y3 * x6;
         u += ((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x2_vf m4_6 = x4 * y6 - y4 * x6;
         u = -((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 10 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -890,10 +894,11 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
         const ptp_3x2_vf m5_7 = x5 * y7 - y5 * x7;
         u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x2_vf m4_8 = x4 * y8 - y4 * x8;
         u = ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 14 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -909,12 +914,13 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v += (u + u);
         const ptp_3x2_vf m4_9 = x4 * y9 - y4 * x9;
         u = -((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x2_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x2_vstoref(d + 15 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -935,7 +941,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g3, -m2_6 - m0_8, u);
         u = PTP_3X2_VFMA(g6, m2_3, u);
         u = PTP_3X2_VFMA(g8, m0_3, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x2_vf m4_7 = x4 * y7 - y4 * x7;
         const ptp_3x2_vf m5_6 = x5 * y6 - y5 * x6;
         u = g0 * (-m4_7 - m5_6);
@@ -944,11 +950,14 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g5, m0_6, u);
         u = PTP_3X2_VFMA(g6, -m1_4 - m0_5, u);
         u = PTP_3X2_VFMA(g7, -m0_4, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (m3_7);
         u = PTP_3X2_VFMA(g3, -m1_7, u);
         u = PTP_3X2_VFMA(g7, m1_3, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 11 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -964,7 +973,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u += ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
         u -= ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
         u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x2_vstoref(d + 12 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -982,18 +991,21 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g5, m2_6 + m0_8, u);
         u = PTP_3X2_VFMA(g6, -m2_5, u);
         u = PTP_3X2_VFMA(g8, -m0_5, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (m4_8);
         u = PTP_3X2_VFMA(g2, m3_8 + m4_7, u);
         u = PTP_3X2_VFMA(g3, -m2_8, u);
         u = PTP_3X2_VFMA(g4, -m1_8 - m2_7, u);
         u = PTP_3X2_VFMA(g7, m2_4, u);
         u = PTP_3X2_VFMA(g8, m2_3 + m1_4, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m5_7);
         u = PTP_3X2_VFMA(g5, m1_7, u);
         u = PTP_3X2_VFMA(g7, -m1_5, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 13 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1006,12 +1018,13 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v += (u + u);
         const ptp_3x2_vf m4_11 = x4 * y11 - y4 * x11;
         u = ((g2 * m4_11 - g4 * m2_11) + g11 * m2_4);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x2_vf m7_8 = x7 * y8 - y7 * x8;
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x2_vstoref(d + 19 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1024,11 +1037,12 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v += (u + u);
         const ptp_3x2_vf m7_9 = x7 * y9 - y7 * x9;
         u = -((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x2_vstoref(d + 20 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1049,7 +1063,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g0 * (-m8_9);
         u = PTP_3X2_VFMA(g8, m0_9, u);
         u = PTP_3X2_VFMA(g9, -m0_8, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (-m7_9);
         u = PTP_3X2_VFMA(g7, m1_9, u);
         u = PTP_3X2_VFMA(g9, -m1_7, u);
@@ -1061,17 +1075,20 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g6, -m1_10, u);
         u = PTP_3X2_VFMA(g9, -m3_5, u);
         u = PTP_3X2_VFMA(g10, m1_6, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         const ptp_3x2_vf m6_8 = x6 * y8 - y6 * x8;
         u = g3 * (m6_8);
         u = PTP_3X2_VFMA(g6, -m3_8, u);
         u = PTP_3X2_VFMA(g8, m3_6, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         const ptp_3x2_vf m4_10 = x4 * y10 - y4 * x10;
         u = g3 * (-m4_10);
         u = PTP_3X2_VFMA(g4, m3_10, u);
         u = PTP_3X2_VFMA(g10, -m3_4, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (m6_7);
         u = PTP_3X2_VFMA(g6, -m4_7, u);
         u = PTP_3X2_VFMA(g7, m4_6, u);
@@ -1094,7 +1111,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g0 * (-m5_9);
         u = PTP_3X2_VFMA(g5, m0_9, u);
         u = PTP_3X2_VFMA(g9, -m0_5, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g0 * (-m4_10);
         u = PTP_3X2_VFMA(g4, m0_10, u);
         u = PTP_3X2_VFMA(g10, -m0_4, u);
@@ -1105,15 +1122,18 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g6, -m0_8, u);
         u = PTP_3X2_VFMA(g8, m0_6, u);
         u = PTP_3X2_VFMA(g10, m1_3, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g3 * (-m5_6);
         u = PTP_3X2_VFMA(g5, m3_6, u);
         u = PTP_3X2_VFMA(g6, -m3_5, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g1 * (m6_7);
         u = PTP_3X2_VFMA(g6, -m1_7, u);
         u = PTP_3X2_VFMA(g7, m1_6, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g3 * (-m4_7);
         u = PTP_3X2_VFMA(g4, m3_7, u);
         u = PTP_3X2_VFMA(g7, -m3_4, u);
@@ -1136,7 +1156,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g2 * (m6_11);
         u = PTP_3X2_VFMA(g6, -m2_11, u);
         u = PTP_3X2_VFMA(g11, m2_6, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_3x2_vf m7_11 = x7 * y11 - y7 * x11;
         u = g1 * (m7_11);
         u = PTP_3X2_VFMA(g7, -m1_11, u);
@@ -1149,15 +1169,18 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g8, m1_10, u);
         u = PTP_3X2_VFMA(g10, -m1_8, u);
         u = PTP_3X2_VFMA(g11, -m3_5, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g5 * (m6_8);
         u = PTP_3X2_VFMA(g6, -m5_8, u);
         u = PTP_3X2_VFMA(g8, m5_6, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g4 * (-m5_10);
         u = PTP_3X2_VFMA(g5, m4_10, u);
         u = PTP_3X2_VFMA(g10, -m4_5, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (m7_8);
         u = PTP_3X2_VFMA(g7, -m4_8, u);
         u = PTP_3X2_VFMA(g8, m4_7, u);
@@ -1171,11 +1194,12 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = -((g2 * m8_10 - g8 * m2_10) + g10 * m2_8);
         v += (u + u);
         u = ((g2 * m7_11 - g7 * m2_11) + g11 * m2_7);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g4 * m5_11 - g5 * m4_11) + g11 * m4_5);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x2_vstoref(d + 24 * ds + l, v * 0.171428576f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1185,9 +1209,10 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v = u;
         u = ((g3 * m6_10 - g6 * m3_10) + g10 * m3_6);
         u += ((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 25 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1206,18 +1231,21 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g6, -m3_11 - m5_9, u);
         u = PTP_3X2_VFMA(g9, m5_6, u);
         u = PTP_3X2_VFMA(g11, m3_6, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g3 * (-m7_10 - m8_9);
         u = PTP_3X2_VFMA(g4, -m7_9, u);
         u = PTP_3X2_VFMA(g7, m3_10 + m4_9, u);
         u = PTP_3X2_VFMA(g8, m3_9, u);
         u = PTP_3X2_VFMA(g9, -m3_8 - m4_7, u);
         u = PTP_3X2_VFMA(g10, -m3_7, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (m6_10);
         u = PTP_3X2_VFMA(g6, -m4_10, u);
         u = PTP_3X2_VFMA(g10, m4_6, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 26 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1232,7 +1260,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u += ((g4 * m6_11 - g6 * m4_11) + g11 * m4_6);
         u -= ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         u += ((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x2_vstoref(d + 27 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1250,18 +1278,21 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g8, m3_11 + m5_9, u);
         u = PTP_3X2_VFMA(g9, -m5_8, u);
         u = PTP_3X2_VFMA(g11, -m3_8, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g4 * (m7_11);
         u = PTP_3X2_VFMA(g5, m6_11 + m7_10, u);
         u = PTP_3X2_VFMA(g6, -m5_11, u);
         u = PTP_3X2_VFMA(g7, -m4_11 - m5_10, u);
         u = PTP_3X2_VFMA(g10, m5_7, u);
         u = PTP_3X2_VFMA(g11, m4_7 + m5_6, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (-m8_10);
         u = PTP_3X2_VFMA(g8, m4_10, u);
         u = PTP_3X2_VFMA(g10, -m4_8, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 28 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1270,9 +1301,10 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v = u;
         u = -((g4 * m8_11 - g8 * m4_11) + g11 * m4_8);
         u -= ((g5 * m8_10 - g8 * m5_10) + g10 * m5_8);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g5 * m7_11 - g7 * m5_11) + g11 * m5_7);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 29 * ds + l, v * 0.285714298f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1280,7 +1312,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g3 * m9_10 - g9 * m3_10) + g10 * m3_9);
         v = (u + u);
         u = -((g6 * m7_9 - g7 * m6_9) + g9 * m6_7);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 30 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1292,7 +1324,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g6 * (-m8_9);
         u = PTP_3X2_VFMA(g8, m6_9, u);
         u = PTP_3X2_VFMA(g9, -m6_8, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g4 * (m9_10);
         u = PTP_3X2_VFMA(g9, -m4_10, u);
         u = PTP_3X2_VFMA(g10, m4_9, u);
@@ -1300,7 +1332,8 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g6 * (-m7_10);
         u = PTP_3X2_VFMA(g7, m6_10, u);
         u = PTP_3X2_VFMA(g10, -m6_7, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 31 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1310,11 +1343,12 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         v = (u + u);
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         u -= ((g7 * m8_9 - g8 * m7_9) + g9 * m7_8);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g4 * m9_11 - g9 * m4_11) + g11 * m4_9);
         v += ((u + u) + (u + u));
         u = -((g6 * m8_10 - g8 * m6_10) + g10 * m6_8);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 32 * ds + l, v * 0.142857149f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1326,7 +1360,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g6 * (-m8_11);
         u = PTP_3X2_VFMA(g8, m6_11, u);
         u = PTP_3X2_VFMA(g11, -m6_8, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g4 * (m10_11);
         u = PTP_3X2_VFMA(g10, -m4_11, u);
         u = PTP_3X2_VFMA(g11, m4_10, u);
@@ -1334,7 +1368,8 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g7 * (-m8_10);
         u = PTP_3X2_VFMA(g8, m7_10, u);
         u = PTP_3X2_VFMA(g10, -m7_8, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 33 * ds + l, v * 0.214285716f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1342,7 +1377,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
         v = (u + u);
         u = -((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_3x2_vstoref(d + 34 * ds + l, v * 0.857142866f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1397,7 +1432,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = g2 * (m3_11);
         u = PTP_3X2_VFMA(g3, -m2_11, u);
         u = PTP_3X2_VFMA(g11, m2_3, u);
-        v = PTP_3X2_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g2 * (m4_10);
         u = PTP_3X2_VFMA(g4, -m2_10, u);
         u = PTP_3X2_VFMA(g10, m2_4, u);
@@ -1408,15 +1443,18 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g6, -m2_8, u);
         u = PTP_3X2_VFMA(g8, m2_6, u);
         u = PTP_3X2_VFMA(g10, -m1_5, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g3 * (-m5_8);
         u = PTP_3X2_VFMA(g5, m3_8, u);
         u = PTP_3X2_VFMA(g8, -m3_5, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g1 * (m7_8);
         u = PTP_3X2_VFMA(g7, -m1_8, u);
         u = PTP_3X2_VFMA(g8, m1_7, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (-m5_7);
         u = PTP_3X2_VFMA(g5, m4_7, u);
         u = PTP_3X2_VFMA(g7, -m4_5, u);
@@ -1442,23 +1480,26 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g3, -m2_10, u);
         u = PTP_3X2_VFMA(g5, m0_10, u);
         u = PTP_3X2_VFMA(g10, m2_3 - m0_5, u);
-        v = PTP_3X2_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         u = g0 * (m7_8);
         u = PTP_3X2_VFMA(g2, m6_7, u);
         u = PTP_3X2_VFMA(g6, -m2_7, u);
         u = PTP_3X2_VFMA(g7, m2_6 - m0_8, u);
         u = PTP_3X2_VFMA(g8, m0_7, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g3 * (-m4_8);
         u = PTP_3X2_VFMA(g4, m3_8 - m5_6, u);
         u = PTP_3X2_VFMA(g5, m4_6, u);
         u = PTP_3X2_VFMA(g6, -m4_5, u);
         u = PTP_3X2_VFMA(g8, -m3_4, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g1 * (m6_8);
         u = PTP_3X2_VFMA(g6, -m1_8, u);
         u = PTP_3X2_VFMA(g8, m1_6, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g3 * (-m5_7);
         u = PTP_3X2_VFMA(g5, m3_7, u);
         u = PTP_3X2_VFMA(g7, -m3_5, u);
@@ -1484,23 +1525,26 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g8, m1_9, u);
         u = PTP_3X2_VFMA(g9, -m1_8, u);
         u = PTP_3X2_VFMA(g11, m1_6, u);
-        v = PTP_3X2_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         u = g3 * (-m4_11);
         u = PTP_3X2_VFMA(g4, m3_11 - m5_9, u);
         u = PTP_3X2_VFMA(g5, m4_9, u);
         u = PTP_3X2_VFMA(g9, -m4_5, u);
         u = PTP_3X2_VFMA(g11, -m3_4, u);
-        v = PTP_3X2_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g3 * (m7_8);
         u = PTP_3X2_VFMA(g5, m6_7, u);
         u = PTP_3X2_VFMA(g6, -m5_7, u);
         u = PTP_3X2_VFMA(g7, m5_6 - m3_8, u);
         u = PTP_3X2_VFMA(g8, m3_7, u);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = g3 * (-m5_10);
         u = PTP_3X2_VFMA(g5, m3_10, u);
         u = PTP_3X2_VFMA(g10, -m3_5, u);
-        v = PTP_3X2_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (m6_8);
         u = PTP_3X2_VFMA(g6, -m4_8, u);
         u = PTP_3X2_VFMA(g8, m4_6, u);

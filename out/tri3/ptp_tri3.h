@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI3_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI3_FLOPS 788
-#define PTP_TRI3_MULS 435
+#define PTP_TRI3_FLOPS 810
+#define PTP_TRI3_MULS 415
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI3_LANES
 #define PTP_TRI3_LANES 16
@@ -579,7 +579,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
         v += (u + u);
         u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 4 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -594,7 +594,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         const ptp_tri3_vf m1_3 = x1 * y3 - y1 * x3;
         u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_tri3_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v += ((u + u) + (u + u));
@@ -610,7 +610,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
         v = u;
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 6 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -626,7 +626,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
         u += ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 7 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -637,7 +637,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
         v = u;
         u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += ((u + u) + (u + u));
         if (d)
@@ -653,7 +653,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
         u -= ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
         u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 11 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -668,7 +668,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         const ptp_tri3_vf m2_5 = x2 * y5 - y2 * x5;
         u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_tri3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v += ((u + u) + (u + u));
@@ -684,7 +684,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
         v = u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 9 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -695,7 +695,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
         v = u;
         u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v += ((u + u) + (u + u));
         if (d)
@@ -715,7 +715,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
         v += (u + u);
         u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 16 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -732,7 +732,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u -= ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
         const ptp_tri3_vf m5_7 = x5 * y7 - y5 * x7;
         u -= ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 17 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -747,7 +747,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         u -= ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
         u -= ((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 18 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -758,7 +758,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
         v += (u + u);
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 19 * ds + l, v * 0.600000024f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -787,7 +787,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
         v = u;
         u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
         v += ((u + u) + (u + u));
         if (d)
@@ -799,7 +799,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
         v = u;
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 24 * ds + l, v * 0.899999976f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -808,7 +808,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u += ((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
         v = u;
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
         v += ((u + u) + (u + u));
         if (d)
@@ -833,10 +833,10 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
         u += ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
         u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
         u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
-        v = PTP_TRI3_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_tri3_vstoref(d + 12 * ds + l, v * 0.100000001f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -849,7 +849,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
         u += ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 8 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -862,7 +862,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
         u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
         u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v = PTP_TRI3_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 13 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;

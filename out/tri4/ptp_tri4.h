@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI4_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI4_FLOPS 2895
-#define PTP_TRI4_MULS 1471
+#define PTP_TRI4_FLOPS 3105
+#define PTP_TRI4_MULS 1363
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI4_LANES
 #define PTP_TRI4_LANES 16
@@ -1186,7 +1186,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g0 * (m3_5);
         u = PTP_TRI4_VFMA(g3, -m0_5, u);
         u = PTP_TRI4_VFMA(g5, m0_3, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (-m2_4);
         u = PTP_TRI4_VFMA(g2, m1_4, u);
         u = PTP_TRI4_VFMA(g4, -m1_2, u);
@@ -1208,7 +1208,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u);
         const ptp_tri4_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1226,7 +1226,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u);
         const ptp_tri4_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 5 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1249,7 +1249,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
         const ptp_tri4_vf m5_8 = x5 * y8 - y5 * x8;
         u -= ((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
-        v = PTP_TRI4_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
@@ -1274,7 +1274,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g4, -m0_8, u);
         u = PTP_TRI4_VFMA(g8, m0_4, u);
         u = PTP_TRI4_VFMA(g9, m0_3, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_tri4_vf m5_7 = x5 * y7 - y5 * x7;
         u = g0 * (-m5_7);
         u = PTP_TRI4_VFMA(g1, m4_5, u);
@@ -1283,7 +1283,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g4, -m1_5, u);
         u = PTP_TRI4_VFMA(g5, m1_4 + m2_3 + m0_7, u);
         u = PTP_TRI4_VFMA(g7, -m0_5, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m2_8);
         u = PTP_TRI4_VFMA(g2, m1_8, u);
         u = PTP_TRI4_VFMA(g8, -m1_2, u);
@@ -1310,7 +1311,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         const ptp_tri4_vf m4_6 = x4 * y6 - y4 * x6;
         u -= ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
-        v = PTP_TRI4_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
@@ -1329,9 +1330,10 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u);
         const ptp_tri4_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
@@ -1353,7 +1355,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g5, m0_6, u);
         u = PTP_TRI4_VFMA(g6, -m0_5, u);
         u = PTP_TRI4_VFMA(g7, -m0_4, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_tri4_vf m3_8 = x3 * y8 - y3 * x8;
         u = g0 * (m3_8);
         u = PTP_TRI4_VFMA(g1, m3_5, u);
@@ -1362,7 +1364,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g4, m2_3, u);
         u = PTP_TRI4_VFMA(g5, m1_3, u);
         u = PTP_TRI4_VFMA(g8, m0_3, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m2_7);
         u = PTP_TRI4_VFMA(g2, m1_7, u);
         u = PTP_TRI4_VFMA(g7, -m1_2, u);
@@ -1385,7 +1388,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g0 * (m3_12);
         u = PTP_TRI4_VFMA(g3, -m0_12, u);
         u = PTP_TRI4_VFMA(g12, m0_3, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (-m2_11);
         u = PTP_TRI4_VFMA(g2, m1_11 - m4_6, u);
         u = PTP_TRI4_VFMA(g4, m2_6, u);
@@ -1396,7 +1399,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g0 * (m6_8);
         u = PTP_TRI4_VFMA(g6, -m0_8, u);
         u = PTP_TRI4_VFMA(g8, m0_6, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m5_6);
         u = PTP_TRI4_VFMA(g5, m1_6, u);
         u = PTP_TRI4_VFMA(g6, -m1_5, u);
@@ -1407,7 +1411,9 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g4, m1_7, u);
         u = PTP_TRI4_VFMA(g7, m2_3 - m1_4, u);
         u = PTP_TRI4_VFMA(g8, m1_3, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 11 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1422,9 +1428,10 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
         v += (u + u);
         u = -((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
@@ -1443,9 +1450,10 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u);
         const ptp_tri4_vf m8_9 = x8 * y9 - y8 * x9;
         u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
@@ -1475,14 +1483,15 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g0 * (m7_8);
         u = PTP_TRI4_VFMA(g7, -m0_8, u);
         u = PTP_TRI4_VFMA(g8, m0_7, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (-m5_7);
         u = PTP_TRI4_VFMA(g2, m3_8, u);
         u = PTP_TRI4_VFMA(g3, -m2_8, u);
         u = PTP_TRI4_VFMA(g5, m1_7, u);
         u = PTP_TRI4_VFMA(g7, -m1_5, u);
         u = PTP_TRI4_VFMA(g8, m2_3, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 12 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1501,7 +1510,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g0 * (-m5_12);
         u = PTP_TRI4_VFMA(g5, m0_12, u);
         u = PTP_TRI4_VFMA(g12, -m0_5, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (m4_9 - m2_13);
         u = PTP_TRI4_VFMA(g2, m1_13, u);
         u = PTP_TRI4_VFMA(g4, -m1_9, u);
@@ -1512,7 +1521,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g0 * (m7_9);
         u = PTP_TRI4_VFMA(g7, -m0_9, u);
         u = PTP_TRI4_VFMA(g9, m0_7, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (m3_9);
         u = PTP_TRI4_VFMA(g3, -m2_9, u);
         u = PTP_TRI4_VFMA(g9, m2_3, u);
@@ -1523,7 +1533,9 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g5, m1_8 + m2_7, u);
         u = PTP_TRI4_VFMA(g7, -m2_5, u);
         u = PTP_TRI4_VFMA(g8, m2_4 - m1_5, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 13 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1548,7 +1560,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, m0_12, u);
         u = PTP_TRI4_VFMA(g12, -m0_9, u);
         u = PTP_TRI4_VFMA(g14, m2_3, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (-m5_13);
         u = PTP_TRI4_VFMA(g2, -m5_12, u);
         u = PTP_TRI4_VFMA(g3, -m5_9, u);
@@ -1556,7 +1568,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, -m3_5, u);
         u = PTP_TRI4_VFMA(g12, -m2_5, u);
         u = PTP_TRI4_VFMA(g13, -m1_5, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (m8_9);
         u = PTP_TRI4_VFMA(g2, m4_13, u);
         u = PTP_TRI4_VFMA(g4, -m2_13, u);
@@ -1567,7 +1580,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g2 * (m7_9);
         u = PTP_TRI4_VFMA(g7, -m2_9, u);
         u = PTP_TRI4_VFMA(g9, m2_7, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         u = g4 * (-m5_8);
         u = PTP_TRI4_VFMA(g5, m4_8, u);
         u = PTP_TRI4_VFMA(g8, -m4_5, u);
@@ -1586,9 +1599,10 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = -((g2 * m5_13 - g5 * m2_13) + g13 * m2_5);
         v += (u + u);
         u = ((g2 * m4_14 - g4 * m2_14) + g14 * m2_4);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
@@ -1604,7 +1618,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
         u -= ((g3 * m4_10 - g4 * m3_10) + g10 * m3_4);
-        v = PTP_TRI4_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
@@ -1623,7 +1637,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g3 * (-m5_10);
         u = PTP_TRI4_VFMA(g5, m3_10, u);
         u = PTP_TRI4_VFMA(g10, -m3_5, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_tri4_vf m7_11 = x7 * y11 - y7 * x11;
         u = g1 * (-m7_11);
         u = PTP_TRI4_VFMA(g2, m6_11, u);
@@ -1635,7 +1649,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (-m8_10);
         u = PTP_TRI4_VFMA(g8, m1_10, u);
         u = PTP_TRI4_VFMA(g10, -m1_8, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         const ptp_tri4_vf m6_12 = x6 * y12 - y6 * x12;
         u = g1 * (m6_12);
         u = PTP_TRI4_VFMA(g6, -m1_12, u);
@@ -1647,7 +1662,9 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g7, m4_6, u);
         u = PTP_TRI4_VFMA(g8, m3_6, u);
         u = PTP_TRI4_VFMA(g11, -m3_4, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 22 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1669,7 +1686,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g6, -m0_12, u);
         u = PTP_TRI4_VFMA(g10, -m1_5, u);
         u = PTP_TRI4_VFMA(g12, m0_6, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (m3_12);
         u = PTP_TRI4_VFMA(g2, m3_11, u);
         u = PTP_TRI4_VFMA(g3, -m1_12 - m2_11 - m5_6, u);
@@ -1677,7 +1694,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g6, -m3_5, u);
         u = PTP_TRI4_VFMA(g11, m2_3, u);
         u = PTP_TRI4_VFMA(g12, m1_3, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m4_11);
         u = PTP_TRI4_VFMA(g2, m6_7, u);
         u = PTP_TRI4_VFMA(g4, m1_11, u);
@@ -1688,7 +1706,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (m6_8);
         u = PTP_TRI4_VFMA(g6, -m1_8, u);
         u = PTP_TRI4_VFMA(g8, m1_6, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         u = g3 * (-m4_7);
         u = PTP_TRI4_VFMA(g4, m3_7, u);
         u = PTP_TRI4_VFMA(g7, -m3_4, u);
@@ -1713,12 +1731,12 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g7, -m0_12, u);
         u = PTP_TRI4_VFMA(g12, m0_7, u);
         u = PTP_TRI4_VFMA(g13, m0_6, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         const ptp_tri4_vf m8_11 = x8 * y11 - y8 * x11;
         u = g0 * (-m8_11);
         u = PTP_TRI4_VFMA(g8, m0_11, u);
         u = PTP_TRI4_VFMA(g11, -m0_8, u);
-        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         const ptp_tri4_vf m4_12 = x4 * y12 - y4 * x12;
         u = g1 * (m3_13 - m4_12);
         u = PTP_TRI4_VFMA(g3, -m1_13, u);
@@ -1727,7 +1745,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g6, -m4_5, u);
         u = PTP_TRI4_VFMA(g12, -m1_4, u);
         u = PTP_TRI4_VFMA(g13, m1_3, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (m6_9);
         u = PTP_TRI4_VFMA(g6, -m1_9, u);
         u = PTP_TRI4_VFMA(g9, m1_6, u);
@@ -1735,15 +1754,18 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (-m5_11);
         u = PTP_TRI4_VFMA(g5, m1_11, u);
         u = PTP_TRI4_VFMA(g11, -m1_5, u);
-        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = u + u;
+        v += ((u + u) + (u + u)) + u;
         u = g2 * (m3_12);
         u = PTP_TRI4_VFMA(g3, -m2_12, u);
         u = PTP_TRI4_VFMA(g12, m2_3, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (m6_8);
         u = PTP_TRI4_VFMA(g6, -m2_8, u);
         u = PTP_TRI4_VFMA(g8, m2_6, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         u = g3 * (-m4_8 - m5_7);
         u = PTP_TRI4_VFMA(g4, m3_8, u);
         u = PTP_TRI4_VFMA(g5, m3_7, u);
@@ -1773,11 +1795,11 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g5, m4_10, u);
         u = PTP_TRI4_VFMA(g9, m1_10, u);
         u = PTP_TRI4_VFMA(g10, -m1_9 - m4_5, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g2 * (-m8_10);
         u = PTP_TRI4_VFMA(g8, m2_10, u);
         u = PTP_TRI4_VFMA(g10, -m2_8, u);
-        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         u = g1 * (m7_12);
         u = PTP_TRI4_VFMA(g3, m6_9, u);
         u = PTP_TRI4_VFMA(g5, m6_7, u);
@@ -1785,7 +1807,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g7, m5_6 - m1_12, u);
         u = PTP_TRI4_VFMA(g9, m3_6, u);
         u = PTP_TRI4_VFMA(g12, m1_7, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (m6_13);
         u = PTP_TRI4_VFMA(g6, -m1_13, u);
         u = PTP_TRI4_VFMA(g13, m1_6, u);
@@ -1793,15 +1816,18 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g2 * (m6_12);
         u = PTP_TRI4_VFMA(g6, -m2_12, u);
         u = PTP_TRI4_VFMA(g12, m2_6, u);
-        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = u + u;
+        v += ((u + u) + (u + u)) + u;
         u = g3 * (-m5_11);
         u = PTP_TRI4_VFMA(g5, m3_11, u);
         u = PTP_TRI4_VFMA(g11, -m3_5, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (-m8_11);
         u = PTP_TRI4_VFMA(g8, m1_11, u);
         u = PTP_TRI4_VFMA(g11, -m1_8, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         u = g3 * (m7_8 - m4_12);
         u = PTP_TRI4_VFMA(g4, m3_12, u);
         u = PTP_TRI4_VFMA(g7, -m3_8, u);
@@ -1828,7 +1854,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g3 * (-m5_14);
         u = PTP_TRI4_VFMA(g5, m3_14, u);
         u = PTP_TRI4_VFMA(g14, -m3_5, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (-m9_13);
         u = PTP_TRI4_VFMA(g2, m8_13, u);
         u = PTP_TRI4_VFMA(g8, -m2_13, u);
@@ -1838,7 +1864,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g2 * (m7_14);
         u = PTP_TRI4_VFMA(g7, -m2_14, u);
         u = PTP_TRI4_VFMA(g14, m2_7, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (-m9_12);
         u = PTP_TRI4_VFMA(g9, m2_12, u);
         u = PTP_TRI4_VFMA(g12, -m2_9, u);
@@ -1849,7 +1876,9 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, -m4_9, u);
         u = PTP_TRI4_VFMA(g9, m4_8 + m5_7, u);
         u = PTP_TRI4_VFMA(g13, -m4_5, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 26 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1863,7 +1892,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = ((g2 * m8_14 - g8 * m2_14) + g14 * m2_8);
         u -= ((g4 * m5_14 - g5 * m4_14) + g14 * m4_5);
-        v = PTP_TRI4_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
@@ -1876,7 +1905,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
         v += (u + u);
         u = -((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 28 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1892,7 +1921,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g7, m4_10, u);
         u = PTP_TRI4_VFMA(g10, -m1_12 - m4_7, u);
         u = PTP_TRI4_VFMA(g12, m1_10, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g3 * (m6_12 - m7_11 - m8_10);
         u = PTP_TRI4_VFMA(g6, -m3_12, u);
         u = PTP_TRI4_VFMA(g7, m3_11, u);
@@ -1900,7 +1929,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g10, -m3_8, u);
         u = PTP_TRI4_VFMA(g11, -m3_7, u);
         u = PTP_TRI4_VFMA(g12, m3_6, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (m6_11);
         u = PTP_TRI4_VFMA(g6, -m4_11, u);
         u = PTP_TRI4_VFMA(g11, m4_6, u);
@@ -1928,14 +1958,15 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g4 * (-m8_10);
         u = PTP_TRI4_VFMA(g8, m4_10, u);
         u = PTP_TRI4_VFMA(g10, -m4_8, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g3 * (-m8_11);
         u = PTP_TRI4_VFMA(g4, m6_12, u);
         u = PTP_TRI4_VFMA(g6, -m4_12, u);
         u = PTP_TRI4_VFMA(g8, m3_11, u);
         u = PTP_TRI4_VFMA(g11, -m3_8, u);
         u = PTP_TRI4_VFMA(g12, m4_6, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 30 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1955,11 +1986,11 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m5_10, u);
         u = PTP_TRI4_VFMA(g10, -m2_13 - m5_8, u);
         u = PTP_TRI4_VFMA(g13, m2_10, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g4 * (-m9_10);
         u = PTP_TRI4_VFMA(g9, m4_10, u);
         u = PTP_TRI4_VFMA(g10, -m4_9, u);
-        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         u = g2 * (m11_12);
         const ptp_tri4_vf m7_13 = x7 * y13 - y7 * x13;
         u = PTP_TRI4_VFMA(g3, m7_13, u);
@@ -1968,7 +1999,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, m5_7 - m2_12, u);
         u = PTP_TRI4_VFMA(g12, m2_11, u);
         u = PTP_TRI4_VFMA(g13, m3_7, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         const ptp_tri4_vf m11_13 = x11 * y13 - y11 * x13;
         u = g1 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m1_13, u);
@@ -1978,15 +2010,18 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g3 * (-m9_11);
         u = PTP_TRI4_VFMA(g9, m3_11, u);
         u = PTP_TRI4_VFMA(g11, -m3_9, u);
-        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = u + u;
+        v += ((u + u) + (u + u)) + u;
         u = g5 * (m6_12);
         u = PTP_TRI4_VFMA(g6, -m5_12, u);
         u = PTP_TRI4_VFMA(g12, m5_6, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (m6_13);
         u = PTP_TRI4_VFMA(g6, -m4_13, u);
         u = PTP_TRI4_VFMA(g13, m4_6, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         const ptp_tri4_vf m8_12 = x8 * y12 - y8 * x12;
         u = g3 * (-m8_12);
         u = PTP_TRI4_VFMA(g4, m7_12, u);
@@ -2016,11 +2051,11 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g7, -m3_14, u);
         u = PTP_TRI4_VFMA(g11, -m1_14, u);
         u = PTP_TRI4_VFMA(g14, m1_11 + m3_7, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g4 * (m6_14);
         u = PTP_TRI4_VFMA(g6, -m4_14, u);
         u = PTP_TRI4_VFMA(g14, m4_6, u);
-        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         const ptp_tri4_vf m12_13 = x12 * y13 - y12 * x13;
         u = g1 * (m12_13);
         u = PTP_TRI4_VFMA(g3, -m8_13, u);
@@ -2029,7 +2064,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, -m5_8, u);
         u = PTP_TRI4_VFMA(g12, -m1_13, u);
         u = PTP_TRI4_VFMA(g13, m1_12 - m3_8, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m2_13, u);
         u = PTP_TRI4_VFMA(g13, m2_11, u);
@@ -2037,15 +2073,18 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g5 * (m6_13);
         u = PTP_TRI4_VFMA(g6, -m5_13, u);
         u = PTP_TRI4_VFMA(g13, m5_6, u);
-        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = u + u;
+        v += ((u + u) + (u + u)) + u;
         u = g3 * (-m9_12);
         u = PTP_TRI4_VFMA(g9, m3_12, u);
         u = PTP_TRI4_VFMA(g12, -m3_9, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (-m9_11);
         u = PTP_TRI4_VFMA(g9, m4_11, u);
         u = PTP_TRI4_VFMA(g11, -m4_9, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         u = g4 * (-m8_12);
         u = PTP_TRI4_VFMA(g5, m7_12, u);
         u = PTP_TRI4_VFMA(g7, -m5_12, u);
@@ -2079,14 +2118,15 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g4 * (m7_14);
         u = PTP_TRI4_VFMA(g7, -m4_14, u);
         u = PTP_TRI4_VFMA(g14, m4_7, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g4 * (-m9_12);
         u = PTP_TRI4_VFMA(g5, m7_13, u);
         u = PTP_TRI4_VFMA(g7, -m5_13, u);
         u = PTP_TRI4_VFMA(g9, m4_12, u);
         u = PTP_TRI4_VFMA(g12, -m4_9, u);
         u = PTP_TRI4_VFMA(g13, m5_7, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 33 * ds + l, v * 0.190476194f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2102,7 +2142,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, -m4_14, u);
         u = PTP_TRI4_VFMA(g12, -m2_14, u);
         u = PTP_TRI4_VFMA(g14, m2_12 + m4_8, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g5 * (m8_13 + m7_14 - m9_12);
         u = PTP_TRI4_VFMA(g7, -m5_14, u);
         u = PTP_TRI4_VFMA(g8, -m5_13, u);
@@ -2110,7 +2150,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g12, -m5_9, u);
         u = PTP_TRI4_VFMA(g13, m5_8, u);
         u = PTP_TRI4_VFMA(g14, m5_7, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g4 * (-m9_13);
         u = PTP_TRI4_VFMA(g9, m4_13, u);
         u = PTP_TRI4_VFMA(g13, -m4_9, u);
@@ -2125,7 +2166,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = -((g5 * m9_13 - g9 * m5_13) + g13 * m5_9);
         v += (u + u);
         u = ((g5 * m8_14 - g8 * m5_14) + g14 * m5_8);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 35 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2146,7 +2187,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g3 * (m10_12);
         u = PTP_TRI4_VFMA(g10, -m3_12, u);
         u = PTP_TRI4_VFMA(g12, m3_10, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g6 * (-m7_11);
         u = PTP_TRI4_VFMA(g7, m6_11, u);
         u = PTP_TRI4_VFMA(g11, -m6_7, u);
@@ -2166,7 +2207,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m7_10, u);
         u = PTP_TRI4_VFMA(g10, -m3_13 - m7_8, u);
         u = PTP_TRI4_VFMA(g13, m3_10, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g3 * (m11_12);
         u = PTP_TRI4_VFMA(g4, m10_12, u);
         u = PTP_TRI4_VFMA(g6, -m7_12, u);
@@ -2174,7 +2215,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g10, -m4_12, u);
         u = PTP_TRI4_VFMA(g11, -m3_12, u);
         u = PTP_TRI4_VFMA(g12, m3_11 + m4_10 - m6_7, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g6 * (-m8_11);
         u = PTP_TRI4_VFMA(g8, m6_11, u);
         u = PTP_TRI4_VFMA(g11, -m6_8, u);
@@ -2194,7 +2236,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g5 * (m10_12);
         u = PTP_TRI4_VFMA(g10, -m5_12, u);
         u = PTP_TRI4_VFMA(g12, m5_10, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g6 * (-m9_11 - m7_13);
         u = PTP_TRI4_VFMA(g7, m6_13, u);
         u = PTP_TRI4_VFMA(g9, m6_11, u);
@@ -2204,7 +2246,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g4 * (m10_13);
         u = PTP_TRI4_VFMA(g10, -m4_13, u);
         u = PTP_TRI4_VFMA(g13, m4_10, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g3 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m3_13, u);
         u = PTP_TRI4_VFMA(g13, m3_11, u);
@@ -2215,7 +2258,9 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m7_11 + m6_12, u);
         u = PTP_TRI4_VFMA(g11, -m7_8 - m4_12, u);
         u = PTP_TRI4_VFMA(g12, m4_11 - m6_8, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 39 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2237,7 +2282,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, -m3_14, u);
         u = PTP_TRI4_VFMA(g13, m5_10, u);
         u = PTP_TRI4_VFMA(g14, m3_11, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g3 * (m12_13);
         u = PTP_TRI4_VFMA(g5, m11_12, u);
         u = PTP_TRI4_VFMA(g6, -m9_12, u);
@@ -2245,7 +2290,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g11, -m5_12, u);
         u = PTP_TRI4_VFMA(g12, m5_11 - m3_13 - m6_9, u);
         u = PTP_TRI4_VFMA(g13, m3_12, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g6 * (-m8_13);
         u = PTP_TRI4_VFMA(g7, -m9_11, u);
         u = PTP_TRI4_VFMA(g8, m6_13, u);
@@ -2256,7 +2302,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g4 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m4_13, u);
         u = PTP_TRI4_VFMA(g13, m4_11, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         u = g7 * (-m8_12);
         u = PTP_TRI4_VFMA(g8, m7_12, u);
         u = PTP_TRI4_VFMA(g12, -m7_8, u);
@@ -2276,7 +2322,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g3 * (m12_14);
         u = PTP_TRI4_VFMA(g12, -m3_14, u);
         u = PTP_TRI4_VFMA(g14, m3_12, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g6 * (-m9_13);
         u = PTP_TRI4_VFMA(g8, -m9_11, u);
         u = PTP_TRI4_VFMA(g9, m6_13 + m8_11, u);
@@ -2286,7 +2332,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g4 * (m11_14);
         u = PTP_TRI4_VFMA(g11, -m4_14, u);
         u = PTP_TRI4_VFMA(g14, m4_11, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g5 * (m11_13);
         u = PTP_TRI4_VFMA(g11, -m5_13, u);
         u = PTP_TRI4_VFMA(g13, m5_11, u);
@@ -2297,7 +2344,9 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, m7_12, u);
         u = PTP_TRI4_VFMA(g12, -m4_13 - m7_9, u);
         u = PTP_TRI4_VFMA(g13, m4_12 - m7_8, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 41 * ds + l, v * 0.095238097f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2313,7 +2362,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m7_14, u);
         u = PTP_TRI4_VFMA(g11, -m5_14, u);
         u = PTP_TRI4_VFMA(g14, m5_11 - m7_8, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g4 * (m12_14);
         u = PTP_TRI4_VFMA(g5, m12_13, u);
         u = PTP_TRI4_VFMA(g8, -m9_12, u);
@@ -2321,7 +2370,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g12, -m4_14 - m5_13 - m8_9, u);
         u = PTP_TRI4_VFMA(g13, m5_12, u);
         u = PTP_TRI4_VFMA(g14, m4_12, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g7 * (-m9_13);
         u = PTP_TRI4_VFMA(g9, m7_13, u);
         u = PTP_TRI4_VFMA(g13, -m7_9, u);
@@ -2339,7 +2389,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g5 * (m12_14);
         u = PTP_TRI4_VFMA(g12, -m5_14, u);
         u = PTP_TRI4_VFMA(g14, m5_12, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g8 * (-m9_13);
         u = PTP_TRI4_VFMA(g9, m8_13, u);
         u = PTP_TRI4_VFMA(g13, -m8_9, u);
@@ -2374,7 +2424,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g6 * m11_12 - g11 * m6_12) + g12 * m6_11);
         v += (u + u);
         u = ((g7 * m10_12 - g10 * m7_12) + g12 * m7_10);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 47 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2386,7 +2436,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = ((g7 * m10_13 - g10 * m7_13) + g13 * m7_10);
         u += ((g8 * m10_12 - g10 * m8_12) + g12 * m8_10);
-        v = PTP_TRI4_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = ((g7 * m11_12 - g11 * m7_12) + g12 * m7_11);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
@@ -2400,9 +2450,10 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g6 * m12_13 - g12 * m6_13) + g13 * m6_12);
         v += (u + u);
         u = ((g8 * m10_13 - g10 * m8_13) + g13 * m8_10);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g8 * m11_12 - g11 * m8_12) + g12 * m8_11);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g7 * m11_13 - g11 * m7_13) + g13 * m7_11);
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
@@ -2416,9 +2467,10 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g9 * m11_12 - g11 * m9_12) + g12 * m9_11);
         v += (u + u);
         u = ((g7 * m11_14 - g11 * m7_14) + g14 * m7_11);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = ((g7 * m12_13 - g12 * m7_13) + g13 * m7_12);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = ((g8 * m11_13 - g11 * m8_13) + g13 * m8_11);
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
@@ -2432,7 +2484,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         u = ((g7 * m12_14 - g12 * m7_14) + g14 * m7_12);
         u += ((g8 * m11_14 - g11 * m8_14) + g14 * m8_11);
-        v = PTP_TRI4_VFMAS(9.0f, u, v);
+        v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
@@ -2445,7 +2497,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
         v += (u + u);
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 52 * ds + l, v * 1.33333337f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -2476,11 +2528,11 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g4, m3_14, u);
         u = PTP_TRI4_VFMA(g6, -m2_14, u);
         u = PTP_TRI4_VFMA(g14, m2_6 - m3_4, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g1 * (m7_14);
         u = PTP_TRI4_VFMA(g7, -m1_14, u);
         u = PTP_TRI4_VFMA(g14, m1_7, u);
-        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         u = g2 * (-m8_12);
         u = PTP_TRI4_VFMA(g3, m8_9, u);
         u = PTP_TRI4_VFMA(g5, m6_9, u);
@@ -2488,7 +2540,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g8, m2_12 - m3_9, u);
         u = PTP_TRI4_VFMA(g9, m5_6 + m3_8, u);
         u = PTP_TRI4_VFMA(g12, -m2_8, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (-m9_11);
         u = PTP_TRI4_VFMA(g9, m2_11, u);
         u = PTP_TRI4_VFMA(g11, -m2_9, u);
@@ -2496,15 +2549,18 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g1 * (-m9_12);
         u = PTP_TRI4_VFMA(g9, m1_12, u);
         u = PTP_TRI4_VFMA(g12, -m1_9, u);
-        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = u + u;
+        v += ((u + u) + (u + u)) + u;
         u = g3 * (-m5_13);
         u = PTP_TRI4_VFMA(g5, m3_13, u);
         u = PTP_TRI4_VFMA(g13, -m3_5, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (m7_13);
         u = PTP_TRI4_VFMA(g7, -m2_13, u);
         u = PTP_TRI4_VFMA(g13, m2_7, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         u = g4 * (-m5_12);
         u = PTP_TRI4_VFMA(g5, m7_8 + m4_12, u);
         u = PTP_TRI4_VFMA(g7, -m5_8, u);
@@ -2532,11 +2588,11 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, m0_11, u);
         u = PTP_TRI4_VFMA(g11, -m0_9, u);
         u = PTP_TRI4_VFMA(g12, -m0_8, u);
-        v = PTP_TRI4_VFMAS(3.0f, u, v);
+        v += (u + u) + u;
         u = g0 * (m7_13);
         u = PTP_TRI4_VFMA(g7, -m0_13, u);
         u = PTP_TRI4_VFMA(g13, m0_7, u);
-        v = PTP_TRI4_VFMAS(5.0f, u, v);
+        v += ((u + u) + (u + u)) + u;
         u = g2 * (m4_12 - m5_11);
         u = PTP_TRI4_VFMA(g3, -m4_9, u);
         u = PTP_TRI4_VFMA(g4, m3_9 - m2_12, u);
@@ -2544,7 +2600,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = PTP_TRI4_VFMA(g9, -m3_4, u);
         u = PTP_TRI4_VFMA(g11, -m2_5, u);
         u = PTP_TRI4_VFMA(g12, m2_4, u);
-        v = PTP_TRI4_VFMAS(6.0f, u, v);
+        u = u + u;
+        v += (u + u) + u;
         u = g2 * (m6_9);
         u = PTP_TRI4_VFMA(g6, -m2_9, u);
         u = PTP_TRI4_VFMA(g9, m2_6, u);
@@ -2552,15 +2609,18 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         u = g2 * (m3_13);
         u = PTP_TRI4_VFMA(g3, -m2_13, u);
         u = PTP_TRI4_VFMA(g13, m2_3, u);
-        v = PTP_TRI4_VFMAS(10.0f, u, v);
+        u = u + u;
+        v += ((u + u) + (u + u)) + u;
         u = g1 * (-m5_12);
         u = PTP_TRI4_VFMA(g5, m1_12, u);
         u = PTP_TRI4_VFMA(g12, -m1_5, u);
-        v = PTP_TRI4_VFMAS(12.0f, u, v);
+        u = u + u;
+        u = u + u;
+        v += (u + u) + u;
         u = g1 * (m7_9);
         u = PTP_TRI4_VFMA(g7, -m1_9, u);
         u = PTP_TRI4_VFMA(g9, m1_7, u);
-        v = PTP_TRI4_VFMAS(16.0f, u, v);
+        v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         u = g3 * (-m5_8);
         u = PTP_TRI4_VFMA(g4, -m5_7, u);
         u = PTP_TRI4_VFMA(g5, m4_7 + m3_8, u);
