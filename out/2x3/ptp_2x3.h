@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_2X3_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_2X3_FLOPS 1474
-#define PTP_2X3_MULS 794
+#define PTP_2X3_FLOPS 1442
+#define PTP_2X3_MULS 792
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_2X3_LANES
 #define PTP_2X3_LANES 16
@@ -972,19 +972,37 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
         const ptp_2x3_vf m4_11 = x4 * y11 - y4 * x11;
-        const ptp_2x3_vf m0_11 = x0 * y11 - y0 * x11;
-        u = ((g0 * m4_11 - g4 * m0_11) + g11 * m0_4);
-        u += ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
-        v = u;
         const ptp_2x3_vf m7_8 = x7 * y8 - y7 * x8;
-        u = -((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
-        v += (u + u);
         const ptp_2x3_vf m6_9 = x6 * y9 - y6 * x9;
-        u = -((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
-        u += ((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
-        u -= ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
-        u += ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = m4_11;
+        u = PTP_2X3_VFMAS(2.0f, -m7_8, u);
+        u = PTP_2X3_VFMAS(9.0f, -m6_9, u);
+        v = g0 * u;
+        u = 9.0f * (m4_10 - m6_8);
+        v = PTP_2X3_VFMA(g1, u, v);
+        u = 9.0f * (m4_9);
+        v = PTP_2X3_VFMA(g2, u, v);
+        u = m4_8;
+        v = PTP_2X3_VFMA(g3, u, v);
+        const ptp_2x3_vf m0_11 = x0 * y11 - y0 * x11;
+        u = -m3_8 - m0_11;
+        u = PTP_2X3_VFMAS(9.0f, -m1_10 - m2_9, u);
+        v = PTP_2X3_VFMA(g4, u, v);
+        u = 9.0f * (m1_8 + m0_9);
+        v = PTP_2X3_VFMA(g6, u, v);
+        u = (m0_8);
+        u += u;
+        v = PTP_2X3_VFMA(g7, u, v);
+        u = m3_4;
+        u = PTP_2X3_VFMAS(2.0f, -m0_7, u);
+        u = PTP_2X3_VFMAS(9.0f, -m1_6, u);
+        v = PTP_2X3_VFMA(g8, u, v);
+        u = 9.0f * (m2_4 - m0_6);
+        v = PTP_2X3_VFMA(g9, u, v);
+        u = 9.0f * (m1_4);
+        v = PTP_2X3_VFMA(g10, u, v);
+        u = m0_4;
+        v = PTP_2X3_VFMA(g11, u, v);
         if (d)
             ptp_2x3_vstoref(d + 18 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1411,16 +1429,34 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
             ptp_2x3_vstoref(d + 39 * ds + l, v * 6.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 39 */
-        u = -((g0 * m7_11 - g7 * m0_11) + g11 * m0_7);
-        u -= ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
-        v = u;
-        u = ((g3 * m4_11 - g4 * m3_11) + g11 * m3_4);
-        v += (u + u);
-        u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
-        u += ((g2 * m5_11 - g5 * m2_11) + g11 * m2_5);
-        u -= ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
-        u += ((g3 * m5_10 - g5 * m3_10) + g10 * m3_5);
-        v = PTP_2X3_VFMAS(9.0f, u, v);
+        u = -m7_11;
+        v = g0 * u;
+        u = 9.0f * (-m7_10);
+        v = PTP_2X3_VFMA(g1, u, v);
+        u = 9.0f * (m5_11 - m7_9);
+        v = PTP_2X3_VFMA(g2, u, v);
+        u = -m7_8;
+        u = PTP_2X3_VFMAS(2.0f, m4_11, u);
+        u = PTP_2X3_VFMAS(9.0f, m5_10, u);
+        v = PTP_2X3_VFMA(g3, u, v);
+        u = (-m3_11);
+        u += u;
+        v = PTP_2X3_VFMA(g4, u, v);
+        u = 9.0f * (-m2_11 - m3_10);
+        v = PTP_2X3_VFMA(g5, u, v);
+        u = m3_8 + m0_11;
+        u = PTP_2X3_VFMAS(9.0f, m1_10 + m2_9, u);
+        v = PTP_2X3_VFMA(g7, u, v);
+        u = -m3_7;
+        v = PTP_2X3_VFMA(g8, u, v);
+        u = 9.0f * (-m2_7);
+        v = PTP_2X3_VFMA(g9, u, v);
+        u = 9.0f * (m3_5 - m1_7);
+        v = PTP_2X3_VFMA(g10, u, v);
+        u = -m0_7;
+        u = PTP_2X3_VFMAS(2.0f, m3_4, u);
+        u = PTP_2X3_VFMAS(9.0f, m2_5, u);
+        v = PTP_2X3_VFMA(g11, u, v);
         if (d)
             ptp_2x3_vstoref(d + 21 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;

@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_3X2_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_3X2_FLOPS 1474
-#define PTP_3X2_MULS 794
+#define PTP_3X2_FLOPS 1442
+#define PTP_3X2_MULS 792
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X2_LANES
 #define PTP_3X2_LANES 16
@@ -953,18 +953,36 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 11 * ds + l, v * 0.0714285746f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
-        const ptp_3x2_vf m0_11 = x0 * y11 - y0 * x11;
-        u = -((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
-        u -= ((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
-        v = u;
         const ptp_3x2_vf m2_10 = x2 * y10 - y2 * x10;
-        u = -((g0 * m2_10 - g2 * m0_10) + g10 * m0_2);
-        v += (u + u);
-        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        u += ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
-        u -= ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        u = -m1_11;
+        u = PTP_3X2_VFMAS(2.0f, -m2_10, u);
+        u = PTP_3X2_VFMAS(9.0f, -m5_7, u);
+        v = g0 * u;
+        const ptp_3x2_vf m0_11 = x0 * y11 - y0 * x11;
+        u = m0_11 - m2_9;
+        u = PTP_3X2_VFMAS(9.0f, m3_8 - m5_6, u);
+        v = PTP_3X2_VFMA(g1, u, v);
+        u = m1_9;
+        u = PTP_3X2_VFMAS(2.0f, m0_10, u);
+        u = PTP_3X2_VFMAS(9.0f, m3_7, u);
+        v = PTP_3X2_VFMA(g2, u, v);
+        u = 9.0f * (-m1_8 - m2_7);
+        v = PTP_3X2_VFMA(g3, u, v);
+        u = 9.0f * (m1_6 + m0_7);
+        v = PTP_3X2_VFMA(g5, u, v);
+        u = 9.0f * (-m1_5);
+        v = PTP_3X2_VFMA(g6, u, v);
+        u = 9.0f * (m2_3 - m0_5);
+        v = PTP_3X2_VFMA(g7, u, v);
+        u = 9.0f * (m1_3);
+        v = PTP_3X2_VFMA(g8, u, v);
+        u = -m1_2;
+        v = PTP_3X2_VFMA(g9, u, v);
+        u = (-m0_2);
+        u += u;
+        v = PTP_3X2_VFMA(g10, u, v);
+        u = -m0_1;
+        v = PTP_3X2_VFMA(g11, u, v);
         if (d)
             ptp_3x2_vstoref(d + 12 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -1223,16 +1241,34 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 26 */
         const ptp_3x2_vf m10_11 = x10 * y11 - y10 * x11;
-        u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
-        u += ((g2 * m9_10 - g9 * m2_10) + g10 * m2_9);
-        v = u;
-        u = ((g1 * m9_11 - g9 * m1_11) + g11 * m1_9);
-        v += (u + u);
-        u = -((g3 * m8_10 - g8 * m3_10) + g10 * m3_8);
-        u += ((g4 * m6_11 - g6 * m4_11) + g11 * m4_6);
-        u -= ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
-        u += ((g5 * m6_10 - g6 * m5_10) + g10 * m5_6);
-        v = PTP_3X2_VFMAS(9.0f, u, v);
+        u = m10_11;
+        v = g0 * u;
+        u = (m9_11);
+        u += u;
+        v = PTP_3X2_VFMA(g1, u, v);
+        u = m9_10;
+        v = PTP_3X2_VFMA(g2, u, v);
+        u = 9.0f * (-m8_10);
+        v = PTP_3X2_VFMA(g3, u, v);
+        u = 9.0f * (m6_11 - m8_9);
+        v = PTP_3X2_VFMA(g4, u, v);
+        u = 9.0f * (m6_10);
+        v = PTP_3X2_VFMA(g5, u, v);
+        u = 9.0f * (-m4_11 - m5_10);
+        v = PTP_3X2_VFMA(g6, u, v);
+        u = 9.0f * (m3_10 + m4_9);
+        v = PTP_3X2_VFMA(g8, u, v);
+        u = -m2_10;
+        u = PTP_3X2_VFMAS(2.0f, -m1_11, u);
+        u = PTP_3X2_VFMAS(9.0f, -m4_8, u);
+        v = PTP_3X2_VFMA(g9, u, v);
+        u = m2_9 - m0_11;
+        u = PTP_3X2_VFMAS(9.0f, m5_6 - m3_8, u);
+        v = PTP_3X2_VFMA(g10, u, v);
+        u = m0_10;
+        u = PTP_3X2_VFMAS(2.0f, m1_9, u);
+        u = PTP_3X2_VFMAS(9.0f, m4_6, u);
+        v = PTP_3X2_VFMA(g11, u, v);
         if (d)
             ptp_3x2_vstoref(d + 27 * ds + l, v * 0.0476190485f, n - l);
         notlt |= (v < 0.0f) == 0;
