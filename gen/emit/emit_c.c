@@ -7,6 +7,7 @@
 #include "plan/cert.h"
 #include "plan/slp.h"
 #include "plan/slp_order.h"
+#include "plan/slp_point.h"
 #include "emit/template.h"
 
 #include <stdio.h>
@@ -199,6 +200,60 @@ static size_t put_fused(sbuf *o, const slp_prog *p, size_t a, int world, const c
         put_group_end(o, &p->s[p->entries[g].group], first_group, up);
     }
     return g;
+}
+
+/* u's update by the class of items [a, b) of kind letter m at |coef| c (slp_point.h): their
+ * signed sum, times c by adds (slp_point_by_adds) or a product; assigned for the first class. */
+static void put_point_class(sbuf *o, const slp_prog *p, size_t a, size_t b, char m, int first,
+                            const char *up)
+{
+    long c = labs(p->items[a].coef);
+    int adds = slp_point_by_adds(c, first), n = 0;
+    size_t i;
+    if (!adds && first)
+        sbuf_printf(o, "        u = %ld.0f * (", c);
+    else if (!adds)
+        sbuf_printf(o, "        u = %sVFMAS(%ld.0f, ", up, c);
+    else
+        sbuf_printf(o, "        u %s %s", first ? "=" : "+=", c == 2 ? "(" : "");
+    for (i = a; i < b; i++) {
+        const slp_item *x = &p->items[i];
+        const slp_pair *q = &p->pairs[x->pair];
+        sbuf_printf(o, "%s%c%d_%d", n++ ? (x->coef < 0 ? " - " : " + ") : x->coef < 0 ? "-" : "",
+                    m, q->k, q->l);
+    }
+    if (adds && c == 2) /* first: u = t + t */
+        sbuf_puts(o, ");\n        u += u;\n");
+    else
+        sbuf_puts(o, adds ? ";\n" : first ? ");\n" : ", u);\n");
+}
+
+/* A point-form plane from item a (slp_point.h): per point and kind, u from the classes, then
+ * v = G u or v = fma(G, u, v); returns the end of the plane's items. */
+static size_t put_point_form(sbuf *o, const slp_prog *p, size_t a, int world, const char *px,
+                             const char *up, unsigned char *done)
+{
+    size_t e = slp_point_plane_end(p->items, p->nitems, a), f, fe, c, ce, i;
+    int k;
+    for (f = a; f < e; f = fe) {
+        int pt = p->items[f].point;
+        fe = slp_point_factor_end(p->items, p->nitems, f);
+        for (i = f; i < fe; i++) /* the minors and the point declared where first used */
+            put_minor(o, p, p->items[i].pair, world, px, done);
+        put_point(o, p, pt, world, px, done);
+        for (k = 0; k < (world ? 2 : 1); k++) {
+            char gl = world ? (k ? 'b' : 'a') : 'g', ml = world && !k ? 'n' : 'm';
+            for (c = f; c < fe; c = ce) {
+                ce = slp_point_class_end(p->items, p->nitems, c);
+                put_point_class(o, p, c, ce, ml, c == f, up);
+            }
+            if (f == a && k == 0)
+                sbuf_printf(o, "        v = %c%d * u;\n", gl, pt);
+            else
+                sbuf_printf(o, "        v = %sVFMA(%c%d, u, v);\n", up, gl, pt);
+        }
+    }
+    return e;
 }
 
 /* The statements of term i: its group's sum u and, at the end of a group, the plane's v
@@ -626,7 +681,8 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
 {
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD, n = 0, k, st;
-    size_t *term = malloc(((size_t)p->nplanes + 1) * 2 * sizeof *term), *entry = term + p->nplanes, i;
+    size_t *term = malloc(((size_t)p->nplanes + 1) * 3 * sizeof *term), *entry = term + p->nplanes,
+           *item = entry + p->nplanes, i;
     int *order = malloc(((size_t)p->nplanes + 1) * sizeof *order);
     if (!term || !order) {
         st = ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
@@ -636,13 +692,17 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
         term[p->terms[i].plane] = i;
     for (i = p->nentries; i-- > 0;)
         entry[p->entries[i].plane] = i;
+    for (i = p->nitems; i-- > 0;)
+        item[p->items[i].plane] = i;
     if ((st = slp_order(order, &n, p, SLP_ORDER_CAP, SLP_ORDER_WIN, err)) != PTP_OK)
         goto out;
     for (k = 0; k < n; k++) {
-        if (p->exact[order[k]])
+        if (p->form[order[k]] == SLP_BRACKET)
             put_exact(o, p, term[order[k]], world, px, up, done);
-        else
+        else if (p->form[order[k]] == SLP_FUSED)
             put_fused(o, p, entry[order[k]], world, px, up, done);
+        else
+            put_point_form(o, p, item[order[k]], world, px, up, done);
         put_value_store(o, p, order[k], px);
         put_masks(o, p, cb, info, order[k], k == 0);
     }

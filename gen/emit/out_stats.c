@@ -45,23 +45,26 @@ static void put_schedule(sbuf *o, const tp_table *t, const sched *s)
                 (long)s->rounds * s->threads, 100.0 * (double)t->nterms / ((double)s->rounds * s->threads));
 }
 
-/* The C header's straight-line program: its exact and fused planes, and the operations per
- * patch in clip and world space: all of them, those on the multiply pipes and those on the adders. */
+/* The C header's straight-line program: its exact, fused and point-form planes, and the
+ * operations per patch in clip and world space: all of them, those on the multiply pipes and
+ * those on the adders. */
 static int put_slp(sbuf *o, const tp_table *t, ptp_error *err)
 {
     slp_prog p;
     size_t i, exact_terms = 0;
-    int P, exact = 0, st = slp_build(&p, t, err);
+    int P, exact = 0, point = 0, st = slp_build(&p, t, err);
     if (st)
         return st;
-    for (P = 0; P < p.nplanes; P++)
-        exact += p.exact[P];
+    for (P = 0; P < p.nplanes; P++) {
+        exact += (p.form[P] == SLP_BRACKET);
+        point += (p.form[P] == SLP_POINT);
+    }
     for (i = 0; i < p.nterms; i++)
-        exact_terms += p.exact[p.terms[i].plane];
-    sbuf_printf(o, "C straight-line code: %d exact planes (%zu terms), %d fused; per patch %ld flops, "
-                   "%ld on the multiply pipes, %ld on the add pipes (clip space), %ld, %ld and %ld "
-                   "(world space)\n",
-                exact, exact_terms, p.nplanes - exact, slp_flops(&p, 0), slp_muls(&p, 0),
+        exact_terms += (p.form[p.terms[i].plane] == SLP_BRACKET);
+    sbuf_printf(o, "C straight-line code: %d exact planes (%zu terms), %d fused, %d in the point form; "
+                   "per patch %ld flops, %ld on the multiply pipes, %ld on the add pipes (clip space), "
+                   "%ld, %ld and %ld (world space)\n",
+                exact, exact_terms, p.nplanes - exact - point, point, slp_flops(&p, 0), slp_muls(&p, 0),
                 slp_adds(&p, 0), slp_flops(&p, 1), slp_muls(&p, 1), slp_adds(&p, 1));
     slp_clear(&p);
     return PTP_OK;

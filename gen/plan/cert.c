@@ -1,6 +1,7 @@
 /* cert.c: per-plane constants of the certified classification, computed in double from the
  * exact weights and rounded up to float; the derivation is in README (Certified classification). */
 #include "plan/cert.h"
+#include "plan/slp_point.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -237,6 +238,17 @@ static size_t exact_sums(double *d, double *D, const slp_prog *p, size_t a, int 
     return g;
 }
 
+/* Point-form plane P from item a (README: Certified): d[P] and D[P] from slp_point_plane, which
+ * follows the code as emitted. */
+static void point_sums(double *d, double *D, const slp_prog *p, size_t a, int world)
+{
+    int P = p->items[a].plane;
+    slp_point_sum s;
+    slp_point_plane(&s, p->items + a, slp_point_plane_end(p->items, p->nitems, a) - a, world);
+    d[P] = s.dmax;
+    D[P] = s.dsum * (1 + 0x1p-50);
+}
+
 int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
 {
     /* u2: the largest relative error of the double-float + - * and of the weights' hi + lo (at
@@ -274,12 +286,14 @@ int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)
         n[x->plane] += world ? 32 : 12;
     }
     for (i = 0; i < p->nterms;)
-        if (p->exact[p->terms[i].plane])
+        if (p->form[p->terms[i].plane] == SLP_BRACKET)
             i = exact_sums(d, D, p, i, world);
         else
             i++;
     for (i = 0; i < p->nentries; i = slp_plane_end(p, i))
         fused_sums(d, D, p, i, world);
+    for (i = 0; i < p->nitems; i = slp_point_plane_end(p->items, p->nitems, i))
+        point_sums(d, D, p, i, world);
     fill(b, d, D, S, n, world, 0x1p-150, 0x1p-24); /* IEEE float with subnormals */
     free(d);
     return PTP_OK;

@@ -2,6 +2,7 @@
  * weights grouped by value, the 2x2 minors that terms share, and the planes a collapsed edge zeros. */
 #include "plan/slp.h"
 #include "plan/slp_cost.h"
+#include "plan/slp_point.h"
 #include "core/i128.h"
 
 #include <stdlib.h>
@@ -74,26 +75,37 @@ static int by_entry(const void *a, const void *b)
     return (x->pair > y->pair) - (x->pair < y->pair);
 }
 
-/* Marks each plane exact or fused (the zero planes exact, the others by slp_cost_forms) and
- * lists the fused planes' entries (p->entries holds 3 nterms). */
-static void plan_forms(slp_prog *p, const tp_domain *d)
+/* Chooses each plane's form (slp_cost_forms), then lists the fused planes' entries (p->entries
+ * holds 3 nterms) and the point-form planes' items (p->items holds 3 nterms). */
+static int plan_forms(slp_prog *p, const tp_domain *d)
 {
-    size_t a, b, i;
-    int k;
+    size_t a, b, i, n;
+    int k, st;
     for (a = 0; a < p->nterms; a = b) {
         for (b = a; b < p->nterms && p->terms[b].plane == p->terms[a].plane; b++)
             ;
         p->zero[p->terms[a].plane] = plane_zero(p, d, a, b);
     }
-    slp_cost_forms(p);
+    if ((st = slp_cost_forms(p)) != PTP_OK)
+        return st;
     for (i = 0; i < p->nterms; i++)
-        for (k = 0; k < 3 && !p->exact[p->terms[i].plane]; k++) {
+        for (k = 0; k < 3 && p->form[p->terms[i].plane] == SLP_FUSED; k++) {
             const slp_term *x = &p->terms[i];
             /* the bracket's middle product is subtracted */
             p->entries[p->nentries++] = (slp_entry){x->plane, x->group, x->point[k], x->pair[k],
                                                     x->neg ^ (k == 1)};
         }
     qsort(p->entries, p->nentries, sizeof *p->entries, by_entry);
+    for (a = 0; a < p->nterms; a = b) {
+        for (b = a; b < p->nterms && p->terms[b].plane == p->terms[a].plane; b++)
+            ;
+        if (p->form[p->terms[a].plane] != SLP_POINT)
+            continue;
+        if ((st = slp_point_build(p->items + p->nitems, &n, p, a, b)) != PTP_OK)
+            return st == PTP_ENOMEM ? st : PTP_EINTERNAL;
+        p->nitems += n;
+    }
+    return PTP_OK;
 }
 
 int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
@@ -109,11 +121,12 @@ int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
     p->s = malloc(n * sizeof *p->s);
     p->c = calloc((size_t)t->dom.nplanes, sizeof *p->c);
     p->terms = malloc(n * sizeof *p->terms);
-    p->exact = calloc((size_t)t->dom.nplanes, 1);
+    p->form = calloc((size_t)t->dom.nplanes, 1);
     p->zero = calloc((size_t)t->dom.nplanes, 1);
     p->entries = malloc(3 * n * sizeof *p->entries);
-    if (!pair_of || !sc || !p->pairs || !p->s || !p->c || !p->terms || !p->exact || !p->zero ||
-        !p->entries) {
+    p->items = malloc(3 * n * sizeof *p->items);
+    if (!pair_of || !sc || !p->pairs || !p->s || !p->c || !p->terms || !p->form || !p->zero ||
+        !p->entries || !p->items) {
         st = ptp_fail(err, PTP_ENOMEM, "out of memory building the straight-line program");
         goto done;
     }
@@ -157,7 +170,9 @@ int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
             y->pair[2] = pair_index(p, pair_of, x->j, x->k);
         }
     }
-    plan_forms(p, &t->dom);
+    if ((st = plan_forms(p, &t->dom)) != PTP_OK)
+        st = ptp_fail(err, st, st == PTP_ENOMEM ? "out of memory choosing the planes' forms"
+                                                : "the point form of a plane the cost model chose failed");
 done:
     free(pair_of);
     free(sc);
@@ -172,9 +187,10 @@ void slp_clear(slp_prog *p)
     free(p->s);
     free(p->c);
     free(p->terms);
-    free(p->exact);
+    free(p->form);
     free(p->zero);
     free(p->entries);
+    free(p->items);
     memset(p, 0, sizeof *p);
 }
 
@@ -253,7 +269,7 @@ static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int wo
     for (i = 0; i < p->nterms; i++) {
         const slp_term *x = &p->terms[i];
         int first = i == 0 || p->terms[i - 1].group != x->group;
-        if (!p->exact[x->plane])
+        if (p->form[x->plane] != SLP_BRACKET)
             continue;
         *mul += 3 * kinds;
         *add += 3 * kinds - first; /* the brackets, the kinds' sum, the group's sum */
@@ -270,7 +286,7 @@ static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int wo
         const rat *s = &p->s[x->group];
         int first = i == 0 || p->terms[i - 1].plane != x->plane;
         slp_scale c;
-        if (i > 0 && p->terms[i - 1].group == x->group)
+        if ((i > 0 && p->terms[i - 1].group == x->group) || p->form[x->plane] == SLP_POINT)
             continue;
         if (slp_scale_of(&c, s))
             *add += c.adds + !first;
@@ -280,6 +296,14 @@ static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int wo
             *mul += 1;
         else
             *fma += 1;
+    }
+    for (a = 0; a < p->nitems; a = b) { /* the point form */
+        slp_point_sum s;
+        b = slp_point_plane_end(p->items, p->nitems, a);
+        slp_point_plane(&s, p->items + a, b - a, world);
+        *mul += s.muls;
+        *fma += s.fmas;
+        *add += s.adds;
     }
 }
 

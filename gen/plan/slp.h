@@ -16,7 +16,14 @@
  * and those where the cost model (plan/slp_cost.h) finds that fusing does not pay. The other
  * planes are fused: per group, sum over its points b of G_K(b) times the signed sum of the
  * minors b meets in its terms, with multiply-adds:
- *     s * sum over b of sum over kinds K of G_K(b) * (sum of +-M_K over b's terms in the group). */
+ *     s * sum over b of sum over kinds K of G_K(b) * (sum of +-M_K over b's terms in the group).
+ * The point form (plan/slp_point.h) takes the weights into the sums instead, one product per
+ * point and kind, on planes no collapsed edge zeros. */
+enum slp_form {
+    SLP_BRACKET, /* the exact bracket form */
+    SLP_FUSED,   /* grouped by weight, then by point */
+    SLP_POINT    /* grouped by point, the weights inside (slp_point.h) */
+};
 typedef struct {
     int k, l; /* the minor M(b_k, b_l), k < l */
 } slp_pair;
@@ -30,6 +37,11 @@ typedef struct {
 typedef struct {
     int plane, group, point, pair, neg;
 } slp_entry;
+/* One item of a point-form plane: coef times minor pair times G(point). */
+typedef struct {
+    int plane, point, pair;
+    long coef;
+} slp_item;
 typedef struct {
     int npoints, nplanes;
     size_t npairs, ngroups, nterms;
@@ -37,12 +49,14 @@ typedef struct {
     rat *s;          /* the scale s > 0 of every group; s == 1 needs no product */
     rat *c;          /* the scale c_P > 0 of every plane: its value is c_P times the true one */
     slp_term *terms; /* by plane, then group */
-    unsigned char *exact; /* per plane: 1 for the exact bracket form, 0 when fused */
+    unsigned char *form;  /* per plane: its enum slp_form */
     unsigned char *zero;  /* per plane: bit e set when every term has two points on boundary
                              edge e (tp_domain_on_edge), so that collapsing e zeros the plane
                              exactly; a plane with zero nonzero is exact */
     size_t nentries;
     slp_entry *entries;   /* of the fused planes, by plane, group, point, then pair */
+    size_t nitems;
+    slp_item *items;      /* of the point-form planes, by plane (order: slp_point.h) */
 } slp_prog;
 /* Builds the program of t. p is uninitialized on entry and on failure (PTP_ENOMEM,
  * PTP_EOVERFLOW when a plane's scale does not fit). */

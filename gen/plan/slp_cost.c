@@ -1,6 +1,9 @@
 /* slp_cost.c: per-plane costs of the bracket and the fused form of slp.h's straight-line
- * program, and the choice between them. */
+ * program, and the choice among them and the point form (slp_point.h). */
 #include "plan/slp_cost.h"
+#include "plan/slp_point.h"
+
+#include <stdlib.h>
 
 enum { LAT_MUL = 3, LAT_ADD = 3, LAT_FMA = 4 };
 
@@ -67,21 +70,51 @@ static size_t plane_end(const slp_prog *p, size_t a)
     return b;
 }
 
-void slp_cost_forms(slp_prog *p)
+/* The bracket or fused form of plane terms [a, b) (costs br, fu), as the header describes;
+ * ops, the program's instructions in the bracket form. */
+static int base_form(const slp_prog *p, size_t a, const slp_cost *br, const slp_cost *fu, long ops)
+{
+    return p->zero[p->terms[a].plane] || fu->ops >= br->ops ||
+                   (ops <= SLP_COST_ICACHE_OPS && 2 * (br->ops - fu->ops) < 3 * (fu->chain - br->chain))
+               ? SLP_BRACKET
+               : SLP_FUSED;
+}
+
+/* The form of plane terms [a, b): the point form where the header says, else base (costs c);
+ * items has room for 3 (b - a). */
+static int point_form(int *form, slp_item *items, const slp_prog *p, size_t a, size_t b,
+                      const slp_cost *c, long ops)
+{
+    size_t n;
+    slp_point_sum pt;
+    int st = ops <= SLP_COST_ICACHE_OPS ? slp_point_build(items, &n, p, a, b) : 1;
+    if (st)
+        return st == PTP_ENOMEM ? st : PTP_OK;
+    slp_point_plane(&pt, items, n, 0);
+    if (pt.muls + pt.fmas < c->muls && pt.muls + pt.fmas + pt.adds <= c->ops)
+        *form = SLP_POINT;
+    return PTP_OK;
+}
+
+int slp_cost_forms(slp_prog *p)
 {
     long ops = 3L * (long)p->npairs + p->npoints; /* the minors and G's */
     size_t a, b;
     slp_cost br, fu;
+    slp_item *items = malloc((3 * p->nterms + 1) * sizeof *items);
+    int st = items ? PTP_OK : PTP_ENOMEM;
     for (a = 0; a < p->nterms; a = plane_end(p, a)) {
         slp_cost_plane(&br, &fu, p, a, plane_end(p, a));
         ops += br.ops;
     }
-    for (a = 0; a < p->nterms; a = b) {
-        int plane = p->terms[a].plane;
+    for (a = 0; a < p->nterms && !st; a = b) {
+        int form;
         b = plane_end(p, a);
         slp_cost_plane(&br, &fu, p, a, b);
-        p->exact[plane] = p->zero[plane] || fu.ops >= br.ops ||
-                          (ops <= SLP_COST_ICACHE_OPS &&
-                           2 * (br.ops - fu.ops) < 3 * (fu.chain - br.chain));
+        form = base_form(p, a, &br, &fu, ops);
+        st = point_form(&form, items, p, a, b, form == SLP_BRACKET ? &br : &fu, ops);
+        p->form[p->terms[a].plane] = (unsigned char)form;
     }
+    free(items);
+    return st;
 }

@@ -17,10 +17,14 @@ void slp_cost_plane(slp_cost *bracket, slp_cost *fused, const slp_prog *p, size_
  * minors and G's) fits a 32 KB instruction cache (about 10 bytes an AVX-512 instruction, and the
  * spills' loads and stores); a larger one is bound by instruction fetch. */
 #define SLP_COST_ICACHE_OPS 2048
-/* Sets p->exact from p->zero (set for every plane): a zero plane is exact; another is fused
- * where fusing saves instructions and, when the program fits the instruction cache (so that
- * latency, not fetch, bounds it), saves at least 3 instructions for every 2 cycles it adds to
- * the plane's chain (a core issues about 2 vector floating-point instructions a cycle, and the
- * fused chains are not all exposed); else it stays exact, in the bracket form. */
-void slp_cost_forms(slp_prog *p);
+/* Sets p->form from p->zero (set for every plane). Between the bracket and the fused form: a
+ * zero plane keeps the bracket form; another is fused where fusing saves instructions and, when
+ * the program fits the instruction cache (so that latency, not fetch, bounds it), saves at least
+ * 3 instructions for every 2 cycles it adds to the plane's chain (a core issues about 2 vector
+ * floating-point instructions a cycle, and the fused chains are not all exposed). In a program
+ * that fits the instruction cache, the point form (plan/slp_point.h) replaces that choice on a
+ * plane no collapsed edge zeros where it needs fewer multiply-pipe operations and no more
+ * instructions (in the larger bicubic program it was slower: more spills). PTP_ENOMEM on
+ * failure. */
+int slp_cost_forms(slp_prog *p);
 #endif

@@ -21,8 +21,8 @@ static void add_value(plane_values *pv, int *mark, size_t *n, int P, int v)
     pv->val[(*n)++] = v;
 }
 
-/* Fills pv from p: an exact plane reads its terms' minors and points, a fused plane each
- * point's minors, then the point. */
+/* Fills pv from p: an exact plane reads its terms' minors and points, a fused or point-form
+ * plane each point's minors, then the point. */
 static void list_values(plane_values *pv, int *mark, const slp_prog *p)
 {
     size_t i, e = 0, n = 0;
@@ -30,10 +30,17 @@ static void list_values(plane_values *pv, int *mark, const slp_prog *p)
     for (P = 0; P < p->nplanes; P++) {
         pv->start[P] = n;
         for (i = 0; i < p->nterms; i++)
-            if (p->terms[i].plane == P && p->exact[P])
+            if (p->terms[i].plane == P && (p->form[P] == SLP_BRACKET))
                 for (k = 0; k < 6; k++)
                     add_value(pv, mark, &n, P,
                               k < 3 ? p->terms[i].pair[k] : (int)p->npairs + p->terms[i].point[k - 3]);
+        for (i = 0; i < p->nitems; i++)
+            if (p->items[i].plane == P) {
+                add_value(pv, mark, &n, P, p->items[i].pair);
+                if (i + 1 == p->nitems || p->items[i + 1].point != p->items[i].point ||
+                    p->items[i + 1].plane != P)
+                    add_value(pv, mark, &n, P, (int)p->npairs + p->items[i].point);
+            }
         for (; e < p->nentries && p->entries[e].plane == P; e++) {
             add_value(pv, mark, &n, P, p->entries[e].pair);
             if (e + 1 == p->nentries || p->entries[e + 1].point != p->entries[e].point ||
@@ -82,7 +89,7 @@ static int next_plane(const plane_values *pv, const unsigned char *done, const u
 int slp_order(int *order, int *n, const slp_prog *p, int cap, int win, ptp_error *err)
 {
     int nv = (int)p->npairs + p->npoints, len = 0, P, i;
-    size_t k, nval = 6 * p->nterms + p->nentries * 2;
+    size_t k, nval = 6 * p->nterms + p->nentries * 2 + p->nitems * 2;
     plane_values pv = {malloc(((size_t)p->nplanes + 1) * sizeof *pv.start),
                        malloc((nval + 1) * sizeof *pv.val)};
     int *mark = calloc((size_t)nv + 1, sizeof *mark), *lru = malloc(((size_t)nv + 1) * sizeof *lru);

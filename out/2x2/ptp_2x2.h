@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_2X2_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_2X2_FLOPS 584
-#define PTP_2X2_MULS 309
+#define PTP_2X2_FLOPS 568
+#define PTP_2X2_MULS 289
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_2X2_LANES
 #define PTP_2X2_LANES 16
@@ -582,29 +582,58 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_2x2_vf m3_8 = x3 * y8 - y3 * x8;
-        const ptp_2x2_vf m0_8 = x0 * y8 - y0 * x8;
-        u = ((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
-        u += ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
-        v = u;
         const ptp_2x2_vf m4_7 = x4 * y7 - y4 * x7;
-        u = -((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         const ptp_2x2_vf m5_6 = x5 * y6 - y5 * x6;
-        u -= ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
-        u -= ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
-        v += (u + u);
-        u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
-        v += ((u + u) + (u + u));
+        u = m3_8;
+        u = PTP_2X2_VFMAS(2.0f, -m4_7 - m5_6, u);
+        v = g0 * u;
+        u = (-m4_6);
+        u += u;
+        u = PTP_2X2_VFMAS(4.0f, m3_7, u);
+        v = PTP_2X2_VFMA(g1, u, v);
+        u = m3_6;
+        v = PTP_2X2_VFMA(g2, u, v);
+        const ptp_2x2_vf m0_8 = x0 * y8 - y0 * x8;
+        u = -m2_6 - m0_8;
+        u = PTP_2X2_VFMAS(4.0f, -m1_7, u);
+        v = PTP_2X2_VFMA(g3, u, v);
+        u = (m1_6 + m0_7);
+        u += u;
+        v = PTP_2X2_VFMA(g4, u, v);
+        u = (m0_6);
+        u += u;
+        v = PTP_2X2_VFMA(g5, u, v);
+        u = m2_3;
+        u = PTP_2X2_VFMAS(2.0f, -m1_4 - m0_5, u);
+        v = PTP_2X2_VFMA(g6, u, v);
+        u = (-m0_4);
+        u += u;
+        u = PTP_2X2_VFMAS(4.0f, m1_3, u);
+        v = PTP_2X2_VFMA(g7, u, v);
+        u = m0_3;
+        v = PTP_2X2_VFMA(g8, u, v);
         if (d)
             ptp_2x2_vstoref(d + 11 * ds + l, v * 0.166666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 11 */
         const ptp_2x2_vf m5_7 = x5 * y7 - y5 * x7;
-        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        u += ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
-        u -= ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
+        u = -m5_7;
+        v = g0 * u;
+        u = m3_8 - m5_6;
+        v = PTP_2X2_VFMA(g1, u, v);
+        u = m3_7;
+        v = PTP_2X2_VFMA(g2, u, v);
         const ptp_2x2_vf m2_7 = x2 * y7 - y2 * x7;
-        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v = u;
+        u = -m1_8 - m2_7;
+        v = PTP_2X2_VFMA(g3, u, v);
+        u = m1_6 + m0_7;
+        v = PTP_2X2_VFMA(g5, u, v);
+        u = -m1_5;
+        v = PTP_2X2_VFMA(g6, u, v);
+        u = m2_3 - m0_5;
+        v = PTP_2X2_VFMA(g7, u, v);
+        u = m1_3;
+        v = PTP_2X2_VFMA(g8, u, v);
         if (d)
             ptp_2x2_vstoref(d + 12 * ds + l, v * 0.333333343f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -620,19 +649,15 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
             ptp_2x2_vstoref(d + 14 * ds + l, v * 0.666666687f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 14 */
-        u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
-        u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
+        const ptp_2x2_vf m6_7 = x6 * y7 - y6 * x7;
+        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         v = u;
-        u = ((g1 * m4_8 - g4 * m1_8) + g8 * m1_4);
-        u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
-        u += ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
+        u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v += (u + u);
-        u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
-        v += ((u + u) + (u + u));
         if (d)
-            ptp_2x2_vstoref(d + 13 * ds + l, v * 0.166666672f, n - l);
+            ptp_2x2_vstoref(d + 15 * ds + l, v, n - l);
         notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        notgt |= (v > 0.0f) == 0; /* plane 15 */
         u = -((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
@@ -644,15 +669,6 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
             ptp_2x2_vstoref(d + 8 * ds + l, v * 0.25f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
-        const ptp_2x2_vf m6_7 = x6 * y7 - y6 * x7;
-        u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
-        v = u;
-        u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
-        v += (u + u);
-        if (d)
-            ptp_2x2_vstoref(d + 15 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
         const ptp_2x2_vf m6_8 = x6 * y8 - y6 * x8;
         u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
         v = u;
@@ -665,7 +681,18 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
             ptp_2x2_vstoref(d + 16 * ds + l, v * 0.25f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
+        u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
+        v = u;
         const ptp_2x2_vf m7_8 = x7 * y8 - y7 * x8;
+        u = ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
+        u -= ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
+        v += (u + u);
+        u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
+        v += ((u + u) + (u + u));
+        if (d)
+            ptp_2x2_vstoref(d + 18 * ds + l, v * 0.25f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 18 */
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         v = u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
@@ -711,43 +738,99 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
             ptp_2x2_vstoref(d + 24 * ds + l, v * 4.0f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 24 */
-        u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
-        v = u;
-        u = ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
-        u -= ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
-        v += (u + u);
-        u = -((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
-        v += ((u + u) + (u + u));
-        if (d)
-            ptp_2x2_vstoref(d + 18 * ds + l, v * 0.25f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
-        u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
-        u += ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
-        v = u;
-        u = ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
-        u -= ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
-        u -= ((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
-        v += (u + u);
-        u = -((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
-        v += ((u + u) + (u + u));
+        u = m7_8;
+        v = g0 * u;
+        u = (m6_8);
+        u += u;
+        v = PTP_2X2_VFMA(g1, u, v);
+        u = m6_7;
+        v = PTP_2X2_VFMA(g2, u, v);
+        u = (-m4_8);
+        u += u;
+        u = PTP_2X2_VFMAS(4.0f, -m5_7, u);
+        v = PTP_2X2_VFMA(g3, u, v);
+        u = (m3_8 - m5_6);
+        u += u;
+        v = PTP_2X2_VFMA(g4, u, v);
+        u = (m4_6);
+        u += u;
+        u = PTP_2X2_VFMAS(4.0f, m3_7, u);
+        v = PTP_2X2_VFMA(g5, u, v);
+        u = -m2_7;
+        u = PTP_2X2_VFMAS(2.0f, -m1_8 - m4_5, u);
+        v = PTP_2X2_VFMA(g6, u, v);
+        u = m2_6 - m0_8;
+        u = PTP_2X2_VFMAS(4.0f, -m3_5, u);
+        v = PTP_2X2_VFMA(g7, u, v);
+        u = m0_7;
+        u = PTP_2X2_VFMAS(2.0f, m1_6 - m3_4, u);
+        v = PTP_2X2_VFMA(g8, u, v);
         if (d)
             ptp_2x2_vstoref(d + 17 * ds + l, v * 0.166666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
-        u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
-        u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
-        v = u;
-        u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
-        u += ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
-        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v += (u + u);
-        u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        v += ((u + u) + (u + u));
+        u = -m1_8;
+        u = PTP_2X2_VFMAS(2.0f, m4_5 - m2_7, u);
+        v = g0 * u;
+        u = m0_8 - m2_6;
+        u = PTP_2X2_VFMAS(4.0f, m3_5, u);
+        v = PTP_2X2_VFMA(g1, u, v);
+        u = m1_6;
+        u = PTP_2X2_VFMAS(2.0f, m3_4 + m0_7, u);
+        v = PTP_2X2_VFMA(g2, u, v);
+        u = (-m2_4);
+        u += u;
+        u = PTP_2X2_VFMAS(4.0f, -m1_5, u);
+        v = PTP_2X2_VFMA(g3, u, v);
+        u = (m2_3 - m0_5);
+        u += u;
+        v = PTP_2X2_VFMA(g4, u, v);
+        u = (m0_4);
+        u += u;
+        u = PTP_2X2_VFMAS(4.0f, m1_3, u);
+        v = PTP_2X2_VFMA(g5, u, v);
+        u = -m1_2;
+        v = PTP_2X2_VFMA(g6, u, v);
+        u = (-m0_2);
+        u += u;
+        v = PTP_2X2_VFMA(g7, u, v);
+        u = -m0_1;
+        v = PTP_2X2_VFMA(g8, u, v);
         if (d)
             ptp_2x2_vstoref(d + 7 * ds + l, v * 0.166666672f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 7 */
+        u = -m5_8;
+        v = g0 * u;
+        u = (m4_8);
+        u += u;
+        u = PTP_2X2_VFMAS(4.0f, -m5_7, u);
+        v = PTP_2X2_VFMA(g1, u, v);
+        u = -m5_6;
+        u = PTP_2X2_VFMAS(2.0f, m3_8 + m4_7, u);
+        v = PTP_2X2_VFMA(g2, u, v);
+        u = (-m2_8);
+        u += u;
+        v = PTP_2X2_VFMA(g3, u, v);
+        u = (-m1_8 - m2_7);
+        u += u;
+        v = PTP_2X2_VFMA(g4, u, v);
+        u = m2_6 + m0_8;
+        u = PTP_2X2_VFMAS(4.0f, m1_7, u);
+        v = PTP_2X2_VFMA(g5, u, v);
+        u = -m2_5;
+        v = PTP_2X2_VFMA(g6, u, v);
+        u = (m2_4);
+        u += u;
+        u = PTP_2X2_VFMAS(4.0f, -m1_5, u);
+        v = PTP_2X2_VFMA(g7, u, v);
+        u = -m0_5;
+        u = PTP_2X2_VFMAS(2.0f, m2_3 + m1_4, u);
+        v = PTP_2X2_VFMA(g8, u, v);
+        if (d)
+            ptp_2x2_vstoref(d + 13 * ds + l, v * 0.166666672f, n - l);
+        notlt |= (v < 0.0f) == 0;
+        notgt |= (v > 0.0f) == 0; /* plane 13 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
          * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
         notlt &= 1;

@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI3_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI3_FLOPS 810
-#define PTP_TRI3_MULS 415
+#define PTP_TRI3_FLOPS 792
+#define PTP_TRI3_MULS 403
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI3_LANES
 #define PTP_TRI3_LANES 16
@@ -616,17 +616,33 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 6 */
         const ptp_tri3_vf m4_7 = x4 * y7 - y4 * x7;
-        u = -((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         const ptp_tri3_vf m5_6 = x5 * y6 - y5 * x6;
-        u -= ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
-        v = u;
         const ptp_tri3_vf m3_8 = x3 * y8 - y3 * x8;
-        u = ((g0 * m3_8 - g3 * m0_8) + g8 * m0_3);
-        v += (u + u);
-        u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
-        u += ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
-        u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
-        v += (u + u) + u;
+        u = -m4_7 - m5_6;
+        u = PTP_TRI3_VFMAS(2.0f, m3_8, u);
+        v = g0 * u;
+        u = 3.0f * (m3_5 - m2_7);
+        v = PTP_TRI3_VFMA(g1, u, v);
+        u = 3.0f * (m1_7 + m3_4);
+        v = PTP_TRI3_VFMA(g2, u, v);
+        u = (-m0_8);
+        u += u;
+        u = PTP_TRI3_VFMAS(3.0f, -m1_5 - m2_4, u);
+        v = PTP_TRI3_VFMA(g3, u, v);
+        u = m0_7;
+        u = PTP_TRI3_VFMAS(3.0f, m2_3, u);
+        v = PTP_TRI3_VFMA(g4, u, v);
+        u = m0_6;
+        u = PTP_TRI3_VFMAS(3.0f, m1_3, u);
+        v = PTP_TRI3_VFMA(g5, u, v);
+        u = -m0_5;
+        v = PTP_TRI3_VFMA(g6, u, v);
+        u = -m0_4;
+        u = PTP_TRI3_VFMAS(3.0f, -m1_2, u);
+        v = PTP_TRI3_VFMA(g7, u, v);
+        u = (m0_3);
+        u += u;
+        v = PTP_TRI3_VFMA(g8, u, v);
         if (d)
             ptp_tri3_vstoref(d + 7 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -645,15 +661,31 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 10 */
         const ptp_tri3_vf m6_8 = x6 * y8 - y6 * x8;
-        u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
-        u -= ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
-        v = u;
-        u = -((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
-        v += (u + u);
-        u = ((g1 * m3_8 - g3 * m1_8) + g8 * m1_3);
-        u -= ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
-        u += ((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
-        v += (u + u) + u;
+        u = m6_8;
+        v = g0 * u;
+        u = (-m5_6);
+        u += u;
+        u = PTP_TRI3_VFMAS(3.0f, m3_8 - m4_7, u);
+        v = PTP_TRI3_VFMA(g1, u, v);
+        u = -m4_6;
+        u = PTP_TRI3_VFMAS(3.0f, m3_7, u);
+        v = PTP_TRI3_VFMA(g2, u, v);
+        u = 3.0f * (-m1_8 - m2_7);
+        v = PTP_TRI3_VFMA(g3, u, v);
+        u = m2_6;
+        u = PTP_TRI3_VFMAS(3.0f, m1_7, u);
+        v = PTP_TRI3_VFMA(g4, u, v);
+        u = (m1_6);
+        u += u;
+        v = PTP_TRI3_VFMA(g5, u, v);
+        u = -m2_4 - m0_8;
+        u = PTP_TRI3_VFMAS(2.0f, -m1_5, u);
+        v = PTP_TRI3_VFMA(g6, u, v);
+        u = 3.0f * (m2_3 - m1_4);
+        v = PTP_TRI3_VFMA(g7, u, v);
+        u = m0_6;
+        u = PTP_TRI3_VFMAS(3.0f, m1_3, u);
+        v = PTP_TRI3_VFMA(g8, u, v);
         if (d)
             ptp_tri3_vstoref(d + 11 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -721,33 +753,65 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 16 */
         const ptp_tri3_vf m6_9 = x6 * y9 - y6 * x9;
-        u = ((g1 * m6_9 - g6 * m1_9) + g9 * m1_6);
-        u -= ((g4 * m5_6 - g5 * m4_6) + g6 * m4_5);
-        v = u;
-        u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
-        v += (u + u);
         const ptp_tri3_vf m7_8 = x7 * y8 - y7 * x8;
-        u = ((g1 * m7_8 - g7 * m1_8) + g8 * m1_7);
+        u = m6_9;
+        u = PTP_TRI3_VFMAS(3.0f, m7_8, u);
+        v = g1 * u;
+        u = (m6_8);
+        u += u;
+        v = PTP_TRI3_VFMA(g2, u, v);
         const ptp_tri3_vf m4_8 = x4 * y8 - y4 * x8;
-        u -= ((g3 * m4_8 - g4 * m3_8) + g8 * m3_4);
         const ptp_tri3_vf m5_7 = x5 * y7 - y5 * x7;
-        u -= ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
-        v += (u + u) + u;
+        u = 3.0f * (-m4_8 - m5_7);
+        v = PTP_TRI3_VFMA(g3, u, v);
+        u = -m5_6;
+        u = PTP_TRI3_VFMAS(3.0f, m3_8, u);
+        v = PTP_TRI3_VFMA(g4, u, v);
+        u = m4_6;
+        u = PTP_TRI3_VFMAS(3.0f, m3_7, u);
+        v = PTP_TRI3_VFMA(g5, u, v);
+        u = -m1_9 - m4_5;
+        u = PTP_TRI3_VFMAS(2.0f, -m2_8, u);
+        v = PTP_TRI3_VFMA(g6, u, v);
+        u = 3.0f * (-m1_8 - m3_5);
+        v = PTP_TRI3_VFMA(g7, u, v);
+        u = (m2_6);
+        u += u;
+        u = PTP_TRI3_VFMAS(3.0f, m1_7 - m3_4, u);
+        v = PTP_TRI3_VFMA(g8, u, v);
+        u = m1_6;
+        v = PTP_TRI3_VFMA(g9, u, v);
         if (d)
             ptp_tri3_vstoref(d + 17 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 17 */
-        u = ((g2 * m6_9 - g6 * m2_9) + g9 * m2_6);
-        const ptp_tri3_vf m3_9 = x3 * y9 - y3 * x9;
-        u -= ((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
-        v = u;
         const ptp_tri3_vf m7_9 = x7 * y9 - y7 * x9;
-        u = ((g1 * m7_9 - g7 * m1_9) + g9 * m1_7);
-        v += (u + u);
-        u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
-        u -= ((g3 * m5_8 - g5 * m3_8) + g8 * m3_5);
-        u -= ((g4 * m5_7 - g5 * m4_7) + g7 * m4_5);
-        v += (u + u) + u;
+        u = (m7_9);
+        u += u;
+        v = g1 * u;
+        u = m6_9;
+        u = PTP_TRI3_VFMAS(3.0f, m7_8, u);
+        v = PTP_TRI3_VFMA(g2, u, v);
+        u = -m4_9;
+        u = PTP_TRI3_VFMAS(3.0f, -m5_8, u);
+        v = PTP_TRI3_VFMA(g3, u, v);
+        const ptp_tri3_vf m3_9 = x3 * y9 - y3 * x9;
+        u = m3_9;
+        u = PTP_TRI3_VFMAS(3.0f, -m5_7, u);
+        v = PTP_TRI3_VFMA(g4, u, v);
+        u = 3.0f * (m4_7 + m3_8);
+        v = PTP_TRI3_VFMA(g5, u, v);
+        u = -m2_9;
+        v = PTP_TRI3_VFMA(g6, u, v);
+        u = (-m1_9);
+        u += u;
+        u = PTP_TRI3_VFMAS(3.0f, -m2_8 - m4_5, u);
+        v = PTP_TRI3_VFMA(g7, u, v);
+        u = 3.0f * (m2_7 - m3_5);
+        v = PTP_TRI3_VFMA(g8, u, v);
+        u = m2_6 - m3_4;
+        u = PTP_TRI3_VFMAS(2.0f, m1_7, u);
+        v = PTP_TRI3_VFMA(g9, u, v);
         if (d)
             ptp_tri3_vstoref(d + 18 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
@@ -841,28 +905,60 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
             ptp_tri3_vstoref(d + 12 * ds + l, v * 0.100000001f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 12 */
-        u = ((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
-        u += ((g0 * m4_8 - g4 * m0_8) + g8 * m0_4);
-        v = u;
-        u = -((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
-        v += (u + u);
-        u = -((g1 * m2_8 - g2 * m1_8) + g8 * m1_2);
-        u += ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
-        u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
-        v += (u + u) + u;
+        u = m3_9 + m4_8;
+        u = PTP_TRI3_VFMAS(2.0f, -m5_7, u);
+        v = g0 * u;
+        u = 3.0f * (m4_5 - m2_8);
+        v = PTP_TRI3_VFMA(g1, u, v);
+        u = 3.0f * (m1_8 + m3_5);
+        v = PTP_TRI3_VFMA(g2, u, v);
+        u = -m0_9;
+        u = PTP_TRI3_VFMAS(3.0f, -m2_5, u);
+        v = PTP_TRI3_VFMA(g3, u, v);
+        u = -m0_8;
+        u = PTP_TRI3_VFMAS(3.0f, -m1_5, u);
+        v = PTP_TRI3_VFMA(g4, u, v);
+        u = (m0_7);
+        u += u;
+        u = PTP_TRI3_VFMAS(3.0f, m1_4 + m2_3, u);
+        v = PTP_TRI3_VFMA(g5, u, v);
+        u = (-m0_5);
+        u += u;
+        v = PTP_TRI3_VFMA(g7, u, v);
+        u = m0_4;
+        u = PTP_TRI3_VFMAS(3.0f, -m1_2, u);
+        v = PTP_TRI3_VFMA(g8, u, v);
+        u = m0_3;
+        v = PTP_TRI3_VFMA(g9, u, v);
         if (d)
             ptp_tri3_vstoref(d + 8 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
         notgt |= (v > 0.0f) == 0; /* plane 8 */
-        u = ((g0 * m7_9 - g7 * m0_9) + g9 * m0_7);
-        u += ((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
-        v = u;
-        u = ((g2 * m3_9 - g3 * m2_9) + g9 * m2_3);
-        v += (u + u);
-        u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
-        u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
-        u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
-        v += (u + u) + u;
+        u = m7_9;
+        v = g0 * u;
+        u = m4_9;
+        u = PTP_TRI3_VFMAS(3.0f, -m5_8, u);
+        v = PTP_TRI3_VFMA(g1, u, v);
+        u = (m3_9);
+        u += u;
+        u = PTP_TRI3_VFMAS(3.0f, m4_8 - m5_7, u);
+        v = PTP_TRI3_VFMA(g2, u, v);
+        u = (-m2_9);
+        u += u;
+        v = PTP_TRI3_VFMA(g3, u, v);
+        u = -m1_9;
+        u = PTP_TRI3_VFMAS(3.0f, -m2_8, u);
+        v = PTP_TRI3_VFMA(g4, u, v);
+        u = 3.0f * (m1_8 + m2_7);
+        v = PTP_TRI3_VFMA(g5, u, v);
+        u = -m0_9;
+        u = PTP_TRI3_VFMAS(3.0f, -m2_5, u);
+        v = PTP_TRI3_VFMA(g7, u, v);
+        u = 3.0f * (m2_4 - m1_5);
+        v = PTP_TRI3_VFMA(g8, u, v);
+        u = m1_4 + m0_7;
+        u = PTP_TRI3_VFMAS(2.0f, m2_3, u);
+        v = PTP_TRI3_VFMA(g9, u, v);
         if (d)
             ptp_tri3_vstoref(d + 13 * ds + l, v * 0.300000012f, n - l);
         notlt |= (v < 0.0f) == 0;
