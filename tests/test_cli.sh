@@ -683,6 +683,41 @@ for c in "2x3 clip strict" "3x3 world degenerate" "1x2 clip degenerate" "4x3 wor
         fi
     done
 done
+# classify_batch's transposition (tests/batch_c.c): tiles of 16 (AVX-512), 8 (AVX2) and 4
+# (SSE2) patches, a tile overlapping the one before (9 points), the narrower tile of a 3-point
+# patch, NO_SSE; a tile storing a coordinate to the wrong row must fail.
+batch_c() { # batch_c HEADER PREFIX CC [SED]: builds and runs tests/batch_c.c (SED edits HEADER)
+    local up=$(echo $2 | tr a-z A-Z)
+    cp "$1" "$tmp/b.h" && { [ -z "${4:-}" ] || sed -i "$4" "$tmp/b.h"; } &&
+        $3 -Wall -Wextra -Werror -pedantic -include "$tmp/b.h" -D${up}IMPLEMENTATION -DPFX=$2 \
+            -DUPFX=$up tests/batch_c.c -o "$tmp/bc" 2>"$tmp/err" && "$tmp/bc" >"$tmp/out" 2>&1
+}
+"$P" --degree 3 --target c --prefix ptp_3x3_ -o "$tmp/b3.h" &&
+    "$P" --degree 2 --target c --space world --rule degenerate --prefix ptp_2x2_ -o "$tmp/b2.h" &&
+    "$P" --domain triangle --degree 1 --target c --prefix ptp_tri1_ -o "$tmp/bt.h" ||
+    notok "classify_batch headers" "ptpgen failed"
+avx2=$(grep -qw avx2 /proc/cpuinfo && echo "-mavx2 -mfma")
+for c in "b3 ptp_3x3_ gcc -std=c11 -O2 -march=native" "b3 ptp_3x3_ clang -std=c11 -O2 -march=native" \
+    "b3 ptp_3x3_ gcc -std=c11 -O2 $avx2" "b3 ptp_3x3_ gcc -std=c11 -O2" \
+    "b3 ptp_3x3_ clang -std=c11 -O2 -march=native -DPTP_3X3_NO_SSE" \
+    "b2 ptp_2x2_ gcc -std=c11 -O2 -march=native" "bt ptp_tri1_ clang -std=c11 -O2 -march=native"; do
+    set -- $c
+    h=$1 pre=$2
+    shift 2
+    if batch_c "$tmp/$h.h" $pre "$*"; then
+        ok "classify_batch $h.h ($*) equals classify and classify_soa: $(cat "$tmp/out")"
+    else
+        notok "classify_batch $h.h ($*)" "$(head -3 "$tmp/err" "$tmp/out" | tr '\n' ' ')"
+    fi
+done
+for c in "-march=native|s/soa + 5 \* PTP_3X3_LANES, c1_2_1/soa + 9 * PTP_3X3_LANES, c1_2_1/" \
+    "|0,/PTP_3X3_SHUFFLE(a, b, 2, 3, 6, 7)/s//PTP_3X3_SHUFFLE(a, b, 2, 6, 3, 7)/"; do
+    if batch_c "$tmp/b3.h" ptp_3x3_ "gcc -std=c11 -O2 ${c%%|*}" "${c#*|}" || ! grep -q FAIL "$tmp/out"; then
+        notok "classify_batch mutant ${c#*|} fails" "$(head -3 "$tmp/err" "$tmp/out" | tr '\n' ' ')"
+    else
+        ok "classify_batch with a broken tile (gcc ${c%%|*}) fails: $(cat "$tmp/out")"
+    fi
+done
 "$P" vectors --degree 2x3 --count 40 --seed 9 --format c >"$tmp/v.h" &&
     "$P" vectors --degree 2x3 --count 40 --seed 9 >"$tmp/v.json" &&
     python3 - "$tmp/v.h" "$tmp/v.json" <<'PY' && ok "vectors --format c holds the json's cases" || notok "vectors --format c" "differs from json"

@@ -1,5 +1,6 @@
 /* emit_c.c: the C target, an stb-style header: the term table, planes, values, and classify (one
  * patch, batch, SoA) as straight-line code, with the second look of --certified or --refine. */
+#include "emit/emit_c_batch.h"
 #include "emit/emit_c_mesh.h"
 #include "emit/emit_c_refine.h"
 #include "emit/fmt.h"
@@ -812,77 +813,6 @@ static void put_classify(sbuf *o, const out_info *info, const char *up, const ch
     sbuf_puts(o, "}\n\n");
 }
 
-/* classify_batch: blocks of LANES patches transposed to SoA (SSE2 where it may), the next block
- * prefetched, the lanes, then the second look. */
-static void put_classify_batch(sbuf *o, const out_info *info, const char *up, const char *second,
-                               const char *again)
-{
-    const char *px = info->prefix;
-    int world = info->space == OUT_WORLD;
-    int block = info->refine && !info->certified; /* refined from the block's values dv */
-    char lanes[80], dv[160];
-    snprintf(lanes, sizeof lanes, "%sLANES", up);
-    snprintf(dv, sizeof dv, ", dv[%sPLANES * %sLANES]", up, up);
-    /* clip space never reads z: the transposition skips it */
-    sbuf_printf(o, "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
-                   "                    unsigned char *cls)\n{\n"
-                   "    float soa[%sPOINTS * 4 * %sLANES]%s;\n"
-                   "    size_t p, l, n;\n"
-                   "    unsigned k, c;\n"
-                   "    for (p = 0; p < patch_count; p += n) {\n"
-                   "        n = patch_count - p < %sLANES ? patch_count - p : %sLANES;\n"
-                   "        l = 0;\n"
-                   "#if defined(__SSE2__) && !defined(%sNO_SSE)\n"
-                   "        for (; l + 4 <= n; l += 4) /* 4x4 transposes: one point of four patches */\n"
-                   "            for (k = 0; k < %sPOINTS; k++) {\n"
-                   "                __m128 r0 = _mm_loadu_ps(cp[(p + l) * %sPOINTS + k]);\n"
-                   "                __m128 r1 = _mm_loadu_ps(cp[(p + l + 1) * %sPOINTS + k]);\n"
-                   "                __m128 r2 = _mm_loadu_ps(cp[(p + l + 2) * %sPOINTS + k]);\n"
-                   "                __m128 r3 = _mm_loadu_ps(cp[(p + l + 3) * %sPOINTS + k]);\n"
-                   "                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);\n"
-                   "                _mm_storeu_ps(soa + (k * 4 + 0) * %sLANES + l, r0);\n"
-                   "                _mm_storeu_ps(soa + (k * 4 + 1) * %sLANES + l, r1);\n",
-                px, up, up, block ? dv : "", up, up, up, up, up, up, up, up, up, up);
-    if (world)
-        sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 2) * %sLANES + l, r2);\n", up);
-    sbuf_printf(o, "                _mm_storeu_ps(soa + (k * 4 + 3) * %sLANES + l, r3);\n"
-                   "            }\n"
-                   "#endif\n"
-                   "        for (; l < n; l++)\n"
-                   "            for (k = 0; k < %sPOINTS; k++)\n"
-                   "                for (c = 0; c < 4; c++)\n"
-                   "%s"
-                   "%*ssoa[(k * 4 + c) * %sLANES + l] = cp[(p + l) * %sPOINTS + k][c];\n",
-                up, up, world ? "" : "                    if (c != 2) /* z: clip space never reads it */\n",
-                world ? 20 : 24, "", up, up);
-    sbuf_printf(o, "#if defined(__GNUC__) /* the next block into the caches while this one is classified */\n"
-                   "        {\n"
-                   "            const char *next = (const char *)(cp + (p + n) * %sPOINTS);\n"
-                   "            size_t b, m = patch_count - p - n < %sLANES ? patch_count - p - n : %sLANES;\n"
-                   "            for (b = 0; b < m * %sPOINTS * sizeof *cp; b += 64)\n"
-                   "                __builtin_prefetch(next + b, 0, 0);\n"
-                   "        }\n"
-                   "#endif\n"
-                   "        %slanes%s(soa, %sLANES, n, eye, cls + p%s%s);\n",
-                up, up, up, up, px, block ? "_values" : "", up, block ? ", dv, " : "",
-                block ? lanes : "");
-    if (block) /* the silhouette patches refined from the block's values */
-        sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
-                       "            if (cls[p + l] == %sSILHOUETTE) {\n"
-                       "                float d[%sPLANES];\n"
-                       "                for (k = 0; k < %sPLANES; k++)\n"
-                       "                    d[k] = dv[k * %sLANES + l];\n"
-                       "                cls[p + l] = (unsigned char)%ssplit_class(d, %d);\n"
-                       "            }\n",
-                    up, up, up, up, px, info->refine);
-    else if (second)
-        sbuf_printf(o, "        for (l = 0; l < n; l++)\n"
-                       "            if (cls[p + l] %s)\n"
-                       "                cls[p + l] = (unsigned char)%s%s(cp + (p + l) * %sPOINTS, eye);\n",
-                    again, px, second, up);
-    sbuf_puts(o, "    }\n}\n");
-}
-
 /* The second look, if any, and the three entry points on the lanes: classify (one patch),
  * classify_soa and classify_batch (patch-major). */
 static int put_entries(sbuf *o, const tp_table *t, const slp_prog *p, const out_info *info,
@@ -901,7 +831,7 @@ static int put_entries(sbuf *o, const tp_table *t, const slp_prog *p, const out_
     if (info->refine)
         emit_c_refine(o, t, info, up);
     put_classify(o, info, up, second, again);
-    put_classify_batch(o, info, up, second, again);
+    emit_c_batch(o, t, info, up, second, again);
     return PTP_OK;
 }
 

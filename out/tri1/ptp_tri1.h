@@ -371,33 +371,133 @@ void ptp_tri1_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_tri1_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch's transposition: tiles of PTP_TRI1_TW patches in GNU C vectors (gcc, clang) where
+ * SSE2 or NEON is, unless PTP_TRI1_NO_SSE is defined. */
+#if defined(__GNUC__) && !defined(PTP_TRI1_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
+#include <string.h>
+#if defined(__AVX__)
+#define PTP_TRI1_TW 8
+#else
+#define PTP_TRI1_TW 4
+#endif
+#define PTP_TRI1_TALIGN __attribute__((aligned(4 * PTP_TRI1_TW)))
+typedef float ptp_tri1_tf __attribute__((vector_size(4 * PTP_TRI1_TW)));
+#if defined(__clang__)
+#define PTP_TRI1_SHUFFLE(a, b, ...) __builtin_shufflevector(a, b, __VA_ARGS__)
+#else
+typedef int ptp_tri1_ti __attribute__((vector_size(4 * PTP_TRI1_TW)));
+#define PTP_TRI1_SHUFFLE(a, b, ...) __builtin_shuffle(a, b, __extension__(ptp_tri1_ti){__VA_ARGS__})
+#endif
+static inline ptp_tri1_tf ptp_tri1_tload(const float *p)
+{
+    ptp_tri1_tf v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+static inline void ptp_tri1_tstore(float *p, ptp_tri1_tf v)
+{
+    memcpy(p, &v, sizeof v);
+}
+#if PTP_TRI1_TW == 8
+#define PTP_TRI1_LO32(a, b) PTP_TRI1_SHUFFLE(a, b, 0, 8, 1, 9, 4, 12, 5, 13)
+#define PTP_TRI1_HI32(a, b) PTP_TRI1_SHUFFLE(a, b, 2, 10, 3, 11, 6, 14, 7, 15)
+#define PTP_TRI1_LO64(a, b) PTP_TRI1_SHUFFLE(a, b, 0, 1, 8, 9, 4, 5, 12, 13)
+#define PTP_TRI1_HI64(a, b) PTP_TRI1_SHUFFLE(a, b, 2, 3, 10, 11, 6, 7, 14, 15)
+#define PTP_TRI1_EVEN128(a, b) PTP_TRI1_SHUFFLE(a, b, 0, 1, 2, 3, 8, 9, 10, 11)
+#define PTP_TRI1_ODD128(a, b) PTP_TRI1_SHUFFLE(a, b, 4, 5, 6, 7, 12, 13, 14, 15)
+/* A tile of 8 patches by 2 points: row i, the 8 floats at cp + i * 4 * POINTS (patch i
+ * from point k); column j, coordinate j % 4 of point k + j / 4, to soa + j * LANES. */
+static inline void ptp_tri1_tile(float *PTP_TRI1_RESTRICT soa, const float *PTP_TRI1_RESTRICT cp)
+{
+    const ptp_tri1_tf r0 = ptp_tri1_tload(cp + 0 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r1 = ptp_tri1_tload(cp + 1 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r2 = ptp_tri1_tload(cp + 2 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r3 = ptp_tri1_tload(cp + 3 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r4 = ptp_tri1_tload(cp + 4 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r5 = ptp_tri1_tload(cp + 5 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r6 = ptp_tri1_tload(cp + 6 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r7 = ptp_tri1_tload(cp + 7 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf t0 = PTP_TRI1_LO32(r0, r1), t1 = PTP_TRI1_HI32(r0, r1);
+    const ptp_tri1_tf t2 = PTP_TRI1_LO32(r2, r3), t3 = PTP_TRI1_HI32(r2, r3);
+    const ptp_tri1_tf t4 = PTP_TRI1_LO32(r4, r5), t5 = PTP_TRI1_HI32(r4, r5);
+    const ptp_tri1_tf t6 = PTP_TRI1_LO32(r6, r7), t7 = PTP_TRI1_HI32(r6, r7);
+    const ptp_tri1_tf c0_0 = PTP_TRI1_LO64(t0, t2);
+    const ptp_tri1_tf c1_0 = PTP_TRI1_HI64(t0, t2);
+    const ptp_tri1_tf c3_0 = PTP_TRI1_HI64(t1, t3);
+    const ptp_tri1_tf c0_1 = PTP_TRI1_LO64(t4, t6);
+    const ptp_tri1_tf c1_1 = PTP_TRI1_HI64(t4, t6);
+    const ptp_tri1_tf c3_1 = PTP_TRI1_HI64(t5, t7);
+    const ptp_tri1_tf c0_1_0 = PTP_TRI1_EVEN128(c0_0, c0_1);
+    const ptp_tri1_tf c0_1_1 = PTP_TRI1_ODD128(c0_0, c0_1);
+    ptp_tri1_tstore(soa + 0 * PTP_TRI1_LANES, c0_1_0);
+    ptp_tri1_tstore(soa + 4 * PTP_TRI1_LANES, c0_1_1);
+    const ptp_tri1_tf c1_1_0 = PTP_TRI1_EVEN128(c1_0, c1_1);
+    const ptp_tri1_tf c1_1_1 = PTP_TRI1_ODD128(c1_0, c1_1);
+    ptp_tri1_tstore(soa + 1 * PTP_TRI1_LANES, c1_1_0);
+    ptp_tri1_tstore(soa + 5 * PTP_TRI1_LANES, c1_1_1);
+    const ptp_tri1_tf c3_1_0 = PTP_TRI1_EVEN128(c3_0, c3_1);
+    const ptp_tri1_tf c3_1_1 = PTP_TRI1_ODD128(c3_0, c3_1);
+    ptp_tri1_tstore(soa + 3 * PTP_TRI1_LANES, c3_1_0);
+    ptp_tri1_tstore(soa + 7 * PTP_TRI1_LANES, c3_1_1);
+}
+#else
+#define PTP_TRI1_LO32(a, b) PTP_TRI1_SHUFFLE(a, b, 0, 4, 1, 5)
+#define PTP_TRI1_HI32(a, b) PTP_TRI1_SHUFFLE(a, b, 2, 6, 3, 7)
+#define PTP_TRI1_LO64(a, b) PTP_TRI1_SHUFFLE(a, b, 0, 1, 4, 5)
+#define PTP_TRI1_HI64(a, b) PTP_TRI1_SHUFFLE(a, b, 2, 3, 6, 7)
+/* A tile of 4 patches by 1 point: row i, the 4 floats at cp + i * 4 * POINTS (patch i
+ * from point k); column j, coordinate j % 4 of point k + j / 4, to soa + j * LANES. */
+static inline void ptp_tri1_tile(float *PTP_TRI1_RESTRICT soa, const float *PTP_TRI1_RESTRICT cp)
+{
+    const ptp_tri1_tf r0 = ptp_tri1_tload(cp + 0 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r1 = ptp_tri1_tload(cp + 1 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r2 = ptp_tri1_tload(cp + 2 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf r3 = ptp_tri1_tload(cp + 3 * 4 * PTP_TRI1_POINTS);
+    const ptp_tri1_tf t0 = PTP_TRI1_LO32(r0, r1), t1 = PTP_TRI1_HI32(r0, r1);
+    const ptp_tri1_tf t2 = PTP_TRI1_LO32(r2, r3), t3 = PTP_TRI1_HI32(r2, r3);
+    const ptp_tri1_tf c0_0 = PTP_TRI1_LO64(t0, t2);
+    const ptp_tri1_tf c1_0 = PTP_TRI1_HI64(t0, t2);
+    const ptp_tri1_tf c3_0 = PTP_TRI1_HI64(t1, t3);
+    ptp_tri1_tstore(soa + 0 * PTP_TRI1_LANES, c0_0);
+    ptp_tri1_tstore(soa + 1 * PTP_TRI1_LANES, c1_0);
+    ptp_tri1_tstore(soa + 3 * PTP_TRI1_LANES, c3_0);
+}
+#endif
+#else
+#define PTP_TRI1_TALIGN
+#endif
+
+/* soa[(k * 4 + c) * LANES + l] = cp[l * POINTS + k][c] for the n <= LANES patches at cp and
+ * the coordinates the lanes read (clip space never reads z): tiles of TW patches, then one float at a time. */
+static void ptp_tri1_transpose(float *PTP_TRI1_RESTRICT soa, const float (*PTP_TRI1_RESTRICT cp)[4], size_t n)
+{
+    size_t l = 0;
+    unsigned k, c;
+#if defined(PTP_TRI1_TW)
+    for (; l + PTP_TRI1_TW <= n; l += PTP_TRI1_TW) {
+        for (k = 0; k + PTP_TRI1_TW / 4 <= PTP_TRI1_POINTS; k += PTP_TRI1_TW / 4)
+            ptp_tri1_tile(soa + k * 4 * PTP_TRI1_LANES + l, cp[l * PTP_TRI1_POINTS + k]);
+        if (k < PTP_TRI1_POINTS) /* the last points: a tile overlapping the one before */
+            ptp_tri1_tile(soa + (PTP_TRI1_POINTS - PTP_TRI1_TW / 4) * 4 * PTP_TRI1_LANES + l,
+                          cp[l * PTP_TRI1_POINTS + PTP_TRI1_POINTS - PTP_TRI1_TW / 4]);
+    }
+#endif
+    for (; l < n; l++)
+        for (k = 0; k < PTP_TRI1_POINTS; k++)
+            for (c = 0; c < 4; c++)
+                if (c != 2)
+                    soa[(k * 4 + c) * PTP_TRI1_LANES + l] = cp[l * PTP_TRI1_POINTS + k][c];
+}
+
+/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
 void ptp_tri1_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
-    float soa[PTP_TRI1_POINTS * 4 * PTP_TRI1_LANES];
-    size_t p, l, n;
-    unsigned k, c;
+    float soa[PTP_TRI1_POINTS * 4 * PTP_TRI1_LANES] PTP_TRI1_TALIGN;
+    size_t p, n;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_TRI1_LANES ? patch_count - p : PTP_TRI1_LANES;
-        l = 0;
-#if defined(__SSE2__) && !defined(PTP_TRI1_NO_SSE)
-        for (; l + 4 <= n; l += 4) /* 4x4 transposes: one point of four patches */
-            for (k = 0; k < PTP_TRI1_POINTS; k++) {
-                __m128 r0 = _mm_loadu_ps(cp[(p + l) * PTP_TRI1_POINTS + k]);
-                __m128 r1 = _mm_loadu_ps(cp[(p + l + 1) * PTP_TRI1_POINTS + k]);
-                __m128 r2 = _mm_loadu_ps(cp[(p + l + 2) * PTP_TRI1_POINTS + k]);
-                __m128 r3 = _mm_loadu_ps(cp[(p + l + 3) * PTP_TRI1_POINTS + k]);
-                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-                _mm_storeu_ps(soa + (k * 4 + 0) * PTP_TRI1_LANES + l, r0);
-                _mm_storeu_ps(soa + (k * 4 + 1) * PTP_TRI1_LANES + l, r1);
-                _mm_storeu_ps(soa + (k * 4 + 3) * PTP_TRI1_LANES + l, r3);
-            }
-#endif
-        for (; l < n; l++)
-            for (k = 0; k < PTP_TRI1_POINTS; k++)
-                for (c = 0; c < 4; c++)
-                    if (c != 2) /* z: clip space never reads it */
-                        soa[(k * 4 + c) * PTP_TRI1_LANES + l] = cp[(p + l) * PTP_TRI1_POINTS + k][c];
+        ptp_tri1_transpose(soa, cp + p * PTP_TRI1_POINTS, n);
 #if defined(__GNUC__) /* the next block into the caches while this one is classified */
         {
             const char *next = (const char *)(cp + (p + n) * PTP_TRI1_POINTS);

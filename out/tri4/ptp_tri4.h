@@ -2723,33 +2723,219 @@ void ptp_tri4_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_tri4_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch's transposition: tiles of PTP_TRI4_TW patches in GNU C vectors (gcc, clang) where
+ * SSE2 or NEON is, unless PTP_TRI4_NO_SSE is defined. */
+#if defined(__GNUC__) && !defined(PTP_TRI4_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
+#include <string.h>
+#if defined(__AVX512F__)
+#define PTP_TRI4_TW 16
+#elif defined(__AVX__)
+#define PTP_TRI4_TW 8
+#else
+#define PTP_TRI4_TW 4
+#endif
+#define PTP_TRI4_TALIGN __attribute__((aligned(4 * PTP_TRI4_TW)))
+typedef float ptp_tri4_tf __attribute__((vector_size(4 * PTP_TRI4_TW)));
+#if defined(__clang__)
+#define PTP_TRI4_SHUFFLE(a, b, ...) __builtin_shufflevector(a, b, __VA_ARGS__)
+#else
+typedef int ptp_tri4_ti __attribute__((vector_size(4 * PTP_TRI4_TW)));
+#define PTP_TRI4_SHUFFLE(a, b, ...) __builtin_shuffle(a, b, __extension__(ptp_tri4_ti){__VA_ARGS__})
+#endif
+static inline ptp_tri4_tf ptp_tri4_tload(const float *p)
+{
+    ptp_tri4_tf v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+static inline void ptp_tri4_tstore(float *p, ptp_tri4_tf v)
+{
+    memcpy(p, &v, sizeof v);
+}
+#if PTP_TRI4_TW == 16
+#define PTP_TRI4_LO32(a, b) PTP_TRI4_SHUFFLE(a, b, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29)
+#define PTP_TRI4_HI32(a, b) PTP_TRI4_SHUFFLE(a, b, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31)
+#define PTP_TRI4_LO64(a, b) PTP_TRI4_SHUFFLE(a, b, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29)
+#define PTP_TRI4_HI64(a, b) PTP_TRI4_SHUFFLE(a, b, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31)
+#define PTP_TRI4_EVEN128(a, b) PTP_TRI4_SHUFFLE(a, b, 0, 1, 2, 3, 8, 9, 10, 11, 16, 17, 18, 19, 24, 25, 26, 27)
+#define PTP_TRI4_ODD128(a, b) PTP_TRI4_SHUFFLE(a, b, 4, 5, 6, 7, 12, 13, 14, 15, 20, 21, 22, 23, 28, 29, 30, 31)
+/* A tile of 16 patches by 4 points: row i, the 16 floats at cp + i * 4 * POINTS (patch i
+ * from point k); column j, coordinate j % 4 of point k + j / 4, to soa + j * LANES. */
+static inline void ptp_tri4_tile(float *PTP_TRI4_RESTRICT soa, const float *PTP_TRI4_RESTRICT cp)
+{
+    const ptp_tri4_tf r0 = ptp_tri4_tload(cp + 0 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r1 = ptp_tri4_tload(cp + 1 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r2 = ptp_tri4_tload(cp + 2 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r3 = ptp_tri4_tload(cp + 3 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r4 = ptp_tri4_tload(cp + 4 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r5 = ptp_tri4_tload(cp + 5 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r6 = ptp_tri4_tload(cp + 6 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r7 = ptp_tri4_tload(cp + 7 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r8 = ptp_tri4_tload(cp + 8 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r9 = ptp_tri4_tload(cp + 9 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r10 = ptp_tri4_tload(cp + 10 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r11 = ptp_tri4_tload(cp + 11 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r12 = ptp_tri4_tload(cp + 12 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r13 = ptp_tri4_tload(cp + 13 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r14 = ptp_tri4_tload(cp + 14 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r15 = ptp_tri4_tload(cp + 15 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf t0 = PTP_TRI4_LO32(r0, r1), t1 = PTP_TRI4_HI32(r0, r1);
+    const ptp_tri4_tf t2 = PTP_TRI4_LO32(r2, r3), t3 = PTP_TRI4_HI32(r2, r3);
+    const ptp_tri4_tf t4 = PTP_TRI4_LO32(r4, r5), t5 = PTP_TRI4_HI32(r4, r5);
+    const ptp_tri4_tf t6 = PTP_TRI4_LO32(r6, r7), t7 = PTP_TRI4_HI32(r6, r7);
+    const ptp_tri4_tf t8 = PTP_TRI4_LO32(r8, r9), t9 = PTP_TRI4_HI32(r8, r9);
+    const ptp_tri4_tf t10 = PTP_TRI4_LO32(r10, r11), t11 = PTP_TRI4_HI32(r10, r11);
+    const ptp_tri4_tf t12 = PTP_TRI4_LO32(r12, r13), t13 = PTP_TRI4_HI32(r12, r13);
+    const ptp_tri4_tf t14 = PTP_TRI4_LO32(r14, r15), t15 = PTP_TRI4_HI32(r14, r15);
+    const ptp_tri4_tf c0_0 = PTP_TRI4_LO64(t0, t2);
+    const ptp_tri4_tf c1_0 = PTP_TRI4_HI64(t0, t2);
+    const ptp_tri4_tf c3_0 = PTP_TRI4_HI64(t1, t3);
+    const ptp_tri4_tf c0_1 = PTP_TRI4_LO64(t4, t6);
+    const ptp_tri4_tf c1_1 = PTP_TRI4_HI64(t4, t6);
+    const ptp_tri4_tf c3_1 = PTP_TRI4_HI64(t5, t7);
+    const ptp_tri4_tf c0_2 = PTP_TRI4_LO64(t8, t10);
+    const ptp_tri4_tf c1_2 = PTP_TRI4_HI64(t8, t10);
+    const ptp_tri4_tf c3_2 = PTP_TRI4_HI64(t9, t11);
+    const ptp_tri4_tf c0_3 = PTP_TRI4_LO64(t12, t14);
+    const ptp_tri4_tf c1_3 = PTP_TRI4_HI64(t12, t14);
+    const ptp_tri4_tf c3_3 = PTP_TRI4_HI64(t13, t15);
+    const ptp_tri4_tf c0_1_0 = PTP_TRI4_EVEN128(c0_0, c0_1);
+    const ptp_tri4_tf c0_1_1 = PTP_TRI4_EVEN128(c0_2, c0_3);
+    const ptp_tri4_tf c0_1_2 = PTP_TRI4_ODD128(c0_0, c0_1);
+    const ptp_tri4_tf c0_1_3 = PTP_TRI4_ODD128(c0_2, c0_3);
+    const ptp_tri4_tf c0_2_0 = PTP_TRI4_EVEN128(c0_1_0, c0_1_1);
+    const ptp_tri4_tf c0_2_1 = PTP_TRI4_EVEN128(c0_1_2, c0_1_3);
+    const ptp_tri4_tf c0_2_2 = PTP_TRI4_ODD128(c0_1_0, c0_1_1);
+    const ptp_tri4_tf c0_2_3 = PTP_TRI4_ODD128(c0_1_2, c0_1_3);
+    ptp_tri4_tstore(soa + 0 * PTP_TRI4_LANES, c0_2_0);
+    ptp_tri4_tstore(soa + 4 * PTP_TRI4_LANES, c0_2_1);
+    ptp_tri4_tstore(soa + 8 * PTP_TRI4_LANES, c0_2_2);
+    ptp_tri4_tstore(soa + 12 * PTP_TRI4_LANES, c0_2_3);
+    const ptp_tri4_tf c1_1_0 = PTP_TRI4_EVEN128(c1_0, c1_1);
+    const ptp_tri4_tf c1_1_1 = PTP_TRI4_EVEN128(c1_2, c1_3);
+    const ptp_tri4_tf c1_1_2 = PTP_TRI4_ODD128(c1_0, c1_1);
+    const ptp_tri4_tf c1_1_3 = PTP_TRI4_ODD128(c1_2, c1_3);
+    const ptp_tri4_tf c1_2_0 = PTP_TRI4_EVEN128(c1_1_0, c1_1_1);
+    const ptp_tri4_tf c1_2_1 = PTP_TRI4_EVEN128(c1_1_2, c1_1_3);
+    const ptp_tri4_tf c1_2_2 = PTP_TRI4_ODD128(c1_1_0, c1_1_1);
+    const ptp_tri4_tf c1_2_3 = PTP_TRI4_ODD128(c1_1_2, c1_1_3);
+    ptp_tri4_tstore(soa + 1 * PTP_TRI4_LANES, c1_2_0);
+    ptp_tri4_tstore(soa + 5 * PTP_TRI4_LANES, c1_2_1);
+    ptp_tri4_tstore(soa + 9 * PTP_TRI4_LANES, c1_2_2);
+    ptp_tri4_tstore(soa + 13 * PTP_TRI4_LANES, c1_2_3);
+    const ptp_tri4_tf c3_1_0 = PTP_TRI4_EVEN128(c3_0, c3_1);
+    const ptp_tri4_tf c3_1_1 = PTP_TRI4_EVEN128(c3_2, c3_3);
+    const ptp_tri4_tf c3_1_2 = PTP_TRI4_ODD128(c3_0, c3_1);
+    const ptp_tri4_tf c3_1_3 = PTP_TRI4_ODD128(c3_2, c3_3);
+    const ptp_tri4_tf c3_2_0 = PTP_TRI4_EVEN128(c3_1_0, c3_1_1);
+    const ptp_tri4_tf c3_2_1 = PTP_TRI4_EVEN128(c3_1_2, c3_1_3);
+    const ptp_tri4_tf c3_2_2 = PTP_TRI4_ODD128(c3_1_0, c3_1_1);
+    const ptp_tri4_tf c3_2_3 = PTP_TRI4_ODD128(c3_1_2, c3_1_3);
+    ptp_tri4_tstore(soa + 3 * PTP_TRI4_LANES, c3_2_0);
+    ptp_tri4_tstore(soa + 7 * PTP_TRI4_LANES, c3_2_1);
+    ptp_tri4_tstore(soa + 11 * PTP_TRI4_LANES, c3_2_2);
+    ptp_tri4_tstore(soa + 15 * PTP_TRI4_LANES, c3_2_3);
+}
+#elif PTP_TRI4_TW == 8
+#define PTP_TRI4_LO32(a, b) PTP_TRI4_SHUFFLE(a, b, 0, 8, 1, 9, 4, 12, 5, 13)
+#define PTP_TRI4_HI32(a, b) PTP_TRI4_SHUFFLE(a, b, 2, 10, 3, 11, 6, 14, 7, 15)
+#define PTP_TRI4_LO64(a, b) PTP_TRI4_SHUFFLE(a, b, 0, 1, 8, 9, 4, 5, 12, 13)
+#define PTP_TRI4_HI64(a, b) PTP_TRI4_SHUFFLE(a, b, 2, 3, 10, 11, 6, 7, 14, 15)
+#define PTP_TRI4_EVEN128(a, b) PTP_TRI4_SHUFFLE(a, b, 0, 1, 2, 3, 8, 9, 10, 11)
+#define PTP_TRI4_ODD128(a, b) PTP_TRI4_SHUFFLE(a, b, 4, 5, 6, 7, 12, 13, 14, 15)
+/* A tile of 8 patches by 2 points: row i, the 8 floats at cp + i * 4 * POINTS (patch i
+ * from point k); column j, coordinate j % 4 of point k + j / 4, to soa + j * LANES. */
+static inline void ptp_tri4_tile(float *PTP_TRI4_RESTRICT soa, const float *PTP_TRI4_RESTRICT cp)
+{
+    const ptp_tri4_tf r0 = ptp_tri4_tload(cp + 0 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r1 = ptp_tri4_tload(cp + 1 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r2 = ptp_tri4_tload(cp + 2 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r3 = ptp_tri4_tload(cp + 3 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r4 = ptp_tri4_tload(cp + 4 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r5 = ptp_tri4_tload(cp + 5 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r6 = ptp_tri4_tload(cp + 6 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r7 = ptp_tri4_tload(cp + 7 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf t0 = PTP_TRI4_LO32(r0, r1), t1 = PTP_TRI4_HI32(r0, r1);
+    const ptp_tri4_tf t2 = PTP_TRI4_LO32(r2, r3), t3 = PTP_TRI4_HI32(r2, r3);
+    const ptp_tri4_tf t4 = PTP_TRI4_LO32(r4, r5), t5 = PTP_TRI4_HI32(r4, r5);
+    const ptp_tri4_tf t6 = PTP_TRI4_LO32(r6, r7), t7 = PTP_TRI4_HI32(r6, r7);
+    const ptp_tri4_tf c0_0 = PTP_TRI4_LO64(t0, t2);
+    const ptp_tri4_tf c1_0 = PTP_TRI4_HI64(t0, t2);
+    const ptp_tri4_tf c3_0 = PTP_TRI4_HI64(t1, t3);
+    const ptp_tri4_tf c0_1 = PTP_TRI4_LO64(t4, t6);
+    const ptp_tri4_tf c1_1 = PTP_TRI4_HI64(t4, t6);
+    const ptp_tri4_tf c3_1 = PTP_TRI4_HI64(t5, t7);
+    const ptp_tri4_tf c0_1_0 = PTP_TRI4_EVEN128(c0_0, c0_1);
+    const ptp_tri4_tf c0_1_1 = PTP_TRI4_ODD128(c0_0, c0_1);
+    ptp_tri4_tstore(soa + 0 * PTP_TRI4_LANES, c0_1_0);
+    ptp_tri4_tstore(soa + 4 * PTP_TRI4_LANES, c0_1_1);
+    const ptp_tri4_tf c1_1_0 = PTP_TRI4_EVEN128(c1_0, c1_1);
+    const ptp_tri4_tf c1_1_1 = PTP_TRI4_ODD128(c1_0, c1_1);
+    ptp_tri4_tstore(soa + 1 * PTP_TRI4_LANES, c1_1_0);
+    ptp_tri4_tstore(soa + 5 * PTP_TRI4_LANES, c1_1_1);
+    const ptp_tri4_tf c3_1_0 = PTP_TRI4_EVEN128(c3_0, c3_1);
+    const ptp_tri4_tf c3_1_1 = PTP_TRI4_ODD128(c3_0, c3_1);
+    ptp_tri4_tstore(soa + 3 * PTP_TRI4_LANES, c3_1_0);
+    ptp_tri4_tstore(soa + 7 * PTP_TRI4_LANES, c3_1_1);
+}
+#else
+#define PTP_TRI4_LO32(a, b) PTP_TRI4_SHUFFLE(a, b, 0, 4, 1, 5)
+#define PTP_TRI4_HI32(a, b) PTP_TRI4_SHUFFLE(a, b, 2, 6, 3, 7)
+#define PTP_TRI4_LO64(a, b) PTP_TRI4_SHUFFLE(a, b, 0, 1, 4, 5)
+#define PTP_TRI4_HI64(a, b) PTP_TRI4_SHUFFLE(a, b, 2, 3, 6, 7)
+/* A tile of 4 patches by 1 point: row i, the 4 floats at cp + i * 4 * POINTS (patch i
+ * from point k); column j, coordinate j % 4 of point k + j / 4, to soa + j * LANES. */
+static inline void ptp_tri4_tile(float *PTP_TRI4_RESTRICT soa, const float *PTP_TRI4_RESTRICT cp)
+{
+    const ptp_tri4_tf r0 = ptp_tri4_tload(cp + 0 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r1 = ptp_tri4_tload(cp + 1 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r2 = ptp_tri4_tload(cp + 2 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf r3 = ptp_tri4_tload(cp + 3 * 4 * PTP_TRI4_POINTS);
+    const ptp_tri4_tf t0 = PTP_TRI4_LO32(r0, r1), t1 = PTP_TRI4_HI32(r0, r1);
+    const ptp_tri4_tf t2 = PTP_TRI4_LO32(r2, r3), t3 = PTP_TRI4_HI32(r2, r3);
+    const ptp_tri4_tf c0_0 = PTP_TRI4_LO64(t0, t2);
+    const ptp_tri4_tf c1_0 = PTP_TRI4_HI64(t0, t2);
+    const ptp_tri4_tf c3_0 = PTP_TRI4_HI64(t1, t3);
+    ptp_tri4_tstore(soa + 0 * PTP_TRI4_LANES, c0_0);
+    ptp_tri4_tstore(soa + 1 * PTP_TRI4_LANES, c1_0);
+    ptp_tri4_tstore(soa + 3 * PTP_TRI4_LANES, c3_0);
+}
+#endif
+#else
+#define PTP_TRI4_TALIGN
+#endif
+
+/* soa[(k * 4 + c) * LANES + l] = cp[l * POINTS + k][c] for the n <= LANES patches at cp and
+ * the coordinates the lanes read (clip space never reads z): tiles of TW patches, then one float at a time. */
+static void ptp_tri4_transpose(float *PTP_TRI4_RESTRICT soa, const float (*PTP_TRI4_RESTRICT cp)[4], size_t n)
+{
+    size_t l = 0;
+    unsigned k, c;
+#if defined(PTP_TRI4_TW)
+    for (; l + PTP_TRI4_TW <= n; l += PTP_TRI4_TW) {
+        for (k = 0; k + PTP_TRI4_TW / 4 <= PTP_TRI4_POINTS; k += PTP_TRI4_TW / 4)
+            ptp_tri4_tile(soa + k * 4 * PTP_TRI4_LANES + l, cp[l * PTP_TRI4_POINTS + k]);
+        if (k < PTP_TRI4_POINTS) /* the last points: a tile overlapping the one before */
+            ptp_tri4_tile(soa + (PTP_TRI4_POINTS - PTP_TRI4_TW / 4) * 4 * PTP_TRI4_LANES + l,
+                          cp[l * PTP_TRI4_POINTS + PTP_TRI4_POINTS - PTP_TRI4_TW / 4]);
+    }
+#endif
+    for (; l < n; l++)
+        for (k = 0; k < PTP_TRI4_POINTS; k++)
+            for (c = 0; c < 4; c++)
+                if (c != 2)
+                    soa[(k * 4 + c) * PTP_TRI4_LANES + l] = cp[l * PTP_TRI4_POINTS + k][c];
+}
+
+/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
 void ptp_tri4_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
-    float soa[PTP_TRI4_POINTS * 4 * PTP_TRI4_LANES];
-    size_t p, l, n;
-    unsigned k, c;
+    float soa[PTP_TRI4_POINTS * 4 * PTP_TRI4_LANES] PTP_TRI4_TALIGN;
+    size_t p, n;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_TRI4_LANES ? patch_count - p : PTP_TRI4_LANES;
-        l = 0;
-#if defined(__SSE2__) && !defined(PTP_TRI4_NO_SSE)
-        for (; l + 4 <= n; l += 4) /* 4x4 transposes: one point of four patches */
-            for (k = 0; k < PTP_TRI4_POINTS; k++) {
-                __m128 r0 = _mm_loadu_ps(cp[(p + l) * PTP_TRI4_POINTS + k]);
-                __m128 r1 = _mm_loadu_ps(cp[(p + l + 1) * PTP_TRI4_POINTS + k]);
-                __m128 r2 = _mm_loadu_ps(cp[(p + l + 2) * PTP_TRI4_POINTS + k]);
-                __m128 r3 = _mm_loadu_ps(cp[(p + l + 3) * PTP_TRI4_POINTS + k]);
-                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-                _mm_storeu_ps(soa + (k * 4 + 0) * PTP_TRI4_LANES + l, r0);
-                _mm_storeu_ps(soa + (k * 4 + 1) * PTP_TRI4_LANES + l, r1);
-                _mm_storeu_ps(soa + (k * 4 + 3) * PTP_TRI4_LANES + l, r3);
-            }
-#endif
-        for (; l < n; l++)
-            for (k = 0; k < PTP_TRI4_POINTS; k++)
-                for (c = 0; c < 4; c++)
-                    if (c != 2) /* z: clip space never reads it */
-                        soa[(k * 4 + c) * PTP_TRI4_LANES + l] = cp[(p + l) * PTP_TRI4_POINTS + k][c];
+        ptp_tri4_transpose(soa, cp + p * PTP_TRI4_POINTS, n);
 #if defined(__GNUC__) /* the next block into the caches while this one is classified */
         {
             const char *next = (const char *)(cp + (p + n) * PTP_TRI4_POINTS);
