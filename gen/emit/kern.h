@@ -98,6 +98,11 @@ struct kern_target {
     /* a fused multiply-add with one rounding, printf format of a, b, c for a * b + c (the second
      * look's exact two-product), or NULL: Dekker's product on Veltkamp's split instead */
     const char *fma;
+    /* 1: the second look reads the terms of the planes it looks at again from one table of all
+     * terms (constant memory); 0: it sums every plane again from the rounds' small tables
+     * (lavapipe copies a large constant array at every dynamic access, and compiles a loop over
+     * one for minutes) */
+    int df_table;
 };
 
 /* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */
