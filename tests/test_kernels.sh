@@ -668,3 +668,8 @@ ocl_mutant_caught "$tmp/cert/clip-degenerate" degenerate \
 # second look, against the right bound, still runs where the mutated bound does not decide.
 ocl_mutant_caught "$tmp/cert/clip-certified" strict 's/tau_k\[plane\] \* M + /tau_k[plane] * M * 0x1p-6f + /' \
     'M \* 0x1p-6f' "a certified OpenCL kernel with its float bounds 2^6 times too small"
+# The second look must count the planes it looks at again: an OpenCL kernel that drops their
+# double-float flags (keeping only the planes the float bounds decided) is caught unsafe (about
+# 4,000 of 2*10^5).
+ocl_mutant_caught "$tmp/cert/clip-certified" strict 's/) & mine \* 3u;/) \& 0u;/' \
+    ') & 0u;' "a certified OpenCL kernel whose second look drops the planes it looks at again"
