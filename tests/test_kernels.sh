@@ -450,7 +450,8 @@ done
 # Every target's certified kernel sees 10^6 exact patches. A third of them take the GPU kernels'
 # double-float second look (its planes whose float bounds do not clear); on lavapipe, where
 # GLSL and HLSL sum every plane again from the rounds' tables, a run costs about 70 us of CPU a
-# patch in clip space (a minute or two for each of its four), on PoCL about 5 us.
+# patch (with GLIBC_TUNABLES above; about 2 minutes for each of its runs on a loaded machine), on
+# PoCL 4 to 5 us. The seven certified degenerate runs below took 458 s together (load average 6).
 cert_data="--exact 100 10000 41" cert_short="--exact 20 10000 41"
 # exact_run NAME KIND CMD...: runs a host like run_host; KIND plain also requires the first
 # "kernel unsafe N" the host prints to be at least 1 (a host with no GPU prints none: skipped).
