@@ -26,4 +26,5 @@ const kern_target kern_cuda = {
     .bits = "__float_as_uint(%s)",
     .vec2 = "float2", .vec2_make = "make_float2(%s, %s)",
     .fma = "__fmaf_rn(%s, %s, %s)", /* correctly rounded: one rounding */
+    .df_table = 1,
 };

@@ -26,4 +26,5 @@ const kern_target kern_opencl = {
     .bits = "as_uint(%s)",
     .vec2 = "float2", .vec2_make = "(float2)(%s, %s)",
     .fma = "fma(%s, %s, %s)", /* correctly rounded: one rounding */
+    .df_table = 1,
 };

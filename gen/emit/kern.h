@@ -106,6 +106,11 @@ struct kern_target {
      * own: HLSL's SPIR-V legalization (glslang, DXC) inlines every call, in a time quadratic in
      * the size of the block that receives the inlined code */
     int split_rounds;
+    /* 1: the second look reads the terms of the planes it looks at again from one table of all
+     * terms (constant memory); 0: it sums every plane again from the rounds' small tables
+     * (lavapipe copies a large constant array at every dynamic access, and compiles a loop over
+     * one for minutes) */
+    int df_table;
 };
 
 /* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */

@@ -171,22 +171,83 @@ static void put_owners(sbuf *o, const tp_table *t, const out_info *info, const k
     sbuf_puts(o, "\n");
 }
 
-/* With the second look, round r's weights' low parts wl: the float nearest w - w[t], so that
- * w[t] + wl[t] is w within 2^-47 |w|. */
+/* Whether the kernel has the second look: --certified on a target with double-float. */
+static int second_look(const out_info *info, const kern_target *g)
+{
+    return info->certified && g->vec2;
+}
+
+/* Into hi the float of w's literal, into lo the float nearest w - hi: hi + lo is w within
+ * 2^-47 |w|. */
+static void weight_split(float *hi, float *lo, const rat *w)
+{
+    char lit[48];
+    *hi = strtof(fmt_float_literal(lit, w), NULL);
+    *lo = (float)(rat_get_d(w) - (double)*hi);
+}
+
+/* With the second look, its terms in the order of own_plane: those of own_plane[n] are
+ * dj, dkl, dw, dwl[dstart[n] .. dstart[n+1]-1] (points j and k | l << 16, the weight's high and
+ * low parts), so that a thread re-evaluates only the planes it chose. v has room for nplanes + 1
+ * + 2 nterms values. */
+static int put_df_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                        unsigned long *v, ptp_error *err)
+{
+    const sched *s = info->sched;
+    long L = t->dom.nplanes, n = 0, th, p;
+    size_t x, k = 0;
+    float *w;
+    for (th = 0; th < s->threads; th++) {
+        for (p = 0, n = 0; p < L; p++)
+            n += s->owner[p] == th;
+        if (n > 32) /* the planes a thread chose are bits of one uint */
+            return ptp_fail(err, PTP_ELIMIT, "--certified: thread %ld owns %ld planes, more than 32", th, n);
+    }
+    n = 0;
+    w = malloc(2 * (t->nterms + 1) * sizeof *w);
+    if (!w)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
+    for (th = 0; th < s->threads; th++)
+        for (p = 0; p < L; p++) {
+            if (s->owner[p] != th)
+                continue;
+            v[n++] = (unsigned long)k;
+            for (x = 0; x < t->nterms; x++) {
+                const tp_term *a = &t->terms[x];
+                if (a->plane != p)
+                    continue;
+                v[L + 1 + k] = (unsigned long)a->j;
+                v[L + 1 + t->nterms + k] = (unsigned long)a->k | (unsigned long)a->l << 16;
+                weight_split(&w[k], &w[t->nterms + k], &a->w);
+                k++;
+            }
+        }
+    v[n] = (unsigned long)k;
+    sbuf_puts(o, "/* Second look: the terms of own_plane[n] are dw[i] * term(dj[i], dkl[i] = k | l << 16)\n"
+                 " * (weight dw + dwl in double-float) for i in dstart[n] .. dstart[n+1]-1. */\n");
+    put_uint_table(o, g, info->prefix, "dstart", v, L + 1, 16, 0);
+    put_uint_table(o, g, info->prefix, "dj", v + L + 1, (long)k, 16, 0);
+    put_uint_table(o, g, info->prefix, "dkl", v + L + 1 + t->nterms, (long)k, 8, 1);
+    put_float_table(o, g, info->prefix, "dw", w, (int)k);
+    put_float_table(o, g, info->prefix, "dwl", w + t->nterms, (int)k);
+    sbuf_puts(o, "\n");
+    free(w);
+    return PTP_OK;
+}
+
+/* With the second look from the rounds, round r's weights' low parts wl (weight_split). */
 static void put_weight_lo(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                           int r)
 {
     const sched *s = info->sched;
-    float lo[SCHED_MAX_THREADS];
-    char name[32], lit[48];
+    float lo[SCHED_MAX_THREADS], hi;
+    char name[32];
     int th;
     for (th = 0; th < s->threads; th++) {
         long x = s->slot[(long)r * s->threads + th];
         lo[th] = 0.0f;
-        if (x >= 0) {
-            double w = rat_get_d(&t->terms[x].w);
-            lo[th] = (float)(w - (double)strtof(fmt_float_literal(lit, &t->terms[x].w), NULL));
-        }
+        if (x >= 0)
+            weight_split(&hi, &lo[th], &t->terms[x].w);
     }
     snprintf(name, sizeof name, "wl%d", r);
     put_float_table(o, g, info->prefix, name, lo, s->threads);
@@ -194,7 +255,7 @@ static void put_weight_lo(sbuf *o, const tp_table *t, const out_info *info, cons
 
 /* Round r's tables: the slots of the P threads (packed indices pj, kl and weights w); padding
  * slots name an owned plane with weight 0. One small table per field, indexed by the thread:
- * no shader indexes a large constant array dynamically (lavapipe copies such an array on every
+ * the rounds index no large constant array dynamically (lavapipe copies such an array on every
  * access; GPUs prefer small tables too). v has room for 2 P values. */
 static void put_round(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                       int r, unsigned long *v)
@@ -224,7 +285,7 @@ static void put_round(sbuf *o, const tp_table *t, const out_info *info, const ke
         sbuf_printf(o, "%s%s", table_sep(th, 8), lit);
     }
     sbuf_puts(o, g->syntax->table_close);
-    if (info->certified && g->vec2)
+    if (second_look(info, g) && !g->df_table)
         put_weight_lo(o, t, info, g, r);
     sbuf_puts(o, "\n");
 }
@@ -313,15 +374,18 @@ static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, con
 static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                       const char *up, ptp_error *err)
 {
-    int P = info->sched->threads, r;
-    unsigned long *v = malloc((size_t)(2 * P > t->dom.nplanes ? 2 * P : t->dom.nplanes + P + 1) * sizeof *v);
+    int P = info->sched->threads, r, st = PTP_OK;
+    size_t n = (size_t)t->dom.nplanes + (size_t)P + 2 * t->nterms + 2;
+    unsigned long *v = malloc(n * sizeof *v); /* room for put_owners, put_round, put_df_terms */
     if (!v)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
     put_owners(o, t, info, g, up, v);
     for (r = 0; r < info->sched->rounds; r++)
         put_round(o, t, info, g, r, v);
+    if (second_look(info, g) && g->df_table)
+        st = put_df_terms(o, t, info, g, v, err);
     free(v);
-    return info->certified ? put_cert_tables(o, t, info, g, up, err) : PTP_OK;
+    return !st && info->certified ? put_cert_tables(o, t, info, g, up, err) : st;
 }
 
 /* Writes to d (512 bytes) det[a b c] of rows p, q, s (components "xyzw"[i]) with the target's
@@ -584,14 +648,8 @@ static void put_classify(sbuf *o, const out_info *info, const kern_target *g)
     sbuf_printf(o, "    return %s;\n}\n\n", e[k]);
 }
 
-/* Whether the kernel has the second look: --certified on a target with double-float. */
-static int second_look(const out_info *info, const kern_target *g)
-{
-    return info->certified && g->vec2;
-}
-
 /* The workgroup-shared arrays: the patches' points, the planes' accumulators (with the second
- * look, their low parts acc2 too), the flags. */
+ * look from the rounds, their low parts acc2 too), the flags. */
 static void put_shared(sbuf *o, const out_info *info, const kern_target *g, const char *up,
                        const char *indent)
 {
@@ -600,7 +658,7 @@ static void put_shared(sbuf *o, const out_info *info, const kern_target *g, cons
     g->syntax->shared(o, g, indent, g->vec4, "pts", count);
     snprintf(count, sizeof count, "%sQ * %sL", up, up);
     g->syntax->shared(o, g, indent, g->real, "acc", count);
-    if (second_look(info, g))
+    if (second_look(info, g) && !g->df_table)
         g->syntax->shared(o, g, indent, g->real, "acc2", count);
     snprintf(count, sizeof count, "%sQ * %sP", up, up);
     g->syntax->shared(o, g, indent, g->uint, "flags", count);
@@ -817,8 +875,10 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
     put_end(o, g, "    ");
     if (exact_zeros(info))
         put_collapsed(o, d, info, g, up);
-    if (second_look(info, g))
-        put_local(o, g, g->uint, "pf", "0u", 1); /* the plain float signs' flags */
+    if (second_look(info, g)) { /* the plain float signs' flags; the planes to look at again */
+        kern_var v[3] = {{"pf", "0u", 1}, {"redo", "0u", 1}, {"fd", "0u", 1}};
+        g->syntax->locals(o, g, "    ", g->uint, v, 3, 0);
+    }
 }
 
 /* With exact zeros, the local keep of the plane numbered by the expression plane: 0u where a
@@ -830,6 +890,27 @@ static void put_keep(sbuf *o, const out_info *info, const kern_target *g, const 
     snprintf(cond, sizeof cond, "(%szero[%s] & col) == 0u", info->prefix, plane);
     g->syntax->select(e, sizeof e, cond, "3u", "0u");
     g->syntax->locals(o, g, indent, g->uint, &(kern_var){"keep", e, 0}, 1, 0);
+}
+
+/* With the second look, a plane's certified flags fp and plain flags pp: into f and pf, and
+ * where they differ (the bound does not clear where the plain sign decides) the plane's bit in
+ * redo (its place in own_plane after own_start[t]), else fp into fd. */
+static void put_split_flags(sbuf *o, const out_info *info, const kern_target *g)
+{
+    const char *px = info->prefix, *keep = exact_zeros(info) ? " & keep" : "";
+    char e[256];
+    kern_var v[2] = {{"fp", e, 0}, {"pp", NULL, 0}};
+    char pp[128];
+    snprintf(e, sizeof e, "%sflags(d, %stau_k[plane] * M + %stau_f[plane] * F)%s", px, px, px, keep);
+    snprintf(pp, sizeof pp, "%sflags(d, 0.0f)%s", px, keep);
+    v[1].init = pp;
+    g->syntax->locals(o, g, "        ", g->uint, v, 1, 0);
+    g->syntax->locals(o, g, "        ", g->uint, v + 1, 1, 0);
+    snprintf(e, sizeof e, "1u << (i - %sown_start[t])", px);
+    g->syntax->select(pp, sizeof pp, "fp != pp", e, "0u");
+    sbuf_printf(o, "        f |= fp;\n        pf |= pp;\n        redo |= %s;\n", pp);
+    g->syntax->select(pp, sizeof pp, "fp != pp", "0u", "fp");
+    sbuf_printf(o, "        fd |= %s;\n", pp);
 }
 
 /* The values and flags of the owned planes (and with --planes, the values written out). */
@@ -853,13 +934,13 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
     }
     if (exact_zeros(info))
         put_keep(o, info, g, "        ", "plane");
-    if (info->certified)
+    if (second_look(info, g))
+        put_split_flags(o, info, g);
+    else if (info->certified)
         sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * M + %stau_f[plane] * F)%s;\n", px, px, px,
                     exact_zeros(info) ? " & keep" : "");
     else
         sbuf_printf(o, "        f |= %sflags(d);\n", px);
-    if (second_look(info, g))
-        sbuf_printf(o, "        pf |= %sflags(d, 0.0f)%s;\n", px, exact_zeros(info) ? " & keep" : "");
     sbuf_puts(o, "    }\n");
 }
 
@@ -868,8 +949,9 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
 static void put_again(sbuf *o, const kern_target *g, const char *up)
 {
     sbuf_printf(o,
-                "\n    /* Second look: a patch whose plain float signs decide but whose bounds do not is\n"
-                "     * evaluated again in double-float, against its own bound. */\n"
+                "\n    /* Second look: in a patch whose plain float signs decide but whose bounds do not,\n"
+                "     * the planes whose bounds do not clear are evaluated again in double-float, against\n"
+                "     * their own bound. */\n"
                 "    flags[q * %sP + t] = f | (pf << 2u);\n"
                 "    %s\n",
                 up, g->barrier);
@@ -882,16 +964,14 @@ static void put_again(sbuf *o, const kern_target *g, const char *up)
     sbuf_printf(o, "    %s\n", g->barrier);
 }
 
-/* The second look's accumulation: put_accumulate's rounds in double-float into acc and acc2;
+/* The second look from the rounds: put_accumulate's rounds in double-float into acc and acc2;
  * with split_rounds each round under a test of its weight (padding slots' is 0). */
 static void put_df_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
     char hi[96], lo[96], w[96], wl[96], x[256], y[256];
     int r;
-    kern_var v[2] = {{"at", NULL, 1}, {"s", NULL, 1}};
-    g->syntax->locals(o, g, "        ", g->uint, v, 1, 0);
-    g->syntax->locals(o, g, "        ", g->vec2, v + 1, 1, 0);
+    g->syntax->locals(o, g, "        ", g->uint, &(kern_var){"at", NULL, 1}, 1, 0);
     sbuf_printf(o, "        for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n"
                    "            acc[q * %sL + %sown_plane[i]] = 0.0f;\n"
                    "            acc2[q * %sL + %sown_plane[i]] = 0.0f;\n        }\n",
@@ -917,34 +997,68 @@ static void put_df_accumulate(sbuf *o, const out_info *info, const kern_target *
     }
 }
 
-/* The second look for the patches put_again chose: their flags f again, from the double-float
- * values and the bounds tau2 (plus twice the low part, for comparing the high part alone). */
+/* The second look's sum for own_plane[i] into s, in double-float: its terms when mine (its bit in
+ * redo) is set, else none. */
+static void put_df_sum(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
+    char start[96], end[96], init[256], zero[96], w[128];
+    snprintf(start, sizeof start, "%sdstart[i]", px);
+    snprintf(end, sizeof end, "%sdstart[i + 1u]", px);
+    g->syntax->select(init, sizeof init, "mine != 0u", start, end);
+    snprintf(zero, sizeof zero, g->vec2_make, "0.0f", "0.0f");
+    snprintf(w, sizeof w, g->vec2_make, "$dw[j]", "$dwl[j]");
+    sbuf_printf(o, "            s = %s;\n            for (j = %s; j < %s; j++)", zero, init, end);
+    put_then(o, g);
+    sbuf_printf(o, "                s = %sdf_add(s, %sdf_mul(", px, px);
+    put_df_text(o, info, g, w);
+    sbuf_printf(o, ", %sdf_%s(pts[q * %sK + %sdj[j]],\n"
+                   "                    pts[q * %sK + (%sdkl[j] & 0xffffu)], pts[q * %sK + (%sdkl[j] >> 16)]%s)));\n",
+                px, fn, up, px, up, px, up, px, info->space == OUT_CLIP ? "" : ", eye");
+    put_end(o, g, "            ");
+}
+
+/* The second look for the patches put_again chose: f again, from fd and the planes of redo in
+ * double-float against the bounds tau2 (plus twice the low part, for comparing the high part
+ * alone). */
 static void put_second_look(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix;
-    char a[128], b[160];
+    char a[160], b[160];
+    kern_var j = {"j", NULL, 1}, s = {"s", NULL, 1};
     put_again(o, g, up);
     sbuf_puts(o, "    if (again) {\n");
-    put_df_accumulate(o, info, g, up);
-    sbuf_printf(o, "        f = 0u;\n        if (!(%s(E, 1.0f) * R3 < %sQMAX2))", g->fmax, up);
+    g->syntax->locals(o, g, "        ", g->vec2, &s, 1, 0);
+    if (g->df_table)
+        g->syntax->locals(o, g, "        ", g->uint, &j, 1, 0);
+    else
+        put_df_accumulate(o, info, g, up);
+    sbuf_printf(o, "        f = fd;\n        if (!(%s(E, 1.0f) * R3 < %sQMAX2))", g->fmax, up);
     put_then(o, g);
     sbuf_puts(o, "            f = 3u;\n");
     put_end(o, g, "        ");
     sbuf_printf(o, "        for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n", px, px);
-    sbuf_printf(o, "            at = q * %sL + %sown_plane[i];\n", up, px);
-    if (exact_zeros(info)) {
-        snprintf(b, sizeof b, "%sown_plane[i]", px);
-        put_keep(o, info, g, "            ", b);
+    snprintf(a, sizeof a, "%sown_plane[i]", px);
+    g->syntax->locals(o, g, "            ", g->uint, &(kern_var){"plane", a, 0}, 1, 0);
+    snprintf(b, sizeof b, "(redo >> (i - %sown_start[t])) & 1u", px);
+    g->syntax->locals(o, g, "            ", g->uint, &(kern_var){"mine", b, 0}, 1, 0);
+    if (exact_zeros(info))
+        put_keep(o, info, g, "            ", "plane");
+    if (g->df_table) {
+        put_df_sum(o, info, g, up);
+    } else {
+        snprintf(a, sizeof a, g->vec2_make, "acc[q * %sL + plane]", "acc2[q * %sL + plane]");
+        sbuf_printf(o, "            s = ");
+        sbuf_printf(o, a, up, up);
+        sbuf_puts(o, ";\n");
     }
-    snprintf(a, sizeof a, g->vec2_make, "acc[at]", "acc2[at]");
-    if (info->space == OUT_CLIP)
-        snprintf(b, sizeof b, "%sdf_mul_f(%s, eye.z)", px, a);
+    snprintf(b, sizeof b, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "            ", g->vec2,
-                      &(kern_var){"d", info->space == OUT_CLIP ? b : a, 0}, 1, 0);
-    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[%sown_plane[i]] * M +\n"
-                   "                %stau2_f[%sown_plane[i]] * F + 2.0f * %s(d.y))%s;\n"
+                      &(kern_var){"d", info->space == OUT_CLIP ? b : "s", 0}, 1, 0);
+    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[plane] * M + %stau2_f[plane] * F +\n"
+                   "                2.0f * %s(d.y)) & mine * %s;\n"
                    "        }\n    }\n",
-                px, px, px, px, px, g->fabs, exact_zeros(info) ? " & keep" : "");
+                px, px, px, g->fabs, exact_zeros(info) ? "keep" : "3u");
 }
 
 /* The end: the threads' flags through shared memory, and thread 0 of a patch writes its class. */
