@@ -108,6 +108,43 @@ static int plan_forms(slp_prog *p, const tp_domain *d)
     return PTP_OK;
 }
 
+/* Appends plane terms t->terms[a, b) to p: its scale c_P, its terms grouped by |weight| / c_P
+ * (groups in p->s), each term's minors as pairs (pair_of: the pair of two points, or -1); sc has
+ * room for b - a. PTP_OK, or PTP_EOVERFLOW with err set. */
+static int add_plane(slp_prog *p, int *pair_of, scaled *sc, const tp_table *t, size_t a, size_t b,
+                     ptp_error *err)
+{
+    size_t i;
+    rat c;
+    if (plane_scale(&c, t->terms, a, b))
+        return ptp_fail(err, PTP_EOVERFLOW, "the scale of plane %d does not fit 128 bits", t->terms[a].plane);
+    p->c[t->terms[a].plane] = c;
+    for (i = a; i < b; i++) {
+        sc[i - a].index = i;
+        if (rat_mul(&sc[i - a].s, &t->terms[i].w, &c))
+            return ptp_fail(err, PTP_EOVERFLOW, "a scaled weight of plane %d does not fit", t->terms[a].plane);
+        if (rat_sgn(&sc[i - a].s) < 0)
+            rat_neg(&sc[i - a].s, &sc[i - a].s);
+    }
+    qsort(sc, b - a, sizeof *sc, by_scale);
+    for (i = 0; i < b - a; i++) {
+        const tp_term *x = &t->terms[sc[i].index];
+        slp_term *y = &p->terms[p->nterms++];
+        if (i == 0 || !rat_equal(&sc[i].s, &sc[i - 1].s))
+            p->s[p->ngroups++] = sc[i].s;
+        y->plane = x->plane;
+        y->neg = rat_sgn(&x->w) < 0;
+        y->group = (int)p->ngroups - 1;
+        y->point[0] = x->j;
+        y->point[1] = x->k;
+        y->point[2] = x->l;
+        y->pair[0] = pair_index(p, pair_of, x->k, x->l);
+        y->pair[1] = pair_index(p, pair_of, x->j, x->l);
+        y->pair[2] = pair_index(p, pair_of, x->j, x->k);
+    }
+    return PTP_OK;
+}
+
 int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
 {
     size_t a, b, i, n = t->nterms + 1;
@@ -132,44 +169,13 @@ int slp_build(slp_prog *p, const tp_table *t, ptp_error *err)
     }
     for (i = 0; i < (size_t)t->dom.npoints * (size_t)t->dom.npoints; i++)
         pair_of[i] = -1;
-    for (a = 0; a < t->nterms; a = b) {
-        rat c;
+    for (a = 0; a < t->nterms && st == PTP_OK; a = b) {
         for (b = a; b < t->nterms && t->terms[b].plane == t->terms[a].plane; b++)
             ;
-        if (plane_scale(&c, t->terms, a, b)) {
-            st = ptp_fail(err, PTP_EOVERFLOW, "the scale of plane %d does not fit 128 bits",
-                          t->terms[a].plane);
-            goto done;
-        }
-        p->c[t->terms[a].plane] = c;
-        for (i = a; i < b; i++) {
-            sc[i - a].index = i;
-            if (rat_mul(&sc[i - a].s, &t->terms[i].w, &c)) {
-                st = ptp_fail(err, PTP_EOVERFLOW, "a scaled weight of plane %d does not fit",
-                              t->terms[a].plane);
-                goto done;
-            }
-        }
-        for (i = 0; i < b - a; i++)
-            if (rat_sgn(&sc[i].s) < 0)
-                rat_neg(&sc[i].s, &sc[i].s);
-        qsort(sc, b - a, sizeof *sc, by_scale);
-        for (i = 0; i < b - a; i++) {
-            const tp_term *x = &t->terms[sc[i].index];
-            slp_term *y = &p->terms[p->nterms++];
-            if (i == 0 || !rat_equal(&sc[i].s, &sc[i - 1].s))
-                p->s[p->ngroups++] = sc[i].s;
-            y->plane = x->plane;
-            y->neg = rat_sgn(&x->w) < 0;
-            y->group = (int)p->ngroups - 1;
-            y->point[0] = x->j;
-            y->point[1] = x->k;
-            y->point[2] = x->l;
-            y->pair[0] = pair_index(p, pair_of, x->k, x->l);
-            y->pair[1] = pair_index(p, pair_of, x->j, x->l);
-            y->pair[2] = pair_index(p, pair_of, x->j, x->k);
-        }
+        st = add_plane(p, pair_of, sc, t, a, b, err);
     }
+    if (st)
+        goto done;
     if ((st = plan_forms(p, &t->dom)) != PTP_OK)
         st = ptp_fail(err, st, st == PTP_ENOMEM ? "out of memory choosing the planes' forms"
                                                 : "the point form of a plane the cost model chose failed");
