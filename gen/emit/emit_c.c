@@ -498,11 +498,7 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
     int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
-    sbuf_printf(o, "    size_t l;\n"
-                   "#if defined(__clang__) && defined(__AVX512F__) && %sVW == 1\n"
-                   "#pragma clang loop vectorize_width(16) interleave_count(1)\n"
-                   "#endif\n"
-                   "    for (l = 0; l < n; l += %sVW) {\n"
+    sbuf_printf(o, "    size_t l;\n    for (l = 0; l < n; l += %sVW) {\n"
                    "        const float *q = soa + l;\n        size_t qs = stride;\n"
                    "        %svm %s, %s%s;\n        %svf u, v%s;\n"
                    "#if %sVW > 1\n"
@@ -514,7 +510,7 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
                    "%*sfor (i = 0; i < %sVW; i++)\n"
                    "%*s    tail[k * %sVW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];\n"
                    "            q = tail;\n            qs = %sVW;\n        }\n#endif\n",
-                up, up, px, strict ? "notlt" : "lt", strict ? "notgt" : "gt",
+                up, px, strict ? "notlt" : "lt", strict ? "notgt" : "gt",
                 info->certified ? ", plt, pgt" : strict ? "" : ", nan", px,
                 info->certified ? ", t" : "", up, up, up, up, up,
                 world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",

@@ -47,14 +47,9 @@ extern "C" {
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_2X2_FLOPS 568
 #define PTP_2X2_MULS 289
-/* Patches classify_batch transposes and classifies at a time (define it to override): the
- * fastest measured, 64 with clang's vectorized loop, 16 with gcc's GNU C vectors. */
+/* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_2X2_LANES
-#if defined(__clang__)
-#define PTP_2X2_LANES 64
-#else
 #define PTP_2X2_LANES 16
-#endif
 #endif
 
 /* The 25 control planes of one patch, all four components, at true scale. */
@@ -453,9 +448,6 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
 #endif
     const float e2 = eye[2];
     size_t l;
-#if defined(__clang__) && defined(__AVX512F__) && PTP_2X2_VW == 1
-#pragma clang loop vectorize_width(16) interleave_count(1)
-#endif
     for (l = 0; l < n; l += PTP_2X2_VW) {
         const float *q = soa + l;
         size_t qs = stride;

@@ -47,14 +47,9 @@ extern "C" {
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_3X1_FLOPS 436
 #define PTP_3X1_MULS 208
-/* Patches classify_batch transposes and classifies at a time (define it to override): the
- * fastest measured, 64 with clang's vectorized loop, 16 with gcc's GNU C vectors. */
+/* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X1_LANES
-#if defined(__clang__)
-#define PTP_3X1_LANES 64
-#else
 #define PTP_3X1_LANES 16
-#endif
 #endif
 
 /* The 16 control planes of one patch, all four components, at true scale. */
@@ -397,9 +392,6 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
 #endif
     const float e2 = eye[2];
     size_t l;
-#if defined(__clang__) && defined(__AVX512F__) && PTP_3X1_VW == 1
-#pragma clang loop vectorize_width(16) interleave_count(1)
-#endif
     for (l = 0; l < n; l += PTP_3X1_VW) {
         const float *q = soa + l;
         size_t qs = stride;

@@ -47,14 +47,9 @@ extern "C" {
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_3X3_FLOPS 3992
 #define PTP_3X3_MULS 1744
-/* Patches classify_batch transposes and classifies at a time (define it to override): the
- * fastest measured, 64 with clang's vectorized loop, 16 with gcc's GNU C vectors. */
+/* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X3_LANES
-#if defined(__clang__)
-#define PTP_3X3_LANES 64
-#else
 #define PTP_3X3_LANES 16
-#endif
 #endif
 
 /* The 64 control planes of one patch, all four components, at true scale. */
@@ -1333,9 +1328,6 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
 #endif
     const float e2 = eye[2];
     size_t l;
-#if defined(__clang__) && defined(__AVX512F__) && PTP_3X3_VW == 1
-#pragma clang loop vectorize_width(16) interleave_count(1)
-#endif
     for (l = 0; l < n; l += PTP_3X3_VW) {
         const float *q = soa + l;
         size_t qs = stride;

@@ -46,14 +46,9 @@ extern "C" {
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define PTP_TRI2_FLOPS 144
 #define PTP_TRI2_MULS 87
-/* Patches classify_batch transposes and classifies at a time (define it to override): the
- * fastest measured, 64 with clang's vectorized loop, 16 with gcc's GNU C vectors. */
+/* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI2_LANES
-#if defined(__clang__)
-#define PTP_TRI2_LANES 64
-#else
 #define PTP_TRI2_LANES 16
-#endif
 #endif
 
 /* The 10 control planes of one patch, all four components, at true scale. */
@@ -334,9 +329,6 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
 #endif
     const float e2 = eye[2];
     size_t l;
-#if defined(__clang__) && defined(__AVX512F__) && PTP_TRI2_VW == 1
-#pragma clang loop vectorize_width(16) interleave_count(1)
-#endif
     for (l = 0; l < n; l += PTP_TRI2_VW) {
         const float *q = soa + l;
         size_t qs = stride;

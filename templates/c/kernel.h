@@ -20,14 +20,9 @@ extern "C" {
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
 #define {{UPREFIX}}FLOPS {{FLOPS}}
 #define {{UPREFIX}}MULS {{MULS}}
-/* Patches classify_batch transposes and classifies at a time (define it to override): the
- * fastest measured, 64 with clang's vectorized loop, 16 with gcc's GNU C vectors. */
+/* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef {{UPREFIX}}LANES
-#if defined(__clang__)
-#define {{UPREFIX}}LANES 64
-#else
 #define {{UPREFIX}}LANES 16
-#endif
 #endif
 
 /* The {{PLANES}} control planes of one patch, all four components, at true scale. */
