@@ -548,12 +548,12 @@ mutant_caught() {
 }
 # The exact check can fail: a certified header whose bounds are 2^10 times too small must be
 # caught calling patches back or front that are not.
-"$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /' "$tmp/k.h"
+"$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-10f + /; s/, ER3, PTP_3X3_VABS/, ER3 * 0x1p-10f, PTP_3X3_VABS/' "$tmp/k.h"
 mutant_caught strict 'ER3 \* 0x1p-10f' "a certified C header with its bounds 2^10 times too small"
 # The bound is near the errors the exact data reach: 2^6 times too small, it is caught as well
 # (about 40 unsafe of 10^6; with each plane's largest rounding depth for all its monomials and
 # E R^3 for every monomial, the bound was about twice as loose, and such a mutant was unsafe once).
-"$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-6f + /' "$tmp/k.h"
+"$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-6f + /; s/, ER3, PTP_3X3_VABS/, ER3 * 0x1p-6f, PTP_3X3_VABS/' "$tmp/k.h"
 mutant_caught strict 'ER3 \* 0x1p-6f' "a certified C header with its bounds 2^6 times too small" "$cert_data"
 # gives_up_little NAME OUT [PCT]: the host output OUT on random and teapot patches (a quarter with
 # a collapsed edge) gives up at most PCT% (default 1) of the back or front patches (its first
@@ -592,8 +592,8 @@ done
 # ... and the exact check can fail there: a header that counts every plane as zero where edge 0 is
 # collapsed, not only the planes along it, must be caught calling patches back that are not.
 "$P" --degree 3 --space clip --rule degenerate --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" &&
-    sed -i 's/notlt |= (v < -t) == 0;/notlt |= ((v < -t) | c0) == 0;/; s/plt |= (v < 0.0f) == 0;/plt |= ((v < 0.0f) | c0) == 0;/; s/notlt |= ((d\[x\] < -bound) | z) == 0;/notlt |= ((d[x] < -bound) | (col \& 1)) == 0;/' "$tmp/k.h"
-mutant_caught degenerate '(v < -t) | c0) == 0' "a certified degenerate C header that zeros planes off the collapsed edge"
+    sed -i 's/notlt |= (v < 0.0f) == 0;/notlt |= ((v < 0.0f) | c0) == 0;/; s/s = PTP_3X3_VMIN(s, t);/amb |= ((t > F) | c0) == 0;/; s/notlt |= ((d\[x\] < -bound) | z) == 0;/notlt |= ((d[x] < -bound) | (col \& 1)) == 0;/' "$tmp/k.h"
+mutant_caught degenerate '(t > F) | c0) == 0' "a certified degenerate C header that zeros planes off the collapsed edge"
 # Certified GPU kernels under the degenerate rule test the patch's edges too (their points'
 # bits) and count the planes along a collapsed one as exactly 0: like the C headers they keep the
 # degenerate rule's culls (kernels without the test gave up about a quarter) and stay safe on the

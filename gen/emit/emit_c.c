@@ -454,11 +454,35 @@ static int put_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const ou
     return PTP_OK;
 }
 
+/* Certified: VABS(x) = |x| lane by lane (NaN stays NaN); VMIN(a, b) = the lesser of a and b,
+ * with vectors by their bits as signed integers (the float order on floats >= +0, and a negative
+ * float or -0 below every one of those): a minimum above F > 0 is the least value above F. */
+static void put_cert_macros(sbuf *o, const char *px, const char *up)
+{
+    static const char *const with[3][3] = {{"16", "", "512"}, {"8", " && defined(__AVX2__)", "256"},
+                                           {"4", " && defined(__SSE4_1__)", ""}};
+    int i;
+    sbuf_printf(o, "/* Certified: |x| lane by lane (NaN stays NaN), and the lesser of a and b: vectors by their\n"
+                   " * bits as signed integers, which order floats >= +0 as floats and put the others below. */\n"
+                   "#if %sVW > 1\n#define %sVABS(x) ((%svf)((%svm)(x) & 0x7fffffff))\n",
+                up, up, px, px);
+    for (i = 0; i < 3; i++)
+        sbuf_printf(o, "#%s %sVW == %s%s\n#include <immintrin.h>\n"
+                       "#define %sVMIN(a, b) ((%svf)_mm%s_min_epi32((__m%si)(a), (__m%si)(b)))\n",
+                    i ? "elif" : "if", up, with[i][0], with[i][1], up, px, with[i][2],
+                    *with[i][2] ? with[i][2] : "128", *with[i][2] ? with[i][2] : "128");
+    sbuf_printf(o, "#else\n#define %sVMIN(a, b) ((%svf)(((%svm)(a) & ((%svm)(a) < (%svm)(b))) | ((%svm)(b) & ((%svm)(a) >= (%svm)(b)))))\n"
+                   "#endif\n#else\n#define %sVABS(x) ((x) < 0.0f ? -(x) : (x))\n#define %sVMIN(a, b) ((a) < (b) ? (a) : (b))\n#endif\n",
+                up, px, px, px, px, px, px, px, up, up);
+}
+
 /* The lanes function's comment, attributes and head, and the eye's values (certified: E). */
 static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
+    if (info->certified)
+        put_cert_macros(o, px, up);
     sbuf_printf(o,
                 "/* The classification of n patches in structure-of-arrays order: coordinate c of point k\n"
                 " * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table\n"
@@ -511,8 +535,8 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
                    "%*s    tail[k * %sVW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];\n"
                    "            q = tail;\n            qs = %sVW;\n        }\n#endif\n",
                 up, px, strict ? "notlt" : "lt", strict ? "notgt" : "gt",
-                info->certified ? ", plt, pgt" : strict ? "" : ", nan", px,
-                info->certified ? ", t" : "", up, up, up, up, up,
+                info->certified ? ", amb" : strict ? "" : ", nan", px,
+                info->certified ? ", t, s" : "", up, up, up, up, up,
                 world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
                 world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
 }
@@ -562,11 +586,13 @@ static void put_magnitudes(sbuf *o, int npoints, const out_info *info, const cer
     sbuf_puts(o, "        /* Certified: Rc, the largest |coordinate c|, bound every value's rounding error. */\n");
     for (c = 0; c < 4; c++)
         if (world || c != 2)
-            sbuf_printf(o, "        %svf R%c = %svabsmax(%c0, %c0);\n", px, crd[c], px, crd[c], crd[c]);
+            sbuf_printf(o, "        %svf R%c = %svabsmax(%svload(q + %d * qs), %svload(q + %d * qs));\n",
+                        px, crd[c], px, px, c, px, c);
     for (k = 1; k < npoints; k++)
         for (c = 0; c < 4; c++)
             if (world || c != 2)
-                sbuf_printf(o, "        R%c = %svabsmax(R%c, %c%d);\n", crd[c], px, crd[c], crd[c], k);
+                sbuf_printf(o, "        R%c = %svabsmax(R%c, %svload(q + %d * qs));\n", crd[c], px, crd[c], px,
+                            4 * k + c);
     if (world)
         sbuf_printf(o, "        const %svf R = %svabsmax(%svabsmax(Rx, Ry), %svabsmax(Rz, Rw)), R3 = R * R * R;\n"
                        "        const %svf ER3 = %svabsmax(%svabsmax(E0 * Ry, E1 * Rx) * (Rz * Rw),\n"
@@ -581,23 +607,26 @@ static void put_magnitudes(sbuf *o, int npoints, const out_info *info, const cer
     sbuf_printf(o, "        /* F: the underflow term of every plane's bound, with the largest K2. */\n"
                    "        const %svf F = %.8ef * ((1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E));\n"
                    "        /* Patches too large for the bound (or NaN) are never certified. */\n"
-                   "        notlt = notgt = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n",
+                   "        amb = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n"
+                   "        s = F * 0.0f + 3.40282347e+38f; /* the least t of the planes so far */\n",
                 px, (double)k2, (double)cb->q_max);
 }
 
-/* Certified: the loads of every point's coordinates up front (put_point; elsewhere each where
- * first read), the magnitudes and the size guard (degenerate rule: and the collapsed edges). */
+/* Certified: the magnitudes and the size guard, from loads of their own (gcc keeps the points
+ * where first read, and the lanes run faster); degenerate rule: every point's coordinates up
+ * front (put_point) and the collapsed edges. */
 static void put_loads(sbuf *o, const slp_prog *p, const tp_table *t, const out_info *info,
                       const cert_bounds *cb, unsigned char *done)
 {
     int k;
     if (!info->certified)
         return;
+    put_magnitudes(o, t->dom.npoints, info, cb);
+    if (!zeros_certified(info))
+        return;
     for (k = 0; k < t->dom.npoints; k++)
         put_point(o, p, k, info->space == OUT_WORLD, info->prefix, done);
-    put_magnitudes(o, t->dom.npoints, info, cb);
-    if (zeros_certified(info))
-        put_collapsed(o, &t->dom, info);
+    put_collapsed(o, &t->dom, info);
 }
 
 /* With d: d[P * ds + l] = the value v of plane P of each patch l times 1/c_P (its scale), which
@@ -642,31 +671,37 @@ static void put_cond(sbuf *o, const char *cond, unsigned zero)
     sbuf_puts(o, ")");
 }
 
-/* Plane P's value v into the masks (set by the first plane, certified: by the size guard; under
- * the degenerate rule a plane that a collapsed edge zeros counts as both < 0 and > 0). */
+/* Plane P's value v into the masks notlt and notgt (set by the first plane; under the degenerate
+ * rule a plane that a collapsed edge zeros counts as both < 0 and > 0). Certified: t = |v| - K_P
+ * ER3, rounded once (twice without FMA: K_P allows it), into s, their minimum (or, on a plane a
+ * collapsed edge can zero, into amb where t is not above F and the edge is not collapsed); the
+ * signs are certified where s > F and amb is clear (README: Certified). */
 static void put_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
-                      int plane, int first)
+                      const char *up, int plane, int first)
 {
-    static const char *const mask[4] = {"notlt", "notgt", "plt", "pgt"};
-    static const char *const cond[4] = {"v < -t", "v > t", "v < 0.0f", "v > 0.0f"};
     unsigned zero = zeros_certified(info) ? p->zero[plane] : 0;
     const char *op = first ? "=" : "|=";
-    int i;
-    if (info->certified) {
-        sbuf_printf(o, "        t = %.8ef * ER3 + F; /* the bound of plane %d */\n",
-                    (double)cb->k[plane], plane);
-        for (i = 0; i < 4; i++) { /* notlt, notgt: set by the size guard */
-            sbuf_printf(o, "        %s %s ", mask[i], i < 2 ? "|=" : op);
-            put_cond(o, cond[i], zero);
-            sbuf_puts(o, " == 0;\n");
-        }
-    } else if (info->rule == OUT_STRICT)
-        sbuf_printf(o, "        notlt %s (v < 0.0f) == 0;\n        notgt %s (v > 0.0f) == 0; /* plane %d */\n",
-                    op, op, plane);
-    else
+    if (info->rule == OUT_STRICT || info->certified) {
+        sbuf_printf(o, "        notlt %s ", op);
+        put_cond(o, "v < 0.0f", zero);
+        sbuf_printf(o, " == 0;\n        notgt %s ", op);
+        put_cond(o, "v > 0.0f", zero);
+        sbuf_printf(o, " == 0; /* plane %d */\n", plane);
+    } else
         sbuf_printf(o, "        lt %s v < 0.0f;\n        gt %s v > 0.0f;\n"
                        "        nan %s v != v; /* plane %d */\n",
                     op, op, op, plane);
+    if (info->certified) {
+        sbuf_printf(o, "        t = %sVFMAS(%.8ef, ER3, %sVABS(v)); /* minus the bound of plane %d */\n",
+                    up, -(double)cb->k[plane], up, plane);
+        if (!zero) {
+            sbuf_printf(o, "        s = %sVMIN(s, t);\n", up);
+            return;
+        }
+        sbuf_puts(o, "        amb |= ");
+        put_cond(o, "t > F", zero);
+        sbuf_puts(o, " == 0;\n");
+    }
 }
 
 /* slp_order's registers (AVX-512 has 32 vector registers; 8 left for sums and temporaries) and
@@ -705,7 +740,7 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
         else
             put_point_form(o, p, item[order[k]], world, px, up, done);
         put_value_store(o, p, order[k], px);
-        put_masks(o, p, cb, info, order[k], k == 0);
+        put_masks(o, p, cb, info, up, order[k], k == 0);
     }
 out:
     free(term);
@@ -726,7 +761,7 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
         sbuf_puts(o, "        /* Certified: back (1) iff every value is below minus its bound, front (0) iff\n"
                      "         * every value is above its bound; 3 where only the plain signs decide (a second\n"
                      "         * look in double follows), else silhouette (2). Masks 0 or 1 first. */\n"
-                     "        notlt &= 1;\n        notgt &= 1;\n        plt &= 1;\n        pgt &= 1;\n");
+                     "        amb |= (s > F) == 0;\n        notlt &= 1;\n        notgt &= 1;\n        amb &= 1;\n");
     else if (strict)
         sbuf_puts(o, "        /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else\n"
                      "         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */\n"
@@ -736,7 +771,7 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
                      "         * silhouette (2), and NaN silhouette; arithmetic, not branches. Masks 0 or 1 first. */\n"
                      "        lt &= 1;\n        gt &= 1;\n        nan &= 1;\n");
     sbuf_printf(o, "        %svstore(cls + l, %s, n - l);\n", px,
-                info->certified ? "(1 - notlt) + 2 * (notlt & notgt) + (notlt & notgt & (1 - (plt & pgt)))"
+                info->certified ? "(1 - (notlt | amb)) + 2 * ((notlt | amb) & (notgt | amb)) + (amb & (1 - (notlt & notgt)))"
                 : strict ? "(1 - notlt) + 2 * (notlt & notgt)"
                          : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
     sbuf_printf(o, "    }\n}\n\n"
