@@ -459,18 +459,20 @@ static int put_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const ou
  * float or -0 below every one of those): a minimum above F > 0 is the least value above F. */
 static void put_cert_macros(sbuf *o, const char *px, const char *up)
 {
-    static const char *const with[3][3] = {{"16", "", "512"}, {"8", " && defined(__AVX2__)", "256"},
-                                           {"4", " && defined(__SSE4_1__)", ""}};
+    /* the 512-bit minimum in its masked form: the plain one reads an undefined vector, which
+     * g++ 12 reports as maybe uninitialized */
+    static const char *const with[3][3] = {
+        {"16", "", "_mm512_mask_min_epi32((__m512i)(a), (__mmask16)-1, (__m512i)(a), (__m512i)(b))"},
+        {"8", " && defined(__AVX2__)", "_mm256_min_epi32((__m256i)(a), (__m256i)(b))"},
+        {"4", " && defined(__SSE4_1__)", "_mm_min_epi32((__m128i)(a), (__m128i)(b))"}};
     int i;
     sbuf_printf(o, "/* Certified: |x| lane by lane (NaN stays NaN), and the lesser of a and b: vectors by their\n"
                    " * bits as signed integers, which order floats >= +0 as floats and put the others below. */\n"
                    "#if %sVW > 1\n#define %sVABS(x) ((%svf)((%svm)(x) & 0x7fffffff))\n",
                 up, up, px, px);
     for (i = 0; i < 3; i++)
-        sbuf_printf(o, "#%s %sVW == %s%s\n#include <immintrin.h>\n"
-                       "#define %sVMIN(a, b) ((%svf)_mm%s_min_epi32((__m%si)(a), (__m%si)(b)))\n",
-                    i ? "elif" : "if", up, with[i][0], with[i][1], up, px, with[i][2],
-                    *with[i][2] ? with[i][2] : "128", *with[i][2] ? with[i][2] : "128");
+        sbuf_printf(o, "#%s %sVW == %s%s\n#include <immintrin.h>\n#define %sVMIN(a, b) ((%svf)%s)\n",
+                    i ? "elif" : "if", up, with[i][0], with[i][1], up, px, with[i][2]);
     sbuf_printf(o, "#else\n#define %sVMIN(a, b) ((%svf)(((%svm)(a) & ((%svm)(a) < (%svm)(b))) | ((%svm)(b) & ((%svm)(a) >= (%svm)(b)))))\n"
                    "#endif\n#else\n#define %sVABS(x) ((x) < 0.0f ? -(x) : (x))\n#define %sVMIN(a, b) ((a) < (b) ? (a) : (b))\n#endif\n",
                 up, px, px, px, px, px, px, px, up, up);
