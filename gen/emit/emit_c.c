@@ -9,7 +9,6 @@
 #include "plan/slp.h"
 #include "plan/slp_order.h"
 #include "plan/slp_point.h"
-#include "plan/slp_split.h"
 #include "emit/template.h"
 
 #include <stdio.h>
@@ -75,37 +74,14 @@ static void put_bracket(sbuf *o, const slp_prog *p, const slp_term *x, char g, c
                 q[x->pair[1]].l, g, x->point[2], m, q[x->pair[2]].k, q[x->pair[2]].l);
 }
 
-/* A split program's table kt: per vector j of a block's patches, kt[i * kv + j] holds value i,
- * the minors m of every pair, world space's n, then the G's (clip: g; world: a, then b). */
-static size_t kt_pair(const slp_prog *p, size_t pair, int kind)
-{
-    return (size_t)kind * p->npairs + pair;
-}
-
-static size_t kt_point(const slp_prog *p, int k, int world, int kind)
-{
-    return (world ? 2 : 1) * p->npairs + (size_t)kind * (size_t)p->npoints + (size_t)k;
-}
-
 /* Loads point k's coordinates (world: with the eye's products a, b; clip: g = e2 w) unless
- * done[npairs + k] is 1: where first read, or all up front (put_loads); done 2: its G's from a
- * split program's table. */
+ * done[npairs + k]: where first read, or all up front (put_loads). */
 static void put_point(sbuf *o, const slp_prog *p, int k, int world, const char *px,
                       unsigned char *done)
 {
-    unsigned char *dn = &done[p->npairs + (size_t)k];
-    if (*dn == 1)
+    if (done[p->npairs + (size_t)k])
         return;
-    if (*dn == 2 && world)
-        sbuf_printf(o, "        const %svf a%d = kt[%zu * kv + j], b%d = kt[%zu * kv + j];\n", px, k,
-                    kt_point(p, k, 1, 0), k, kt_point(p, k, 1, 1));
-    else if (*dn == 2)
-        sbuf_printf(o, "        const %svf g%d = kt[%zu * kv + j];\n", px, k, kt_point(p, k, 0, 0));
-    if (*dn == 2) {
-        *dn = 1;
-        return;
-    }
-    *dn = 1;
+    done[p->npairs + (size_t)k] = 1;
     if (world)
         sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
                        "            z%d = %svload(q + %d * qs), w%d = %svload(q + %d * qs);\n"
@@ -118,23 +94,13 @@ static void put_point(sbuf *o, const slp_prog *p, int k, int world, const char *
                     px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 3, k, k);
 }
 
-/* Declares the minor pair unless done[pair] is 1, after its points; done 2: from a split
- * program's table. */
+/* Declares the minor pair unless done[pair], after its points. */
 static void put_minor(sbuf *o, const slp_prog *p, int pair, int world, const char *px,
                       unsigned char *done)
 {
     const slp_pair *q = &p->pairs[pair];
-    if (done[pair] == 1)
+    if (done[pair])
         return;
-    if (done[pair] == 2) {
-        done[pair] = 1;
-        sbuf_printf(o, "        const %svf m%d_%d = kt[%zu * kv + j];\n", px, q->k, q->l,
-                    kt_pair(p, (size_t)pair, 0));
-        if (world)
-            sbuf_printf(o, "        const %svf n%d_%d = kt[%zu * kv + j];\n", px, q->k, q->l,
-                        kt_pair(p, (size_t)pair, 1));
-        return;
-    }
     done[pair] = 1;
     put_point(o, p, q->k, world, px, done);
     put_point(o, p, q->l, world, px, done);
@@ -512,11 +478,9 @@ static void put_cert_macros(sbuf *o, const char *px, const char *up)
                 up, px, px, px, px, px, px, px, up, up);
 }
 
-/* The lanes function's comment, attributes and head (lanes_block when the program is split, else
- * lanes_body), and the eye's values (certified: E). */
-static void put_lanes_head(sbuf *o, const out_info *info, const char *up, int split)
+/* The lanes function's comment, attributes and head, and the eye's values (certified: E). */
+static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
 {
-    const char *fn = split ? "block" : "body";
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
     if (info->certified)
@@ -533,11 +497,11 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up, int sp
                 " * of patch l that decides, at true scale: times a positive float per plane, which keeps\n"
                 " * its sign, zero or NaN. Inlined into lanes (d NULL), values (and lanes_values). */\n"
                 "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
-                "static inline void %slanes_%s(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
+                "static inline void %slanes_body(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
                 "%*sconst float eye[4], unsigned char *%sRESTRICT cls,\n"
                 "%*sfloat *%sRESTRICT d, size_t ds)\n{\n"
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
-                up, up, px, fn, up, (int)strlen(px) + 31, "", up, (int)strlen(px) + 31, "", up);
+                up, up, px, up, (int)strlen(px) + 31, "", up, (int)strlen(px) + 31, "", up);
     if (world)
         sbuf_puts(o, "    const float e0 = eye[0], e1 = eye[1], e2 = eye[2], e3 = eye[3];\n");
     else
@@ -553,45 +517,30 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up, int sp
     }
 }
 
-/* What a loop over blocks of VW patches declares (put_lanes_loop). */
-enum {
-    LOOP_L = 1,    /* l, the loop's variable */
-    LOOP_SOA = 2,  /* q and qs, where the points are (the last block padded) */
-    LOOP_VARS = 4, /* the masks and sums (without them, certified: amb and s) */
-    LOOP_J = 8     /* j = l / VW, the block's vector (a split program's) */
-};
-
-/* The loop over blocks of VW patches, declaring what says: the masks and sums, and the last
- * block padded with copies of the last patch. */
-static void put_lanes_loop(sbuf *o, const out_info *info, const char *up, int what)
+/* The loop over blocks of VW patches: the masks and sums, and the last block padded with copies
+ * of the last patch. */
+static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
     int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
-    sbuf_printf(o, "%s    for (l = 0; l < n; l += %sVW) {\n", what & LOOP_L ? "    size_t l;\n" : "", up);
-    if (what & LOOP_J)
-        sbuf_printf(o, "        const size_t j = l / %sVW;\n", up);
-    if (what & LOOP_SOA)
-        sbuf_puts(o, "        const float *q = soa + l;\n        size_t qs = stride;\n");
-    if (what & LOOP_VARS)
-        sbuf_printf(o, "        %svm %s, %s%s;\n        %svf u, v%s;\n", px, strict ? "notlt" : "lt",
-                    strict ? "notgt" : "gt", info->certified ? ", amb" : strict ? "" : ", nan", px,
-                    info->certified ? ", t, s" : "");
-    else if (info->certified)
-        sbuf_printf(o, "        %svm amb;\n        %svf s;\n", px, px);
-    if (what & LOOP_SOA)
-        sbuf_printf(o, "#if %sVW > 1\n"
-                       "        float tail[%sPOINTS * 4 * %sVW];\n"
-                       "        if (n - l < %sVW) {\n"
-                       "            size_t i, k;\n"
-                       "            for (k = 0; k < %sPOINTS * 4; k++)\n"
-                       "%s"
-                       "%*sfor (i = 0; i < %sVW; i++)\n"
-                       "%*s    tail[k * %sVW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];\n"
-                       "            q = tail;\n            qs = %sVW;\n        }\n#endif\n",
-                    up, up, up, up, up,
-                    world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
-                    world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
+    sbuf_printf(o, "    size_t l;\n    for (l = 0; l < n; l += %sVW) {\n"
+                   "        const float *q = soa + l;\n        size_t qs = stride;\n"
+                   "        %svm %s, %s%s;\n        %svf u, v%s;\n"
+                   "#if %sVW > 1\n"
+                   "        float tail[%sPOINTS * 4 * %sVW];\n"
+                   "        if (n - l < %sVW) {\n"
+                   "            size_t i, k;\n"
+                   "            for (k = 0; k < %sPOINTS * 4; k++)\n"
+                   "%s"
+                   "%*sfor (i = 0; i < %sVW; i++)\n"
+                   "%*s    tail[k * %sVW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];\n"
+                   "            q = tail;\n            qs = %sVW;\n        }\n#endif\n",
+                up, px, strict ? "notlt" : "lt", strict ? "notgt" : "gt",
+                info->certified ? ", amb" : strict ? "" : ", nan", px,
+                info->certified ? ", t, s" : "", up, up, up, up, up,
+                world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
+                world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
 }
 
 /* The lanes' masks c<e>: boundary edge e is collapsed, its points equal in every coordinate the
@@ -762,30 +711,30 @@ static void put_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const o
  * bicubic patches (bench/README: Plane order). */
 #define SLP_ORDER_CAP 24
 #define SLP_ORDER_WIN 4
-/* classify_batch's block (LANES) by default when slp_split cuts the program: each piece runs
- * over SPLIT_LANES / VW vectors of patches, reading the block from the data cache. */
-#define SPLIT_LANES 64
 
-/* Planes order[a, b) of the straight-line program, exact, fused or in the point form (in
- * slp_order's order, consecutive planes share registers), then each value into the masks (and
- * into d); the program's first plane (a == 0) sets the masks. */
+/* The straight-line program: every plane, exact or fused, in slp_order's order (consecutive
+ * planes share registers), then its value into the masks (and into d). */
 static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
-                       const char *up, const int *order, int a, int b, unsigned char *done,
-                       ptp_error *err)
+                       const char *up, unsigned char *done, ptp_error *err)
 {
     const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, k;
+    int world = info->space == OUT_WORLD, n = 0, k, st;
     size_t *term = malloc(((size_t)p->nplanes + 1) * 3 * sizeof *term), *entry = term + p->nplanes,
            *item = entry + p->nplanes, i;
-    if (!term)
-        return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
+    int *order = malloc(((size_t)p->nplanes + 1) * sizeof *order);
+    if (!term || !order) {
+        st = ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
+        goto out;
+    }
     for (i = p->nterms; i-- > 0;) /* each plane's first term and first fused entry */
         term[p->terms[i].plane] = i;
     for (i = p->nentries; i-- > 0;)
         entry[p->entries[i].plane] = i;
     for (i = p->nitems; i-- > 0;)
         item[p->items[i].plane] = i;
-    for (k = a; k < b; k++) {
+    if ((st = slp_order(order, &n, p, SLP_ORDER_CAP, SLP_ORDER_WIN, err)) != PTP_OK)
+        goto out;
+    for (k = 0; k < n; k++) {
         if (p->form[order[k]] == SLP_BRACKET)
             put_exact(o, p, term[order[k]], world, px, up, done);
         else if (p->form[order[k]] == SLP_FUSED)
@@ -795,116 +744,18 @@ static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
         put_value_store(o, p, order[k], px);
         put_masks(o, p, cb, info, up, order[k], k == 0);
     }
+out:
     free(term);
-    return PTP_OK;
-}
-
-/* The values a split program's passes hand on per vector of VW patches in arrays k_<name>:
- * the masks (set by the pieces of planes), and those the setup pass sets (certified: amb and s,
- * which the pieces update, and ER3, F and under the degenerate rule the collapsed edges' c<e>,
- * which they only read); use: read by every piece (0), by those with a plane a collapsed edge
- * zeros and the last (1), or by those with a plane edge use - 2 zeros. */
-typedef struct {
-    const char *name;
-    int vf, setup, once, use; /* a vf (else a vm); set by the setup pass; only read after it */
-} carried;
-
-/* The carried values of info's lanes into c (room for 16); returns their number. */
-static int carried_values(carried *c, const tp_domain *d, const out_info *info)
-{
-    static const char *const edge[8] = {"c0", "c1", "c2", "c3", "c4", "c5", "c6", "c7"};
-    int n = 0, e;
-    if (info->rule == OUT_STRICT || info->certified) {
-        c[n++] = (carried){"notlt", 0, 0, 0, 0};
-        c[n++] = (carried){"notgt", 0, 0, 0, 0};
-    } else {
-        c[n++] = (carried){"lt", 0, 0, 0, 0};
-        c[n++] = (carried){"gt", 0, 0, 0, 0};
-        c[n++] = (carried){"nan", 0, 0, 0, 0};
-    }
-    if (!info->certified)
-        return n;
-    c[n++] = (carried){"amb", 0, 1, 0, 0};
-    c[n++] = (carried){"s", 1, 1, 0, 0};
-    c[n++] = (carried){"ER3", 1, 1, 1, 0};
-    c[n++] = (carried){"F", 1, 1, 1, 1};
-    for (e = 0; zeros_certified(info) && e < tp_domain_edges(d) && e < 8; e++)
-        c[n++] = (carried){edge[e], 0, 1, 1, 2 + e};
-    return n;
-}
-
-/* A split program's arrays: the carried values and the table kt of nv values (kt_pair,
- * kt_point), each of kv vectors. */
-static void put_carried_arrays(sbuf *o, const tp_domain *d, const out_info *info, const char *up,
-                               size_t nv)
-{
-    const char *px = info->prefix;
-    carried c[16];
-    int i, n = carried_values(c, d, info);
-    sbuf_printf(o, "    const size_t kv = (%sLANES + %sVW - 1) / %sVW;\n"
-                   "    %svf kt[%zu * ((%sLANES + %sVW - 1) / %sVW)];\n",
-                up, up, up, px, nv, up, up, up);
-    for (i = 0; i < n; i++)
-        sbuf_printf(o, "    %s%s k_%s[(%sLANES + %sVW - 1) / %sVW];\n", px, c[i].vf ? "vf" : "vm",
-                    c[i].name, up, up, up);
-}
-
-/* Stores the carried values at the end of the setup pass (setup), or of a piece of planes. */
-static void put_carried_save(sbuf *o, const tp_domain *d, const out_info *info, int setup)
-{
-    carried c[16];
-    int i, n = carried_values(c, d, info);
-    for (i = 0; i < n; i++)
-        if (setup ? c[i].setup : !c[i].once)
-            sbuf_printf(o, "        k_%s[j] = %s;\n", c[i].name, c[i].name);
-}
-
-/* Loads the carried values at the start of a piece of planes (the masks unless it is the first)
- * that it reads: zeros, the collapsed edges its planes' values need (put_masks). */
-static void put_carried_load(sbuf *o, const tp_domain *d, const out_info *info, int first,
-                             int last, unsigned zeros)
-{
-    const char *px = info->prefix;
-    carried c[16];
-    int i, n = carried_values(c, d, info);
-    for (i = 0; i < n; i++) {
-        int use = c[i].use == 0 || (c[i].use == 1 && (zeros || last)) ||
-                  (c[i].use >= 2 && (zeros >> (c[i].use - 2) & 1));
-        if (!use || (first && !c[i].setup))
-            continue;
-        if (c[i].once)
-            sbuf_printf(o, "        const %s%s %s = k_%s[j];\n", px, c[i].vf ? "vf" : "vm", c[i].name,
-                        c[i].name);
-        else
-            sbuf_printf(o, "        %s = k_%s[j];\n", c[i].name, c[i].name);
-    }
+    free(order);
+    return st;
 }
 
 /* The lanes and certify64 compute a class arithmetically from 0/1 masks, in these numbers. */
 _Static_assert(PTP_FRONT == 0 && PTP_BACK == 1 && PTP_SILHOUETTE == 2, "ptp_class's numbers");
 
-/* A split program's lanes_body: lanes_block on each block of at most LANES patches, so that each
- * piece runs over the block (in the data cache) while its code stays in the instruction cache. */
-static void put_blocks(sbuf *o, const char *px, const char *up, int npieces)
-{
-    sbuf_printf(o, "/* The classification of n patches as lanes_block's, in blocks of %sLANES patches: the\n"
-                   " * program in %d pieces (loop fission), each run over the whole block before the next, so\n"
-                   " * that the code of one piece at a time stays in the instruction cache. */\n"
-                   "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
-                   "static inline void %slanes_body(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
-                   "%*sconst float eye[4], unsigned char *%sRESTRICT cls,\n"
-                   "%*sfloat *%sRESTRICT d, size_t ds)\n{\n"
-                   "    size_t b;\n"
-                   "    for (b = 0; b < n; b += %sLANES)\n"
-                   "        %slanes_block(soa + b, stride, n - b < %sLANES ? n - b : %sLANES, eye, cls + b,\n"
-                   "%*sd ? d + b : d, ds);\n}\n\n",
-                up, npieces, px, up, (int)strlen(px) + 31, "", up, (int)strlen(px) + 31, "", up, up,
-                px, up, up, (int)strlen(px) + 20, "");
-}
-
-/* The end of the lanes body (of lanes_block when the program is in npieces > 1): each lane's
- * class from the masks, stored; then lanes and values, which inline it. */
-static void put_lanes_class(sbuf *o, const out_info *info, const char *up, int npieces)
+/* The end of the lanes body: each lane's class from the masks, stored; then lanes and values,
+ * which inline it. */
+static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
 {
     const char *px = info->prefix;
     int strict = info->rule == OUT_STRICT || info->certified;
@@ -925,10 +776,8 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up, int n
                 info->certified ? "(1 - (notlt | amb)) + 2 * ((notlt | amb) & (notgt | amb)) + (amb & (1 - (notlt & notgt)))"
                 : strict ? "(1 - notlt) + 2 * (notlt & notgt)"
                          : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
-    sbuf_puts(o, "    }\n}\n\n");
-    if (npieces > 1)
-        put_blocks(o, px, up, npieces);
-    sbuf_printf(o, "/* The classes of n patches: lanes_body without values (one copy: it is large). */\n"
+    sbuf_printf(o, "    }\n}\n\n"
+                   "/* The classes of n patches: lanes_body without values (one copy: it is large). */\n"
                    "#if defined(__GNUC__) && !defined(__clang__)\n"
                    "__attribute__((noinline, noclone))\n"
                    "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
@@ -951,110 +800,21 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up, int n
     sbuf_puts(o, "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
 }
 
-/* slp_order's order of the planes and slp_split's pieces (cut[0 .. *npieces]): order and cut
- * are allocated (the caller frees them). */
-static int plan_lanes(int **order, int **cut, int *n, int *npieces, const slp_prog *p,
-                      const out_info *info, ptp_error *err)
+/* The straight-line kernel over n patches in structure-of-arrays order (the lanes function). */
+static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
+                     const out_info *info, const char *up, ptp_error *err)
 {
+    unsigned char *done = calloc(p->npairs + (size_t)p->npoints, 1); /* minors, then points */
     int st;
-    *order = malloc(((size_t)p->nplanes + 1) * sizeof **order);
-    *cut = malloc(((size_t)p->nplanes + 2) * sizeof **cut);
-    if (!*order || !*cut)
+    if (!done)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-    st = slp_order(*order, n, p, SLP_ORDER_CAP, SLP_ORDER_WIN, err);
-    return st ? st : slp_split(*cut, npieces, p, *order, *n, info->space == OUT_WORLD, err);
-}
-
-/* A split program's setup pass over the block: every minor and G into kt, and certified the
- * magnitudes and the values the pieces read (put_loads). */
-static void put_setup(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
-                      const out_info *info, const char *up, unsigned char *done)
-{
-    const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, k, kind;
-    size_t i;
-    sbuf_puts(o, "    /* the setup: every minor and G of the block's patches into kt */\n");
-    put_lanes_loop(o, info, up, LOOP_L | LOOP_J | LOOP_SOA);
-    memset(done, 0, p->npairs + (size_t)p->npoints);
+    put_lanes_head(o, info, up);
+    put_lanes_loop(o, info, up);
     put_loads(o, p, t, info, cb, done);
-    for (i = 0; i < p->npairs; i++) {
-        const slp_pair *q = &p->pairs[i];
-        put_minor(o, p, (int)i, world, px, done);
-        for (kind = 0; kind < (world ? 2 : 1); kind++)
-            sbuf_printf(o, "        kt[%zu * kv + j] = %c%d_%d;\n", kt_pair(p, i, kind),
-                        kind ? 'n' : 'm', q->k, q->l);
-    }
-    for (k = 0; k < p->npoints; k++) {
-        put_point(o, p, k, world, px, done);
-        for (kind = 0; kind < (world ? 2 : 1); kind++)
-            sbuf_printf(o, "        kt[%zu * kv + j] = %c%d;\n", kt_point(p, k, world, kind),
-                        world ? (kind ? 'b' : 'a') : 'g', k);
-    }
-    put_carried_save(o, &t->dom, info, 1);
-    sbuf_puts(o, "    }\n");
-}
-
-/* The collapsed edges that can zero a plane of order[a, b) (certified, degenerate rule). */
-static unsigned piece_zeros(const slp_prog *p, const out_info *info, const int *order, int a, int b)
-{
-    unsigned z = 0;
-    int k;
-    for (k = a; k < b && zeros_certified(info); k++)
-        z |= p->zero[order[k]];
-    return z;
-}
-
-/* The program in one loop over the n patches (npieces 1), or split: the setup pass, then each
- * piece of planes over the block, reading the minors and G's from kt and handing the carried
- * values on; the last forms the class (put_lanes_class). */
-static int put_pieces(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
-                      const out_info *info, const char *up, const int *order, const int *cut,
-                      int npieces, unsigned char *done, ptp_error *err)
-{
-    size_t nv = (info->space == OUT_WORLD ? 2 : 1) * (p->npairs + (size_t)p->npoints);
-    int i, st = PTP_OK, last;
-    if (npieces == 1) {
-        put_lanes_loop(o, info, up, LOOP_L | LOOP_SOA | LOOP_VARS);
-        put_loads(o, p, t, info, cb, done);
-        return put_program(o, p, cb, info, up, order, 0, cut[1], done, err);
-    }
-    put_carried_arrays(o, &t->dom, info, up, nv);
-    put_setup(o, p, cb, t, info, up, done);
-    for (i = 0; i < npieces && st == PTP_OK; i++) {
-        last = i + 1 == npieces;
-        sbuf_printf(o, "    /* piece %d of %d: planes %d to %d of the order */\n", i + 1, npieces,
-                    cut[i], cut[i + 1] - 1);
-        put_lanes_loop(o, info, up, LOOP_J | LOOP_VARS);
-        memset(done, 2, p->npairs + (size_t)p->npoints); /* every minor and G from kt */
-        put_carried_load(o, &t->dom, info, i == 0, last, piece_zeros(p, info, order, cut[i], cut[i + 1]));
-        st = put_program(o, p, cb, info, up, order, cut[i], cut[i + 1], done, err);
-        if (!last) {
-            put_carried_save(o, &t->dom, info, 0);
-            sbuf_puts(o, "    }\n");
-        }
-    }
-    return st;
-}
-
-/* The straight-line kernel over n patches in structure-of-arrays order (the lanes function);
- * *lanes, classify_batch's block by default: SPLIT_LANES for a split program, else 16. */
-static int put_lanes(sbuf *o, int *lanes, const slp_prog *p, const cert_bounds *cb,
-                     const tp_table *t, const out_info *info, const char *up, ptp_error *err)
-{
-    unsigned char *done = calloc(p->npairs + (size_t)p->npoints + 1, 1); /* minors, then points */
-    int *order = NULL, *cut = NULL, n, npieces = 1;
-    int st = done ? plan_lanes(&order, &cut, &n, &npieces, p, info, err)
-                  : ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-    if (st == PTP_OK) {
-        put_lanes_head(o, info, up, npieces > 1);
-        st = put_pieces(o, p, cb, t, info, up, order, cut, npieces, done, err);
-    }
-    if (st == PTP_OK)
-        put_lanes_class(o, info, up, npieces);
-    *lanes = npieces > 1 ? SPLIT_LANES : 16;
+    st = put_program(o, p, cb, info, up, done, err);
     free(done);
-    free(order);
-    free(cut);
+    if (st == PTP_OK)
+        put_lanes_class(o, info, up);
     return st;
 }
 
@@ -1113,14 +873,14 @@ static int put_entries(sbuf *o, const tp_table *t, const slp_prog *p, const out_
 }
 
 /* The code from the straight-line program: the lanes function, the second look and the entry
- * points; writes the program's flops and multiply-pipe operations per patch to flops and muls,
- * and classify_batch's default LANES to lanes (24 bytes each). */
-static int put_code(sbuf *o, char *flops, char *muls, char *lanes, const tp_table *t,
-                    const out_info *info, const char *up, ptp_error *err)
+ * points; writes the program's flops and multiply-pipe operations per patch to flops and muls
+ * (24 bytes each). */
+static int put_code(sbuf *o, char *flops, char *muls, const tp_table *t, const out_info *info,
+                    const char *up, ptp_error *err)
 {
     slp_prog prog;
     cert_bounds cb = {0};
-    int st = slp_build(&prog, t, err), nl = 16;
+    int st = slp_build(&prog, t, err);
     if (st)
         return st;
     snprintf(flops, 24, "%ld", slp_flops(&prog, info->space == OUT_WORLD));
@@ -1128,8 +888,7 @@ static int put_code(sbuf *o, char *flops, char *muls, char *lanes, const tp_tabl
     if (info->certified)
         st = cert_slp(&cb, &prog, info->space == OUT_WORLD, err);
     if (!st)
-        st = put_lanes(o, &nl, &prog, &cb, t, info, up, err);
-    snprintf(lanes, 24, "%d", nl);
+        st = put_lanes(o, &prog, &cb, t, info, up, err);
     if (!st)
         st = put_entries(o, t, &prog, info, up, err);
     cert_clear(&cb);
@@ -1156,9 +915,8 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
     sbuf banner, tables, funcs, variant;
     out_info plain;
-    char up[64], file[96], points[16], planes[16], count[80], flops[24], muls[24], lanes[24];
-    char name[80];
-    tpl_slot slots[12];
+    char up[64], file[96], points[16], planes[16], count[80], flops[24], muls[24], name[80];
+    tpl_slot slots[11];
     int st;
     fmt_upper(up, sizeof up, info->prefix);
     fmt_file_name(file, sizeof file, info->prefix, info->suffix);
@@ -1181,7 +939,7 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     snprintf(name, sizeof name, "%sterm_", info->prefix);
     out_c_arrays(&tables, t, NULL, name, count, NULL, 0);
     put_functions(&funcs, info, up);
-    st = put_code(&funcs, flops, muls, lanes, t, info, up, err);
+    st = put_code(&funcs, flops, muls, t, info, up, err);
     if (st) {
         sbuf_clear(&banner);
         sbuf_clear(&tables);
@@ -1201,10 +959,9 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
     slots[8] = (tpl_slot){"FLOPS", flops};
     slots[9] = (tpl_slot){"VARIANT", variant.s};
     slots[10] = (tpl_slot){"MULS", muls};
-    slots[11] = (tpl_slot){"LANES", lanes};
     st = banner.failed || tables.failed || funcs.failed || variant.failed
              ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
-             : tpl_fill(o, "c/kernel.h", slots, 12, err);
+             : tpl_fill(o, "c/kernel.h", slots, 11, err);
     st = st ? st : emit_c_mesh(o, t, info, err); /* the degree-1 triangle's mesh entry points */
     sbuf_clear(&banner);
     sbuf_clear(&tables);

@@ -264,19 +264,18 @@ int slp_scale_of(slp_scale *c, const rat *s)
     return c->adds <= SLP_SCALE_ADDS;
 }
 
-/* Operation counts of plane P's code (beyond the minors and G's), or of the whole program when
- * P < 0: multiplies, multiply-adds and adds (or subtracts). */
-static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int world, int P)
+/* Operation counts of the program: multiplies, multiply-adds and adds (or subtracts). */
+static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int world)
 {
     int kinds = world ? 2 : 1;
     size_t i, a, b;
-    *mul = P < 0 ? (long)p->npairs * 2 * kinds + (world ? 4L : 1L) * p->npoints : 0; /* minors, G */
+    *mul = (long)p->npairs * 2 * kinds + (world ? 4L : 1L) * p->npoints; /* minors, G */
     *fma = 0;
-    *add = P < 0 ? (long)p->npairs * kinds + (world ? 2L * p->npoints : 0) : 0;
+    *add = (long)p->npairs * kinds + (world ? 2L * p->npoints : 0);
     for (i = 0; i < p->nterms; i++) {
         const slp_term *x = &p->terms[i];
         int first = i == 0 || p->terms[i - 1].group != x->group;
-        if (p->form[x->plane] != SLP_BRACKET || (P >= 0 && x->plane != P))
+        if (p->form[x->plane] != SLP_BRACKET)
             continue;
         *mul += 3 * kinds;
         *add += 3 * kinds - first; /* the brackets, the kinds' sum, the group's sum */
@@ -284,8 +283,6 @@ static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int wo
     for (a = 0; a < p->nentries; a = b) { /* fused: one product per point and kind */
         int first = a == 0 || p->entries[a - 1].group != p->entries[a].group;
         b = slp_point_end(p, a);
-        if (P >= 0 && p->entries[a].plane != P)
-            continue;
         *mul += first;
         *fma += kinds - first;
         *add += (long)(b - a - 1) * kinds;
@@ -295,8 +292,7 @@ static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int wo
         const rat *s = &p->s[x->group];
         int first = i == 0 || p->terms[i - 1].plane != x->plane;
         slp_scale c;
-        if ((i > 0 && p->terms[i - 1].group == x->group) || p->form[x->plane] == SLP_POINT ||
-            (P >= 0 && x->plane != P))
+        if ((i > 0 && p->terms[i - 1].group == x->group) || p->form[x->plane] == SLP_POINT)
             continue;
         if (slp_scale_of(&c, s))
             *add += c.adds + !first;
@@ -310,8 +306,6 @@ static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int wo
     for (a = 0; a < p->nitems; a = b) { /* the point form */
         slp_point_sum s;
         b = slp_point_plane_end(p->items, p->nitems, a);
-        if (P >= 0 && p->items[a].plane != P)
-            continue;
         slp_point_plane(&s, p->items + a, b - a, world);
         *mul += s.muls;
         *fma += s.fmas;
@@ -322,34 +316,20 @@ static void count_ops(long *mul, long *fma, long *add, const slp_prog *p, int wo
 long slp_flops(const slp_prog *p, int world)
 {
     long mul, fma, add;
-    count_ops(&mul, &fma, &add, p, world, -1);
+    count_ops(&mul, &fma, &add, p, world);
     return mul + 2 * fma + add;
 }
 
 long slp_muls(const slp_prog *p, int world)
 {
     long mul, fma, add;
-    count_ops(&mul, &fma, &add, p, world, -1);
+    count_ops(&mul, &fma, &add, p, world);
     return mul + fma;
 }
 
 long slp_adds(const slp_prog *p, int world)
 {
     long mul, fma, add;
-    count_ops(&mul, &fma, &add, p, world, -1);
+    count_ops(&mul, &fma, &add, p, world);
     return add;
-}
-
-long slp_ops(const slp_prog *p, int world)
-{
-    long mul, fma, add;
-    count_ops(&mul, &fma, &add, p, world, -1);
-    return mul + fma + add;
-}
-
-long slp_plane_ops(const slp_prog *p, int plane, int world)
-{
-    long mul, fma, add;
-    count_ops(&mul, &fma, &add, p, world, plane);
-    return mul + fma + add;
 }

@@ -87,10 +87,6 @@ long slp_flops(const slp_prog *p, int world);
 long slp_muls(const slp_prog *p, int world);
 /* Operations per patch on the add pipes (adds and subtracts that are no part of a multiply-add). */
 long slp_adds(const slp_prog *p, int world);
-/* Vector operations per patch of the program, and of plane's code beyond the shared minors and
- * G's (a multiply-add counts 1). */
-long slp_ops(const slp_prog *p, int world);
-long slp_plane_ops(const slp_prog *p, int plane, int world);
 /* The fused planes' runs: the end b of the run at entry a, whose entries [a, b) share entry a's
  * group (and its point; its plane). */
 size_t slp_group_end(const slp_prog *p, size_t a);

@@ -5,8 +5,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The values each plane reads, in the order its code reads them: minor pairs are 0 .. npairs,
+ * point b is npairs + b. start[P] .. start[P + 1] index val; a plane lists a value once. */
+typedef struct {
+    size_t *start;
+    int *val;
+} plane_values;
+
 /* Appends value v to plane P's list (the last one) unless mark[v] == P + 1. */
-static void add_value(slp_values *pv, int *mark, size_t *n, int P, int v)
+static void add_value(plane_values *pv, int *mark, size_t *n, int P, int v)
 {
     if (mark[v] == P + 1)
         return;
@@ -16,7 +23,7 @@ static void add_value(slp_values *pv, int *mark, size_t *n, int P, int v)
 
 /* Fills pv from p: an exact plane reads its terms' minors and points, a fused or point-form
  * plane each point's minors, then the point. */
-static void list_values(slp_values *pv, int *mark, const slp_prog *p)
+static void list_values(plane_values *pv, int *mark, const slp_prog *p)
 {
     size_t i, e = 0, n = 0;
     int P, k;
@@ -59,7 +66,7 @@ static void touch(int *lru, int *len, int v)
 /* The next plane: of the first win planes not done (in number order, those with values), the one
  * with the fewest values outside the first cap of lru (in[v] marks them), the first on ties; -1
  * when every plane with values is done. */
-static int next_plane(const slp_values *pv, const unsigned char *done, const unsigned char *in,
+static int next_plane(const plane_values *pv, const unsigned char *done, const unsigned char *in,
                       int nplanes, int win)
 {
     int P, best = -1, seen = 0;
@@ -79,43 +86,21 @@ static int next_plane(const slp_values *pv, const unsigned char *done, const uns
     return best;
 }
 
-int slp_values_build(slp_values *v, const slp_prog *p, ptp_error *err)
-{
-    size_t nval = 6 * p->nterms + p->nentries * 2 + p->nitems * 2;
-    int *mark = calloc(p->npairs + (size_t)p->npoints + 1, sizeof *mark);
-    v->start = malloc(((size_t)p->nplanes + 1) * sizeof *v->start);
-    v->val = malloc((nval + 1) * sizeof *v->val);
-    if (!mark || !v->start || !v->val) {
-        free(mark);
-        slp_values_clear(v);
-        return ptp_fail(err, PTP_ENOMEM, "out of memory listing the straight-line program's values");
-    }
-    list_values(v, mark, p);
-    free(mark);
-    return PTP_OK;
-}
-
-void slp_values_clear(slp_values *v)
-{
-    free(v->start);
-    free(v->val);
-    v->start = NULL;
-    v->val = NULL;
-}
-
 int slp_order(int *order, int *n, const slp_prog *p, int cap, int win, ptp_error *err)
 {
     int nv = (int)p->npairs + p->npoints, len = 0, P, i;
-    size_t k;
-    slp_values pv;
-    int *lru = malloc(((size_t)nv + 1) * sizeof *lru);
+    size_t k, nval = 6 * p->nterms + p->nentries * 2 + p->nitems * 2;
+    plane_values pv = {malloc(((size_t)p->nplanes + 1) * sizeof *pv.start),
+                       malloc((nval + 1) * sizeof *pv.val)};
+    int *mark = calloc((size_t)nv + 1, sizeof *mark), *lru = malloc(((size_t)nv + 1) * sizeof *lru);
     unsigned char *done = calloc((size_t)p->nplanes + 1, 1), *in = calloc((size_t)nv + 1, 1);
-    int st = slp_values_build(&pv, p, err);
+    int st = PTP_OK;
     *n = 0;
-    if (st == PTP_OK && (!lru || !done || !in))
+    if (!pv.start || !pv.val || !mark || !lru || !done || !in) {
         st = ptp_fail(err, PTP_ENOMEM, "out of memory ordering the straight-line program");
-    if (st != PTP_OK)
         goto out;
+    }
+    list_values(&pv, mark, p);
     while ((P = next_plane(&pv, done, in, p->nplanes, win)) >= 0) {
         done[P] = 1;
         order[(*n)++] = P;
@@ -126,7 +111,9 @@ int slp_order(int *order, int *n, const slp_prog *p, int cap, int win, ptp_error
             in[lru[i]] = 1;
     }
 out:
-    slp_values_clear(&pv);
+    free(pv.start);
+    free(pv.val);
+    free(mark);
     free(lru);
     free(done);
     free(in);

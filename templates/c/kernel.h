@@ -22,7 +22,7 @@ extern "C" {
 #define {{UPREFIX}}MULS {{MULS}}
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef {{UPREFIX}}LANES
-#define {{UPREFIX}}LANES {{LANES}}
+#define {{UPREFIX}}LANES 16
 #endif
 
 /* The {{PLANES}} control planes of one patch, all four components, at true scale. */
