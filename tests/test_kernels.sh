@@ -134,6 +134,15 @@ cuda_emu_host() {
         build/gcc/libptptest.a -lm -o "$tmp/host_cuda_emu" >"$tmp/err" 2>&1
 }
 
+# cuda_data KIND: runs $tmp/host_cuda (KIND cuda) or $tmp/host_cuda_emu (cuda-emu) on the data of
+# exercise's configuration (its $d, $hcfg, $PQ, $Q, $pl and $label).
+cuda_data() {
+    data_args $d | while read -r data; do
+        run_host "$1 $label" "$tmp/host_${1/-/_}" $hcfg --block-threads $PQ --patches-per-block $Q \
+            $pl $data --name "$1 $label ${data%% *}"
+    done
+}
+
 # exercise DIR D SPACE RULE PLANES PQ Q LABEL: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu,wgsl}
 # (degree D as degree_args takes it, default names) and runs each on the data of data_args against the reference.
 exercise() {
@@ -195,10 +204,7 @@ exercise() {
             ok "cuda $label compiles with nvcc (-c and -ptx, entry ptp_${d}_classify)"
             # The host links here and runs wherever a GPU is (it says so when there is none).
             if cuda_host "$dir" $d; then
-                data_args $d | while read -r data; do
-                    run_host "cuda $label" "$tmp/host_cuda" $hcfg --block-threads $PQ --patches-per-block $Q \
-                        $pl $data --name "cuda $label ${data%% *}"
-                done
+                cuda_data cuda
             else
                 notok "cuda $label host builds with nvcc" "$(grep -m2 error "$tmp/err")"
             fi
@@ -209,10 +215,7 @@ exercise() {
     # CUDA emulated on the CPU, on the same data.
     if [ $have_emu = 1 ]; then
         if cuda_emu_host "$dir" $d; then
-            data_args $d | while read -r data; do
-                run_host "cuda-emu $label" "$tmp/host_cuda_emu" $hcfg --block-threads $PQ --patches-per-block $Q \
-                    $pl $data --name "cuda-emu $label ${data%% *}"
-            done
+            cuda_data cuda-emu
         else
             notok "cuda $label builds for the emulation with $CUDA_EMU_CXX" "$(grep -m2 error "$tmp/err")"
         fi
