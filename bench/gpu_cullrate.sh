@@ -86,6 +86,7 @@ for t in $targets; do
                 [ $t = opencl ] && ocl[$space $rule $R]=$counts
                 [ $t = cuda-emu ] && [ -n "${ocl[$space $rule $R]:-}" ] && same=differs &&
                     [ "${ocl[$space $rule $R]}" = "$counts" ] && same=same
+                [ $same = differs ] && echo "# $t $space $rule $R: counts differ from OpenCL's" >&2
                 printf '%-8s %-6s %-11s %-2s %13s %13s %8d %7.3f%% %14s %17s %11s %6s\n' $t $space $rule \
                     $R "$pb/$pf" "$cb/$cf" $((p - c)) "$(echo "$p $c" | awk '{print $1 ? 100 * ($1 - $2) / $1 : 0}')" \
                     "${up:-?}" "${wrong:-?})" "${exact:-?}" $same
