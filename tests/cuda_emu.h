@@ -81,9 +81,10 @@ static inline const char *cudaGetErrorString(cudaError_t e) { return e ? "out of
 
 /* The coroutines: a saved stack pointer per thread. On x86-64 a switch saves the callee-saved
  * registers on the stack and swaps stack pointers (a few ns); elsewhere ucontext (a system call a
- * switch, far slower). */
+ * switch, about 7 times slower here; -DCUDA_EMU_UCONTEXT picks it on x86-64 too, e.g. where a
+ * CET shadow stack refuses the switch's ret into a new stack). */
 enum { CUDA_EMU_STACK = 256 * 1024 };
-#if defined(__x86_64__) && defined(__linux__)
+#if defined(__x86_64__) && defined(__linux__) && !defined(CUDA_EMU_UCONTEXT)
 extern "C" void cuda_emu_swap(void **save, void *next);
 __asm__(".text\n.globl cuda_emu_swap\n.type cuda_emu_swap,@function\ncuda_emu_swap:\n"
         "pushq %rbp\npushq %rbx\npushq %r12\npushq %r13\npushq %r14\npushq %r15\n"
