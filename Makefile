@@ -290,13 +290,14 @@ cullrate: $(CR)/cullrate
 	@$(MAKE) -s cullrate-gpu
 
 # `make cullrate-gpu`: the certified GPU kernels' culls on BigGuy as the GPU targets compute them
-# (GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native; bench/gpu_cullrate.sh), at
-# CULLRATE_GPU_EYES eyes per radius. A target whose host cannot be built is skipped.
+# (GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native, CUDA emulated on the CPU with
+# g++; bench/gpu_cullrate.sh), at CULLRATE_GPU_EYES eyes per radius. A target whose host cannot be
+# built is skipped.
 CULLRATE_GPU_EYES ?= 2
 
 cullrate-gpu: $(B)/ptpgen
 	@mkdir -p $(CR)
-	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan $(B)/host_wgpu >$(CR)/hosts.log 2>&1 || true
+	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan $(B)/host_wgpu $(B)/libptptest.a >$(CR)/hosts.log 2>&1 || true
 	MODELS=$(CULLRATE_MODELS) bash bench/gpu_cullrate.sh $(B) $(CULLRATE_GPU_EYES)
 
 $(CR)/cr_s.h: $(B)/ptpgen

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # gpu_cullrate.sh: what the certified GPU kernels cull on BigGuy as the GPU targets compute them
-# (GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native), against the plain kernels of the
-# same rule.
+# (GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native, CUDA emulated on the CPU by
+# tests/cuda_emu.h: "cuda-emu"), against the plain kernels of the same rule.
 #   bash bench/gpu_cullrate.sh BUILD [NEYES]   (BUILD holds ptpgen and the hosts; default 2 eyes
 #   per radius and space; MODELS names the models' folder). `make cullrate-gpu` runs it.
 # Columns: the patches plain and certified call back and front (b/f); the back or front classes
@@ -9,7 +9,8 @@
 # against the double reference outside its float bound (kref's "given up"); certified culls that
 # are wrong: on BigGuy, of patches within the float bound, decided by the double reference to its
 # own rounding ("undecided" counts the rest; outside the bound the host's checks fail on any),
-# and on kref's exact integer sets (--exact 5 200), decided exactly.
+# and on kref's exact integer sets (--exact 5 200), decided exactly. "opencl": whether a cuda-emu
+# row's counts equal OpenCL's, whose kernels compute the same float operations in the same order.
 set -u
 B=$1 neyes=${2:-2}
 . bench/gpu_lib.sh
@@ -20,14 +21,17 @@ if command -v glslangValidator >/dev/null && [ -x "$B/host_vulkan" ]; then targe
 else echo "# skip glsl and hlsl: need glslangValidator and $B/host_vulkan"; fi
 if [ -x "$B/host_opencl" ]; then targets="$targets opencl"; else echo "# skip opencl: no $B/host_opencl"; fi
 if [ -x "$B/host_wgpu" ]; then targets="$targets wgsl"; else echo "# skip wgsl: no $B/host_wgpu"; fi
+CXX=${CXX:-g++}
+if command -v "$CXX" >/dev/null && [ -e "$B/libptptest.a" ]; then targets="$targets cuda-emu"
+else echo "# skip cuda-emu: need $CXX and $B/libptptest.a"; fi
 
 # kernel TARGET SPACE RULE KIND: generates the kernel (KIND plain or certified) and prints the
 # host command's start for it; nothing on failure (the message goes to stderr).
 kernel() {
-    local f="$tmp/$1-$2-$3-$4" cert=""
+    local f="$tmp/$1-$2-$3-$4" cert="" t=${1%-emu}
     [ "$4" = certified ] && cert=--certified
     # a short prefix: the default names of the degenerate certified kernels grow long
-    "$B/ptpgen" --degree 3 --space "$2" --rule "$3" $cert --prefix gc_ --target "$1" -o "$f.$1" >&2 || return
+    "$B/ptpgen" --degree 3 --space "$2" --rule "$3" $cert --prefix gc_ --target $t -o "$f.$t" >&2 || return
     case $1 in
     glsl) glslangValidator -S comp -V "$f.glsl" -o "$f.spv" >"$f.err" || { head -3 "$f.err" >&2; return; }
           echo "$B/host_vulkan $f.spv" ;;
@@ -35,6 +39,10 @@ kernel() {
           echo "$B/host_vulkan $f.spv --groups-x-constant" ;;
     opencl) echo "$B/host_opencl $f.opencl --kernel gc_classify" ;;
     wgsl) echo "$B/host_wgpu $f.wgsl" ;;
+    cuda-emu) "$CXX" -x c++ -std=c++17 -O2 -march=native -ffp-contract=off -fno-fast-math -DCUDA_EMU -Igen \
+              -Itests -I"$tmp" -DKERNEL_FILE="\"${f##*/}.cuda\"" -DKERNEL=gc_classify tests/host_cuda.cu -x none \
+              "$B/libptptest.a" -lm -o "$f.emu" >&2 || return
+          echo "$f.emu" ;;
     esac
 }
 
@@ -56,8 +64,9 @@ classes() {
 }
 
 echo "BigGuy, $neyes eyes per radius (kref's model views), plain and certified kernels of each rule"
-printf '%-7s %-6s %-11s %-2s %13s %13s %17s %14s %17s %11s\n' target space rule R "plain b/f" \
-    "certified b/f" "given up (plain)" "given up (dbl)" "wrong (undecided)" "exact wrong"
+printf '%-8s %-6s %-11s %-2s %13s %13s %17s %14s %17s %11s %6s\n' target space rule R "plain b/f" \
+    "certified b/f" "given up (plain)" "given up (dbl)" "wrong (undecided)" "exact wrong" opencl
+declare -A ocl # the opencl rows' counts by space, rule and R
 for t in $targets; do
     start=$SECONDS
     for space in world clip; do
@@ -73,10 +82,14 @@ for t in $targets; do
                 read -r cb cf < <(classes)
                 up=$(field '.*given up \([0-9]*\) of [0-9]* back or front.*')
                 wrong=$(field '.*patches: \([0-9]* wrong, [0-9]*\) undecided.*' | sed 's/ wrong, / (/')
-                p=$((pb + pf)) c=$((cb + cf))
-                printf '%-7s %-6s %-11s %-2s %13s %13s %8d %7.3f%% %14s %17s %11s\n' $t $space $rule \
+                p=$((pb + pf)) c=$((cb + cf)) counts="$pb/$pf $cb/$cf ${up:-?} ${wrong:-?} ${exact:-?}" same=-
+                [ $t = opencl ] && ocl[$space $rule $R]=$counts
+                [ $t = cuda-emu ] && [ -n "${ocl[$space $rule $R]:-}" ] && same=differs &&
+                    [ "${ocl[$space $rule $R]}" = "$counts" ] && same=same
+                [ $same = differs ] && echo "# $t $space $rule $R: counts differ from OpenCL's" >&2
+                printf '%-8s %-6s %-11s %-2s %13s %13s %8d %7.3f%% %14s %17s %11s %6s\n' $t $space $rule \
                     $R "$pb/$pf" "$cb/$cf" $((p - c)) "$(echo "$p $c" | awk '{print $1 ? 100 * ($1 - $2) / $1 : 0}')" \
-                    "${up:-?}" "${wrong:-?})" "${exact:-?}"
+                    "${up:-?}" "${wrong:-?})" "${exact:-?}" $same
             done
         done
     done

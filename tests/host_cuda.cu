@@ -1,12 +1,20 @@
 /* host_cuda.cu: runs an emitted CUDA kernel (--target cuda) over patch sets and checks it with kref.
- * Built per kernel: nvcc -DKERNEL_FILE='"k.cu"' -DKERNEL=ptp_3x3_classify ...; runs where a GPU is. */
+ * Built per kernel: nvcc -DKERNEL_FILE='"k.cu"' -DKERNEL=ptp_3x3_classify ... runs where a GPU is;
+ * g++ -x c++ -DCUDA_EMU ... runs it on the CPU through tests/cuda_emu.h, bit for bit. */
 extern "C" {
 #include "check.h"
 #include "kref.h"
 }
+#ifdef CUDA_EMU
+#include "cuda_emu.h"
+/* The one seam: a launch is a call to the emulation, or the language's. */
+#define LAUNCH(kernel, grid, block, ...) cuda_emu_launch(grid, block, [&] { kernel(__VA_ARGS__); })
+#else
+#include <cuda_runtime.h>
+#define LAUNCH(kernel, grid, block, ...) kernel<<<grid, block>>>(__VA_ARGS__)
+#endif
 #include KERNEL_FILE
 
-#include <cuda_runtime.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,8 +49,8 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
         check(0, o->label, "%s: %s", s->name, cudaGetErrorString(e));
         goto done;
     }
-    KERNEL<<<dim3((unsigned)gx, (unsigned)gy), (unsigned)o->pq>>>(d_cp, d_cls, d_planes, eye,
-                                                                  (unsigned)s->count);
+    LAUNCH(KERNEL, dim3((unsigned)gx, (unsigned)gy), dim3((unsigned)o->pq), d_cp, d_cls, d_planes, eye,
+           (unsigned)s->count);
     if ((e = cudaDeviceSynchronize()) != cudaSuccess || (e = cudaGetLastError()) != cudaSuccess ||
         (e = cudaMemcpy(cls, d_cls, s->count * sizeof *cls, cudaMemcpyDeviceToHost)) != cudaSuccess ||
         (o->planes &&
@@ -74,6 +82,9 @@ int main(int argc, char **argv)
         printf("# %s: no CUDA device here: built, not run\n", o.label);
         return 0;
     }
+#ifdef CUDA_EMU
+    printf("# %s: emulated on the CPU (tests/cuda_emu.h)\n", o.label);
+#endif
     if (kref_init_args(&ref, &o))
         return 1;
     memset(&r, 0, sizeof r);

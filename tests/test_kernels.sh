@@ -38,6 +38,10 @@ done
 [ -x "$B/host_opencl" ] || missing "the OpenCL host (OpenCL headers and ICD loader)" "OpenCL kernels"
 [ -x "$B/host_vulkan" ] || missing "the Vulkan host (libvulkan)" "GLSL and HLSL kernels"
 [ -x "$NVCC" ] || missing nvcc "CUDA kernels"
+# CUDA kernels also run on the CPU, through tests/cuda_emu.h built with a C++ compiler.
+CUDA_EMU_CXX=${CUDA_EMU_CXX:-g++}
+have_emu=1
+command -v "$CUDA_EMU_CXX" >/dev/null || { missing "$CUDA_EMU_CXX" "CUDA kernels emulated on the CPU"; have_emu=0; }
 [ -x "$B/host_wgpu" ] || missing "the WGSL host (wgpu-native: tests/deps.sh)" "WGSL kernels"
 ls "$models"/*.bez >/dev/null 2>&1 || missing "$models" "kernels on the shared models"
 
@@ -120,6 +124,25 @@ cuda_host() {
         tests/host_cuda.cu build/gcc/libptptest.a -o "$tmp/host_cuda" >"$tmp/err" 2>&1
 }
 
+# cuda_emu_host DIR D [FILE]: builds tests/host_cuda.cu around DIR/FILE (default ptp_D.cu) for the
+# emulation on the CPU (tests/cuda_emu.h: the kernel's roundings as written, no contraction) into
+# $tmp/host_cuda_emu; errors in $tmp/err.
+cuda_emu_host() {
+    "$CUDA_EMU_CXX" -x c++ -std=c++17 -O2 -march=native -ffp-contract=off -fno-fast-math -Wall -Wextra \
+        -Wno-unused-parameter -Werror -pedantic -DCUDA_EMU -Igen -Itests -I"$1" \
+        -DKERNEL_FILE="\"${3:-ptp_$2.cu}\"" -DKERNEL=ptp_${2}_classify tests/host_cuda.cu -x none \
+        build/gcc/libptptest.a -lm -o "$tmp/host_cuda_emu" >"$tmp/err" 2>&1
+}
+
+# cuda_data KIND: runs $tmp/host_cuda (KIND cuda) or $tmp/host_cuda_emu (cuda-emu) on the data of
+# exercise's configuration (its $d, $hcfg, $PQ, $Q, $pl and $label).
+cuda_data() {
+    data_args $d | while read -r data; do
+        run_host "$1 $label" "$tmp/host_${1/-/_}" $hcfg --block-threads $PQ --patches-per-block $Q \
+            $pl $data --name "$1 $label ${data%% *}"
+    done
+}
+
 # exercise DIR D SPACE RULE PLANES PQ Q LABEL: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu,wgsl}
 # (degree D as degree_args takes it, default names) and runs each on the data of data_args against the reference.
 exercise() {
@@ -181,15 +204,20 @@ exercise() {
             ok "cuda $label compiles with nvcc (-c and -ptx, entry ptp_${d}_classify)"
             # The host links here and runs wherever a GPU is (it says so when there is none).
             if cuda_host "$dir" $d; then
-                data_args $d | while read -r data; do
-                    run_host "cuda $label" "$tmp/host_cuda" $hcfg --block-threads $PQ --patches-per-block $Q \
-                        $pl $data --name "cuda $label ${data%% *}"
-                done
+                cuda_data cuda
             else
                 notok "cuda $label host builds with nvcc" "$(grep -m2 error "$tmp/err")"
             fi
         else
             notok "cuda $label compiles with nvcc" "$(head -5 "$tmp/err")"
+        fi
+    fi
+    # CUDA emulated on the CPU, on the same data.
+    if [ $have_emu = 1 ]; then
+        if cuda_emu_host "$dir" $d; then
+            cuda_data cuda-emu
+        else
+            notok "cuda $label builds for the emulation with $CUDA_EMU_CXX" "$(grep -m2 error "$tmp/err")"
         fi
     fi
 }
@@ -250,6 +278,38 @@ if [ -x "$B/host_wgpu" ]; then
     else
         notok "a 2x2 WGSL kernel with one weight's sign flipped fails its check" "it passed, or the weight was not found"
     fi
+fi
+
+# The CUDA emulation can fail: a 2x2 kernel with one weight's sign flipped (its values), and a
+# bicubic kernel without one of its two barriers (its classes: without the first, threads read
+# points not loaded yet; without the second, thread 0 combines flags not written yet, which only
+# blocks that run thread 0 first show, hence the emulation's alternating thread order).
+# emu_mutant SED CHECK LABEL ARGS...: the kernel $tmp/m/k.cu edited by SED fails the check lines
+# matching CHECK when the emulation runs it with ARGS.
+emu_mutant() {
+    local sed=$1 check=$2 label=$3
+    shift 3
+    sed -i "$sed" "$tmp/m/k.cu"
+    if ! cmp -s "$tmp/m/k.cu" "$tmp/m/orig.cu" && cuda_emu_host "$tmp/m" $d k.cu &&
+        ! "$tmp/host_cuda_emu" "$@" --name mutant >"$tmp/out" 2>&1 && grep -q "^not ok - mutant: $check" "$tmp/out"; then
+        ok "$label fails its check (emulated)"
+    else
+        notok "$label fails its check (emulated)" "it passed, or the mutation was not made"
+    fi
+}
+if [ $have_emu = 1 ]; then
+    mkdir -p "$tmp/m"
+    d=2x2
+    "$P" --degree 2 --target cuda --planes -o "$tmp/m/orig.cu" && cp "$tmp/m/orig.cu" "$tmp/m/k.cu"
+    emu_mutant '0,/ -1.0f,/s// 1.0f,/' '.*plane values' "a 2x2 CUDA kernel with one weight's sign flipped" \
+        --degree 2 2 --space clip --rule strict --block-threads 128 --patches-per-block 16 --planes --random 1 2000 5
+    d=3x3
+    for n in 1 2; do
+        cp out/3x3/ptp_3x3.cu "$tmp/m/orig.cu" && cp "$tmp/m/orig.cu" "$tmp/m/k.cu"
+        emu_mutant "$(awk -v n=$n '/__syncthreads\(\);/ && ++k == n { print NR "d" }' "$tmp/m/orig.cu")" \
+            '.*classes agree' "a 3x3 CUDA kernel without barrier $n of 2" --degree 3 3 --space clip --rule strict \
+            --block-threads 128 --patches-per-block 8 --random 1 2000 5
+    done
 fi
 
 # mutant SED CHECK WHAT: a bicubic C header edited by sed script SED must fail the check lines
@@ -532,6 +592,14 @@ for space in clip world; do
                 notok "cuda 3x3 $space $kind compiles with nvcc" "$(grep -m3 -i error "$tmp/err")"
             fi
         fi
+        # CUDA emulated on the CPU: the same float operations as on a GPU built with -fmad=false.
+        if [ $have_emu = 1 ]; then
+            if cuda_emu_host "$dir" 3x3; then
+                run_exact cuda-emu "$data" "$tmp/host_cuda_emu" --block-threads $PQ --patches-per-block $Q
+            else
+                notok "cuda 3x3 $space $kind builds for the emulation" "$(grep -m3 -i error "$tmp/err")"
+            fi
+        fi
     done
 done
 # mutant_caught RULE MARK LABEL [DATA]: the mutated certified clip header $tmp/k.h (of --rule RULE),
@@ -640,21 +708,40 @@ for space in clip world; do
             notok "cuda 3x3 $space certified degenerate compiles with nvcc" "$(grep -m3 -i error "$tmp/err")"
         fi
     fi
+    if [ $have_emu = 1 ]; then
+        if cuda_emu_host "$dir" 3x3; then
+            gpu_degenerate cuda-emu $space "$tmp/host_cuda_emu" --block-threads $PQ --patches-per-block $Q
+        else
+            notok "cuda 3x3 $space certified degenerate builds for the emulation" "$(grep -m3 -i error "$tmp/err")"
+        fi
+    fi
 done
 # ocl_mutant_caught DIR RULE SED MARK LABEL: the certified clip OpenCL kernel of DIR (of --rule
 # RULE), mutated by the sed script SED so that it contains MARK (a grep pattern), is caught
-# calling unsafe classes on exact data.
+# calling unsafe classes on exact data; so is the CUDA kernel of DIR under the same mutation, run
+# by the emulation.
 ocl_mutant_caught() {
-    [ -x "$B/host_opencl" ] || return 0
-    sed "$3" "$1/ptp_3x3.cl" >"$tmp/m.cl"
-    if grep -q "$4" "$tmp/m.cl" && ! "$B/host_opencl" "$tmp/m.cl" --kernel ptp_3x3_classify \
-        --block-threads $(schedule "$1/ptp_3x3.json" | cut -d' ' -f1) \
-        --patches-per-block $(schedule "$1/ptp_3x3.json" | cut -d' ' -f2) \
-        --degree 3 3 --space clip --rule $2 --certified $cert_short --name mutant >"$tmp/out" 2>&1 &&
-        grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
-        ok "$5 is caught unsafe on exact data"
+    local sched="--block-threads $(schedule "$1/ptp_3x3.json" | sed 's/ / --patches-per-block /')"
+    local args="$sched --degree 3 3 --space clip --rule $2 --certified $cert_short --name mutant"
+    if [ -x "$B/host_opencl" ]; then
+        sed "$3" "$1/ptp_3x3.cl" >"$tmp/m.cl"
+        grep -q "$4" "$tmp/m.cl" && ! "$B/host_opencl" "$tmp/m.cl" --kernel ptp_3x3_classify $args >"$tmp/out" 2>&1
+        mutant_verdict "$5"
+    fi
+    if [ $have_emu = 1 ]; then
+        mkdir -p "$tmp/m" && sed "$3" "$1/ptp_3x3.cu" >"$tmp/m/ptp_3x3.cu"
+        grep -q "$4" "$tmp/m/ptp_3x3.cu" && cuda_emu_host "$tmp/m" 3x3 &&
+            ! "$tmp/host_cuda_emu" $args >"$tmp/out" 2>&1
+        mutant_verdict "$(echo "$5" | sed 's/OpenCL/CUDA/') (emulated)"
+    fi
+}
+# mutant_verdict LABEL: the mutant run just made (its status, its output in $tmp/out) failed by
+# calling unsafe classes.
+mutant_verdict() {
+    if [ $? = 0 ] && grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
+        ok "$1 is caught unsafe on exact data"
     else
-        notok "$5 is caught unsafe" "it passed, or its mutation was not found"
+        notok "$1 is caught unsafe" "it passed, or its mutation was not found"
     fi
 }
 # ... and the exact check can fail there: an OpenCL kernel that counts every plane as zero where
