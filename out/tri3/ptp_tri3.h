@@ -127,7 +127,8 @@ static inline ptp_tri3_vf ptp_tri3_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_TRI3_VW) lanes: every lane in one store. */
+/* cls[i] = c[i] for the first count (at most PTP_TRI3_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_tri3_vstore(unsigned char *cls, ptp_tri3_vm c, size_t count)
 {
     size_t i;

@@ -127,7 +127,8 @@ static inline ptp_tri4_vf ptp_tri4_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_TRI4_VW) lanes: every lane in one store. */
+/* cls[i] = c[i] for the first count (at most PTP_TRI4_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_tri4_vstore(unsigned char *cls, ptp_tri4_vm c, size_t count)
 {
     size_t i;

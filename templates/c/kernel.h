@@ -101,7 +101,8 @@ static inline {{PREFIX}}vf {{PREFIX}}vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most {{UPREFIX}}VW) lanes: every lane in one store. */
+/* cls[i] = c[i] for the first count (at most {{UPREFIX}}VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void {{PREFIX}}vstore(unsigned char *cls, {{PREFIX}}vm c, size_t count)
 {
     size_t i;
