@@ -302,6 +302,20 @@ for args in "--degree 3" "--domain triangle --degree 3" "--degree 2x3 --space wo
         notok "$args: operation counts" "emitted $got, stats $want, header $hdr"
 done
 
+# classify_batch prefetches AHEAD blocks on: at least 1,600 multiply-pipe operations (MULS) of
+# work, 1 to 8 blocks.
+for args in "--degree 3" "--domain triangle --degree 3" "--degree 2" "--domain triangle --degree 1"; do
+    # shellcheck disable=SC2086
+    "$P" $args --target c -o "$tmp/pf.h"
+    m=$(awk '/^#define [A-Z0-9_]+_MULS / {print $3}' "$tmp/pf.h")
+    a=$(awk '/^#define [A-Z0-9_]+_AHEAD / {print $3}' "$tmp/pf.h")
+    want=$(((1600 + m - 1) / m))
+    [ $want -gt 8 ] && want=8
+    [ -n "$m" ] && [ "$a" = "$want" ] && grep -q "_lanes_block(soa, n, eye, cls + p);" "$tmp/pf.h" &&
+        ok "$args: classify_batch prefetches $a blocks ahead (MULS $m) and runs the constant-stride lanes" ||
+        notok "$args: the prefetch distance" "MULS $m, AHEAD $a, want $want"
+done
+
 # --refine and --certified: where they apply, and --refine's range.
 expect_fail "--refine 7 names the limit" 2 "largest allowed is 6" --degree 3 --target c --refine 7
 expect_fail "--refine x is a usage error" 2 "expected a whole number" --degree 3 --target c --refine x

@@ -312,11 +312,11 @@ if [ $have_emu = 1 ]; then
     done
 fi
 
-# mutant SED CHECK WHAT: a bicubic C header edited by sed script SED must fail the check lines
-# matching CHECK ("not ok - mutant CHECK") when run on random patches.
+# mutant SED CHECK WHAT [FLAGS]: a bicubic C header edited by sed script SED must fail the check
+# lines matching CHECK ("not ok - mutant CHECK") when run on random patches (gcc -O2 FLAGS).
 mutant() {
     "$P" --degree 3 --target c -o "$tmp/k.h" && sed -i "$1" "$tmp/k.h"
-    if build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
+    if build_host_c gcc "-O2 ${4:-}" "$tmp/k.h" 3x3 &&
         ! "$tmp/host_c" --degree 3 3 --space clip --rule strict --random 1 2000 5 --name mutant >"$tmp/out" 2>&1 &&
         grep -q "^not ok - mutant $2" "$tmp/out"; then
         ok "a C header with $3 fails its check"
@@ -328,6 +328,14 @@ mutant() {
 mutant '0,/-9.0f/s//-9.5f/' '.*plane values' "one table weight changed (-9 -> -9.5)"
 mutant '0,/u = -((g0 \* m1_5/s//u = ((g0 * m1_5/' 'classify_batch' "one straight-line term's sign flipped"
 mutant '0,/VFMA(g2, m0_8, u)/s//VFMA(g2, -m0_8, u)/' 'classify_batch' "one fused plane's minor's sign flipped"
+# The strict masks, < made <= (a zero plane counted negative): in vectors (SSE) and, where the CPU
+# has AVX-512, in mask registers.
+mutant 's/((k) \& ((v) < 0.0f))/((k) \& ((v) <= 0.0f))/' 'classify_batch' "the strict masks' < made <= (vectors)"
+if grep -qw avx512f /proc/cpuinfo; then
+    mutant 's/_CMP_LT_OS)$/_CMP_LE_OS)/' 'classify_batch' "the strict masks' < made <= (AVX-512 mask registers)" -march=native
+else
+    echo "ok - a C header with the AVX-512 strict masks' < made <= fails its check # SKIP this CPU has no AVX-512"
+fi
 
 # The vectorized paths as users build them for speed: clang -O3 -march=native (its vectorizer),
 # gcc -O2 -march=native (GNU C vectors, AVX-512 here) and -mavx2 (8 lanes); with and without the

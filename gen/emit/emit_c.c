@@ -478,6 +478,29 @@ static void put_cert_macros(sbuf *o, const char *px, const char *up)
                 up, px, px, px, px, px, px, px, up, up);
 }
 
+/* Plain strict rule: lt (gt) = the lanes whose values so far are all < 0 (> 0), one masked
+ * compare a plane into an AVX-512 mask register (gcc otherwise keeps every value live to compare
+ * them all at the end), else 0/1 or 0/-1 masks; KCLASS: 1 where lt, 0 where gt, else 2. */
+static void put_strict_macros(sbuf *o, const char *px, const char *up)
+{
+    static const char *const rel[2][2] = {{"LT", "<"}, {"GT", ">"}};
+    int i;
+    sbuf_printf(o, "/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their\n"
+                   " * classes: back (1) where lt, front (0) where gt, else silhouette (2). */\n"
+                   "#if %sVW == 16\ntypedef __mmask16 %svk;\n", up, px);
+    for (i = 0; i < 2; i++)
+        sbuf_printf(o, "#define %sK%s0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_%s_OS)\n"
+                       "#define %sK%s(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_%s_OS)\n",
+                    up, rel[i][0], rel[i][0], up, rel[i][0], rel[i][0]);
+    sbuf_printf(o, "#define %sKCLASS(lt, gt) ((%svm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \\\n"
+                   "    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))\n#else\ntypedef %svm %svk;\n",
+                up, px, px, px);
+    for (i = 0; i < 2; i++)
+        sbuf_printf(o, "#define %sK%s0(v) ((v) %s 0.0f)\n#define %sK%s(k, v) ((k) & ((v) %s 0.0f))\n",
+                    up, rel[i][0], rel[i][1], up, rel[i][0], rel[i][1]);
+    sbuf_printf(o, "#define %sKCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))\n#endif\n", up);
+}
+
 /* The lanes function's comment, attributes and head, and the eye's values (certified: E). */
 static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
 {
@@ -485,6 +508,8 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
     int world = info->space == OUT_WORLD;
     if (info->certified)
         put_cert_macros(o, px, up);
+    else if (info->rule == OUT_STRICT)
+        put_strict_macros(o, px, up);
     sbuf_printf(o,
                 "/* The classification of n patches in structure-of-arrays order: coordinate c of point k\n"
                 " * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table\n"
@@ -526,7 +551,7 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
     int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
     sbuf_printf(o, "    size_t l;\n    for (l = 0; l < n; l += %sVW) {\n"
                    "        const float *q = soa + l;\n        size_t qs = stride;\n"
-                   "        %svm %s, %s%s;\n        %svf u, v%s;\n"
+                   "        %s%s %s, %s%s;\n        %svf u, v%s;\n"
                    "#if %sVW > 1\n"
                    "        float tail[%sPOINTS * 4 * %sVW];\n"
                    "        if (n - l < %sVW) {\n"
@@ -536,7 +561,8 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
                    "%*sfor (i = 0; i < %sVW; i++)\n"
                    "%*s    tail[k * %sVW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];\n"
                    "            q = tail;\n            qs = %sVW;\n        }\n#endif\n",
-                up, px, strict ? "notlt" : "lt", strict ? "notgt" : "gt",
+                up, px, info->certified || !strict ? "vm" : "vk", info->certified ? "notlt" : "lt",
+                info->certified ? "notgt" : "gt",
                 info->certified ? ", amb" : strict ? "" : ", nan", px,
                 info->certified ? ", t, s" : "", up, up, up, up, up,
                 world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
@@ -673,8 +699,9 @@ static void put_cond(sbuf *o, const char *cond, unsigned zero)
     sbuf_puts(o, ")");
 }
 
-/* Plane P's value v into the masks notlt and notgt (set by the first plane; under the degenerate
- * rule a plane that a collapsed edge zeros counts as both < 0 and > 0). Certified: t = |v| - K_P
+/* Plane P's value v into the masks (set by the first plane): plain strict lt and gt (the strict
+ * macros), certified notlt and notgt (under the degenerate rule a plane that a collapsed edge
+ * zeros counts as both < 0 and > 0), degenerate lt, gt and nan. Certified: t = |v| - K_P
  * ER3, rounded once (twice without FMA: K_P allows it), into s, their minimum (or, on a plane a
  * collapsed edge can zero, into amb where t is not above F and the edge is not collapsed); the
  * signs are certified where s > F and amb is clear (README: Certified). */
@@ -683,7 +710,11 @@ static void put_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const o
 {
     unsigned zero = zeros_certified(info) ? p->zero[plane] : 0;
     const char *op = first ? "=" : "|=";
-    if (info->rule == OUT_STRICT || info->certified) {
+    if (!info->certified && info->rule == OUT_STRICT) {
+        sbuf_printf(o, first ? "        lt = %sKLT0(v);\n        gt = %sKGT0(v); /* plane %d */\n"
+                             : "        lt = %sKLT(lt, v);\n        gt = %sKGT(gt, v); /* plane %d */\n",
+                    up, up, plane);
+    } else if (info->certified) {
         sbuf_printf(o, "        notlt %s ", op);
         put_cond(o, "v < 0.0f", zero);
         sbuf_printf(o, " == 0;\n        notgt %s ", op);
@@ -766,16 +797,17 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
                      "        amb |= (s > F) == 0;\n        notlt &= 1;\n        notgt &= 1;\n        amb &= 1;\n");
     else if (strict)
         sbuf_puts(o, "        /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else\n"
-                     "         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */\n"
-                     "        notlt &= 1;\n        notgt &= 1;\n");
+                     "         * silhouette (2); arithmetic, not branches. */\n");
     else
         sbuf_puts(o, "        /* Degenerate: back (1) iff no value > 0, front (0) iff no value < 0, else\n"
                      "         * silhouette (2), and NaN silhouette; arithmetic, not branches. Masks 0 or 1 first. */\n"
                      "        lt &= 1;\n        gt &= 1;\n        nan &= 1;\n");
-    sbuf_printf(o, "        %svstore(cls + l, %s, n - l);\n", px,
-                info->certified ? "(1 - (notlt | amb)) + 2 * ((notlt | amb) & (notgt | amb)) + (amb & (1 - (notlt & notgt)))"
-                : strict ? "(1 - notlt) + 2 * (notlt & notgt)"
-                         : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
+    if (strict && !info->certified)
+        sbuf_printf(o, "        %svstore(cls + l, %sKCLASS(lt, gt), n - l);\n", px, up);
+    else
+        sbuf_printf(o, "        %svstore(cls + l, %s, n - l);\n", px,
+                    info->certified ? "(1 - (notlt | amb)) + 2 * ((notlt | amb) & (notgt | amb)) + (amb & (1 - (notlt & notgt)))"
+                                    : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
     sbuf_printf(o, "    }\n}\n\n"
                    "/* The classes of n patches: lanes_body without values (one copy: it is large). */\n"
                    "#if defined(__GNUC__) && !defined(__clang__)\n"
@@ -788,7 +820,17 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
                    "    unsigned char c;\n"
                    "    %slanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */\n}\n",
                 px, up, (int)strlen(px) + 18, "", up, px, px, px);
-    if (info->refine && !info->certified) /* classify_batch refines from a whole block's values */
+    if (!info->refine || info->certified) /* classify_batch's blocks: loads at constant offsets */
+        sbuf_printf(o, "\n/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no\n"
+                       " * offsets computed from the stride (gcc keeps those in spilled registers). */\n"
+                       "#if defined(__GNUC__) && !defined(__clang__)\n"
+                       "__attribute__((noinline, noclone))\n"
+                       "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
+                       "static void %slanes_block(const float *%sRESTRICT soa, size_t n, const float eye[4],\n"
+                       "%*sunsigned char *%sRESTRICT cls)\n{\n"
+                       "    %slanes_body(soa, %sLANES, n, eye, cls, NULL, 0);\n}\n",
+                    px, up, (int)strlen(px) + 24, "", up, px, up);
+    else /* classify_batch refines from a whole block's values */
         sbuf_printf(o, "\n/* The classes and values d[P * ds + l] of n patches (--refine: classify_batch). */\n"
                        "#if defined(__GNUC__) && !defined(__clang__)\n"
                        "__attribute__((noinline, noclone))\n"
@@ -850,6 +892,18 @@ static void put_classify(sbuf *o, const out_info *info, const char *up, const ch
     sbuf_puts(o, "}\n\n");
 }
 
+/* classify_batch prefetches the block that starts at least BATCH_AHEAD_MULS multiply-pipe
+ * operations (per lane) ahead of the one it classifies, at most 8 blocks ahead: about a memory
+ * latency of work on a fast core (bench/README: PN triangles). */
+#define BATCH_AHEAD_MULS 1600
+
+/* The blocks classify_batch prefetches ahead for program p. */
+static long batch_ahead(const slp_prog *p, const out_info *info)
+{
+    long m = slp_muls(p, info->space == OUT_WORLD), a = (BATCH_AHEAD_MULS + m - 1) / (m > 0 ? m : 1);
+    return a < 1 ? 1 : a > 8 ? 8 : a;
+}
+
 /* The second look, if any, and the three entry points on the lanes: classify (one patch),
  * classify_soa and classify_batch (patch-major). */
 static int put_entries(sbuf *o, const tp_table *t, const slp_prog *p, const out_info *info,
@@ -868,6 +922,10 @@ static int put_entries(sbuf *o, const tp_table *t, const slp_prog *p, const out_
     if (info->refine)
         emit_c_refine(o, t, info, up);
     put_classify(o, info, up, second, again);
+    sbuf_printf(o, "/* classify_batch prefetches the block AHEAD blocks on: about %d multiply-pipe operations a\n"
+                   " * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */\n"
+                   "#define %sAHEAD %ld\n",
+                BATCH_AHEAD_MULS, up, batch_ahead(p, info));
     emit_c_batch(o, t, info, up, second, again);
     return PTP_OK;
 }

@@ -192,7 +192,7 @@ void emit_c_batch(sbuf *o, const tp_table *t, const out_info *info, const char *
     snprintf(dv, sizeof dv, ", dv[%sPLANES * %sLANES]", up, up);
     put_vectors(o, t, px, up, world);
     put_transpose(o, px, up, world);
-    sbuf_printf(o, "/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, "
+    sbuf_printf(o, "/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, "
                    "the second look. */\n"
                    "void %sclassify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],\n"
                    "                    unsigned char *cls)\n{\n"
@@ -201,19 +201,22 @@ void emit_c_batch(sbuf *o, const tp_table *t, const out_info *info, const char *
                    "    for (p = 0; p < patch_count; p += n) {\n"
                    "        n = patch_count - p < %sLANES ? patch_count - p : %sLANES;\n"
                    "        %stranspose(soa, cp + p * %sPOINTS, n);\n"
-                   "#if defined(__GNUC__) /* the next block into the caches while this one is classified */\n"
+                   "#if defined(__GNUC__) /* a later block into the caches while this one is classified */\n"
                    "        {\n"
-                   "            const char *next = (const char *)(cp + (p + n) * %sPOINTS);\n"
-                   "            size_t b, m = patch_count - p - n < %sLANES ? patch_count - p - n : %sLANES;\n"
+                   "            size_t a = patch_count - p - n <= (%sAHEAD - 1) * %sLANES ? patch_count\n"
+                   "                       : p + n + (%sAHEAD - 1) * %sLANES;\n"
+                   "            const char *next = (const char *)(cp + a * %sPOINTS);\n"
+                   "            size_t b, m = patch_count - a < %sLANES ? patch_count - a : %sLANES;\n"
                    "            for (b = 0; b < m * %sPOINTS * sizeof *cp; b += 64)\n"
                    "                __builtin_prefetch(next + b, 0, 0);\n"
                    "        }\n"
-                   "#endif\n"
-                   "        %slanes%s(soa, %sLANES, n, eye, cls + p%s%s%s);\n",
+                   "#endif\n",
                 px, up, up, up, block ? dv : "", block || second ? ", l" : "",
-                block ? "    unsigned k;\n" : "", up, up, px, up, up, up, up, up, px,
-                block ? "_values" : "", up, block ? ", dv, " : "", block ? up : "",
-                block ? "LANES" : "");
+                block ? "    unsigned k;\n" : "", up, up, px, up, up, up, up, up, up, up, up, up);
+    if (block)
+        sbuf_printf(o, "        %slanes_values(soa, %sLANES, n, eye, cls + p, dv, %sLANES);\n", px, up, up);
+    else
+        sbuf_printf(o, "        %slanes_block(soa, n, eye, cls + p);\n", px);
     put_second_look(o, info, up, second, again, block);
     sbuf_puts(o, "    }\n}\n");
 }

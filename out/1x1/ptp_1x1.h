@@ -128,10 +128,19 @@ static inline ptp_1x1_vf ptp_1x1_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_1X1_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_1X1_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_1x1_vstore(unsigned char *cls, ptp_1x1_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_1x1_vb __attribute__((vector_size(PTP_1X1_VW)));
+    if (count >= PTP_1X1_VW) {
+        ptp_1x1_vb b = __builtin_convertvector(c, ptp_1x1_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_1X1_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -282,6 +291,24 @@ void ptp_1x1_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_1X1_VW == 16
+typedef __mmask16 ptp_1x1_vk;
+#define PTP_1X1_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_1X1_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_1X1_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_1X1_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_1X1_KCLASS(lt, gt) ((ptp_1x1_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_1x1_vm ptp_1x1_vk;
+#define PTP_1X1_KLT0(v) ((v) < 0.0f)
+#define PTP_1X1_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_1X1_KGT0(v) ((v) > 0.0f)
+#define PTP_1X1_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_1X1_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_1X1_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -307,7 +334,7 @@ static inline void ptp_1x1_lanes_body(const float *PTP_1X1_RESTRICT soa, size_t 
     for (l = 0; l < n; l += PTP_1X1_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_1x1_vm notlt, notgt;
+        ptp_1x1_vk lt, gt;
         ptp_1x1_vf u, v;
 #if PTP_1X1_VW > 1
         float tail[PTP_1X1_POINTS * 4 * PTP_1X1_VW];
@@ -334,8 +361,8 @@ static inline void ptp_1x1_lanes_body(const float *PTP_1X1_RESTRICT soa, size_t 
         v = u;
         if (d)
             ptp_1x1_vstoref(d + 0 * ds + l, v, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_1X1_KLT0(v);
+        gt = PTP_1X1_KGT0(v); /* plane 0 */
         const ptp_1x1_vf x3 = ptp_1x1_vload(q + 12 * qs), y3 = ptp_1x1_vload(q + 13 * qs),
             w3 = ptp_1x1_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_1x1_vf m1_3 = x1 * y3 - y1 * x3;
@@ -344,26 +371,24 @@ static inline void ptp_1x1_lanes_body(const float *PTP_1X1_RESTRICT soa, size_t 
         v = u;
         if (d)
             ptp_1x1_vstoref(d + 1 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        lt = PTP_1X1_KLT(lt, v);
+        gt = PTP_1X1_KGT(gt, v); /* plane 1 */
         const ptp_1x1_vf m2_3 = x2 * y3 - y2 * x3;
         u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
         if (d)
             ptp_1x1_vstoref(d + 2 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        lt = PTP_1X1_KLT(lt, v);
+        gt = PTP_1X1_KGT(gt, v); /* plane 2 */
         u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
         v = u;
         if (d)
             ptp_1x1_vstoref(d + 3 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        lt = PTP_1X1_KLT(lt, v);
+        gt = PTP_1X1_KGT(gt, v); /* plane 3 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_1x1_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_1x1_vstore(cls + l, PTP_1X1_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -384,6 +409,19 @@ void ptp_1x1_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_1x1_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_1x1_lanes_block(const float *PTP_1X1_RESTRICT soa, size_t n, const float eye[4],
+                                unsigned char *PTP_1X1_RESTRICT cls)
+{
+    ptp_1x1_lanes_body(soa, PTP_1X1_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -401,6 +439,9 @@ void ptp_1x1_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_1x1_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_1X1_AHEAD 8
 /* classify_batch's transposition: tiles of PTP_1X1_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_1X1_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_1X1_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -605,7 +646,7 @@ static void ptp_1x1_transpose(float *PTP_1X1_RESTRICT soa, const float (*PTP_1X1
                     soa[(k * 4 + c) * PTP_1X1_LANES + l] = cp[l * PTP_1X1_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_1x1_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -614,15 +655,17 @@ void ptp_1x1_classify_batch(const float (*cp)[4], size_t patch_count, const floa
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_1X1_LANES ? patch_count - p : PTP_1X1_LANES;
         ptp_1x1_transpose(soa, cp + p * PTP_1X1_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_1X1_POINTS);
-            size_t b, m = patch_count - p - n < PTP_1X1_LANES ? patch_count - p - n : PTP_1X1_LANES;
+            size_t a = patch_count - p - n <= (PTP_1X1_AHEAD - 1) * PTP_1X1_LANES ? patch_count
+                       : p + n + (PTP_1X1_AHEAD - 1) * PTP_1X1_LANES;
+            const char *next = (const char *)(cp + a * PTP_1X1_POINTS);
+            size_t b, m = patch_count - a < PTP_1X1_LANES ? patch_count - a : PTP_1X1_LANES;
             for (b = 0; b < m * PTP_1X1_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_1x1_lanes(soa, PTP_1X1_LANES, n, eye, cls + p);
+        ptp_1x1_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

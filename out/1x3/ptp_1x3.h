@@ -128,10 +128,19 @@ static inline ptp_1x3_vf ptp_1x3_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_1X3_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_1X3_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_1x3_vstore(unsigned char *cls, ptp_1x3_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_1x3_vb __attribute__((vector_size(PTP_1X3_VW)));
+    if (count >= PTP_1X3_VW) {
+        ptp_1x3_vb b = __builtin_convertvector(c, ptp_1x3_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_1X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -370,6 +379,24 @@ void ptp_1x3_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_1X3_VW == 16
+typedef __mmask16 ptp_1x3_vk;
+#define PTP_1X3_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_1X3_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_1X3_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_1X3_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_1X3_KCLASS(lt, gt) ((ptp_1x3_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_1x3_vm ptp_1x3_vk;
+#define PTP_1X3_KLT0(v) ((v) < 0.0f)
+#define PTP_1X3_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_1X3_KGT0(v) ((v) > 0.0f)
+#define PTP_1X3_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_1X3_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_1X3_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -395,7 +422,7 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
     for (l = 0; l < n; l += PTP_1X3_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_1x3_vm notlt, notgt;
+        ptp_1x3_vk lt, gt;
         ptp_1x3_vf u, v;
 #if PTP_1X3_VW > 1
         float tail[PTP_1X3_POINTS * 4 * PTP_1X3_VW];
@@ -422,8 +449,8 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v = u;
         if (d)
             ptp_1x3_vstoref(d + 0 * ds + l, v * 3.0f, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_1X3_KLT0(v);
+        gt = PTP_1X3_KGT0(v); /* plane 0 */
         const ptp_1x3_vf x2 = ptp_1x3_vload(q + 8 * qs), y2 = ptp_1x3_vload(q + 9 * qs),
             w2 = ptp_1x3_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_1x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -438,8 +465,8 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 1 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 1 */
         const ptp_1x3_vf x3 = ptp_1x3_vload(q + 12 * qs), y3 = ptp_1x3_vload(q + 13 * qs),
             w3 = ptp_1x3_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_1x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -460,8 +487,8 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 2 * ds + l, v * 0.142857149f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 2 */
         const ptp_1x3_vf x7 = ptp_1x3_vload(q + 28 * qs), y7 = ptp_1x3_vload(q + 29 * qs),
             w7 = ptp_1x3_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_1x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -482,8 +509,8 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_1x3_vstoref(d + 3 * ds + l, v * 0.0857142881f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 3 */
         const ptp_1x3_vf m3_7 = x3 * y7 - y3 * x7;
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = (u + u);
@@ -493,15 +520,15 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 6 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 6 */
         const ptp_1x3_vf m2_7 = x2 * y7 - y2 * x7;
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
         if (d)
             ptp_1x3_vstoref(d + 7 * ds + l, v * 3.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 7 */
         u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
@@ -512,8 +539,8 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 5 * ds + l, v * 0.142857149f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 5 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 5 */
         u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = u;
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
@@ -527,15 +554,15 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_1x3_vstoref(d + 4 * ds + l, v * 0.0857142881f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 4 */
         const ptp_1x3_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = u;
         if (d)
             ptp_1x3_vstoref(d + 8 * ds + l, v * 3.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 8 */
         const ptp_1x3_vf m4_6 = x4 * y6 - y4 * x6;
         u = ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
         v = (u + u);
@@ -543,8 +570,8 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 9 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 9 */
         const ptp_1x3_vf m4_7 = x4 * y7 - y4 * x7;
         u = ((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
         v = u;
@@ -557,8 +584,8 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 10 * ds + l, v * 0.142857149f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 10 */
         u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
         v = u;
         const ptp_1x3_vf m5_7 = x5 * y7 - y5 * x7;
@@ -573,8 +600,8 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_1x3_vstoref(d + 11 * ds + l, v * 0.0857142881f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 11 */
         u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
         v = (u + u);
         const ptp_1x3_vf m6_7 = x6 * y7 - y6 * x7;
@@ -582,14 +609,14 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 14 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 14 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
         if (d)
             ptp_1x3_vstoref(d + 15 * ds + l, v * 3.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 15 */
         u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
         v = u;
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
@@ -600,8 +627,8 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_1x3_vstoref(d + 13 * ds + l, v * 0.142857149f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 13 */
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         v = u;
         u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
@@ -615,13 +642,11 @@ static inline void ptp_1x3_lanes_body(const float *PTP_1X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_1x3_vstoref(d + 12 * ds + l, v * 0.0857142881f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        lt = PTP_1X3_KLT(lt, v);
+        gt = PTP_1X3_KGT(gt, v); /* plane 12 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_1x3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_1x3_vstore(cls + l, PTP_1X3_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -642,6 +667,19 @@ void ptp_1x3_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_1x3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_1x3_lanes_block(const float *PTP_1X3_RESTRICT soa, size_t n, const float eye[4],
+                                unsigned char *PTP_1X3_RESTRICT cls)
+{
+    ptp_1x3_lanes_body(soa, PTP_1X3_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -659,6 +697,9 @@ void ptp_1x3_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_1x3_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_1X3_AHEAD 8
 /* classify_batch's transposition: tiles of PTP_1X3_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_1X3_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_1X3_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -863,7 +904,7 @@ static void ptp_1x3_transpose(float *PTP_1X3_RESTRICT soa, const float (*PTP_1X3
                     soa[(k * 4 + c) * PTP_1X3_LANES + l] = cp[l * PTP_1X3_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_1x3_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -872,15 +913,17 @@ void ptp_1x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_1X3_LANES ? patch_count - p : PTP_1X3_LANES;
         ptp_1x3_transpose(soa, cp + p * PTP_1X3_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_1X3_POINTS);
-            size_t b, m = patch_count - p - n < PTP_1X3_LANES ? patch_count - p - n : PTP_1X3_LANES;
+            size_t a = patch_count - p - n <= (PTP_1X3_AHEAD - 1) * PTP_1X3_LANES ? patch_count
+                       : p + n + (PTP_1X3_AHEAD - 1) * PTP_1X3_LANES;
+            const char *next = (const char *)(cp + a * PTP_1X3_POINTS);
+            size_t b, m = patch_count - a < PTP_1X3_LANES ? patch_count - a : PTP_1X3_LANES;
             for (b = 0; b < m * PTP_1X3_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_1x3_lanes(soa, PTP_1X3_LANES, n, eye, cls + p);
+        ptp_1x3_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

@@ -128,10 +128,19 @@ static inline ptp_2x2_vf ptp_2x2_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_2X2_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_2X2_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_2x2_vstore(unsigned char *cls, ptp_2x2_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_2x2_vb __attribute__((vector_size(PTP_2X2_VW)));
+    if (count >= PTP_2X2_VW) {
+        ptp_2x2_vb b = __builtin_convertvector(c, ptp_2x2_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_2X2_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -426,6 +435,24 @@ void ptp_2x2_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_2X2_VW == 16
+typedef __mmask16 ptp_2x2_vk;
+#define PTP_2X2_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_2X2_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_2X2_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_2X2_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_2X2_KCLASS(lt, gt) ((ptp_2x2_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_2x2_vm ptp_2x2_vk;
+#define PTP_2X2_KLT0(v) ((v) < 0.0f)
+#define PTP_2X2_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_2X2_KGT0(v) ((v) > 0.0f)
+#define PTP_2X2_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_2X2_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_2X2_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -451,7 +478,7 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
     for (l = 0; l < n; l += PTP_2X2_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_2x2_vm notlt, notgt;
+        ptp_2x2_vk lt, gt;
         ptp_2x2_vf u, v;
 #if PTP_2X2_VW > 1
         float tail[PTP_2X2_POINTS * 4 * PTP_2X2_VW];
@@ -478,8 +505,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = u;
         if (d)
             ptp_2x2_vstoref(d + 0 * ds + l, v * 4.0f, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_2X2_KLT0(v);
+        gt = PTP_2X2_KGT0(v); /* plane 0 */
         const ptp_2x2_vf x2 = ptp_2x2_vload(q + 8 * qs), y2 = ptp_2x2_vload(q + 9 * qs),
             w2 = ptp_2x2_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_2x2_vf x5 = ptp_2x2_vload(q + 20 * qs), y5 = ptp_2x2_vload(q + 21 * qs),
@@ -491,8 +518,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = u;
         if (d)
             ptp_2x2_vstoref(d + 4 * ds + l, v * 4.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 4 */
         const ptp_2x2_vf m2_3 = x2 * y3 - y2 * x3;
         const ptp_2x2_vf m0_2 = x0 * y2 - y0 * x2;
         u = -((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
@@ -505,8 +532,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 1 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 1 */
         const ptp_2x2_vf m0_5 = x0 * y5 - y0 * x5;
         u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
         u -= ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
@@ -516,16 +543,16 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 2 * ds + l, v * 0.666666687f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 2 */
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v = u;
         u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 3 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 3 */
         const ptp_2x2_vf x6 = ptp_2x2_vload(q + 24 * qs), y6 = ptp_2x2_vload(q + 25 * qs),
             w6 = ptp_2x2_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_2x2_vf m1_6 = x1 * y6 - y1 * x6;
@@ -537,8 +564,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 5 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 5 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 5 */
         const ptp_2x2_vf x8 = ptp_2x2_vload(q + 32 * qs), y8 = ptp_2x2_vload(q + 33 * qs),
             w8 = ptp_2x2_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_2x2_vf m2_8 = x2 * y8 - y2 * x8;
@@ -550,8 +577,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 9 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 9 */
         const ptp_2x2_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
         v = u;
@@ -567,8 +594,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_2x2_vstoref(d + 6 * ds + l, v * 0.25f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 6 */
         const ptp_2x2_vf m3_7 = x3 * y7 - y3 * x7;
         u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         const ptp_2x2_vf m3_6 = x3 * y6 - y3 * x6;
@@ -579,8 +606,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 10 * ds + l, v * 0.666666687f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 10 */
         const ptp_2x2_vf m3_8 = x3 * y8 - y3 * x8;
         const ptp_2x2_vf m4_7 = x4 * y7 - y4 * x7;
         const ptp_2x2_vf m5_6 = x5 * y6 - y5 * x6;
@@ -614,8 +641,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = PTP_2X2_VFMA(g8, u, v);
         if (d)
             ptp_2x2_vstoref(d + 11 * ds + l, v * 0.166666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 11 */
         const ptp_2x2_vf m5_7 = x5 * y7 - y5 * x7;
         u = -m5_7;
         v = g0 * u;
@@ -636,8 +663,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = PTP_2X2_VFMA(g8, u, v);
         if (d)
             ptp_2x2_vstoref(d + 12 * ds + l, v * 0.333333343f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 12 */
         const ptp_2x2_vf m5_8 = x5 * y8 - y5 * x8;
         u = -((g1 * m5_8 - g5 * m1_8) + g8 * m1_5);
         u -= ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
@@ -647,8 +674,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 14 * ds + l, v * 0.666666687f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 14 */
         const ptp_2x2_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         v = u;
@@ -656,8 +683,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 15 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 15 */
         u = -((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
@@ -667,8 +694,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_2x2_vstoref(d + 8 * ds + l, v * 0.25f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 8 */
         const ptp_2x2_vf m6_8 = x6 * y8 - y6 * x8;
         u = ((g0 * m6_8 - g6 * m0_8) + g8 * m0_6);
         v = u;
@@ -679,8 +706,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_2x2_vstoref(d + 16 * ds + l, v * 0.25f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 16 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 16 */
         u = ((g2 * m6_8 - g6 * m2_8) + g8 * m2_6);
         v = u;
         const ptp_2x2_vf m7_8 = x7 * y8 - y7 * x8;
@@ -691,30 +718,30 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_2x2_vstoref(d + 18 * ds + l, v * 0.25f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 18 */
         u = ((g2 * m7_8 - g7 * m2_8) + g8 * m2_7);
         v = u;
         u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 19 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 19 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 19 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
         if (d)
             ptp_2x2_vstoref(d + 20 * ds + l, v * 4.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 20 */
         u = ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
         v = u;
         u = ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 21 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 21 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 21 */
         u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
         u += ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
         v = u;
@@ -722,22 +749,22 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 22 * ds + l, v * 0.666666687f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 22 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 22 */
         u = ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
         v = u;
         u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
         v += (u + u);
         if (d)
             ptp_2x2_vstoref(d + 23 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 23 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 23 */
         u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
         v = u;
         if (d)
             ptp_2x2_vstoref(d + 24 * ds + l, v * 4.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 24 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 24 */
         u = m7_8;
         v = g0 * u;
         u = (m6_8);
@@ -767,8 +794,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = PTP_2X2_VFMA(g8, u, v);
         if (d)
             ptp_2x2_vstoref(d + 17 * ds + l, v * 0.166666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 17 */
         u = -m1_8;
         u = PTP_2X2_VFMAS(2.0f, m4_5 - m2_7, u);
         v = g0 * u;
@@ -798,8 +825,8 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = PTP_2X2_VFMA(g8, u, v);
         if (d)
             ptp_2x2_vstoref(d + 7 * ds + l, v * 0.166666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 7 */
         u = -m5_8;
         v = g0 * u;
         u = (m4_8);
@@ -829,13 +856,11 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         v = PTP_2X2_VFMA(g8, u, v);
         if (d)
             ptp_2x2_vstoref(d + 13 * ds + l, v * 0.166666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        lt = PTP_2X2_KLT(lt, v);
+        gt = PTP_2X2_KGT(gt, v); /* plane 13 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_2x2_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_2x2_vstore(cls + l, PTP_2X2_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -856,6 +881,19 @@ void ptp_2x2_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_2x2_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_2x2_lanes_block(const float *PTP_2X2_RESTRICT soa, size_t n, const float eye[4],
+                                unsigned char *PTP_2X2_RESTRICT cls)
+{
+    ptp_2x2_lanes_body(soa, PTP_2X2_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -873,6 +911,9 @@ void ptp_2x2_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_2x2_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_2X2_AHEAD 6
 /* classify_batch's transposition: tiles of PTP_2X2_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_2X2_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_2X2_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -1077,7 +1118,7 @@ static void ptp_2x2_transpose(float *PTP_2X2_RESTRICT soa, const float (*PTP_2X2
                     soa[(k * 4 + c) * PTP_2X2_LANES + l] = cp[l * PTP_2X2_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_2x2_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -1086,15 +1127,17 @@ void ptp_2x2_classify_batch(const float (*cp)[4], size_t patch_count, const floa
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_2X2_LANES ? patch_count - p : PTP_2X2_LANES;
         ptp_2x2_transpose(soa, cp + p * PTP_2X2_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_2X2_POINTS);
-            size_t b, m = patch_count - p - n < PTP_2X2_LANES ? patch_count - p - n : PTP_2X2_LANES;
+            size_t a = patch_count - p - n <= (PTP_2X2_AHEAD - 1) * PTP_2X2_LANES ? patch_count
+                       : p + n + (PTP_2X2_AHEAD - 1) * PTP_2X2_LANES;
+            const char *next = (const char *)(cp + a * PTP_2X2_POINTS);
+            size_t b, m = patch_count - a < PTP_2X2_LANES ? patch_count - a : PTP_2X2_LANES;
             for (b = 0; b < m * PTP_2X2_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_2x2_lanes(soa, PTP_2X2_LANES, n, eye, cls + p);
+        ptp_2x2_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

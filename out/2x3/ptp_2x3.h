@@ -128,10 +128,19 @@ static inline ptp_2x3_vf ptp_2x3_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_2X3_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_2X3_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_2x3_vstore(unsigned char *cls, ptp_2x3_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_2x3_vb __attribute__((vector_size(PTP_2X3_VW)));
+    if (count >= PTP_2X3_VW) {
+        ptp_2x3_vb b = __builtin_convertvector(c, ptp_2x3_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_2X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -674,6 +683,24 @@ void ptp_2x3_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_2X3_VW == 16
+typedef __mmask16 ptp_2x3_vk;
+#define PTP_2X3_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_2X3_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_2X3_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_2X3_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_2X3_KCLASS(lt, gt) ((ptp_2x3_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_2x3_vm ptp_2x3_vk;
+#define PTP_2X3_KLT0(v) ((v) < 0.0f)
+#define PTP_2X3_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_2X3_KGT0(v) ((v) > 0.0f)
+#define PTP_2X3_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_2X3_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_2X3_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -699,7 +726,7 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
     for (l = 0; l < n; l += PTP_2X3_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_2x3_vm notlt, notgt;
+        ptp_2x3_vk lt, gt;
         ptp_2x3_vf u, v;
 #if PTP_2X3_VW > 1
         float tail[PTP_2X3_POINTS * 4 * PTP_2X3_VW];
@@ -726,8 +753,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = u;
         if (d)
             ptp_2x3_vstoref(d + 0 * ds + l, v * 6.0f, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_2X3_KLT0(v);
+        gt = PTP_2X3_KGT0(v); /* plane 0 */
         const ptp_2x3_vf x2 = ptp_2x3_vload(q + 8 * qs), y2 = ptp_2x3_vload(q + 9 * qs),
             w2 = ptp_2x3_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_2x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -742,8 +769,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 1 * ds + l, v * 0.857142866f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 1 */
         const ptp_2x3_vf x3 = ptp_2x3_vload(q + 12 * qs), y3 = ptp_2x3_vload(q + 13 * qs),
             w3 = ptp_2x3_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_2x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -764,8 +791,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 2 * ds + l, v * 0.285714298f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 2 */
         const ptp_2x3_vf x7 = ptp_2x3_vload(q + 28 * qs), y7 = ptp_2x3_vload(q + 29 * qs),
             w7 = ptp_2x3_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_2x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -786,8 +813,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 3 * ds + l, v * 0.171428576f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 3 */
         const ptp_2x3_vf m3_7 = x3 * y7 - y3 * x7;
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = (u + u);
@@ -797,15 +824,15 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 6 * ds + l, v * 0.857142866f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 6 */
         const ptp_2x3_vf m2_7 = x2 * y7 - y2 * x7;
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
         if (d)
             ptp_2x3_vstoref(d + 7 * ds + l, v * 6.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 7 */
         u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
@@ -816,8 +843,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 5 * ds + l, v * 0.285714298f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 5 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 5 */
         u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = u;
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
@@ -831,8 +858,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 4 * ds + l, v * 0.171428576f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 4 */
         const ptp_2x3_vf x8 = ptp_2x3_vload(q + 32 * qs), y8 = ptp_2x3_vload(q + 33 * qs),
             w8 = ptp_2x3_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_2x3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -844,8 +871,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 8 * ds + l, v * 1.5f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 8 */
         const ptp_2x3_vf m2_8 = x2 * y8 - y2 * x8;
         u = g0 * (-m2_8);
         u = PTP_2X3_VFMA(g2, m0_8, u);
@@ -871,8 +898,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 9 * ds + l, v * 0.214285716f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 9 */
         const ptp_2x3_vf m3_8 = x3 * y8 - y3 * x8;
         u = g0 * (-m3_8);
         u = PTP_2X3_VFMA(g3, m0_8, u);
@@ -911,8 +938,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 10 * ds + l, v * 0.0714285746f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 10 */
         const ptp_2x3_vf x11 = ptp_2x3_vload(q + 44 * qs), y11 = ptp_2x3_vload(q + 45 * qs),
             w11 = ptp_2x3_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_2x3_vf m3_11 = x3 * y11 - y3 * x11;
@@ -940,8 +967,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 14 * ds + l, v * 0.214285716f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 14 */
         const ptp_2x3_vf m2_11 = x2 * y11 - y2 * x11;
         u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
         v = u;
@@ -949,8 +976,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 15 * ds + l, v * 1.5f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 15 */
         const ptp_2x3_vf m4_9 = x4 * y9 - y4 * x9;
         u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
         const ptp_2x3_vf m4_8 = x4 * y8 - y4 * x8;
@@ -961,8 +988,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 16 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 16 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 16 */
         const ptp_2x3_vf m4_10 = x4 * y10 - y4 * x10;
         u = ((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
         u += ((g2 * m4_8 - g4 * m2_8) + g8 * m2_4);
@@ -979,8 +1006,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 17 * ds + l, v * 0.142857149f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 17 */
         const ptp_2x3_vf m4_11 = x4 * y11 - y4 * x11;
         const ptp_2x3_vf m0_11 = x0 * y11 - y0 * x11;
         u = ((g0 * m4_11 - g4 * m0_11) + g11 * m0_4);
@@ -997,8 +1024,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 18 * ds + l, v * 0.0476190485f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 18 */
         u = g0 * (-m3_11);
         u = PTP_2X3_VFMA(g3, m0_11, u);
         u = PTP_2X3_VFMA(g11, -m0_3, u);
@@ -1030,8 +1057,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 13 * ds + l, v * 0.0714285746f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 13 */
         u = g2 * (-m3_8);
         u = PTP_2X3_VFMA(g3, m2_8, u);
         u = PTP_2X3_VFMA(g8, -m2_3, u);
@@ -1074,8 +1101,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_2x3_vstoref(d + 12 * ds + l, v * 0.042857144f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 12 */
         u = g0 * (-m1_11);
         u = PTP_2X3_VFMA(g1, m0_11, u);
         u = PTP_2X3_VFMA(g11, -m0_1, u);
@@ -1118,8 +1145,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_2x3_vstoref(d + 11 * ds + l, v * 0.042857144f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 11 */
         const ptp_2x3_vf m7_11 = x7 * y11 - y7 * x11;
         u = -((g1 * m7_11 - g7 * m1_11) + g11 * m1_7);
         const ptp_2x3_vf m7_9 = x7 * y9 - y7 * x9;
@@ -1139,8 +1166,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 22 * ds + l, v * 0.142857149f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 22 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 22 */
         u = -((g2 * m7_11 - g7 * m2_11) + g11 * m2_7);
         u -= ((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
         v = u;
@@ -1148,8 +1175,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 23 * ds + l, v, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 23 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 23 */
         const ptp_2x3_vf m8_9 = x8 * y9 - y8 * x9;
         u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
         v = u;
@@ -1157,8 +1184,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 24 * ds + l, v * 1.5f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 24 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 24 */
         const ptp_2x3_vf m8_10 = x8 * y10 - y8 * x10;
         u = g0 * (m8_10);
         u = PTP_2X3_VFMA(g8, -m0_10, u);
@@ -1179,8 +1206,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 25 * ds + l, v * 0.214285716f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 25 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 25 */
         const ptp_2x3_vf m8_11 = x8 * y11 - y8 * x11;
         u = g0 * (m8_11);
         u = PTP_2X3_VFMA(g8, -m0_11, u);
@@ -1214,8 +1241,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 26 * ds + l, v * 0.0714285746f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 26 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 26 */
         u = g3 * (m8_9);
         u = PTP_2X3_VFMA(g8, -m3_9, u);
         u = PTP_2X3_VFMA(g9, m3_8, u);
@@ -1259,8 +1286,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_2x3_vstoref(d + 27 * ds + l, v * 0.042857144f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 27 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 27 */
         const ptp_2x3_vf m10_11 = x10 * y11 - y10 * x11;
         u = g0 * (m10_11);
         u = PTP_2X3_VFMA(g10, -m0_11, u);
@@ -1304,8 +1331,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_2x3_vstoref(d + 28 * ds + l, v * 0.042857144f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 28 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 28 */
         u = g3 * (m8_11);
         u = PTP_2X3_VFMA(g8, -m3_11, u);
         u = PTP_2X3_VFMA(g11, m3_8, u);
@@ -1336,8 +1363,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 29 * ds + l, v * 0.0714285746f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 29 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 29 */
         u = g3 * (m9_11);
         u = PTP_2X3_VFMA(g9, -m3_11, u);
         u = PTP_2X3_VFMA(g11, m3_9, u);
@@ -1357,30 +1384,30 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 30 * ds + l, v * 0.214285716f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 30 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 30 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         v = u;
         u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
         v += (u + u);
         if (d)
             ptp_2x3_vstoref(d + 31 * ds + l, v * 1.5f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 31 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 31 */
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v = u;
         if (d)
             ptp_2x3_vstoref(d + 32 * ds + l, v * 6.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 32 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 32 */
         u = ((g4 * m8_10 - g8 * m4_10) + g10 * m4_8);
         v = (u + u);
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 33 * ds + l, v * 0.857142866f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 33 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 33 */
         u = ((g4 * m8_11 - g8 * m4_11) + g11 * m4_8);
         v = u;
         u = ((g4 * m9_10 - g9 * m4_10) + g10 * m4_9);
@@ -1391,8 +1418,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 34 * ds + l, v * 0.285714298f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 34 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 34 */
         u = ((g7 * m8_9 - g8 * m7_9) + g9 * m7_8);
         v = u;
         u = ((g4 * m9_11 - g9 * m4_11) + g11 * m4_9);
@@ -1406,8 +1433,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 35 * ds + l, v * 0.171428576f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 35 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 35 */
         u = ((g4 * m10_11 - g10 * m4_11) + g11 * m4_10);
         v = u;
         u = ((g7 * m8_10 - g8 * m7_10) + g10 * m7_8);
@@ -1421,8 +1448,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 36 * ds + l, v * 0.171428576f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 36 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 36 */
         u = ((g7 * m8_11 - g8 * m7_11) + g11 * m7_8);
         v = u;
         u = ((g5 * m10_11 - g10 * m5_11) + g11 * m5_10);
@@ -1433,22 +1460,22 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 37 * ds + l, v * 0.285714298f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 37 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 37 */
         u = ((g7 * m9_11 - g9 * m7_11) + g11 * m7_9);
         v = (u + u);
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v += (u + u) + u;
         if (d)
             ptp_2x3_vstoref(d + 38 * ds + l, v * 0.857142866f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 38 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 38 */
         u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = u;
         if (d)
             ptp_2x3_vstoref(d + 39 * ds + l, v * 6.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 39 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 39 */
         u = -((g0 * m7_11 - g7 * m0_11) + g11 * m0_7);
         u -= ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
         v = u;
@@ -1461,8 +1488,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_2x3_vstoref(d + 21 * ds + l, v * 0.0476190485f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 21 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 21 */
         u = g0 * (-m6_11);
         u = PTP_2X3_VFMA(g3, -m6_8, u);
         u = PTP_2X3_VFMA(g6, m3_8 + m0_11, u);
@@ -1506,8 +1533,8 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_2x3_vstoref(d + 20 * ds + l, v * 0.0285714287f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 20 */
         u = g0 * (m5_11);
         u = PTP_2X3_VFMA(g3, m5_8, u);
         u = PTP_2X3_VFMA(g5, -m3_8 - m0_11, u);
@@ -1551,13 +1578,11 @@ static inline void ptp_2x3_lanes_body(const float *PTP_2X3_RESTRICT soa, size_t 
         v = PTP_2X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_2x3_vstoref(d + 19 * ds + l, v * 0.0285714287f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 19 */
+        lt = PTP_2X3_KLT(lt, v);
+        gt = PTP_2X3_KGT(gt, v); /* plane 19 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_2x3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_2x3_vstore(cls + l, PTP_2X3_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -1578,6 +1603,19 @@ void ptp_2x3_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_2x3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_2x3_lanes_block(const float *PTP_2X3_RESTRICT soa, size_t n, const float eye[4],
+                                unsigned char *PTP_2X3_RESTRICT cls)
+{
+    ptp_2x3_lanes_body(soa, PTP_2X3_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -1595,6 +1633,9 @@ void ptp_2x3_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_2x3_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_2X3_AHEAD 3
 /* classify_batch's transposition: tiles of PTP_2X3_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_2X3_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_2X3_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -1799,7 +1840,7 @@ static void ptp_2x3_transpose(float *PTP_2X3_RESTRICT soa, const float (*PTP_2X3
                     soa[(k * 4 + c) * PTP_2X3_LANES + l] = cp[l * PTP_2X3_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_2x3_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -1808,15 +1849,17 @@ void ptp_2x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_2X3_LANES ? patch_count - p : PTP_2X3_LANES;
         ptp_2x3_transpose(soa, cp + p * PTP_2X3_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_2X3_POINTS);
-            size_t b, m = patch_count - p - n < PTP_2X3_LANES ? patch_count - p - n : PTP_2X3_LANES;
+            size_t a = patch_count - p - n <= (PTP_2X3_AHEAD - 1) * PTP_2X3_LANES ? patch_count
+                       : p + n + (PTP_2X3_AHEAD - 1) * PTP_2X3_LANES;
+            const char *next = (const char *)(cp + a * PTP_2X3_POINTS);
+            size_t b, m = patch_count - a < PTP_2X3_LANES ? patch_count - a : PTP_2X3_LANES;
             for (b = 0; b < m * PTP_2X3_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_2x3_lanes(soa, PTP_2X3_LANES, n, eye, cls + p);
+        ptp_2x3_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

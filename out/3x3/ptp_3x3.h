@@ -128,10 +128,19 @@ static inline ptp_3x3_vf ptp_3x3_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_3X3_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_3X3_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_3x3_vstore(unsigned char *cls, ptp_3x3_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_3x3_vb __attribute__((vector_size(PTP_3X3_VW)));
+    if (count >= PTP_3X3_VW) {
+        ptp_3x3_vb b = __builtin_convertvector(c, ptp_3x3_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_3X3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -1306,6 +1315,24 @@ void ptp_3x3_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_3X3_VW == 16
+typedef __mmask16 ptp_3x3_vk;
+#define PTP_3X3_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_3X3_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_3X3_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_3X3_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_3X3_KCLASS(lt, gt) ((ptp_3x3_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_3x3_vm ptp_3x3_vk;
+#define PTP_3X3_KLT0(v) ((v) < 0.0f)
+#define PTP_3X3_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_3X3_KGT0(v) ((v) > 0.0f)
+#define PTP_3X3_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_3X3_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_3X3_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -1331,7 +1358,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
     for (l = 0; l < n; l += PTP_3X3_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_3x3_vm notlt, notgt;
+        ptp_3x3_vk lt, gt;
         ptp_3x3_vf u, v;
 #if PTP_3X3_VW > 1
         float tail[PTP_3X3_POINTS * 4 * PTP_3X3_VW];
@@ -1358,8 +1385,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = u;
         if (d)
             ptp_3x3_vstoref(d + 0 * ds + l, v * 9.0f, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_3X3_KLT0(v);
+        gt = PTP_3X3_KGT0(v); /* plane 0 */
         const ptp_3x3_vf x2 = ptp_3x3_vload(q + 8 * qs), y2 = ptp_3x3_vload(q + 9 * qs),
             w2 = ptp_3x3_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_3x3_vf m2_4 = x2 * y4 - y2 * x4;
@@ -1374,8 +1401,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 1 * ds + l, v * 1.28571427f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 1 */
         const ptp_3x3_vf x3 = ptp_3x3_vload(q + 12 * qs), y3 = ptp_3x3_vload(q + 13 * qs),
             w3 = ptp_3x3_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_3x3_vf m3_4 = x3 * y4 - y3 * x4;
@@ -1396,8 +1423,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 2 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 2 */
         const ptp_3x3_vf x7 = ptp_3x3_vload(q + 28 * qs), y7 = ptp_3x3_vload(q + 29 * qs),
             w7 = ptp_3x3_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_3x3_vf m1_7 = x1 * y7 - y1 * x7;
@@ -1418,8 +1445,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 3 * ds + l, v * 0.257142872f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 3 */
         const ptp_3x3_vf m3_7 = x3 * y7 - y3 * x7;
         u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
         v = (u + u);
@@ -1429,15 +1456,15 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 6 * ds + l, v * 1.28571427f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 6 */
         const ptp_3x3_vf m2_7 = x2 * y7 - y2 * x7;
         u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
         v = u;
         if (d)
             ptp_3x3_vstoref(d + 7 * ds + l, v * 9.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 7 */
         u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         v = u;
         u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
@@ -1448,8 +1475,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 5 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 5 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 5 */
         u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = u;
         u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
@@ -1463,8 +1490,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 4 * ds + l, v * 0.257142872f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 4 */
         const ptp_3x3_vf x8 = ptp_3x3_vload(q + 32 * qs), y8 = ptp_3x3_vload(q + 33 * qs),
             w8 = ptp_3x3_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_3x3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -1476,8 +1503,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 8 * ds + l, v * 1.28571427f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 8 */
         const ptp_3x3_vf m2_8 = x2 * y8 - y2 * x8;
         u = g0 * (-m2_8);
         u = PTP_3X3_VFMA(g2, m0_8, u);
@@ -1501,8 +1528,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 9 * ds + l, v * 0.183673471f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 9 */
         const ptp_3x3_vf m3_8 = x3 * y8 - y3 * x8;
         u = g0 * (-m3_8);
         u = PTP_3X3_VFMA(g3, m0_8, u);
@@ -1544,8 +1571,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 10 * ds + l, v * 0.0612244904f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 10 */
         const ptp_3x3_vf x11 = ptp_3x3_vload(q + 44 * qs), y11 = ptp_3x3_vload(q + 45 * qs),
             w11 = ptp_3x3_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_3x3_vf m3_11 = x3 * y11 - y3 * x11;
@@ -1571,8 +1598,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 14 * ds + l, v * 0.183673471f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 14 */
         const ptp_3x3_vf m2_11 = x2 * y11 - y2 * x11;
         u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
         v = (u + u);
@@ -1580,8 +1607,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 15 * ds + l, v * 1.28571427f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 15 */
         u = g0 * (-m3_11);
         const ptp_3x3_vf m0_11 = x0 * y11 - y0 * x11;
         u = PTP_3X3_VFMA(g3, m0_11, u);
@@ -1617,8 +1644,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 13 * ds + l, v * 0.0612244904f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 13 */
         const ptp_3x3_vf x12 = ptp_3x3_vload(q + 48 * qs), y12 = ptp_3x3_vload(q + 49 * qs),
             w12 = ptp_3x3_vload(q + 51 * qs), g12 = e2 * w12;
         const ptp_3x3_vf m1_12 = x1 * y12 - y1 * x12;
@@ -1636,8 +1663,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 16 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 16 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 16 */
         const ptp_3x3_vf m2_12 = x2 * y12 - y2 * x12;
         u = g0 * (-m2_12);
         u = PTP_3X3_VFMA(g2, m0_12, u);
@@ -1679,8 +1706,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 17 * ds + l, v * 0.0612244904f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 17 */
         u = g0 * (-m1_11);
         u = PTP_3X3_VFMA(g1, m0_11, u);
         u = PTP_3X3_VFMA(g11, -m0_1, u);
@@ -1722,8 +1749,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 11 * ds + l, v * 0.0367346928f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 11 */
         u = g2 * (-m3_8);
         u = PTP_3X3_VFMA(g3, m2_8, u);
         u = PTP_3X3_VFMA(g8, -m2_3, u);
@@ -1765,8 +1792,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 12 * ds + l, v * 0.0367346928f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 12 */
         const ptp_3x3_vf x15 = ptp_3x3_vload(q + 60 * qs), y15 = ptp_3x3_vload(q + 61 * qs),
             w15 = ptp_3x3_vload(q + 63 * qs), g15 = e2 * w15;
         const ptp_3x3_vf m3_15 = x3 * y15 - y3 * x15;
@@ -1818,8 +1845,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 21 * ds + l, v * 0.0204081628f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 21 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 21 */
         u = g1 * (-m3_15);
         u = PTP_3X3_VFMA(g3, m1_15, u);
         u = PTP_3X3_VFMA(g15, -m1_3, u);
@@ -1856,8 +1883,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 22 * ds + l, v * 0.0612244904f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 22 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 22 */
         u = -((g2 * m3_15 - g3 * m2_15) + g15 * m2_3);
         v = u;
         u = -((g2 * m7_11 - g7 * m2_11) + g11 * m2_7);
@@ -1868,8 +1895,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 23 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 23 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 23 */
         const ptp_3x3_vf m4_13 = x4 * y13 - y4 * x13;
         u = ((g0 * m4_13 - g4 * m0_13) + g13 * m0_4);
         v = u;
@@ -1887,8 +1914,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 24 * ds + l, v * 0.257142872f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 24 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 24 */
         const ptp_3x3_vf m4_14 = x4 * y14 - y4 * x14;
         u = g0 * (m4_14);
         const ptp_3x3_vf m0_14 = x0 * y14 - y0 * x14;
@@ -1935,8 +1962,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 25 * ds + l, v * 0.0367346928f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 25 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 25 */
         const ptp_3x3_vf m3_12 = x3 * y12 - y3 * x12;
         u = g0 * (-m3_12);
         u = PTP_3X3_VFMA(g3, m0_12, u);
@@ -1971,8 +1998,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 18 * ds + l, v * 0.0204081628f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 18 */
         u = g0 * (-m1_15);
         u = PTP_3X3_VFMA(g1, m0_15, u);
         u = PTP_3X3_VFMA(g15, -m0_1, u);
@@ -2033,8 +2060,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 19 * ds + l, v * 0.0122448979f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 19 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 19 */
         u = g2 * (-m3_12);
         u = PTP_3X3_VFMA(g3, m2_12, u);
         u = PTP_3X3_VFMA(g12, -m2_3, u);
@@ -2095,8 +2122,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 20 * ds + l, v * 0.0122448979f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 20 */
         const ptp_3x3_vf m7_12 = x7 * y12 - y7 * x12;
         u = g3 * (-m7_12);
         u = PTP_3X3_VFMA(g7, m3_12, u);
@@ -2170,8 +2197,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 29 * ds + l, v * 0.0122448979f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 29 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 29 */
         u = g3 * (-m7_13);
         u = PTP_3X3_VFMA(g7, m3_13, u);
         u = PTP_3X3_VFMA(g13, -m3_7, u);
@@ -2214,8 +2241,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 30 * ds + l, v * 0.0367346928f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 30 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 30 */
         u = -((g3 * m7_14 - g7 * m3_14) + g14 * m3_7);
         v = u;
         u = -((g2 * m7_15 - g7 * m2_15) + g15 * m2_7);
@@ -2229,8 +2256,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 31 * ds + l, v * 0.257142872f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 31 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 31 */
         const ptp_3x3_vf m8_12 = x8 * y12 - y8 * x12;
         u = ((g1 * m8_12 - g8 * m1_12) + g12 * m1_8);
         v = u;
@@ -2247,8 +2274,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 32 * ds + l, v * 0.257142872f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 32 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 32 */
         u = g2 * (m8_12);
         u = PTP_3X3_VFMA(g8, -m2_12, u);
         u = PTP_3X3_VFMA(g12, m2_8, u);
@@ -2293,8 +2320,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 33 * ds + l, v * 0.0367346928f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 33 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 33 */
         u = g3 * (m8_12);
         u = PTP_3X3_VFMA(g8, -m3_12, u);
         u = PTP_3X3_VFMA(g12, m3_8, u);
@@ -2359,8 +2386,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 34 * ds + l, v * 0.0122448979f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 34 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 34 */
         u = g0 * (m4_15);
         u = PTP_3X3_VFMA(g4, -m0_15, u);
         u = PTP_3X3_VFMA(g15, m0_4, u);
@@ -2421,8 +2448,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 26 * ds + l, v * 0.0122448979f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 26 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 26 */
         u = g3 * (m5_12);
         u = PTP_3X3_VFMA(g5, -m3_12, u);
         u = PTP_3X3_VFMA(g12, m3_5, u);
@@ -2497,8 +2524,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(81.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 27 * ds + l, v * 0.00734693883f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 27 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 27 */
         const ptp_3x3_vf m11_15 = x11 * y15 - y11 * x15;
         u = g0 * (-m11_15);
         u = PTP_3X3_VFMA(g11, m0_15, u);
@@ -2564,8 +2591,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 37 * ds + l, v * 0.0122448979f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 37 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 37 */
         u = g1 * (-m11_15);
         u = PTP_3X3_VFMA(g11, m1_15, u);
         u = PTP_3X3_VFMA(g15, -m1_11, u);
@@ -2608,8 +2635,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 38 * ds + l, v * 0.0367346928f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 38 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 38 */
         u = -((g2 * m11_15 - g11 * m2_15) + g15 * m2_11);
         v = u;
         u = -((g3 * m11_14 - g11 * m3_14) + g14 * m3_11);
@@ -2623,8 +2650,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 39 * ds + l, v * 0.257142872f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 39 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 39 */
         const ptp_3x3_vf m12_13 = x12 * y13 - y12 * x13;
         u = ((g0 * m12_13 - g12 * m0_13) + g13 * m0_12);
         v = u;
@@ -2636,8 +2663,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 40 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 40 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 40 */
         const ptp_3x3_vf m12_14 = x12 * y14 - y12 * x14;
         u = g0 * (m12_14);
         u = PTP_3X3_VFMA(g12, -m0_14, u);
@@ -2672,8 +2699,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 41 * ds + l, v * 0.0612244904f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 41 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 41 */
         const ptp_3x3_vf m12_15 = x12 * y15 - y12 * x15;
         u = g0 * (m12_15);
         u = PTP_3X3_VFMA(g12, -m0_15, u);
@@ -2708,8 +2735,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 42 * ds + l, v * 0.0204081628f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 42 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 42 */
         u = g3 * (m12_13);
         u = PTP_3X3_VFMA(g12, -m3_13, u);
         u = PTP_3X3_VFMA(g13, m3_12, u);
@@ -2771,8 +2798,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 43 * ds + l, v * 0.0122448979f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 43 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 43 */
         const ptp_3x3_vf m14_15 = x14 * y15 - y14 * x15;
         u = g0 * (m14_15);
         u = PTP_3X3_VFMA(g14, -m0_15, u);
@@ -2834,8 +2861,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(54.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 44 * ds + l, v * 0.0122448979f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 44 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 44 */
         u = g3 * (m12_15);
         u = PTP_3X3_VFMA(g12, -m3_15, u);
         u = PTP_3X3_VFMA(g15, m3_12, u);
@@ -2868,8 +2895,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 45 * ds + l, v * 0.0204081628f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 45 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 45 */
         u = g3 * (m13_15);
         u = PTP_3X3_VFMA(g13, -m3_15, u);
         u = PTP_3X3_VFMA(g15, m3_13, u);
@@ -2903,8 +2930,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 46 * ds + l, v * 0.0612244904f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 46 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 46 */
         u = ((g3 * m14_15 - g14 * m3_15) + g15 * m3_14);
         v = u;
         u = -((g6 * m11_15 - g11 * m6_15) + g15 * m6_11);
@@ -2915,16 +2942,16 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 47 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 47 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 47 */
         u = ((g4 * m12_13 - g12 * m4_13) + g13 * m4_12);
         v = (u + u);
         u = -((g8 * m9_12 - g9 * m8_12) + g12 * m8_9);
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 48 * ds + l, v * 1.28571427f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 48 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 48 */
         u = g4 * (m12_14);
         u = PTP_3X3_VFMA(g12, -m4_14, u);
         u = PTP_3X3_VFMA(g14, m4_12, u);
@@ -2942,8 +2969,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 49 * ds + l, v * 0.183673471f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 49 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 49 */
         u = g4 * (m12_15);
         u = PTP_3X3_VFMA(g12, -m4_15, u);
         u = PTP_3X3_VFMA(g15, m4_12, u);
@@ -2977,8 +3004,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 50 * ds + l, v * 0.0612244904f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 50 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 50 */
         u = g7 * (m12_13);
         u = PTP_3X3_VFMA(g12, -m7_13, u);
         u = PTP_3X3_VFMA(g13, m7_12, u);
@@ -3020,8 +3047,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 51 * ds + l, v * 0.0367346928f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 51 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 51 */
         u = g4 * (m14_15);
         u = PTP_3X3_VFMA(g14, -m4_15, u);
         u = PTP_3X3_VFMA(g15, m4_14, u);
@@ -3063,8 +3090,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(27.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 52 * ds + l, v * 0.0367346928f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 52 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 52 */
         u = g7 * (m12_15);
         u = PTP_3X3_VFMA(g12, -m7_15, u);
         u = PTP_3X3_VFMA(g15, m7_12, u);
@@ -3098,8 +3125,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(18.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 53 * ds + l, v * 0.0612244904f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 53 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 53 */
         u = g7 * (m13_15);
         u = PTP_3X3_VFMA(g13, -m7_15, u);
         u = PTP_3X3_VFMA(g15, m7_13, u);
@@ -3117,30 +3144,30 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 54 * ds + l, v * 0.183673471f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 54 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 54 */
         u = ((g7 * m14_15 - g14 * m7_15) + g15 * m7_14);
         v = (u + u);
         u = -((g10 * m11_15 - g11 * m10_15) + g15 * m10_11);
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 55 * ds + l, v * 1.28571427f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 55 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 55 */
         u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
         v = u;
         if (d)
             ptp_3x3_vstoref(d + 56 * ds + l, v * 9.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 56 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 56 */
         u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
         v = (u + u);
         u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 57 * ds + l, v * 1.28571427f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 57 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 57 */
         u = ((g8 * m12_15 - g12 * m8_15) + g15 * m8_12);
         v = u;
         u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
@@ -3151,8 +3178,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 58 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 58 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 58 */
         u = ((g11 * m12_13 - g12 * m11_13) + g13 * m11_12);
         v = u;
         u = ((g8 * m13_15 - g13 * m8_15) + g15 * m8_13);
@@ -3166,8 +3193,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 59 * ds + l, v * 0.257142872f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 59 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 59 */
         u = ((g8 * m14_15 - g14 * m8_15) + g15 * m8_14);
         v = u;
         u = ((g11 * m12_14 - g12 * m11_14) + g14 * m11_12);
@@ -3181,8 +3208,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_3x3_vstoref(d + 60 * ds + l, v * 0.257142872f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 60 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 60 */
         u = ((g11 * m12_15 - g12 * m11_15) + g15 * m11_12);
         v = u;
         u = ((g9 * m14_15 - g14 * m9_15) + g15 * m9_14);
@@ -3193,22 +3220,22 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 61 * ds + l, v * 0.428571433f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 61 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 61 */
         u = ((g11 * m13_15 - g13 * m11_15) + g15 * m11_13);
         v = (u + u);
         u = ((g10 * m14_15 - g14 * m10_15) + g15 * m10_14);
         v += (u + u) + u;
         if (d)
             ptp_3x3_vstoref(d + 62 * ds + l, v * 1.28571427f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 62 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 62 */
         u = ((g11 * m14_15 - g14 * m11_15) + g15 * m11_14);
         v = u;
         if (d)
             ptp_3x3_vstoref(d + 63 * ds + l, v * 9.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 63 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 63 */
         u = g3 * (-m10_12);
         u = PTP_3X3_VFMA(g10, m3_12, u);
         u = PTP_3X3_VFMA(g12, -m3_10, u);
@@ -3283,8 +3310,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(81.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 36 * ds + l, v * 0.00734693883f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 36 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 36 */
         u = g0 * (-m6_15);
         u = PTP_3X3_VFMA(g6, m0_15, u);
         u = PTP_3X3_VFMA(g15, -m0_6, u);
@@ -3359,8 +3386,8 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(81.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 28 * ds + l, v * 0.00734693883f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 28 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 28 */
         u = g0 * (m9_15);
         u = PTP_3X3_VFMA(g9, -m0_15, u);
         u = PTP_3X3_VFMA(g15, m0_9, u);
@@ -3435,13 +3462,11 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         v = PTP_3X3_VFMAS(81.0f, u, v);
         if (d)
             ptp_3x3_vstoref(d + 35 * ds + l, v * 0.00734693883f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 35 */
+        lt = PTP_3X3_KLT(lt, v);
+        gt = PTP_3X3_KGT(gt, v); /* plane 35 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_3x3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_3x3_vstore(cls + l, PTP_3X3_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -3462,6 +3487,19 @@ void ptp_3x3_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_3x3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_3x3_lanes_block(const float *PTP_3X3_RESTRICT soa, size_t n, const float eye[4],
+                                unsigned char *PTP_3X3_RESTRICT cls)
+{
+    ptp_3x3_lanes_body(soa, PTP_3X3_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -3479,6 +3517,9 @@ void ptp_3x3_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_3x3_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_3X3_AHEAD 1
 /* classify_batch's transposition: tiles of PTP_3X3_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_3X3_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_3X3_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -3683,7 +3724,7 @@ static void ptp_3x3_transpose(float *PTP_3X3_RESTRICT soa, const float (*PTP_3X3
                     soa[(k * 4 + c) * PTP_3X3_LANES + l] = cp[l * PTP_3X3_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_3x3_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -3692,15 +3733,17 @@ void ptp_3x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_3X3_LANES ? patch_count - p : PTP_3X3_LANES;
         ptp_3x3_transpose(soa, cp + p * PTP_3X3_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_3X3_POINTS);
-            size_t b, m = patch_count - p - n < PTP_3X3_LANES ? patch_count - p - n : PTP_3X3_LANES;
+            size_t a = patch_count - p - n <= (PTP_3X3_AHEAD - 1) * PTP_3X3_LANES ? patch_count
+                       : p + n + (PTP_3X3_AHEAD - 1) * PTP_3X3_LANES;
+            const char *next = (const char *)(cp + a * PTP_3X3_POINTS);
+            size_t b, m = patch_count - a < PTP_3X3_LANES ? patch_count - a : PTP_3X3_LANES;
             for (b = 0; b < m * PTP_3X3_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_3x3_lanes(soa, PTP_3X3_LANES, n, eye, cls + p);
+        ptp_3x3_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

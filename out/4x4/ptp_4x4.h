@@ -128,10 +128,19 @@ static inline ptp_4x4_vf ptp_4x4_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_4X4_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_4X4_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_4x4_vstore(unsigned char *cls, ptp_4x4_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_4x4_vb __attribute__((vector_size(PTP_4X4_VW)));
+    if (count >= PTP_4X4_VW) {
+        ptp_4x4_vb b = __builtin_convertvector(c, ptp_4x4_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_4X4_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -4570,6 +4579,24 @@ void ptp_4x4_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_4X4_VW == 16
+typedef __mmask16 ptp_4x4_vk;
+#define PTP_4X4_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_4X4_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_4X4_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_4X4_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_4X4_KCLASS(lt, gt) ((ptp_4x4_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_4x4_vm ptp_4x4_vk;
+#define PTP_4X4_KLT0(v) ((v) < 0.0f)
+#define PTP_4X4_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_4X4_KGT0(v) ((v) > 0.0f)
+#define PTP_4X4_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_4X4_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_4X4_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -4595,7 +4622,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
     for (l = 0; l < n; l += PTP_4X4_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_4x4_vm notlt, notgt;
+        ptp_4x4_vk lt, gt;
         ptp_4x4_vf u, v;
 #if PTP_4X4_VW > 1
         float tail[PTP_4X4_POINTS * 4 * PTP_4X4_VW];
@@ -4622,8 +4649,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = u;
         if (d)
             ptp_4x4_vstoref(d + 0 * ds + l, v * 16.0f, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_4X4_KLT0(v);
+        gt = PTP_4X4_KGT0(v); /* plane 0 */
         const ptp_4x4_vf x2 = ptp_4x4_vload(q + 8 * qs), y2 = ptp_4x4_vload(q + 9 * qs),
             w2 = ptp_4x4_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_4x4_vf m2_5 = x2 * y5 - y2 * x5;
@@ -4638,8 +4665,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 1 * ds + l, v * 1.60000002f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 1 */
         const ptp_4x4_vf x3 = ptp_4x4_vload(q + 12 * qs), y3 = ptp_4x4_vload(q + 13 * qs),
             w3 = ptp_4x4_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_4x4_vf m3_5 = x3 * y5 - y3 * x5;
@@ -4659,8 +4686,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 2 * ds + l, v * 1.06666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 2 */
         const ptp_4x4_vf x4 = ptp_4x4_vload(q + 16 * qs), y4 = ptp_4x4_vload(q + 17 * qs),
             w4 = ptp_4x4_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_4x4_vf m4_5 = x4 * y5 - y4 * x5;
@@ -4688,8 +4715,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 3 * ds + l, v * 0.13333334f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 3 */
         const ptp_4x4_vf x9 = ptp_4x4_vload(q + 36 * qs), y9 = ptp_4x4_vload(q + 37 * qs),
             w9 = ptp_4x4_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_4x4_vf m1_9 = x1 * y9 - y1 * x9;
@@ -4720,8 +4747,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 4 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 4 */
         const ptp_4x4_vf m4_9 = x4 * y9 - y4 * x9;
         u = -((g1 * m4_9 - g4 * m1_9) + g9 * m1_4);
         v = u;
@@ -4738,8 +4765,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 8 * ds + l, v * 1.06666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 8 */
         u = -((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
         v = (u + u) + u;
         const ptp_4x4_vf m3_8 = x3 * y8 - y3 * x8;
@@ -4747,14 +4774,14 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 9 * ds + l, v * 1.60000002f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 9 */
         u = -((g3 * m4_9 - g4 * m3_9) + g9 * m3_4);
         v = u;
         if (d)
             ptp_4x4_vstoref(d + 10 * ds + l, v * 16.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 10 */
         u = -((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
         v = u;
         u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
@@ -4771,8 +4798,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 7 * ds + l, v * 0.13333334f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 7 */
         const ptp_4x4_vf x10 = ptp_4x4_vload(q + 40 * qs), y10 = ptp_4x4_vload(q + 41 * qs),
             w10 = ptp_4x4_vload(q + 43 * qs), g10 = e2 * w10;
         const ptp_4x4_vf m1_10 = x1 * y10 - y1 * x10;
@@ -4784,8 +4811,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 11 * ds + l, v * 1.60000002f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 11 */
         const ptp_4x4_vf m2_10 = x2 * y10 - y2 * x10;
         u = g0 * (-m2_10);
         u = PTP_4X4_VFMA(g2, m0_10, u);
@@ -4810,8 +4837,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 12 * ds + l, v * 0.159999996f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 12 */
         const ptp_4x4_vf m3_10 = x3 * y10 - y3 * x10;
         u = g0 * (-m3_10);
         u = PTP_4X4_VFMA(g3, m0_10, u);
@@ -4853,8 +4880,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 13 * ds + l, v * 0.106666669f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 13 */
         u = -((g0 * m2_9 - g2 * m0_9) + g9 * m0_2);
         u -= ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v = u;
@@ -4870,8 +4897,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 5 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 5 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 5 */
         u = -((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
         v = u;
         u = -((g0 * m3_9 - g3 * m0_9) + g9 * m0_3);
@@ -4893,8 +4920,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 6 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 6 */
         const ptp_4x4_vf m4_10 = x4 * y10 - y4 * x10;
         u = g0 * (-m4_10);
         u = PTP_4X4_VFMA(g4, m0_10, u);
@@ -4954,8 +4981,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 14 * ds + l, v * 0.0133333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 14 */
         const ptp_4x4_vf x14 = ptp_4x4_vload(q + 56 * qs), y14 = ptp_4x4_vload(q + 57 * qs),
             w14 = ptp_4x4_vload(q + 59 * qs), g14 = e2 * w14;
         const ptp_4x4_vf m1_14 = x1 * y14 - y1 * x14;
@@ -5031,8 +5058,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 15 * ds + l, v * 0.00761904754f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 15 */
         const ptp_4x4_vf m4_14 = x4 * y14 - y4 * x14;
         u = g1 * (-m4_14);
         u = PTP_4X4_VFMA(g4, m1_14, u);
@@ -5073,8 +5100,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 19 * ds + l, v * 0.106666669f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 19 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 19 */
         u = g2 * (-m4_14);
         u = PTP_4X4_VFMA(g4, m2_14, u);
         u = PTP_4X4_VFMA(g14, -m2_4, u);
@@ -5094,16 +5121,16 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 20 * ds + l, v * 0.159999996f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 20 */
         u = -((g3 * m4_14 - g4 * m3_14) + g14 * m3_4);
         v = (u + u) + u;
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 21 * ds + l, v * 1.60000002f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 21 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 21 */
         const ptp_4x4_vf x15 = ptp_4x4_vload(q + 60 * qs), y15 = ptp_4x4_vload(q + 61 * qs),
             w15 = ptp_4x4_vload(q + 63 * qs), g15 = e2 * w15;
         const ptp_4x4_vf m1_15 = x1 * y15 - y1 * x15;
@@ -5120,8 +5147,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 22 * ds + l, v * 1.06666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 22 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 22 */
         const ptp_4x4_vf m2_15 = x2 * y15 - y2 * x15;
         u = g0 * (-m2_15);
         u = PTP_4X4_VFMA(g2, m0_15, u);
@@ -5163,8 +5190,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 23 * ds + l, v * 0.106666669f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 23 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 23 */
         const ptp_4x4_vf m3_15 = x3 * y15 - y3 * x15;
         u = g0 * (-m3_15);
         u = PTP_4X4_VFMA(g3, m0_15, u);
@@ -5207,8 +5234,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_4x4_vstoref(d + 24 * ds + l, v * 0.0711111128f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 24 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 24 */
         u = g0 * (-m4_14);
         u = PTP_4X4_VFMA(g4, m0_14, u);
         u = PTP_4X4_VFMA(g14, -m0_4, u);
@@ -5259,8 +5286,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 18 * ds + l, v * 0.0133333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 18 */
         u = g3 * (-m4_10);
         u = PTP_4X4_VFMA(g4, m3_10, u);
         u = PTP_4X4_VFMA(g10, -m3_4, u);
@@ -5327,8 +5354,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 17 * ds + l, v * 0.00761904754f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 17 */
         u = g0 * (-m2_14);
         u = PTP_4X4_VFMA(g2, m0_14 - m4_10, u);
         u = PTP_4X4_VFMA(g4, m2_10, u);
@@ -5388,8 +5415,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(64.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 16 * ds + l, v * 0.0190476198f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 16 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 16 */
         const ptp_4x4_vf m4_15 = x4 * y15 - y4 * x15;
         u = g0 * (-m4_15);
         u = PTP_4X4_VFMA(g4, m0_15, u);
@@ -5475,8 +5502,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 25 * ds + l, v * 0.0088888891f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 25 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 25 */
         const ptp_4x4_vf x19 = ptp_4x4_vload(q + 76 * qs), y19 = ptp_4x4_vload(q + 77 * qs),
             w19 = ptp_4x4_vload(q + 79 * qs), g19 = e2 * w19;
         const ptp_4x4_vf m2_19 = x2 * y19 - y2 * x19;
@@ -5551,8 +5578,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(48.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 27 * ds + l, v * 0.0126984129f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 27 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 27 */
         const ptp_4x4_vf m4_19 = x4 * y19 - y4 * x19;
         u = g1 * (-m4_19);
         const ptp_4x4_vf m1_19 = x1 * y19 - y1 * x19;
@@ -5594,8 +5621,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_4x4_vstoref(d + 30 * ds + l, v * 0.0711111128f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 30 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 30 */
         u = g2 * (-m4_19);
         u = PTP_4X4_VFMA(g4, m2_19, u);
         u = PTP_4X4_VFMA(g19, -m2_4, u);
@@ -5630,8 +5657,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 31 * ds + l, v * 0.106666669f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 31 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 31 */
         u = -((g3 * m4_19 - g4 * m3_19) + g19 * m3_4);
         v = u;
         u = -((g3 * m9_14 - g9 * m3_14) + g14 * m3_9);
@@ -5641,8 +5668,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 32 * ds + l, v * 1.06666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 32 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 32 */
         const ptp_4x4_vf x20 = ptp_4x4_vload(q + 80 * qs), y20 = ptp_4x4_vload(q + 81 * qs),
             w20 = ptp_4x4_vload(q + 83 * qs), g20 = e2 * w20;
         const ptp_4x4_vf m1_20 = x1 * y20 - y1 * x20;
@@ -5667,8 +5694,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 33 * ds + l, v * 0.13333334f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 33 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 33 */
         const ptp_4x4_vf m2_20 = x2 * y20 - y2 * x20;
         u = g0 * (-m2_20);
         u = PTP_4X4_VFMA(g2, m0_20, u);
@@ -5728,8 +5755,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 34 * ds + l, v * 0.0133333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 34 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 34 */
         const ptp_4x4_vf m3_20 = x3 * y20 - y3 * x20;
         u = g0 * (-m3_20);
         u = PTP_4X4_VFMA(g3, m0_20, u);
@@ -5814,8 +5841,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 35 * ds + l, v * 0.0088888891f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 35 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 35 */
         u = g0 * (-m4_19);
         u = PTP_4X4_VFMA(g4, m0_19, u);
         u = PTP_4X4_VFMA(g19, -m0_4, u);
@@ -5888,8 +5915,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 29 * ds + l, v * 0.0088888891f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 29 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 29 */
         u = g3 * (-m4_15);
         u = PTP_4X4_VFMA(g4, m3_15, u);
         u = PTP_4X4_VFMA(g15, -m3_4, u);
@@ -5979,8 +6006,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 28 * ds + l, v * 0.00507936487f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 28 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 28 */
         u = g0 * (-m1_19);
         u = PTP_4X4_VFMA(g1, m0_19, u);
         u = PTP_4X4_VFMA(g19, -m0_1, u);
@@ -6070,8 +6097,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 26 * ds + l, v * 0.00507936487f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 26 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 26 */
         const ptp_4x4_vf m4_20 = x4 * y20 - y4 * x20;
         u = g0 * (-m4_20);
         u = PTP_4X4_VFMA(g4, m0_20, u);
@@ -6197,8 +6224,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 36 * ds + l, v * 0.00111111114f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 36 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 36 */
         const ptp_4x4_vf x24 = ptp_4x4_vload(q + 96 * qs), y24 = ptp_4x4_vload(q + 97 * qs),
             w24 = ptp_4x4_vload(q + 99 * qs), g24 = e2 * w24;
         const ptp_4x4_vf m4_24 = x4 * y24 - y4 * x24;
@@ -6337,8 +6364,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 40 * ds + l, v * 0.00111111114f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 40 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 40 */
         u = g1 * (-m4_24);
         u = PTP_4X4_VFMA(g4, m1_24, u);
         u = PTP_4X4_VFMA(g24, -m1_4, u);
@@ -6413,8 +6440,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 41 * ds + l, v * 0.0088888891f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 41 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 41 */
         u = g2 * (-m4_24);
         u = PTP_4X4_VFMA(g4, m2_24, u);
         u = PTP_4X4_VFMA(g24, -m2_4, u);
@@ -6465,8 +6492,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 42 * ds + l, v * 0.0133333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 42 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 42 */
         u = -((g3 * m4_24 - g4 * m3_24) + g24 * m3_4);
         v = u;
         u = -((g4 * m9_18 - g9 * m4_18) + g18 * m4_9);
@@ -6483,8 +6510,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 43 * ds + l, v * 0.13333334f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 43 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 43 */
         const ptp_4x4_vf m5_21 = x5 * y21 - y5 * x21;
         u = ((g0 * m5_21 - g5 * m0_21) + g21 * m0_5);
         v = u;
@@ -6512,8 +6539,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 44 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 44 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 44 */
         const ptp_4x4_vf m5_22 = x5 * y22 - y5 * x22;
         u = g0 * (m5_22);
         u = PTP_4X4_VFMA(g5, -m0_22, u);
@@ -6586,8 +6613,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 45 * ds + l, v * 0.00761904754f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 45 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 45 */
         const ptp_4x4_vf m5_23 = x5 * y23 - y5 * x23;
         u = g0 * (m5_23);
         u = PTP_4X4_VFMA(g5, -m0_23, u);
@@ -6685,8 +6712,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 46 * ds + l, v * 0.00507936487f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 46 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 46 */
         const ptp_4x4_vf m5_24 = x5 * y24 - y5 * x24;
         u = g0 * (m5_24);
         u = PTP_4X4_VFMA(g5, -m0_24, u);
@@ -6851,8 +6878,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 47 * ds + l, v * 0.000634920609f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 47 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 47 */
         u = g0 * (-m1_24);
         u = PTP_4X4_VFMA(g1, m0_24, u);
         u = PTP_4X4_VFMA(g24, -m0_1, u);
@@ -7007,8 +7034,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 37 * ds + l, v * 0.000634920609f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 37 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 37 */
         u = g0 * (-m2_24);
         u = PTP_4X4_VFMA(g2, m0_24 - m4_20, u);
         u = PTP_4X4_VFMA(g4, m2_20, u);
@@ -7134,8 +7161,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(384.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 38 * ds + l, v * 0.00158730161f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 38 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 38 */
         u = g3 * (-m4_20);
         u = PTP_4X4_VFMA(g4, m3_20, u);
         u = PTP_4X4_VFMA(g20, -m3_4, u);
@@ -7290,8 +7317,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 39 * ds + l, v * 0.000634920609f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 39 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 39 */
         u = g4 * (-m9_20);
         u = PTP_4X4_VFMA(g9, m4_20, u);
         u = PTP_4X4_VFMA(g20, -m4_9, u);
@@ -7465,8 +7492,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 51 * ds + l, v * 0.000634920609f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 51 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 51 */
         u = g4 * (-m9_21);
         u = PTP_4X4_VFMA(g9, m4_21, u);
         u = PTP_4X4_VFMA(g21, -m4_9, u);
@@ -7557,8 +7584,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 52 * ds + l, v * 0.00507936487f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 52 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 52 */
         u = g4 * (-m9_22);
         u = PTP_4X4_VFMA(g9, m4_22, u);
         u = PTP_4X4_VFMA(g22, -m4_9, u);
@@ -7625,8 +7652,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 53 * ds + l, v * 0.00761904754f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 53 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 53 */
         u = -((g4 * m9_23 - g9 * m4_23) + g23 * m4_9);
         v = u;
         u = -((g3 * m9_24 - g9 * m3_24) + g24 * m3_9);
@@ -7648,8 +7675,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 54 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 54 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 54 */
         const ptp_4x4_vf m10_21 = x10 * y21 - y10 * x21;
         u = ((g0 * m10_21 - g10 * m0_21) + g21 * m0_10);
         const ptp_4x4_vf m10_20 = x10 * y20 - y10 * x20;
@@ -7669,8 +7696,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 55 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 55 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 55 */
         const ptp_4x4_vf m10_22 = x10 * y22 - y10 * x22;
         u = g0 * (m10_22);
         u = PTP_4X4_VFMA(g2, m10_20, u);
@@ -7734,8 +7761,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(64.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 56 * ds + l, v * 0.0190476198f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 56 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 56 */
         const ptp_4x4_vf m10_23 = x10 * y23 - y10 * x23;
         u = g0 * (m10_23);
         u = PTP_4X4_VFMA(g3, m10_20, u);
@@ -7801,8 +7828,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(48.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 57 * ds + l, v * 0.0126984129f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 57 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 57 */
         const ptp_4x4_vf m10_24 = x10 * y24 - y10 * x24;
         u = g0 * (m10_24);
         u = PTP_4X4_VFMA(g4, m10_20, u);
@@ -7936,8 +7963,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(384.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 58 * ds + l, v * 0.00158730161f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 58 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 58 */
         u = g3 * (m7_20);
         u = PTP_4X4_VFMA(g4, m11_15, u);
         u = PTP_4X4_VFMA(g7, -m3_20, u);
@@ -8107,8 +8134,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(1296.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 48 * ds + l, v * 0.000362811785f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 48 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 48 */
         const ptp_4x4_vf m14_22 = x14 * y22 - y14 * x22;
         u = g0 * (-m14_22);
         u = PTP_4X4_VFMA(g2, m10_24 - m14_20, u);
@@ -8223,8 +8250,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(192.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 60 * ds + l, v * 0.00226757373f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 60 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 60 */
         u = g0 * (-m13_19);
         u = PTP_4X4_VFMA(g1, -m7_24, u);
         u = PTP_4X4_VFMA(g7, m1_24, u);
@@ -8394,8 +8421,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(1296.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 50 * ds + l, v * 0.000362811785f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 50 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 50 */
         const ptp_4x4_vf m14_24 = x14 * y24 - y14 * x24;
         u = g0 * (-m14_24);
         u = PTP_4X4_VFMA(g4, -m14_20, u);
@@ -8527,8 +8554,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(384.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 62 * ds + l, v * 0.00158730161f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 62 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 62 */
         u = g1 * (-m14_24);
         u = PTP_4X4_VFMA(g4, -m14_21, u);
         u = PTP_4X4_VFMA(g14, m1_24 + m4_21, u);
@@ -8589,8 +8616,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(48.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 63 * ds + l, v * 0.0126984129f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 63 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 63 */
         u = g2 * (-m14_24);
         u = PTP_4X4_VFMA(g4, -m14_22, u);
         u = PTP_4X4_VFMA(g14, m2_24 + m4_22, u);
@@ -8650,8 +8677,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(64.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 64 * ds + l, v * 0.0190476198f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 64 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 64 */
         u = -((g3 * m14_24 - g14 * m3_24) + g24 * m3_14);
         u -= ((g4 * m14_23 - g14 * m4_23) + g23 * m4_14);
         v = u;
@@ -8667,8 +8694,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 65 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 65 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 65 */
         const ptp_4x4_vf m15_20 = x15 * y20 - y15 * x20;
         u = ((g1 * m15_20 - g15 * m1_20) + g20 * m1_15);
         v = u;
@@ -8693,8 +8720,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 66 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 66 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 66 */
         u = g2 * (m15_20);
         u = PTP_4X4_VFMA(g15, -m2_20, u);
         u = PTP_4X4_VFMA(g20, m2_15, u);
@@ -8764,8 +8791,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 67 * ds + l, v * 0.00761904754f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 67 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 67 */
         u = g3 * (m15_20);
         u = PTP_4X4_VFMA(g15, -m3_20, u);
         u = PTP_4X4_VFMA(g20, m3_15, u);
@@ -8859,8 +8886,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 68 * ds + l, v * 0.00507936487f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 68 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 68 */
         u = g4 * (m15_20);
         u = PTP_4X4_VFMA(g15, -m4_20, u);
         u = PTP_4X4_VFMA(g20, m4_15, u);
@@ -9020,8 +9047,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 69 * ds + l, v * 0.000634920609f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 69 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 69 */
         const ptp_4x4_vf m17_23 = x17 * y23 - y17 * x23;
         u = g0 * (m17_23);
         u = PTP_4X4_VFMA(g5, m11_24, u);
@@ -9195,8 +9222,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(1296.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 70 * ds + l, v * 0.000362811785f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 70 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 70 */
         u = g0 * (m11_24);
         u = PTP_4X4_VFMA(g4, m11_20, u);
         u = PTP_4X4_VFMA(g11, -m4_20 - m0_24, u);
@@ -9356,8 +9383,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 59 * ds + l, v * 0.000907029491f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 59 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 59 */
         u = g0 * (-m7_24);
         u = PTP_4X4_VFMA(g4, m7_20, u);
         u = PTP_4X4_VFMA(g7, m0_24 - m4_20, u);
@@ -9517,8 +9544,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 49 * ds + l, v * 0.000907029491f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 49 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 49 */
         const ptp_4x4_vf m19_24 = x19 * y24 - y19 * x24;
         u = g0 * (-m19_24);
         u = PTP_4X4_VFMA(g19, m0_24, u);
@@ -9679,8 +9706,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 73 * ds + l, v * 0.000634920609f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 73 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 73 */
         u = g1 * (-m19_24);
         u = PTP_4X4_VFMA(g19, m1_24, u);
         u = PTP_4X4_VFMA(g24, -m1_19, u);
@@ -9770,8 +9797,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 74 * ds + l, v * 0.00507936487f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 74 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 74 */
         u = g2 * (-m19_24);
         u = PTP_4X4_VFMA(g19, m2_24, u);
         u = PTP_4X4_VFMA(g24, -m2_19, u);
@@ -9838,8 +9865,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 75 * ds + l, v * 0.00761904754f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 75 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 75 */
         u = -((g3 * m19_24 - g19 * m3_24) + g24 * m3_19);
         v = u;
         u = -((g4 * m19_23 - g19 * m4_23) + g23 * m4_19);
@@ -9861,8 +9888,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 76 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 76 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 76 */
         const ptp_4x4_vf m20_21 = x20 * y21 - y20 * x21;
         u = ((g0 * m20_21 - g20 * m0_21) + g21 * m0_20);
         v = u;
@@ -9880,8 +9907,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 77 * ds + l, v * 0.13333334f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 77 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 77 */
         const ptp_4x4_vf m20_22 = x20 * y22 - y20 * x22;
         u = g0 * (m20_22);
         u = PTP_4X4_VFMA(g20, -m0_22, u);
@@ -9933,8 +9960,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 78 * ds + l, v * 0.0133333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 78 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 78 */
         const ptp_4x4_vf m20_23 = x20 * y23 - y20 * x23;
         u = g0 * (m20_23);
         u = PTP_4X4_VFMA(g20, -m0_23, u);
@@ -10009,8 +10036,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 79 * ds + l, v * 0.0088888891f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 79 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 79 */
         const ptp_4x4_vf m20_24 = x20 * y24 - y20 * x24;
         u = g0 * (m20_24);
         u = PTP_4X4_VFMA(g20, -m0_24, u);
@@ -10125,8 +10152,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 80 * ds + l, v * 0.00111111114f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 80 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 80 */
         u = g4 * (m20_21);
         u = PTP_4X4_VFMA(g20, -m4_21, u);
         u = PTP_4X4_VFMA(g21, m4_20, u);
@@ -10283,8 +10310,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 81 * ds + l, v * 0.000634920609f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 81 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 81 */
         const ptp_4x4_vf m22_24 = x22 * y24 - y22 * x24;
         u = g0 * (m22_24);
         u = PTP_4X4_VFMA(g4, m20_22, u);
@@ -10411,8 +10438,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(384.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 82 * ds + l, v * 0.00158730161f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 82 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 82 */
         const ptp_4x4_vf m23_24 = x23 * y24 - y23 * x24;
         u = g0 * (m23_24);
         u = PTP_4X4_VFMA(g23, -m0_24, u);
@@ -10568,8 +10595,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(864.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 83 * ds + l, v * 0.000634920609f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 83 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 83 */
         u = g4 * (m20_24);
         u = PTP_4X4_VFMA(g20, -m4_24, u);
         u = PTP_4X4_VFMA(g24, m4_20, u);
@@ -10682,8 +10709,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 84 * ds + l, v * 0.00111111114f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 84 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 84 */
         u = g4 * (m21_24);
         u = PTP_4X4_VFMA(g21, -m4_24, u);
         u = PTP_4X4_VFMA(g24, m4_21, u);
@@ -10756,8 +10783,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 85 * ds + l, v * 0.0088888891f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 85 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 85 */
         u = g4 * (m22_24);
         u = PTP_4X4_VFMA(g22, -m4_24, u);
         u = PTP_4X4_VFMA(g24, m4_22, u);
@@ -10808,8 +10835,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 86 * ds + l, v * 0.0133333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 86 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 86 */
         u = ((g4 * m23_24 - g23 * m4_24) + g24 * m4_23);
         v = u;
         u = -((g8 * m19_24 - g19 * m8_24) + g24 * m8_19);
@@ -10826,8 +10853,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 87 * ds + l, v * 0.13333334f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 87 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 87 */
         u = ((g5 * m20_21 - g20 * m5_21) + g21 * m5_20);
         v = u;
         u = ((g10 * m15_21 - g15 * m10_21) + g21 * m10_15);
@@ -10837,8 +10864,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 88 * ds + l, v * 1.06666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 88 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 88 */
         u = g5 * (m20_22);
         u = PTP_4X4_VFMA(g20, -m5_22, u);
         u = PTP_4X4_VFMA(g22, m5_20, u);
@@ -10872,8 +10899,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 89 * ds + l, v * 0.106666669f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 89 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 89 */
         u = g5 * (m20_23);
         u = PTP_4X4_VFMA(g20, -m5_23, u);
         u = PTP_4X4_VFMA(g23, m5_20, u);
@@ -10907,8 +10934,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_4x4_vstoref(d + 90 * ds + l, v * 0.0711111128f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 90 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 90 */
         u = g5 * (m20_24);
         u = PTP_4X4_VFMA(g20, -m5_24, u);
         u = PTP_4X4_VFMA(g24, m5_20, u);
@@ -10981,8 +11008,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 91 * ds + l, v * 0.0088888891f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 91 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 91 */
         u = g9 * (m20_21);
         u = PTP_4X4_VFMA(g20, -m9_21, u);
         u = PTP_4X4_VFMA(g21, m9_20, u);
@@ -11072,8 +11099,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 92 * ds + l, v * 0.00507936487f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 92 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 92 */
         u = g5 * (m22_24);
         u = PTP_4X4_VFMA(g9, m20_22, u);
         u = PTP_4X4_VFMA(g20, -m9_22, u);
@@ -11134,8 +11161,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(48.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 93 * ds + l, v * 0.0126984129f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 93 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 93 */
         u = g5 * (m23_24);
         u = PTP_4X4_VFMA(g23, -m5_24, u);
         u = PTP_4X4_VFMA(g24, m5_23, u);
@@ -11225,8 +11252,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 94 * ds + l, v * 0.00507936487f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 94 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 94 */
         u = g9 * (m20_24);
         u = PTP_4X4_VFMA(g20, -m9_24, u);
         u = PTP_4X4_VFMA(g24, m9_20, u);
@@ -11299,8 +11326,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 95 * ds + l, v * 0.0088888891f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 95 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 95 */
         u = g9 * (m21_24);
         u = PTP_4X4_VFMA(g21, -m9_24, u);
         u = PTP_4X4_VFMA(g24, m9_21, u);
@@ -11334,8 +11361,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += (u + u) + u;
         if (d)
             ptp_4x4_vstoref(d + 96 * ds + l, v * 0.0711111128f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 96 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 96 */
         u = g9 * (m22_24);
         u = PTP_4X4_VFMA(g22, -m9_24, u);
         u = PTP_4X4_VFMA(g24, m9_22, u);
@@ -11369,8 +11396,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 97 * ds + l, v * 0.106666669f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 97 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 97 */
         u = ((g9 * m23_24 - g23 * m9_24) + g24 * m9_23);
         v = u;
         u = -((g13 * m19_24 - g19 * m13_24) + g24 * m13_19);
@@ -11380,16 +11407,16 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 98 * ds + l, v * 1.06666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 98 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 98 */
         u = ((g10 * m20_21 - g20 * m10_21) + g21 * m10_20);
         v = (u + u) + u;
         u = -((g15 * m16_20 - g16 * m15_20) + g20 * m15_16);
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 99 * ds + l, v * 1.60000002f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 99 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 99 */
         u = g10 * (m20_22);
         u = PTP_4X4_VFMA(g20, -m10_22, u);
         u = PTP_4X4_VFMA(g22, m10_20, u);
@@ -11408,8 +11435,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 100 * ds + l, v * 0.159999996f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 100 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 100 */
         u = g10 * (m20_23);
         u = PTP_4X4_VFMA(g20, -m10_23, u);
         u = PTP_4X4_VFMA(g23, m10_20, u);
@@ -11443,8 +11470,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 101 * ds + l, v * 0.106666669f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 101 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 101 */
         u = g10 * (m20_24);
         u = PTP_4X4_VFMA(g20, -m10_24, u);
         u = PTP_4X4_VFMA(g24, m10_20, u);
@@ -11495,8 +11522,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 102 * ds + l, v * 0.0133333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 102 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 102 */
         u = g14 * (m20_21);
         u = PTP_4X4_VFMA(g20, -m14_21, u);
         u = PTP_4X4_VFMA(g21, m14_20, u);
@@ -11563,8 +11590,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 103 * ds + l, v * 0.00761904754f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 103 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 103 */
         u = g10 * (m22_24);
         u = PTP_4X4_VFMA(g14, m20_22, u);
         u = PTP_4X4_VFMA(g20, -m14_22, u);
@@ -11624,8 +11651,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(64.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 104 * ds + l, v * 0.0190476198f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 104 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 104 */
         u = g10 * (m23_24);
         u = PTP_4X4_VFMA(g23, -m10_24, u);
         u = PTP_4X4_VFMA(g24, m10_23, u);
@@ -11692,8 +11719,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(144.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 105 * ds + l, v * 0.00761904754f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 105 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 105 */
         u = g14 * (m20_24);
         u = PTP_4X4_VFMA(g20, -m14_24, u);
         u = PTP_4X4_VFMA(g24, m14_20, u);
@@ -11744,8 +11771,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(96.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 106 * ds + l, v * 0.0133333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 106 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 106 */
         u = g14 * (m21_24);
         u = PTP_4X4_VFMA(g21, -m14_24, u);
         u = PTP_4X4_VFMA(g24, m14_21, u);
@@ -11779,8 +11806,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 107 * ds + l, v * 0.106666669f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 107 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 107 */
         u = g14 * (m22_24);
         u = PTP_4X4_VFMA(g22, -m14_24, u);
         u = PTP_4X4_VFMA(g24, m14_22, u);
@@ -11799,30 +11826,30 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 108 * ds + l, v * 0.159999996f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 108 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 108 */
         u = ((g14 * m23_24 - g23 * m14_24) + g24 * m14_23);
         v = (u + u) + u;
         u = -((g18 * m19_24 - g19 * m18_24) + g24 * m18_19);
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 109 * ds + l, v * 1.60000002f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 109 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 109 */
         u = ((g15 * m20_21 - g20 * m15_21) + g21 * m15_20);
         v = u;
         if (d)
             ptp_4x4_vstoref(d + 110 * ds + l, v * 16.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 110 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 110 */
         u = ((g15 * m20_22 - g20 * m15_22) + g22 * m15_20);
         v = (u + u) + u;
         u = ((g16 * m20_21 - g20 * m16_21) + g21 * m16_20);
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 111 * ds + l, v * 1.60000002f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 111 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 111 */
         u = ((g15 * m20_23 - g20 * m15_23) + g23 * m15_20);
         v = u;
         u = ((g15 * m21_22 - g21 * m15_22) + g22 * m15_21);
@@ -11832,8 +11859,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 112 * ds + l, v * 1.06666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 112 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 112 */
         u = ((g15 * m20_24 - g20 * m15_24) + g24 * m15_20);
         v = u;
         u = ((g18 * m20_21 - g20 * m18_21) + g21 * m18_20);
@@ -11850,8 +11877,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 113 * ds + l, v * 0.13333334f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 113 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 113 */
         u = ((g19 * m20_21 - g20 * m19_21) + g21 * m19_20);
         v = u;
         u = ((g15 * m21_24 - g21 * m15_24) + g24 * m15_21);
@@ -11873,8 +11900,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 114 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 114 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 114 */
         u = ((g15 * m22_24 - g22 * m15_24) + g24 * m15_22);
         u += ((g19 * m20_22 - g20 * m19_22) + g22 * m19_20);
         v = u;
@@ -11890,8 +11917,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
         if (d)
             ptp_4x4_vstoref(d + 115 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 115 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 115 */
         u = ((g15 * m23_24 - g23 * m15_24) + g24 * m15_23);
         v = u;
         u = ((g19 * m20_23 - g20 * m19_23) + g23 * m19_20);
@@ -11913,8 +11940,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(36.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 116 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 116 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 116 */
         u = ((g19 * m20_24 - g20 * m19_24) + g24 * m19_20);
         v = u;
         u = ((g16 * m23_24 - g23 * m16_24) + g24 * m16_23);
@@ -11931,8 +11958,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(24.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 117 * ds + l, v * 0.13333334f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 117 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 117 */
         u = ((g19 * m21_24 - g21 * m19_24) + g24 * m19_21);
         v = u;
         u = ((g17 * m23_24 - g23 * m17_24) + g24 * m17_23);
@@ -11942,22 +11969,22 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 118 * ds + l, v * 1.06666672f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 118 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 118 */
         u = ((g19 * m22_24 - g22 * m19_24) + g24 * m19_22);
         v = (u + u) + u;
         u = ((g18 * m23_24 - g23 * m18_24) + g24 * m18_23);
         v += ((u + u) + (u + u));
         if (d)
             ptp_4x4_vstoref(d + 119 * ds + l, v * 1.60000002f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 119 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 119 */
         u = ((g19 * m23_24 - g23 * m19_24) + g24 * m19_23);
         v = u;
         if (d)
             ptp_4x4_vstoref(d + 120 * ds + l, v * 16.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 120 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 120 */
         u = g4 * (-m17_21);
         u = PTP_4X4_VFMA(g9, -m13_20, u);
         u = PTP_4X4_VFMA(g13, m9_20, u);
@@ -12127,8 +12154,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(1296.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 72 * ds + l, v * 0.000362811785f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 72 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 72 */
         u = g0 * (-m13_24);
         u = PTP_4X4_VFMA(g4, -m13_20, u);
         u = PTP_4X4_VFMA(g13, m4_20 + m0_24, u);
@@ -12288,8 +12315,8 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 61 * ds + l, v * 0.000907029491f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 61 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 61 */
         u = g0 * (m17_24);
         u = PTP_4X4_VFMA(g4, -m17_20, u);
         u = PTP_4X4_VFMA(g17, m4_20 - m0_24, u);
@@ -12449,13 +12476,11 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         v = PTP_4X4_VFMAS(576.0f, u, v);
         if (d)
             ptp_4x4_vstoref(d + 71 * ds + l, v * 0.000907029491f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 71 */
+        lt = PTP_4X4_KLT(lt, v);
+        gt = PTP_4X4_KGT(gt, v); /* plane 71 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_4x4_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_4x4_vstore(cls + l, PTP_4X4_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -12476,6 +12501,19 @@ void ptp_4x4_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_4x4_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_4x4_lanes_block(const float *PTP_4X4_RESTRICT soa, size_t n, const float eye[4],
+                                unsigned char *PTP_4X4_RESTRICT cls)
+{
+    ptp_4x4_lanes_body(soa, PTP_4X4_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -12493,6 +12531,9 @@ void ptp_4x4_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_4x4_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_4X4_AHEAD 1
 /* classify_batch's transposition: tiles of PTP_4X4_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_4X4_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_4X4_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -12697,7 +12738,7 @@ static void ptp_4x4_transpose(float *PTP_4X4_RESTRICT soa, const float (*PTP_4X4
                     soa[(k * 4 + c) * PTP_4X4_LANES + l] = cp[l * PTP_4X4_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_4x4_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -12706,15 +12747,17 @@ void ptp_4x4_classify_batch(const float (*cp)[4], size_t patch_count, const floa
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_4X4_LANES ? patch_count - p : PTP_4X4_LANES;
         ptp_4x4_transpose(soa, cp + p * PTP_4X4_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_4X4_POINTS);
-            size_t b, m = patch_count - p - n < PTP_4X4_LANES ? patch_count - p - n : PTP_4X4_LANES;
+            size_t a = patch_count - p - n <= (PTP_4X4_AHEAD - 1) * PTP_4X4_LANES ? patch_count
+                       : p + n + (PTP_4X4_AHEAD - 1) * PTP_4X4_LANES;
+            const char *next = (const char *)(cp + a * PTP_4X4_POINTS);
+            size_t b, m = patch_count - a < PTP_4X4_LANES ? patch_count - a : PTP_4X4_LANES;
             for (b = 0; b < m * PTP_4X4_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_4x4_lanes(soa, PTP_4X4_LANES, n, eye, cls + p);
+        ptp_4x4_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

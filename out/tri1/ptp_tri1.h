@@ -127,10 +127,19 @@ static inline ptp_tri1_vf ptp_tri1_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_TRI1_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_TRI1_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_tri1_vstore(unsigned char *cls, ptp_tri1_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_tri1_vb __attribute__((vector_size(PTP_TRI1_VW)));
+    if (count >= PTP_TRI1_VW) {
+        ptp_tri1_vb b = __builtin_convertvector(c, ptp_tri1_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_TRI1_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -275,6 +284,24 @@ void ptp_tri1_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_TRI1_VW == 16
+typedef __mmask16 ptp_tri1_vk;
+#define PTP_TRI1_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_TRI1_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_TRI1_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_TRI1_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_TRI1_KCLASS(lt, gt) ((ptp_tri1_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_tri1_vm ptp_tri1_vk;
+#define PTP_TRI1_KLT0(v) ((v) < 0.0f)
+#define PTP_TRI1_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_TRI1_KGT0(v) ((v) > 0.0f)
+#define PTP_TRI1_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_TRI1_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_TRI1_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -300,7 +327,7 @@ static inline void ptp_tri1_lanes_body(const float *PTP_TRI1_RESTRICT soa, size_
     for (l = 0; l < n; l += PTP_TRI1_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_tri1_vm notlt, notgt;
+        ptp_tri1_vk lt, gt;
         ptp_tri1_vf u, v;
 #if PTP_TRI1_VW > 1
         float tail[PTP_TRI1_POINTS * 4 * PTP_TRI1_VW];
@@ -327,13 +354,11 @@ static inline void ptp_tri1_lanes_body(const float *PTP_TRI1_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri1_vstoref(d + 0 * ds + l, v, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_TRI1_KLT0(v);
+        gt = PTP_TRI1_KGT0(v); /* plane 0 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_tri1_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_tri1_vstore(cls + l, PTP_TRI1_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -354,6 +379,19 @@ void ptp_tri1_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_tri1_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_tri1_lanes_block(const float *PTP_TRI1_RESTRICT soa, size_t n, const float eye[4],
+                                 unsigned char *PTP_TRI1_RESTRICT cls)
+{
+    ptp_tri1_lanes_body(soa, PTP_TRI1_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -371,6 +409,9 @@ void ptp_tri1_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_tri1_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_TRI1_AHEAD 8
 /* classify_batch's transposition: tiles of PTP_TRI1_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_TRI1_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_TRI1_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -489,7 +530,7 @@ static void ptp_tri1_transpose(float *PTP_TRI1_RESTRICT soa, const float (*PTP_T
                     soa[(k * 4 + c) * PTP_TRI1_LANES + l] = cp[l * PTP_TRI1_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_tri1_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -498,15 +539,17 @@ void ptp_tri1_classify_batch(const float (*cp)[4], size_t patch_count, const flo
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_TRI1_LANES ? patch_count - p : PTP_TRI1_LANES;
         ptp_tri1_transpose(soa, cp + p * PTP_TRI1_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_TRI1_POINTS);
-            size_t b, m = patch_count - p - n < PTP_TRI1_LANES ? patch_count - p - n : PTP_TRI1_LANES;
+            size_t a = patch_count - p - n <= (PTP_TRI1_AHEAD - 1) * PTP_TRI1_LANES ? patch_count
+                       : p + n + (PTP_TRI1_AHEAD - 1) * PTP_TRI1_LANES;
+            const char *next = (const char *)(cp + a * PTP_TRI1_POINTS);
+            size_t b, m = patch_count - a < PTP_TRI1_LANES ? patch_count - a : PTP_TRI1_LANES;
             for (b = 0; b < m * PTP_TRI1_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_tri1_lanes(soa, PTP_TRI1_LANES, n, eye, cls + p);
+        ptp_tri1_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

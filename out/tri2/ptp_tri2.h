@@ -127,10 +127,19 @@ static inline ptp_tri2_vf ptp_tri2_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_TRI2_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_TRI2_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_tri2_vstore(unsigned char *cls, ptp_tri2_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_tri2_vb __attribute__((vector_size(PTP_TRI2_VW)));
+    if (count >= PTP_TRI2_VW) {
+        ptp_tri2_vb b = __builtin_convertvector(c, ptp_tri2_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_TRI2_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -307,6 +316,24 @@ void ptp_tri2_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_TRI2_VW == 16
+typedef __mmask16 ptp_tri2_vk;
+#define PTP_TRI2_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_TRI2_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_TRI2_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_TRI2_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_TRI2_KCLASS(lt, gt) ((ptp_tri2_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_tri2_vm ptp_tri2_vk;
+#define PTP_TRI2_KLT0(v) ((v) < 0.0f)
+#define PTP_TRI2_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_TRI2_KGT0(v) ((v) > 0.0f)
+#define PTP_TRI2_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_TRI2_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_TRI2_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -332,7 +359,7 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
     for (l = 0; l < n; l += PTP_TRI2_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_tri2_vm notlt, notgt;
+        ptp_tri2_vk lt, gt;
         ptp_tri2_vf u, v;
 #if PTP_TRI2_VW > 1
         float tail[PTP_TRI2_POINTS * 4 * PTP_TRI2_VW];
@@ -359,8 +386,8 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri2_vstoref(d + 0 * ds + l, v * 4.0f, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_TRI2_KLT0(v);
+        gt = PTP_TRI2_KGT0(v); /* plane 0 */
         const ptp_tri2_vf x4 = ptp_tri2_vload(q + 16 * qs), y4 = ptp_tri2_vload(q + 17 * qs),
             w4 = ptp_tri2_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_tri2_vf m1_4 = x1 * y4 - y1 * x4;
@@ -374,8 +401,8 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri2_vstoref(d + 1 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        lt = PTP_TRI2_KLT(lt, v);
+        gt = PTP_TRI2_KGT(gt, v); /* plane 1 */
         const ptp_tri2_vf m3_4 = x3 * y4 - y3 * x4;
         u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         const ptp_tri2_vf m1_3 = x1 * y3 - y1 * x3;
@@ -383,14 +410,14 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri2_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        lt = PTP_TRI2_KLT(lt, v);
+        gt = PTP_TRI2_KGT(gt, v); /* plane 3 */
         u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
         v = u;
         if (d)
             ptp_tri2_vstoref(d + 6 * ds + l, v * 4.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        lt = PTP_TRI2_KLT(lt, v);
+        gt = PTP_TRI2_KGT(gt, v); /* plane 6 */
         const ptp_tri2_vf x5 = ptp_tri2_vload(q + 20 * qs), y5 = ptp_tri2_vload(q + 21 * qs),
             w5 = ptp_tri2_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_tri2_vf m1_5 = x1 * y5 - y1 * x5;
@@ -401,8 +428,8 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri2_vstoref(d + 2 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        lt = PTP_TRI2_KLT(lt, v);
+        gt = PTP_TRI2_KGT(gt, v); /* plane 2 */
         const ptp_tri2_vf m3_5 = x3 * y5 - y3 * x5;
         u = g0 * (m3_5);
         u = PTP_TRI2_VFMA(g3, -m0_5, u);
@@ -414,15 +441,15 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         v += (u + u);
         if (d)
             ptp_tri2_vstoref(d + 4 * ds + l, v * 0.666666687f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        lt = PTP_TRI2_KLT(lt, v);
+        gt = PTP_TRI2_KGT(gt, v); /* plane 4 */
         u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
         u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
         v = u;
         if (d)
             ptp_tri2_vstoref(d + 7 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        lt = PTP_TRI2_KLT(lt, v);
+        gt = PTP_TRI2_KGT(gt, v); /* plane 7 */
         const ptp_tri2_vf m4_5 = x4 * y5 - y4 * x5;
         u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         const ptp_tri2_vf m2_5 = x2 * y5 - y2 * x5;
@@ -430,26 +457,24 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri2_vstoref(d + 5 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 5 */
+        lt = PTP_TRI2_KLT(lt, v);
+        gt = PTP_TRI2_KGT(gt, v); /* plane 5 */
         u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
         u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
         v = u;
         if (d)
             ptp_tri2_vstoref(d + 8 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        lt = PTP_TRI2_KLT(lt, v);
+        gt = PTP_TRI2_KGT(gt, v); /* plane 8 */
         u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
         v = u;
         if (d)
             ptp_tri2_vstoref(d + 9 * ds + l, v * 4.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        lt = PTP_TRI2_KLT(lt, v);
+        gt = PTP_TRI2_KGT(gt, v); /* plane 9 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_tri2_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_tri2_vstore(cls + l, PTP_TRI2_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -470,6 +495,19 @@ void ptp_tri2_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_tri2_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_tri2_lanes_block(const float *PTP_TRI2_RESTRICT soa, size_t n, const float eye[4],
+                                 unsigned char *PTP_TRI2_RESTRICT cls)
+{
+    ptp_tri2_lanes_body(soa, PTP_TRI2_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -487,6 +525,9 @@ void ptp_tri2_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_tri2_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_TRI2_AHEAD 8
 /* classify_batch's transposition: tiles of PTP_TRI2_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_TRI2_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_TRI2_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -691,7 +732,7 @@ static void ptp_tri2_transpose(float *PTP_TRI2_RESTRICT soa, const float (*PTP_T
                     soa[(k * 4 + c) * PTP_TRI2_LANES + l] = cp[l * PTP_TRI2_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_tri2_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -700,15 +741,17 @@ void ptp_tri2_classify_batch(const float (*cp)[4], size_t patch_count, const flo
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_TRI2_LANES ? patch_count - p : PTP_TRI2_LANES;
         ptp_tri2_transpose(soa, cp + p * PTP_TRI2_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_TRI2_POINTS);
-            size_t b, m = patch_count - p - n < PTP_TRI2_LANES ? patch_count - p - n : PTP_TRI2_LANES;
+            size_t a = patch_count - p - n <= (PTP_TRI2_AHEAD - 1) * PTP_TRI2_LANES ? patch_count
+                       : p + n + (PTP_TRI2_AHEAD - 1) * PTP_TRI2_LANES;
+            const char *next = (const char *)(cp + a * PTP_TRI2_POINTS);
+            size_t b, m = patch_count - a < PTP_TRI2_LANES ? patch_count - a : PTP_TRI2_LANES;
             for (b = 0; b < m * PTP_TRI2_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_tri2_lanes(soa, PTP_TRI2_LANES, n, eye, cls + p);
+        ptp_tri2_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

@@ -127,10 +127,19 @@ static inline ptp_tri3_vf ptp_tri3_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_TRI3_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_TRI3_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_tri3_vstore(unsigned char *cls, ptp_tri3_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_tri3_vb __attribute__((vector_size(PTP_TRI3_VW)));
+    if (count >= PTP_TRI3_VW) {
+        ptp_tri3_vb b = __builtin_convertvector(c, ptp_tri3_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_TRI3_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -483,6 +492,24 @@ void ptp_tri3_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_TRI3_VW == 16
+typedef __mmask16 ptp_tri3_vk;
+#define PTP_TRI3_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_TRI3_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_TRI3_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_TRI3_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_TRI3_KCLASS(lt, gt) ((ptp_tri3_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_tri3_vm ptp_tri3_vk;
+#define PTP_TRI3_KLT0(v) ((v) < 0.0f)
+#define PTP_TRI3_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_TRI3_KGT0(v) ((v) > 0.0f)
+#define PTP_TRI3_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_TRI3_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_TRI3_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -508,7 +535,7 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
     for (l = 0; l < n; l += PTP_TRI3_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_tri3_vm notlt, notgt;
+        ptp_tri3_vk lt, gt;
         ptp_tri3_vf u, v;
 #if PTP_TRI3_VW > 1
         float tail[PTP_TRI3_POINTS * 4 * PTP_TRI3_VW];
@@ -535,8 +562,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri3_vstoref(d + 0 * ds + l, v * 9.0f, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_TRI3_KLT0(v);
+        gt = PTP_TRI3_KGT0(v); /* plane 0 */
         const ptp_tri3_vf x4 = ptp_tri3_vload(q + 16 * qs), y4 = ptp_tri3_vload(q + 17 * qs),
             w4 = ptp_tri3_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_tri3_vf m1_4 = x1 * y4 - y1 * x4;
@@ -550,8 +577,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri3_vstoref(d + 1 * ds + l, v * 3.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 1 */
         const ptp_tri3_vf x5 = ptp_tri3_vload(q + 20 * qs), y5 = ptp_tri3_vload(q + 21 * qs),
             w5 = ptp_tri3_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_tri3_vf m1_5 = x1 * y5 - y1 * x5;
@@ -562,8 +589,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri3_vstoref(d + 2 * ds + l, v * 3.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 2 */
         const ptp_tri3_vf x8 = ptp_tri3_vload(q + 32 * qs), y8 = ptp_tri3_vload(q + 33 * qs),
             w8 = ptp_tri3_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_tri3_vf m1_8 = x1 * y8 - y1 * x8;
@@ -582,8 +609,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 4 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 4 */
         const ptp_tri3_vf m1_7 = x1 * y7 - y1 * x7;
         u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
         const ptp_tri3_vf x6 = ptp_tri3_vload(q + 24 * qs), y6 = ptp_tri3_vload(q + 25 * qs),
@@ -600,8 +627,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 3 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 3 */
         const ptp_tri3_vf m3_7 = x3 * y7 - y3 * x7;
         u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
         const ptp_tri3_vf m4_6 = x4 * y6 - y4 * x6;
@@ -613,8 +640,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 6 * ds + l, v * 0.899999976f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 6 */
         const ptp_tri3_vf m4_7 = x4 * y7 - y4 * x7;
         const ptp_tri3_vf m5_6 = x5 * y6 - y5 * x6;
         const ptp_tri3_vf m3_8 = x3 * y8 - y3 * x8;
@@ -645,8 +672,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = PTP_TRI3_VFMA(g8, u, v);
         if (d)
             ptp_tri3_vstoref(d + 7 * ds + l, v * 0.300000012f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 7 */
         const ptp_tri3_vf m6_7 = x6 * y7 - y6 * x7;
         u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
         const ptp_tri3_vf m3_6 = x3 * y6 - y3 * x6;
@@ -658,8 +685,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 10 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 10 */
         const ptp_tri3_vf m6_8 = x6 * y8 - y6 * x8;
         u = m6_8;
         v = g0 * u;
@@ -688,8 +715,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = PTP_TRI3_VFMA(g8, u, v);
         if (d)
             ptp_tri3_vstoref(d + 11 * ds + l, v * 0.300000012f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 11 */
         const ptp_tri3_vf x9 = ptp_tri3_vload(q + 36 * qs), y9 = ptp_tri3_vload(q + 37 * qs),
             w9 = ptp_tri3_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_tri3_vf m1_9 = x1 * y9 - y1 * x9;
@@ -706,8 +733,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 5 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 5 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 5 */
         const ptp_tri3_vf m4_9 = x4 * y9 - y4 * x9;
         u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
         const ptp_tri3_vf m5_8 = x5 * y8 - y5 * x8;
@@ -719,8 +746,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 9 * ds + l, v * 0.899999976f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 9 */
         const ptp_tri3_vf m8_9 = x8 * y9 - y8 * x9;
         u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
         const ptp_tri3_vf m5_9 = x5 * y9 - y5 * x9;
@@ -732,15 +759,15 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 14 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 14 */
         u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
         u -= ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
         v = u;
         if (d)
             ptp_tri3_vstoref(d + 15 * ds + l, v * 3.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 15 */
         u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
         u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
         v = u;
@@ -750,8 +777,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 16 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 16 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 16 */
         const ptp_tri3_vf m6_9 = x6 * y9 - y6 * x9;
         const ptp_tri3_vf m7_8 = x7 * y8 - y7 * x8;
         u = m6_9;
@@ -783,8 +810,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = PTP_TRI3_VFMA(g9, u, v);
         if (d)
             ptp_tri3_vstoref(d + 17 * ds + l, v * 0.300000012f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 17 */
         const ptp_tri3_vf m7_9 = x7 * y9 - y7 * x9;
         u = (m7_9);
         u += u;
@@ -814,8 +841,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = PTP_TRI3_VFMA(g9, u, v);
         if (d)
             ptp_tri3_vstoref(d + 18 * ds + l, v * 0.300000012f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 18 */
         u = ((g1 * m8_9 - g8 * m1_9) + g9 * m1_8);
         u -= ((g3 * m5_9 - g5 * m3_9) + g9 * m3_5);
         v = u;
@@ -825,28 +852,28 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 19 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 19 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 19 */
         u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
         u -= ((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
         v = u;
         if (d)
             ptp_tri3_vstoref(d + 20 * ds + l, v * 3.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 20 */
         u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
         v = u;
         if (d)
             ptp_tri3_vstoref(d + 21 * ds + l, v * 9.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 21 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 21 */
         u = ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
         u += ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
         v = u;
         if (d)
             ptp_tri3_vstoref(d + 22 * ds + l, v * 3.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 22 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 22 */
         u = ((g3 * m6_9 - g6 * m3_9) + g9 * m3_6);
         u += ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
         v = u;
@@ -856,8 +883,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 23 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 23 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 23 */
         u = ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
         u += ((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
         u += ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
@@ -866,8 +893,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri3_vstoref(d + 24 * ds + l, v * 0.899999976f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 24 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 24 */
         u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
         u += ((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
         v = u;
@@ -877,21 +904,21 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += ((u + u) + (u + u));
         if (d)
             ptp_tri3_vstoref(d + 25 * ds + l, v * 0.600000024f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 25 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 25 */
         u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
         u += ((g5 * m7_9 - g7 * m5_9) + g9 * m5_7);
         v = u;
         if (d)
             ptp_tri3_vstoref(d + 26 * ds + l, v * 3.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 26 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 26 */
         u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
         v = u;
         if (d)
             ptp_tri3_vstoref(d + 27 * ds + l, v * 9.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 27 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 27 */
         u = ((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
         v = u;
         u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
@@ -903,8 +930,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
         if (d)
             ptp_tri3_vstoref(d + 12 * ds + l, v * 0.100000001f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 12 */
         u = m3_9 + m4_8;
         u = PTP_TRI3_VFMAS(2.0f, -m5_7, u);
         v = g0 * u;
@@ -932,8 +959,8 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = PTP_TRI3_VFMA(g9, u, v);
         if (d)
             ptp_tri3_vstoref(d + 8 * ds + l, v * 0.300000012f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 8 */
         u = m7_9;
         v = g0 * u;
         u = m4_9;
@@ -961,13 +988,11 @@ static inline void ptp_tri3_lanes_body(const float *PTP_TRI3_RESTRICT soa, size_
         v = PTP_TRI3_VFMA(g9, u, v);
         if (d)
             ptp_tri3_vstoref(d + 13 * ds + l, v * 0.300000012f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        lt = PTP_TRI3_KLT(lt, v);
+        gt = PTP_TRI3_KGT(gt, v); /* plane 13 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_tri3_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_tri3_vstore(cls + l, PTP_TRI3_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -988,6 +1013,19 @@ void ptp_tri3_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_tri3_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_tri3_lanes_block(const float *PTP_TRI3_RESTRICT soa, size_t n, const float eye[4],
+                                 unsigned char *PTP_TRI3_RESTRICT cls)
+{
+    ptp_tri3_lanes_body(soa, PTP_TRI3_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -1005,6 +1043,9 @@ void ptp_tri3_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_tri3_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_TRI3_AHEAD 4
 /* classify_batch's transposition: tiles of PTP_TRI3_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_TRI3_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_TRI3_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -1209,7 +1250,7 @@ static void ptp_tri3_transpose(float *PTP_TRI3_RESTRICT soa, const float (*PTP_T
                     soa[(k * 4 + c) * PTP_TRI3_LANES + l] = cp[l * PTP_TRI3_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_tri3_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -1218,15 +1259,17 @@ void ptp_tri3_classify_batch(const float (*cp)[4], size_t patch_count, const flo
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_TRI3_LANES ? patch_count - p : PTP_TRI3_LANES;
         ptp_tri3_transpose(soa, cp + p * PTP_TRI3_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_TRI3_POINTS);
-            size_t b, m = patch_count - p - n < PTP_TRI3_LANES ? patch_count - p - n : PTP_TRI3_LANES;
+            size_t a = patch_count - p - n <= (PTP_TRI3_AHEAD - 1) * PTP_TRI3_LANES ? patch_count
+                       : p + n + (PTP_TRI3_AHEAD - 1) * PTP_TRI3_LANES;
+            const char *next = (const char *)(cp + a * PTP_TRI3_POINTS);
+            size_t b, m = patch_count - a < PTP_TRI3_LANES ? patch_count - a : PTP_TRI3_LANES;
             for (b = 0; b < m * PTP_TRI3_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_tri3_lanes(soa, PTP_TRI3_LANES, n, eye, cls + p);
+        ptp_tri3_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

@@ -127,10 +127,19 @@ static inline ptp_tri4_vf ptp_tri4_vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most PTP_TRI4_VW) lanes. */
+/* cls[i] = c[i] for the first count (at most PTP_TRI4_VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void ptp_tri4_vstore(unsigned char *cls, ptp_tri4_vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char ptp_tri4_vb __attribute__((vector_size(PTP_TRI4_VW)));
+    if (count >= PTP_TRI4_VW) {
+        ptp_tri4_vb b = __builtin_convertvector(c, ptp_tri4_vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < PTP_TRI4_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
@@ -1087,6 +1096,24 @@ void ptp_tri4_planes(const float cp[][4], float t[][4])
     }
 }
 
+/* Strict: lt (gt) = the lanes whose values so far are all < 0 (> 0); KCLASS(lt, gt) = their
+ * classes: back (1) where lt, front (0) where gt, else silhouette (2). */
+#if PTP_TRI4_VW == 16
+typedef __mmask16 ptp_tri4_vk;
+#define PTP_TRI4_KLT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_TRI4_KLT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_LT_OS)
+#define PTP_TRI4_KGT0(v) _mm512_cmp_ps_mask((__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_TRI4_KGT(k, v) _mm512_mask_cmp_ps_mask(k, (__m512)(v), _mm512_setzero_ps(), _CMP_GT_OS)
+#define PTP_TRI4_KCLASS(lt, gt) ((ptp_tri4_vm)_mm512_mask_blend_epi32(lt, _mm512_maskz_mov_epi32((__mmask16)~(gt), \
+    _mm512_set1_epi32(2)), _mm512_set1_epi32(1)))
+#else
+typedef ptp_tri4_vm ptp_tri4_vk;
+#define PTP_TRI4_KLT0(v) ((v) < 0.0f)
+#define PTP_TRI4_KLT(k, v) ((k) & ((v) < 0.0f))
+#define PTP_TRI4_KGT0(v) ((v) > 0.0f)
+#define PTP_TRI4_KGT(k, v) ((k) & ((v) > 0.0f))
+#define PTP_TRI4_KCLASS(lt, gt) (((lt) & 1) + 2 * ((((lt) | (gt)) & 1) ^ 1))
+#endif
 /* The classification of n patches in structure-of-arrays order: coordinate c of point k
  * of patch l at soa[(k * 4 + c) * stride + l]. Straight-line code from the exact table
  * (PTP_TRI4_FLOPS per patch): each plane's value at a positive scale as the sum of its terms'
@@ -1112,7 +1139,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
     for (l = 0; l < n; l += PTP_TRI4_VW) {
         const float *q = soa + l;
         size_t qs = stride;
-        ptp_tri4_vm notlt, notgt;
+        ptp_tri4_vk lt, gt;
         ptp_tri4_vf u, v;
 #if PTP_TRI4_VW > 1
         float tail[PTP_TRI4_POINTS * 4 * PTP_TRI4_VW];
@@ -1139,8 +1166,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri4_vstoref(d + 0 * ds + l, v * 16.0f, n - l);
-        notlt = (v < 0.0f) == 0;
-        notgt = (v > 0.0f) == 0; /* plane 0 */
+        lt = PTP_TRI4_KLT0(v);
+        gt = PTP_TRI4_KGT0(v); /* plane 0 */
         const ptp_tri4_vf x4 = ptp_tri4_vload(q + 16 * qs), y4 = ptp_tri4_vload(q + 17 * qs),
             w4 = ptp_tri4_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_tri4_vf m1_4 = x1 * y4 - y1 * x4;
@@ -1154,8 +1181,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri4_vstoref(d + 1 * ds + l, v * 5.33333349f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 1 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 1 */
         const ptp_tri4_vf x5 = ptp_tri4_vload(q + 20 * qs), y5 = ptp_tri4_vload(q + 21 * qs),
             w5 = ptp_tri4_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_tri4_vf m1_5 = x1 * y5 - y1 * x5;
@@ -1166,8 +1193,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = u;
         if (d)
             ptp_tri4_vstoref(d + 2 * ds + l, v * 5.33333349f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 2 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 2 */
         const ptp_tri4_vf x8 = ptp_tri4_vload(q + 32 * qs), y8 = ptp_tri4_vload(q + 33 * qs),
             w8 = ptp_tri4_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_tri4_vf m1_8 = x1 * y8 - y1 * x8;
@@ -1193,8 +1220,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += ((u + u) + (u + u));
         if (d)
             ptp_tri4_vstoref(d + 4 * ds + l, v * 0.666666687f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 4 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 4 */
         const ptp_tri4_vf m1_7 = x1 * y7 - y1 * x7;
         u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
         const ptp_tri4_vf x6 = ptp_tri4_vload(q + 24 * qs), y6 = ptp_tri4_vload(q + 25 * qs),
@@ -1211,8 +1238,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 3 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 3 */
         const ptp_tri4_vf x9 = ptp_tri4_vload(q + 36 * qs), y9 = ptp_tri4_vload(q + 37 * qs),
             w9 = ptp_tri4_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_tri4_vf m1_9 = x1 * y9 - y1 * x9;
@@ -1229,8 +1256,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 5 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 5 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 5 */
         const ptp_tri4_vf x14 = ptp_tri4_vload(q + 56 * qs), y14 = ptp_tri4_vload(q + 57 * qs),
             w14 = ptp_tri4_vload(q + 59 * qs), g14 = e2 * w14;
         const ptp_tri4_vf m1_14 = x1 * y14 - y1 * x14;
@@ -1254,8 +1281,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 9 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 9 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 9 */
         const ptp_tri4_vf m1_13 = x1 * y13 - y1 * x13;
         const ptp_tri4_vf x12 = ptp_tri4_vload(q + 48 * qs), y12 = ptp_tri4_vload(q + 49 * qs),
             w12 = ptp_tri4_vload(q + 51 * qs), g12 = e2 * w12;
@@ -1291,8 +1318,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 8 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 8 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 8 */
         const ptp_tri4_vf x11 = ptp_tri4_vload(q + 44 * qs), y11 = ptp_tri4_vload(q + 45 * qs),
             w11 = ptp_tri4_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_tri4_vf m1_11 = x1 * y11 - y1 * x11;
@@ -1316,8 +1343,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 6 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 6 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 6 */
         const ptp_tri4_vf m3_11 = x3 * y11 - y3 * x11;
         u = ((g0 * m3_11 - g3 * m0_11) + g11 * m0_3);
         const ptp_tri4_vf m4_10 = x4 * y10 - y4 * x10;
@@ -1338,8 +1365,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 10 * ds + l, v * 0.380952388f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 10 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 10 */
         const ptp_tri4_vf m1_12 = x1 * y12 - y1 * x12;
         const ptp_tri4_vf m2_11 = x2 * y11 - y2 * x11;
         u = g0 * (m1_12 - m2_11);
@@ -1372,8 +1399,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 7 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 7 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 7 */
         const ptp_tri4_vf m5_10 = x5 * y10 - y5 * x10;
         u = g0 * (-m5_10);
         u = PTP_TRI4_VFMA(g5, m0_10, u);
@@ -1416,8 +1443,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 11 * ds + l, v * 0.095238097f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 11 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 11 */
         const ptp_tri4_vf m6_11 = x6 * y11 - y6 * x11;
         u = ((g0 * m6_11 - g6 * m0_11) + g11 * m0_6);
         const ptp_tri4_vf m7_10 = x7 * y10 - y7 * x10;
@@ -1436,8 +1463,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 15 * ds + l, v * 0.380952388f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 15 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 15 */
         const ptp_tri4_vf m4_14 = x4 * y14 - y4 * x14;
         u = ((g0 * m4_14 - g4 * m0_14) + g14 * m0_4);
         const ptp_tri4_vf m5_13 = x5 * y13 - y5 * x13;
@@ -1458,8 +1485,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 14 * ds + l, v * 0.380952388f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 14 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 14 */
         const ptp_tri4_vf m3_13 = x3 * y13 - y3 * x13;
         const ptp_tri4_vf m5_11 = x5 * y11 - y5 * x11;
         const ptp_tri4_vf m6_9 = x6 * y9 - y6 * x9;
@@ -1494,8 +1521,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 12 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 12 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 12 */
         const ptp_tri4_vf m3_14 = x3 * y14 - y3 * x14;
         u = g0 * (m3_14);
         u = PTP_TRI4_VFMA(g3, -m0_14, u);
@@ -1538,8 +1565,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 13 * ds + l, v * 0.095238097f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 13 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 13 */
         const ptp_tri4_vf m8_13 = x8 * y13 - y8 * x13;
         u = g0 * (m8_13);
         u = PTP_TRI4_VFMA(g1, m4_14, u);
@@ -1587,8 +1614,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 19 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 19 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 19 */
         const ptp_tri4_vf m8_14 = x8 * y14 - y8 * x14;
         u = ((g0 * m8_14 - g8 * m0_14) + g14 * m0_8);
         const ptp_tri4_vf m9_13 = x9 * y13 - y9 * x13;
@@ -1607,8 +1634,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 20 * ds + l, v * 0.380952388f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 20 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 20 */
         const ptp_tri4_vf m10_11 = x10 * y11 - y10 * x11;
         u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
         const ptp_tri4_vf m6_10 = x6 * y10 - y6 * x10;
@@ -1623,8 +1650,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 21 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 21 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 21 */
         const ptp_tri4_vf m10_12 = x10 * y12 - y10 * x12;
         u = g0 * (m10_12);
         u = PTP_TRI4_VFMA(g10, -m0_12, u);
@@ -1667,8 +1694,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 22 * ds + l, v * 0.095238097f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 22 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 22 */
         u = g0 * (-m7_11);
         u = PTP_TRI4_VFMA(g2, -m4_10, u);
         u = PTP_TRI4_VFMA(g4, m2_10, u);
@@ -1713,8 +1740,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 16 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 16 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 16 */
         const ptp_tri4_vf m9_10 = x9 * y10 - y9 * x10;
         u = g0 * (-m9_10);
         u = PTP_TRI4_VFMA(g9, m0_10, u);
@@ -1778,8 +1805,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 17 * ds + l, v * 0.0380952395f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 17 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 17 */
         const ptp_tri4_vf m10_13 = x10 * y13 - y10 * x13;
         u = g0 * (m10_13);
         u = PTP_TRI4_VFMA(g10, -m0_13, u);
@@ -1840,8 +1867,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 23 * ds + l, v * 0.0380952395f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 23 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 23 */
         const ptp_tri4_vf m12_14 = x12 * y14 - y12 * x14;
         u = g0 * (m12_14);
         u = PTP_TRI4_VFMA(g12, -m0_14, u);
@@ -1881,8 +1908,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 26 * ds + l, v * 0.095238097f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 26 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 26 */
         const ptp_tri4_vf m13_14 = x13 * y14 - y13 * x14;
         u = ((g0 * m13_14 - g13 * m0_14) + g14 * m0_13);
         const ptp_tri4_vf m9_14 = x9 * y14 - y9 * x14;
@@ -1897,8 +1924,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 27 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 27 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 27 */
         u = ((g1 * m10_11 - g10 * m1_11) + g11 * m1_10);
         u += ((g4 * m6_10 - g6 * m4_10) + g10 * m4_6);
         v = u;
@@ -1908,8 +1935,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 28 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 28 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 28 */
         u = g2 * (m10_11);
         u = PTP_TRI4_VFMA(g5, m6_10, u);
         u = PTP_TRI4_VFMA(g6, -m5_10, u);
@@ -1937,8 +1964,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 29 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 29 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 29 */
         u = g1 * (m10_13);
         u = PTP_TRI4_VFMA(g2, m10_12, u);
         u = PTP_TRI4_VFMA(g3, -m9_10, u);
@@ -1969,8 +1996,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 30 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 30 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 30 */
         const ptp_tri4_vf m10_14 = x10 * y14 - y10 * x14;
         u = g1 * (m10_14);
         u = PTP_TRI4_VFMA(g10, -m1_14, u);
@@ -2035,8 +2062,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 31 * ds + l, v * 0.0380952395f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 31 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 31 */
         u = g2 * (m10_14);
         u = PTP_TRI4_VFMA(g10, -m2_14, u);
         u = PTP_TRI4_VFMA(g14, m2_10, u);
@@ -2097,8 +2124,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 32 * ds + l, v * 0.0380952395f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 32 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 32 */
         u = g1 * (m12_14);
         u = PTP_TRI4_VFMA(g2, m11_14, u);
         u = PTP_TRI4_VFMA(g5, m6_14, u);
@@ -2129,8 +2156,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 33 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 33 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 33 */
         u = g1 * (m13_14);
         u = PTP_TRI4_VFMA(g3, -m9_14, u);
         u = PTP_TRI4_VFMA(g9, m3_14, u);
@@ -2158,8 +2185,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 34 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 34 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 34 */
         u = ((g2 * m13_14 - g13 * m2_14) + g14 * m2_13);
         u -= ((g4 * m9_14 - g9 * m4_14) + g14 * m4_9);
         v = u;
@@ -2169,15 +2196,15 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 35 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 35 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 35 */
         u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
         u -= ((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
         v = u;
         if (d)
             ptp_tri4_vstoref(d + 36 * ds + l, v * 5.33333349f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 36 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 36 */
         u = g4 * (m10_11);
         u = PTP_TRI4_VFMA(g6, -m8_10, u);
         u = PTP_TRI4_VFMA(g8, m6_10, u);
@@ -2194,8 +2221,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += ((u + u) + (u + u));
         if (d)
             ptp_tri4_vstoref(d + 37 * ds + l, v * 0.666666687f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 37 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 37 */
         u = g5 * (m10_11);
         u = PTP_TRI4_VFMA(g6, -m9_10, u);
         u = PTP_TRI4_VFMA(g9, m6_10, u);
@@ -2223,8 +2250,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 38 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 38 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 38 */
         u = g3 * (m10_14);
         u = PTP_TRI4_VFMA(g10, -m3_14, u);
         u = PTP_TRI4_VFMA(g14, m3_10, u);
@@ -2263,8 +2290,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 39 * ds + l, v * 0.095238097f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 39 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 39 */
         u = g6 * (-m7_14);
         u = PTP_TRI4_VFMA(g7, m6_14, u);
         u = PTP_TRI4_VFMA(g8, -m9_10, u);
@@ -2309,8 +2336,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 40 * ds + l, v * 0.0761904791f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 40 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 40 */
         u = g5 * (m10_14);
         u = PTP_TRI4_VFMA(g10, -m5_14, u);
         u = PTP_TRI4_VFMA(g14, m5_10, u);
@@ -2349,8 +2376,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 41 * ds + l, v * 0.095238097f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 41 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 41 */
         u = g3 * (m13_14);
         u = PTP_TRI4_VFMA(g6, -m9_14, u);
         u = PTP_TRI4_VFMA(g9, m6_14, u);
@@ -2378,8 +2405,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 42 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 42 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 42 */
         u = g4 * (m13_14);
         u = PTP_TRI4_VFMA(g7, -m9_14, u);
         u = PTP_TRI4_VFMA(g9, m7_14, u);
@@ -2396,28 +2423,28 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += ((u + u) + (u + u));
         if (d)
             ptp_tri4_vstoref(d + 43 * ds + l, v * 0.666666687f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 43 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 43 */
         u = ((g5 * m13_14 - g13 * m5_14) + g14 * m5_13);
         u -= ((g8 * m9_14 - g9 * m8_14) + g14 * m8_9);
         v = u;
         if (d)
             ptp_tri4_vstoref(d + 44 * ds + l, v * 5.33333349f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 44 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 44 */
         u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
         v = u;
         if (d)
             ptp_tri4_vstoref(d + 45 * ds + l, v * 16.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 45 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 45 */
         u = ((g6 * m10_12 - g10 * m6_12) + g12 * m6_10);
         u += ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
         v = u;
         if (d)
             ptp_tri4_vstoref(d + 46 * ds + l, v * 5.33333349f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 46 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 46 */
         u = ((g6 * m10_13 - g10 * m6_13) + g13 * m6_10);
         u += ((g8 * m10_11 - g10 * m8_11) + g11 * m8_10);
         v = u;
@@ -2427,8 +2454,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 47 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 47 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 47 */
         u = ((g6 * m10_14 - g10 * m6_14) + g14 * m6_10);
         u += ((g9 * m10_11 - g10 * m9_11) + g11 * m9_10);
         v = u;
@@ -2441,8 +2468,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 48 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 48 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 48 */
         u = ((g6 * m11_14 - g11 * m6_14) + g14 * m6_11);
         u += ((g7 * m10_14 - g10 * m7_14) + g14 * m7_10);
         u += ((g9 * m10_12 - g10 * m9_12) + g12 * m9_10);
@@ -2458,8 +2485,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 49 * ds + l, v * 0.380952388f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 49 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 49 */
         u = ((g6 * m12_14 - g12 * m6_14) + g14 * m6_12);
         u += ((g8 * m10_14 - g10 * m8_14) + g14 * m8_10);
         u += ((g9 * m10_13 - g10 * m9_13) + g13 * m9_10);
@@ -2475,8 +2502,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
         if (d)
             ptp_tri4_vstoref(d + 50 * ds + l, v * 0.380952388f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 50 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 50 */
         u = ((g6 * m13_14 - g13 * m6_14) + g14 * m6_13);
         u += ((g9 * m10_14 - g10 * m9_14) + g14 * m9_10);
         v = u;
@@ -2489,8 +2516,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(18.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 51 * ds + l, v * 0.190476194f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 51 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 51 */
         u = ((g7 * m13_14 - g13 * m7_14) + g14 * m7_13);
         u += ((g9 * m11_14 - g11 * m9_14) + g14 * m9_11);
         v = u;
@@ -2500,21 +2527,21 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v += (u + u) + u;
         if (d)
             ptp_tri4_vstoref(d + 52 * ds + l, v * 1.33333337f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 52 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 52 */
         u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
         u += ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
         v = u;
         if (d)
             ptp_tri4_vstoref(d + 53 * ds + l, v * 5.33333349f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 53 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 53 */
         u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
         v = u;
         if (d)
             ptp_tri4_vstoref(d + 54 * ds + l, v * 16.0f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 54 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 54 */
         u = g0 * (m11_14);
         u = PTP_TRI4_VFMA(g11, -m0_14, u);
         u = PTP_TRI4_VFMA(g14, m0_11, u);
@@ -2573,8 +2600,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 25 * ds + l, v * 0.0380952395f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 25 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 25 */
         u = g0 * (m6_14);
         u = PTP_TRI4_VFMA(g6, -m0_14, u);
         u = PTP_TRI4_VFMA(g14, m0_6, u);
@@ -2633,8 +2660,8 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(24.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 18 * ds + l, v * 0.0380952395f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 18 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 18 */
         u = g0 * (m10_14);
         u = PTP_TRI4_VFMA(g10, -m0_14, u);
         u = PTP_TRI4_VFMA(g14, m0_10, u);
@@ -2679,13 +2706,11 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         v = PTP_TRI4_VFMAS(108.0f, u, v);
         if (d)
             ptp_tri4_vstoref(d + 24 * ds + l, v * 0.00952380989f, n - l);
-        notlt |= (v < 0.0f) == 0;
-        notgt |= (v > 0.0f) == 0; /* plane 24 */
+        lt = PTP_TRI4_KLT(lt, v);
+        gt = PTP_TRI4_KGT(gt, v); /* plane 24 */
         /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else
-         * silhouette (2); arithmetic, not branches. Masks 0 or 1 first. */
-        notlt &= 1;
-        notgt &= 1;
-        ptp_tri4_vstore(cls + l, (1 - notlt) + 2 * (notlt & notgt), n - l);
+         * silhouette (2); arithmetic, not branches. */
+        ptp_tri4_vstore(cls + l, PTP_TRI4_KCLASS(lt, gt), n - l);
     }
 }
 
@@ -2706,6 +2731,19 @@ void ptp_tri4_values(const float cp[][4], const float eye[4], float d[])
     unsigned char c;
     ptp_tri4_lanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */
 }
+
+/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
+ * offsets computed from the stride (gcc keeps those in spilled registers). */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((noinline, noclone))
+#elif defined(__clang__)
+__attribute__((noinline))
+#endif
+static void ptp_tri4_lanes_block(const float *PTP_TRI4_RESTRICT soa, size_t n, const float eye[4],
+                                 unsigned char *PTP_TRI4_RESTRICT cls)
+{
+    ptp_tri4_lanes_body(soa, PTP_TRI4_LANES, n, eye, cls, NULL, 0);
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC pop_options
 #endif
@@ -2723,6 +2761,9 @@ void ptp_tri4_classify_soa(const float *soa, size_t stride, size_t patch_count,
     ptp_tri4_lanes(soa, stride, patch_count, eye, cls);
 }
 
+/* classify_batch prefetches the block AHEAD blocks on: about 1600 multiply-pipe operations a
+ * lane ahead (a shorter program prefetches further; bench/README: PN triangles). */
+#define PTP_TRI4_AHEAD 2
 /* classify_batch's transposition: tiles of PTP_TRI4_TW patches in GNU C vectors (gcc, clang) where
  * SSE2 or NEON is, unless PTP_TRI4_NO_SSE is defined. */
 #if defined(__GNUC__) && !defined(PTP_TRI4_NO_SSE) && (defined(__SSE2__) || defined(__ARM_NEON))
@@ -2927,7 +2968,7 @@ static void ptp_tri4_transpose(float *PTP_TRI4_RESTRICT soa, const float (*PTP_T
                     soa[(k * 4 + c) * PTP_TRI4_LANES + l] = cp[l * PTP_TRI4_POINTS + k][c];
 }
 
-/* Blocks of LANES patches: transposed, the next block prefetched, the lanes, the second look. */
+/* Blocks of LANES patches: transposed, a block AHEAD on prefetched, the lanes, the second look. */
 void ptp_tri4_classify_batch(const float (*cp)[4], size_t patch_count, const float eye[4],
                     unsigned char *cls)
 {
@@ -2936,15 +2977,17 @@ void ptp_tri4_classify_batch(const float (*cp)[4], size_t patch_count, const flo
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_TRI4_LANES ? patch_count - p : PTP_TRI4_LANES;
         ptp_tri4_transpose(soa, cp + p * PTP_TRI4_POINTS, n);
-#if defined(__GNUC__) /* the next block into the caches while this one is classified */
+#if defined(__GNUC__) /* a later block into the caches while this one is classified */
         {
-            const char *next = (const char *)(cp + (p + n) * PTP_TRI4_POINTS);
-            size_t b, m = patch_count - p - n < PTP_TRI4_LANES ? patch_count - p - n : PTP_TRI4_LANES;
+            size_t a = patch_count - p - n <= (PTP_TRI4_AHEAD - 1) * PTP_TRI4_LANES ? patch_count
+                       : p + n + (PTP_TRI4_AHEAD - 1) * PTP_TRI4_LANES;
+            const char *next = (const char *)(cp + a * PTP_TRI4_POINTS);
+            size_t b, m = patch_count - a < PTP_TRI4_LANES ? patch_count - a : PTP_TRI4_LANES;
             for (b = 0; b < m * PTP_TRI4_POINTS * sizeof *cp; b += 64)
                 __builtin_prefetch(next + b, 0, 0);
         }
 #endif
-        ptp_tri4_lanes(soa, PTP_TRI4_LANES, n, eye, cls + p);
+        ptp_tri4_lanes_block(soa, n, eye, cls + p);
     }
 }
 #endif

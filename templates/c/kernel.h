@@ -101,10 +101,19 @@ static inline {{PREFIX}}vf {{PREFIX}}vload(const float *p)
     memcpy(&v, p, sizeof v);
     return v;
 }
-/* cls[i] = c[i] for the first count (at most {{UPREFIX}}VW) lanes. */
+/* cls[i] = c[i] for the first count (at most {{UPREFIX}}VW) lanes; a whole vector in one store
+ * (gcc 9 and later). */
 static inline void {{PREFIX}}vstore(unsigned char *cls, {{PREFIX}}vm c, size_t count)
 {
     size_t i;
+#if __GNUC__ >= 9
+    typedef unsigned char {{PREFIX}}vb __attribute__((vector_size({{UPREFIX}}VW)));
+    if (count >= {{UPREFIX}}VW) {
+        {{PREFIX}}vb b = __builtin_convertvector(c, {{PREFIX}}vb);
+        memcpy(cls, &b, sizeof b);
+        return;
+    }
+#endif
     for (i = 0; i < count && i < {{UPREFIX}}VW; i++)
         cls[i] = (unsigned char)c[i];
 }
