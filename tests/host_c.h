@@ -18,4 +18,12 @@ extern "C" {
 #define FN(name) CAT(PFX, name)
 #define MACRO(name) CAT(UPFX, name)
 
+/* kref_report under the name "LABEL WHAT" (LABEL: o's --name); 1 if its checks passed. */
+static inline int host_report(const kref_result *res, const kref_args *o, const char *what)
+{
+    char name[200];
+    snprintf(name, sizeof name, "%s %s", o->label, what);
+    return kref_report(res, name);
+}
+
 #endif

@@ -1399,15 +1399,18 @@ int kref_start(kref_args *a, kref_ref *r, long *runs, int argc, char **argv, con
     return kref_init_args(r, a) ? 1 : 0;
 }
 
-int kref_run_sets(kref_args *a, kref_ref *r, int argc, char **argv, const char *host,
-                  kref_set_fn fn, void *ctx)
+int kref_host_main(const kref_host *h, void *ctx, int argc, char **argv)
 {
-    int st = kref_start(a, r, NULL, argc, argv, host, 0);
+    kref_args a;
+    kref_ref r;
+    int st = kref_start(&a, &r, NULL, argc, argv, h->name, 0), ok;
     if (st)
         return st;
-    if (kref_each_set(r, a, fn, ctx, NULL)) {
-        kref_clear(r);
+    if ((h->ready && h->ready(ctx, &a, &r)) || kref_each_set(&r, &a, h->set, ctx, NULL)) {
+        kref_clear(&r);
         return 1;
     }
-    return 0;
+    ok = h->report(ctx, &a, &r);
+    kref_clear(&r);
+    return !ok;
 }
