@@ -35,6 +35,13 @@
  * contracts a product and an add into an FMA (clang does by default, gcc -std=c11 does not). */
 #define PAPER_FLOPS (16 * NTERMS + NPLANES)
 
+/* The header's option (-DVARIANT, e.g. "--refine 3"), or NULL for the plain header. */
+#ifdef VARIANT
+static const char *const variant = VARIANT;
+#else
+static const char *const variant = NULL;
+#endif
+
 /* The clip-space eye (0, 0, alpha, 0) with alpha = 1 > 0 (an OpenGL-style projection). */
 static const float eye[4] = {0.0f, 0.0f, 1.0f, 0.0f};
 
@@ -401,37 +408,32 @@ int main(int argc, char **argv)
         counts[ref[p] < 3 ? ref[p] : 2]++;
 
     paper = measure(run_paper, &d, cls, 0, &used);
-#ifdef VARIANT
-    /* A header with an option (VARIANT, e.g. "--refine 3"): only its batch path, and its classes. */
-    rate = measure(run_batch, &d, cls, 1, &used);
-    snprintf(label, sizeof label, "classify_batch %s", VARIANT);
-    row(label, rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
-    printf("# %s %s: %.1f ns a patch; classes front %.1f%%, back %.1f%%, silhouette %.1f%%\n",
-           DEGREE, VARIANT, 1e9 / rate, 100.0 * (double)counts[0] / (double)count,
-           100.0 * (double)counts[1] / (double)count, 100.0 * (double)counts[2] / (double)count);
-    free(cp);
-    free(soa);
-    free(ref);
-    free(cls);
-    free(cpus);
-    return 0;
-#endif
-    row("paper loop", paper, PAPER_FLOPS, peak1, 0, count_differ(cls, ref, used), used);
-    rate = measure(run_classify, &d, cls, 0, &used);
-    row("classify", rate, MACRO(FLOPS), peak1, paper, 0, 0);
-    rate = measure(run_batch, &d, cls, 1, &used);
-    row("classify_batch", rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
-    rate = measure(run_soa, &d, cls, 1, &used);
-    row("classify_soa", rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
-    memset(cls, 0xFF, count);
-    rate = measure_threads(&d, cls, (int)ncpu, ncpus ? cpus : NULL);
-    snprintf(label, sizeof label, "classify_batch, %ld thread%s", ncpu, ncpu > 1 ? "s" : "");
-    row(label, rate, MACRO(FLOPS), peak_all, paper, count_differ(cls, ref, count), count);
-    printf("# data %s: %zu patches, %.0f MB of points; classify: front %.1f%%, back %.1f%%, "
-           "silhouette %.1f%%\n",
-           DEGREE, count, (double)count * NPOINTS * 16 / 1e6,
-           100.0 * (double)counts[0] / (double)count, 100.0 * (double)counts[1] / (double)count,
-           100.0 * (double)counts[2] / (double)count);
+    if (variant) { /* a header with an option: only its batch path, and its classes */
+        rate = measure(run_batch, &d, cls, 1, &used);
+        snprintf(label, sizeof label, "classify_batch %s", variant);
+        row(label, rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
+        printf("# %s %s: %.1f ns a patch; classes front %.1f%%, back %.1f%%, silhouette %.1f%%\n",
+               DEGREE, variant, 1e9 / rate, 100.0 * (double)counts[0] / (double)count,
+               100.0 * (double)counts[1] / (double)count,
+               100.0 * (double)counts[2] / (double)count);
+    } else {
+        row("paper loop", paper, PAPER_FLOPS, peak1, 0, count_differ(cls, ref, used), used);
+        rate = measure(run_classify, &d, cls, 0, &used);
+        row("classify", rate, MACRO(FLOPS), peak1, paper, 0, 0);
+        rate = measure(run_batch, &d, cls, 1, &used);
+        row("classify_batch", rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
+        rate = measure(run_soa, &d, cls, 1, &used);
+        row("classify_soa", rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
+        memset(cls, 0xFF, count);
+        rate = measure_threads(&d, cls, (int)ncpu, ncpus ? cpus : NULL);
+        snprintf(label, sizeof label, "classify_batch, %ld thread%s", ncpu, ncpu > 1 ? "s" : "");
+        row(label, rate, MACRO(FLOPS), peak_all, paper, count_differ(cls, ref, count), count);
+        printf("# data %s: %zu patches, %.0f MB of points; classify: front %.1f%%, back %.1f%%, "
+               "silhouette %.1f%%\n",
+               DEGREE, count, (double)count * NPOINTS * 16 / 1e6,
+               100.0 * (double)counts[0] / (double)count, 100.0 * (double)counts[1] / (double)count,
+               100.0 * (double)counts[2] / (double)count);
+    }
     free(cp);
     free(soa);
     free(ref);
