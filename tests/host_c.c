@@ -1,4 +1,6 @@
-/* host_c.c: runs an emitted C header (--target c) over patch sets and checks it with kref.
+/* host_c.c: runs an emitted C header (--target c) over patch sets and checks it with kref
+ * (tests/test_kernels.sh).
+ *
  * Built per header: cc -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix> -DUPFX=<PREFIX> ...
  * C and C++ alike (c++ -x c++ host_c.c -x none libptptest.a): the header is used from both. */
 #include "host_c.h"

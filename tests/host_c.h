@@ -1,6 +1,5 @@
-/* host_c.h: what the hosts built around an emitted C header share: the test helpers with C
- * linkage (the hosts build as C and as C++), and FN and MACRO naming the header's functions and
- * macros by its prefix (-DPFX=<prefix> -DUPFX=<PREFIX>). */
+/* host_c.h: what the hosts built around an emitted C header share, as C and as C++: the test
+ * helpers with C linkage, host_report, and FN and MACRO (the header's names by -DPFX, -DUPFX). */
 #ifndef HOST_C_H
 #define HOST_C_H
 

@@ -1,6 +1,5 @@
-/* host_refine.c: runs a C header emitted with --refine K (quad or triangle) and checks the refined
- * classes: equal to the reference where the control planes decide, never back or front against
- * samples; --certified headers also on exact data, against exact corner signs and samples. */
+/* host_refine.c: runs a C header emitted with --refine K (quad or triangle): decided classes
+ * kept, refined ones never against samples; --certified ones also on exact data. */
 #include "host_c.h"
 
 #include <math.h>

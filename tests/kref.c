@@ -1,4 +1,6 @@
-/* kref.c: test data and the double-precision reference for executing emitted kernels.
+/* kref.c: test data and the double-precision reference for executing emitted kernels
+ * (tests/kref.h).
+ *
  * The bound on a float32 evaluation is (terms + 16) * 2^-24 times the sum of |monomials|; exact
  * zeros (a plane along a boundary edge collapsed to one point) have bound 0. */
 #include "kref.h"
