@@ -75,6 +75,8 @@ static void usage_options(sbuf *o)
         "                   point (i, j) is i*(M+1)+j, plane (I, J) is I*(3M-1)+J; v-first:\n"
         "                   point j*(N+1)+i, plane J*(3N-1)+I (triangles: (i, j) numbered as\n"
         "                   u-first numbers (j, i))\n"
+        "  --count K        vectors: the number of cases, 1 to %d\n"
+        "  --seed S         vectors: the seed of their random stream, 0 to 2^64 - 1\n"
         "  --format F       vectors: json (default) or c (a C include of the same vectors)\n"
         "  -o, --output F   write to F (atomically) instead of standard output\n"
         "  -h, --help       show this help\n"
@@ -82,7 +84,7 @@ static void usage_options(sbuf *o)
         "  --list-targets   list the targets, one a line: name, file suffix (- for none),\n"
         "                   the options it uses (comma-separated, - for none), description\n"
         "\n",
-        CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS);
+        CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS, CLI_MAX_COUNT);
 }
 
 void cli_usage(sbuf *o)
