@@ -164,7 +164,7 @@ $(B)/bench/peak: bench/peak.c Makefile $(B)/bench/cc.txt
 # kernels among them, is compiled to SPIR-V by glslangValidator and into the binary.
 RB = $(B)/render
 RENDER_SRC = $(sort $(wildcard bench/render/*.c)) bench/cones.c
-RENDER_HDR = $(wildcard bench/render/*.h) bench/cones.h tests/vk_result.h
+RENDER_HDR = $(wildcard bench/render/*.h) bench/cones.h bench/vec3.h tests/vk_result.h
 RENDER_SHADERS = xform:xform.comp cone:cone.comp vert:patch.vert tesc:patch.tesc \
     tese:patch.tese frag:shade.frag
 RENDER_SPV = $(foreach s,$(RENDER_SHADERS) ptp ptp_cert,$(RB)/spv_$(firstword $(subst :, ,$(s))).h)
@@ -345,7 +345,7 @@ $(CR)/cr_tt.h: $(B)/ptpgen
 	$(B)/ptpgen --domain triangle --degree 3 --target table --prefix cr_tt_ -o $@
 
 CR_SRC = bench/cullrate.c bench/cones.c bench/exact.c bench/pn.c bench/tess.c
-CR_HDR = bench/cones.h bench/exact.h bench/pn.h bench/tess.h tests/float_widen.h \
+CR_HDR = bench/cones.h bench/vec3.h bench/exact.h bench/pn.h bench/tess.h tests/float_widen.h \
     $(addprefix $(CR)/,cr_s.h cr_d.h cr_c.h cr_r1.h cr_r2.h cr_r3.h cr_cr3.h cr_t.h) \
     $(addprefix $(CR)/,cr_ts.h cr_td.h cr_tc.h cr_tt.h)
 

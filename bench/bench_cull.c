@@ -35,6 +35,13 @@
  * contracts a product and an add into an FMA (clang does by default, gcc -std=c11 does not). */
 #define PAPER_FLOPS (16 * NTERMS + NPLANES)
 
+/* The header's option (-DVARIANT, e.g. "--refine 3"), or NULL for the plain header. */
+#ifdef VARIANT
+static const char *const variant = VARIANT;
+#else
+static const char *const variant = NULL;
+#endif
+
 /* The clip-space eye (0, 0, alpha, 0) with alpha = 1 > 0 (an OpenGL-style projection). */
 static const float eye[4] = {0.0f, 0.0f, 1.0f, 0.0f};
 
@@ -334,37 +341,108 @@ static void *alloc64(size_t bytes)
     return aligned_alloc(64, (bytes + 63) / 64 * 64);
 }
 
-int main(int argc, char **argv)
+/* Parses "--peak GFLOPS_1 GFLOPS_ALL [--patches N]" into peak[0], peak[1] and *count, and DEGREE
+ * into *n, *m; 0, or 2 after the usage line. */
+static int parse_args(double peak[2], size_t *count, int *n, int *m, int argc, char **argv)
 {
-    double peak1 = 0, peak_all = 0, paper, rate;
-    long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
-    size_t count = 262144, used, p, counts[3] = {0, 0, 0};
-    int n = 0, m = 0, i, *cpus, ncpus = 0;
-    float(*cp)[4], *soa;
-    unsigned char *ref, *cls;
-    cpu_set_t allowed;
-    data d;
-    char label[64];
-
-    if (argc == 3 && !strcmp(argv[1], "--gen"))
-        return gen_time(argv[2]);
+    int i;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--peak") && i + 2 < argc) {
-            peak1 = atof(argv[i + 1]);
-            peak_all = atof(argv[i + 2]);
+            peak[0] = atof(argv[i + 1]);
+            peak[1] = atof(argv[i + 2]);
             i += 2;
         } else if (!strcmp(argv[i], "--patches") && i + 1 < argc) {
-            count = (size_t)strtoull(argv[++i], NULL, 10);
+            *count = (size_t)strtoull(argv[++i], NULL, 10);
         } else {
             break;
         }
     }
-    if (i < argc || peak1 <= 0 || peak_all <= 0 || count == 0 ||
-        sscanf(DEGREE, "%dx%d", &n, &m) != 2 || (n + 1) * (m + 1) != NPOINTS) {
+    if (i < argc || peak[0] <= 0 || peak[1] <= 0 || *count == 0 ||
+        sscanf(DEGREE, "%dx%d", n, m) != 2 || (*n + 1) * (*m + 1) != NPOINTS) {
         fprintf(stderr, "usage: %s --peak GFLOPS_1 GFLOPS_ALL [--patches N] | --gen PTPGEN\n",
                 argv[0]);
         return 2;
     }
+    return 0;
+}
+
+/* Into cpus (room for ncpu) the CPUs this process may use (taskset narrows them), at most ncpu,
+ * and pins it to the first: the one-core runs run there, the all-core run has one thread on each.
+ * Returns their number; 0 when the affinity cannot be read (every online CPU, unpinned). */
+static long usable_cpus(int *cpus, long ncpu)
+{
+    cpu_set_t allowed;
+    long ncpus = 0;
+    int i;
+    if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
+        for (i = 0; i < CPU_SETSIZE && ncpus < ncpu; i++)
+            if (CPU_ISSET(i, &allowed))
+                cpus[ncpus++] = i;
+    if (ncpus)
+        pin(cpus[0]);
+    return ncpus;
+}
+
+/* Prints "front F%, back B%, silhouette S%" and a newline: the shares of counts[3] in count. */
+static void print_shares(const size_t counts[3], size_t count)
+{
+    printf("front %.1f%%, back %.1f%%, silhouette %.1f%%\n",
+           100.0 * (double)counts[0] / (double)count, 100.0 * (double)counts[1] / (double)count,
+           100.0 * (double)counts[2] / (double)count);
+}
+
+/* The rows of the plain header: the paper's loop (its rate paper, its classes in cls over used
+ * patches), classify, classify_batch and classify_soa on one core, classify_batch on the ncpu
+ * CPUs cpus (NULL: unpinned), against the classes ref (counts: their tally). */
+static void plain_rows(const data *d, unsigned char *cls, const unsigned char *ref,
+                       const size_t counts[3], const double peak[2], double paper, size_t used,
+                       long ncpu, const int *cpus)
+{
+    char label[64];
+    double rate;
+    row("paper loop", paper, PAPER_FLOPS, peak[0], 0, count_differ(cls, ref, used), used);
+    rate = measure(run_classify, d, cls, 0, &used);
+    row("classify", rate, MACRO(FLOPS), peak[0], paper, 0, 0);
+    rate = measure(run_batch, d, cls, 1, &used);
+    row("classify_batch", rate, MACRO(FLOPS), peak[0], paper, count_differ(cls, ref, used), used);
+    rate = measure(run_soa, d, cls, 1, &used);
+    row("classify_soa", rate, MACRO(FLOPS), peak[0], paper, count_differ(cls, ref, used), used);
+    memset(cls, 0xFF, d->count);
+    rate = measure_threads(d, cls, (int)ncpu, cpus);
+    snprintf(label, sizeof label, "classify_batch, %ld thread%s", ncpu, ncpu > 1 ? "s" : "");
+    row(label, rate, MACRO(FLOPS), peak[1], paper, count_differ(cls, ref, d->count), d->count);
+    printf("# data %s: %zu patches, %.0f MB of points; classify: ", DEGREE, d->count,
+           (double)d->count * NPOINTS * 16 / 1e6);
+    print_shares(counts, d->count);
+}
+
+/* The row of a header with an option: its batch path only, and its classes (as plain_rows). */
+static void variant_rows(const data *d, unsigned char *cls, const unsigned char *ref,
+                         const size_t counts[3], const double peak[2], double paper)
+{
+    char label[64];
+    size_t used;
+    double rate = measure(run_batch, d, cls, 1, &used);
+    snprintf(label, sizeof label, "classify_batch %s", variant);
+    row(label, rate, MACRO(FLOPS), peak[0], paper, count_differ(cls, ref, used), used);
+    printf("# %s %s: %.1f ns a patch; classes ", DEGREE, variant, 1e9 / rate);
+    print_shares(counts, d->count);
+}
+
+int main(int argc, char **argv)
+{
+    double peak[2] = {0, 0}, paper;
+    long ncpu = sysconf(_SC_NPROCESSORS_ONLN), ncpus;
+    size_t count = 262144, used, p, counts[3] = {0, 0, 0};
+    int n = 0, m = 0, i, *cpus;
+    float(*cp)[4], *soa;
+    unsigned char *ref, *cls;
+    data d;
+
+    if (argc == 3 && !strcmp(argv[1], "--gen"))
+        return gen_time(argv[2]);
+    if (parse_args(peak, &count, &n, &m, argc, argv))
+        return 2;
     if (ncpu < 1)
         ncpu = 1;
 
@@ -384,54 +462,17 @@ int main(int argc, char **argv)
     d.count = count;
     d.cp = (const float(*)[4])cp;
     d.soa = soa;
-
-    /* one core: the first CPU this process may use (taskset narrows them); the all-core run has
-     * one thread on each (every online CPU, unpinned, when the affinity cannot be read) */
-    if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
-        for (i = 0; i < CPU_SETSIZE && ncpus < ncpu; i++)
-            if (CPU_ISSET(i, &allowed))
-                cpus[ncpus++] = i;
-    if (ncpus) {
-        pin(cpus[0]);
+    if ((ncpus = usable_cpus(cpus, ncpu)))
         ncpu = ncpus;
-    }
 
     run_classify(&d, 0, count, ref); /* the classes the other paths are compared with */
     for (p = 0; p < count; p++)
         counts[ref[p] < 3 ? ref[p] : 2]++;
-
     paper = measure(run_paper, &d, cls, 0, &used);
-#ifdef VARIANT
-    /* A header with an option (VARIANT, e.g. "--refine 3"): only its batch path, and its classes. */
-    rate = measure(run_batch, &d, cls, 1, &used);
-    snprintf(label, sizeof label, "classify_batch %s", VARIANT);
-    row(label, rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
-    printf("# %s %s: %.1f ns a patch; classes front %.1f%%, back %.1f%%, silhouette %.1f%%\n",
-           DEGREE, VARIANT, 1e9 / rate, 100.0 * (double)counts[0] / (double)count,
-           100.0 * (double)counts[1] / (double)count, 100.0 * (double)counts[2] / (double)count);
-    free(cp);
-    free(soa);
-    free(ref);
-    free(cls);
-    free(cpus);
-    return 0;
-#endif
-    row("paper loop", paper, PAPER_FLOPS, peak1, 0, count_differ(cls, ref, used), used);
-    rate = measure(run_classify, &d, cls, 0, &used);
-    row("classify", rate, MACRO(FLOPS), peak1, paper, 0, 0);
-    rate = measure(run_batch, &d, cls, 1, &used);
-    row("classify_batch", rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
-    rate = measure(run_soa, &d, cls, 1, &used);
-    row("classify_soa", rate, MACRO(FLOPS), peak1, paper, count_differ(cls, ref, used), used);
-    memset(cls, 0xFF, count);
-    rate = measure_threads(&d, cls, (int)ncpu, ncpus ? cpus : NULL);
-    snprintf(label, sizeof label, "classify_batch, %ld thread%s", ncpu, ncpu > 1 ? "s" : "");
-    row(label, rate, MACRO(FLOPS), peak_all, paper, count_differ(cls, ref, count), count);
-    printf("# data %s: %zu patches, %.0f MB of points; classify: front %.1f%%, back %.1f%%, "
-           "silhouette %.1f%%\n",
-           DEGREE, count, (double)count * NPOINTS * 16 / 1e6,
-           100.0 * (double)counts[0] / (double)count, 100.0 * (double)counts[1] / (double)count,
-           100.0 * (double)counts[2] / (double)count);
+    if (variant)
+        variant_rows(&d, cls, ref, counts, peak, paper);
+    else
+        plain_rows(&d, cls, ref, counts, peak, paper, used, ncpu, ncpus ? cpus : NULL);
     free(cp);
     free(soa);
     free(ref);

@@ -13,6 +13,8 @@
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
+/* After the pragmas, so that its products are not fused either. */
+#include "vec3.h"
 
 #define PI 3.14159265358979323846
 
@@ -52,31 +54,12 @@ static double tri_bernstein(int d, int i, int j, double u, double v)
     return r;
 }
 
-static void sub3(double r[3], const double a[3], const double b[3])
-{
-    r[0] = a[0] - b[0];
-    r[1] = a[1] - b[1];
-    r[2] = a[2] - b[2];
-}
-
-static void cross3(double r[3], const double a[3], const double b[3])
-{
-    r[0] = a[1] * b[2] - a[2] * b[1];
-    r[1] = a[2] * b[0] - a[0] * b[2];
-    r[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /* The angle between two unit vectors, accurate near 0 and pi. */
 static double angle(const double a[3], const double b[3])
 {
     double x[3];
-    cross3(x, a, b);
-    return atan2(sqrt(dot3(x, x)), dot3(a, b));
+    vec3_cross(x, a, b);
+    return atan2(sqrt(vec3_dot(x, x)), vec3_dot(a, b));
 }
 
 /* 1 if all n points are finite. */
@@ -106,8 +89,8 @@ static void sphere(const double (*b)[3], int n, cone_bound *c)
         c->center[i] = 0.5 * (lo[i] + hi[i]);
     for (k = 0; k < n; k++) {
         double d[3];
-        sub3(d, b[k], c->center);
-        r2 = fmax(r2, dot3(d, d));
+        vec3_sub(d, b[k], c->center);
+        r2 = fmax(r2, vec3_dot(d, d));
     }
     c->radius = sqrt(r2);
 }
@@ -124,7 +107,7 @@ static int bound_directions(const double (*v)[3], int n, double axis[3], double 
     double u[36][3], c[3] = {0, 0, 0};
     int m = 0, i, it;
     for (i = 0; i < n; i++) {
-        double l = sqrt(dot3(v[i], v[i]));
+        double l = sqrt(vec3_dot(v[i], v[i]));
         if (l == 0)
             continue;
         u[m][0] = v[i][0] / l;
@@ -139,7 +122,7 @@ static int bound_directions(const double (*v)[3], int n, double axis[3], double 
         c[i] /= m;
     *alpha = PI;
     for (it = 1; it <= 64; it++) {
-        double a[3], worst = -1, len = sqrt(dot3(c, c));
+        double a[3], worst = -1, len = sqrt(vec3_dot(c, c));
         int far = 0;
         if (len == 0)
             return it > 1; /* no mean direction; later, the best cone so far */
@@ -218,7 +201,7 @@ static void tri_normals(const double bu[12][3], const double bv[12][3], double n
                     double w = multinomial(a1, a2, 2 - a1 - a2) *
                                multinomial(b1, b2, 2 - b1 - b2) /
                                multinomial(a1 + b1, a2 + b2, 4 - a1 - a2 - b1 - b2);
-                    cross3(x, bu[tri_index(2, a1, a2)], bv[tri_index(2, b1, b2)]);
+                    vec3_cross(x, bu[tri_index(2, a1, a2)], bv[tri_index(2, b1, b2)]);
                     for (k = 0; k < 3; k++)
                         t[k] += w * x[k];
                 }
@@ -243,7 +226,7 @@ static int normals(const cone_patch *bp, double n[36][3])
                     double x[3], w = binom[2][a] * binom[3][cc] / binom[5][a + cc] *
                                      binom[3][bb] * binom[2][d] / binom[5][bb + d];
                     double *t = n[(a + cc) * 6 + bb + d];
-                    cross3(x, bu[a * 4 + bb], bv[cc * 3 + d]);
+                    vec3_cross(x, bu[a * 4 + bb], bv[cc * 3 + d]);
                     for (k = 0; k < 3; k++)
                         t[k] += w * x[k];
                 }
@@ -295,9 +278,9 @@ int cone_tcone(const cone_patch *bp, cone_bound *c)
         sin(beta);
     if (!(s < 1))
         return CONE_OK;
-    cross3(x, au, av);
+    vec3_cross(x, au, av);
     s = asin(s);
-    beta = sqrt(dot3(x, x));
+    beta = sqrt(vec3_dot(x, x));
     c->axis[0] = x[0] / beta;
     c->axis[1] = x[1] / beta;
     c->axis[2] = x[2] / beta;
@@ -311,15 +294,15 @@ int cone_cull(const cone_bound *c, const double eye[3])
     double d[3], dist, delta;
     if (!c->usable)
         return 0;
-    sub3(d, eye, c->center);
-    dist = sqrt(dot3(d, d));
+    vec3_sub(d, eye, c->center);
+    dist = sqrt(vec3_dot(d, d));
     if (!(dist > c->radius))
         return 0;
     delta = asin(c->radius / dist);
     if (c->alpha + delta >= PI / 2)
         return 0;
     /* angle(axis, d) > pi/2 + alpha + delta, both sides in [0, pi]. */
-    return dot3(c->axis, d) / dist < -sin(c->alpha + delta);
+    return vec3_dot(c->axis, d) / dist < -sin(c->alpha + delta);
 }
 
 int cone_planes(const cone_patch *bp, size_t terms, const unsigned short idx[][4],
@@ -341,13 +324,13 @@ int cone_planes(const cone_patch *bp, size_t terms, const unsigned short idx[][4
         if (idx[x][0] >= nq || idx[x][1] >= np || idx[x][2] >= np || idx[x][3] >= np)
             return CONE_EINVAL;
         bj = b[idx[x][1]];
-        sub3(e1, b[idx[x][2]], bj);
-        sub3(e2, b[idx[x][3]], bj);
-        cross3(n, e1, e2);
+        vec3_sub(e1, b[idx[x][2]], bj);
+        vec3_sub(e2, b[idx[x][3]], bj);
+        vec3_cross(n, e1, e2);
         p = idx[x][0];
         for (k = 0; k < 3; k++)
             t[p][k] += iwgt[x] * n[k];
-        t[p][3] -= iwgt[x] * dot3(bj, n);
+        t[p][3] -= iwgt[x] * vec3_dot(bj, n);
     }
     for (p = 0; p < nq; p++)
         for (k = 0; k < 4; k++)
@@ -446,11 +429,11 @@ double cone_direct(const cone_patch *bp, const double eye[3], double u, double v
         tri_point(bp->p, u, v, p, pu, pv);
     else
         quad_point(bp->p, u, v, p, pu, pv);
-    sub3(d, eye, p);
-    cross3(n, pu, pv);
-    f = dot3(d, n);
+    vec3_sub(d, eye, p);
+    vec3_cross(n, pu, pv);
+    f = vec3_dot(d, n);
     if (sine) {
-        double den = sqrt(dot3(d, d)) * sqrt(dot3(n, n));
+        double den = sqrt(vec3_dot(d, d)) * sqrt(vec3_dot(n, n));
         *sine = den > 0 ? f / den : 0;
     }
     return f;

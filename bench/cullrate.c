@@ -1,6 +1,5 @@
-/* cullrate.c: `make cullrate`: how many patches of real Bezier models (bicubic, and PN triangles of
- * tessellated ones) NCONE, TCONE and ptpgen's tangent-plane test cull from random eye points,
- * against a bracket of the exact answer (CVis). */
+/* cullrate.c: `make cullrate`: how many patches of real models (bicubic, PN triangles) NCONE,
+ * TCONE and ptpgen's tangent-plane test cull from random eyes, against the exact bracket (CVis). */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <math.h>

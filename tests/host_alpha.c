@@ -1,5 +1,6 @@
 /* host_alpha.c: checks the bicubic clip-space C header's alpha() on projections stored as glm and
  * DirectXMath store them: clip-space classes with that alpha equal the world-space header's.
+ *
  * Built by test_kernels.sh as C and C++: cc -IDIR host_alpha.c libptptest.a, DIR holding the
  * default-named ptp_3x3.h and ptp_3x3_world.h. Usage: host_alpha MODEL.bez... */
 #define PTP_3X3_IMPLEMENTATION

@@ -1,4 +1,6 @@
-/* host_c.c: runs an emitted C header (--target c) over patch sets and checks it with kref.
+/* host_c.c: runs an emitted C header (--target c) over patch sets and checks it with kref
+ * (tests/test_kernels.sh).
+ *
  * Built per header: cc -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix> -DUPFX=<PREFIX> ...
  * C and C++ alike (c++ -x c++ host_c.c -x none libptptest.a): the header is used from both. */
 #include "host_c.h"
@@ -86,29 +88,37 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
     return 0;
 }
 
+/* Before the sets: run_set's labels are o's. */
+static int ready(void *ctx, const kref_args *o, const kref_ref *ref)
+{
+    (void)ref;
+    ((results *)ctx)->o = o;
+    return 0;
+}
+
+/* The check lines of all sets; 1 if they all passed. */
+static int report(void *ctx, const kref_args *o, const kref_ref *ref)
+{
+    const results *r = (const results *)ctx;
+    char label[200];
+    int ok = host_report(&r->classify, o, "classify and values");
+    (void)ref;
+    ok &= host_report(&r->batch, o, "classify_batch");
+    snprintf(label, sizeof label, "%s classify_batch and classify_soa equal classify on every patch",
+             o->label);
+    ok &= check(r->paths_differ == 0, label, "they differ %d times", r->paths_differ);
+    snprintf(label, sizeof label, "%s classify is the class of values() under the rule on all %zu patches%s",
+             o->label, r->patches, o->certified ? " (certified: or silhouette)" : "");
+    ok &= check(r->values_differ == 0, label, "it is not on %zu", r->values_differ);
+    return ok & host_report(&r->planes, o, "planes (dotted with the eye)");
+}
+
 int main(int argc, char **argv)
 {
+    static const kref_host host = {"host_c", ready, run_set, report};
     results r;
-    kref_args o;
-    kref_ref ref;
-    char label[200];
-    int ok = 1, st;
+    int st;
     memset(&r, 0, sizeof r);
-    r.o = &o;
-    if ((st = kref_run_sets(&o, &ref, argc, argv, "host_c", run_set, &r)))
-        return st;
-    snprintf(label, sizeof label, "%s classify and values", o.label);
-    ok &= kref_report(&r.classify, label);
-    snprintf(label, sizeof label, "%s classify_batch", o.label);
-    ok &= kref_report(&r.batch, label);
-    snprintf(label, sizeof label, "%s classify_batch and classify_soa equal classify on every patch",
-             o.label);
-    ok &= check(r.paths_differ == 0, label, "they differ %d times", r.paths_differ);
-    snprintf(label, sizeof label, "%s classify is the class of values() under the rule on all %zu patches%s",
-             o.label, r.patches, o.certified ? " (certified: or silhouette)" : "");
-    ok &= check(r.values_differ == 0, label, "it is not on %zu", r.values_differ);
-    snprintf(label, sizeof label, "%s planes (dotted with the eye)", o.label);
-    ok &= kref_report(&r.planes, label);
-    kref_clear(&ref);
-    return check_exit() || !ok;
+    st = kref_host_main(&host, &r, argc, argv);
+    return st ? st : check_exit();
 }

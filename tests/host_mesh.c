@@ -160,33 +160,39 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
     return 0;
 }
 
+/* Before the sets: the mesh entry points are the degree-1 triangle's; 1 otherwise. */
+static int ready(void *ctx, const kref_args *o, const kref_ref *ref)
+{
+    (void)ctx;
+    if (o->kind != TP_TRI || o->n != 1 || ref->K != MACRO(POINTS))
+        return !check(0, o->label, "the mesh entry points are the degree-1 triangle's");
+    return 0;
+}
+
+/* The check lines of all sets; 1 if they all passed. */
+static int report(void *ctx, const kref_args *o, const kref_ref *ref)
+{
+    const results *r = (const results *)ctx;
+    char label[200];
+    int ok = host_report(&r->mesh, o, "classify_mesh");
+    (void)ref;
+    snprintf(label, sizeof label,
+             "%s classify_mesh equals classify on all %zu triangles (%zu shared vertices, %zu collapsed)",
+             o->label, r->triangles, r->shared, r->collapsed);
+    ok &= check(r->mesh_differ == 0 && r->shared > 0 && r->collapsed > 0, label,
+                "it differs %zu times", r->mesh_differ);
+    snprintf(label, sizeof label, "%s classify_clusters equals the loop on all %zu clusters",
+             o->label, r->clusters);
+    ok &= check(r->cluster_differ == 0, label, "it differs %zu times", r->cluster_differ);
+    return ok;
+}
+
 int main(int argc, char **argv)
 {
+    static const kref_host host = {"host_mesh", ready, run_set, report};
     results r;
-    kref_args o;
-    kref_ref ref;
-    char label[200];
-    int ok = 1, st;
+    int st;
     memset(&r, 0, sizeof r);
-    if ((st = kref_start(&o, &ref, NULL, argc, argv, "host_mesh", 0)))
-        return st;
-    if (o.kind != TP_TRI || o.n != 1 || ref.K != MACRO(POINTS)) {
-        kref_clear(&ref);
-        return !check(0, o.label, "the mesh entry points are the degree-1 triangle's");
-    }
-    if (kref_each_set(&ref, &o, run_set, &r, NULL)) {
-        kref_clear(&ref);
-        return 1;
-    }
-    snprintf(label, sizeof label, "%s classify_mesh", o.label);
-    ok &= kref_report(&r.mesh, label);
-    snprintf(label, sizeof label, "%s classify_mesh equals classify on all %zu triangles (%zu shared vertices, %zu collapsed)",
-             o.label, r.triangles, r.shared, r.collapsed);
-    ok &= check(r.mesh_differ == 0 && r.shared > 0 && r.collapsed > 0, label, "it differs %zu times",
-                r.mesh_differ);
-    snprintf(label, sizeof label, "%s classify_clusters equals the loop on all %zu clusters", o.label,
-             r.clusters);
-    ok &= check(r.cluster_differ == 0, label, "it differs %zu times", r.cluster_differ);
-    kref_clear(&ref);
-    return check_exit() || !ok;
+    st = kref_host_main(&host, &r, argc, argv);
+    return st ? st : check_exit();
 }

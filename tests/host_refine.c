@@ -1,6 +1,5 @@
-/* host_refine.c: runs a C header emitted with --refine K (quad or triangle) and checks the refined
- * classes: equal to the reference where the control planes decide, never back or front against
- * samples; --certified headers also on exact data, against exact corner signs and samples. */
+/* host_refine.c: runs a C header emitted with --refine K (quad or triangle): decided classes
+ * kept, refined ones never against samples; --certified ones also on exact data. */
 #include "host_c.h"
 
 #include <math.h>
@@ -244,53 +243,64 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
     return 0;
 }
 
-int main(int argc, char **argv)
+/* Before the sets: the crafted functions, and the grid of the exact check. */
+static int ready(void *ctx, const kref_args *o, const kref_ref *ref)
 {
-    kref_args o;
-    kref_ref ref;
-    tally t;
+    (void)o;
+    crafted((tally *)ctx, ref);
+    exact_grid((tally *)ctx, &ref->t.dom);
+    return 0;
+}
+
+/* The check lines of all sets; 1 if they all passed. */
+static int report(void *ctx, const kref_args *o, const kref_ref *ref)
+{
+    const tally *t = (const tally *)ctx;
     char name[300];
-    int ok = 1, st;
-    memset(&t, 0, sizeof t);
-    if ((st = kref_start(&o, &ref, NULL, argc, argv, "host_refine", 0)))
-        return st;
-    crafted(&t, &ref);
-    exact_grid(&t, &ref.t.dom);
-    if (kref_each_set(&ref, &o, run_set, &t, NULL)) {
-        kref_clear(&ref);
-        return 1;
-    }
-    printf("# %s: %zu patches, %zu refined from silhouette to back or front\n", o.label, t.patches,
-           t.refined);
-    snprintf(name, sizeof name, "%s: the classes the control planes decide are kept", o.label);
-    ok &= check(t.changed == 0, name, "%zu patches changed class", t.changed);
-    snprintf(name, sizeof name, "%s: no refined class contradicts 33 samples a side", o.label);
-    ok &= check(t.unsafe == 0, name, "%zu do; first: %s", t.unsafe, t.first);
-    if (ref.L > 1) {
-        snprintf(name, sizeof name, "%s: refinement decides some silhouette patches", o.label);
-        ok &= check(t.refined > 0, name, "none of %zu patches", t.patches);
+    int ok = 1;
+    printf("# %s: %zu patches, %zu refined from silhouette to back or front\n", o->label,
+           t->patches, t->refined);
+    snprintf(name, sizeof name, "%s: the classes the control planes decide are kept", o->label);
+    ok &= check(t->changed == 0, name, "%zu patches changed class", t->changed);
+    snprintf(name, sizeof name, "%s: no refined class contradicts 33 samples a side", o->label);
+    ok &= check(t->unsafe == 0, name, "%zu do; first: %s", t->unsafe, t->first);
+    if (ref->L > 1) {
+        snprintf(name, sizeof name, "%s: refinement decides some silhouette patches", o->label);
+        ok &= check(t->refined > 0, name, "none of %zu patches", t->patches);
     } else { /* one plane: its value is the constant function, nothing is left to split */
-        snprintf(name, sizeof name, "%s: one constant value: refinement decides nothing more", o.label);
-        ok &= check(t.refined == 0, name, "%zu of %zu patches refined", t.refined, t.patches);
+        snprintf(name, sizeof name, "%s: one constant value: refinement decides nothing more",
+                 o->label);
+        ok &= check(t->refined == 0, name, "%zu of %zu patches refined", t->refined, t->patches);
     }
-    snprintf(name, sizeof name, "%s: classify_batch equals classify", o.label);
-    ok &= check(t.batch_bad == 0, name, "they differ on %zu patches", t.batch_bad);
+    snprintf(name, sizeof name, "%s: classify_batch equals classify", o->label);
+    ok &= check(t->batch_bad == 0, name, "they differ on %zu patches", t->batch_bad);
 #if MACRO(CERTIFIED)
-    snprintf(name, sizeof name, "%s: mid's bound covers the rounding of 200000 random averages", o.label);
+    snprintf(name, sizeof name, "%s: mid's bound covers the rounding of 200000 random averages",
+             o->label);
     ok &= check(mid_short() == 0, name, "it is short on %zu", mid_short());
 #endif
-    if (ref.certified) /* as the certified header without --refine (tests/host_c.c) */
-        printf("# %s: certified: silhouette where the control planes clearly decide: %zu\n", o.label,
-               t.given_up);
-    if (t.exact) {
-        printf("# %s: exact data: %zu patches, %zu back or front, %zu unsafe%s%s\n", o.label,
-               t.exact, t.exact_decided, t.exact_unsafe, t.exact_unsafe ? "; first: " : "",
-               t.first_exact);
-        snprintf(name, sizeof name, "%s: on exact data no back or front is unsafe", o.label);
-        if (ref.certified)
-            ok &= check(t.exact_unsafe == 0, name, "%zu are; first: %s", t.exact_unsafe, t.first_exact);
+    if (ref->certified) /* as the certified header without --refine (tests/host_c.c) */
+        printf("# %s: certified: silhouette where the control planes clearly decide: %zu\n",
+               o->label, t->given_up);
+    if (t->exact) {
+        printf("# %s: exact data: %zu patches, %zu back or front, %zu unsafe%s%s\n", o->label,
+               t->exact, t->exact_decided, t->exact_unsafe, t->exact_unsafe ? "; first: " : "",
+               t->first_exact);
+        snprintf(name, sizeof name, "%s: on exact data no back or front is unsafe", o->label);
+        if (ref->certified)
+            ok &= check(t->exact_unsafe == 0, name, "%zu are; first: %s", t->exact_unsafe,
+                        t->first_exact);
     }
+    return ok;
+}
+
+int main(int argc, char **argv)
+{
+    static const kref_host host = {"host_refine", ready, run_set, report};
+    tally t;
+    int st;
+    memset(&t, 0, sizeof t);
+    st = kref_host_main(&host, &t, argc, argv);
     free(t.grid);
-    kref_clear(&ref);
-    return check_exit() || !ok;
+    return st ? st : check_exit();
 }

@@ -1,4 +1,6 @@
-/* kref.c: test data and the double-precision reference for executing emitted kernels.
+/* kref.c: test data and the double-precision reference for executing emitted kernels
+ * (tests/kref.h).
+ *
  * The bound on a float32 evaluation is (terms + 16) * 2^-24 times the sum of |monomials|; exact
  * zeros (a plane along a boundary edge collapsed to one point) have bound 0. */
 #include "kref.h"
@@ -1399,15 +1401,18 @@ int kref_start(kref_args *a, kref_ref *r, long *runs, int argc, char **argv, con
     return kref_init_args(r, a) ? 1 : 0;
 }
 
-int kref_run_sets(kref_args *a, kref_ref *r, int argc, char **argv, const char *host,
-                  kref_set_fn fn, void *ctx)
+int kref_host_main(const kref_host *h, void *ctx, int argc, char **argv)
 {
-    int st = kref_start(a, r, NULL, argc, argv, host, 0);
+    kref_args a;
+    kref_ref r;
+    int st = kref_start(&a, &r, NULL, argc, argv, h->name, 0), ok;
     if (st)
         return st;
-    if (kref_each_set(r, a, fn, ctx, NULL)) {
-        kref_clear(r);
+    if ((h->ready && h->ready(ctx, &a, &r)) || kref_each_set(&r, &a, h->set, ctx, NULL)) {
+        kref_clear(&r);
         return 1;
     }
-    return 0;
+    ok = h->report(ctx, &a, &r);
+    kref_clear(&r);
+    return !ok;
 }

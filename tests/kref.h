@@ -223,10 +223,19 @@ int kref_parse_bench_args(kref_args *a, long *runs, int argc, char **argv, const
  * cannot be derived, after a "not ok" line. */
 int kref_start(kref_args *a, kref_ref *r, long *runs, int argc, char **argv, const char *host,
                unsigned need);
-/* kref_start (no --bench), then fn(ctx, r, set) on every set (kref_each_set). Returns 0
- * (kref_clear(r) when done), or kref_start's status, or 1 when a set could not be made or fn
- * returned nonzero (r cleared). */
-int kref_run_sets(kref_args *a, kref_ref *r, int argc, char **argv, const char *host,
-                  kref_set_fn fn, void *ctx);
+/* The steps of a host without --bench around its sets; kref_host_main runs them. */
+typedef struct {
+    const char *name; /* the host's name, for its usage line */
+    /* Before the sets, once the reference is made (NULL: nothing); nonzero stops the run, after
+     * a "not ok" line. */
+    int (*ready)(void *ctx, const kref_args *a, const kref_ref *r);
+    kref_set_fn set; /* with every set (kref_each_set) */
+    /* After the sets: prints the host's check lines; 1 if they all passed, else 0. */
+    int (*report)(void *ctx, const kref_args *a, const kref_ref *r);
+} kref_host;
+/* A host's main: kref_start (no --bench), h->ready, h->set on every set, h->report, kref_clear;
+ * a and r live until it returns. Returns kref_start's status, 1 when ready or a set stopped the
+ * run or the report failed, else 0. The host's own check lines count in its own check_exit(). */
+int kref_host_main(const kref_host *h, void *ctx, int argc, char **argv);
 
 #endif

@@ -73,6 +73,13 @@ for a in "help" "help verify" "help vectors" "verify --help" "vectors -h"; do
     "$P" $a >"$tmp/out" 2>"$tmp/err" && cmp -s "$tmp/out" "$tmp/help" && [ ! -s "$tmp/err" ] &&
         ok "ptpgen $a prints the usage, exit 0" || notok "ptpgen $a prints the usage" "$(head -2 "$tmp/out" "$tmp/err")"
 done
+# --help describes exactly the options of README.md's option table (README "Command line").
+readme_opts=$(sed -n '/^## Command line/,/^## The JSON document/p' README.md | grep '^| `' | cut -d'|' -f2 |
+    grep -o -- '--[a-z-]*' | sort -u | tr '\n' ' ')
+help_opts=$(grep -E '^  (-[a-z], )?--' "$tmp/help" | grep -o -- '--[a-z-]*' | sort -u | tr '\n' ' ')
+[ -n "$help_opts" ] && [ "$readme_opts" = "$help_opts" ] &&
+    ok "--help describes the options of README.md's option table, no more, no fewer" ||
+    notok "--help describes the options of README.md's option table" "README: $readme_opts; --help: $help_opts"
 expect_fail "help with an unknown topic" 2 "help takes verify, vectors or nothing, not 'foo'" help foo
 expect_fail "help with two topics" 2 "help takes verify, vectors or nothing, not 'x'" help verify x
 "$P" --version >"$tmp/out" 2>&1 && grep -Eq '^ptpgen [0-9]+\.[0-9]+\.[0-9]+$' "$tmp/out" && ok "--version" ||

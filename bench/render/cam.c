@@ -2,33 +2,17 @@
  * clip-space alpha (README, "Which alpha"), and the overview camera. */
 #include "cam.h"
 
+#include "vec3.h"
+
 #include <math.h>
 #include <string.h>
 
 #define CAM_PI 3.14159265358979323846
 
-static void sub3(double r[3], const double a[3], const double b[3])
-{
-    for (int i = 0; i < 3; i++)
-        r[i] = a[i] - b[i];
-}
-
-static void cross3(double r[3], const double a[3], const double b[3])
-{
-    r[0] = a[1] * b[2] - a[2] * b[1];
-    r[1] = a[2] * b[0] - a[0] * b[2];
-    r[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /* Scales a to unit length; 0, or -1 for a (near) zero vector. */
 static int unit3(double a[3])
 {
-    double l = sqrt(dot3(a, a));
+    double l = sqrt(vec3_dot(a, a));
     if (!(l > 1e-300))
         return -1;
     for (int i = 0; i < 3; i++)
@@ -70,22 +54,22 @@ static int view_matrix(cam_mat *v, const double eye[3], const double target[3],
                        const double up[3])
 {
     double f[3], s[3], u[3];
-    sub3(f, target, eye);
+    vec3_sub(f, target, eye);
     if (unit3(f))
         return -1;
-    cross3(s, f, up);
+    vec3_cross(s, f, up);
     if (unit3(s))
         return -1;
-    cross3(u, s, f);
+    vec3_cross(u, s, f);
     memset(v, 0, sizeof *v);
     for (int i = 0; i < 3; i++) {
         v->m[0][i] = s[i];
         v->m[1][i] = u[i];
         v->m[2][i] = -f[i];
     }
-    v->m[0][3] = -dot3(s, eye);
-    v->m[1][3] = -dot3(u, eye);
-    v->m[2][3] = dot3(f, eye);
+    v->m[0][3] = -vec3_dot(s, eye);
+    v->m[1][3] = -vec3_dot(u, eye);
+    v->m[2][3] = vec3_dot(f, eye);
     v->m[3][3] = 1;
     return 0;
 }
@@ -109,8 +93,8 @@ int cam_look(cam_view *c, const double eye[3], const double target[3], const dou
     memset(c, 0, sizeof *c);
     if (view_matrix(&c->view, eye, target, up))
         return -1;
-    sub3(d, eye, center);
-    dist = sqrt(dot3(d, d));
+    vec3_sub(d, eye, center);
+    dist = sqrt(vec3_dot(d, d));
     c->far = dist + 1.01 * radius;
     c->near = dist - 1.01 * radius;
     if (c->near < c->far / 1000)
@@ -129,10 +113,10 @@ int cam_overview(cam_view *ov, const cam_view *c, const double up[3], double asp
     const double fov = 40;
     double d[3], side[3], eye[3], dist = 1.1 * radius / sin(fov * CAM_PI / 360);
     double u[3] = {up[0], up[1], up[2]};
-    sub3(d, c->eye, center);
+    vec3_sub(d, c->eye, center);
     if (unit3(d) || unit3(u))
         return -1;
-    cross3(side, u, d);
+    vec3_cross(side, u, d);
     if (unit3(side))
         memcpy(side, d, sizeof side);
     for (int i = 0; i < 3; i++)

@@ -21,7 +21,8 @@ static void usage_targets(sbuf *o)
     }
 }
 
-void cli_usage(sbuf *o)
+/* The synopsis of every command and what ptpgen derives. */
+static void usage_synopsis(sbuf *o)
 {
     sbuf_puts(o,
         "usage: ptpgen --degree N|NxM [--domain quad|triangle] [--target T] [--space clip|world]\n"
@@ -38,7 +39,13 @@ void cli_usage(sbuf *o)
         "T = cross4(B, dB/du, dB/dv) of a Bezier patch of bidegree NxM (N along u) or of a\n"
         "triangular Bezier patch of degree N, and writes them, or a back-patch culling kernel\n"
         "built on them.\n"
-        "\n"
+        "\n");
+}
+
+/* The options, one or more lines each, the targets' from the registry. */
+static void usage_options(sbuf *o)
+{
+    sbuf_puts(o,
         "  --domain D       quad (default): tensor-product patches; triangle: triangular\n"
         "                   patches (every target and option)\n");
     sbuf_printf(o, "  --degree N|NxM   patch bidegree, 1 <= N, M <= %d (N alone means NxN);\n"
@@ -68,13 +75,23 @@ void cli_usage(sbuf *o)
         "                   point (i, j) is i*(M+1)+j, plane (I, J) is I*(3M-1)+J; v-first:\n"
         "                   point j*(N+1)+i, plane J*(3N-1)+I (triangles: (i, j) numbered as\n"
         "                   u-first numbers (j, i))\n"
+        "  --count K        vectors: the number of cases, 1 to %d\n"
+        "  --seed S         vectors: the seed of their random stream, 0 to 2^64 - 1\n"
         "  --format F       vectors: json (default) or c (a C include of the same vectors)\n"
         "  -o, --output F   write to F (atomically) instead of standard output\n"
         "  -h, --help       show this help\n"
         "  --version        show the version\n"
         "  --list-targets   list the targets, one a line: name, file suffix (- for none),\n"
         "                   the options it uses (comma-separated, - for none), description\n"
-        "\n"
+        "\n",
+        CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS, CLI_MAX_COUNT);
+}
+
+void cli_usage(sbuf *o)
+{
+    usage_synopsis(o);
+    usage_options(o);
+    sbuf_puts(o,
         "verify checks a table (the paper's idx/wgt C header with its iwgt, owner and sched_\n"
         "arrays, or ptpgen's json) against the exact derivation, names each problem with its\n"
         "line and lists what it checked and ignored: exit 0 right, 1 wrong, 2 unreadable.\n"
@@ -83,8 +100,7 @@ void cli_usage(sbuf *o)
         "values and classes under both rules, as JSON or a C include; the same seed gives the\n"
         "same bytes.\n"
         "\n"
-        "Exit status: 0 success, 1 failure, 2 usage error.\n",
-        CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS);
+        "Exit status: 0 success, 1 failure, 2 usage error.\n");
 }
 
 /* Parses a thread count: decimal digits only; values past 10^6 are kept as 10^6 + 1 so that

@@ -1,6 +1,5 @@
 /* emit_c_mesh.c: the degree-1 triangle header's indexed-mesh entry points (templates/c/mesh.h):
- * blocks of triangles gathered through the index array into classify_soa, or with AVX-512 or AVX
- * into a fused kernel that performs classify's float operations for degree 1 in registers. */
+ * triangles gathered by index into classify_soa, or (AVX-512, AVX) into a fused register kernel. */
 #include "emit/emit_c_mesh.h"
 #include "emit/fmt.h"
 #include "emit/template.h"

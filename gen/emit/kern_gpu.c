@@ -177,6 +177,13 @@ static int second_look(const out_info *info, const kern_target *g)
     return info->certified && g->vec2;
 }
 
+/* Whether the second look sums its planes again from the rounds' tables (no df_table): the
+ * weights' low parts and the accumulators' low parts acc2 are emitted for it. */
+static int second_look_rounds(const out_info *info, const kern_target *g)
+{
+    return second_look(info, g) && !g->df_table;
+}
+
 /* Into hi the float of w's literal, into lo the float nearest w - hi: hi + lo is w within
  * 2^-47 |w|. */
 static void weight_split(float *hi, float *lo, const rat *w)
@@ -285,7 +292,7 @@ static void put_round(sbuf *o, const tp_table *t, const out_info *info, const ke
         sbuf_printf(o, "%s%s", table_sep(th, 8), lit);
     }
     sbuf_puts(o, g->syntax->table_close);
-    if (second_look(info, g) && !g->df_table)
+    if (second_look_rounds(info, g))
         put_weight_lo(o, t, info, g, r);
     sbuf_puts(o, "\n");
 }
@@ -658,7 +665,7 @@ static void put_shared(sbuf *o, const out_info *info, const kern_target *g, cons
     g->syntax->shared(o, g, indent, g->vec4, "pts", count);
     snprintf(count, sizeof count, "%sQ * %sL", up, up);
     g->syntax->shared(o, g, indent, g->real, "acc", count);
-    if (second_look(info, g) && !g->df_table)
+    if (second_look_rounds(info, g))
         g->syntax->shared(o, g, indent, g->real, "acc2", count);
     snprintf(count, sizeof count, "%sQ * %sP", up, up);
     g->syntax->shared(o, g, indent, g->uint, "flags", count);

@@ -1,6 +1,5 @@
-/* out_json.c: the ptpgen-planes/1 JSON output.
- * One term per line, exact weights as strings, sorted by plane then triple (formatted by hand:
- * this loop is most of the time of a small run). */
+/* out_json.c: the ptpgen-planes/1 JSON output: one term per line, exact weights as strings, sorted
+ * by plane then triple (formatted by hand: this loop is most of the time of a small run). */
 #include "emit/out.h"
 #include "core/i128.h"
 

@@ -457,10 +457,37 @@ static const char *scale_str(char *buf, const scale *s)
     return buf;
 }
 
+/* Writes "{P, a, b, c} is W * cross4(ba, bb, bc) = G * cross4(bq0, bq1, bq2)": term w as
+ * written, and as g reads it with its points in increasing order. */
+static void put_reordered(sbuf *o, const verify_term *w, const gterm *g)
+{
+    char got[RAT_STRLEN + 32], neg[RAT_STRLEN + 32];
+    sbuf_printf(o, "{%d, %d, %d, %d} is %s * cross4(b%d, b%d, b%d) = %s * cross4(b%d, b%d, b%d)",
+                w->plane, w->p[0], w->p[1], w->p[2], verify_weight_str(got, &w->w), w->p[0],
+                w->p[1], w->p[2], verify_weight_str(neg, &g->g), g->q[0], g->q[1], g->q[2]);
+}
+
+/* Writes the rest of the line of a wrong weight: term w (read as g) against exact term x under
+ * r's scale. */
+static void report_weight(sbuf *o, const reading *r, const verify_term *w, const gterm *g,
+                          const tp_term *x)
+{
+    char got[RAT_STRLEN + 32], want[RAT_STRLEN + 32];
+    sbuf_printf(o, "wrong weight: plane %d, cross4(b%d, b%d, b%d): got %s, expected %s",
+                w->plane, w->p[0], w->p[1], w->p[2], verify_weight_str(got, &w->w),
+                expect_str(want, &x->w, &r->s, g->flipped ? -1 : 1, !w->w.exact));
+    if (g->flipped)
+        sbuf_printf(o, " (the points are not in increasing order: that is -1 times the exact "
+                       "term's weight for cross4(b%d, b%d, b%d))", g->q[0], g->q[1], g->q[2]);
+    if (w->wline != w->line)
+        sbuf_printf(o, " (the weight is on line %d)", w->wline);
+    sbuf_puts(o, "\n");
+}
+
 /* Writes one report line for item e. */
 static void report_item(sbuf *o, const ctx *c, const reading *r, const item *e)
 {
-    char got[RAT_STRLEN + 32], neg[RAT_STRLEN + 32], want[RAT_STRLEN + 32];
+    char got[RAT_STRLEN + 32], want[RAT_STRLEN + 32];
     const tp_term *x = e->v >= 0 ? &c->x[r->which][e->v] : NULL;
     const gterm *g = e->kind == P_MISSING ? NULL : &c->g[e->g];
     const verify_term *w = g ? &c->d->terms[g->src] : NULL;
@@ -477,15 +504,7 @@ static void report_item(sbuf *o, const ctx *c, const reading *r, const item *e)
                     w->p[2], verify_weight_str(got, &w->w), g->q[0], g->q[1], g->q[2], g->plane);
         break;
     case P_WEIGHT:
-        sbuf_printf(o, "wrong weight: plane %d, cross4(b%d, b%d, b%d): got %s, expected %s",
-                    w->plane, w->p[0], w->p[1], w->p[2], verify_weight_str(got, &w->w),
-                    expect_str(want, &x->w, &r->s, g->flipped ? -1 : 1, !w->w.exact));
-        if (g->flipped)
-            sbuf_printf(o, " (the points are not in increasing order: that is -1 times the exact "
-                           "term's weight for cross4(b%d, b%d, b%d))", g->q[0], g->q[1], g->q[2]);
-        if (w->wline != w->line)
-            sbuf_printf(o, " (the weight is on line %d)", w->wline);
-        sbuf_puts(o, "\n");
+        report_weight(o, r, w, g, x);
         break;
     case P_PLANE:
         sbuf_printf(o, "wrong plane: %s * cross4(b%d, b%d, b%d) is in plane %d but belongs to "
@@ -497,19 +516,17 @@ static void report_item(sbuf *o, const ctx *c, const reading *r, const item *e)
                     w->plane, w->p[0], w->p[1], w->p[2], e->other);
         break;
     case P_ORDER:
-        sbuf_printf(o, "points not in increasing order flip the sign: {%d, %d, %d, %d} is %s * "
-                       "cross4(b%d, b%d, b%d) = %s * cross4(b%d, b%d, b%d), but the exact term "
-                       "is %s * cross4(b%d, b%d, b%d): write {%d, %d, %d, %d}\n",
-                    w->plane, w->p[0], w->p[1], w->p[2], verify_weight_str(got, &w->w), w->p[0], w->p[1],
-                    w->p[2], verify_weight_str(neg, &g->g), g->q[0], g->q[1], g->q[2],
+        sbuf_puts(o, "points not in increasing order flip the sign: ");
+        put_reordered(o, w, g);
+        sbuf_printf(o, ", but the exact term is %s * cross4(b%d, b%d, b%d): "
+                       "write {%d, %d, %d, %d}\n",
                     expect_str(want, &x->w, &r->s, 1, 0), x->j, x->k, x->l, w->plane, g->q[0],
                     g->q[1], g->q[2]);
         break;
     case N_ORDER_OK:
-        sbuf_printf(o, "note: points not in increasing order: {%d, %d, %d, %d} is %s * "
-                       "cross4(b%d, b%d, b%d) = %s * cross4(b%d, b%d, b%d), the exact term\n",
-                    w->plane, w->p[0], w->p[1], w->p[2], verify_weight_str(got, &w->w), w->p[0], w->p[1],
-                    w->p[2], verify_weight_str(neg, &g->g), g->q[0], g->q[1], g->q[2]);
+        sbuf_puts(o, "note: points not in increasing order: ");
+        put_reordered(o, w, g);
+        sbuf_puts(o, ", the exact term\n");
         break;
     case N_REPEATED:
         sbuf_printf(o, "note: {%d, %d, %d, %d} repeats a point: cross4 with a repeated point is "
