@@ -5,10 +5,9 @@
  * rounding: __fmul_rn is a*b, __fmaf_rn is fmaf (one rounding), and their other adds, subtracts
  * and products are binary32 round to nearest, unfused; denormals are kept (no -ffast-math, no
  * flush to zero). The emulation computes exactly those operations in that order: it is bit for bit
- * what `nvcc -fmad=false` builds. nvcc's default (-fmad=true) also fuses a kernel's plain products
- * with the adds they feed (the rounds' acc += w * term, the world-space eye products, the
- * certified bounds' sums): where a kernel has such products the GPU's values may differ from the
- * emulation's in the last bits.
+ * what nvcc builds. nvcc's default (-fmad=true) would fuse a plain product with the add it feeds,
+ * but the kernels write every float product with __fmul_rn, which it never fuses (test_kernels.sh
+ * checks that the PTX equals that of -fmad=false).
  * A launch runs the blocks one after another (so __shared__, which is static here, is one block's
  * memory), and a block's threads as coroutines: each runs until its next __syncthreads() or its
  * end, then the next thread runs; threadIdx is the running thread's. Even blocks run their threads

@@ -117,6 +117,26 @@ cuda_compile() {
         "$NVCC" -ptx "$1/ptp_$2.cu" -o "$tmp/k.ptx" >>"$tmp/err" 2>&1 &&
         grep -q "\.entry ptp_${2}_classify" "$tmp/k.ptx"
 }
+# cuda_no_fmad LABEL DIR D: nvcc's default build (-fmad=true) of DIR/ptp_D.cu, whose PTX
+# cuda_compile left in $tmp/k.ptx, contracts none of its products into an FMA: its PTX is that
+# of -fmad=false but for the rounding modifier .rn (which -fmad=false puts on every add, sub and
+# mul; the default only on the kernel's __fmul_rn), so its fma.rn.f32 are the kernel's own
+# __fmaf_rn; and it has no mul.f32 without .rn, which ptxas could still fuse with an add.
+cuda_no_fmad() {
+    local n f
+    if ! "$NVCC" -ptx -fmad=false "$2/ptp_$3.cu" -o "$tmp/k_nofmad.ptx" 2>"$tmp/err"; then
+        notok "cuda $1 compiles with nvcc -fmad=false" "$(head -5 "$tmp/err")"
+        return
+    fi
+    n=$(grep -c 'fma\.rn\.f32' "$tmp/k.ptx") f=$(grep -c 'fma\.rn\.f32' "$tmp/k_nofmad.ptx")
+    if cmp -s <(sed -E 's/(add|sub|mul)\.rn\.f32/\1.f32/' "$tmp/k.ptx") \
+        <(sed -E 's/(add|sub|mul)\.rn\.f32/\1.f32/' "$tmp/k_nofmad.ptx") && ! grep -q 'mul\.f32' "$tmp/k.ptx"; then
+        ok "cuda $1: nvcc's default -fmad=true contracts no product (the PTX of -fmad=false, $n fma.rn.f32)"
+    else
+        notok "cuda $1: nvcc's default -fmad=true contracts no product" \
+            "fma.rn.f32 $n by default, $f with -fmad=false; $(grep -c 'mul\.f32' "$tmp/k.ptx") mul.f32 without .rn"
+    fi
+}
 # cuda_host DIR D: builds tests/host_cuda.cu around DIR/ptp_D.cu into $tmp/host_cuda; errors in
 # $tmp/err.
 cuda_host() {
@@ -202,6 +222,7 @@ exercise() {
     if [ -x "$NVCC" ]; then
         if cuda_compile "$dir" $d; then
             ok "cuda $label compiles with nvcc (-c and -ptx, entry ptp_${d}_classify)"
+            cuda_no_fmad "$label" "$dir" $d
             # The host links here and runs wherever a GPU is (it says so when there is none).
             if cuda_host "$dir" $d; then
                 cuda_data cuda
@@ -595,12 +616,13 @@ for space in clip world; do
         if [ -x "$NVCC" ]; then
             if cuda_compile "$dir" 3x3 && cuda_host "$dir" 3x3; then
                 ok "cuda 3x3 $space $kind compiles with nvcc (-c, -ptx and the host)"
+                cuda_no_fmad "3x3 $space $kind" "$dir" 3x3
                 run_exact cuda "$data" "$tmp/host_cuda" --block-threads $PQ --patches-per-block $Q
             else
                 notok "cuda 3x3 $space $kind compiles with nvcc" "$(grep -m3 -i error "$tmp/err")"
             fi
         fi
-        # CUDA emulated on the CPU: the same float operations as on a GPU built with -fmad=false.
+        # CUDA emulated on the CPU: the same float operations as on a GPU (cuda_no_fmad).
         if [ $have_emu = 1 ]; then
             if cuda_emu_host "$dir" 3x3; then
                 run_exact cuda-emu "$data" "$tmp/host_cuda_emu" --block-threads $PQ --patches-per-block $Q
@@ -711,6 +733,7 @@ for space in clip world; do
     if [ -x "$NVCC" ] && [ $space = clip ]; then
         if cuda_compile "$dir" 3x3 && cuda_host "$dir" 3x3; then
             ok "cuda 3x3 $space certified degenerate compiles with nvcc (-c, -ptx and the host)"
+            cuda_no_fmad "3x3 $space certified degenerate" "$dir" 3x3
             gpu_degenerate cuda $space "$tmp/host_cuda" --block-threads $PQ --patches-per-block $Q
         else
             notok "cuda 3x3 $space certified degenerate compiles with nvcc" "$(grep -m3 -i error "$tmp/err")"

@@ -395,6 +395,118 @@ static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const ke
     return !st && info->certified ? put_cert_tables(o, t, info, g, up, err) : st;
 }
 
+/* The target's product format (kern_target.product) split around its operands a and b:
+ * pre a mid b post; the default "%s * %s" is "", " * ", "". */
+typedef struct {
+    char pre[32], mid[16], post[16];
+} prod_parts;
+
+/* Into p the parts of g's product format. */
+static void prod_split(prod_parts *p, const kern_target *g)
+{
+    const char *f = g->product ? g->product : "%s * %s", *a = strstr(f, "%s"), *b = strstr(a + 2, "%s");
+    snprintf(p->pre, sizeof p->pre, "%.*s", (int)(a - f), f);
+    snprintf(p->mid, sizeof p->mid, "%.*s", (int)(b - a - 2), a + 2);
+    snprintf(p->post, sizeof p->post, "%s", b + 2);
+}
+
+/* The end of the operand of s (n bytes) that starts at i: the next operator outside brackets,
+ * " + " or " - " (sum) else " * ", a line break allowed for the space after it; or n. */
+static size_t prod_operand_end(const char *s, size_t i, size_t n, int sum)
+{
+    int depth = 0;
+    for (; i < n; i++) {
+        depth += (s[i] == '(' || s[i] == '[') - (s[i] == ')' || s[i] == ']');
+        if (depth == 0 && s[i] == ' ' && i + 2 < n && (s[i + 2] == ' ' || s[i + 2] == '\n') &&
+            (sum ? s[i + 1] == '+' || s[i + 1] == '-' : s[i + 1] == '*'))
+            return i;
+    }
+    return n;
+}
+
+static void prod_sum(sbuf *o, const prod_parts *p, const char *s, size_t n);
+
+/* A factor s (n bytes): a group (...) has its products rewritten, and loses its parentheses
+ * where it is an operand of a product; anything else is copied. */
+static void prod_factor(sbuf *o, const prod_parts *p, const char *s, size_t n, int operand)
+{
+    int group = n >= 2 && s[0] == '(' && s[n - 1] == ')', depth = 0;
+    size_t i;
+    for (i = 0; group && i + 1 < n; i++) /* the first ( closes only at the end */
+        if ((depth += (s[i] == '(') - (s[i] == ')')) == 0)
+            group = 0;
+    if (!group) {
+        sbuf_printf(o, "%.*s", (int)n, s);
+        return;
+    }
+    sbuf_puts(o, operand ? "" : "(");
+    prod_sum(o, p, s + 1, n - 2);
+    sbuf_puts(o, operand ? "" : ")");
+}
+
+/* A product of factors s (n bytes), left to right: pre pre a mid b post mid c post. */
+static void prod_term(sbuf *o, const prod_parts *p, const char *s, size_t n)
+{
+    size_t i, e, k = 0;
+    for (i = 0; (e = prod_operand_end(s, i, n, 0)) < n; i = e + 3)
+        k++;
+    for (i = 0; i < k; i++)
+        sbuf_puts(o, p->pre);
+    for (i = 0;; i = e + 3) {
+        e = prod_operand_end(s, i, n, 0);
+        sbuf_puts(o, i ? p->mid : "");
+        prod_factor(o, p, s + i, e - i, k > 0);
+        sbuf_puts(o, i ? p->post : "");
+        if (e == n)
+            return;
+    }
+}
+
+/* A sum s (n bytes): its terms' products rewritten, the operators and line breaks kept. */
+static void prod_sum(sbuf *o, const prod_parts *p, const char *s, size_t n)
+{
+    size_t i = 0, e, k;
+    for (;;) {
+        e = prod_operand_end(s, i, n, 1);
+        prod_term(o, p, s + i, e - i);
+        if (e == n)
+            return;
+        for (k = e + 2; k < n && (s[k] == ' ' || s[k] == '\n'); k++)
+            ;
+        sbuf_printf(o, "%.*s", (int)(k - e), s + e);
+        i = k;
+    }
+}
+
+/* Appends src, sums and products of operands (names, calls, bracketed groups) with spaces
+ * around their operators, with every " * " the target's product; the default leaves it as is.
+ * So that nvcc's default build contracts none of a CUDA kernel's products into an FMA. */
+static void put_products(sbuf *o, const kern_target *g, const char *src)
+{
+    prod_parts p;
+    if (!g->product) {
+        sbuf_puts(o, src);
+        return;
+    }
+    prod_split(&p, g);
+    prod_sum(o, &p, src, strlen(src));
+}
+
+/* Declares at indent one local variable initialized to src with the target's products
+ * (put_products). */
+static void put_local_products(sbuf *o, const kern_target *g, const char *indent, const char *type,
+                               const char *name, const char *src)
+{
+    sbuf x;
+    kern_var v = {name, NULL, 0};
+    sbuf_init(&x);
+    put_products(&x, g, src);
+    v.init = x.s ? x.s : "";
+    g->syntax->locals(o, g, indent, type, &v, 1, 0);
+    o->failed |= x.failed;
+    sbuf_clear(&x);
+}
+
 /* Writes to d (512 bytes) det[a b c] of rows p, q, s (components "xyzw"[i]) with the target's
  * products, its lines after the first indented by 8. */
 static void put_det(char *d, const kern_target *g, int p, int q, int s)
@@ -450,7 +562,9 @@ static void put_cross4(sbuf *o, const out_info *info, const kern_target *g)
             x.init = det;
             g->syntax->locals(o, g, "    ", g->real, &x, 1, 1);
         }
-        sbuf_puts(o, "    return e.x * x - e.y * y + e.z * z - e.w * w;\n}\n\n");
+        sbuf_puts(o, "    return ");
+        put_products(o, g, "e.x * x - e.y * y + e.z * z - e.w * w");
+        sbuf_puts(o, ";\n}\n\n");
     }
 }
 
@@ -703,7 +817,12 @@ static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, 
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
     char a[128], b[320], c[320], x[320]; /* up has at most 63 bytes */
+    prod_parts m; /* the weight's product, the line broken after its first operand */
+    size_t k;
     int r;
+    prod_split(&m, g);
+    for (k = strlen(m.mid); k > 0 && m.mid[k - 1] == ' ';)
+        m.mid[--k] = '\0'; /* " * " -> " *" */
     sbuf_printf(o,
                 "    /* Accumulate the planes this thread owns, one round at a time: no other thread\n"
                 "     * touches them. */\n"
@@ -723,12 +842,12 @@ static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, 
     }
     for (r = 0; r < info->sched->rounds; r++) {
         sbuf_printf(o, "    pj = %spj%d[t];\n    kl = %skl%d[t];\n"
-                       "    acc[q * %sL + (pj & 0xffffu)] += %sw%d[t] *\n",
-                    px, r, px, r, up, px, r);
+                       "    acc[q * %sL + (pj & 0xffffu)] += %s%sw%d[t]%s\n",
+                    px, r, px, r, up, m.pre, px, r, m.mid);
         int w = (int)(strlen(px) + strlen(fn));
-        sbuf_printf(o, "        %s%s(%s,%s%*s %s,\n        %*s %s%s);\n", px, fn, a,
+        sbuf_printf(o, "        %s%s(%s,%s%*s %s,\n        %*s %s%s)%s;\n", px, fn, a,
                     differences(info, g) ? "\n        " : "", differences(info, g) ? w : 0, "", b, w,
-                    "", c, info->space == OUT_CLIP ? "" : ", eye");
+                    "", c, info->space == OUT_CLIP ? "" : ", eye", m.post);
     }
     sbuf_puts(o, "\n");
 }
@@ -831,6 +950,18 @@ static void put_extents(sbuf *o, const out_info *info, const kern_target *g, con
     }
 }
 
+/* Appends at indent the head of the test that the patch is too large for the bound (or NaN),
+ * if (!(max(E, 1) * R3 < <up>qmax)), with the target's product. */
+static void put_too_large(sbuf *o, const kern_target *g, const char *indent, const char *up,
+                          const char *qmax)
+{
+    char e[64];
+    snprintf(e, sizeof e, "%s(E, 1.0f) * R3", g->fmax);
+    sbuf_printf(o, "%sif (!(", indent);
+    put_products(o, g, e);
+    sbuf_printf(o, " < %s%s))", up, qmax);
+}
+
 /* --certified: the patch's largest |coordinates| Rx, Ry, (Rz,) Rw, R the largest of them, E the
  * eye's largest |component|, M the largest |monomial| and F the underflow term's factor; patches
  * too large for the bound get flags 3 (never certified). With exact zeros, the collapsed edges of
@@ -840,7 +971,7 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
 {
     const char *ab = g->fabs, *mx = g->fmax, *f = g->real, *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
     char e[512], rc[4][4];
-    kern_var r[4], r3 = {"R3", "R * R * R", 0};
+    kern_var r[4];
     int k, n = (int)strlen(c);
     sbuf_puts(o, "    /* Certified: the patch's largest |coordinates| and the eye's bound the errors. */\n");
     for (k = 0; k < n; k++) {
@@ -871,12 +1002,12 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
                  mx, ab, ab);
     }
     put_local(o, g, f, "E", e, 0);
-    g->syntax->locals(o, g, "    ", f, &r3, 1, 0);
+    put_local_products(o, g, "    ", f, "R3", "R * R * R");
     put_extents(o, info, g, up, c, n, 2);
     put_monomial_max(e, info, g);
-    put_local(o, g, f, "M", e, 0);
-    put_local(o, g, f, "F", "(1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E)", 0);
-    sbuf_printf(o, "    if (!(%s(E, 1.0f) * R3 < %sQMAX))", mx, up);
+    put_local_products(o, g, "    ", f, "M", e);
+    put_local_products(o, g, "    ", f, "F", "(1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E)");
+    put_too_large(o, g, "    ", up, "QMAX");
     put_then(o, g);
     sbuf_puts(o, "        f = 3u; /* too large for the bound, or NaN: never certified */\n");
     put_end(o, g, "    ");
@@ -899,6 +1030,20 @@ static void put_keep(sbuf *o, const out_info *info, const kern_target *g, const 
     g->syntax->locals(o, g, indent, g->uint, &(kern_var){"keep", e, 0}, 1, 0);
 }
 
+/* Into x (initialized here; the caller clears it) the first look's certified flags of the
+ * plane: flags(d, tau_k[plane] * M + tau_f[plane] * F) (and keep), with the target's products.
+ * Returns its text. */
+static const char *first_flags(sbuf *x, const out_info *info, const kern_target *g)
+{
+    char e[160];
+    snprintf(e, sizeof e, "%stau_k[plane] * M + %stau_f[plane] * F", info->prefix, info->prefix);
+    sbuf_init(x);
+    sbuf_printf(x, "%sflags(d, ", info->prefix);
+    put_products(x, g, e);
+    sbuf_printf(x, ")%s", exact_zeros(info) ? " & keep" : "");
+    return x->s ? x->s : "";
+}
+
 /* With the second look, a plane's certified flags fp and plain flags pp: into f and pf, and
  * where they differ (the bound does not clear where the plain sign decides) the plane's bit in
  * redo (its place in own_plane after own_start[t]), else fp into fd. */
@@ -906,13 +1051,15 @@ static void put_split_flags(sbuf *o, const out_info *info, const kern_target *g)
 {
     const char *px = info->prefix, *keep = exact_zeros(info) ? " & keep" : "";
     char e[256];
-    kern_var v[2] = {{"fp", e, 0}, {"pp", NULL, 0}};
+    sbuf fp;
+    kern_var v[2] = {{"fp", first_flags(&fp, info, g), 0}, {"pp", NULL, 0}};
     char pp[128];
-    snprintf(e, sizeof e, "%sflags(d, %stau_k[plane] * M + %stau_f[plane] * F)%s", px, px, px, keep);
     snprintf(pp, sizeof pp, "%sflags(d, 0.0f)%s", px, keep);
     v[1].init = pp;
     g->syntax->locals(o, g, "        ", g->uint, v, 1, 0);
     g->syntax->locals(o, g, "        ", g->uint, v + 1, 1, 0);
+    o->failed |= fp.failed;
+    sbuf_clear(&fp);
     snprintf(e, sizeof e, "1u << (i - %sown_start[t])", px);
     g->syntax->select(pp, sizeof pp, "fp != pp", e, "0u");
     sbuf_printf(o, "        f |= fp;\n        pf |= pp;\n        redo |= %s;\n", pp);
@@ -925,6 +1072,7 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
 {
     const char *px = info->prefix;
     char e[256];
+    sbuf x;
     sbuf_printf(o,
                 "    /* The values and signs of the owned planes; then one thread combines the patch's. */\n"
                 "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n",
@@ -932,7 +1080,7 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
     snprintf(e, sizeof e, "%sown_plane[i]", px);
     g->syntax->locals(o, g, "        ", g->uint, &(kern_var){"plane", e, 0}, 1, 0);
     snprintf(e, sizeof e, "%sacc[q * %sL + plane]", info->space == OUT_CLIP ? "eye.z * " : "", up);
-    g->syntax->locals(o, g, "        ", g->real, &(kern_var){"d", e, 0}, 1, 0);
+    put_local_products(o, g, "        ", g->real, "d", e);
     if (info->planes) {
         sbuf_printf(o, "        if (%slive)", g->planes_buffer ? "" : "planes && ");
         put_then(o, g);
@@ -943,10 +1091,11 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
         put_keep(o, info, g, "        ", "plane");
     if (second_look(info, g))
         put_split_flags(o, info, g);
-    else if (info->certified)
-        sbuf_printf(o, "        f |= %sflags(d, %stau_k[plane] * M + %stau_f[plane] * F)%s;\n", px, px, px,
-                    exact_zeros(info) ? " & keep" : "");
-    else
+    else if (info->certified) {
+        sbuf_printf(o, "        f |= %s;\n", first_flags(&x, info, g));
+        o->failed |= x.failed;
+        sbuf_clear(&x);
+    } else
         sbuf_printf(o, "        f |= %sflags(d);\n", px);
     sbuf_puts(o, "    }\n");
 }
@@ -1031,7 +1180,7 @@ static void put_df_sum(sbuf *o, const out_info *info, const kern_target *g, cons
 static void put_second_look(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix;
-    char a[160], b[160];
+    char a[160], b[160], e[256];
     kern_var j = {"j", NULL, 1}, s = {"s", NULL, 1};
     put_again(o, g, up);
     sbuf_puts(o, "    if (again) {\n");
@@ -1040,7 +1189,8 @@ static void put_second_look(sbuf *o, const out_info *info, const kern_target *g,
         g->syntax->locals(o, g, "        ", g->uint, &j, 1, 0);
     else
         put_df_accumulate(o, info, g, up);
-    sbuf_printf(o, "        f = fd;\n        if (!(%s(E, 1.0f) * R3 < %sQMAX2))", g->fmax, up);
+    sbuf_puts(o, "        f = fd;\n");
+    put_too_large(o, g, "        ", up, "QMAX2");
     put_then(o, g);
     sbuf_puts(o, "            f = 3u;\n");
     put_end(o, g, "        ");
@@ -1062,10 +1212,11 @@ static void put_second_look(sbuf *o, const out_info *info, const kern_target *g,
     snprintf(b, sizeof b, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "            ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? b : "s", 0}, 1, 0);
-    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[plane] * M + %stau2_f[plane] * F +\n"
-                   "                2.0f * %s(d.y)) & mine * %s;\n"
-                   "        }\n    }\n",
-                px, px, px, g->fabs, exact_zeros(info) ? "keep" : "3u");
+    snprintf(e, sizeof e, "%stau2_k[plane] * M + %stau2_f[plane] * F +\n                2.0f * %s(d.y)", px,
+             px, g->fabs);
+    sbuf_printf(o, "            f |= %sflags(d.x, ", px);
+    put_products(o, g, e);
+    sbuf_printf(o, ") & mine * %s;\n        }\n    }\n", exact_zeros(info) ? "keep" : "3u");
 }
 
 /* The end: the threads' flags through shared memory, and thread 0 of a patch writes its class. */

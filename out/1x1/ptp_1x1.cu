@@ -89,14 +89,14 @@ ptp_1x1_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, uns
         acc[q * PTP_1X1_L + ptp_1x1_own_plane[i]] = 0.0f;
     pj = ptp_1x1_pj0[t];
     kl = ptp_1x1_kl0[t];
-    acc[q * PTP_1X1_L + (pj & 0xffffu)] += ptp_1x1_w0[t] *
+    acc[q * PTP_1X1_L + (pj & 0xffffu)] += __fmul_rn(ptp_1x1_w0[t],
         ptp_1x1_cross4z(pts[q * PTP_1X1_K + (pj >> 16)], pts[q * PTP_1X1_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X1_K + (kl >> 16)]);
+                        pts[q * PTP_1X1_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_1x1_own_start[t]; i < ptp_1x1_own_start[t + 1u]; i++) {
         unsigned plane = ptp_1x1_own_plane[i];
-        float d = eye.z * acc[q * PTP_1X1_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_1X1_L + plane]);
         f |= ptp_1x1_flags(d);
     }
     flags[q * PTP_1X1_P + t] = f;

@@ -144,39 +144,39 @@ ptp_1x3_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, uns
         acc[q * PTP_1X3_L + ptp_1x3_own_plane[i]] = 0.0f;
     pj = ptp_1x3_pj0[t];
     kl = ptp_1x3_kl0[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w0[t] *
+    acc[q * PTP_1X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_1x3_w0[t],
         ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
+                        pts[q * PTP_1X3_K + (kl >> 16)]));
     pj = ptp_1x3_pj1[t];
     kl = ptp_1x3_kl1[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w1[t] *
+    acc[q * PTP_1X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_1x3_w1[t],
         ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
+                        pts[q * PTP_1X3_K + (kl >> 16)]));
     pj = ptp_1x3_pj2[t];
     kl = ptp_1x3_kl2[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w2[t] *
+    acc[q * PTP_1X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_1x3_w2[t],
         ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
+                        pts[q * PTP_1X3_K + (kl >> 16)]));
     pj = ptp_1x3_pj3[t];
     kl = ptp_1x3_kl3[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w3[t] *
+    acc[q * PTP_1X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_1x3_w3[t],
         ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
+                        pts[q * PTP_1X3_K + (kl >> 16)]));
     pj = ptp_1x3_pj4[t];
     kl = ptp_1x3_kl4[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w4[t] *
+    acc[q * PTP_1X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_1x3_w4[t],
         ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
+                        pts[q * PTP_1X3_K + (kl >> 16)]));
     pj = ptp_1x3_pj5[t];
     kl = ptp_1x3_kl5[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w5[t] *
+    acc[q * PTP_1X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_1x3_w5[t],
         ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
+                        pts[q * PTP_1X3_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_1x3_own_start[t]; i < ptp_1x3_own_start[t + 1u]; i++) {
         unsigned plane = ptp_1x3_own_plane[i];
-        float d = eye.z * acc[q * PTP_1X3_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_1X3_L + plane]);
         f |= ptp_1x3_flags(d);
     }
     flags[q * PTP_1X3_P + t] = f;

@@ -189,59 +189,59 @@ ptp_2x2_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, uns
         acc[q * PTP_2X2_L + ptp_2x2_own_plane[i]] = 0.0f;
     pj = ptp_2x2_pj0[t];
     kl = ptp_2x2_kl0[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w0[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w0[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
     pj = ptp_2x2_pj1[t];
     kl = ptp_2x2_kl1[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w1[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w1[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
     pj = ptp_2x2_pj2[t];
     kl = ptp_2x2_kl2[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w2[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w2[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
     pj = ptp_2x2_pj3[t];
     kl = ptp_2x2_kl3[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w3[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w3[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
     pj = ptp_2x2_pj4[t];
     kl = ptp_2x2_kl4[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w4[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w4[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
     pj = ptp_2x2_pj5[t];
     kl = ptp_2x2_kl5[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w5[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w5[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
     pj = ptp_2x2_pj6[t];
     kl = ptp_2x2_kl6[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w6[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w6[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
     pj = ptp_2x2_pj7[t];
     kl = ptp_2x2_kl7[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w7[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w7[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
     pj = ptp_2x2_pj8[t];
     kl = ptp_2x2_kl8[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w8[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w8[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
     pj = ptp_2x2_pj9[t];
     kl = ptp_2x2_kl9[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += ptp_2x2_w9[t] *
+    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w9[t],
         ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]);
+                        pts[q * PTP_2X2_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_2x2_own_start[t]; i < ptp_2x2_own_start[t + 1u]; i++) {
         unsigned plane = ptp_2x2_own_plane[i];
-        float d = eye.z * acc[q * PTP_2X2_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_2X2_L + plane]);
         f |= ptp_2x2_flags(d);
     }
     flags[q * PTP_2X2_P + t] = f;

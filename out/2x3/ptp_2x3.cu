@@ -263,74 +263,74 @@ ptp_2x3_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, uns
         acc[q * PTP_2X3_L + ptp_2x3_own_plane[i]] = 0.0f;
     pj = ptp_2x3_pj0[t];
     kl = ptp_2x3_kl0[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w0[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w0[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj1[t];
     kl = ptp_2x3_kl1[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w1[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w1[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj2[t];
     kl = ptp_2x3_kl2[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w2[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w2[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj3[t];
     kl = ptp_2x3_kl3[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w3[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w3[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj4[t];
     kl = ptp_2x3_kl4[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w4[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w4[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj5[t];
     kl = ptp_2x3_kl5[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w5[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w5[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj6[t];
     kl = ptp_2x3_kl6[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w6[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w6[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj7[t];
     kl = ptp_2x3_kl7[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w7[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w7[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj8[t];
     kl = ptp_2x3_kl8[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w8[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w8[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj9[t];
     kl = ptp_2x3_kl9[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w9[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w9[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj10[t];
     kl = ptp_2x3_kl10[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w10[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w10[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj11[t];
     kl = ptp_2x3_kl11[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w11[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w11[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
     pj = ptp_2x3_pj12[t];
     kl = ptp_2x3_kl12[t];
-    acc[q * PTP_2X3_L + (pj & 0xffffu)] += ptp_2x3_w12[t] *
+    acc[q * PTP_2X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x3_w12[t],
         ptp_2x3_cross4z(pts[q * PTP_2X3_K + (pj >> 16)], pts[q * PTP_2X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X3_K + (kl >> 16)]);
+                        pts[q * PTP_2X3_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_2x3_own_start[t]; i < ptp_2x3_own_start[t + 1u]; i++) {
         unsigned plane = ptp_2x3_own_plane[i];
-        float d = eye.z * acc[q * PTP_2X3_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_2X3_L + plane]);
         f |= ptp_2x3_flags(d);
     }
     flags[q * PTP_2X3_P + t] = f;

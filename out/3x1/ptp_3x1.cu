@@ -144,39 +144,39 @@ ptp_3x1_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, uns
         acc[q * PTP_3X1_L + ptp_3x1_own_plane[i]] = 0.0f;
     pj = ptp_3x1_pj0[t];
     kl = ptp_3x1_kl0[t];
-    acc[q * PTP_3X1_L + (pj & 0xffffu)] += ptp_3x1_w0[t] *
+    acc[q * PTP_3X1_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x1_w0[t],
         ptp_3x1_cross4z(pts[q * PTP_3X1_K + (pj >> 16)], pts[q * PTP_3X1_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X1_K + (kl >> 16)]);
+                        pts[q * PTP_3X1_K + (kl >> 16)]));
     pj = ptp_3x1_pj1[t];
     kl = ptp_3x1_kl1[t];
-    acc[q * PTP_3X1_L + (pj & 0xffffu)] += ptp_3x1_w1[t] *
+    acc[q * PTP_3X1_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x1_w1[t],
         ptp_3x1_cross4z(pts[q * PTP_3X1_K + (pj >> 16)], pts[q * PTP_3X1_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X1_K + (kl >> 16)]);
+                        pts[q * PTP_3X1_K + (kl >> 16)]));
     pj = ptp_3x1_pj2[t];
     kl = ptp_3x1_kl2[t];
-    acc[q * PTP_3X1_L + (pj & 0xffffu)] += ptp_3x1_w2[t] *
+    acc[q * PTP_3X1_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x1_w2[t],
         ptp_3x1_cross4z(pts[q * PTP_3X1_K + (pj >> 16)], pts[q * PTP_3X1_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X1_K + (kl >> 16)]);
+                        pts[q * PTP_3X1_K + (kl >> 16)]));
     pj = ptp_3x1_pj3[t];
     kl = ptp_3x1_kl3[t];
-    acc[q * PTP_3X1_L + (pj & 0xffffu)] += ptp_3x1_w3[t] *
+    acc[q * PTP_3X1_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x1_w3[t],
         ptp_3x1_cross4z(pts[q * PTP_3X1_K + (pj >> 16)], pts[q * PTP_3X1_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X1_K + (kl >> 16)]);
+                        pts[q * PTP_3X1_K + (kl >> 16)]));
     pj = ptp_3x1_pj4[t];
     kl = ptp_3x1_kl4[t];
-    acc[q * PTP_3X1_L + (pj & 0xffffu)] += ptp_3x1_w4[t] *
+    acc[q * PTP_3X1_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x1_w4[t],
         ptp_3x1_cross4z(pts[q * PTP_3X1_K + (pj >> 16)], pts[q * PTP_3X1_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X1_K + (kl >> 16)]);
+                        pts[q * PTP_3X1_K + (kl >> 16)]));
     pj = ptp_3x1_pj5[t];
     kl = ptp_3x1_kl5[t];
-    acc[q * PTP_3X1_L + (pj & 0xffffu)] += ptp_3x1_w5[t] *
+    acc[q * PTP_3X1_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x1_w5[t],
         ptp_3x1_cross4z(pts[q * PTP_3X1_K + (pj >> 16)], pts[q * PTP_3X1_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X1_K + (kl >> 16)]);
+                        pts[q * PTP_3X1_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_3x1_own_start[t]; i < ptp_3x1_own_start[t + 1u]; i++) {
         unsigned plane = ptp_3x1_own_plane[i];
-        float d = eye.z * acc[q * PTP_3X1_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_3X1_L + plane]);
         f |= ptp_3x1_flags(d);
     }
     flags[q * PTP_3X1_P + t] = f;

@@ -544,174 +544,174 @@ ptp_3x3_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, uns
         acc[q * PTP_3X3_L + ptp_3x3_own_plane[i]] = 0.0f;
     pj = ptp_3x3_pj0[t];
     kl = ptp_3x3_kl0[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w0[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w0[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj1[t];
     kl = ptp_3x3_kl1[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w1[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w1[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj2[t];
     kl = ptp_3x3_kl2[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w2[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w2[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj3[t];
     kl = ptp_3x3_kl3[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w3[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w3[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj4[t];
     kl = ptp_3x3_kl4[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w4[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w4[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj5[t];
     kl = ptp_3x3_kl5[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w5[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w5[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj6[t];
     kl = ptp_3x3_kl6[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w6[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w6[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj7[t];
     kl = ptp_3x3_kl7[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w7[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w7[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj8[t];
     kl = ptp_3x3_kl8[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w8[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w8[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj9[t];
     kl = ptp_3x3_kl9[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w9[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w9[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj10[t];
     kl = ptp_3x3_kl10[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w10[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w10[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj11[t];
     kl = ptp_3x3_kl11[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w11[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w11[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj12[t];
     kl = ptp_3x3_kl12[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w12[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w12[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj13[t];
     kl = ptp_3x3_kl13[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w13[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w13[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj14[t];
     kl = ptp_3x3_kl14[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w14[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w14[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj15[t];
     kl = ptp_3x3_kl15[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w15[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w15[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj16[t];
     kl = ptp_3x3_kl16[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w16[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w16[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj17[t];
     kl = ptp_3x3_kl17[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w17[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w17[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj18[t];
     kl = ptp_3x3_kl18[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w18[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w18[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj19[t];
     kl = ptp_3x3_kl19[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w19[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w19[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj20[t];
     kl = ptp_3x3_kl20[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w20[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w20[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj21[t];
     kl = ptp_3x3_kl21[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w21[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w21[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj22[t];
     kl = ptp_3x3_kl22[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w22[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w22[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj23[t];
     kl = ptp_3x3_kl23[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w23[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w23[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj24[t];
     kl = ptp_3x3_kl24[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w24[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w24[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj25[t];
     kl = ptp_3x3_kl25[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w25[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w25[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj26[t];
     kl = ptp_3x3_kl26[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w26[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w26[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj27[t];
     kl = ptp_3x3_kl27[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w27[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w27[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj28[t];
     kl = ptp_3x3_kl28[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w28[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w28[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj29[t];
     kl = ptp_3x3_kl29[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w29[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w29[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj30[t];
     kl = ptp_3x3_kl30[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w30[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w30[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj31[t];
     kl = ptp_3x3_kl31[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w31[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w31[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
     pj = ptp_3x3_pj32[t];
     kl = ptp_3x3_kl32[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w32[t] *
+    acc[q * PTP_3X3_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x3_w32[t],
         ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
+                        pts[q * PTP_3X3_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_3x3_own_start[t]; i < ptp_3x3_own_start[t + 1u]; i++) {
         unsigned plane = ptp_3x3_own_plane[i];
-        float d = eye.z * acc[q * PTP_3X3_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_3X3_L + plane]);
         f |= ptp_3x3_flags(d);
     }
     flags[q * PTP_3X3_P + t] = f;

@@ -1447,349 +1447,349 @@ ptp_4x4_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, uns
         acc[q * PTP_4X4_L + ptp_4x4_own_plane[i]] = 0.0f;
     pj = ptp_4x4_pj0[t];
     kl = ptp_4x4_kl0[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w0[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w0[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj1[t];
     kl = ptp_4x4_kl1[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w1[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w1[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj2[t];
     kl = ptp_4x4_kl2[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w2[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w2[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj3[t];
     kl = ptp_4x4_kl3[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w3[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w3[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj4[t];
     kl = ptp_4x4_kl4[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w4[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w4[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj5[t];
     kl = ptp_4x4_kl5[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w5[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w5[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj6[t];
     kl = ptp_4x4_kl6[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w6[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w6[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj7[t];
     kl = ptp_4x4_kl7[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w7[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w7[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj8[t];
     kl = ptp_4x4_kl8[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w8[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w8[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj9[t];
     kl = ptp_4x4_kl9[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w9[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w9[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj10[t];
     kl = ptp_4x4_kl10[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w10[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w10[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj11[t];
     kl = ptp_4x4_kl11[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w11[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w11[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj12[t];
     kl = ptp_4x4_kl12[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w12[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w12[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj13[t];
     kl = ptp_4x4_kl13[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w13[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w13[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj14[t];
     kl = ptp_4x4_kl14[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w14[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w14[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj15[t];
     kl = ptp_4x4_kl15[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w15[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w15[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj16[t];
     kl = ptp_4x4_kl16[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w16[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w16[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj17[t];
     kl = ptp_4x4_kl17[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w17[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w17[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj18[t];
     kl = ptp_4x4_kl18[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w18[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w18[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj19[t];
     kl = ptp_4x4_kl19[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w19[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w19[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj20[t];
     kl = ptp_4x4_kl20[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w20[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w20[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj21[t];
     kl = ptp_4x4_kl21[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w21[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w21[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj22[t];
     kl = ptp_4x4_kl22[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w22[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w22[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj23[t];
     kl = ptp_4x4_kl23[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w23[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w23[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj24[t];
     kl = ptp_4x4_kl24[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w24[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w24[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj25[t];
     kl = ptp_4x4_kl25[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w25[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w25[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj26[t];
     kl = ptp_4x4_kl26[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w26[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w26[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj27[t];
     kl = ptp_4x4_kl27[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w27[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w27[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj28[t];
     kl = ptp_4x4_kl28[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w28[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w28[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj29[t];
     kl = ptp_4x4_kl29[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w29[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w29[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj30[t];
     kl = ptp_4x4_kl30[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w30[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w30[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj31[t];
     kl = ptp_4x4_kl31[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w31[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w31[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj32[t];
     kl = ptp_4x4_kl32[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w32[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w32[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj33[t];
     kl = ptp_4x4_kl33[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w33[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w33[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj34[t];
     kl = ptp_4x4_kl34[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w34[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w34[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj35[t];
     kl = ptp_4x4_kl35[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w35[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w35[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj36[t];
     kl = ptp_4x4_kl36[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w36[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w36[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj37[t];
     kl = ptp_4x4_kl37[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w37[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w37[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj38[t];
     kl = ptp_4x4_kl38[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w38[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w38[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj39[t];
     kl = ptp_4x4_kl39[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w39[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w39[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj40[t];
     kl = ptp_4x4_kl40[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w40[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w40[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj41[t];
     kl = ptp_4x4_kl41[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w41[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w41[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj42[t];
     kl = ptp_4x4_kl42[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w42[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w42[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj43[t];
     kl = ptp_4x4_kl43[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w43[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w43[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj44[t];
     kl = ptp_4x4_kl44[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w44[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w44[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj45[t];
     kl = ptp_4x4_kl45[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w45[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w45[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj46[t];
     kl = ptp_4x4_kl46[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w46[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w46[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj47[t];
     kl = ptp_4x4_kl47[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w47[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w47[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj48[t];
     kl = ptp_4x4_kl48[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w48[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w48[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj49[t];
     kl = ptp_4x4_kl49[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w49[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w49[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj50[t];
     kl = ptp_4x4_kl50[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w50[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w50[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj51[t];
     kl = ptp_4x4_kl51[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w51[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w51[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj52[t];
     kl = ptp_4x4_kl52[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w52[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w52[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj53[t];
     kl = ptp_4x4_kl53[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w53[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w53[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj54[t];
     kl = ptp_4x4_kl54[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w54[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w54[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj55[t];
     kl = ptp_4x4_kl55[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w55[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w55[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj56[t];
     kl = ptp_4x4_kl56[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w56[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w56[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj57[t];
     kl = ptp_4x4_kl57[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w57[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w57[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj58[t];
     kl = ptp_4x4_kl58[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w58[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w58[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj59[t];
     kl = ptp_4x4_kl59[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w59[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w59[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj60[t];
     kl = ptp_4x4_kl60[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w60[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w60[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj61[t];
     kl = ptp_4x4_kl61[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w61[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w61[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj62[t];
     kl = ptp_4x4_kl62[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w62[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w62[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj63[t];
     kl = ptp_4x4_kl63[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w63[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w63[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj64[t];
     kl = ptp_4x4_kl64[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w64[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w64[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj65[t];
     kl = ptp_4x4_kl65[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w65[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w65[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj66[t];
     kl = ptp_4x4_kl66[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w66[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w66[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
     pj = ptp_4x4_pj67[t];
     kl = ptp_4x4_kl67[t];
-    acc[q * PTP_4X4_L + (pj & 0xffffu)] += ptp_4x4_w67[t] *
+    acc[q * PTP_4X4_L + (pj & 0xffffu)] += __fmul_rn(ptp_4x4_w67[t],
         ptp_4x4_cross4z(pts[q * PTP_4X4_K + (pj >> 16)], pts[q * PTP_4X4_K + (kl & 0xffffu)],
-                        pts[q * PTP_4X4_K + (kl >> 16)]);
+                        pts[q * PTP_4X4_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_4x4_own_start[t]; i < ptp_4x4_own_start[t + 1u]; i++) {
         unsigned plane = ptp_4x4_own_plane[i];
-        float d = eye.z * acc[q * PTP_4X4_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_4X4_L + plane]);
         f |= ptp_4x4_flags(d);
     }
     flags[q * PTP_4X4_P + t] = f;

@@ -265,94 +265,94 @@ ptp_tri2_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, un
         acc[q * PTP_TRI2_L + ptp_tri2_own_plane[i]] = 0.0f;
     pj = ptp_tri2_pj0[t];
     kl = ptp_tri2_kl0[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w0[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w0[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj1[t];
     kl = ptp_tri2_kl1[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w1[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w1[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj2[t];
     kl = ptp_tri2_kl2[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w2[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w2[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj3[t];
     kl = ptp_tri2_kl3[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w3[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w3[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj4[t];
     kl = ptp_tri2_kl4[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w4[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w4[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj5[t];
     kl = ptp_tri2_kl5[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w5[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w5[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj6[t];
     kl = ptp_tri2_kl6[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w6[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w6[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj7[t];
     kl = ptp_tri2_kl7[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w7[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w7[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj8[t];
     kl = ptp_tri2_kl8[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w8[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w8[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj9[t];
     kl = ptp_tri2_kl9[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w9[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w9[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj10[t];
     kl = ptp_tri2_kl10[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w10[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w10[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj11[t];
     kl = ptp_tri2_kl11[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w11[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w11[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj12[t];
     kl = ptp_tri2_kl12[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w12[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w12[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj13[t];
     kl = ptp_tri2_kl13[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w13[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w13[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj14[t];
     kl = ptp_tri2_kl14[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w14[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w14[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj15[t];
     kl = ptp_tri2_kl15[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w15[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w15[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
     pj = ptp_tri2_pj16[t];
     kl = ptp_tri2_kl16[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w16[t] *
+    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri2_w16[t],
         ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
+                         pts[q * PTP_TRI2_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_tri2_own_start[t]; i < ptp_tri2_own_start[t + 1u]; i++) {
         unsigned plane = ptp_tri2_own_plane[i];
-        float d = eye.z * acc[q * PTP_TRI2_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_TRI2_L + plane]);
         f |= ptp_tri2_flags(d);
     }
     flags[q * PTP_TRI2_P + t] = f;

@@ -376,144 +376,144 @@ ptp_tri3_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, un
         acc[q * PTP_TRI3_L + ptp_tri3_own_plane[i]] = 0.0f;
     pj = ptp_tri3_pj0[t];
     kl = ptp_tri3_kl0[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w0[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w0[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj1[t];
     kl = ptp_tri3_kl1[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w1[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w1[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj2[t];
     kl = ptp_tri3_kl2[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w2[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w2[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj3[t];
     kl = ptp_tri3_kl3[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w3[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w3[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj4[t];
     kl = ptp_tri3_kl4[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w4[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w4[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj5[t];
     kl = ptp_tri3_kl5[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w5[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w5[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj6[t];
     kl = ptp_tri3_kl6[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w6[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w6[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj7[t];
     kl = ptp_tri3_kl7[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w7[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w7[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj8[t];
     kl = ptp_tri3_kl8[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w8[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w8[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj9[t];
     kl = ptp_tri3_kl9[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w9[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w9[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj10[t];
     kl = ptp_tri3_kl10[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w10[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w10[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj11[t];
     kl = ptp_tri3_kl11[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w11[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w11[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj12[t];
     kl = ptp_tri3_kl12[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w12[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w12[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj13[t];
     kl = ptp_tri3_kl13[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w13[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w13[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj14[t];
     kl = ptp_tri3_kl14[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w14[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w14[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj15[t];
     kl = ptp_tri3_kl15[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w15[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w15[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj16[t];
     kl = ptp_tri3_kl16[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w16[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w16[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj17[t];
     kl = ptp_tri3_kl17[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w17[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w17[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj18[t];
     kl = ptp_tri3_kl18[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w18[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w18[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj19[t];
     kl = ptp_tri3_kl19[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w19[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w19[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj20[t];
     kl = ptp_tri3_kl20[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w20[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w20[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj21[t];
     kl = ptp_tri3_kl21[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w21[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w21[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj22[t];
     kl = ptp_tri3_kl22[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w22[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w22[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj23[t];
     kl = ptp_tri3_kl23[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w23[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w23[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj24[t];
     kl = ptp_tri3_kl24[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w24[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w24[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj25[t];
     kl = ptp_tri3_kl25[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w25[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w25[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
     pj = ptp_tri3_pj26[t];
     kl = ptp_tri3_kl26[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w26[t] *
+    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri3_w26[t],
         ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
+                         pts[q * PTP_TRI3_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_tri3_own_start[t]; i < ptp_tri3_own_start[t + 1u]; i++) {
         unsigned plane = ptp_tri3_own_plane[i];
-        float d = eye.z * acc[q * PTP_TRI3_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_TRI3_L + plane]);
         f |= ptp_tri3_flags(d);
     }
     flags[q * PTP_TRI3_P + t] = f;

@@ -446,139 +446,139 @@ ptp_tri4_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, un
         acc[q * PTP_TRI4_L + ptp_tri4_own_plane[i]] = 0.0f;
     pj = ptp_tri4_pj0[t];
     kl = ptp_tri4_kl0[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w0[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w0[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj1[t];
     kl = ptp_tri4_kl1[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w1[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w1[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj2[t];
     kl = ptp_tri4_kl2[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w2[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w2[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj3[t];
     kl = ptp_tri4_kl3[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w3[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w3[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj4[t];
     kl = ptp_tri4_kl4[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w4[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w4[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj5[t];
     kl = ptp_tri4_kl5[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w5[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w5[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj6[t];
     kl = ptp_tri4_kl6[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w6[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w6[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj7[t];
     kl = ptp_tri4_kl7[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w7[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w7[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj8[t];
     kl = ptp_tri4_kl8[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w8[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w8[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj9[t];
     kl = ptp_tri4_kl9[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w9[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w9[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj10[t];
     kl = ptp_tri4_kl10[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w10[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w10[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj11[t];
     kl = ptp_tri4_kl11[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w11[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w11[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj12[t];
     kl = ptp_tri4_kl12[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w12[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w12[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj13[t];
     kl = ptp_tri4_kl13[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w13[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w13[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj14[t];
     kl = ptp_tri4_kl14[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w14[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w14[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj15[t];
     kl = ptp_tri4_kl15[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w15[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w15[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj16[t];
     kl = ptp_tri4_kl16[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w16[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w16[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj17[t];
     kl = ptp_tri4_kl17[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w17[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w17[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj18[t];
     kl = ptp_tri4_kl18[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w18[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w18[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj19[t];
     kl = ptp_tri4_kl19[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w19[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w19[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj20[t];
     kl = ptp_tri4_kl20[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w20[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w20[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj21[t];
     kl = ptp_tri4_kl21[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w21[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w21[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj22[t];
     kl = ptp_tri4_kl22[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w22[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w22[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj23[t];
     kl = ptp_tri4_kl23[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w23[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w23[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj24[t];
     kl = ptp_tri4_kl24[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w24[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w24[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
     pj = ptp_tri4_pj25[t];
     kl = ptp_tri4_kl25[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w25[t] *
+    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += __fmul_rn(ptp_tri4_w25[t],
         ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
+                         pts[q * PTP_TRI4_K + (kl >> 16)]));
 
     /* The values and signs of the owned planes; then one thread combines the patch's. */
     for (i = ptp_tri4_own_start[t]; i < ptp_tri4_own_start[t + 1u]; i++) {
         unsigned plane = ptp_tri4_own_plane[i];
-        float d = eye.z * acc[q * PTP_TRI4_L + plane];
+        float d = __fmul_rn(eye.z, acc[q * PTP_TRI4_L + plane]);
         f |= ptp_tri4_flags(d);
     }
     flags[q * PTP_TRI4_P + t] = f;
