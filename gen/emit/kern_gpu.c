@@ -315,10 +315,10 @@ static int exact_zeros(const out_info *info)
     return info->certified && info->rule == OUT_DEGENERATE;
 }
 
-/* Whether the terms read differences of points (the target's sub_fenced, --certified). */
+/* Whether the terms read differences of points (the target's diff, --certified). */
 static int differences(const out_info *info, const kern_target *g)
 {
-    return info->certified && g->sub_fenced;
+    return info->certified && g->diff;
 }
 
 /* With exact zeros, the table zero: per plane the boundary edges (bit e) on which every term has
@@ -445,6 +445,20 @@ static void put_cross4(sbuf *o, const out_info *info, const kern_target *g)
         }
         sbuf_puts(o, "    return e.x * x - e.y * y + e.z * z - e.w * w;\n}\n\n");
     }
+}
+
+/* With differences, diff(b, a): b - a from an exact local, each component rounded once and
+ * crossed by no reassociation or contraction (the target's diff). */
+static void put_diff(sbuf *o, const out_info *info, const kern_target *g)
+{
+    kern_param p[2] = {{g->vec4, "b"}, {g->vec4, "a"}};
+    char name[128], e[320];
+    snprintf(name, sizeof name, "%sdiff", info->prefix);
+    snprintf(e, sizeof e, g->diff, "b", "a", "b", "a", "b", "a", "b", "a");
+    sbuf_puts(o, "/* b - a, each component rounded once, as written (the terms' differences of points). */\n");
+    g->syntax->function(o, g, g->vec4, name, p, 2);
+    g->syntax->locals(o, g, "    ", g->vec4, &(kern_var){"d", e, 0}, 1, 1);
+    sbuf_puts(o, "    return d;\n}\n\n");
 }
 
 /* With exact zeros, finite(a): every coordinate of a the kernel reads is finite; and same(a, b):
@@ -695,7 +709,7 @@ static void put_load(sbuf *o, const kern_target *g, const char *up)
 static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    char a[128], b[320], c[320], x[320]; /* up has at most 63 bytes */
+    char a[128], b[320], c[320]; /* up has at most 63 bytes */
     int r;
     sbuf_printf(o,
                 "    /* Accumulate the planes this thread owns, one round at a time: no other thread\n"
@@ -706,13 +720,12 @@ static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, 
     sbuf_printf(o, "        acc[q * %sL + %sown_plane[i]] = 0.0f;\n", up, px);
     put_end(o, g, "    ");
     snprintf(a, sizeof a, "pts[q * %sK + (pj >> 16)]", up);
-    snprintf(b, sizeof b, "pts[q * %sK + (kl & 0xffffu)]", up);
-    snprintf(c, sizeof c, "pts[q * %sK + (kl >> 16)]", up);
     if (differences(info, g)) { /* b_k - b_j and b_l - b_j */
-        snprintf(x, sizeof x, g->sub_fenced, b, a);
-        snprintf(b, sizeof b, "%s", x);
-        snprintf(x, sizeof x, g->sub_fenced, c, a);
-        snprintf(c, sizeof c, "%s", x);
+        snprintf(b, sizeof b, "%sdiff(pts[q * %sK + (kl & 0xffffu)], %s)", px, up, a);
+        snprintf(c, sizeof c, "%sdiff(pts[q * %sK + (kl >> 16)], %s)", px, up, a);
+    } else {
+        snprintf(b, sizeof b, "pts[q * %sK + (kl & 0xffffu)]", up);
+        snprintf(c, sizeof c, "pts[q * %sK + (kl >> 16)]", up);
     }
     for (r = 0; r < info->sched->rounds; r++) {
         sbuf_printf(o, "    pj = %spj%d[t];\n    kl = %skl%d[t];\n"
@@ -774,17 +787,17 @@ static size_t put_diff_monomial(char *e, size_t size, const char *u)
 
 /* Into e (512 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
  * largest |monomial| (clip space); in world space the sum over the eye's components of the
- * largest |monomial| with that component (README: Certified). With differences, a monomial has
- * one coordinate and two differences instead (put_diff_monomial). */
-static void put_monomial_max(char *e, const out_info *info, const kern_target *g)
+ * largest |monomial| with that component (README: Certified). With diff (differences), a
+ * monomial has one coordinate and two differences instead (put_diff_monomial). */
+static void put_monomial_max(char *e, const out_info *info, const kern_target *g, int diff)
 {
     static const char *const other[4] = {"yzw", "xzw", "xyw", "xyz"};
     const char *ab = g->fabs;
     size_t n = 0;
     int c;
-    if (!differences(info, g) && info->space == OUT_CLIP)
+    if (!diff && info->space == OUT_CLIP)
         snprintf(e, 512, "E * (Rx * Ry * Rw)");
-    else if (!differences(info, g))
+    else if (!diff)
         snprintf(e, 512, "(%s(eye.x) * Ry + %s(eye.y) * Rx) * (Rz * Rw) +\n"
                          "        (%s(eye.z) * Rw + %s(eye.w) * Rz) * (Rx * Ry)",
                  ab, ab, ab, ab);
@@ -866,8 +879,12 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
     put_local(o, g, f, "E", e, 0);
     g->syntax->locals(o, g, "    ", f, &r3, 1, 0);
     put_extents(o, info, g, up, c, n, 2);
-    put_monomial_max(e, info, g);
+    put_monomial_max(e, info, g, differences(info, g));
     put_local(o, g, f, "M", e, 0);
+    if (second_look(info, g) && differences(info, g)) { /* the second look reads the points */
+        put_monomial_max(e, info, g, 0);
+        put_local(o, g, f, "M2", e, 0);
+    }
     put_local(o, g, f, "F", "(1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E)", 0);
     sbuf_printf(o, "    if (!(%s(E, 1.0f) * R3 < %sQMAX))", mx, up);
     put_then(o, g);
@@ -1055,10 +1072,10 @@ static void put_second_look(sbuf *o, const out_info *info, const kern_target *g,
     snprintf(b, sizeof b, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "            ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? b : "s", 0}, 1, 0);
-    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[plane] * M + %stau2_f[plane] * F +\n"
+    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[plane] * %s + %stau2_f[plane] * F +\n"
                    "                2.0f * %s(d.y)) & mine * %s;\n"
                    "        }\n    }\n",
-                px, px, px, g->fabs, exact_zeros(info) ? "keep" : "3u");
+                px, px, differences(info, g) ? "M2" : "M", px, g->fabs, exact_zeros(info) ? "keep" : "3u");
 }
 
 /* The end: the threads' flags through shared memory, and thread 0 of a patch writes its class. */
@@ -1113,6 +1130,8 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     fmt_banner(&banner, t, info, file, g->language, g->interface);
     st = put_tables(&tables, t, info, g, up, err);
     put_cross4(&funcs, info, g);
+    if (differences(info, g))
+        put_diff(&funcs, info, g);
     if (exact_zeros(info))
         put_edge_functions(&funcs, info, g);
     if (second_look(info, g))
