@@ -812,7 +812,7 @@ static void put_monomial_max(char *e, const out_info *info, const kern_target *g
 
 /* With differences, the patch's extents over the coordinates c (n of them): step 0 declares
  * Hc = max b.c and Lc = max -b.c from the first point, step 1 (in the loop over the points a)
- * updates them, step 2 declares the extents Dc = Hc + Lc (README: The WGSL target). */
+ * updates them, step 2 declares the extents Dc = Hc + Lc (README: Differences of points). */
 static void put_extents(sbuf *o, const out_info *info, const kern_target *g, const char *up,
                         const char *c, int n, int step)
 {
