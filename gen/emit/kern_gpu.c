@@ -364,8 +364,9 @@ static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, con
     if ((st = cert_table_df(&cb, t, info->space == OUT_WORLD, err)))
         return st;
     put_bounds(o, info, g, up, &cb, "2",
-               "/* Second look, in double-float: |hi + lo - exact| <= tau2_k[P] * M + tau2_f[P] *\n"
-               " * (1 + R)^3 (1 + E), for max(E, 1) R^3 < ");
+               "/* Second look, in double-float from the points: |hi + lo - exact| <= tau2_k[P] * M2\n"
+               " * + tau2_f[P] * (1 + R)^3 (1 + E), M2 from the largest |coordinates|, for\n"
+               " * max(E, 1) R^3 < ");
     return PTP_OK;
 }
 
@@ -838,9 +839,10 @@ static void put_extents(sbuf *o, const out_info *info, const kern_target *g, con
 }
 
 /* --certified: the patch's largest |coordinates| Rx, Ry, (Rz,) Rw, R the largest of them, E the
- * eye's largest |component|, M the largest |monomial| and F the underflow term's factor; patches
- * too large for the bound get flags 3 (never certified). With exact zeros, the collapsed edges of
- * d too. */
+ * eye's largest |component|, M the largest |monomial| (with differences, of the terms as they
+ * read them), with the second look M2 that of the points, and F the underflow term's factor;
+ * patches too large for the bound get flags 3 (never certified). With exact zeros, the collapsed
+ * edges of d too. */
 static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
                       const char *up)
 {
@@ -881,7 +883,7 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
     put_extents(o, info, g, up, c, n, 2);
     put_monomial_max(e, info, g, differences(info, g));
     put_local(o, g, f, "M", e, 0);
-    if (second_look(info, g) && differences(info, g)) { /* the second look reads the points */
+    if (second_look(info, g)) { /* M2: the second look reads the points */
         put_monomial_max(e, info, g, 0);
         put_local(o, g, f, "M2", e, 0);
     }
@@ -1072,10 +1074,10 @@ static void put_second_look(sbuf *o, const out_info *info, const kern_target *g,
     snprintf(b, sizeof b, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "            ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? b : "s", 0}, 1, 0);
-    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[plane] * %s + %stau2_f[plane] * F +\n"
+    sbuf_printf(o, "            f |= %sflags(d.x, %stau2_k[plane] * M2 + %stau2_f[plane] * F +\n"
                    "                2.0f * %s(d.y)) & mine * %s;\n"
                    "        }\n    }\n",
-                px, px, differences(info, g) ? "M2" : "M", px, g->fabs, exact_zeros(info) ? "keep" : "3u");
+                px, px, px, g->fabs, exact_zeros(info) ? "keep" : "3u");
 }
 
 /* The end: the threads' flags through shared memory, and thread 0 of a patch writes its class. */
