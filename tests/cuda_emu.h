@@ -2,7 +2,7 @@
  * runtime calls tests/host_cuda.cu makes; included before the kernel when CUDA_EMU is defined.
  *
  * Contract. Build with -ffp-contract=off and without -ffast-math. The kernels spell every
- * rounding: __fmul_rn is a*b, __fmaf_rn is fmaf (one rounding), and their other adds, subtracts
+ * rounding: __fmul_rn is a*b, __fsub_rn a-b, __fmaf_rn fmaf (one rounding), and their other adds, subtracts
  * and products are binary32 round to nearest, unfused; denormals are kept (no -ffast-math, no
  * flush to zero). The emulation computes exactly those operations in that order: it is bit for bit
  * what nvcc builds. nvcc's default (-fmad=true) would fuse a plain product with the add it feeds,
@@ -46,6 +46,7 @@ struct dim3 {
 static inline float2 make_float2(float x, float y) { float2 v = {x, y}; return v; }
 static inline float4 make_float4(float x, float y, float z, float w) { float4 v = {x, y, z, w}; return v; }
 static inline float __fmul_rn(float a, float b) { return a * b; }
+static inline float __fsub_rn(float a, float b) { return a - b; }
 static inline float __fmaf_rn(float a, float b, float c) { return fmaf(a, b, c); }
 static inline unsigned __float_as_uint(float f)
 {

@@ -337,22 +337,29 @@ expect_fail "--certified does not apply to verify" 2 "does not apply to verify" 
     ok "--certified is in the banner's command line, --refine 0 is no refinement" ||
     notok "--certified in the banner" "$(grep -m1 Generated "$tmp/c.h")"
 # The GPU kernels' bounds take each target's unit roundoff: WGSL, which fixes no rounding mode,
-# 2^-23, and its terms read differences of points (two more roundings on each of a term's
-# monomials: 58 in all against 46 in clip space), so its first plane's tau_k (one term) is
-# 2 * 58 / 46 times OpenCL's (the same schedule and table, u = 2^-24).
-"$P" --degree 3 --certified --target opencl -o "$tmp/k.cl" && "$P" --degree 3 --certified --target wgsl -o "$tmp/k.wgsl" &&
-    r=$(for f in "$tmp/k.cl" "$tmp/k.wgsl"; do
-        awk '/_tau_k[:[]/ { f = 1; next } f { gsub(/f,?/, ""); print $1; exit }' "$f"; done | paste -sd' ')
-awk -v r="$r" 'BEGIN { split(r, a, " "); q = a[2] / a[1] / (2 * 58 / 46); exit !(a[1] > 0 && q > 0.9999 && q < 1.0001) }' &&
-    ok "the certified WGSL kernel's bounds are 2 * 58 / 46 of OpenCL's (u = 2^-23 against 2^-24, differences)" ||
-    notok "the certified WGSL kernel's bounds are 2 * 58 / 46 of OpenCL's" "first tau_k of each: ${r:-none}"
-# The certified WGSL kernel's terms read b_j, b_k - b_j, b_l - b_j (sub_rn, two a term); the
-# plain one's read the points.
-"$P" --degree 3 --target wgsl -o "$tmp/p.wgsl" &&
-    n=$(grep -c 'sub_rn(pts' "$tmp/k.wgsl") && [ "$(grep -c 'sub_rn(pts' "$tmp/p.wgsl")" = 0 ] &&
-    [ "$n" = $((2 * $(grep -c '_cross4z(pts' "$tmp/k.wgsl"))) ] &&
-    ok "the certified WGSL kernel's terms read differences of points, the plain one's the points" ||
-    notok "the certified WGSL kernel's terms read differences of points" "sub_rn in terms: ${n:-none}"
+# 2^-23, the others 2^-24; every certified GPU kernel's terms read differences of points (two more
+# roundings on each of a term's monomials), so the first plane's tau_k (one term) is the same on
+# GLSL, HLSL, OpenCL and CUDA (the same schedule and table) and twice that on WGSL.
+for t in glsl hlsl opencl cuda wgsl; do
+    "$P" --degree 3 --certified --target $t -o "$tmp/k.$t" || notok "--certified --target $t" "ptpgen failed"
+done
+r=$(for t in glsl hlsl opencl cuda wgsl; do
+    awk '/_tau_k[:[]/ { f = 1; next } f { gsub(/f,?/, ""); print $1; exit }' "$tmp/k.$t"; done | paste -sd' ')
+awk -v r="$r" 'BEGIN { n = split(r, a, " "); q = a[5] / a[1] / 2
+    exit !(n == 5 && a[1] > 0 && a[2] == a[1] && a[3] == a[1] && a[4] == a[1] && q > 0.9999 && q < 1.0001) }' &&
+    ok "the certified GPU kernels' bounds agree, WGSL's twice the others' (u = 2^-23 against 2^-24)" ||
+    notok "the certified GPU kernels' bounds agree, WGSL's twice the others'" "first tau_k of each: ${r:-none}"
+# The certified GPU kernels' terms read b_j, b_k - b_j, b_l - b_j (the generated diff, two a
+# term; WGSL's through the template's fenced sub_rn); the plain ones' read the points.
+for t in glsl hlsl opencl cuda wgsl; do
+    "$P" --degree 3 --target $t -o "$tmp/p.$t" &&
+        n=$(grep -c '_diff(pts' "$tmp/k.$t") && [ "$(grep -c '_diff(' "$tmp/p.$t")" = 0 ] &&
+        [ "$n" -gt 0 ] && [ "$n" = $((2 * $(grep -c '_certified_cross4z(pts' "$tmp/k.$t"))) ] &&
+        ok "the certified $t kernel's terms read differences of points, the plain one's the points" ||
+        notok "the certified $t kernel's terms read differences of points" "diff in terms: ${n:-none}"
+done
+grep -q 'sub_rn(b, a)' "$tmp/k.wgsl" && ok "the certified WGSL kernel's differences go through sub_rn" ||
+    notok "the certified WGSL kernel's differences go through sub_rn" "$(grep -m1 -A2 '_diff(b' "$tmp/k.wgsl")"
 
 # The default prefix names the variant: ptp_NxM_, then world_, degenerate_, certified_, refineK_
 # for the options given, in that order, in every target that takes them; the file name follows.

@@ -536,8 +536,9 @@ done
 # under the strict rule ("unsafe"); the plain float kernel, on the first fifth of the same data,
 # must be unsafe somewhere, which shows that the data reach the rounding. Each certified kernel
 # also runs on random data, where its classes must be the double reference's or silhouette.
-# Every target's certified kernel sees 10^6 exact patches. A third of them take the GPU kernels'
-# double-float second look (its planes whose float bounds do not clear); on lavapipe, where
+# Every target's certified kernel sees 10^6 exact patches. Their points are integers, so the GPU
+# kernels' differences of points are exact there; 5% (clip) to 7% (world) of them take the GPU
+# kernels' double-float second look (its planes whose float bounds do not clear); on lavapipe, where
 # GLSL and HLSL sum every plane again from the rounds' tables, a run costs about 70 us of CPU a
 # patch (with GLIBC_TUNABLES above; about 2 minutes for each of its runs on a loaded machine), on
 # PoCL 4 to 5 us. The seven certified degenerate runs below took 458 s together (load average 6).
@@ -696,8 +697,8 @@ mutant_caught degenerate '(t > F) | c0) == 0' "a certified degenerate C header t
 # bits) and count the planes along a collapsed one as exactly 0: like the C headers they keep the
 # degenerate rule's culls (kernels without the test gave up about a quarter) and stay safe on the
 # exact data, 10^6 patches like the strict ones (clip space on every target; world space on PoCL,
-# lavapipe's GLSL and HLSL, and wgpu). WGSL has no second look, but its terms read differences of
-# points, whose float bound gives up as little.
+# lavapipe's GLSL and HLSL, and wgpu). Every certified GPU kernel's terms read differences of
+# points, whose float bound gives up little (WGSL, which has no second look, relies on it).
 # gpu_degenerate TARGET SPACE CMD...: the host CMD on exact data, and on random and teapot patches.
 gpu_degenerate() {
     local target=$1 space=$2 name="certified degenerate $1 3x3 $2" out
@@ -781,19 +782,20 @@ mutant_verdict() {
 ocl_mutant_caught "$tmp/cert/clip-degenerate" degenerate \
     's/ptp_3x3_zero\[plane\] & col/col/; s/ptp_3x3_zero\[ptp_3x3_own_plane\[i\]\] & col/col/' \
     '(col) == 0u' "a certified degenerate OpenCL kernel that zeros planes off the collapsed edge"
-# The GPU kernels' float bound is near the errors the exact data reach too: an OpenCL kernel whose
-# float-pass bounds are 2^6 times too small is caught (about 24 unsafe of 200,000), though its
-# second look, against the right bound, still runs where the mutated bound does not decide.
-ocl_mutant_caught "$tmp/cert/clip-certified" strict 's/tau_k\[plane\] \* M + /tau_k[plane] * M * 0x1p-6f + /' \
-    'M \* 0x1p-6f' "a certified OpenCL kernel with its float bounds 2^6 times too small"
+# The certified GPU kernels' terms read differences of points (README: Differences of points). The
+# exact data are integer points, whose differences are exact and whose float errors stay far below
+# the bound (none unsafe at 2^-6 of it, 21 at 2^-10): an OpenCL kernel whose float-pass bounds are
+# 2^12 times too small is caught (about 1,100 unsafe of 200,000), though its second look, against
+# the right bound, still runs where the mutated bound does not decide.
+ocl_mutant_caught "$tmp/cert/clip-certified" strict 's/tau_k\[plane\] \* M + /tau_k[plane] * M * 0x1p-12f + /' \
+    'M \* 0x1p-12f' "a certified OpenCL kernel with its float bounds 2^12 times too small"
 # The second look must count the planes it looks at again: an OpenCL kernel that drops their
 # double-float flags (keeping only the planes the float bounds decided) is caught unsafe (about
 # 4,000 of 2*10^5).
 ocl_mutant_caught "$tmp/cert/clip-certified" strict 's/) & mine \* 3u;/) \& 0u;/' \
     ') & 0u;' "a certified OpenCL kernel whose second look drops the planes it looks at again"
-# The certified WGSL kernel's terms read differences of points, whose float errors on the exact
-# data are far below its bound (none unsafe at 2^-10 of it): a kernel whose bounds are 2^12 times
-# too small is caught (about 290 unsafe of 200,000).
+# WGSL's likewise (u = 2^-23, no second look; none unsafe at 2^-10 of its bound): a kernel whose
+# bounds are 2^12 times too small is caught (about 290 unsafe of 200,000).
 if [ -x "$B/host_wgpu" ]; then
     sed 's/_tau_k\[plane\] \* M + /_tau_k[plane] * M * 0x1p-12f + /' "$tmp/cert/clip-certified/ptp_3x3.wgsl" >"$tmp/m.wgsl"
     if grep -q 'M \* 0x1p-12f' "$tmp/m.wgsl" && ! "$B/host_wgpu" "$tmp/m.wgsl" \

@@ -24,6 +24,9 @@ const kern_target kern_cuda = {
         " * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.\n",
     .fabs = "fabsf", .fmax = "fmaxf",
     .unit_roundoff = 0x1p-24, /* round to nearest */
+    /* float4 has no operators; __fsub_rn is never contracted or reassociated */
+    .diff = "make_float4(__fsub_rn(%s.x, %s.x), __fsub_rn(%s.y, %s.y), __fsub_rn(%s.z, %s.z),\n"
+            "        __fsub_rn(%s.w, %s.w))",
     .bits = "__float_as_uint(%s)",
     .vec2 = "float2", .vec2_make = "make_float2(%s, %s)",
     .fma = "__fmaf_rn(%s, %s, %s)", /* correctly rounded: one rounding */

@@ -23,6 +23,7 @@ const kern_target kern_glsl = {
         " * workgroup (x, y) handles the patches of block y * num_groups_x + x.\n",
     .fabs = "abs", .fmax = "max",
     .unit_roundoff = 0x1p-24, /* round to nearest */
+    .diff = "%s - %s", /* in a precise local: evaluated as written */
     .bits = "floatBitsToUint(%s)",
     .vec2 = "vec2", .vec2_make = "vec2(%s, %s)",
 };

@@ -25,6 +25,7 @@ const kern_target kern_hlsl = {
         " * workgroup (x, y) handles the patches of block y * groups_x + x.\n",
     .fabs = "abs", .fmax = "max",
     .unit_roundoff = 0x1p-24, /* round to nearest */
+    .diff = "%s - %s", /* in a precise local: evaluated as written */
     .bits = "asuint(%s)",
     .vec2 = "float2", .vec2_make = "float2(%s, %s)",
     .split_rounds = 1,

@@ -23,6 +23,7 @@ const kern_target kern_opencl = {
         " * work-group (x, y) handles the patches of block y * num_groups(0) + x.\n",
     .fabs = "fabs", .fmax = "fmax",
     .unit_roundoff = 0x1p-24, /* round to nearest */
+    .diff = "%s - %s", /* C semantics: no reassociation; FP_CONTRACT OFF */
     .bits = "as_uint(%s)",
     .vec2 = "float2", .vec2_make = "(float2)(%s, %s)",
     .fma = "fma(%s, %s, %s)", /* correctly rounded: one rounding */

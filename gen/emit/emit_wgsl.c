@@ -90,6 +90,6 @@ const kern_target kern_wgsl = {
         " * patches of block y * num_workgroups.x + x.\n",
     .fabs = "abs", .fmax = "max",
     .unit_roundoff = 0x1p-23, /* no rounding mode specified: either neighbour */
-    .sub_fenced = "sub_rn(%s, %s)", /* the template's difference that no reassociation crosses */
+    .diff = "sub_rn(%s, %s)", /* the template's difference that no reassociation crosses */
     .bits = "bitcast<u32>(%s)",
 };

@@ -95,10 +95,12 @@ struct kern_target {
     double unit_roundoff;      /* --certified: the largest relative error of one float + - *:
                                   0x1p-24 rounding to nearest, 0x1p-23 where the language lets a
                                   result be either neighbour of the exact value */
-    /* --certified: b - a of two points (vec4) that no reassociation or contraction crosses,
-     * printf format of b and a; the terms then read b_j, b_k - b_j, b_l - b_j, whose monomials
-     * are far smaller than b_j, b_k, b_l's (README: The WGSL target); NULL: b_j, b_k, b_l */
-    const char *sub_fenced;
+    /* --certified: the difference b - a of two points (vec4), rounded once per component and
+     * crossed by no reassociation or contraction (the kernel's diff function returns it from an
+     * exact local), printf format of the arguments b, a, b, a, b, a, b, a (a format may take the
+     * components one by one); the terms then read b_j, b_k - b_j, b_l - b_j, whose monomials
+     * are far smaller than b_j, b_k, b_l's (README: Differences of points); NULL: b_j, b_k, b_l */
+    const char *diff;
     const char *bits;          /* a float's bits as a uint, printf format of the float (--certified
                                   --rule degenerate: the exact tests of collapsed edges) */
     /* --certified's second look in double-float: the type of two floats (.x hi, .y lo) and its

@@ -322,10 +322,10 @@ static int exact_zeros(const out_info *info)
     return info->certified && info->rule == OUT_DEGENERATE;
 }
 
-/* Whether the terms read differences of points (the target's sub_fenced, --certified). */
+/* Whether the terms read differences of points (the target's diff, --certified). */
 static int differences(const out_info *info, const kern_target *g)
 {
-    return info->certified && g->sub_fenced;
+    return info->certified && g->diff;
 }
 
 /* With exact zeros, the table zero: per plane the boundary edges (bit e) on which every term has
@@ -371,8 +371,9 @@ static int put_cert_tables(sbuf *o, const tp_table *t, const out_info *info, con
     if ((st = cert_table_df(&cb, t, info->space == OUT_WORLD, err)))
         return st;
     put_bounds(o, info, g, up, &cb, "2",
-               "/* Second look, in double-float: |hi + lo - exact| <= tau2_k[P] * M + tau2_f[P] *\n"
-               " * (1 + R)^3 (1 + E), for max(E, 1) R^3 < ");
+               "/* Second look, in double-float from the points: |hi + lo - exact| <= tau2_k[P] * M2\n"
+               " * + tau2_f[P] * (1 + R)^3 (1 + E), M2 from the largest |coordinates|, for\n"
+               " * max(E, 1) R^3 < ");
     return PTP_OK;
 }
 
@@ -566,6 +567,20 @@ static void put_cross4(sbuf *o, const out_info *info, const kern_target *g)
         put_products(o, g, "e.x * x - e.y * y + e.z * z - e.w * w");
         sbuf_puts(o, ";\n}\n\n");
     }
+}
+
+/* With differences, diff(b, a): b - a from an exact local, each component rounded once and
+ * crossed by no reassociation or contraction (the target's diff). */
+static void put_diff(sbuf *o, const out_info *info, const kern_target *g)
+{
+    kern_param p[2] = {{g->vec4, "b"}, {g->vec4, "a"}};
+    char name[128], e[320];
+    snprintf(name, sizeof name, "%sdiff", info->prefix);
+    snprintf(e, sizeof e, g->diff, "b", "a", "b", "a", "b", "a", "b", "a");
+    sbuf_puts(o, "/* b - a, each component rounded once, as written (the terms' differences of points). */\n");
+    g->syntax->function(o, g, g->vec4, name, p, 2);
+    g->syntax->locals(o, g, "    ", g->vec4, &(kern_var){"d", e, 0}, 1, 1);
+    sbuf_puts(o, "    return d;\n}\n\n");
 }
 
 /* With exact zeros, finite(a): every coordinate of a the kernel reads is finite; and same(a, b):
@@ -816,7 +831,7 @@ static void put_load(sbuf *o, const kern_target *g, const char *up)
 static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    char a[128], b[320], c[320], x[320]; /* up has at most 63 bytes */
+    char a[128], b[320], c[320]; /* up has at most 63 bytes */
     prod_parts m; /* the weight's product, the line broken after its first operand */
     size_t k;
     int r;
@@ -832,13 +847,12 @@ static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, 
     sbuf_printf(o, "        acc[q * %sL + %sown_plane[i]] = 0.0f;\n", up, px);
     put_end(o, g, "    ");
     snprintf(a, sizeof a, "pts[q * %sK + (pj >> 16)]", up);
-    snprintf(b, sizeof b, "pts[q * %sK + (kl & 0xffffu)]", up);
-    snprintf(c, sizeof c, "pts[q * %sK + (kl >> 16)]", up);
     if (differences(info, g)) { /* b_k - b_j and b_l - b_j */
-        snprintf(x, sizeof x, g->sub_fenced, b, a);
-        snprintf(b, sizeof b, "%s", x);
-        snprintf(x, sizeof x, g->sub_fenced, c, a);
-        snprintf(c, sizeof c, "%s", x);
+        snprintf(b, sizeof b, "%sdiff(pts[q * %sK + (kl & 0xffffu)], %s)", px, up, a);
+        snprintf(c, sizeof c, "%sdiff(pts[q * %sK + (kl >> 16)], %s)", px, up, a);
+    } else {
+        snprintf(b, sizeof b, "pts[q * %sK + (kl & 0xffffu)]", up);
+        snprintf(c, sizeof c, "pts[q * %sK + (kl >> 16)]", up);
     }
     for (r = 0; r < info->sched->rounds; r++) {
         sbuf_printf(o, "    pj = %spj%d[t];\n    kl = %skl%d[t];\n"
@@ -900,17 +914,17 @@ static size_t put_diff_monomial(char *e, size_t size, const char *u)
 
 /* Into e (512 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
  * largest |monomial| (clip space); in world space the sum over the eye's components of the
- * largest |monomial| with that component (README: Certified). With differences, a monomial has
- * one coordinate and two differences instead (put_diff_monomial). */
-static void put_monomial_max(char *e, const out_info *info, const kern_target *g)
+ * largest |monomial| with that component (README: Certified). With diff (differences), a
+ * monomial has one coordinate and two differences instead (put_diff_monomial). */
+static void put_monomial_max(char *e, const out_info *info, const kern_target *g, int diff)
 {
     static const char *const other[4] = {"yzw", "xzw", "xyw", "xyz"};
     const char *ab = g->fabs;
     size_t n = 0;
     int c;
-    if (!differences(info, g) && info->space == OUT_CLIP)
+    if (!diff && info->space == OUT_CLIP)
         snprintf(e, 512, "E * (Rx * Ry * Rw)");
-    else if (!differences(info, g))
+    else if (!diff)
         snprintf(e, 512, "(%s(eye.x) * Ry + %s(eye.y) * Rx) * (Rz * Rw) +\n"
                          "        (%s(eye.z) * Rw + %s(eye.w) * Rz) * (Rx * Ry)",
                  ab, ab, ab, ab);
@@ -925,7 +939,7 @@ static void put_monomial_max(char *e, const out_info *info, const kern_target *g
 
 /* With differences, the patch's extents over the coordinates c (n of them): step 0 declares
  * Hc = max b.c and Lc = max -b.c from the first point, step 1 (in the loop over the points a)
- * updates them, step 2 declares the extents Dc = Hc + Lc (README: The WGSL target). */
+ * updates them, step 2 declares the extents Dc = Hc + Lc (README: Differences of points). */
 static void put_extents(sbuf *o, const out_info *info, const kern_target *g, const char *up,
                         const char *c, int n, int step)
 {
@@ -963,9 +977,10 @@ static void put_too_large(sbuf *o, const kern_target *g, const char *indent, con
 }
 
 /* --certified: the patch's largest |coordinates| Rx, Ry, (Rz,) Rw, R the largest of them, E the
- * eye's largest |component|, M the largest |monomial| and F the underflow term's factor; patches
- * too large for the bound get flags 3 (never certified). With exact zeros, the collapsed edges of
- * d too. */
+ * eye's largest |component|, M the largest |monomial| (with differences, of the terms as they
+ * read them), with the second look M2 that of the points, and F the underflow term's factor;
+ * patches too large for the bound get flags 3 (never certified). With exact zeros, the collapsed
+ * edges of d too. */
 static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
                       const char *up)
 {
@@ -1004,8 +1019,12 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
     put_local(o, g, f, "E", e, 0);
     put_local_products(o, g, "    ", f, "R3", "R * R * R");
     put_extents(o, info, g, up, c, n, 2);
-    put_monomial_max(e, info, g);
+    put_monomial_max(e, info, g, differences(info, g));
     put_local_products(o, g, "    ", f, "M", e);
+    if (second_look(info, g)) { /* M2: the second look reads the points */
+        put_monomial_max(e, info, g, 0);
+        put_local_products(o, g, "    ", f, "M2", e);
+    }
     put_local_products(o, g, "    ", f, "F", "(1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E)");
     put_too_large(o, g, "    ", up, "QMAX");
     put_then(o, g);
@@ -1212,7 +1231,7 @@ static void put_second_look(sbuf *o, const out_info *info, const kern_target *g,
     snprintf(b, sizeof b, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "            ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? b : "s", 0}, 1, 0);
-    snprintf(e, sizeof e, "%stau2_k[plane] * M + %stau2_f[plane] * F +\n                2.0f * %s(d.y)", px,
+    snprintf(e, sizeof e, "%stau2_k[plane] * M2 + %stau2_f[plane] * F +\n                2.0f * %s(d.y)", px,
              px, g->fabs);
     sbuf_printf(o, "            f |= %sflags(d.x, ", px);
     put_products(o, g, e);
@@ -1271,6 +1290,8 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     fmt_banner(&banner, t, info, file, g->language, g->interface);
     st = put_tables(&tables, t, info, g, up, err);
     put_cross4(&funcs, info, g);
+    if (differences(info, g))
+        put_diff(&funcs, info, g);
     if (exact_zeros(info))
         put_edge_functions(&funcs, info, g);
     if (second_look(info, g))

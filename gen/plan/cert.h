@@ -28,8 +28,8 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
  * association, for M the largest |monomial| (clip space) or the sum over the eye's components of
  * the largest |monomial| with that component (world space) (README: Certified). With
  * differences, the terms read b_j, b_k - b_j, b_l - b_j, the differences computed in float (two
- * more roundings a monomial), and M from the largest coordinates and the extents (README: The
- * WGSL target). k64 and k2_64 stay NULL. */
+ * more roundings a monomial), and M from the largest coordinates and the extents (README:
+ * Differences of points). k64 and k2_64 stay NULL. */
 int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differences, ptp_error *err);
 /* The bounds of the GPU kernels' second look: the table loop again in double-float arithmetic
  * (hi + lo floats from error-free transformations, + - * only), each double-float operation with
