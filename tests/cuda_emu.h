@@ -2,9 +2,9 @@
  * runtime calls tests/host_cuda.cu makes; included before the kernel when CUDA_EMU is defined.
  *
  * Contract. Build with -ffp-contract=off and without -ffast-math. The kernels spell every
- * rounding: __fmul_rn is a*b, __fsub_rn a-b, __fmaf_rn fmaf (one rounding), and their other adds, subtracts
- * and products are binary32 round to nearest, unfused; denormals are kept (no -ffast-math, no
- * flush to zero). The emulation computes exactly those operations in that order: it is bit for bit
+ * rounding: __fmul_rn is a*b, __fsub_rn a-b, __fmaf_rn fmaf (one rounding), and their other adds,
+ * subtracts and products are binary32 round to nearest, unfused; denormals are kept (no
+ * -ffast-math, no flush to zero). The emulation computes exactly those operations in that order: it is bit for bit
  * what nvcc builds. nvcc's default (-fmad=true) would fuse a plain product with the add it feeds,
  * but the kernels write every float product with __fmul_rn, which it never fuses (test_kernels.sh
  * checks that the PTX equals that of -fmad=false).
