@@ -810,35 +810,29 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
                                     : "2 * nan + (1 - nan) * ((1 - gt) + 2 * (gt & lt))");
     sbuf_printf(o, "    }\n}\n\n"
                    "/* The classes of n patches: lanes_body without values (one copy: it is large). */\n"
-                   "#if defined(__GNUC__) && !defined(__clang__)\n"
-                   "__attribute__((noinline, noclone))\n"
-                   "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
+                   "%sNOINLINE\n"
                    "static void %slanes(const float *%sRESTRICT soa, size_t stride, size_t n, const float eye[4],\n"
                    "%*sunsigned char *%sRESTRICT cls)\n{\n"
                    "    %slanes_body(soa, stride, n, eye, cls, NULL, 0);\n}\n\n"
                    "void %svalues(const float cp[][4], const float eye[4], float d[])\n{\n"
                    "    unsigned char c;\n"
                    "    %slanes_body(cp[0], 1, 1, eye, &c, d, 1); /* one patch is the SoA layout with stride 1 */\n}\n",
-                px, up, (int)strlen(px) + 18, "", up, px, px, px);
+                up, px, up, (int)strlen(px) + 18, "", up, px, px, px);
     if (!info->refine || info->certified) /* classify_batch's blocks: loads at constant offsets */
         sbuf_printf(o, "\n/* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no\n"
                        " * offsets computed from the stride (gcc keeps those in spilled registers). */\n"
-                       "#if defined(__GNUC__) && !defined(__clang__)\n"
-                       "__attribute__((noinline, noclone))\n"
-                       "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
+                       "%sNOINLINE\n"
                        "static void %slanes_block(const float *%sRESTRICT soa, size_t n, const float eye[4],\n"
                        "%*sunsigned char *%sRESTRICT cls)\n{\n"
                        "    %slanes_body(soa, %sLANES, n, eye, cls, NULL, 0);\n}\n",
-                    px, up, (int)strlen(px) + 24, "", up, px, up);
+                    up, px, up, (int)strlen(px) + 24, "", up, px, up);
     else /* classify_batch refines from a whole block's values */
         sbuf_printf(o, "\n/* The classes and values d[P * ds + l] of n patches (--refine: classify_batch). */\n"
-                       "#if defined(__GNUC__) && !defined(__clang__)\n"
-                       "__attribute__((noinline, noclone))\n"
-                       "#elif defined(__clang__)\n__attribute__((noinline))\n#endif\n"
+                       "%sNOINLINE\n"
                        "static void %slanes_values(const float *%sRESTRICT soa, size_t stride, size_t n,\n"
                        "%*sconst float eye[4], unsigned char *%sRESTRICT cls, float *d, size_t ds)\n{\n"
                        "    %slanes_body(soa, stride, n, eye, cls, d, ds);\n}\n",
-                    px, up, (int)strlen(px) + 25, "", up, px);
+                    up, px, up, (int)strlen(px) + 25, "", up, px);
     sbuf_puts(o, "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
 }
 

@@ -101,6 +101,17 @@ float ptp_tri2_alpha(const float proj[16], int layout);
 #else
 #define PTP_TRI2_RESTRICT
 #endif
+/* The lanes functions: never inlined (they are large). clang on x86 also realigns their stack:
+ * without it, it spills 64-byte vectors unaligned, across cache lines (bench/README: clang's spills). */
+#if defined(__GNUC__) && !defined(__clang__)
+#define PTP_TRI2_NOINLINE __attribute__((noinline, noclone))
+#elif defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#define PTP_TRI2_NOINLINE __attribute__((noinline, force_align_arg_pointer))
+#elif defined(__clang__)
+#define PTP_TRI2_NOINLINE __attribute__((noinline))
+#else
+#define PTP_TRI2_NOINLINE
+#endif
 #if defined(__SSE2__) && !defined(PTP_TRI2_NO_SSE)
 #include <emmintrin.h>
 #endif
@@ -479,11 +490,7 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
 }
 
 /* The classes of n patches: lanes_body without values (one copy: it is large). */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone))
-#elif defined(__clang__)
-__attribute__((noinline))
-#endif
+PTP_TRI2_NOINLINE
 static void ptp_tri2_lanes(const float *PTP_TRI2_RESTRICT soa, size_t stride, size_t n, const float eye[4],
                            unsigned char *PTP_TRI2_RESTRICT cls)
 {
@@ -498,11 +505,7 @@ void ptp_tri2_values(const float cp[][4], const float eye[4], float d[])
 
 /* lanes on classify_batch's blocks (stride LANES): one more copy, whose loads need no
  * offsets computed from the stride (gcc keeps those in spilled registers). */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((noinline, noclone))
-#elif defined(__clang__)
-__attribute__((noinline))
-#endif
+PTP_TRI2_NOINLINE
 static void ptp_tri2_lanes_block(const float *PTP_TRI2_RESTRICT soa, size_t n, const float eye[4],
                                  unsigned char *PTP_TRI2_RESTRICT cls)
 {

@@ -75,6 +75,17 @@ float {{PREFIX}}alpha(const float proj[16], int layout);
 #else
 #define {{UPREFIX}}RESTRICT
 #endif
+/* The lanes functions: never inlined (they are large). clang on x86 also realigns their stack:
+ * without it, it spills 64-byte vectors unaligned, across cache lines (bench/README: clang's spills). */
+#if defined(__GNUC__) && !defined(__clang__)
+#define {{UPREFIX}}NOINLINE __attribute__((noinline, noclone))
+#elif defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#define {{UPREFIX}}NOINLINE __attribute__((noinline, force_align_arg_pointer))
+#elif defined(__clang__)
+#define {{UPREFIX}}NOINLINE __attribute__((noinline))
+#else
+#define {{UPREFIX}}NOINLINE
+#endif
 #if defined(__SSE2__) && !defined({{UPREFIX}}NO_SSE)
 #include <emmintrin.h>
 #endif
