@@ -1,6 +1,7 @@
 /* emit_c.c: the C target, an stb-style header: the term table, planes, values, and classify (one
  * patch, batch, SoA) as straight-line code, with the second look of --certified or --refine. */
 #include "emit/emit_c_batch.h"
+#include "emit/emit_c_cert.h"
 #include "emit/emit_c_mesh.h"
 #include "emit/emit_c_refine.h"
 #include "emit/fmt.h"
@@ -15,10 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Appends component i of cross4(a, b, c) (Appendix A): +-det of the rows other than i, expanded
- * along the first of them; cast (e.g. "(double)") converts the first factor of every product of
- * a 2x2 minor, and ind is the indentation of continuation lines. */
-static void put_cross4_component(sbuf *o, int i, const char *cast, int ind)
+void emit_c_cross4_component(sbuf *o, int i, const char *cast, int ind)
 {
     int p = i == 0 ? 1 : 0, q = i <= 1 ? 2 : 1, s = i == 3 ? 2 : 3, neg = i % 2;
     sbuf_printf(o, "%sa[%d] * (%sb[%d] * c[%d] - %sb[%d] * c[%d]) -\n"
@@ -46,7 +44,7 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
                 px);
     for (i = 0; i < 4; i++) {
         sbuf_printf(o, "    r[%d] = ", i);
-        put_cross4_component(o, i, "", 11);
+        emit_c_cross4_component(o, i, "", 11);
         sbuf_puts(o, ";\n");
     }
     sbuf_puts(o, "}\n\n");
@@ -282,202 +280,6 @@ static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_
         put_group_end(o, &p->s[x->group], first_group, up);
 }
 
-/* Appends a constant double table NAME[n] (17 digits: each literal rounds back to its double;
- * not hex, which C++ lacks before C++17). */
-static void put_double_table(sbuf *o, const char *px, const char *name, const double *v, int n)
-{
-    int i;
-    sbuf_printf(o, "static const double %s%s[%d] = {", px, name, n);
-    for (i = 0; i < n; i++)
-        sbuf_printf(o, "%s%.16e", i == 0 ? "\n    " : i % 4 ? ", " : ",\n    ", v[i]);
-    sbuf_puts(o, "\n};\n");
-}
-
-/* --certified, second look: the weights and each plane's bounds, as double tables. */
-static int put_tables64(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
-{
-    const char *px = info->prefix;
-    double *w = malloc((t->nterms + 1) * sizeof *w);
-    cert_bounds cb = {0};
-    size_t i;
-    int st = w ? cert_table(&cb, t, info->space == OUT_WORLD, err)
-               : ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-    if (!st) {
-        for (i = 0; i < t->nterms; i++)
-            w[i] = rat_get_d(&t->terms[i].w);
-        sbuf_puts(o, "/* --certified, second look: the weights in double, and each plane's bound in double. */\n");
-        put_double_table(o, px, "wgt64", w, (int)t->nterms);
-        put_double_table(o, px, "tau64_k", cb.k64, cb.nplanes);
-        put_double_table(o, px, "tau64_f", cb.k2_64, cb.nplanes);
-        cert_clear(&cb);
-    }
-    free(w);
-    return st;
-}
-
-/* certify64's sum of the weighted terms in double, into d. */
-static void put_terms64(sbuf *o, int world, const char *px, const char *up)
-{
-    int k;
-    if (world) {
-        /* cross4 in double: the products of the minors are exact, as in the table's bound */
-        sbuf_puts(o, "        double r[4];\n");
-        for (k = 0; k < 4; k++) {
-            sbuf_printf(o, "        r[%d] = ", k);
-            put_cross4_component(o, k, "(double)", 15);
-            sbuf_puts(o, ";\n");
-        }
-        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %swgt64[x] * ((double)eye[0] * r[0] + (double)eye[1] * r[1] +\n"
-                       "                                        (double)eye[2] * r[2] + (double)eye[3] * r[3]);\n"
-                       "    }\n",
-                    px, px);
-    } else {
-        sbuf_printf(o, "        d[%sterm_idx[x][0]] += %swgt64[x] * (", px, px);
-        put_cross4_component(o, 2, "(double)", 40);
-        sbuf_printf(o, ");\n    }\n"
-                       "    for (x = 0; x < %sPLANES; x++)\n        d[x] *= eye[2];\n",
-                    up);
-    }
-}
-
-/* Nonzero for a certified header under the degenerate rule: a plane that a collapsed boundary
- * edge zeros (slp_prog.zero) counts as exactly 0 there, both <= 0 and >= 0. */
-static int zeros_certified(const out_info *info)
-{
-    return info->certified && info->rule == OUT_DEGENERATE;
-}
-
-/* The first point on boundary edge e of d. */
-static int edge_first(const tp_domain *d, int e)
-{
-    int k, i, j;
-    for (k = 0; k < d->npoints; k++) {
-        tp_domain_point_ij(&i, &j, d, k);
-        if (tp_domain_on_edge(d, e, i, j))
-            break;
-    }
-    return k;
-}
-
-/* certify64's collapsed edges (degenerate rule): each plane's edges zero[], same(), and
- * collapsed(cp): bit e where edge e's points are equal and every coordinate is finite. */
-static void put_collapsed64(sbuf *o, const slp_prog *p, const tp_domain *d, const out_info *info,
-                            const char *up)
-{
-    const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, e, k, i, j;
-    sbuf_printf(o, "\n/* Degenerate rule: bit e of zero[P] where every term of plane P has two points on boundary\n"
-                   " * edge e, so that the plane is exactly 0 when that edge is collapsed. */\n"
-                   "static const unsigned char %szero[%sPLANES] = {", px, up);
-    for (k = 0; k < p->nplanes; k++)
-        sbuf_printf(o, "%s%d", k == 0 ? "\n    " : k % 16 ? ", " : ",\n    ", p->zero[k]);
-    sbuf_printf(o, "\n};\n\n/* 1 if a and b are equal in every coordinate the kernel reads (+0 == -0, NaN never). */\n"
-                   "static unsigned %ssame(const float a[4], const float b[4])\n{\n"
-                   "    return (a[0] == b[0]) & (a[1] == b[1]) & %s(a[3] == b[3]);\n}\n\n"
-                   "/* Bit e where boundary edge e of cp is collapsed: its points equal, every coordinate finite. */\n"
-                   "static unsigned %scollapsed(const float cp[][4])\n{\n"
-                   "    unsigned x, k, fin = 1, col = 0;\n"
-                   "    for (x = 0; x < %sPOINTS; x++)\n"
-                   "        for (k = 0; k < 4; k++)\n"
-                   "            fin &= %scp[x][k] - cp[x][k] == 0;\n",
-                px, world ? "(a[2] == b[2]) & " : "", px, up, world ? "" : "k == 2 || ");
-    for (e = 0; e < tp_domain_edges(d); e++) {
-        int f = edge_first(d, e), n = 0;
-        sbuf_printf(o, "    col |= (");
-        for (k = f + 1; k < d->npoints; k++) {
-            tp_domain_point_ij(&i, &j, d, k);
-            if (tp_domain_on_edge(d, e, i, j))
-                sbuf_printf(o, "%s%ssame(cp[%d], cp[%d])", n++ ? " & " : "", px, k, f);
-        }
-        sbuf_printf(o, ") << %d;\n", e);
-    }
-    sbuf_puts(o, "    return fin * col;\n}\n");
-}
-
-/* --certified: the second look at a patch float cannot certify, in double. The table loop with
- * double weights and the bounds of cert_table for u = 2^-53, which are 2^29 times smaller; under
- * the degenerate rule a plane of a collapsed edge counts as exactly 0. With --refine it also
- * writes the values and bounds (an exact zero: both 0) to d[] and b[] for refined. */
-static int put_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const out_info *info,
-                         const char *up, ptp_error *err)
-{
-    const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, st = put_tables64(o, t, info, err);
-    if (st)
-        return st;
-    if (zeros_certified(info))
-        put_collapsed64(o, p, &t->dom, info, up);
-    sbuf_printf(o,
-                "\n/* The certified class of a patch whose plain float signs decide but whose bounds do not, from\n"
-                " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
-                "static unsigned %scertify64(const float cp[][4], const float eye[4]%s)\n{\n"
-                "    double %s%s%sR = 0, E = 0, ER3, F;\n"
-                "    unsigned x, k, notlt = 0, notgt = 0%s;\n"
-                "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
-                "    for (x = 0; x < %sPOINTS; x++)\n"
-                "        for (k = 0; k < 4; k++)\n"
-                "            if (%s)\n"
-                "                R = %sABSMAX(R, (double)cp[x][k]);\n"
-                "    for (k = 0; k < 4; k++)\n"
-                "        if (%s)\n"
-                "            E = %sABSMAX(E, (double)eye[k]);\n"
-                "    ER3 = E * (R * R * R);\n"
-                "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
-                "    for (x = 0; x < %sTERMS; x++) {\n"
-                "        const float *a = cp[%sterm_idx[x][1]], *b = cp[%sterm_idx[x][2]], *c = cp[%sterm_idx[x][3]];\n",
-                px, info->refine ? ", double d[], double b[]" : "", info->refine ? "" : "d[",
-                info->refine ? "" : up, info->refine ? "" : "PLANES], ",
-                zeros_certified(info) ? ", col" : "", up, up, world ? "1" : "k != 2", up,
-                world ? "1" : "k == 2", up, up, px, px, px);
-    put_terms64(o, world, px, up);
-    if (zeros_certified(info))
-        sbuf_printf(o,
-                    "    col = %scollapsed(cp);\n"
-                    "    for (x = 0; x < %sPLANES; x++) {\n"
-                    "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
-                    "        unsigned z = (%szero[x] & col) != 0; /* exactly 0 */\n"
-                    "        notlt |= ((d[x] < -bound) | z) == 0;\n"
-                    "        notgt |= ((d[x] > bound) | z) == 0;\n%s"
-                    "    }\n",
-                    px, up, px, px, px,
-                    info->refine ? "        d[x] = z ? 0.0 : d[x]; /* for refined */\n"
-                                   "        b[x] = z ? 0.0 : bound;\n" : "");
-    else
-        sbuf_printf(o,
-                    "    for (x = 0; x < %sPLANES; x++) {\n"
-                    "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
-                    "        notlt |= !(d[x] < -bound);\n"
-                    "        notgt |= !(d[x] > bound);\n%s"
-                    "    }\n",
-                    up, px, px, info->refine ? "        b[x] = bound; /* for refined */\n" : "");
-    sbuf_puts(o, "    return (1u - notlt) + 2u * (notlt & notgt);\n}\n\n");
-    return PTP_OK;
-}
-
-/* Certified: VABS(x) = |x| lane by lane (NaN stays NaN); VMIN(a, b) = the lesser of a and b,
- * with vectors by their bits as signed integers (the float order on floats >= +0, and a negative
- * float or -0 below every one of those): a minimum above F > 0 is the least value above F. */
-static void put_cert_macros(sbuf *o, const char *px, const char *up)
-{
-    /* the 512-bit minimum in its masked form: the plain one reads an undefined vector, which
-     * g++ 12 reports as maybe uninitialized */
-    static const char *const with[3][3] = {
-        {"16", "", "_mm512_mask_min_epi32((__m512i)(a), (__mmask16)-1, (__m512i)(a), (__m512i)(b))"},
-        {"8", " && defined(__AVX2__)", "_mm256_min_epi32((__m256i)(a), (__m256i)(b))"},
-        {"4", " && defined(__SSE4_1__)", "_mm_min_epi32((__m128i)(a), (__m128i)(b))"}};
-    int i;
-    sbuf_printf(o, "/* Certified: |x| lane by lane (NaN stays NaN), and the lesser of a and b: vectors by their\n"
-                   " * bits as signed integers, which order floats >= +0 as floats and put the others below. */\n"
-                   "#if %sVW > 1\n#define %sVABS(x) ((%svf)((%svm)(x) & 0x7fffffff))\n",
-                up, up, px, px);
-    for (i = 0; i < 3; i++)
-        sbuf_printf(o, "#%s %sVW == %s%s\n#include <immintrin.h>\n#define %sVMIN(a, b) ((%svf)%s)\n",
-                    i ? "elif" : "if", up, with[i][0], with[i][1], up, px, with[i][2]);
-    sbuf_printf(o, "#else\n#define %sVMIN(a, b) ((%svf)(((%svm)(a) & ((%svm)(a) < (%svm)(b))) | ((%svm)(b) & ((%svm)(a) >= (%svm)(b)))))\n"
-                   "#endif\n#else\n#define %sVABS(x) ((x) < 0.0f ? -(x) : (x))\n#define %sVMIN(a, b) ((a) < (b) ? (a) : (b))\n#endif\n",
-                up, px, px, px, px, px, px, px, up, up);
-}
-
 /* Plain strict rule: lt (gt) = the lanes whose values so far are all < 0 (> 0), one masked
  * compare a plane into an AVX-512 mask register (gcc otherwise keeps every value live to compare
  * them all at the end), else 0/1 or 0/-1 masks; KCLASS: 1 where lt, 0 where gt, else 2. */
@@ -507,7 +309,7 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
     if (info->certified)
-        put_cert_macros(o, px, up);
+        emit_c_cert_macros(o, px, up);
     else if (info->rule == OUT_STRICT)
         put_strict_macros(o, px, up);
     sbuf_printf(o,
@@ -569,77 +371,6 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
                 world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
 }
 
-/* The lanes' masks c<e>: boundary edge e is collapsed, its points equal in every coordinate the
- * kernel reads (== : +0 and -0 are one number, NaN never equal) and every coordinate finite. */
-static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
-{
-    static const char crd[] = "xyzw";
-    const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, e, k, c;
-    sbuf_printf(o, "        /* Certified, degenerate rule: c<e> where boundary edge e is collapsed (its points\n"
-                   "         * equal, every coordinate finite); the planes it zeros are then exactly 0. */\n"
-                   "        const %svm fin =", px);
-    for (k = 0; k < d->npoints; k++)
-        for (c = 0; c < 4; c++)
-            if (world || c != 2)
-                sbuf_printf(o, "%s(%c%d - %c%d == 0.0f)", c ? " & " : k ? " &\n            " : "\n            ",
-                            crd[c], k, crd[c], k);
-    sbuf_puts(o, ";\n");
-    for (e = 0; e < tp_domain_edges(d); e++) {
-        int f = edge_first(d, e);
-        sbuf_printf(o, "        const %svm c%d = fin", px, e);
-        for (k = f + 1; k < d->npoints; k++) {
-            int i, j;
-            tp_domain_point_ij(&i, &j, d, k);
-            if (!tp_domain_on_edge(d, e, i, j))
-                continue;
-            sbuf_puts(o, " &\n            ");
-            for (c = 0; c < 4; c++)
-                if (world || c != 2)
-                    sbuf_printf(o, "%s(%c%d == %c%d)", c ? " & " : "", crd[c], k, crd[c], f);
-        }
-        sbuf_puts(o, ";\n");
-    }
-}
-
-/* Certified: the largest |coordinate| Rc of each coordinate c the kernel reads, their maximum R,
- * ER3 >= every monomial's magnitude (clip: E Rx Ry Rw; world: |e_i| times the other three
- * coordinates' Rc, e_i x_j y_k z_l with i, j, k, l distinct), F, and the size guard. */
-static void put_magnitudes(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb)
-{
-    static const char crd[] = "xyzw";
-    const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, k, c;
-    float k2 = 0;
-    sbuf_puts(o, "        /* Certified: Rc, the largest |coordinate c|, bound every value's rounding error. */\n");
-    for (c = 0; c < 4; c++)
-        if (world || c != 2)
-            sbuf_printf(o, "        %svf R%c = %svabsmax(%svload(q + %d * qs), %svload(q + %d * qs));\n",
-                        px, crd[c], px, px, c, px, c);
-    for (k = 1; k < npoints; k++)
-        for (c = 0; c < 4; c++)
-            if (world || c != 2)
-                sbuf_printf(o, "        R%c = %svabsmax(R%c, %svload(q + %d * qs));\n", crd[c], px, crd[c], px,
-                            4 * k + c);
-    if (world)
-        sbuf_printf(o, "        const %svf R = %svabsmax(%svabsmax(Rx, Ry), %svabsmax(Rz, Rw)), R3 = R * R * R;\n"
-                       "        const %svf ER3 = %svabsmax(%svabsmax(E0 * Ry, E1 * Rx) * (Rz * Rw),\n"
-                       "                                   %svabsmax(E2 * Rw, E3 * Rz) * (Rx * Ry));\n",
-                    px, px, px, px, px, px, px, px);
-    else
-        sbuf_printf(o, "        const %svf R = %svabsmax(%svabsmax(Rx, Ry), Rw), R3 = R * R * R;\n"
-                       "        const %svf ER3 = E * (Rx * Ry * Rw);\n",
-                    px, px, px, px);
-    for (k = 0; k < cb->nplanes; k++)
-        k2 = cb->k2[k] > k2 ? cb->k2[k] : k2;
-    sbuf_printf(o, "        /* F: the underflow term of every plane's bound, with the largest K2. */\n"
-                   "        const %svf F = %.8ef * ((1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E));\n"
-                   "        /* Patches too large for the bound (or NaN) are never certified. */\n"
-                   "        amb = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n"
-                   "        s = F * 0.0f + 3.40282347e+38f; /* the least t of the planes so far */\n",
-                px, (double)k2, (double)cb->q_max);
-}
-
 /* Certified: the magnitudes and the size guard, from loads of their own (gcc keeps the points
  * where first read, and the lanes run faster); degenerate rule: every point's coordinates up
  * front (put_point) and the collapsed edges. */
@@ -649,12 +380,12 @@ static void put_loads(sbuf *o, const slp_prog *p, const tp_table *t, const out_i
     int k;
     if (!info->certified)
         return;
-    put_magnitudes(o, t->dom.npoints, info, cb);
-    if (!zeros_certified(info))
+    emit_c_cert_magnitudes(o, t->dom.npoints, info, cb);
+    if (!emit_c_cert_zeros(info))
         return;
     for (k = 0; k < t->dom.npoints; k++)
         put_point(o, p, k, info->space == OUT_WORLD, info->prefix, done);
-    put_collapsed(o, &t->dom, info);
+    emit_c_cert_collapsed(o, &t->dom, info);
 }
 
 /* With d: d[P * ds + l] = the value v of plane P of each patch l times 1/c_P (its scale), which
@@ -688,53 +419,22 @@ static size_t put_exact(sbuf *o, const slp_prog *p, size_t a, int world, const c
     return i;
 }
 
-/* Appends "(cond)", or "((cond) | c0 | c2)" with the masks of the collapsed edges in bits zero. */
-static void put_cond(sbuf *o, const char *cond, unsigned zero)
-{
-    int e;
-    sbuf_printf(o, zero ? "((%s)" : "(%s", cond);
-    for (e = 0; e < 8; e++)
-        if (zero >> e & 1)
-            sbuf_printf(o, " | c%d", e);
-    sbuf_puts(o, ")");
-}
-
 /* Plane P's value v into the masks (set by the first plane): plain strict lt and gt (the strict
- * macros), certified notlt and notgt (under the degenerate rule a plane that a collapsed edge
- * zeros counts as both < 0 and > 0), degenerate lt, gt and nan. Certified: t = |v| - K_P
- * ER3, rounded once (twice without FMA: K_P allows it), into s, their minimum (or, on a plane a
- * collapsed edge can zero, into amb where t is not above F and the edge is not collapsed); the
- * signs are certified where s > F and amb is clear (README: Certified). */
+ * macros), degenerate lt, gt and nan; certified: emit_c_cert_masks. */
 static void put_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
                       const char *up, int plane, int first)
 {
-    unsigned zero = zeros_certified(info) ? p->zero[plane] : 0;
     const char *op = first ? "=" : "|=";
-    if (!info->certified && info->rule == OUT_STRICT) {
+    if (info->certified)
+        emit_c_cert_masks(o, p, cb, info, up, plane, first);
+    else if (info->rule == OUT_STRICT)
         sbuf_printf(o, first ? "        lt = %sKLT0(v);\n        gt = %sKGT0(v); /* plane %d */\n"
                              : "        lt = %sKLT(lt, v);\n        gt = %sKGT(gt, v); /* plane %d */\n",
                     up, up, plane);
-    } else if (info->certified) {
-        sbuf_printf(o, "        notlt %s ", op);
-        put_cond(o, "v < 0.0f", zero);
-        sbuf_printf(o, " == 0;\n        notgt %s ", op);
-        put_cond(o, "v > 0.0f", zero);
-        sbuf_printf(o, " == 0; /* plane %d */\n", plane);
-    } else
+    else
         sbuf_printf(o, "        lt %s v < 0.0f;\n        gt %s v > 0.0f;\n"
                        "        nan %s v != v; /* plane %d */\n",
                     op, op, op, plane);
-    if (info->certified) {
-        sbuf_printf(o, "        t = %sVFMAS(%.8ef, ER3, %sVABS(v)); /* minus the bound of plane %d */\n",
-                    up, -(double)cb->k[plane], up, plane);
-        if (!zero) {
-            sbuf_printf(o, "        s = %sVMIN(s, t);\n", up);
-            return;
-        }
-        sbuf_puts(o, "        amb |= ");
-        put_cond(o, "t > F", zero);
-        sbuf_puts(o, " == 0;\n");
-    }
 }
 
 /* slp_order's registers (AVX-512 has 32 vector registers; 8 left for sums and temporaries) and
@@ -911,7 +611,7 @@ static int put_entries(sbuf *o, const tp_table *t, const slp_prog *p, const out_
     int st;
     snprintf(again, sizeof again, "%s%s%s", info->certified ? "" : "== ", info->certified ? "" : up,
              !info->certified ? "SILHOUETTE" : info->refine ? ">= 2u" : "== 3u");
-    if (info->certified && (st = put_certify64(o, t, p, info, up, err)) != PTP_OK)
+    if (info->certified && (st = emit_c_cert_certify64(o, t, p, info, up, err)) != PTP_OK)
         return st;
     if (info->refine)
         emit_c_refine(o, t, info, up);
