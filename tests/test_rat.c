@@ -547,11 +547,13 @@ static void check_assoc(prop *p, int op, const rat *a, const rat *b, const rat *
     }
 }
 
-static void sweep(void)
+/* 0 and 1, for the identities. */
+static const rat sweep_zero = {0, 1}, sweep_one = {1, 1};
+
+/* Names the sweep's properties, with the sweep's size. */
+static void sweep_init(void)
 {
-    long i;
     int op;
-    const rat zero = {0, 1}, one = {1, 1};
     prop_init(&p_comm_add, "rat: a+b == b+a, same status (%ld random pairs)", SWEEP);
     prop_init(&p_comm_mul, "rat: a*b == b*a, same status (%ld random pairs)", SWEEP);
     prop_init(&p_assoc_add, "rat: (a+b)+c == a+(b+c) where no overflow (%ld random triples)",
@@ -596,146 +598,163 @@ static void sweep(void)
     prop_init(&p_mul_strict, "rat: a*b and a/b report EOVERFLOW iff the exact result does not "
                              "fit (every overflow and every 4th pair of %ld random pairs)",
               SWEEP);
+}
 
-    for (i = 0; i < SWEEP; i++) {
-        rat a, b, c, res[NOPS], t, u, v, w;
-        int st[NOPS], s1, s2, s3, s4, s5;
-        small_mode = i % 4 == 3; /* a quarter of the triples from at most 62-bit parts */
-        a = rnd_rat();
-        b = rnd_rat();
-        c = rnd_rat();
-        small_mode = 0;
-
-        for (op = 0; op < NOPS; op++) {
-            st[op] = run_op(op, &a, &b, &res[op]);
-            if (i % 4 == 0)
-                check_nocause(op, &a, &b, st[op]);
-        }
-        /* mul and div: overflow exactly when the canonical result does not fit. */
-        for (op = OP_MUL; op <= OP_DIV; op++) {
-            ref_result ref;
-            if (op == OP_DIV && b.num == 0)
-                continue;
-            if (st[op] != PTP_EOVERFLOW && i % 4)
-                continue;
-            ref = reference(op, &a, &b);
-            p_mul_strict.tried++;
-            if ((st[op] == PTP_EOVERFLOW) != !ref.fits)
-                prop_fail(&p_mul_strict, "%s %s %s: status %d but the result %s", S(&a),
-                          op_sym[op], S(&b), st[op],
-                          ref.fits ? "fits" : "does not fit");
-        }
-
-        /* aliasing */
-        for (op = 0; op < NOPS; op++) {
-            rat r2 = sentinel;
-            int sa, sb, sab, s0 = st[op], s2b;
-            p_alias[op].tried++;
-            t = a;
-            sa = ops[op](&t, &t, &b);
-            if (sa != s0 || !req(&t, s0 ? &a : &res[op]))
-                prop_fail(&p_alias[op], "r==a: %s %s %s gave %d, %s; unaliased %d, %s", S(&a),
-                          op_sym[op], S(&b), sa, S(&t), s0, S(&res[op]));
-            t = b;
-            sb = ops[op](&t, &a, &t);
-            if (sb != s0 || !req(&t, s0 ? &b : &res[op]))
-                prop_fail(&p_alias[op], "r==b: %s %s %s gave %d, %s; unaliased %d, %s", S(&a),
-                          op_sym[op], S(&b), sb, S(&t), s0, S(&res[op]));
-            s2b = ops[op](&r2, &a, &a);
-            t = a;
-            sab = ops[op](&t, &t, &t);
-            if (sab != s2b || !req(&t, s2b ? &a : &r2))
-                prop_fail(&p_alias[op], "r==a==b: %s %s %s gave %d, %s; unaliased %d, %s",
-                          S(&a), op_sym[op], S(&a), sab, S(&t), s2b, S(&r2));
-        }
-
-        check_comm(&p_comm_add, OP_ADD, &a, &b, &res[OP_ADD], st[OP_ADD]);
-        check_comm(&p_comm_mul, OP_MUL, &a, &b, &res[OP_MUL], st[OP_MUL]);
-
-        /* a-b == -(b-a) */
-        p_sub_anti.tried++;
-        s1 = rat_sub(&t, &b, &a);
-        rat_neg(&u, &t);
-        if (s1 != st[OP_SUB] || (s1 == PTP_OK && !req(&u, &res[OP_SUB])))
-            prop_fail(&p_sub_anti, "a=%s b=%s: a-b %d %s, b-a %d %s", S(&a), S(&b),
-                      st[OP_SUB], S(&res[OP_SUB]), s1, S(&t));
-
-        check_assoc(&p_assoc_add, OP_ADD, &a, &b, &c, &res[OP_ADD], st[OP_ADD]);
-        check_assoc(&p_assoc_mul, OP_MUL, &a, &b, &c, &res[OP_MUL], st[OP_MUL]);
-
-        /* distributivity */
-        s1 = rat_add(&t, &b, &c);
-        s2 = s1 ? s1 : rat_mul(&u, &a, &t);
-        s3 = rat_mul(&v, &a, &b);
-        s4 = s3 ? s3 : rat_mul(&w, &a, &c);
-        s5 = s4 ? s4 : rat_add(&w, &v, &w);
-        if (!s2 && !s5) {
-            p_distrib.tried++;
-            if (!req(&u, &w))
-                prop_fail(&p_distrib, "a=%s b=%s c=%s: a*(b+c) = %s, a*b+a*c = %s", S(&a),
-                          S(&b), S(&c), S(&u), S(&w));
-        }
-
-        /* identities */
-        p_add0.tried++;
-        if (rat_add(&t, &a, &zero) || !req(&t, &a) || rat_add(&u, &zero, &a) || !req(&u, &a) ||
-            rat_sub(&v, &a, &zero) || !req(&v, &a))
-            prop_fail(&p_add0, "a=%s: a+0 = %s, 0+a = %s, a-0 = %s", S(&a), S(&t), S(&u),
-                      S(&v));
-        p_mul1.tried++;
-        if (rat_mul(&t, &a, &one) || !req(&t, &a) || rat_mul(&u, &one, &a) || !req(&u, &a) ||
-            rat_div(&v, &a, &one) || !req(&v, &a))
-            prop_fail(&p_mul1, "a=%s: a*1 = %s, 1*a = %s, a/1 = %s", S(&a), S(&t), S(&u),
-                      S(&v));
-        p_sub_self.tried++;
-        t = sentinel;
-        if (rat_sub(&t, &a, &a) || !req(&t, &zero))
-            prop_fail(&p_sub_self, "a=%s: a-a = %s", S(&a), S(&t));
-        p_add_neg.tried++;
-        rat_neg(&u, &a);
-        t = sentinel;
-        if (rat_add(&t, &a, &u) || !req(&t, &zero))
-            prop_fail(&p_add_neg, "a=%s: a+(-a) = %s", S(&a), S(&t));
-        if (a.num) {
-            p_inv.tried++;
-            t = sentinel;
-            s1 = rat_div(&t, &one, &a);
-            u = sentinel;
-            s2 = s1 ? s1 : rat_mul(&u, &a, &t);
-            if (s1 || !my_canonical(&t) || s2 || !req(&u, &one))
-                prop_fail(&p_inv, "a=%s: 1/a %d %s, a*(1/a) %d %s", S(&a), s1, S(&t), s2,
-                          S(&u));
-        }
-        if (b.num && !st[OP_DIV]) {
-            p_divmul.tried++;
-            t = sentinel;
-            s1 = rat_mul(&t, &res[OP_DIV], &b);
-            if (s1 || !req(&t, &a))
-                prop_fail(&p_divmul, "a=%s b=%s: a/b = %s, (a/b)*b %d %s", S(&a), S(&b),
-                          S(&res[OP_DIV]), s1, S(&t));
-        }
-        p_div_self.tried++;
-        {
-            rat q = sentinel, z1 = sentinel, z2 = sentinel, e = sentinel;
-            int sq = a.num ? rat_div(&q, &a, &a) : PTP_OK;
-            int sz1 = a.num ? rat_div(&z1, &zero, &a) : PTP_OK;
-            int sz2 = rat_mul(&z2, &a, &zero), se = rat_div(&e, &a, &zero);
-            if (!a.num)
-                q = one, z1 = zero;
-            if (sq || !req(&q, &one) || sz1 || !req(&z1, &zero) || sz2 || !req(&z2, &zero) ||
-                se != PTP_EUSAGE || !req(&e, &sentinel))
-                prop_fail(&p_div_self, "a=%s: a/a %d %s, 0/a %d %s, a*0 %d %s, a/0 %d %s",
-                          S(&a), sq, S(&q), sz1, S(&z1), sz2, S(&z2), se, S(&e));
-        }
-        for (op = 0; op < NOPS; op++) {
-            if (st[op] || res[op].num)
-                continue;
-            p_zero.tried++;
-            if (res[op].den != 1)
-                prop_fail(&p_zero, "%s %s %s = %s", S(&a), op_sym[op], S(&b), S(&res[op]));
-        }
+/* a*b and a/b (statuses st[]) overflow exactly when the canonical result does not fit:
+ * checked on every overflow, and on every pair when all (pair i of the sweep, every 4th). */
+static void check_strict(const rat *a, const rat *b, const int *st, int all)
+{
+    int op;
+    for (op = OP_MUL; op <= OP_DIV; op++) {
+        ref_result ref;
+        if (op == OP_DIV && b->num == 0)
+            continue;
+        if (st[op] != PTP_EOVERFLOW && !all)
+            continue;
+        ref = reference(op, a, b);
+        p_mul_strict.tried++;
+        if ((st[op] == PTP_EOVERFLOW) != !ref.fits)
+            prop_fail(&p_mul_strict, "%s %s %s: status %d but the result %s", S(a), op_sym[op],
+                      S(b), st[op], ref.fits ? "fits" : "does not fit");
     }
+}
 
+/* Every operation aliased r==a, r==b and r==a==b gives the unaliased results res[] and
+ * statuses st[] (r==a==b: those of a op a). */
+static void check_alias(const rat *a, const rat *b, const rat *res, const int *st)
+{
+    int op;
+    for (op = 0; op < NOPS; op++) {
+        rat r2 = sentinel, t;
+        int sa, sb, sab, s0 = st[op], s2b;
+        p_alias[op].tried++;
+        t = *a;
+        sa = ops[op](&t, &t, b);
+        if (sa != s0 || !req(&t, s0 ? a : &res[op]))
+            prop_fail(&p_alias[op], "r==a: %s %s %s gave %d, %s; unaliased %d, %s", S(a),
+                      op_sym[op], S(b), sa, S(&t), s0, S(&res[op]));
+        t = *b;
+        sb = ops[op](&t, a, &t);
+        if (sb != s0 || !req(&t, s0 ? b : &res[op]))
+            prop_fail(&p_alias[op], "r==b: %s %s %s gave %d, %s; unaliased %d, %s", S(a),
+                      op_sym[op], S(b), sb, S(&t), s0, S(&res[op]));
+        s2b = ops[op](&r2, a, a);
+        t = *a;
+        sab = ops[op](&t, &t, &t);
+        if (sab != s2b || !req(&t, s2b ? a : &r2))
+            prop_fail(&p_alias[op], "r==a==b: %s %s %s gave %d, %s; unaliased %d, %s", S(a),
+                      op_sym[op], S(a), sab, S(&t), s2b, S(&r2));
+    }
+}
+
+/* a-b == -(b-a) with the same status (ab and st: a-b's result and status). */
+static void check_sub_anti(const rat *a, const rat *b, const rat *ab, int st)
+{
+    rat t, u;
+    int s1;
+    p_sub_anti.tried++;
+    s1 = rat_sub(&t, b, a);
+    rat_neg(&u, &t);
+    if (s1 != st || (s1 == PTP_OK && !req(&u, ab)))
+        prop_fail(&p_sub_anti, "a=%s b=%s: a-b %d %s, b-a %d %s", S(a), S(b), st, S(ab), s1,
+                  S(&t));
+}
+
+/* a*(b+c) == a*b + a*c where neither side overflows. */
+static void check_distrib(const rat *a, const rat *b, const rat *c)
+{
+    rat t, u, v, w;
+    int s1 = rat_add(&t, b, c), s2 = s1 ? s1 : rat_mul(&u, a, &t);
+    int s3 = rat_mul(&v, a, b), s4 = s3 ? s3 : rat_mul(&w, a, c);
+    int s5 = s4 ? s4 : rat_add(&w, &v, &w);
+    if (!s2 && !s5) {
+        p_distrib.tried++;
+        if (!req(&u, &w))
+            prop_fail(&p_distrib, "a=%s b=%s c=%s: a*(b+c) = %s, a*b+a*c = %s", S(a), S(b),
+                      S(c), S(&u), S(&w));
+    }
+}
+
+/* The identities of 0 and 1 on a: a+0, 0+a, a-0, a*1, 1*a, a/1, a-a and a+(-a). */
+static void check_identities(const rat *a)
+{
+    const rat *zero = &sweep_zero, *one = &sweep_one;
+    rat t, u, v;
+    p_add0.tried++;
+    if (rat_add(&t, a, zero) || !req(&t, a) || rat_add(&u, zero, a) || !req(&u, a) ||
+        rat_sub(&v, a, zero) || !req(&v, a))
+        prop_fail(&p_add0, "a=%s: a+0 = %s, 0+a = %s, a-0 = %s", S(a), S(&t), S(&u), S(&v));
+    p_mul1.tried++;
+    if (rat_mul(&t, a, one) || !req(&t, a) || rat_mul(&u, one, a) || !req(&u, a) ||
+        rat_div(&v, a, one) || !req(&v, a))
+        prop_fail(&p_mul1, "a=%s: a*1 = %s, 1*a = %s, a/1 = %s", S(a), S(&t), S(&u), S(&v));
+    p_sub_self.tried++;
+    t = sentinel;
+    if (rat_sub(&t, a, a) || !req(&t, zero))
+        prop_fail(&p_sub_self, "a=%s: a-a = %s", S(a), S(&t));
+    p_add_neg.tried++;
+    rat_neg(&u, a);
+    t = sentinel;
+    if (rat_add(&t, a, &u) || !req(&t, zero))
+        prop_fail(&p_add_neg, "a=%s: a+(-a) = %s", S(a), S(&t));
+}
+
+/* The inverses on a and b (a/b: result q and status sq): 1/a and a*(1/a), (a/b)*b, and a/a,
+ * 0/a, a*0 and a/0. */
+static void check_inverses(const rat *a, const rat *b, const rat *q, int sq)
+{
+    const rat *zero = &sweep_zero, *one = &sweep_one;
+    rat t, u;
+    int s1, s2;
+    if (a->num) {
+        p_inv.tried++;
+        t = sentinel;
+        s1 = rat_div(&t, one, a);
+        u = sentinel;
+        s2 = s1 ? s1 : rat_mul(&u, a, &t);
+        if (s1 || !my_canonical(&t) || s2 || !req(&u, one))
+            prop_fail(&p_inv, "a=%s: 1/a %d %s, a*(1/a) %d %s", S(a), s1, S(&t), s2, S(&u));
+    }
+    if (b->num && !sq) {
+        p_divmul.tried++;
+        t = sentinel;
+        s1 = rat_mul(&t, q, b);
+        if (s1 || !req(&t, a))
+            prop_fail(&p_divmul, "a=%s b=%s: a/b = %s, (a/b)*b %d %s", S(a), S(b), S(q), s1,
+                      S(&t));
+    }
+    p_div_self.tried++;
+    {
+        rat q1 = sentinel, z1 = sentinel, z2 = sentinel, e = sentinel;
+        int s_q = a->num ? rat_div(&q1, a, a) : PTP_OK;
+        int sz1 = a->num ? rat_div(&z1, zero, a) : PTP_OK;
+        int sz2 = rat_mul(&z2, a, zero), se = rat_div(&e, a, zero);
+        if (!a->num)
+            q1 = *one, z1 = *zero;
+        if (s_q || !req(&q1, one) || sz1 || !req(&z1, zero) || sz2 || !req(&z2, zero) ||
+            se != PTP_EUSAGE || !req(&e, &sentinel))
+            prop_fail(&p_div_self, "a=%s: a/a %d %s, 0/a %d %s, a*0 %d %s, a/0 %d %s", S(a),
+                      s_q, S(&q1), sz1, S(&z1), sz2, S(&z2), se, S(&e));
+    }
+}
+
+/* Every zero result res[op] (status st[op] 0) of a op b is exactly 0/1. */
+static void check_zero(const rat *a, const rat *b, const rat *res, const int *st)
+{
+    int op;
+    for (op = 0; op < NOPS; op++) {
+        if (st[op] || res[op].num)
+            continue;
+        p_zero.tried++;
+        if (res[op].den != 1)
+            prop_fail(&p_zero, "%s %s %s = %s", S(a), op_sym[op], S(b), S(&res[op]));
+    }
+}
+
+/* Reports the sweep's properties and counts. */
+static void sweep_report(void)
+{
+    int op;
     for (op = 0; op < NOPS; op++) {
         prop_report(&opp[op].exact);
         prop_report(&opp[op].canon);
@@ -765,6 +784,40 @@ static void sweep(void)
     prop_report(&p_zero);
 }
 
+/* The random sweep: SWEEP triples a, b, c, every operation and property on them. */
+static void sweep(void)
+{
+    long i;
+    int op;
+    sweep_init();
+    for (i = 0; i < SWEEP; i++) {
+        rat a, b, c, res[NOPS];
+        int st[NOPS];
+        small_mode = i % 4 == 3; /* a quarter of the triples from at most 62-bit parts */
+        a = rnd_rat();
+        b = rnd_rat();
+        c = rnd_rat();
+        small_mode = 0;
+        for (op = 0; op < NOPS; op++) {
+            st[op] = run_op(op, &a, &b, &res[op]);
+            if (i % 4 == 0)
+                check_nocause(op, &a, &b, st[op]);
+        }
+        check_strict(&a, &b, st, i % 4 == 0);
+        check_alias(&a, &b, res, st);
+        check_comm(&p_comm_add, OP_ADD, &a, &b, &res[OP_ADD], st[OP_ADD]);
+        check_comm(&p_comm_mul, OP_MUL, &a, &b, &res[OP_MUL], st[OP_MUL]);
+        check_sub_anti(&a, &b, &res[OP_SUB], st[OP_SUB]);
+        check_assoc(&p_assoc_add, OP_ADD, &a, &b, &c, &res[OP_ADD], st[OP_ADD]);
+        check_assoc(&p_assoc_mul, OP_MUL, &a, &b, &c, &res[OP_MUL], st[OP_MUL]);
+        check_distrib(&a, &b, &c);
+        check_identities(&a);
+        check_inverses(&a, &b, &res[OP_DIV], st[OP_DIV]);
+        check_zero(&a, &b, res, st);
+    }
+    sweep_report();
+}
+
 /* ---- constructed overflows and boundary cases ---- */
 
 #define MINI (-MAXI - 1)
@@ -778,6 +831,73 @@ typedef struct {
     const char *why;
 } fixed_case;
 
+/* Runs the n constructed cases: each gives its status and value, r unchanged on failure. */
+static void run_fixed(const fixed_case *cases, size_t n)
+{
+    prop p;
+    size_t i;
+    prop_init(&p, "rat: %zu constructed overflow and boundary cases give the expected status "
+                  "and value, r unchanged on failure",
+              n);
+    for (i = 0; i < n; i++) {
+        const fixed_case *c = &cases[i];
+        rat r = sentinel;
+        int st;
+        p.tried++;
+        if (!my_canonical(&c->a) || !my_canonical(&c->b)) {
+            prop_fail(&p, "test case %s has a non-canonical operand", c->why);
+            continue;
+        }
+        st = ops[c->op](&r, &c->a, &c->b);
+        if (st != c->want || (st == PTP_OK && !req(&r, &c->result)) ||
+            (st != PTP_OK && !req(&r, &sentinel)))
+            prop_fail(&p, "%s: status %d, r = %s (want %d%s%s)", c->why, st, S(&r), c->want,
+                      c->want == PTP_OK ? ", " : ", r unchanged",
+                      c->want == PTP_OK ? S(&c->result) : "");
+    }
+    prop_report(&p);
+}
+
+/* Random a/p + b/q, a/p - b/q and (a/p)*(b/q) with coprime p, q of 65..100 bits overflow: the
+ * denominator p*q cannot fit. */
+static void coprime_overflows(void)
+{
+    prop p;
+    size_t i;
+    prop_init(&p, "rat: a/p + b/q, a/p - b/q, (a/p)*(b/q) with coprime p, q of 65..100 bits "
+                  "overflow, r unchanged (10000 random)");
+    for (i = 0; i < 10000; i++) {
+        ptp_u128 pp, qq, an, bnum;
+        rat a, b, r;
+        int op;
+        do {
+            pp = check_rnd_bits(65 + (int)check_rnd_below(36)) | ((ptp_u128)1 << 64) | 1;
+            qq = check_rnd_bits(65 + (int)check_rnd_below(36)) | ((ptp_u128)1 << 64);
+        } while (my_gcd(pp, qq) != 1);
+        /* a coprime to p and q, b coprime to q and p: nothing cancels even in the product */
+        do
+            an = check_rnd_bits(1 + (int)check_rnd_below(100)) | 1;
+        while (my_gcd(an, pp) != 1 || my_gcd(an, qq) != 1);
+        do
+            bnum = check_rnd_bits(1 + (int)check_rnd_below(100)) | 1;
+        while (my_gcd(bnum, qq) != 1 || my_gcd(bnum, pp) != 1);
+        a = mk(check_rnd() & 1 ? -(ptp_i128)an : (ptp_i128)an, (ptp_i128)pp);
+        b = mk(check_rnd() & 1 ? -(ptp_i128)bnum : (ptp_i128)bnum, (ptp_i128)qq);
+        for (op = OP_ADD; op <= OP_MUL; op++) {
+            int st;
+            r = sentinel;
+            p.tried++;
+            st = ops[op](&r, &a, &b);
+            if (st != PTP_EOVERFLOW || !req(&r, &sentinel))
+                prop_fail(&p, "%s %s %s: status %d, r = %s", S(&a), op_sym[op], S(&b), st,
+                          S(&r));
+        }
+    }
+    prop_report(&p);
+}
+
+/* The constructed overflow and boundary cases, random coprime overflows, and a known
+ * limitation reported as a note. */
 static void explicit_cases(void)
 {
     const fixed_case cases[] = {
@@ -821,61 +941,8 @@ static void explicit_cases(void)
         {OP_MUL, {MAXI, P2(126)}, {P2(126), MAXI}, PTP_OK, {1, 1},
          "(2^127-1)/2^126 * 2^126/(2^127-1)"},
     };
-    prop p;
-    size_t i;
-    prop_init(&p, "rat: %zu constructed overflow and boundary cases give the expected status "
-                  "and value, r unchanged on failure",
-              sizeof cases / sizeof cases[0]);
-    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        const fixed_case *c = &cases[i];
-        rat r = sentinel;
-        int st;
-        p.tried++;
-        if (!my_canonical(&c->a) || !my_canonical(&c->b)) {
-            prop_fail(&p, "test case %s has a non-canonical operand", c->why);
-            continue;
-        }
-        st = ops[c->op](&r, &c->a, &c->b);
-        if (st != c->want || (st == PTP_OK && !req(&r, &c->result)) ||
-            (st != PTP_OK && !req(&r, &sentinel)))
-            prop_fail(&p, "%s: status %d, r = %s (want %d%s%s)", c->why, st, S(&r), c->want,
-                      c->want == PTP_OK ? ", " : ", r unchanged",
-                      c->want == PTP_OK ? S(&c->result) : "");
-    }
-    prop_report(&p);
-
-    /* random a/p + b/q with coprime p, q of 65..100 bits: the denominator p*q cannot fit */
-    prop_init(&p, "rat: a/p + b/q, a/p - b/q, (a/p)*(b/q) with coprime p, q of 65..100 bits "
-                  "overflow, r unchanged (10000 random)");
-    for (i = 0; i < 10000; i++) {
-        ptp_u128 pp, qq, an, bnum;
-        rat a, b, r;
-        int op;
-        do {
-            pp = check_rnd_bits(65 + (int)check_rnd_below(36)) | ((ptp_u128)1 << 64) | 1;
-            qq = check_rnd_bits(65 + (int)check_rnd_below(36)) | ((ptp_u128)1 << 64);
-        } while (my_gcd(pp, qq) != 1);
-        /* a coprime to p and q, b coprime to q and p: nothing cancels even in the product */
-        do
-            an = check_rnd_bits(1 + (int)check_rnd_below(100)) | 1;
-        while (my_gcd(an, pp) != 1 || my_gcd(an, qq) != 1);
-        do
-            bnum = check_rnd_bits(1 + (int)check_rnd_below(100)) | 1;
-        while (my_gcd(bnum, qq) != 1 || my_gcd(bnum, pp) != 1);
-        a = mk(check_rnd() & 1 ? -(ptp_i128)an : (ptp_i128)an, (ptp_i128)pp);
-        b = mk(check_rnd() & 1 ? -(ptp_i128)bnum : (ptp_i128)bnum, (ptp_i128)qq);
-        for (op = OP_ADD; op <= OP_MUL; op++) {
-            int st;
-            r = sentinel;
-            p.tried++;
-            st = ops[op](&r, &a, &b);
-            if (st != PTP_EOVERFLOW || !req(&r, &sentinel))
-                prop_fail(&p, "%s %s %s: status %d, r = %s", S(&a), op_sym[op], S(&b), st,
-                          S(&r));
-        }
-    }
-    prop_report(&p);
-
+    run_fixed(cases, sizeof cases / sizeof cases[0]);
+    coprime_overflows();
     {
         /* A known limitation, reported rather than checked: Knuth's intermediate
          * a.num*(b.den/g) overflows although the difference is 1/6. */
@@ -889,13 +956,13 @@ static void explicit_cases(void)
 
 /* ---- rat_set_si, rat_set_frac, rat_is_canonical ---- */
 
-static void construction(void)
+/* rat_set_si(n) == n/1, canonical, on random and edge values. */
+static void set_si_cases(void)
 {
     prop p;
     long i;
     rat r;
     static const int64_t si[] = {0, 1, -1, INT64_MAX, INT64_MIN, INT64_MIN + 1, 42, -42};
-
     prop_init(&p, "rat: rat_set_si(n) == n/1, canonical (%ld random int64 and 8 edge values)",
               PAIRS);
     for (i = 0; i < PAIRS + 8; i++) {
@@ -906,7 +973,14 @@ static void construction(void)
             prop_fail(&p, "rat_set_si(%lld) = %s", (long long)n, S(&r));
     }
     prop_report(&p);
+}
 
+/* rat_set_frac reduces and normalizes random fractions of both signs with common factors. */
+static void set_frac_random(void)
+{
+    prop p;
+    long i;
+    rat r;
     prop_init(&p, "rat: rat_set_frac reduces, normalizes signs and zero (%ld random num/den, "
                   "both signs, common factors)",
               PAIRS);
@@ -939,96 +1013,115 @@ static void construction(void)
                       S(&r), S(&want));
     }
     prop_report(&p);
+}
 
-    {
-        static const struct {
-            ptp_i128 num, den;
-            int want;
-            rat result;
-        } fc[] = {
-            {0, 0, PTP_EUSAGE, {0, 1}},
-            {1, 0, PTP_EUSAGE, {0, 1}},
-            {-5, 0, PTP_EUSAGE, {0, 1}},
-            {MINI, 0, PTP_EUSAGE, {0, 1}},
-            {MINI, 1, PTP_EOVERFLOW, {0, 1}},
-            {MINI, -1, PTP_EOVERFLOW, {0, 1}},
-            {1, MINI, PTP_EOVERFLOW, {0, 1}},
-            {MINI, 3, PTP_EOVERFLOW, {0, 1}},
-            {MINI, 2, PTP_OK, {-P2(126), 1}},
-            {MINI, -2, PTP_OK, {P2(126), 1}},
-            {MINI, MINI, PTP_OK, {1, 1}},
-            {P2(126), MINI, PTP_OK, {-1, 2}},
-            {0, MINI, PTP_OK, {0, 1}},
-            {0, -7, PTP_OK, {0, 1}},
-            {MAXI, -1, PTP_OK, {-MAXI, 1}},
-            {-MAXI, -MAXI, PTP_OK, {1, 1}},
-            {-6, -4, PTP_OK, {3, 2}},
-            {6, -4, PTP_OK, {-3, 2}},
-            {-6, 4, PTP_OK, {-3, 2}},
-        };
-        size_t j;
-        prop_init(&p, "rat: rat_set_frac edge cases (den 0 is PTP_EUSAGE, -2^127 only when it "
-                      "reduces away), r unchanged on failure");
-        for (j = 0; j < sizeof fc / sizeof fc[0]; j++) {
-            int st;
-            r = sentinel;
-            p.tried++;
-            st = rat_set_frac(&r, fc[j].num, fc[j].den);
-            if (st != fc[j].want || (st == PTP_OK && !req(&r, &fc[j].result)) ||
-                (st != PTP_OK && !req(&r, &sentinel)))
-                prop_fail(&p, "rat_set_frac(%s, %s): status %d, r = %s (want %d, %s)",
-                          SI(fc[j].num), SI(fc[j].den), st, S(&r), fc[j].want,
-                          fc[j].want ? "r unchanged" : S(&fc[j].result));
-        }
-        prop_report(&p);
+/* rat_set_frac's edge cases: den 0, -2^127, signs; r unchanged on failure. */
+static void set_frac_edges(void)
+{
+    prop p;
+    rat r;
+    static const struct {
+        ptp_i128 num, den;
+        int want;
+        rat result;
+    } fc[] = {
+        {0, 0, PTP_EUSAGE, {0, 1}},
+        {1, 0, PTP_EUSAGE, {0, 1}},
+        {-5, 0, PTP_EUSAGE, {0, 1}},
+        {MINI, 0, PTP_EUSAGE, {0, 1}},
+        {MINI, 1, PTP_EOVERFLOW, {0, 1}},
+        {MINI, -1, PTP_EOVERFLOW, {0, 1}},
+        {1, MINI, PTP_EOVERFLOW, {0, 1}},
+        {MINI, 3, PTP_EOVERFLOW, {0, 1}},
+        {MINI, 2, PTP_OK, {-P2(126), 1}},
+        {MINI, -2, PTP_OK, {P2(126), 1}},
+        {MINI, MINI, PTP_OK, {1, 1}},
+        {P2(126), MINI, PTP_OK, {-1, 2}},
+        {0, MINI, PTP_OK, {0, 1}},
+        {0, -7, PTP_OK, {0, 1}},
+        {MAXI, -1, PTP_OK, {-MAXI, 1}},
+        {-MAXI, -MAXI, PTP_OK, {1, 1}},
+        {-6, -4, PTP_OK, {3, 2}},
+        {6, -4, PTP_OK, {-3, 2}},
+        {-6, 4, PTP_OK, {-3, 2}},
+    };
+    size_t j;
+    prop_init(&p, "rat: rat_set_frac edge cases (den 0 is PTP_EUSAGE, -2^127 only when it "
+                  "reduces away), r unchanged on failure");
+    for (j = 0; j < sizeof fc / sizeof fc[0]; j++) {
+        int st;
+        r = sentinel;
+        p.tried++;
+        st = rat_set_frac(&r, fc[j].num, fc[j].den);
+        if (st != fc[j].want || (st == PTP_OK && !req(&r, &fc[j].result)) ||
+            (st != PTP_OK && !req(&r, &sentinel)))
+            prop_fail(&p, "rat_set_frac(%s, %s): status %d, r = %s (want %d, %s)",
+                      SI(fc[j].num), SI(fc[j].den), st, S(&r), fc[j].want,
+                      fc[j].want ? "r unchanged" : S(&fc[j].result));
     }
+    prop_report(&p);
+}
 
-    {
-        static const rat bad[] = {{1, 0},       {0, 0},     {1, -2},   {-1, -2},
-                                  {3, -1},      {2, 4},     {6, 9},    {0, 2},
-                                  {0, -1},      {MINI, 1},  {MINI, 3}, {MAXI, MAXI},
-                                  {-P2(64), 2}, {P2(126), P2(100)}};
-        static const rat good[] = {{0, 1},    {1, 1},        {-1, 1},    {MAXI, 1},
-                                   {-MAXI, 1}, {1, MAXI},    {-1, MAXI}, {-MAXI, MAXI - 1},
-                                   {3, 2},     {-P2(126), 1}, {1, P2(126)}};
-        size_t j;
-        prop_init(&p, "rat: rat_is_canonical rejects %zu hand-made non-canonical values, "
-                      "accepts %zu canonical ones, agrees with the definition on %ld random "
-                      "pairs",
-                  sizeof bad / sizeof bad[0], sizeof good / sizeof good[0], PAIRS);
-        for (j = 0; j < sizeof bad / sizeof bad[0]; j++) {
-            p.tried++;
-            if (rat_is_canonical(&bad[j]))
-                prop_fail(&p, "accepts %s/%s", SI(bad[j].num), SI(bad[j].den));
-        }
-        for (j = 0; j < sizeof good / sizeof good[0]; j++) {
-            p.tried++;
-            if (!rat_is_canonical(&good[j]))
-                prop_fail(&p, "rejects %s", S(&good[j]));
-        }
-        for (i = 0; i < PAIRS; i++) {
-            ptp_u128 n = rnd_mag(), d = i % 2 ? rnd_mag() : 1, k = 1 + check_rnd_below(4);
-            rat x;
-            if (n <= (ptp_u128)MAXI / k && d <= (ptp_u128)MAXI / k) {
-                n *= k;
-                d *= k;
-            }
-            x.num = check_rnd() & 1 ? -(ptp_i128)n : (ptp_i128)n;
-            x.den = check_rnd_below(5) ? (ptp_i128)d : -(ptp_i128)d;
-            if (i % 1000 == 7)
-                x.num = MINI;
-            p.tried++;
-            if (!rat_is_canonical(&x) != !my_canonical(&x))
-                prop_fail(&p, "rat_is_canonical(%s/%s) = %d", SI(x.num), SI(x.den),
-                          rat_is_canonical(&x));
-        }
-        prop_report(&p);
+/* rat_is_canonical on hand-made values and against the definition on random pairs. */
+static void canonical_cases(void)
+{
+    prop p;
+    long i;
+    static const rat bad[] = {{1, 0},       {0, 0},     {1, -2},   {-1, -2},
+                              {3, -1},      {2, 4},     {6, 9},    {0, 2},
+                              {0, -1},      {MINI, 1},  {MINI, 3}, {MAXI, MAXI},
+                              {-P2(64), 2}, {P2(126), P2(100)}};
+    static const rat good[] = {{0, 1},    {1, 1},        {-1, 1},    {MAXI, 1},
+                               {-MAXI, 1}, {1, MAXI},    {-1, MAXI}, {-MAXI, MAXI - 1},
+                               {3, 2},     {-P2(126), 1}, {1, P2(126)}};
+    size_t j;
+    prop_init(&p, "rat: rat_is_canonical rejects %zu hand-made non-canonical values, "
+                  "accepts %zu canonical ones, agrees with the definition on %ld random "
+                  "pairs",
+              sizeof bad / sizeof bad[0], sizeof good / sizeof good[0], PAIRS);
+    for (j = 0; j < sizeof bad / sizeof bad[0]; j++) {
+        p.tried++;
+        if (rat_is_canonical(&bad[j]))
+            prop_fail(&p, "accepts %s/%s", SI(bad[j].num), SI(bad[j].den));
     }
+    for (j = 0; j < sizeof good / sizeof good[0]; j++) {
+        p.tried++;
+        if (!rat_is_canonical(&good[j]))
+            prop_fail(&p, "rejects %s", S(&good[j]));
+    }
+    for (i = 0; i < PAIRS; i++) {
+        ptp_u128 n = rnd_mag(), d = i % 2 ? rnd_mag() : 1, k = 1 + check_rnd_below(4);
+        rat x;
+        if (n <= (ptp_u128)MAXI / k && d <= (ptp_u128)MAXI / k) {
+            n *= k;
+            d *= k;
+        }
+        x.num = check_rnd() & 1 ? -(ptp_i128)n : (ptp_i128)n;
+        x.den = check_rnd_below(5) ? (ptp_i128)d : -(ptp_i128)d;
+        if (i % 1000 == 7)
+            x.num = MINI;
+        p.tried++;
+        if (!rat_is_canonical(&x) != !my_canonical(&x))
+            prop_fail(&p, "rat_is_canonical(%s/%s) = %d", SI(x.num), SI(x.den),
+                      rat_is_canonical(&x));
+    }
+    prop_report(&p);
+}
+
+/* The constructors and the canonical test. */
+static void construction(void)
+{
+    set_si_cases();
+    set_frac_random();
+    set_frac_edges();
+    canonical_cases();
 }
 
 /* ---- strings ---- */
 
-static void strings(void)
+/* rat_get_str matches my_rat_str and rat_set_str reads it back, on random values and decimal
+ * boundaries. */
+static void strings_round_trip(void)
 {
     prop p;
     long i;
@@ -1064,7 +1157,14 @@ static void strings(void)
             prop_fail(&p, "rat_set_str(\"%s\"): status %d, %s", buf, st, S(&r));
     }
     prop_report(&p);
+}
 
+/* rat_set_str canonicalizes "nk/dk" to n/d for random values and factors k. */
+static void strings_factors(void)
+{
+    prop p;
+    long i;
+    char buf[RAT_STRLEN + 16];
     prop_init(&p, "rat: rat_set_str canonicalizes \"nk/dk\" to n/d (%ld random values and "
                   "factors)",
               PAIRS / 4);
@@ -1085,68 +1185,79 @@ static void strings(void)
                       S(&a));
     }
     prop_report(&p);
+}
 
-    {
-        static const struct {
-            const char *s;
-            int want;
-            rat result;
-        } sc[] = {
-            {"", PTP_EUSAGE, {0, 1}},
-            {"-", PTP_EUSAGE, {0, 1}},
-            {"1/", PTP_EUSAGE, {0, 1}},
-            {"/2", PTP_EUSAGE, {0, 1}},
-            {"1/0", PTP_EUSAGE, {0, 1}},
-            {"0/0", PTP_EUSAGE, {0, 1}},
-            {"1/-2", PTP_EUSAGE, {0, 1}},
-            {"+3", PTP_EUSAGE, {0, 1}},
-            {"1.5", PTP_EUSAGE, {0, 1}},
-            {"abc", PTP_EUSAGE, {0, 1}},
-            {"1/2/3", PTP_EUSAGE, {0, 1}},
-            {" 1", PTP_EUSAGE, {0, 1}},
-            {"1 ", PTP_EUSAGE, {0, 1}},
-            {"--1", PTP_EUSAGE, {0, 1}},
-            {"0x10", PTP_EUSAGE, {0, 1}},
-            {"1e3", PTP_EUSAGE, {0, 1}},
-            {"-/2", PTP_EUSAGE, {0, 1}},
-            {"340282366920938463463374607431768211456", PTP_EOVERFLOW, {0, 1}},
-            {"170141183460469231731687303715884105728", PTP_EOVERFLOW, {0, 1}},
-            {"-170141183460469231731687303715884105728", PTP_EOVERFLOW, {0, 1}},
-            {"1/170141183460469231731687303715884105728", PTP_EOVERFLOW, {0, 1}},
-            {"1/340282366920938463463374607431768211457", PTP_EOVERFLOW, {0, 1}},
-            {"123456789012345678901234567890123456789012345678901234567890", PTP_EOVERFLOW,
-             {0, 1}},
-            {"0", PTP_OK, {0, 1}},
-            {"-0", PTP_OK, {0, 1}},
-            {"0/7", PTP_OK, {0, 1}},
-            {"-0/5", PTP_OK, {0, 1}},
-            {"00012/0008", PTP_OK, {3, 2}},
-            {"-6/4", PTP_OK, {-3, 2}},
-            {"170141183460469231731687303715884105727", PTP_OK, {MAXI, 1}},
-            {"-170141183460469231731687303715884105727", PTP_OK, {-MAXI, 1}},
-            {"1/170141183460469231731687303715884105727", PTP_OK, {1, MAXI}},
-            {"-170141183460469231731687303715884105727/170141183460469231731687303715884105727",
-             PTP_OK,
-             {-1, 1}},
-            {"85070591730234615865843651857942052864/170141183460469231731687303715884105727",
-             PTP_OK,
-             {P2(126), MAXI}},
-        };
-        size_t j;
-        prop_init(&p, "rat: rat_set_str on %zu fixed strings: malformed is PTP_EUSAGE, too "
-                      "large is PTP_EOVERFLOW, r unchanged on failure",
-                  sizeof sc / sizeof sc[0]);
-        for (j = 0; j < sizeof sc / sizeof sc[0]; j++) {
-            rat r = sentinel;
-            int st = rat_set_str(&r, sc[j].s);
-            p.tried++;
-            if (st != sc[j].want || (st == PTP_OK && !req(&r, &sc[j].result)) ||
-                (st != PTP_OK && !req(&r, &sentinel)))
-                prop_fail(&p, "rat_set_str(\"%s\"): status %d, r = %s (want %d, %s)", sc[j].s,
-                          st, S(&r), sc[j].want, sc[j].want ? "r unchanged" : S(&sc[j].result));
-        }
-        prop_report(&p);
+/* rat_set_str on fixed strings: malformed, too large, and edge values. */
+static void strings_fixed(void)
+{
+    prop p;
+    static const struct {
+        const char *s;
+        int want;
+        rat result;
+    } sc[] = {
+        {"", PTP_EUSAGE, {0, 1}},
+        {"-", PTP_EUSAGE, {0, 1}},
+        {"1/", PTP_EUSAGE, {0, 1}},
+        {"/2", PTP_EUSAGE, {0, 1}},
+        {"1/0", PTP_EUSAGE, {0, 1}},
+        {"0/0", PTP_EUSAGE, {0, 1}},
+        {"1/-2", PTP_EUSAGE, {0, 1}},
+        {"+3", PTP_EUSAGE, {0, 1}},
+        {"1.5", PTP_EUSAGE, {0, 1}},
+        {"abc", PTP_EUSAGE, {0, 1}},
+        {"1/2/3", PTP_EUSAGE, {0, 1}},
+        {" 1", PTP_EUSAGE, {0, 1}},
+        {"1 ", PTP_EUSAGE, {0, 1}},
+        {"--1", PTP_EUSAGE, {0, 1}},
+        {"0x10", PTP_EUSAGE, {0, 1}},
+        {"1e3", PTP_EUSAGE, {0, 1}},
+        {"-/2", PTP_EUSAGE, {0, 1}},
+        {"340282366920938463463374607431768211456", PTP_EOVERFLOW, {0, 1}},
+        {"170141183460469231731687303715884105728", PTP_EOVERFLOW, {0, 1}},
+        {"-170141183460469231731687303715884105728", PTP_EOVERFLOW, {0, 1}},
+        {"1/170141183460469231731687303715884105728", PTP_EOVERFLOW, {0, 1}},
+        {"1/340282366920938463463374607431768211457", PTP_EOVERFLOW, {0, 1}},
+        {"123456789012345678901234567890123456789012345678901234567890", PTP_EOVERFLOW,
+         {0, 1}},
+        {"0", PTP_OK, {0, 1}},
+        {"-0", PTP_OK, {0, 1}},
+        {"0/7", PTP_OK, {0, 1}},
+        {"-0/5", PTP_OK, {0, 1}},
+        {"00012/0008", PTP_OK, {3, 2}},
+        {"-6/4", PTP_OK, {-3, 2}},
+        {"170141183460469231731687303715884105727", PTP_OK, {MAXI, 1}},
+        {"-170141183460469231731687303715884105727", PTP_OK, {-MAXI, 1}},
+        {"1/170141183460469231731687303715884105727", PTP_OK, {1, MAXI}},
+        {"-170141183460469231731687303715884105727/170141183460469231731687303715884105727",
+         PTP_OK,
+         {-1, 1}},
+        {"85070591730234615865843651857942052864/170141183460469231731687303715884105727",
+         PTP_OK,
+         {P2(126), MAXI}},
+    };
+    size_t j;
+    prop_init(&p, "rat: rat_set_str on %zu fixed strings: malformed is PTP_EUSAGE, too "
+                  "large is PTP_EOVERFLOW, r unchanged on failure",
+              sizeof sc / sizeof sc[0]);
+    for (j = 0; j < sizeof sc / sizeof sc[0]; j++) {
+        rat r = sentinel;
+        int st = rat_set_str(&r, sc[j].s);
+        p.tried++;
+        if (st != sc[j].want || (st == PTP_OK && !req(&r, &sc[j].result)) ||
+            (st != PTP_OK && !req(&r, &sentinel)))
+            prop_fail(&p, "rat_set_str(\"%s\"): status %d, r = %s (want %d, %s)", sc[j].s,
+                      st, S(&r), sc[j].want, sc[j].want ? "r unchanged" : S(&sc[j].result));
     }
+    prop_report(&p);
+}
+
+/* rat_get_str and rat_set_str. */
+static void strings(void)
+{
+    strings_round_trip();
+    strings_factors();
+    strings_fixed();
 }
 
 /* ---- sign, equality, negation, conversion to double ---- */
