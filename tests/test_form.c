@@ -142,123 +142,154 @@ static int key_sorted(form_key key, int rank)
     return 1;
 }
 
-static void keys(void)
-{
+/* keys's properties. */
+typedef struct {
     prop pu, pw, pa, pz, pas, ps;
-    long i;
-    const long n = 200000;
-    prop_init(&pu, "form: form_key_unpack inverts the packing, form_key_point(j) is (j) (%ld "
+} keys_props;
+
+/* Names keys's properties for n random cases. */
+static void keys_init(keys_props *kp, long n)
+{
+    prop_init(&kp->pu, "form: form_key_unpack inverts the packing, form_key_point(j) is (j) (%ld "
                    "random keys)",
               n);
-    prop_init(&pw, "form: form_key_wedge matches the definition (sorted key, sign of the "
+    prop_init(&kp->pw, "form: form_key_wedge matches the definition (sorted key, sign of the "
                    "permutation) for ranks 1^1, 1^2, 2^1 (%ld random pairs)",
               n);
-    prop_init(&pa, "form: form_key_wedge is graded alternating: a^b == (-1)^(ra*rb) b^a (%ld "
+    prop_init(&kp->pa, "form: form_key_wedge is graded alternating: a^b == (-1)^(ra*rb) b^a (%ld "
                    "random pairs of distinct indices)",
               n);
-    prop_init(&pz, "form: form_key_wedge is 0 when an index repeats (%ld random pairs)", n);
-    prop_init(&pas, "form: form_key_wedge is associative with signs: (a^b)^c == a^(b^c) (%ld "
+    prop_init(&kp->pz, "form: form_key_wedge is 0 when an index repeats (%ld random pairs)", n);
+    prop_init(&kp->pas, "form: form_key_wedge is associative with signs: (a^b)^c == a^(b^c) (%ld "
                     "random triples of points)",
               n);
-    prop_init(&ps, "form: form_key_wedge results are sorted keys of rank ra+rb (%ld random "
+    prop_init(&kp->ps, "form: form_key_wedge results are sorted keys of rank ra+rb (%ld random "
                    "pairs)",
               n);
+}
+
+/* form_key_unpack inverts the packing of r random indices below range, and form_key_point(j)
+ * is (j). */
+static void check_pack(keys_props *kp, int r, int range)
+{
+    int idx[FORM_MAX_RANK], out[FORM_MAX_RANK], j;
+    form_key a;
+    rnd_indices(idx, r, range);
+    a = my_pack(idx, r);
+    for (j = 0; j < FORM_MAX_RANK; j++)
+        out[j] = -1;
+    form_key_unpack(out, a, r);
+    kp->pu.tried++;
+    for (j = 0; j < r; j++)
+        if (out[j] != idx[j])
+            break;
+    if (j < r || (r == 1 && form_key_point(idx[0]) != a) || (r < FORM_MAX_RANK && out[r] != -1))
+        prop_fail(&kp->pu, "indices %d,%d,%d rank %d: packed %llx unpacks to %d,%d,%d", idx[0],
+                  r > 1 ? idx[1] : -1, r > 2 ? idx[2] : -1, r, (unsigned long long)a, out[0],
+                  out[1], out[2]);
+}
+
+/* a ^ b (ranks ra, rb) matches my_wedge; when nonzero it is a sorted key and b ^ a has the
+ * graded sign. */
+static void check_wedge(keys_props *kp, form_key a, int ra, form_key b, int rb)
+{
+    form_key kw = 0, kr = 0, k1 = 0;
+    int sw = form_key_wedge(&kw, a, ra, b, rb), sr = my_wedge(&kr, a, ra, b, rb), s1;
+    kp->pw.tried++;
+    if (sw != sr || (sr && kw != kr))
+        prop_fail(&kp->pw, "%s ^ %s: sign %d key %s, want sign %d key %s", SK(a, ra), SK(b, rb),
+                  sw, SK(kw, ra + rb), sr, SK(kr, ra + rb));
+    if (sw) {
+        kp->ps.tried++;
+        if (!key_sorted(kw, ra + rb))
+            prop_fail(&kp->ps, "%s ^ %s = %s (%llx) is not a sorted key", SK(a, ra), SK(b, rb),
+                      SK(kw, ra + rb), (unsigned long long)kw);
+        kp->pa.tried++;
+        s1 = form_key_wedge(&k1, b, rb, a, ra);
+        if (s1 != ((ra * rb) % 2 ? -sw : sw) || k1 != kw)
+            prop_fail(&kp->pa, "%s ^ %s = %d %s but %s ^ %s = %d %s", SK(a, ra), SK(b, rb), sw,
+                      SK(kw, ra + rb), SK(b, rb), SK(a, ra), s1, SK(k1, ra + rb));
+    } else {
+        kp->pz.tried++;
+    }
+}
+
+/* The wedge is 0 when an index repeats: a (rank ra) with a random b of rank rb below range
+ * that shares one of a's indices, both ways, and a random point with itself. */
+static void check_repeated(keys_props *kp, form_key a, int ra, int rb, int range)
+{
+    int ia[FORM_MAX_RANK], ib[FORM_MAX_RANK], j, k, s1, s2, p;
+    form_key b, k1, k2 = 0;
+    form_key_unpack(ia, a, ra);
+    rnd_indices(ib, rb, range);
+    j = (int)check_rnd_below((unsigned)rb);
+    ib[j] = ia[check_rnd_below((unsigned)ra)];
+    for (j = 1; j < rb; j++) /* re-sort; skip if b itself now repeats */
+        for (k = j; k > 0 && ib[k - 1] > ib[k]; k--) {
+            int t = ib[k];
+            ib[k] = ib[k - 1];
+            ib[k - 1] = t;
+        }
+    if (rb == 1 || ib[0] != ib[1]) {
+        b = my_pack(ib, rb);
+        kp->pz.tried++;
+        k1 = 0x1234;
+        s1 = form_key_wedge(&k1, a, ra, b, rb);
+        s2 = form_key_wedge(&k2, b, rb, a, ra);
+        if (s1 || s2)
+            prop_fail(&kp->pz, "%s ^ %s = %d, reversed %d (want 0)", SK(a, ra), SK(b, rb), s1,
+                      s2);
+    }
+    p = (int)check_rnd_below(FORM_MAX_POINT + 1);
+    kp->pz.tried++;
+    if (form_key_wedge(&k1, form_key_point(p), 1, form_key_point(p), 1))
+        prop_fail(&kp->pz, "(%d) ^ (%d) is not 0", p, p);
+}
+
+/* (a^b)^c == a^(b^c) with signs on three random points below range. */
+static void check_assoc_points(keys_props *kp, int range)
+{
+    form_key a, b, c, k1 = 0, k2 = 0, t1 = 0, t2 = 0;
+    int s1, s2;
+    a = form_key_point((int)check_rnd_below((unsigned)range));
+    b = form_key_point((int)check_rnd_below((unsigned)range));
+    c = form_key_point((int)check_rnd_below((unsigned)range));
+    s1 = form_key_wedge(&t1, a, 1, b, 1);
+    if (s1)
+        s1 *= form_key_wedge(&k1, t1, 2, c, 1);
+    s2 = form_key_wedge(&t2, b, 1, c, 1);
+    if (s2)
+        s2 *= form_key_wedge(&k2, a, 1, t2, 2);
+    kp->pas.tried++;
+    if (s1 != s2 || (s1 && k1 != k2))
+        prop_fail(&kp->pas, "a=%d b=%d c=%d: (a^b)^c = %d %s, a^(b^c) = %d %s", (int)a, (int)b,
+                  (int)c, s1, SK(k1, 3), s2, SK(k2, 3));
+}
+
+/* Key packing and the wedge of keys on random keys. */
+static void keys(void)
+{
+    keys_props kp;
+    long i;
+    const long n = 200000;
+    keys_init(&kp, n);
     for (i = 0; i < n; i++) {
         int range = rnd_range(), ra = 1 + (int)check_rnd_below(2), rb = ra == 2 ? 1 : 1 + (int)check_rnd_below(2);
-        int idx[FORM_MAX_RANK], out[FORM_MAX_RANK], r = 1 + (int)check_rnd_below(3), j, k, sw, sr, s1, s2;
-        form_key a, b, c, kw = 0, kr = 0, k1 = 0, k2 = 0, t1 = 0, t2 = 0;
-
-        /* pack / unpack */
-        rnd_indices(idx, r, range);
-        a = my_pack(idx, r);
-        for (j = 0; j < FORM_MAX_RANK; j++)
-            out[j] = -1;
-        form_key_unpack(out, a, r);
-        pu.tried++;
-        for (j = 0; j < r; j++)
-            if (out[j] != idx[j])
-                break;
-        if (j < r || (r == 1 && form_key_point(idx[0]) != a) ||
-            (r < FORM_MAX_RANK && out[r] != -1))
-            prop_fail(&pu, "indices %d,%d,%d rank %d: packed %llx unpacks to %d,%d,%d", idx[0],
-                      r > 1 ? idx[1] : -1, r > 2 ? idx[2] : -1, r, (unsigned long long)a,
-                      out[0], out[1], out[2]);
-
-        /* wedge vs definition */
+        int r = 1 + (int)check_rnd_below(3);
+        form_key a, b;
+        check_pack(&kp, r, range);
         a = rnd_key(ra, range);
         b = rnd_key(rb, range);
-        sw = form_key_wedge(&kw, a, ra, b, rb);
-        sr = my_wedge(&kr, a, ra, b, rb);
-        pw.tried++;
-        if (sw != sr || (sr && kw != kr))
-            prop_fail(&pw, "%s ^ %s: sign %d key %s, want sign %d key %s", SK(a, ra), SK(b, rb),
-                      sw, SK(kw, ra + rb), sr, SK(kr, ra + rb));
-        if (sw) {
-            ps.tried++;
-            if (!key_sorted(kw, ra + rb))
-                prop_fail(&ps, "%s ^ %s = %s (%llx) is not a sorted key", SK(a, ra), SK(b, rb),
-                          SK(kw, ra + rb), (unsigned long long)kw);
-            pa.tried++;
-            s1 = form_key_wedge(&k1, b, rb, a, ra);
-            if (s1 != ((ra * rb) % 2 ? -sw : sw) || k1 != kw)
-                prop_fail(&pa, "%s ^ %s = %d %s but %s ^ %s = %d %s", SK(a, ra), SK(b, rb), sw,
-                          SK(kw, ra + rb), SK(b, rb), SK(a, ra), s1, SK(k1, ra + rb));
-        } else {
-            pz.tried++;
-        }
-
-        /* repeated index: build b to share an index with a */
-        {
-            int ia[FORM_MAX_RANK], ib[FORM_MAX_RANK];
-            form_key_unpack(ia, a, ra);
-            rnd_indices(ib, rb, range);
-            j = (int)check_rnd_below((unsigned)rb);
-            ib[j] = ia[check_rnd_below((unsigned)ra)];
-            for (j = 1; j < rb; j++) /* re-sort; skip if b itself now repeats */
-                for (k = j; k > 0 && ib[k - 1] > ib[k]; k--) {
-                    int t = ib[k];
-                    ib[k] = ib[k - 1];
-                    ib[k - 1] = t;
-                }
-            if (rb == 1 || ib[0] != ib[1]) {
-                b = my_pack(ib, rb);
-                pz.tried++;
-                k1 = 0x1234;
-                s1 = form_key_wedge(&k1, a, ra, b, rb);
-                s2 = form_key_wedge(&k2, b, rb, a, ra);
-                if (s1 || s2)
-                    prop_fail(&pz, "%s ^ %s = %d, reversed %d (want 0)", SK(a, ra), SK(b, rb),
-                              s1, s2);
-            }
-        }
-        {
-            int p = (int)check_rnd_below(FORM_MAX_POINT + 1);
-            pz.tried++;
-            if (form_key_wedge(&k1, form_key_point(p), 1, form_key_point(p), 1))
-                prop_fail(&pz, "(%d) ^ (%d) is not 0", p, p);
-        }
-
-        /* associativity on three points */
-        a = form_key_point((int)check_rnd_below((unsigned)range));
-        b = form_key_point((int)check_rnd_below((unsigned)range));
-        c = form_key_point((int)check_rnd_below((unsigned)range));
-        s1 = form_key_wedge(&t1, a, 1, b, 1);
-        if (s1)
-            s1 *= form_key_wedge(&k1, t1, 2, c, 1);
-        s2 = form_key_wedge(&t2, b, 1, c, 1);
-        if (s2)
-            s2 *= form_key_wedge(&k2, a, 1, t2, 2);
-        pas.tried++;
-        if (s1 != s2 || (s1 && k1 != k2))
-            prop_fail(&pas, "a=%d b=%d c=%d: (a^b)^c = %d %s, a^(b^c) = %d %s", (int)a, (int)b,
-                      (int)c, s1, SK(k1, 3), s2, SK(k2, 3));
+        check_wedge(&kp, a, ra, b, rb);
+        check_repeated(&kp, a, ra, rb, range);
+        check_assoc_points(&kp, range);
     }
-    prop_report(&pu);
-    prop_report(&pw);
-    prop_report(&pa);
-    prop_report(&pz);
-    prop_report(&pas);
-    prop_report(&ps);
+    prop_report(&kp.pu);
+    prop_report(&kp.pw);
+    prop_report(&kp.pa);
+    prop_report(&kp.pz);
+    prop_report(&kp.pas);
+    prop_report(&kp.ps);
 }
 
 /* ---- random term lists and a naive per-key reference ---- */
@@ -451,6 +482,72 @@ static int sorted_permutation(const form_term *t, const form_term *orig, size_t 
     return 1;
 }
 
+/* One random term list (rnd_terms, with big) of a random rank into f[rank - 1]: sorted in
+ * place as a permutation (pp), and merged, reduced and equal to the rat sum (ps); returns its
+ * length, or -1 when the reference overflowed and nothing was checked. */
+static long check_set_terms(prop *ps, prop *pp, form *f, int big)
+{
+    form_term t[MAXTERMS], orig[MAXTERMS];
+    refmap m;
+    ptp_i128 den;
+    ptp_error err;
+    int rank = 1 + (int)check_rnd_below(FORM_MAX_RANK), st;
+    long nt = rnd_terms(t, &den, &m, rank, big);
+    char why[300];
+    if (nt < 0)
+        return -1;
+    memcpy(orig, t, (size_t)nt * sizeof *t);
+    ps->tried++;
+    st = form_set_terms(&f[rank - 1], t, (size_t)nt, den, &err);
+    pp->tried++;
+    if (!sorted_permutation(t, orig, (size_t)nt))
+        prop_fail(pp, "rank %d, %ld terms: the list left behind is not a sorted "
+                      "permutation of the input",
+                  rank, nt);
+    if (st != PTP_OK) {
+        prop_fail(ps, "rank %d, %ld terms over %s: status %d (%s)", rank, nt, SR(&(rat){den, 1}),
+                  st, err.msg);
+    } else if (!form_matches(&f[rank - 1], &m, why, sizeof why)) {
+        char first[200];
+        long k;
+        int o = 0;
+        for (k = 0; k < nt && k < 4; k++)
+            o += snprintf(first + o, sizeof first - (size_t)o, "%s%s:%s", k ? " " : "",
+                          SK(orig[k].key, rank), SR(&(rat){orig[k].num, 1}));
+        prop_fail(ps, "rank %d, %ld terms [%s ...] over %s gave %s: %s", rank, nt, first,
+                  SR(&(rat){den, 1}), SF(&f[rank - 1]), why);
+    }
+    return nt;
+}
+
+/* form_set_terms into f (rank 1) rejects den <= 0 (pd) and reports merged numerators that
+ * overflow (po). */
+static void set_terms_bad(prop *pd, prop *po, form *f)
+{
+    {
+        form_term t[2] = {{1, 3}, {2, 5}};
+        ptp_error err;
+        int st0, st1;
+        pd->tried++;
+        st0 = form_set_terms(f, t, 2, 0, &err);
+        st1 = form_set_terms(f, t, 2, -3, &err);
+        if (st0 == PTP_OK || st1 == PTP_OK)
+            prop_fail(pd, "den 0 gave %d, den -3 gave %d", st0, st1);
+    }
+    {
+        form_term t[3] = {{7, MAXI}, {7, MAXI}, {7, -MAXI}};
+        form_term u[2] = {{7, -MAXI}, {7, -1}};
+        ptp_error err;
+        int st0, st1;
+        po->tried++;
+        st0 = form_set_terms(f, t, 2, 1, &err);
+        st1 = form_set_terms(f, u, 2, 1, &err);
+        if (st0 != PTP_EOVERFLOW || st1 != PTP_EOVERFLOW)
+            prop_fail(po, "MAX+MAX gave %d, -MAX-1 gave %d", st0, st1);
+    }
+}
+
+/* form_set_terms on random term lists and on bad input. */
 static void set_terms(void)
 {
     prop ps, pd, po, pp;
@@ -470,64 +567,15 @@ static void set_terms(void)
     for (r = 0; r < FORM_MAX_RANK; r++)
         form_init(&f[r], r + 1);
     for (i = 0; i < n; i++) {
-        form_term t[MAXTERMS], orig[MAXTERMS];
-        refmap m;
-        ptp_i128 den;
-        ptp_error err;
-        int rank = 1 + (int)check_rnd_below(FORM_MAX_RANK), st;
-        long nt = rnd_terms(t, &den, &m, rank, (int)(i % 2));
-        char why[300];
-        if (nt < 0) {
+        long nt = check_set_terms(&ps, &pp, f, (int)(i % 2));
+        if (nt < 0)
             skipped++;
-            continue;
-        }
-        longlists += nt > 32;
-        memcpy(orig, t, (size_t)nt * sizeof *t);
-        ps.tried++;
-        st = form_set_terms(&f[rank - 1], t, (size_t)nt, den, &err);
-        pp.tried++;
-        if (!sorted_permutation(t, orig, (size_t)nt))
-            prop_fail(&pp, "rank %d, %ld terms: the list left behind is not a sorted "
-                           "permutation of the input",
-                      rank, nt);
-        if (st != PTP_OK) {
-            prop_fail(&ps, "rank %d, %ld terms over %s: status %d (%s)", rank, nt,
-                      SR(&(rat){den, 1}), st, err.msg);
-        } else if (!form_matches(&f[rank - 1], &m, why, sizeof why)) {
-            char first[200];
-            long k;
-            int o = 0;
-            for (k = 0; k < nt && k < 4; k++)
-                o += snprintf(first + o, sizeof first - (size_t)o, "%s%s:%s", k ? " " : "",
-                              SK(orig[k].key, rank), SR(&(rat){orig[k].num, 1}));
-            prop_fail(&ps, "rank %d, %ld terms [%s ...] over %s gave %s: %s", rank, nt, first,
-                      SR(&(rat){den, 1}), SF(&f[rank - 1]), why);
-        }
+        else
+            longlists += nt > 32;
     }
     printf("# form_set_terms: %ld lists over 32 terms, %ld skipped (reference overflow)\n",
            longlists, skipped);
-
-    {
-        form_term t[2] = {{1, 3}, {2, 5}};
-        ptp_error err;
-        int st0, st1;
-        pd.tried++;
-        st0 = form_set_terms(&f[0], t, 2, 0, &err);
-        st1 = form_set_terms(&f[0], t, 2, -3, &err);
-        if (st0 == PTP_OK || st1 == PTP_OK)
-            prop_fail(&pd, "den 0 gave %d, den -3 gave %d", st0, st1);
-    }
-    {
-        form_term t[3] = {{7, MAXI}, {7, MAXI}, {7, -MAXI}};
-        form_term u[2] = {{7, -MAXI}, {7, -1}};
-        ptp_error err;
-        int st0, st1;
-        po.tried++;
-        st0 = form_set_terms(&f[0], t, 2, 1, &err);
-        st1 = form_set_terms(&f[0], u, 2, 1, &err);
-        if (st0 != PTP_EOVERFLOW || st1 != PTP_EOVERFLOW)
-            prop_fail(&po, "MAX+MAX gave %d, -MAX-1 gave %d", st0, st1);
-    }
+    set_terms_bad(&pd, &po, &f[0]);
     prop_report(&ps);
     prop_report(&pp);
     prop_report(&pd);
@@ -584,182 +632,242 @@ static int ref_lincomb(refmap *m, const rat *a, const form *x, const rat *b, con
     return 0;
 }
 
-static void lincomb(void)
-{
+/* lincomb's properties and counts. */
+typedef struct {
     prop pl, pu, pax, pay, paxy, pneg, pid, peq;
-    long i, exact = 0, ovf = 0;
-    const long n = 20000;
-    prop_init(&pl, "form: form_lincomb a*x + b*y is canonical and equals the per-key rat "
+    long exact, ovf;
+} lincomb_props;
+
+/* Names lincomb's properties for n random cases, counts 0. */
+static void lincomb_init(lincomb_props *lp, long n)
+{
+    lp->exact = lp->ovf = 0;
+    prop_init(&lp->pl, "form: form_lincomb a*x + b*y is canonical and equals the per-key rat "
                    "computation (%ld random forms and coefficients)",
               n);
-    prop_init(&pu, "form: form_lincomb on PTP_EOVERFLOW leaves r unchanged and sets err (%ld "
+    prop_init(&lp->pu, "form: form_lincomb on PTP_EOVERFLOW leaves r unchanged and sets err (%ld "
                    "random)",
               n);
-    prop_init(&pax, "form: form_lincomb with r == x matches the unaliased result (%ld random)",
+    prop_init(&lp->pax, "form: form_lincomb with r == x matches the unaliased result (%ld random)",
               n);
-    prop_init(&pay, "form: form_lincomb with r == y matches the unaliased result (%ld random)",
+    prop_init(&lp->pay, "form: form_lincomb with r == y matches the unaliased result (%ld random)",
               n);
-    prop_init(&paxy, "form: form_lincomb with x == y (and r == x == y) equals (a+b)*x (%ld "
+    prop_init(&lp->paxy, "form: form_lincomb with x == y (and r == x == y) equals (a+b)*x (%ld "
                      "random)",
               n);
-    prop_init(&pneg, "form: x + (-1)*x is the zero form (len 0, den 1) (%ld random)", n);
-    prop_init(&pid, "form: 1*x + 0*y == x and 0*x + 1*y == y (%ld random)", n);
-    prop_init(&peq, "form: form_equal is equality of rank, den and terms (copies equal; any "
+    prop_init(&lp->pneg, "form: x + (-1)*x is the zero form (len 0, den 1) (%ld random)", n);
+    prop_init(&lp->pid, "form: 1*x + 0*y == x and 0*x + 1*y == y (%ld random)", n);
+    prop_init(&lp->peq, "form: form_equal is equality of rank, den and terms (copies equal; any "
                     "one changed field differs) (%ld random)",
               n);
+}
+
+/* r = a*x + b*y into r, which starts as r0: canonical and the per-key rat computation, or on
+ * overflow r unchanged and err set; returns form_lincomb's status. */
+static int lincomb_main(lincomb_props *lp, form *r, const form *r0, const rat *a, const form *x,
+                        const rat *b, const form *y, ptp_error *err)
+{
+    refmap m;
+    char why[300];
+    int st;
+    err->status = -1;
+    st = form_lincomb(r, a, x, b, y, err);
+    lp->pl.tried++;
+    if (st == PTP_OK) {
+        if (ref_lincomb(&m, a, x, b, y) == 0) {
+            lp->exact++;
+            if (!form_matches(r, &m, why, sizeof why))
+                prop_fail(&lp->pl, "%s * %s + %s * %s = %s: %s", SR(a), SF(x), SR(b), SF(y),
+                          SF(r), why);
+        } else if (!form_is_canonical(r)) {
+            prop_fail(&lp->pl, "%s * %s + %s * %s = %s: not canonical", SR(a), SF(x), SR(b),
+                      SF(y), SF(r));
+        }
+    } else {
+        lp->ovf++;
+        lp->pu.tried++;
+        if (st != PTP_EOVERFLOW || err->status != st || !form_equal(r, r0) ||
+            !form_is_canonical(r))
+            prop_fail(&lp->pu, "%s * %s + %s * %s: status %d (err %d), r %s, was %s", SR(a),
+                      SF(x), SR(b), SF(y), st, err->status, SF(r), SF(r0));
+    }
+    return st;
+}
+
+/* a*x + b*y aliased r == x and r == y gives the unaliased result r and status st. */
+static void lincomb_alias(lincomb_props *lp, const rat *a, const form *x, const rat *b,
+                          const form *y, const form *r, int st, ptp_error *err)
+{
+    form t;
+    int st2;
+    form_copy(&t, x);
+    lp->pax.tried++;
+    st2 = form_lincomb(&t, a, &t, b, y, err);
+    if (st2 != st || !form_equal(&t, st ? x : r))
+        prop_fail(&lp->pax, "%s * %s + %s * %s: aliased %d %s, unaliased %d %s", SR(a), SF(x),
+                  SR(b), SF(y), st2, SF(&t), st, SF(r));
+    form_clear(&t);
+    form_copy(&t, y);
+    lp->pay.tried++;
+    st2 = form_lincomb(&t, a, x, b, &t, err);
+    if (st2 != st || !form_equal(&t, st ? y : r))
+        prop_fail(&lp->pay, "%s * %s + %s * %s: aliased %d %s, unaliased %d %s", SR(a), SF(x),
+                  SR(b), SF(y), st2, SF(&t), st, SF(r));
+    form_clear(&t);
+}
+
+/* x == y (and r == x == y): a*x + b*x == (a+b)*x (y: only for ref_lincomb's shape). */
+static void lincomb_same(lincomb_props *lp, int rank, const rat *a, const form *x, const rat *b,
+                         const form *y, ptp_error *err)
+{
+    form t, z;
+    refmap m;
+    rat ab, zero;
+    char why[300];
+    int st, st2;
+    rat_set_si(&zero, 0);
+    form_init(&z, rank);
+    st = form_lincomb(&z, a, x, b, x, err);
+    lp->paxy.tried++;
+    if (st == PTP_OK) {
+        if (!rat_add(&ab, a, b) && ref_lincomb(&m, &ab, x, &zero, y) == 0 &&
+            !form_matches(&z, &m, why, sizeof why))
+            prop_fail(&lp->paxy, "%s * x + %s * x with x = %s gave %s: %s", SR(a), SR(b), SF(x),
+                      SF(&z), why);
+    }
+    form_copy(&t, x);
+    st2 = form_lincomb(&t, a, &t, b, &t, err);
+    if (st2 != st || !form_equal(&t, st ? x : &z))
+        prop_fail(&lp->paxy, "r == x == y: %s * x + %s * x with x = %s: %d %s, unaliased %d %s",
+                  SR(a), SR(b), SF(x), st2, SF(&t), st, SF(&z));
+    form_clear(&t);
+    form_clear(&z);
+}
+
+/* x + (-1) x == 0, 1*x + 0*y == x and 0*x + 1*y == y. */
+static void lincomb_identities(lincomb_props *lp, int rank, const form *x, const form *y,
+                               ptp_error *err)
+{
+    form t, z;
+    rat one, zero, mone;
+    int st, st2;
+    rat_set_si(&one, 1);
+    rat_set_si(&zero, 0);
+    rat_set_si(&mone, -1);
+    form_init(&z, rank);
+    st = form_lincomb(&z, &one, x, &mone, x, err);
+    lp->pneg.tried++;
+    if (st || z.len != 0 || z.den != 1 || !form_is_canonical(&z))
+        prop_fail(&lp->pneg, "x = %s: x - x = %d %s", SF(x), st, SF(&z));
+    form_clear(&z);
+    form_init(&z, rank);
+    form_init(&t, rank);
+    st = form_lincomb(&z, &one, x, &zero, y, err);
+    st2 = form_lincomb(&t, &zero, x, &one, y, err);
+    lp->pid.tried++;
+    if (st || !form_equal(&z, x) || st2 || !form_equal(&t, y))
+        prop_fail(&lp->pid, "x = %s, y = %s: 1x+0y = %d %s, 0x+1y = %d %s", SF(x), SF(y), st,
+                  SF(&z), st2, SF(&t));
+    form_clear(&z);
+    form_clear(&t);
+}
+
+/* Changes field k of t, a copy of x of rank rank: 0 den, 1 rank, 2 a numerator, 3 the length
+ * or a key; returns 0 when t has no term to change (k 2 or 3). */
+static int change_field(form *t, int k, int rank)
+{
+    switch (k) {
+    case 0:
+        t->den += 1;
+        break;
+    case 1:
+        t->rank = rank % FORM_MAX_RANK + 1;
+        break;
+    case 2:
+        if (!t->len)
+            return 0;
+        t->t[check_rnd_below((unsigned)t->len)].num += 1;
+        break;
+    default:
+        if (!t->len)
+            return 0;
+        if (check_rnd() & 1)
+            t->len--;
+        else
+            t->t[check_rnd_below((unsigned)t->len)].key ^= 1;
+        break;
+    }
+    return 1;
+}
+
+/* form_equal is equality of rank, den and terms: x equals its copy, x and y as their fields
+ * say, and x differs from a copy with any one field changed. */
+static void check_equal(lincomb_props *lp, int rank, const form *x, const form *y)
+{
+    form t;
+    int same = form_equal(x, y), want = x->len == y->len && x->den == y->den, k;
+    size_t j;
+    lp->peq.tried++;
+    form_copy(&t, x);
+    for (j = 0; want && j < x->len; j++)
+        want = x->t[j].key == y->t[j].key && x->t[j].num == y->t[j].num;
+    if (!form_equal(x, &t) || !form_equal(&t, x) || same != want)
+        prop_fail(&lp->peq, "x = %s, y = %s: equal(x, copy) %d, equal(x, y) %d", SF(x), SF(y),
+                  form_equal(x, &t), same);
+    for (k = 0; k < 4; k++) {
+        form_clear(&t);
+        form_copy(&t, x);
+        if (!change_field(&t, k, rank))
+            continue;
+        if (form_equal(x, &t) || form_equal(&t, x))
+            prop_fail(&lp->peq, "x = %s equals its changed copy %s (change %d)", SF(x), SF(&t),
+                      k);
+    }
+    form_clear(&t);
+}
+
+/* form_lincomb and form_equal on random forms and coefficients. */
+static void lincomb(void)
+{
+    lincomb_props lp;
+    long i;
+    const long n = 20000;
+    lincomb_init(&lp, n);
     for (i = 0; i < n; i++) {
-        int rank = 1 + (int)check_rnd_below(FORM_MAX_RANK), big = i % 3 == 0, st, st2;
-        form x, y, r, r0, t, z;
-        refmap m;
-        rat a = rnd_coef(), b = rnd_coef(), one, zero, mone, ab;
+        int rank = 1 + (int)check_rnd_below(FORM_MAX_RANK), big = i % 3 == 0, st;
+        form x, y, r, r0;
+        rat a = rnd_coef(), b = rnd_coef();
         ptp_error err;
-        char why[300];
-        rat_set_si(&one, 1);
-        rat_set_si(&zero, 0);
-        rat_set_si(&mone, -1);
         form_init(&x, rank);
         form_init(&y, rank);
         form_init(&r, rank);
         if (rnd_form(&x, big) || rnd_form(&y, big)) {
-            prop_fail(&pl, "could not build random forms");
+            prop_fail(&lp.pl, "could not build random forms");
             break;
         }
         /* r starts as some other form, to see it replaced (or kept on failure) */
         if (rnd_form(&r, 0))
-            prop_fail(&pl, "could not build a random form");
+            prop_fail(&lp.pl, "could not build a random form");
         form_copy(&r0, &r);
-        err.status = -1;
-        st = form_lincomb(&r, &a, &x, &b, &y, &err);
-        pl.tried++;
-        if (st == PTP_OK) {
-            if (ref_lincomb(&m, &a, &x, &b, &y) == 0) {
-                exact++;
-                if (!form_matches(&r, &m, why, sizeof why))
-                    prop_fail(&pl, "%s * %s + %s * %s = %s: %s", SR(&a), SF(&x), SR(&b), SF(&y),
-                              SF(&r), why);
-            } else if (!form_is_canonical(&r)) {
-                prop_fail(&pl, "%s * %s + %s * %s = %s: not canonical", SR(&a), SF(&x), SR(&b),
-                          SF(&y), SF(&r));
-            }
-        } else {
-            ovf++;
-            pu.tried++;
-            if (st != PTP_EOVERFLOW || err.status != st || !form_equal(&r, &r0) ||
-                !form_is_canonical(&r))
-                prop_fail(&pu, "%s * %s + %s * %s: status %d (err %d), r %s, was %s", SR(&a),
-                          SF(&x), SR(&b), SF(&y), st, err.status, SF(&r), SF(&r0));
-        }
-
-        /* aliasing r == x and r == y */
-        form_copy(&t, &x);
-        pax.tried++;
-        st2 = form_lincomb(&t, &a, &t, &b, &y, &err);
-        if (st2 != st || !form_equal(&t, st ? &x : &r))
-            prop_fail(&pax, "%s * %s + %s * %s: aliased %d %s, unaliased %d %s", SR(&a),
-                      SF(&x), SR(&b), SF(&y), st2, SF(&t), st, SF(&r));
-        form_clear(&t);
-        form_copy(&t, &y);
-        pay.tried++;
-        st2 = form_lincomb(&t, &a, &x, &b, &t, &err);
-        if (st2 != st || !form_equal(&t, st ? &y : &r))
-            prop_fail(&pay, "%s * %s + %s * %s: aliased %d %s, unaliased %d %s", SR(&a),
-                      SF(&x), SR(&b), SF(&y), st2, SF(&t), st, SF(&r));
-        form_clear(&t);
-
-        /* x == y: a*x + b*x == (a+b)*x */
-        form_init(&z, rank);
-        st = form_lincomb(&z, &a, &x, &b, &x, &err);
-        paxy.tried++;
-        if (st == PTP_OK) {
-            if (!rat_add(&ab, &a, &b) && ref_lincomb(&m, &ab, &x, &zero, &y) == 0 &&
-                !form_matches(&z, &m, why, sizeof why))
-                prop_fail(&paxy, "%s * x + %s * x with x = %s gave %s: %s", SR(&a), SR(&b),
-                          SF(&x), SF(&z), why);
-        }
-        form_copy(&t, &x);
-        st2 = form_lincomb(&t, &a, &t, &b, &t, &err);
-        if (st2 != st || !form_equal(&t, st ? &x : &z))
-            prop_fail(&paxy, "r == x == y: %s * x + %s * x with x = %s: %d %s, unaliased %d %s",
-                      SR(&a), SR(&b), SF(&x), st2, SF(&t), st, SF(&z));
-        form_clear(&t);
-        form_clear(&z);
-
-        /* x + (-1) x == 0 */
-        form_init(&z, rank);
-        st = form_lincomb(&z, &one, &x, &mone, &x, &err);
-        pneg.tried++;
-        if (st || z.len != 0 || z.den != 1 || !form_is_canonical(&z))
-            prop_fail(&pneg, "x = %s: x - x = %d %s", SF(&x), st, SF(&z));
-        form_clear(&z);
-
-        /* identities */
-        form_init(&z, rank);
-        form_init(&t, rank);
-        st = form_lincomb(&z, &one, &x, &zero, &y, &err);
-        st2 = form_lincomb(&t, &zero, &x, &one, &y, &err);
-        pid.tried++;
-        if (st || !form_equal(&z, &x) || st2 || !form_equal(&t, &y))
-            prop_fail(&pid, "x = %s, y = %s: 1x+0y = %d %s, 0x+1y = %d %s", SF(&x), SF(&y), st,
-                      SF(&z), st2, SF(&t));
-        form_clear(&z);
-        form_clear(&t);
-
-        /* form_equal */
-        peq.tried++;
-        form_copy(&t, &x);
-        {
-            int same = form_equal(&x, &y), want = x.len == y.len && x.den == y.den, k;
-            size_t j;
-            for (j = 0; want && j < x.len; j++)
-                want = x.t[j].key == y.t[j].key && x.t[j].num == y.t[j].num;
-            if (!form_equal(&x, &t) || !form_equal(&t, &x) || same != want)
-                prop_fail(&peq, "x = %s, y = %s: equal(x, copy) %d, equal(x, y) %d", SF(&x),
-                          SF(&y), form_equal(&x, &t), same);
-            for (k = 0; k < 4; k++) {
-                form_clear(&t);
-                form_copy(&t, &x);
-                switch (k) {
-                case 0:
-                    t.den += 1;
-                    break;
-                case 1:
-                    t.rank = rank % FORM_MAX_RANK + 1;
-                    break;
-                case 2:
-                    if (!t.len)
-                        continue;
-                    t.t[check_rnd_below((unsigned)t.len)].num += 1;
-                    break;
-                default:
-                    if (!t.len)
-                        continue;
-                    if (check_rnd() & 1)
-                        t.len--;
-                    else
-                        t.t[check_rnd_below((unsigned)t.len)].key ^= 1;
-                    break;
-                }
-                if (form_equal(&x, &t) || form_equal(&t, &x))
-                    prop_fail(&peq, "x = %s equals its changed copy %s (change %d)", SF(&x),
-                              SF(&t), k);
-            }
-        }
-        form_clear(&t);
-
+        st = lincomb_main(&lp, &r, &r0, &a, &x, &b, &y, &err);
+        lincomb_alias(&lp, &a, &x, &b, &y, &r, st, &err);
+        lincomb_same(&lp, rank, &a, &x, &b, &y, &err);
+        lincomb_identities(&lp, rank, &x, &y, &err);
+        check_equal(&lp, rank, &x, &y);
         form_clear(&r0);
         form_clear(&x);
         form_clear(&y);
         form_clear(&r);
     }
-    prop_report(&pl);
-    prop_report(&pu);
-    prop_report(&pax);
-    prop_report(&pay);
-    prop_report(&paxy);
-    prop_report(&pneg);
-    prop_report(&pid);
-    prop_report(&peq);
-    printf("# form_lincomb: %ld results compared exactly, %ld overflows\n", exact, ovf);
+    prop_report(&lp.pl);
+    prop_report(&lp.pu);
+    prop_report(&lp.pax);
+    prop_report(&lp.pay);
+    prop_report(&lp.paxy);
+    prop_report(&lp.pneg);
+    prop_report(&lp.pid);
+    prop_report(&lp.peq);
+    printf("# form_lincomb: %ld results compared exactly, %ld overflows\n", lp.exact, lp.ovf);
 }
 
 /* ---- form_set_point ---- */
