@@ -358,134 +358,161 @@ static void test_generated(void)
     }
 }
 
+/* test_bicubic_mistakes on t's rows r (exact fractions): one weight changed, two points
+ * swapped in a row; r as it was after. */
+static void mistakes_in_a_row(const tp_table *t, rows *r)
+{
+    row keep;
+    char want[256], w[RAT_STRLEN];
+    /* one weight changed */
+    keep = r->r[10];
+    strcpy(r->r[10].w, "-1/3");
+    expect_line("one weight changed: wrong weight, with its line", verify_json(r, 3, 3, 0, 0),
+                "t.json", JSON_LINE0 + 10, "wrong weight");
+    snprintf(want, sizeof want, "got -1/3, expected %s", rat_get_str(w, &t->terms[10].w));
+    expect_verdict("wrong weight: got vs expected", verify_json(r, 3, 3, 0, 0), VERIFY_WRONG,
+                   want);
+    r->r[10] = keep;
+
+    /* two points swapped within a row */
+    keep = r->r[1];
+    r->r[1].p[1] = keep.p[2];
+    r->r[1].p[2] = keep.p[1];
+    expect_line("two indices swapped in a row: the order flips the sign",
+                verify_json(r, 3, 3, 0, 0), "t.json", JSON_LINE0 + 1,
+                "points not in increasing order flip the sign: {1, 0, 5, 1} is -27/7 * "
+                "cross4(b0, b5, b1) = 27/7 * cross4(b0, b1, b5)");
+    /* the same swap with the weight negated is right: a note, no problem */
+    strcpy(r->r[1].w, "27/7");
+    expect_verdict("swapped points with the weight negated: right, with a note",
+                   verify_json(r, 3, 3, 0, 0), VERIFY_RIGHT, "note: points not in increasing");
+    r->r[1] = keep;
+}
+
+/* test_bicubic_mistakes on rows r (exact fractions): a term dropped, duplicated, extra, or
+ * moved to a wrong plane; r as it was after. */
+static void mistakes_of_rows(rows *r)
+{
+    row keep;
+    char want[256];
+    /* a term dropped */
+    keep = r->r[7];
+    memmove(&r->r[7], &r->r[8], (r->n - 8) * sizeof *r->r);
+    r->n--;
+    snprintf(want, sizeof want, "missing term: plane %d: %s * cross4(b%d, b%d, b%d)", keep.plane,
+             keep.w, keep.p[0], keep.p[1], keep.p[2]);
+    expect_line("a term dropped: missing, with plane, points and exact weight",
+                verify_json(r, 3, 3, 0, 0), "t.json", 0, want);
+    memmove(&r->r[8], &r->r[7], (r->n - 7) * sizeof *r->r);
+    r->r[7] = keep;
+    r->n++;
+
+    /* a term duplicated (the copy as the last term) */
+    r->r[r->n] = r->r[20];
+    r->n++;
+    snprintf(want, sizeof want, "duplicated term: plane %d, cross4(b%d, b%d, b%d) repeats line %d",
+             r->r[20].plane, r->r[20].p[0], r->r[20].p[1], r->r[20].p[2], JSON_LINE0 + 20);
+    expect_line("a term duplicated: the line and the line it repeats",
+                verify_json(r, 3, 3, 0, 0), "t.json", JSON_LINE0 + (int)r->n - 1, want);
+    r->n--;
+
+    /* an extra term */
+    r->r[r->n] = r->r[0];
+    r->r[r->n].p[2] = 15;
+    r->n++;
+    expect_line("an extra term", verify_json(r, 3, 3, 0, 0), "t.json",
+                JSON_LINE0 + (int)r->n - 1, "extra term: {0, 0, 1, 15}");
+    r->n--;
+
+    /* a term moved to a plane without those points */
+    keep = r->r[30];
+    r->r[30].plane = 63;
+    snprintf(want, sizeof want, "is in plane 63 but belongs to plane %d", keep.plane);
+    expect_line("a term moved to a wrong plane", verify_json(r, 3, 3, 0, 0), "t.json",
+                JSON_LINE0 + 30, "wrong plane");
+    expect_verdict("wrong plane names both planes", verify_json(r, 3, 3, 0, 0), VERIFY_WRONG,
+                   want);
+    r->r[30] = keep;
+}
+
+/* test_bicubic_mistakes on t's tables scaled, negated and relabelled, into *r (whose rows
+ * the first case scales). */
+static void mistakes_of_scale(const tp_table *t, rows *r)
+{
+    size_t x;
+    /* all weights times 1/7, exact */
+    for (x = 0; x < r->n; x++) {
+        rat s, v;
+        rat_set_frac(&s, 1, 7);
+        rat_mul(&v, &t->terms[x].w, &s);
+        rat_get_str(r->r[x].w, &v);
+    }
+    expect_rows("all weights times 1/7: right up to the scale, named", r, 1, VERIFY_RIGHT,
+                "RIGHT: correct up to a positive scale s = 0.142857143 = 1/7");
+
+    /* all weights times 2.5, as floats, in ptpgen's table layout */
+    *r = rows_of(t, W_FLOAT, 2.5);
+    expect_rows("all float weights times 2.5: right up to the scale 5/2", r, 0, VERIFY_RIGHT,
+                "positive scale s = 2.5 = 5/2");
+
+    /* all negated */
+    *r = rows_of(t, W_FLOAT, -1);
+    expect_rows("all weights negated: wrong, the opposite orientation", r, 0, VERIFY_WRONG,
+                "WRONG: all weights negated");
+
+    /* negated and scaled */
+    *r = rows_of(t, W_FLOAT, -3);
+    expect_rows("all weights times -3: negated and scaled", r, 0, VERIFY_WRONG,
+                "WRONG: all weights negated, and every weight scaled by 3");
+
+    /* a square patch: u and v swapped gives the same table; v-first gives the negated one */
+    *r = relabelled(t, 1);
+    expect_rows("3x3 with u and v swapped is the same table (the transposition rule)", r, 1,
+                VERIFY_RIGHT, "RIGHT: exact");
+    *r = relabelled(t, 0);
+    expect_rows("3x3 in the v-first convention: negated, and v-first named", r, 1, VERIFY_WRONG,
+                "v-first index convention");
+}
+
+/* test_bicubic_mistakes on t in the paper's layout: shuffled, and with a wrong weight, into
+ * *r. */
+static void mistakes_in_paper_layout(const tp_table *t, rows *r)
+{
+    sbuf b;
+    char want[256];
+    /* the paper's own layout: shuffled, fractions as weights, no degree */
+    *r = rows_of(t, W_CFRAC, 1);
+    shuffle(r);
+    write_paper(&b, r);
+    expect_verdict("the paper's layout, shuffled, -27.0f / 7.0f fractions: C rounds them to floats, "
+                   "so right to float precision, not exact",
+                   verify_str(&b, "paper.h", 0, 0), VERIFY_RIGHT,
+                   "RIGHT: right to float precision (|error| <= 1/2 ulp): the 516 terms");
+    /* and a wrong weight there names the idx line and the wgt line */
+    snprintf(r->r[40].w, sizeof r->r[40].w, "1.5f");
+    sbuf_clear(&b);
+    write_paper(&b, r);
+    snprintf(want, sizeof want, "(the weight is on line %d)", PAPER_LINE0 + (int)r->n + 3 + 40);
+    expect_line("paper layout: a wrong weight names its row's line", verify_str(&b, "paper.h", 0, 0),
+                "paper.h", PAPER_LINE0 + 40, "wrong weight");
+    expect_verdict("paper layout: a wrong weight names the weight's line too",
+                   verify_str(&b, "paper.h", 0, 0), VERIFY_WRONG, want);
+    sbuf_clear(&b);
+}
+
 /* The wrong variants of the bicubic table, each with its diagnosis. */
 static void test_bicubic_mistakes(void)
 {
     tp_table t;
     ptp_error err;
     rows r;
-    sbuf b;
-    row keep;
-    size_t x;
-    char want[256], w[RAT_STRLEN];
     if (!check(!tp_derive(&t, 3, 3, &err), "derive 3x3", "%s", err.msg))
         return;
     r = rows_of(&t, W_FRAC, 1);
-
-    /* one weight changed */
-    keep = r.r[10];
-    strcpy(r.r[10].w, "-1/3");
-    expect_line("one weight changed: wrong weight, with its line", verify_json(&r, 3, 3, 0, 0),
-                "t.json", JSON_LINE0 + 10, "wrong weight");
-    snprintf(want, sizeof want, "got -1/3, expected %s", rat_get_str(w, &t.terms[10].w));
-    expect_verdict("wrong weight: got vs expected", verify_json(&r, 3, 3, 0, 0), VERIFY_WRONG,
-                   want);
-    r.r[10] = keep;
-
-    /* two points swapped within a row */
-    keep = r.r[1];
-    r.r[1].p[1] = keep.p[2];
-    r.r[1].p[2] = keep.p[1];
-    expect_line("two indices swapped in a row: the order flips the sign",
-                verify_json(&r, 3, 3, 0, 0), "t.json", JSON_LINE0 + 1,
-                "points not in increasing order flip the sign: {1, 0, 5, 1} is -27/7 * "
-                "cross4(b0, b5, b1) = 27/7 * cross4(b0, b1, b5)");
-    /* the same swap with the weight negated is right: a note, no problem */
-    strcpy(r.r[1].w, "27/7");
-    expect_verdict("swapped points with the weight negated: right, with a note",
-                   verify_json(&r, 3, 3, 0, 0), VERIFY_RIGHT, "note: points not in increasing");
-    r.r[1] = keep;
-
-    /* a term dropped */
-    keep = r.r[7];
-    memmove(&r.r[7], &r.r[8], (r.n - 8) * sizeof *r.r);
-    r.n--;
-    snprintf(want, sizeof want, "missing term: plane %d: %s * cross4(b%d, b%d, b%d)", keep.plane,
-             keep.w, keep.p[0], keep.p[1], keep.p[2]);
-    expect_line("a term dropped: missing, with plane, points and exact weight",
-                verify_json(&r, 3, 3, 0, 0), "t.json", 0, want);
-    memmove(&r.r[8], &r.r[7], (r.n - 7) * sizeof *r.r);
-    r.r[7] = keep;
-    r.n++;
-
-    /* a term duplicated (the copy as the last term) */
-    r.r[r.n] = r.r[20];
-    r.n++;
-    snprintf(want, sizeof want, "duplicated term: plane %d, cross4(b%d, b%d, b%d) repeats line %d",
-             r.r[20].plane, r.r[20].p[0], r.r[20].p[1], r.r[20].p[2], JSON_LINE0 + 20);
-    expect_line("a term duplicated: the line and the line it repeats",
-                verify_json(&r, 3, 3, 0, 0), "t.json", JSON_LINE0 + (int)r.n - 1, want);
-    r.n--;
-
-    /* an extra term */
-    r.r[r.n] = r.r[0];
-    r.r[r.n].p[2] = 15;
-    r.n++;
-    expect_line("an extra term", verify_json(&r, 3, 3, 0, 0), "t.json",
-                JSON_LINE0 + (int)r.n - 1, "extra term: {0, 0, 1, 15}");
-    r.n--;
-
-    /* a term moved to a plane without those points */
-    keep = r.r[30];
-    r.r[30].plane = 63;
-    snprintf(want, sizeof want, "is in plane 63 but belongs to plane %d", keep.plane);
-    expect_line("a term moved to a wrong plane", verify_json(&r, 3, 3, 0, 0), "t.json",
-                JSON_LINE0 + 30, "wrong plane");
-    expect_verdict("wrong plane names both planes", verify_json(&r, 3, 3, 0, 0), VERIFY_WRONG,
-                   want);
-    r.r[30] = keep;
-
-    /* all weights times 1/7, exact */
-    for (x = 0; x < r.n; x++) {
-        rat s, v;
-        rat_set_frac(&s, 1, 7);
-        rat_mul(&v, &t.terms[x].w, &s);
-        rat_get_str(r.r[x].w, &v);
-    }
-    expect_rows("all weights times 1/7: right up to the scale, named", &r, 1, VERIFY_RIGHT,
-                "RIGHT: correct up to a positive scale s = 0.142857143 = 1/7");
-
-    /* all weights times 2.5, as floats, in ptpgen's table layout */
-    r = rows_of(&t, W_FLOAT, 2.5);
-    expect_rows("all float weights times 2.5: right up to the scale 5/2", &r, 0, VERIFY_RIGHT,
-                "positive scale s = 2.5 = 5/2");
-
-    /* all negated */
-    r = rows_of(&t, W_FLOAT, -1);
-    expect_rows("all weights negated: wrong, the opposite orientation", &r, 0, VERIFY_WRONG,
-                "WRONG: all weights negated");
-
-    /* negated and scaled */
-    r = rows_of(&t, W_FLOAT, -3);
-    expect_rows("all weights times -3: negated and scaled", &r, 0, VERIFY_WRONG,
-                "WRONG: all weights negated, and every weight scaled by 3");
-
-    /* a square patch: u and v swapped gives the same table; v-first gives the negated one */
-    r = relabelled(&t, 1);
-    expect_rows("3x3 with u and v swapped is the same table (the transposition rule)", &r, 1,
-                VERIFY_RIGHT, "RIGHT: exact");
-    r = relabelled(&t, 0);
-    expect_rows("3x3 in the v-first convention: negated, and v-first named", &r, 1, VERIFY_WRONG,
-                "v-first index convention");
-
-    /* the paper's own layout: shuffled, fractions as weights, no degree */
-    r = rows_of(&t, W_CFRAC, 1);
-    shuffle(&r);
-    write_paper(&b, &r);
-    expect_verdict("the paper's layout, shuffled, -27.0f / 7.0f fractions: C rounds them to floats, "
-                   "so right to float precision, not exact",
-                   verify_str(&b, "paper.h", 0, 0), VERIFY_RIGHT,
-                   "RIGHT: right to float precision (|error| <= 1/2 ulp): the 516 terms");
-    /* and a wrong weight there names the idx line and the wgt line */
-    snprintf(r.r[40].w, sizeof r.r[40].w, "1.5f");
-    sbuf_clear(&b);
-    write_paper(&b, &r);
-    snprintf(want, sizeof want, "(the weight is on line %d)", PAPER_LINE0 + (int)r.n + 3 + 40);
-    expect_line("paper layout: a wrong weight names its row's line", verify_str(&b, "paper.h", 0, 0),
-                "paper.h", PAPER_LINE0 + 40, "wrong weight");
-    expect_verdict("paper layout: a wrong weight names the weight's line too",
-                   verify_str(&b, "paper.h", 0, 0), VERIFY_WRONG, want);
-    sbuf_clear(&b);
+    mistakes_in_a_row(&t, &r);
+    mistakes_of_rows(&r);
+    mistakes_of_scale(&t, &r);
+    mistakes_in_paper_layout(&t, &r);
     free(r.r);
     tp_clear(&t);
 }
