@@ -50,104 +50,148 @@ static int choice(const char *s, const char *first, const char *second)
     return !strcmp(s, first) ? 0 : !strcmp(s, second) ? 1 : -1;
 }
 
-int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsigned need)
+/* What kref_parse_args has read besides o: which required options, and the eye radius. */
+typedef struct {
+    int degree, space, rule, radius;
+} parse_seen;
+
+/* parse_valued for the options that take one positive integer (--block-threads,
+ * --patches-per-block and --eye-radius), with its contract. */
+static int parse_sizes(kref_args *o, parse_seen *seen, char **argv, int *i, int left,
+                       const char *host)
 {
-    int i, k, have_degree = 0, have_space = 0, have_rule = 0, radius = 0;
+    const char *s = argv[*i];
+    unsigned long long a;
+    if (left < 1)
+        return -1;
+    if (!strcmp(s, "--block-threads")) {
+        if (parse_ull(argv[++*i], 1, 1u << 20, &a))
+            return usage(host, o->label, "--block-threads takes a positive integer");
+        o->pq = (size_t)a;
+    } else if (!strcmp(s, "--patches-per-block")) {
+        if (parse_ull(argv[++*i], 1, 1u << 20, &a))
+            return usage(host, o->label, "--patches-per-block takes a positive integer");
+        o->q = (size_t)a;
+    } else if (!strcmp(s, "--eye-radius")) {
+        if (parse_ull(argv[++*i], 1, 1000, &a))
+            return usage(host, o->label, "--eye-radius takes R, 1..1000 bounding radii");
+        seen->radius = (int)a;
+    } else
+        return -1;
+    return 0;
+}
+
+/* Parses the option argv[*i] if it is one of those taking values and left >= the count it
+ * takes (left values follow it), advancing *i past them: 0, usage's 2 for a bad value, or -1
+ * when it is none of them (or lacks values). */
+static int parse_valued(kref_args *o, parse_seen *seen, char **argv, int *i, int left,
+                        const char *host)
+{
+    const char *s = argv[*i];
+    unsigned long long a, b;
+    int k;
+    if (!strcmp(s, "--name") && left >= 1) {
+        o->label = argv[++*i];
+    } else if (!strcmp(s, "--kernel") && left >= 1) {
+        o->kernel_name = argv[++*i];
+    } else if (!strcmp(s, "--degree") && left >= 2) {
+        if (parse_ull(argv[*i + 1], 1, PTP_MAX_DEGREE, &a) ||
+            parse_ull(argv[*i + 2], 1, PTP_MAX_DEGREE, &b))
+            return usage(host, o->label, "--degree takes N M, each 1..16");
+        o->n = (int)a;
+        o->m = (int)b;
+        seen->degree = 1;
+        *i += 2;
+    } else if (!strcmp(s, "--domain") && left >= 1) {
+        if ((k = choice(argv[++*i], "quad", "triangle")) < 0)
+            return usage(host, o->label, "--domain is quad or triangle");
+        o->kind = k ? TP_TRI : TP_QUAD;
+    } else if (!strcmp(s, "--space") && left >= 1) {
+        if ((k = choice(argv[++*i], "clip", "world")) < 0)
+            return usage(host, o->label, "--space is clip or world");
+        o->space = k ? KREF_WORLD : KREF_CLIP;
+        seen->space = 1;
+    } else if (!strcmp(s, "--rule") && left >= 1) {
+        if ((k = choice(argv[++*i], "strict", "degenerate")) < 0)
+            return usage(host, o->label, "--rule is strict or degenerate");
+        o->rule = k ? KREF_DEGENERATE : KREF_STRICT;
+        seen->rule = 1;
+    } else
+        return parse_sizes(o, seen, argv, i, left, host);
+    return 0;
+}
+
+/* Parses --random, --model or --exact s with its three values v[0..2] into a new source of o;
+ * 0, or usage's 2. */
+static int parse_source(kref_args *o, const char *s, char **v, const char *host)
+{
     unsigned long long a, b, c;
-    memset(o, 0, sizeof *o);
-    /* the label first, so that every usage failure carries it */
-    for (i = 1; i + 1 < argc; i++)
-        if (!strcmp(argv[i], "--name"))
-            o->label = argv[i + 1];
-    for (i = 1; i < argc; i++) {
-        const char *s = argv[i];
-        int left = argc - i - 1;
-        if (!strcmp(s, "--name") && left >= 1) {
-            o->label = argv[++i];
-        } else if (!strcmp(s, "--kernel") && left >= 1) {
-            o->kernel_name = argv[++i];
-        } else if (!strcmp(s, "--degree") && left >= 2) {
-            if (parse_ull(argv[i + 1], 1, PTP_MAX_DEGREE, &a) ||
-                parse_ull(argv[i + 2], 1, PTP_MAX_DEGREE, &b))
-                return usage(host, o->label, "--degree takes N M, each 1..16");
-            o->n = (int)a;
-            o->m = (int)b;
-            have_degree = 1;
-            i += 2;
-        } else if (!strcmp(s, "--domain") && left >= 1) {
-            if ((k = choice(argv[++i], "quad", "triangle")) < 0)
-                return usage(host, o->label, "--domain is quad or triangle");
-            o->kind = k ? TP_TRI : TP_QUAD;
-        } else if (!strcmp(s, "--space") && left >= 1) {
-            if ((k = choice(argv[++i], "clip", "world")) < 0)
-                return usage(host, o->label, "--space is clip or world");
-            o->space = k ? KREF_WORLD : KREF_CLIP;
-            have_space = 1;
-        } else if (!strcmp(s, "--rule") && left >= 1) {
-            if ((k = choice(argv[++i], "strict", "degenerate")) < 0)
-                return usage(host, o->label, "--rule is strict or degenerate");
-            o->rule = k ? KREF_DEGENERATE : KREF_STRICT;
-            have_rule = 1;
-        } else if (!strcmp(s, "--block-threads") && left >= 1) {
-            if (parse_ull(argv[++i], 1, 1u << 20, &a))
-                return usage(host, o->label, "--block-threads takes a positive integer");
-            o->pq = (size_t)a;
-        } else if (!strcmp(s, "--patches-per-block") && left >= 1) {
-            if (parse_ull(argv[++i], 1, 1u << 20, &a))
-                return usage(host, o->label, "--patches-per-block takes a positive integer");
-            o->q = (size_t)a;
-        } else if (!strcmp(s, "--planes")) {
-            o->planes = 1;
-        } else if (!strcmp(s, "--groups-x-constant")) {
-            o->groups_x_constant = 1;
-        } else if (!strcmp(s, "--certified")) {
-            o->certified = 1;
-        } else if (!strcmp(s, "--eye-radius") && left >= 1) {
-            if (parse_ull(argv[++i], 1, 1000, &a))
-                return usage(host, o->label, "--eye-radius takes R, 1..1000 bounding radii");
-            radius = (int)a;
-        } else if ((!strcmp(s, "--random") || !strcmp(s, "--model") || !strcmp(s, "--exact")) &&
-                   left >= 3) {
-            kref_source *sr;
-            if (o->nsources == KREF_MAX_SOURCES)
-                return usage(host, o->label, "too many --random, --model and --exact options");
-            sr = &o->src[o->nsources++];
-            sr->kind = !strcmp(s, "--model")  ? KREF_SRC_MODEL
-                       : !strcmp(s, "--exact") ? KREF_SRC_EXACT
-                                               : KREF_SRC_RANDOM;
-            if (sr->kind == KREF_SRC_MODEL) {
-                sr->path = argv[i + 1];
-                if (parse_ull(argv[i + 2], 1, INT_MAX, &a) ||
-                    parse_ull(argv[i + 3], 0, UINT64_MAX, &c))
-                    return usage(host, o->label, "--model takes PATH NEYES SEED");
-                sr->nsets = (long)a;
-            } else {
-                if (parse_ull(argv[i + 1], 1, INT_MAX, &a) ||
-                    parse_ull(argv[i + 2], 1, UINT32_MAX, &b) ||
-                    parse_ull(argv[i + 3], 0, UINT64_MAX, &c))
-                    return usage(host, o->label, sr->kind == KREF_SRC_EXACT
-                                                     ? "--exact takes SETS COUNT SEED (COUNT >= 1)"
-                                                     : "--random takes SETS COUNT SEED (COUNT >= 1)");
-                sr->nsets = (long)a;
-                sr->count = (size_t)b;
-            }
-            sr->seed = (uint64_t)c;
-            i += 3;
-        } else if (s[0] == '-' && s[1] == '-') {
-            char msg[200];
-            snprintf(msg, sizeof msg, "unknown option or missing values: %.100s", s);
-            return usage(host, o->label, msg);
-        } else if (!o->file) {
-            o->file = s;
-        } else {
-            char msg[200];
-            snprintf(msg, sizeof msg, "unexpected argument %.100s", s);
-            return usage(host, o->label, msg);
-        }
+    kref_source *sr;
+    if (o->nsources == KREF_MAX_SOURCES)
+        return usage(host, o->label, "too many --random, --model and --exact options");
+    sr = &o->src[o->nsources++];
+    sr->kind = !strcmp(s, "--model")  ? KREF_SRC_MODEL
+               : !strcmp(s, "--exact") ? KREF_SRC_EXACT
+                                       : KREF_SRC_RANDOM;
+    if (sr->kind == KREF_SRC_MODEL) {
+        sr->path = v[0];
+        if (parse_ull(v[1], 1, INT_MAX, &a) || parse_ull(v[2], 0, UINT64_MAX, &c))
+            return usage(host, o->label, "--model takes PATH NEYES SEED");
+        sr->nsets = (long)a;
+    } else {
+        if (parse_ull(v[0], 1, INT_MAX, &a) || parse_ull(v[1], 1, UINT32_MAX, &b) ||
+            parse_ull(v[2], 0, UINT64_MAX, &c))
+            return usage(host, o->label, sr->kind == KREF_SRC_EXACT
+                                             ? "--exact takes SETS COUNT SEED (COUNT >= 1)"
+                                             : "--random takes SETS COUNT SEED (COUNT >= 1)");
+        sr->nsets = (long)a;
+        sr->count = (size_t)b;
     }
+    sr->seed = (uint64_t)c;
+    return 0;
+}
+
+/* Parses the argument argv[*i] (an option, its values, or the file), advancing *i past its
+ * values; 0, or usage's 2. */
+static int parse_arg(kref_args *o, parse_seen *seen, int argc, char **argv, int *i,
+                     const char *host)
+{
+    const char *s = argv[*i];
+    int left = argc - *i - 1, st = parse_valued(o, seen, argv, i, left, host);
+    char msg[200];
+    if (st >= 0)
+        return st;
+    if (!strcmp(s, "--planes")) {
+        o->planes = 1;
+    } else if (!strcmp(s, "--groups-x-constant")) {
+        o->groups_x_constant = 1;
+    } else if (!strcmp(s, "--certified")) {
+        o->certified = 1;
+    } else if ((!strcmp(s, "--random") || !strcmp(s, "--model") || !strcmp(s, "--exact")) &&
+               left >= 3) {
+        st = parse_source(o, s, argv + *i + 1, host);
+        *i += 3;
+        return st;
+    } else if (s[0] == '-' && s[1] == '-') {
+        snprintf(msg, sizeof msg, "unknown option or missing values: %.100s", s);
+        return usage(host, o->label, msg);
+    } else if (!o->file) {
+        o->file = s;
+    } else {
+        snprintf(msg, sizeof msg, "unexpected argument %.100s", s);
+        return usage(host, o->label, msg);
+    }
+    return 0;
+}
+
+/* Checks that o and seen have everything need asks for and gives every source the eye radius;
+ * 0, or usage's 2. */
+static int parse_check(kref_args *o, const parse_seen *seen, const char *host, unsigned need)
+{
+    int i;
     if (!o->label)
         return usage(host, NULL, "--name LABEL is required");
-    if (!have_degree || !have_space || !have_rule || (need & KREF_NEED_FILE && !o->file) ||
+    if (!seen->degree || !seen->space || !seen->rule || (need & KREF_NEED_FILE && !o->file) ||
         (need & KREF_NEED_KERNEL && !o->kernel_name) || (need & KREF_NEED_BLOCK && (!o->pq || !o->q)))
         return usage(host, o->label, "a required argument is missing");
     if (o->q && o->pq % o->q)
@@ -155,8 +199,23 @@ int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsig
     if (!o->nsources)
         return usage(host, o->label, "give at least one --random, --model or --exact");
     for (i = 0; i < o->nsources; i++)
-        o->src[i].radius = radius;
+        o->src[i].radius = seen->radius;
     return 0;
+}
+
+int kref_parse_args(kref_args *o, int argc, char **argv, const char *host, unsigned need)
+{
+    parse_seen seen = {0, 0, 0, 0};
+    int i, st;
+    memset(o, 0, sizeof *o);
+    /* the label first, so that every usage failure carries it */
+    for (i = 1; i + 1 < argc; i++)
+        if (!strcmp(argv[i], "--name"))
+            o->label = argv[i + 1];
+    for (i = 1; i < argc; i++)
+        if ((st = parse_arg(o, &seen, argc, argv, &i, host)) != 0)
+            return st;
+    return parse_check(o, &seen, host, need);
 }
 
 kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char *label)
@@ -745,17 +804,77 @@ static int exact_class(const ptp_i128 *v, int L, kref_rule rule)
     return !gt ? KREF_BACK : !lt ? KREF_FRONT : KREF_SILHOUETTE;
 }
 
-kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed,
-                          ptp_error *err)
+/* Set s's eye: world, three coordinates drawn from rng within +-2^(2, 6, 10 or 16 by s) and
+ * w = 1; clip, (0, 0, alpha, 0) with alpha 1, -1, 2 or 3 by s. */
+static void exact_eye(kref_set *set, int s, int world, uint64_t *rng)
 {
     static const int ebits[4] = {2, 6, 10, 16};
     static const float alphas[4] = {1, -1, 2, 3};
+    int64_t eb = (int64_t)1 << ebits[s / 2 % 4];
+    int c;
+    if (world) {
+        for (c = 0; c < 3; c++)
+            set->eye[c] = (float)irand(rng, -eb, eb);
+        set->eye[3] = 1;
+    } else {
+        set->eye[0] = set->eye[1] = set->eye[3] = 0;
+        set->eye[2] = alphas[s % 4];
+    }
+}
+
+/* Stores pt's points as patch p of set, in float: world, v + w eye (and w); clip, (x, y, w/2,
+ * w) from v = (x, y, w). */
+static void exact_store(kref_set *set, size_t p, const ipatch *pt)
+{
+    int k, c;
+    for (k = 0; k < pt->K; k++) {
+        float *q = set->cp[p * (size_t)pt->K + (size_t)k];
+        const int64_t *v = pt->v[k];
+        if (pt->world) {
+            for (c = 0; c < 3; c++)
+                q[c] = (float)(v[c] + pt->w[k] * (int64_t)set->eye[c]);
+            q[3] = (float)pt->w[k];
+        } else {
+            q[0] = (float)v[0];
+            q[1] = (float)v[1];
+            q[2] = (float)(v[2] / 2);
+            q[3] = (float)v[2];
+        }
+    }
+}
+
+/* Fills set s of kref_exact_sets (count patches, seed; deg names the degree) with pt, cr and ev
+ * as scratch: its name, eye, patches and exact classes. 0, or -1 with err set. */
+static int exact_fill(const kref_ref *r, kref_set *set, int s, size_t count, uint64_t seed,
+                      const char *deg, ipatch *pt, int64_t (*cr)[3], ptp_i128 *ev,
+                      ptp_error *err)
+{
+    uint64_t rng = seed * 1000033u + (uint64_t)s;
+    int kind = s % EX_KINDS, level = s / EX_KINDS % 4;
+    size_t p;
+    snprintf(set->name, sizeof set->name, "exact %s #%d (%s)", deg, s, exact_kind[kind]);
+    exact_eye(set, s, pt->world, &rng);
+    for (p = 0; p < count; p++) {
+        exact_patch(pt, &rng, kind, level);
+        exact_store(set, p, pt);
+        if (exact_values(r, set, p, cr, ev)) { /* the construction keeps in range */
+            ptp_fail(err, PTP_EINTERNAL, "%s patch %zu is outside the exact range", set->name, p);
+            return -1;
+        }
+        set->exact[p] = (unsigned char)(exact_class(ev, r->L, KREF_STRICT) +
+                                        4 * exact_class(ev, r->L, KREF_DEGENERATE));
+    }
+    return 0;
+}
+
+kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed,
+                          ptp_error *err)
+{
     kref_set *sets;
     ipatch *pt;
     ptp_i128 *ev;
     int64_t(*cr)[3];
-    int s, k, c;
-    size_t p;
+    int s;
     char deg[16];
     degree_name(deg, sizeof deg, &r->t.dom);
     if (!r->wint) {
@@ -784,48 +903,11 @@ kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t s
     pt->m = r->t.dom.m;
     pt->K = r->K;
     pt->world = r->space == KREF_WORLD;
-    for (s = 0; sets && s < nsets; s++) {
-        kref_set *set = &sets[s];
-        uint64_t rng = seed * 1000033u + (uint64_t)s;
-        int kind = s % EX_KINDS, level = s / EX_KINDS % 4;
-        int64_t eb = (int64_t)1 << ebits[s / 2 % 4];
-        snprintf(set->name, sizeof set->name, "exact %s #%d (%s)", deg, s,
-                 exact_kind[kind]);
-        if (pt->world) {
-            for (c = 0; c < 3; c++)
-                set->eye[c] = (float)irand(&rng, -eb, eb);
-            set->eye[3] = 1;
-        } else {
-            set->eye[0] = set->eye[1] = set->eye[3] = 0;
-            set->eye[2] = alphas[s % 4];
+    for (s = 0; sets && s < nsets; s++)
+        if (exact_fill(r, &sets[s], s, count, seed, deg, pt, cr, ev, err)) {
+            kref_free_sets(sets, nsets);
+            sets = NULL;
         }
-        for (p = 0; p < count; p++) {
-            exact_patch(pt, &rng, kind, level);
-            for (k = 0; k < r->K; k++) {
-                float *q = set->cp[p * (size_t)r->K + (size_t)k];
-                const int64_t *v = pt->v[k];
-                if (pt->world) {
-                    for (c = 0; c < 3; c++)
-                        q[c] = (float)(v[c] + pt->w[k] * (int64_t)set->eye[c]);
-                    q[3] = (float)pt->w[k];
-                } else {
-                    q[0] = (float)v[0];
-                    q[1] = (float)v[1];
-                    q[2] = (float)(v[2] / 2);
-                    q[3] = (float)v[2];
-                }
-            }
-            if (exact_values(r, set, p, cr, ev)) { /* the construction keeps in range */
-                ptp_fail(err, PTP_EINTERNAL, "%s patch %zu is outside the exact range",
-                         set->name, p);
-                kref_free_sets(sets, nsets);
-                sets = NULL;
-                break;
-            }
-            set->exact[p] = (unsigned char)(exact_class(ev, r->L, KREF_STRICT) +
-                                            4 * exact_class(ev, r->L, KREF_DEGENERATE));
-        }
-    }
     free(pt);
     free(ev);
     free(cr);
