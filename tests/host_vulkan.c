@@ -304,7 +304,9 @@ static int vk_setup_device(vkctx *v, char *err)
     return 0;
 }
 
-static int vk_setup_pipeline(vkctx *v, const spirv *code, int nbindings, char *err)
+/* Creates the shader module of code and the layouts: nbindings storage buffers at bindings 0..
+ * nbindings-1, and HOST_PUSH_BYTES of push constants (failing if the device allows fewer). */
+static int vk_setup_layouts(vkctx *v, const spirv *code, int nbindings, char *err)
 {
     VkDescriptorSetLayoutBinding b[3];
     {
@@ -348,56 +350,81 @@ static int vk_setup_pipeline(vkctx *v, const spirv *code, int nbindings, char *e
         plci.pPushConstantRanges = &pcr;
         VK_TRY(vkCreatePipelineLayout(v->dev, &plci, NULL, &v->layout), "vkCreatePipelineLayout");
     }
-    {
-        VkComputePipelineCreateInfo cpci;
-        memset(&cpci, 0, sizeof cpci);
-        cpci.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
-        cpci.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-        cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-        cpci.stage.module = v->shader;
-        cpci.stage.pName = "main";
-        cpci.layout = v->layout;
-        VK_TRY(vkCreateComputePipelines(v->dev, VK_NULL_HANDLE, 1, &cpci, NULL, &v->pipe),
-               "vkCreateComputePipelines");
-    }
-    {
-        VkDescriptorPoolSize ps;
-        VkDescriptorPoolCreateInfo dpci;
-        VkDescriptorSetAllocateInfo dsai;
-        ps.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        ps.descriptorCount = (uint32_t)nbindings;
-        memset(&dpci, 0, sizeof dpci);
-        dpci.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-        dpci.maxSets = 1;
-        dpci.poolSizeCount = 1;
-        dpci.pPoolSizes = &ps;
-        VK_TRY(vkCreateDescriptorPool(v->dev, &dpci, NULL, &v->dpool), "vkCreateDescriptorPool");
-        memset(&dsai, 0, sizeof dsai);
-        dsai.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
-        dsai.descriptorPool = v->dpool;
-        dsai.descriptorSetCount = 1;
-        dsai.pSetLayouts = &v->dsl;
-        VK_TRY(vkAllocateDescriptorSets(v->dev, &dsai, &v->dset), "vkAllocateDescriptorSets");
-    }
-    {
-        VkCommandPoolCreateInfo cpi;
-        VkCommandBufferAllocateInfo cbai;
-        VkFenceCreateInfo fci;
-        memset(&cpi, 0, sizeof cpi);
-        cpi.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-        cpi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-        cpi.queueFamilyIndex = v->qfam;
-        VK_TRY(vkCreateCommandPool(v->dev, &cpi, NULL, &v->cpool), "vkCreateCommandPool");
-        memset(&cbai, 0, sizeof cbai);
-        cbai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-        cbai.commandPool = v->cpool;
-        cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        cbai.commandBufferCount = 1;
-        VK_TRY(vkAllocateCommandBuffers(v->dev, &cbai, &v->cmd), "vkAllocateCommandBuffers");
-        memset(&fci, 0, sizeof fci);
-        fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-        VK_TRY(vkCreateFence(v->dev, &fci, NULL, &v->fence), "vkCreateFence");
-    }
+    return 0;
+}
+
+/* Creates the compute pipeline of the shader's main on the layout (vk_setup_layouts first). */
+static int vk_setup_compute(vkctx *v, char *err)
+{
+    VkComputePipelineCreateInfo cpci;
+    memset(&cpci, 0, sizeof cpci);
+    cpci.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+    cpci.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    cpci.stage.module = v->shader;
+    cpci.stage.pName = "main";
+    cpci.layout = v->layout;
+    VK_TRY(vkCreateComputePipelines(v->dev, VK_NULL_HANDLE, 1, &cpci, NULL, &v->pipe),
+           "vkCreateComputePipelines");
+    return 0;
+}
+
+/* Creates the descriptor pool for nbindings storage buffers and allocates the one set of the
+ * layout from it. */
+static int vk_setup_descriptors(vkctx *v, int nbindings, char *err)
+{
+    VkDescriptorPoolSize ps;
+    VkDescriptorPoolCreateInfo dpci;
+    VkDescriptorSetAllocateInfo dsai;
+    ps.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    ps.descriptorCount = (uint32_t)nbindings;
+    memset(&dpci, 0, sizeof dpci);
+    dpci.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+    dpci.maxSets = 1;
+    dpci.poolSizeCount = 1;
+    dpci.pPoolSizes = &ps;
+    VK_TRY(vkCreateDescriptorPool(v->dev, &dpci, NULL, &v->dpool), "vkCreateDescriptorPool");
+    memset(&dsai, 0, sizeof dsai);
+    dsai.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+    dsai.descriptorPool = v->dpool;
+    dsai.descriptorSetCount = 1;
+    dsai.pSetLayouts = &v->dsl;
+    VK_TRY(vkAllocateDescriptorSets(v->dev, &dsai, &v->dset), "vkAllocateDescriptorSets");
+    return 0;
+}
+
+/* Creates the command pool of the queue's family, its one primary command buffer and the
+ * fence (unsignaled). */
+static int vk_setup_commands(vkctx *v, char *err)
+{
+    VkCommandPoolCreateInfo cpi;
+    VkCommandBufferAllocateInfo cbai;
+    VkFenceCreateInfo fci;
+    memset(&cpi, 0, sizeof cpi);
+    cpi.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+    cpi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    cpi.queueFamilyIndex = v->qfam;
+    VK_TRY(vkCreateCommandPool(v->dev, &cpi, NULL, &v->cpool), "vkCreateCommandPool");
+    memset(&cbai, 0, sizeof cbai);
+    cbai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+    cbai.commandPool = v->cpool;
+    cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cbai.commandBufferCount = 1;
+    VK_TRY(vkAllocateCommandBuffers(v->dev, &cbai, &v->cmd), "vkAllocateCommandBuffers");
+    memset(&fci, 0, sizeof fci);
+    fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+    VK_TRY(vkCreateFence(v->dev, &fci, NULL, &v->fence), "vkCreateFence");
+    return 0;
+}
+
+/* Everything a dispatch of code needs on v's device (vk_setup_device first): the shader, its
+ * layouts and pipeline for nbindings storage buffers, the descriptor set, the command buffer
+ * and the fence. 0, or host_fail's -1 with the message in err. */
+static int vk_setup_pipeline(vkctx *v, const spirv *code, int nbindings, char *err)
+{
+    if (vk_setup_layouts(v, code, nbindings, err) || vk_setup_compute(v, err) ||
+        vk_setup_descriptors(v, nbindings, err) || vk_setup_commands(v, err))
+        return -1;
     return 0;
 }
 
