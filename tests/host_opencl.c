@@ -321,40 +321,19 @@ static void hygiene_fail(hygiene *h, const char *set, const char *what, size_t i
         snprintf(h->first, sizeof h->first, "%.80s: %s %zu", set, what, index);
 }
 
-/* Runs one set; 0 on success, -1 on an OpenCL failure (reported). */
-static int run_set(state *st, const kref_args *o, const kref_ref *ref, const kref_set *s,
-                   kref_result *res, hygiene *h)
+/* Marks st's classes and (with --planes) plane values unwritten and writes them and set s's
+ * count patches to the device; 0, or -1 (reported). */
+static int upload_set(state *st, const kref_args *o, const kref_ref *ref, const kref_set *s,
+                      size_t count)
 {
-    size_t count = s->count, L = (size_t)ref->L, K = (size_t)ref->K;
-    size_t groups = (count + o->q - 1) / o->q, gsize, lsize = o->pq, p, i;
+    size_t L = (size_t)ref->L, K = (size_t)ref->K, p, i;
     uint32_t pattern = PLANE_UNWRITTEN;
-    cl_uint pc = (cl_uint)count;
-    cl_float4 eye;
     cl_int e;
-
-    if (count > UINT32_MAX || groups > SIZE_MAX / o->pq) {
-        check(0, o->label, "%s: %zu patches do not fit a uint patch_count", s->name, count);
-        return -1;
-    }
-    if (count == 0)
-        return 0;
-    gsize = groups * o->pq;
-    if (s->K != ref->K) {
-        check(0, o->label, "%s: %d points per patch, the reference has %d", s->name, s->K,
-              ref->K);
-        return -1;
-    }
-    if (ensure_buffers(st, o, ref, count))
-        return -1;
-
     for (p = 0; p < st->cap; p++)
         st->cls[p] = CLS_UNWRITTEN;
     if (o->planes)
         for (i = 0; i < st->cap * L; i++)
             memcpy(&st->planes[i], &pattern, sizeof pattern);
-    for (i = 0; i < 4; i++)
-        eye.s[i] = s->eye[i];
-
     e = clEnqueueWriteBuffer(st->queue, st->cp_buf, CL_TRUE, 0, count * K * sizeof(cl_float4),
                              s->cp, 0, NULL, NULL);
     if (e == CL_SUCCESS)
@@ -367,7 +346,19 @@ static int run_set(state *st, const kref_args *o, const kref_ref *ref, const kre
         check(0, o->label, "%s: clEnqueueWriteBuffer: %s", s->name, cl_err(e));
         return -1;
     }
+    return 0;
+}
 
+/* Sets the kernel's arguments for set s of count patches: the buffers (planes NULL without
+ * --planes), the eye and the count; 0, or -1 (reported). */
+static int set_args(state *st, const kref_args *o, const kref_set *s, size_t count)
+{
+    cl_uint pc = (cl_uint)count;
+    cl_float4 eye;
+    cl_int e;
+    int i;
+    for (i = 0; i < 4; i++)
+        eye.s[i] = s->eye[i];
     e = clSetKernelArg(st->kern, 0, sizeof(cl_mem), &st->cp_buf);
     if (e == CL_SUCCESS)
         e = clSetKernelArg(st->kern, 1, sizeof(cl_mem), &st->cls_buf);
@@ -381,8 +372,16 @@ static int run_set(state *st, const kref_args *o, const kref_ref *ref, const kre
         check(0, o->label, "%s: clSetKernelArg: %s", s->name, cl_err(e));
         return -1;
     }
+    return 0;
+}
 
-    e = clEnqueueNDRangeKernel(st->queue, st->kern, 1, NULL, &gsize, &lsize, 0, NULL, NULL);
+/* Runs the kernel over groups workgroups of o->pq threads and reads back the classes and (with
+ * --planes) the plane values of set s; 0, or -1 (reported). */
+static int dispatch(state *st, const kref_args *o, const kref_ref *ref, const kref_set *s,
+                    size_t groups)
+{
+    size_t gsize = groups * o->pq, lsize = o->pq, L = (size_t)ref->L;
+    cl_int e = clEnqueueNDRangeKernel(st->queue, st->kern, 1, NULL, &gsize, &lsize, 0, NULL, NULL);
     if (e != CL_SUCCESS) {
         check(0, o->label, "%s: clEnqueueNDRangeKernel(%zu groups of %zu): %s", s->name,
               groups, lsize, cl_err(e));
@@ -399,7 +398,15 @@ static int run_set(state *st, const kref_args *o, const kref_ref *ref, const kre
         check(0, o->label, "%s: running the kernel: %s", s->name, cl_err(e));
         return -1;
     }
+    return 0;
+}
 
+/* Reports into h every class or plane value the kernel wrote past set s's count patches. */
+static void check_past_count(const state *st, const kref_args *o, const kref_ref *ref,
+                             const kref_set *s, size_t count, hygiene *h)
+{
+    size_t L = (size_t)ref->L, p, i;
+    uint32_t pattern = PLANE_UNWRITTEN;
     for (p = count; p < st->cap; p++)
         if (st->cls[p] != CLS_UNWRITTEN)
             hygiene_fail(h, s->name, "class written past patch_count at patch", p);
@@ -407,7 +414,28 @@ static int run_set(state *st, const kref_args *o, const kref_ref *ref, const kre
         for (i = count * L; i < st->cap * L; i++)
             if (memcmp(&st->planes[i], &pattern, sizeof pattern))
                 hygiene_fail(h, s->name, "plane written past patch_count at index", i);
+}
 
+/* Runs one set; 0 on success, -1 on an OpenCL failure (reported). */
+static int run_set(state *st, const kref_args *o, const kref_ref *ref, const kref_set *s,
+                   kref_result *res, hygiene *h)
+{
+    size_t count = s->count, groups = (count + o->q - 1) / o->q;
+    if (count > UINT32_MAX || groups > SIZE_MAX / o->pq) {
+        check(0, o->label, "%s: %zu patches do not fit a uint patch_count", s->name, count);
+        return -1;
+    }
+    if (count == 0)
+        return 0;
+    if (s->K != ref->K) {
+        check(0, o->label, "%s: %d points per patch, the reference has %d", s->name, s->K,
+              ref->K);
+        return -1;
+    }
+    if (ensure_buffers(st, o, ref, count) || upload_set(st, o, ref, s, count) ||
+        set_args(st, o, s, count) || dispatch(st, o, ref, s, groups))
+        return -1;
+    check_past_count(st, o, ref, s, count, h);
     kref_check(res, ref, s, st->cls, o->planes ? st->planes : NULL);
     return 0;
 }
