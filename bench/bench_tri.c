@@ -474,11 +474,101 @@ static int setup(mesh *m, ctx *c, int nu, int nv, size_t np)
     return 0;
 }
 
+/* Reads --grid NU NV and --reps N into *nu, *nv and *reps (left as given when absent); 0, or 2
+ * after printing the usage. */
+static int parse_args(int *nu, int *nv, int *reps, int argc, char **argv)
+{
+    int i;
+    for (i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--grid") && i + 2 < argc) {
+            *nu = atoi(argv[i + 1]);
+            *nv = atoi(argv[i + 2]);
+            i += 2;
+        } else if (!strcmp(argv[i], "--reps") && i + 1 < argc) {
+            *reps = atoi(argv[++i]);
+        } else {
+            break;
+        }
+    if (i < argc || *nu < 3 || *nv < 3 || (double)*nu * *nv > 1e8 || *reps < 1 || *reps > MAX_REPS) {
+        fprintf(stderr, "usage: %s [--grid NU NV] [--reps N (1 to %d)]\n", argv[0], MAX_REPS);
+        return 2;
+    }
+    return 0;
+}
+
+/* Gives the first paths but the facet normal mesh_bytes per triangle, allocates every path's
+ * classes (one per triangle of c's mesh) and runs it once, a warm-up; 0, or 1 out of memory. */
+static int warm_up(path *paths, int npaths, const ctx *c, double mesh_bytes)
+{
+    int i;
+    for (i = 0; i < npaths; i++) {
+        if (i != 1 && i < 5)
+            paths[i].bytes = mesh_bytes;
+        if (!(paths[i].cls = malloc(c->m->nt)))
+            return 1;
+        paths[i].items = paths[i].fn(c, paths[i].cls); /* a warm-up */
+    }
+    return 0;
+}
+
+/* Times reps rounds, each a streaming read of buf (nbuf vectors) and then every path once,
+ * interleaved with the others, into paths[].t; returns the best read bandwidth in bytes/s. */
+static double run_rounds(path *paths, int npaths, const ctx *c, const stream_vec *buf,
+                         size_t nbuf, int reps)
+{
+    double bw = 0;
+    int r, i;
+    for (r = 0; r < reps; r++) { /* rounds: every path once, interleaved with the others */
+        double secs = read_pass(buf, nbuf);
+        bw = (double)(nbuf * sizeof *buf) / secs > bw ? (double)(nbuf * sizeof *buf) / secs : bw;
+        for (i = 0; i < npaths; i++) {
+            double t0 = cpu_now();
+            paths[i].fn(c, paths[i].cls);
+            paths[i].t[r] = cpu_now() - t0;
+        }
+    }
+    return bw;
+}
+
+/* Prints the table of the timed paths (the first four against paths[0]'s classes) with its
+ * header and footer lines: the mesh of nu x nv quads, CPU cpu, bandwidth bw, load0 the load
+ * average before. */
+static void report(path *paths, int npaths, const ctx *c, int nu, int nv, int cpu, int reps,
+                   double bw, double load0)
+{
+    const mesh *m = c->m;
+    size_t t, front = 0, back = 0;
+    int i;
+    for (t = 0; t < m->nt; t++) {
+        front += paths[0].cls[t] == 0;
+        back += paths[0].cls[t] == 1;
+    }
+    printf("# triangles: a torus of %d x %d quads, %zu indexed triangles over %zu shared vertices "
+           "(%.0f MB of indices and vertices, %.0f MB of facet records); CPU %d; %d rounds\n",
+           nu, nv, m->nt, m->nv, (double)(m->nt * 12 + m->nv * 16) / 1e6, (double)m->nt * 24 / 1e6,
+           cpu, reps);
+    printf("%-40s %8s %8s %7s %6s %8s %8s  %s\n", "path", "M/s", "best", "ns", "B", "bound",
+           "x bound", "differs");
+    for (i = 0; i < npaths; i++)
+        print_row(&paths[i], reps, bw, i < 4 ? paths[0].cls : NULL);
+    printf("# classify_mesh (world) / facet normal: %.2fx; PN triangles / bicubic: %.2fx "
+           "(medians of the per-round ratios; %zu patches each)\n",
+           ratio(&paths[0], &paths[1], reps), ratio(&paths[5], &paths[6], reps), c->npatches);
+    printf("# streaming read bandwidth, 1 core: %.1f GB/s (best of %d passes over 256 MiB); bound = "
+           "that / B per triangle: indices 12, vertices 16 x %.2f (V/T, each read once), class 1; "
+           "facet records 24\n",
+           bw * 1e-9, reps, (double)m->nv / (double)m->nt);
+    printf("# classes (classify_mesh, world): front %.1f%%, back %.1f%%; load average %.2f before, "
+           "%.2f after\n",
+           100.0 * (double)front / (double)m->nt, 100.0 * (double)back / (double)m->nt, load0,
+           load_average());
+}
+
 int main(int argc, char **argv)
 {
-    int nu = 2048, nv = 1024, reps = 15, i, r, cpu;
-    size_t nbuf = ((size_t)256 << 20) / sizeof(stream_vec), t, front = 0, back = 0;
-    double bw = 0, load0, mesh_bytes;
+    int nu = 2048, nv = 1024, reps = 15, cpu;
+    size_t nbuf = ((size_t)256 << 20) / sizeof(stream_vec);
+    double bw, load0;
     path paths[] = {
         {"ptpgen classify_mesh (world)", run_mesh, 0, {0}, 0, NULL},
         {"facet normal (Gamasutra 1999)", run_facet, 24 + 1, {0}, 0, NULL},
@@ -492,20 +582,8 @@ int main(int argc, char **argv)
     stream_vec *buf;
     mesh m;
     ctx c;
-    for (i = 1; i < argc; i++)
-        if (!strcmp(argv[i], "--grid") && i + 2 < argc) {
-            nu = atoi(argv[i + 1]);
-            nv = atoi(argv[i + 2]);
-            i += 2;
-        } else if (!strcmp(argv[i], "--reps") && i + 1 < argc) {
-            reps = atoi(argv[++i]);
-        } else {
-            break;
-        }
-    if (i < argc || nu < 3 || nv < 3 || (double)nu * nv > 1e8 || reps < 1 || reps > MAX_REPS) {
-        fprintf(stderr, "usage: %s [--grid NU NV] [--reps N (1 to %d)]\n", argv[0], MAX_REPS);
+    if (parse_args(&nu, &nv, &reps, argc, argv))
         return 2;
-    }
     cpu = pin_first();
     load0 = load_average();
     buf = aligned_alloc(64, nbuf * sizeof *buf);
@@ -513,45 +591,9 @@ int main(int argc, char **argv)
         return fprintf(stderr, "bench_tri: out of memory\n"), 1;
     memset(buf, 1, nbuf * sizeof *buf);
     /* bytes per triangle: 12 of indices, 16 per vertex read once (V/T of them), 1 class */
-    mesh_bytes = 12 + 1 + 16.0 * (double)m.nv / (double)m.nt;
-    for (i = 0; i < npaths; i++) {
-        if (i != 1 && i < 5)
-            paths[i].bytes = mesh_bytes;
-        if (!(paths[i].cls = malloc(m.nt)))
-            return fprintf(stderr, "bench_tri: out of memory\n"), 1;
-        paths[i].items = paths[i].fn(&c, paths[i].cls); /* a warm-up */
-    }
-    for (r = 0; r < reps; r++) { /* rounds: every path once, interleaved with the others */
-        double secs = read_pass(buf, nbuf);
-        bw = (double)(nbuf * sizeof *buf) / secs > bw ? (double)(nbuf * sizeof *buf) / secs : bw;
-        for (i = 0; i < npaths; i++) {
-            double t0 = cpu_now();
-            paths[i].fn(&c, paths[i].cls);
-            paths[i].t[r] = cpu_now() - t0;
-        }
-    }
-    for (t = 0; t < m.nt; t++) {
-        front += paths[0].cls[t] == 0;
-        back += paths[0].cls[t] == 1;
-    }
-    printf("# triangles: a torus of %d x %d quads, %zu indexed triangles over %zu shared vertices "
-           "(%.0f MB of indices and vertices, %.0f MB of facet records); CPU %d; %d rounds\n",
-           nu, nv, m.nt, m.nv, (double)(m.nt * 12 + m.nv * 16) / 1e6, (double)m.nt * 24 / 1e6,
-           cpu, reps);
-    printf("%-40s %8s %8s %7s %6s %8s %8s  %s\n", "path", "M/s", "best", "ns", "B", "bound",
-           "x bound", "differs");
-    for (i = 0; i < npaths; i++)
-        print_row(&paths[i], reps, bw, i < 4 ? paths[0].cls : NULL);
-    printf("# classify_mesh (world) / facet normal: %.2fx; PN triangles / bicubic: %.2fx "
-           "(medians of the per-round ratios; %zu patches each)\n",
-           ratio(&paths[0], &paths[1], reps), ratio(&paths[5], &paths[6], reps), c.npatches);
-    printf("# streaming read bandwidth, 1 core: %.1f GB/s (best of %d passes over 256 MiB); bound = "
-           "that / B per triangle: indices 12, vertices 16 x %.2f (V/T, each read once), class 1; "
-           "facet records 24\n",
-           bw * 1e-9, reps, (double)m.nv / (double)m.nt);
-    printf("# classes (classify_mesh, world): front %.1f%%, back %.1f%%; load average %.2f before, "
-           "%.2f after\n",
-           100.0 * (double)front / (double)m.nt, 100.0 * (double)back / (double)m.nt, load0,
-           load_average());
+    if (warm_up(paths, npaths, &c, 12 + 1 + 16.0 * (double)m.nv / (double)m.nt))
+        return fprintf(stderr, "bench_tri: out of memory\n"), 1;
+    bw = run_rounds(paths, npaths, &c, buf, nbuf, reps);
+    report(paths, npaths, &c, nu, nv, cpu, reps, bw, load0);
     return 0;
 }
