@@ -441,6 +441,81 @@ static long exact_check(const model *m, const float eyef[3], long *checked)
     return bad;
 }
 
+/* Eye e of job j: in double into eye and as the float eye the kernels see into eyef (w = 1),
+ * the double widened from the float so that every method sees the same eye; 0, or -8 when
+ * the widening does not round-trip. */
+static int job_eye(const job *j, long e, double eye[3], float eyef[4])
+{
+    int k;
+    eye_point(j->m, j->s->seed, j->stream, e, j->dist, eye);
+    for (k = 0; k < 3; k++) /* every method sees the float eye the kernels see */
+        eyef[k] = (float)eye[k];
+    for (k = 0; k < 3; k++)
+        eye[k] = float_widen(&eyef[k]);
+    eyef[3] = 1;
+    return float_same(eye, 1, eyef, 1, 3) ? 0 : -8;
+}
+
+/* Every method's verdict on patch p from eye into cull (1: back), with the kernels' classes
+ * cls, and into *pos whether the cone arbiter finds a positive value; counts j's given-up,
+ * certified-only, sampled and float/double cases. 0, or -5 when sampling fails. */
+static int cull_patch(job *j, int p, const double eye[3], unsigned char *const *cls,
+                      int cull[NMETHODS], int *pos)
+{
+    const model *m = j->m;
+    int d = m->ops->domain, r0, k;
+    double c[64];
+    cone_values(&m->t[p], eye, c);
+    cull[M_TCONE] = cone_cull(&m->tcone[p], eye);
+    cull[M_NCONE] = cone_cull(&m->ncone[p], eye);
+    for (k = 0; k < NKERNELS; k++) /* back is 1 for every kernel */
+        cull[M_STRICT + k] = cls[k][p] == 1;
+    j->t.given_up += cull[M_STRICT] && !cull[M_CERT];
+    j->t.cert_only += cull[M_CERT] && !cull[M_STRICT];
+    r0 = cone_split(d, c, 0);
+    if (r0 != CONE_UNDECIDED) { /* no positive value, or a positive corner */
+        *pos = r0 == CONE_NOT_BACK;
+        for (k = M_CVIS_LO; k <= M_CVIS_HI; k++)
+            cull[k] = !*pos;
+    } else {
+        j->t.sampled++;
+        cull[M_CVIS_LO] = cone_split(d, c, j->s->depth) == CONE_BACK;
+        if (cone_sample(d, c, j->s->samples, pos))
+            return -5;
+        cull[M_CVIS_HI] = !*pos;
+    }
+    j->t.float_double += cull[M_DEGEN] != (r0 == CONE_BACK);
+    return 0;
+}
+
+/* Counts the methods' verdicts cull on patch p into j: culled, and where the arbiter found a
+ * positive value (pos) the exact judge's alarms and unsafe culls, with the worst elevation.
+ * 0, or -9 when the exact judge fails. */
+static int tally_patch(job *j, int p, const double eye[3], const float eyef[4],
+                       const int cull[NMETHODS], int pos)
+{
+    const model *m = j->m;
+    double elev = 0;
+    int k, have_elev = 0, exact = -2;
+    for (k = 0; k < NMETHODS; k++) {
+        j->t.culled[k] += (uint64_t)cull[k];
+        if (!cull[k] || !pos) /* the arbiter rejudges what the double calls unsafe */
+            continue;
+        if (exact == -2 && (exact = exact_unsafe(m, (size_t)p, eyef, j->s->samples)) < 0)
+            return -9;
+        j->t.alarms[k] += !exact;
+        if (exact) {
+            j->t.unsafe[k]++;
+            if (!have_elev) {
+                elev = elevation(&m->b[p], eye, j->s->samples);
+                have_elev = 1;
+            }
+            j->t.worst[k] = fmax(j->t.worst[k], elev);
+        }
+    }
+    return 0;
+}
+
 /* One thread's share of the eyes (e = tid, tid + threads, ...) of one model and radius. */
 static void *run_job(void *arg)
 {
@@ -450,77 +525,28 @@ static void *run_job(void *arg)
     const domain_ops *o = m->ops;
     unsigned char *cls[NKERNELS];
     long e;
-    int k0, d = o->domain;
+    int k0;
     memset(&j->t, 0, sizeof j->t);
     j->status = 0;
     for (k0 = 0; k0 < NKERNELS; k0++) /* every kernel's classes, all 0 (front) where none */
         if (!(cls[k0] = calloc((size_t)m->npatches, 1)))
             j->status = -3;
-    if (j->status)
-        goto done;
-    for (e = j->tid; e < s->eyes; e += s->threads) {
+    for (e = j->tid; !j->status && e < s->eyes; e += s->threads) {
         double eye[3];
         float eyef[4];
         int p, k;
-        eye_point(m, s->seed, j->stream, e, j->dist, eye);
-        for (k = 0; k < 3; k++) /* every method sees the float eye the kernels see */
-            eyef[k] = (float)eye[k];
-        for (k = 0; k < 3; k++)
-            eye[k] = float_widen(&eyef[k]);
-        eyef[3] = 1;
-        if (!float_same(eye, 1, eyef, 1, 3)) {
-            j->status = -8;
-            goto done;
-        }
+        if ((j->status = job_eye(j, e, eye, eyef)) != 0)
+            break;
         for (k = 0; k < NKERNELS; k++)
             if (o->kernel[k])
                 o->kernel[k](m->soa, (size_t)m->npatches, (size_t)m->npatches, eyef, cls[k]);
-        for (p = 0; p < m->npatches; p++) {
-            double c[64], elev = 0;
-            int cull[NMETHODS], pos, r0, have_elev = 0, exact = -2;
-            cone_values(&m->t[p], eye, c);
-            cull[M_TCONE] = cone_cull(&m->tcone[p], eye);
-            cull[M_NCONE] = cone_cull(&m->ncone[p], eye);
-            for (k = 0; k < NKERNELS; k++) /* back is 1 for every kernel */
-                cull[M_STRICT + k] = cls[k][p] == 1;
-            j->t.given_up += cull[M_STRICT] && !cull[M_CERT];
-            j->t.cert_only += cull[M_CERT] && !cull[M_STRICT];
-            r0 = cone_split(d, c, 0);
-            if (r0 != CONE_UNDECIDED) { /* no positive value, or a positive corner */
-                pos = r0 == CONE_NOT_BACK;
-                for (k = M_CVIS_LO; k <= M_CVIS_HI; k++)
-                    cull[k] = !pos;
-            } else {
-                j->t.sampled++;
-                cull[M_CVIS_LO] = cone_split(d, c, s->depth) == CONE_BACK;
-                if (cone_sample(d, c, s->samples, &pos)) {
-                    j->status = -5;
-                    goto done;
-                }
-                cull[M_CVIS_HI] = !pos;
-            }
-            j->t.float_double += cull[M_DEGEN] != (r0 == CONE_BACK);
-            for (k = 0; k < NMETHODS; k++) {
-                j->t.culled[k] += (uint64_t)cull[k];
-                if (!cull[k] || !pos) /* the arbiter rejudges what the double calls unsafe */
-                    continue;
-                if (exact == -2 && (exact = exact_unsafe(m, (size_t)p, eyef, s->samples)) < 0) {
-                    j->status = -9;
-                    goto done;
-                }
-                j->t.alarms[k] += !exact;
-                if (exact) {
-                    j->t.unsafe[k]++;
-                    if (!have_elev) {
-                        elev = elevation(&m->b[p], eye, s->samples);
-                        have_elev = 1;
-                    }
-                    j->t.worst[k] = fmax(j->t.worst[k], elev);
-                }
-            }
+        for (p = 0; p < m->npatches && !j->status; p++) {
+            int cull[NMETHODS], pos;
+            j->status = cull_patch(j, p, eye, cls, cull, &pos);
+            if (!j->status)
+                j->status = tally_patch(j, p, eye, eyef, cull, pos);
         }
     }
-done:
     for (k0 = 0; k0 < NKERNELS; k0++)
         free(cls[k0]);
     return NULL;
