@@ -396,116 +396,37 @@ static int put_tables(sbuf *o, const tp_table *t, const out_info *info, const ke
     return !st && info->certified ? put_cert_tables(o, t, info, g, up, err) : st;
 }
 
-/* The target's product format (kern_target.product) split around its operands a and b:
- * pre a mid b post; the default "%s * %s" is "", " * ", "". */
-typedef struct {
-    char pre[32], mid[16], post[16];
-} prod_parts;
-
-/* Into p the parts of g's product format. */
-static void prod_split(prod_parts *p, const kern_target *g)
+/* Writes to out (size bytes, truncating as snprintf) the product of the n factors f, left to
+ * right, as the kernel writes every float product but cross4's (kern_target.product): the
+ * target's function p(p(f0, f1), f2), else f0 * f1 * f2; brk follows each comma or operator:
+ * " ", or a line break and indent. A factor that is a sum, or a product after the first, comes
+ * from put_group. Returns out. */
+static char *put_product(char *out, size_t size, const kern_target *g, const char *brk, int n,
+                         const char *const *f)
 {
-    const char *f = g->product ? g->product : "%s * %s", *a = strstr(f, "%s"), *b = strstr(a + 2, "%s");
-    snprintf(p->pre, sizeof p->pre, "%.*s", (int)(a - f), f);
-    snprintf(p->mid, sizeof p->mid, "%.*s", (int)(b - a - 2), a + 2);
-    snprintf(p->post, sizeof p->post, "%s", b + 2);
+    size_t k = 0;
+    int i;
+    out[0] = '\0';
+    for (i = 1; g->product && i < n && k < size; i++)
+        k += (size_t)snprintf(out + k, size - k, "%s(", g->product);
+    for (i = 0; i < n && k < size; i++)
+        k += (size_t)snprintf(out + k, size - k, "%s%s%s%s", i == 0 ? "" : g->product ? "," : " *",
+                              i == 0 ? "" : brk, f[i], i > 0 && g->product ? ")" : "");
+    return out;
 }
 
-/* The end of the operand of s (n bytes) that starts at i: the next operator outside brackets,
- * " + " or " - " (sum) else " * ", a line break allowed for the space after it; or n. */
-static size_t prod_operand_end(const char *s, size_t i, size_t n, int sum)
+/* put_product of the two factors a and b on one line. */
+static char *put_mul(char *out, size_t size, const kern_target *g, const char *a, const char *b)
 {
-    int depth = 0;
-    for (; i < n; i++) {
-        depth += (s[i] == '(' || s[i] == '[') - (s[i] == ')' || s[i] == ']');
-        if (depth == 0 && s[i] == ' ' && i + 2 < n && (s[i + 2] == ' ' || s[i + 2] == '\n') &&
-            (sum ? s[i + 1] == '+' || s[i + 1] == '-' : s[i + 1] == '*'))
-            return i;
-    }
-    return n;
+    return put_product(out, size, g, " ", 2, (const char *const[]){a, b});
 }
 
-static void prod_sum(sbuf *o, const prod_parts *p, const char *s, size_t n);
-
-/* A factor s (n bytes): a group (...) has its products rewritten, and loses its parentheses
- * where it is an operand of a product; anything else is copied. */
-static void prod_factor(sbuf *o, const prod_parts *p, const char *s, size_t n, int operand)
+/* Writes to out (size bytes) e, a sum or a product, as a factor of put_product: (e) between
+ * operators, e as an argument of the target's product function. Returns out. */
+static char *put_group(char *out, size_t size, const kern_target *g, const char *e)
 {
-    int group = n >= 2 && s[0] == '(' && s[n - 1] == ')', depth = 0;
-    size_t i;
-    for (i = 0; group && i + 1 < n; i++) /* the first ( closes only at the end */
-        if ((depth += (s[i] == '(') - (s[i] == ')')) == 0)
-            group = 0;
-    if (!group) {
-        sbuf_printf(o, "%.*s", (int)n, s);
-        return;
-    }
-    sbuf_puts(o, operand ? "" : "(");
-    prod_sum(o, p, s + 1, n - 2);
-    sbuf_puts(o, operand ? "" : ")");
-}
-
-/* A product of factors s (n bytes), left to right: pre pre a mid b post mid c post. */
-static void prod_term(sbuf *o, const prod_parts *p, const char *s, size_t n)
-{
-    size_t i, e, k = 0;
-    for (i = 0; (e = prod_operand_end(s, i, n, 0)) < n; i = e + 3)
-        k++;
-    for (i = 0; i < k; i++)
-        sbuf_puts(o, p->pre);
-    for (i = 0;; i = e + 3) {
-        e = prod_operand_end(s, i, n, 0);
-        sbuf_puts(o, i ? p->mid : "");
-        prod_factor(o, p, s + i, e - i, k > 0);
-        sbuf_puts(o, i ? p->post : "");
-        if (e == n)
-            return;
-    }
-}
-
-/* A sum s (n bytes): its terms' products rewritten, the operators and line breaks kept. */
-static void prod_sum(sbuf *o, const prod_parts *p, const char *s, size_t n)
-{
-    size_t i = 0, e, k;
-    for (;;) {
-        e = prod_operand_end(s, i, n, 1);
-        prod_term(o, p, s + i, e - i);
-        if (e == n)
-            return;
-        for (k = e + 2; k < n && (s[k] == ' ' || s[k] == '\n'); k++)
-            ;
-        sbuf_printf(o, "%.*s", (int)(k - e), s + e);
-        i = k;
-    }
-}
-
-/* Appends src, sums and products of operands (names, calls, bracketed groups) with spaces
- * around their operators, with every " * " the target's product; the default leaves it as is.
- * So that nvcc's default build contracts none of a CUDA kernel's products into an FMA. */
-static void put_products(sbuf *o, const kern_target *g, const char *src)
-{
-    prod_parts p;
-    if (!g->product) {
-        sbuf_puts(o, src);
-        return;
-    }
-    prod_split(&p, g);
-    prod_sum(o, &p, src, strlen(src));
-}
-
-/* Declares at indent one local variable initialized to src with the target's products
- * (put_products). */
-static void put_local_products(sbuf *o, const kern_target *g, const char *indent, const char *type,
-                               const char *name, const char *src)
-{
-    sbuf x;
-    kern_var v = {name, NULL, 0};
-    sbuf_init(&x);
-    put_products(&x, g, src);
-    v.init = x.s ? x.s : "";
-    g->syntax->locals(o, g, indent, type, &v, 1, 0);
-    o->failed |= x.failed;
-    sbuf_clear(&x);
+    snprintf(out, size, g->product ? "%s" : "(%s)", e);
+    return out;
 }
 
 /* Writes to d (512 bytes) det[a b c] of rows p, q, s (components "xyzw"[i]) with the target's
@@ -552,6 +473,7 @@ static void put_cross4(sbuf *o, const out_info *info, const kern_target *g)
     } else {
         static const int rows[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
         static const char *const names[4] = {"x", "y", "z", "w"};
+        char e[8], m[4][32];
         int c;
         sbuf_puts(o, "/* e . cross4(a, b, c), cross4 as in Appendix A of Loop, Niessner and Eisenacher:\n"
                      " * (det yzw, -det xzw, det xyw, -det xyz) of the columns a, b, c. */\n");
@@ -562,10 +484,10 @@ static void put_cross4(sbuf *o, const out_info *info, const kern_target *g)
             x.name = names[c];
             x.init = det;
             g->syntax->locals(o, g, "    ", g->real, &x, 1, 1);
+            snprintf(e, sizeof e, "e.%s", names[c]);
+            put_mul(m[c], sizeof m[c], g, e, names[c]);
         }
-        sbuf_puts(o, "    return ");
-        put_products(o, g, "e.x * x - e.y * y + e.z * z - e.w * w");
-        sbuf_puts(o, ";\n}\n\n");
+        sbuf_printf(o, "    return %s - %s + %s - %s;\n}\n\n", m[0], m[1], m[2], m[3]);
     }
 }
 
@@ -831,13 +753,8 @@ static void put_load(sbuf *o, const kern_target *g, const char *up)
 static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    char a[128], b[320], c[320]; /* up has at most 63 bytes */
-    prod_parts m; /* the weight's product, the line broken after its first operand */
-    size_t k;
-    int r;
-    prod_split(&m, g);
-    for (k = strlen(m.mid); k > 0 && m.mid[k - 1] == ' ';)
-        m.mid[--k] = '\0'; /* " * " -> " *" */
+    char a[128], b[320], c[320], w[96], term[1024], e[1152]; /* up has at most 63 bytes */
+    int r, n = (int)(strlen(px) + strlen(fn));
     sbuf_printf(o,
                 "    /* Accumulate the planes this thread owns, one round at a time: no other thread\n"
                 "     * touches them. */\n"
@@ -855,13 +772,14 @@ static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, 
         snprintf(c, sizeof c, "pts[q * %sK + (kl >> 16)]", up);
     }
     for (r = 0; r < info->sched->rounds; r++) {
+        snprintf(w, sizeof w, "%sw%d[t]", px, r);
+        snprintf(term, sizeof term, "%s%s(%s,%s%*s %s,\n        %*s %s%s)", px, fn, a,
+                 differences(info, g) ? "\n        " : "", differences(info, g) ? n : 0, "", b, n, "",
+                 c, info->space == OUT_CLIP ? "" : ", eye");
+        put_product(e, sizeof e, g, "\n        ", 2, (const char *const[]){w, term});
         sbuf_printf(o, "    pj = %spj%d[t];\n    kl = %skl%d[t];\n"
-                       "    acc[q * %sL + (pj & 0xffffu)] += %s%sw%d[t]%s\n",
-                    px, r, px, r, up, m.pre, px, r, m.mid);
-        int w = (int)(strlen(px) + strlen(fn));
-        sbuf_printf(o, "        %s%s(%s,%s%*s %s,\n        %*s %s%s)%s;\n", px, fn, a,
-                    differences(info, g) ? "\n        " : "", differences(info, g) ? w : 0, "", b, w,
-                    "", c, info->space == OUT_CLIP ? "" : ", eye", m.post);
+                       "    acc[q * %sL + (pj & 0xffffu)] += %s;\n",
+                    px, r, px, r, up, e);
     }
     sbuf_puts(o, "\n");
 }
@@ -905,36 +823,67 @@ static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, con
 }
 
 /* Into e (size bytes) the largest |monomial| of one coordinate and two differences over the
- * coordinates u: (Ru0 Du1 Du2 + Du0 Ru1 Du2 + Du0 Du1 Ru2), D the extents. Returns its length. */
-static size_t put_diff_monomial(char *e, size_t size, const char *u)
+ * coordinates u, D the extents, as a factor (put_group): Ru0 Du1 Du2 + Du0 Ru1 Du2 + Du0 Du1 Ru2.
+ * Returns e. */
+static char *put_diff_monomial(char *e, size_t size, const kern_target *g, const char *u)
 {
-    return (size_t)snprintf(e, size, "(R%c * D%c * D%c + D%c * R%c * D%c + D%c * D%c * R%c)", u[0], u[1],
-                            u[2], u[0], u[1], u[2], u[0], u[1], u[2]);
+    char f[3][4], m[3][64], s[224];
+    int i, k;
+    for (i = 0; i < 3; i++) {
+        for (k = 0; k < 3; k++)
+            snprintf(f[k], sizeof f[k], "%c%c", k == i ? 'R' : 'D', u[k]);
+        put_product(m[i], sizeof m[i], g, " ", 3, (const char *const[]){f[0], f[1], f[2]});
+    }
+    snprintf(s, sizeof s, "%s + %s + %s", m[0], m[1], m[2]);
+    return put_group(e, size, g, s);
 }
 
-/* Into e (512 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
+/* Into e (size bytes) world space's largest |monomial| with the eye's components h[0], h[1]
+ * (the other two r): (|eye.h0| Rh1 + |eye.h1| Rh0) (Rr0 Rr1). Returns e. */
+static char *put_eye_monomial(char *e, size_t size, const kern_target *g, const char *h,
+                              const char *r)
+{
+    char a[32], x[2][4], m[2][64], s[160], t[2][160];
+    int i;
+    for (i = 0; i < 2; i++) {
+        snprintf(a, sizeof a, "%s(eye.%c)", g->fabs, h[i]);
+        snprintf(x[0], sizeof x[0], "R%c", h[!i]);
+        put_mul(m[i], sizeof m[i], g, a, x[0]);
+    }
+    snprintf(s, sizeof s, "%s + %s", m[0], m[1]);
+    snprintf(x[0], sizeof x[0], "R%c", r[0]);
+    snprintf(x[1], sizeof x[1], "R%c", r[1]);
+    put_group(t[0], sizeof t[0], g, s);
+    put_group(t[1], sizeof t[1], g, put_mul(a, sizeof a, g, x[0], x[1]));
+    return put_mul(e, size, g, t[0], t[1]);
+}
+
+/* Into e (1024 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
  * largest |monomial| (clip space); in world space the sum over the eye's components of the
  * largest |monomial| with that component (README: Certified). With diff (differences), a
  * monomial has one coordinate and two differences instead (put_diff_monomial). */
 static void put_monomial_max(char *e, const out_info *info, const kern_target *g, int diff)
 {
     static const char *const other[4] = {"yzw", "xzw", "xyw", "xyz"};
-    const char *ab = g->fabs;
+    char a[32], m[256], x[160];
     size_t n = 0;
     int c;
-    if (!diff && info->space == OUT_CLIP)
-        snprintf(e, 512, "E * (Rx * Ry * Rw)");
-    else if (!diff)
-        snprintf(e, 512, "(%s(eye.x) * Ry + %s(eye.y) * Rx) * (Rz * Rw) +\n"
-                         "        (%s(eye.z) * Rw + %s(eye.w) * Rz) * (Rx * Ry)",
-                 ab, ab, ab, ab);
-    else if (info->space == OUT_CLIP)
-        put_diff_monomial(e + snprintf(e, 512, "E * "), 508, "xyw");
-    else
-        for (c = 0; c < 4; c++) {
-            n += (size_t)snprintf(e + n, 512 - n, "%s%s(eye.%c) * ", c ? " +\n        " : "", ab, "xyzw"[c]);
-            n += put_diff_monomial(e + n, 512 - n, other[c]);
+    if (info->space == OUT_CLIP) {
+        if (diff)
+            put_diff_monomial(m, sizeof m, g, "xyw");
+        else
+            put_group(m, sizeof m, g, put_product(x, sizeof x, g, " ", 3, (const char *const[]){"Rx", "Ry", "Rw"}));
+        put_mul(e, 1024, g, "E", m);
+    } else if (diff) {
+        for (c = 0; c < 4 && n < 1024; c++) {
+            snprintf(a, sizeof a, "%s(eye.%c)", g->fabs, "xyzw"[c]);
+            put_diff_monomial(x, sizeof x, g, other[c]);
+            n += (size_t)snprintf(e + n, 1024 - n, "%s%s", c ? " +\n        " : "", put_mul(m, sizeof m, g, a, x));
         }
+    } else {
+        put_eye_monomial(m, sizeof m, g, "xy", "zw");
+        snprintf(e, 1024, "%s +\n        %s", m, put_eye_monomial(x, sizeof x, g, "zw", "xy"));
+    }
 }
 
 /* With differences, the patch's extents over the coordinates c (n of them): step 0 declares
@@ -969,11 +918,9 @@ static void put_extents(sbuf *o, const out_info *info, const kern_target *g, con
 static void put_too_large(sbuf *o, const kern_target *g, const char *indent, const char *up,
                           const char *qmax)
 {
-    char e[64];
-    snprintf(e, sizeof e, "%s(E, 1.0f) * R3", g->fmax);
-    sbuf_printf(o, "%sif (!(", indent);
-    put_products(o, g, e);
-    sbuf_printf(o, " < %s%s))", up, qmax);
+    char e[32], m[64];
+    snprintf(e, sizeof e, "%s(E, 1.0f)", g->fmax);
+    sbuf_printf(o, "%sif (!(%s < %s%s))", indent, put_mul(m, sizeof m, g, e, "R3"), up, qmax);
 }
 
 /* --certified: the patch's largest |coordinates| Rx, Ry, (Rz,) Rw, R the largest of them, E the
@@ -985,7 +932,7 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
                       const char *up)
 {
     const char *ab = g->fabs, *mx = g->fmax, *f = g->real, *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
-    char e[512], rc[4][4];
+    char e[1024], rc[4][4], r1[16], e1[16];
     kern_var r[4];
     int k, n = (int)strlen(c);
     sbuf_puts(o, "    /* Certified: the patch's largest |coordinates| and the eye's bound the errors. */\n");
@@ -1017,15 +964,17 @@ static void put_scale(sbuf *o, const tp_domain *d, const out_info *info, const k
                  mx, ab, ab);
     }
     put_local(o, g, f, "E", e, 0);
-    put_local_products(o, g, "    ", f, "R3", "R * R * R");
+    put_local(o, g, f, "R3", put_product(e, sizeof e, g, " ", 3, (const char *const[]){"R", "R", "R"}), 0);
     put_extents(o, info, g, up, c, n, 2);
     put_monomial_max(e, info, g, differences(info, g));
-    put_local_products(o, g, "    ", f, "M", e);
+    put_local(o, g, f, "M", e, 0);
     if (second_look(info, g)) { /* M2: the second look reads the points */
         put_monomial_max(e, info, g, 0);
-        put_local_products(o, g, "    ", f, "M2", e);
+        put_local(o, g, f, "M2", e, 0);
     }
-    put_local_products(o, g, "    ", f, "F", "(1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E)");
+    put_group(r1, sizeof r1, g, "1.0f + R");
+    put_group(e1, sizeof e1, g, "1.0f + E");
+    put_local(o, g, f, "F", put_product(e, sizeof e, g, " ", 4, (const char *const[]){r1, r1, r1, e1}), 0);
     put_too_large(o, g, "    ", up, "QMAX");
     put_then(o, g);
     sbuf_puts(o, "        f = 3u; /* too large for the bound, or NaN: never certified */\n");
@@ -1054,12 +1003,12 @@ static void put_keep(sbuf *o, const out_info *info, const kern_target *g, const 
  * Returns its text. */
 static const char *first_flags(sbuf *x, const out_info *info, const kern_target *g)
 {
-    char e[160];
-    snprintf(e, sizeof e, "%stau_k[plane] * M + %stau_f[plane] * F", info->prefix, info->prefix);
+    char k[96], f[96], m[2][128];
+    snprintf(k, sizeof k, "%stau_k[plane]", info->prefix);
+    snprintf(f, sizeof f, "%stau_f[plane]", info->prefix);
     sbuf_init(x);
-    sbuf_printf(x, "%sflags(d, ", info->prefix);
-    put_products(x, g, e);
-    sbuf_printf(x, ")%s", exact_zeros(info) ? " & keep" : "");
+    sbuf_printf(x, "%sflags(d, %s + %s)%s", info->prefix, put_mul(m[0], sizeof m[0], g, k, "M"),
+                put_mul(m[1], sizeof m[1], g, f, "F"), exact_zeros(info) ? " & keep" : "");
     return x->s ? x->s : "";
 }
 
@@ -1090,7 +1039,7 @@ static void put_split_flags(sbuf *o, const out_info *info, const kern_target *g)
 static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix;
-    char e[256];
+    char e[256], d[320];
     sbuf x;
     sbuf_printf(o,
                 "    /* The values and signs of the owned planes; then one thread combines the patch's. */\n"
@@ -1098,8 +1047,10 @@ static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const
                 px, px);
     snprintf(e, sizeof e, "%sown_plane[i]", px);
     g->syntax->locals(o, g, "        ", g->uint, &(kern_var){"plane", e, 0}, 1, 0);
-    snprintf(e, sizeof e, "%sacc[q * %sL + plane]", info->space == OUT_CLIP ? "eye.z * " : "", up);
-    put_local_products(o, g, "        ", g->real, "d", e);
+    snprintf(e, sizeof e, "acc[q * %sL + plane]", up);
+    if (info->space == OUT_CLIP)
+        put_mul(d, sizeof d, g, "eye.z", e);
+    g->syntax->locals(o, g, "        ", g->real, &(kern_var){"d", info->space == OUT_CLIP ? d : e, 0}, 1, 0);
     if (info->planes) {
         sbuf_printf(o, "        if (%slive)", g->planes_buffer ? "" : "planes && ");
         put_then(o, g);
@@ -1199,7 +1150,7 @@ static void put_df_sum(sbuf *o, const out_info *info, const kern_target *g, cons
 static void put_second_look(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix;
-    char a[160], b[160], e[256];
+    char a[160], b[160], m[3][128];
     kern_var j = {"j", NULL, 1}, s = {"s", NULL, 1};
     put_again(o, g, up);
     sbuf_puts(o, "    if (again) {\n");
@@ -1231,11 +1182,14 @@ static void put_second_look(sbuf *o, const out_info *info, const kern_target *g,
     snprintf(b, sizeof b, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "            ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? b : "s", 0}, 1, 0);
-    snprintf(e, sizeof e, "%stau2_k[plane] * M2 + %stau2_f[plane] * F +\n                2.0f * %s(d.y)", px,
-             px, g->fabs);
-    sbuf_printf(o, "            f |= %sflags(d.x, ", px);
-    put_products(o, g, e);
-    sbuf_printf(o, ") & mine * %s;\n        }\n    }\n", exact_zeros(info) ? "keep" : "3u");
+    snprintf(a, sizeof a, "%stau2_k[plane]", px);
+    put_mul(m[0], sizeof m[0], g, a, "M2");
+    snprintf(a, sizeof a, "%stau2_f[plane]", px);
+    put_mul(m[1], sizeof m[1], g, a, "F");
+    snprintf(a, sizeof a, "%s(d.y)", g->fabs);
+    put_mul(m[2], sizeof m[2], g, "2.0f", a);
+    sbuf_printf(o, "            f |= %sflags(d.x, %s + %s +\n                %s) & mine * %s;\n        }\n    }\n",
+                px, m[0], m[1], m[2], exact_zeros(info) ? "keep" : "3u");
 }
 
 /* The end: the threads' flags through shared memory, and thread 0 of a patch writes its class. */
