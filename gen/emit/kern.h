@@ -19,7 +19,7 @@ typedef struct {
     const char *type, *name;
 } kern_param;
 
-/* How a family of languages writes what differs in structure. kern_gpu.c writes everything else
+/* How a family of languages writes what differs in structure. kern_gpu*.c write everything else
  * in one syntax every target accepts: the operators + - * / % & | >> == != < > ! && (operands of
  * & and | parenthesized), indexing, .x .y .z .w components, calls, the assignments = += |= and
  * i++, `for (init; cond; step)` and `if (cond)` with braced or single-statement bodies (see
