@@ -1,6 +1,8 @@
 /* test_kern.c: checks that the GPU emitter writes every construct of the C family through its
- * syntax hooks (a WGSL kernel keeps none of C's), the exact-zero edge masks and split rounds. */
+ * syntax hooks (a WGSL kernel keeps none of C's), the exact-zero edge masks, split rounds and
+ * the float products outside cross4 (CUDA's through __fmul_rn). */
 #include "check.h"
+#include "emit/kern_gpu.h"
 #include "emit/targets.h"
 #include "plan/sched.h"
 
@@ -132,6 +134,58 @@ static void check_split_rounds(const tp_table *t, const sched *s)
         }
 }
 
+/* kgpu_product writes factors left to right as infix products, with groups in parentheses, or
+ * through the target's product function (CUDA's __fmul_rn), with groups as plain arguments. */
+static void check_product_text(void)
+{
+    static const char *const want[2][3] = {
+        {"(1.0f + R) * R * R", "w *\n    t", "E * (a * b)"},
+        {"__fmul_rn(__fmul_rn(1.0f + R, R), R)", "__fmul_rn(w,\n    t)", "__fmul_rn(E, __fmul_rn(a, b))"}};
+    const kern_target *g[2] = {&kern_opencl, &kern_cuda};
+    char e[3][96], x[2][32], name[96];
+    int i, k;
+    for (i = 0; i < 2; i++) {
+        kgpu_group(x[0], sizeof x[0], g[i], "1.0f + R");
+        kgpu_product(e[0], sizeof e[0], g[i], " ", 3, (const char *const[]){x[0], "R", "R"});
+        kgpu_product(e[1], sizeof e[1], g[i], "\n    ", 2, (const char *const[]){"w", "t"});
+        kgpu_group(x[1], sizeof x[1], g[i], kgpu_mul(x[0], sizeof x[0], g[i], "a", "b"));
+        kgpu_mul(e[2], sizeof e[2], g[i], "E", x[1]);
+        for (k = 0; k < 3; k++) {
+            snprintf(name, sizeof name, "%s: kgpu_product's %s", g[i]->name,
+                     k == 0 ? "group and factors" : k == 1 ? "line break" : "product as a group");
+            check(strcmp(e[k], want[i][k]) == 0, name, "%s, not %s", e[k], want[i][k]);
+        }
+    }
+}
+
+/* The certified kernel's scale, from R3 through the test of its size, has infix products in
+ * OpenCL and none in CUDA, whose products all go through __fmul_rn. */
+static void check_scale_products(const tp_table *t, const sched *s)
+{
+    static const char *const target[2] = {"opencl", "cuda"};
+    int i;
+    for (i = 0; i < 2; i++) {
+        out_info info = {"test", "ptp_", s, OUT_WORLD, OUT_STRICT, 0, 1, 0, NULL};
+        ptp_error err = {0};
+        char name[160], deg[32];
+        const char *a, *b;
+        int st, infix = 0;
+        sbuf o;
+        sbuf_init(&o);
+        st = tgt_emit_target(&o, tgt_find(target[i]), t, &info, &err);
+        a = st ? NULL : strstr(o.s, "R3 = ");
+        b = a ? strstr(a, "if (!(") : NULL;
+        if (b)
+            b = strchr(b, '\n');
+        for (; a && b && a < b; a++)
+            infix += strncmp(a, " * ", 3) == 0;
+        sbuf_clear(&o);
+        snprintf(name, sizeof name, "%s %s world certified: the scale's products %s", target[i],
+                 tp_domain_format(deg, sizeof deg, &t->dom), i ? "through __fmul_rn" : "infix");
+        check(b && (i ? infix == 0 : infix >= 8), name, "%d infix products, %s", infix, err.msg);
+    }
+}
+
 int main(void)
 {
     static const int degrees[][2] = {{1, 1}, {2, 3}, {3, 3}};
@@ -165,8 +219,10 @@ int main(void)
         }
         check_zeros(&t, &s);
         check_split_rounds(&t, &s);
+        check_scale_products(&t, &s);
         sched_clear(&s);
         tp_clear(&t);
     }
+    check_product_text();
     return check_failed_count != 0;
 }

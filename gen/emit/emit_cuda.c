@@ -15,7 +15,7 @@ const kern_target kern_cuda = {
     .shared_in_body = 1,
     .barrier = "__syncthreads();",
     .mul = "__fmul_rn(%s, %s)", /* not contracted into an FMA */
-    .product = "__fmul_rn(%s, %s)", /* the same: a default nvcc build rounds as written */
+    .product = "__fmul_rn", /* the same function: a default nvcc build rounds as written */
     .local_id = "threadIdx.x",
     .group_x = "blockIdx.x", .group_y = "blockIdx.y", .groups_x = "gridDim.x",
     .interface =

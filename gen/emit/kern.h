@@ -19,7 +19,7 @@ typedef struct {
     const char *type, *name;
 } kern_param;
 
-/* How a family of languages writes what differs in structure. kern_gpu.c writes everything else
+/* How a family of languages writes what differs in structure. kern_gpu*.c write everything else
  * in one syntax every target accepts: the operators + - * / % & | >> == != < > ! && (operands of
  * & and | parenthesized), indexing, .x .y .z .w components, calls, the assignments = += |= and
  * i++, `for (init; cond; step)` and `if (cond)` with braced or single-statement bodies (see
@@ -81,10 +81,10 @@ struct kern_target {
     const char *mul;           /* a product of two operands of cross4, printf format ("%s * %s");
                                   CUDA's and WGSL's are never contracted into an FMA */
     /* every other float product of the kernel (a round's weight times its term, the world
-     * term's eye products, the clip value's eye.z, the certified bound's), a function's printf
-     * format of a and b, or NULL: "%s * %s", left to the language's contraction rules (precise,
-     * FP_CONTRACT OFF). CUDA's __fmul_rn: nvcc contracts a product into the add it feeds by
-     * default (-fmad=true), whatever the pragmas say */
+     * term's eye products, the clip value's eye.z, the certified bound's): the name of a
+     * function of two floats, product(a, b), or NULL: a * b, left to the language's contraction
+     * rules (precise, FP_CONTRACT OFF). CUDA's __fmul_rn: nvcc contracts a product into the add
+     * it feeds by default (-fmad=true), whatever the pragmas say */
     const char *product;
     const char *local_id;      /* the invocation's index in its workgroup */
     const char *group_x, *group_y, *groups_x; /* workgroup ids and the number along x */

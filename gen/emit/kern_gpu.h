@@ -1,0 +1,144 @@
+/* kern_gpu.h: the parts of the one GPU kernel emitter (kern_emit_gpu, kern.h), one file each,
+ * and the words and options they share; up is the prefix in upper case (at most 63 bytes). */
+#ifndef KERN_GPU_H
+#define KERN_GPU_H
+
+#include "emit/kern.h"
+
+/* kern_gpu.c: the words every part writes with, and the options they test. */
+
+/* s, or "" for NULL (a string field left out of a table). */
+const char *kgpu_opt(const char *s);
+
+/* Ends the head of a for or an if whose body, one statement, follows on the next line. */
+void kgpu_then(sbuf *o, const kern_target *g);
+
+/* Closes the body kgpu_then opened, at the head's indent. */
+void kgpu_end(sbuf *o, const kern_target *g, const char *indent);
+
+/* Declares one local variable (see kern_syntax.locals). */
+void kgpu_local(sbuf *o, const kern_target *g, const char *type, const char *name,
+                const char *init, int assigned);
+
+/* Whether the kernel has the second look: --certified on a target with double-float. */
+int kgpu_second_look(const out_info *info, const kern_target *g);
+
+/* Whether the second look sums its planes again from the rounds' tables (no df_table): the
+ * weights' low parts and the accumulators' low parts acc2 are emitted for it. */
+int kgpu_second_look_rounds(const out_info *info, const kern_target *g);
+
+/* Whether the kernel knows exact zeros: --certified under the degenerate rule, where a plane that
+ * a collapsed boundary edge zeros counts as exactly 0 (both <= 0 and >= 0), as in the C header. */
+int kgpu_exact_zeros(const out_info *info);
+
+/* Whether the terms read differences of points (the target's diff, --certified). */
+int kgpu_differences(const out_info *info, const kern_target *g);
+
+/* Writes to out (size bytes, truncating as snprintf) the product of the n factors f, left to
+ * right, as the kernel writes every float product but cross4's (kern_target.product): the
+ * target's function p(p(f0, f1), f2), else f0 * f1 * f2; brk follows each comma or operator:
+ * " ", or a line break and indent. A factor that is a sum, or a product after the first, comes
+ * from kgpu_group. Returns out. */
+char *kgpu_product(char *out, size_t size, const kern_target *g, const char *brk, int n,
+                   const char *const *f);
+
+/* kgpu_product of the two factors a and b on one line. */
+char *kgpu_mul(char *out, size_t size, const kern_target *g, const char *a, const char *b);
+
+/* Writes to out (size bytes) e, a sum or a product, as a factor of kgpu_product: (e) between
+ * operators, e as an argument of the target's product function. Returns out. */
+char *kgpu_group(char *out, size_t size, const kern_target *g, const char *e);
+
+/* kern_gpu_tables.c: the constant tables. */
+
+/* Appends a constant table prefix+name of n uints, `per_line` values to a line, in hex (packed
+ * fields) or decimal. */
+void kgpu_uint_table(sbuf *o, const kern_target *g, const char *prefix, const char *name,
+                     const unsigned long *v, long n, int per_line, int hex);
+
+/* Appends a constant float table prefix+name of n values (rounded to floats exactly, 9 digits). */
+void kgpu_float_table(sbuf *o, const kern_target *g, const char *prefix, const char *name,
+                      const float *v, int n);
+
+/* The constants and the constant tables: the owned planes of each thread, per round the slots of
+ * the P threads and, certified, the bounds. */
+int kgpu_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                const char *up, ptp_error *err);
+
+/* kern_gpu_funcs.c: the helper functions. */
+
+/* Appends the kernel's helper functions: the term (cross4z or eye_cross4), with differences diff,
+ * with exact zeros finite and same, with the second look kgpu_df_functions, then flags and
+ * class_of. */
+void kgpu_functions(sbuf *o, const out_info *info, const kern_target *g);
+
+/* kern_gpu_df.c: the second look's double-float helper functions. */
+
+/* Appends src with its shorthands expanded: $ is the prefix, {a*b} the target's product of the
+ * operands a and b, {a*b+c} its fused multiply-add, {h;l} the double-float of the floats h, l. */
+void kgpu_df_text(sbuf *o, const out_info *info, const kern_target *g, const char *src);
+
+/* --certified's second look: the double-float helpers and the term, as kgpu_functions's. */
+void kgpu_df_functions(sbuf *o, const out_info *info, const kern_target *g);
+
+/* kern_gpu_body.c: the kernel body. */
+
+/* The workgroup-shared arrays: the patches' points, the planes' accumulators (with the second
+ * look from the rounds, their low parts acc2 too), the flags. */
+void kgpu_shared(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                 const char *indent);
+
+/* The kernel body, with the target's names and syntax. */
+void kgpu_body(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+               const char *up);
+
+/* kern_gpu_cert.c: --certified's tables and body parts. */
+
+/* --certified: QMAX and the bounds' factors tau_k, tau_f of every plane; with the second look,
+ * QMAX2, tau2_k and tau2_f of its double-float evaluation too; with exact zeros, zero. */
+int kgpu_cert_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                     const char *up, ptp_error *err);
+
+/* Appends at indent the head of the test that the patch is too large for the bound (or NaN),
+ * if (!(max(E, 1) * R3 < <up>qmax)), with the target's product. */
+void kgpu_too_large(sbuf *o, const kern_target *g, const char *indent, const char *up,
+                    const char *qmax);
+
+/* --certified: the patch's largest |coordinates| Rx, Ry, (Rz,) Rw, R the largest of them, E the
+ * eye's largest |component|, M the largest |monomial| (with differences, of the terms as they
+ * read them), with the second look M2 that of the points, and F the underflow term's factor;
+ * patches too large for the bound get flags 3 (never certified). With exact zeros, the collapsed
+ * edges of d too. */
+void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+                     const char *up);
+
+/* With exact zeros, the local keep of the plane numbered by the expression plane: 0u where a
+ * collapsed edge makes it exactly 0, so that its flags certify both signs; else 3u. */
+void kgpu_keep(sbuf *o, const out_info *info, const kern_target *g, const char *indent,
+               const char *plane);
+
+/* --certified: the flags of the plane numbered plane, of value d, into f: with exact zeros its
+ * keep first; with the second look its certified flags into f, its plain flags into pf, and the
+ * plane's bit into redo where they differ, else its certified flags into fd. */
+void kgpu_cert_flags(sbuf *o, const out_info *info, const kern_target *g);
+
+/* kern_gpu_look.c: the second look's tables and body. */
+
+/* With the second look, its terms in the order of own_plane: those of own_plane[n] are
+ * dj, dkl, dw, dwl[dstart[n] .. dstart[n+1]-1] (points j and k | l << 16, the weight's high and
+ * low parts), so that a thread re-evaluates only the planes it chose. v has room for nplanes + 1
+ * + 2 nterms values. */
+int kgpu_df_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                  unsigned long *v, ptp_error *err);
+
+/* With the second look from the rounds, round r's weights' low parts wl (each weight's float
+ * nearest its difference from the weight's float literal). */
+void kgpu_df_weight_lo(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                       int r);
+
+/* The second look: in the patches whose plain signs decide but whose bounds do not, f again,
+ * from fd and the planes of redo in double-float against the bounds tau2 (plus twice the low
+ * part, for comparing the high part alone). */
+void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const char *up);
+
+#endif

@@ -1,0 +1,142 @@
+/* kern_gpu_body.c: the GPU kernel's body: the patch's points into shared memory, the rounds'
+ * accumulation, the owned planes' signs and their combination into the patch's class. */
+#include "emit/kern_gpu.h"
+
+#include <stdio.h>
+#include <string.h>
+
+void kgpu_shared(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                 const char *indent)
+{
+    char count[160];
+    snprintf(count, sizeof count, "%sQ * %sK", up, up);
+    g->syntax->shared(o, g, indent, g->vec4, "pts", count);
+    snprintf(count, sizeof count, "%sQ * %sL", up, up);
+    g->syntax->shared(o, g, indent, g->real, "acc", count);
+    if (kgpu_second_look_rounds(info, g))
+        g->syntax->shared(o, g, indent, g->real, "acc2", count);
+    snprintf(count, sizeof count, "%sQ * %sP", up, up);
+    g->syntax->shared(o, g, indent, g->uint, "flags", count);
+}
+
+/* The body's start: the thread's place (lid, q, t), its patch (pid, live), the loop variables
+ * and the flags f; then the patch's control points into shared memory. */
+static void put_load(sbuf *o, const kern_target *g, const char *up)
+{
+    char q[96], t[96], pid[256];
+    kern_var v[6] = {{"lid", g->local_id, 0}, {"q", q, 0}, {"t", t, 0},
+                     {"i", NULL, 1}, {"pj", NULL, 1}, {"kl", NULL, 1}};
+    snprintf(q, sizeof q, "lid / %sP", up);
+    snprintf(t, sizeof t, "lid %% %sP", up);
+    snprintf(pid, sizeof pid, "(%s * %s + %s) * %sQ + q", g->group_y, g->groups_x, g->group_x, up);
+    g->syntax->locals(o, g, "    ", g->uint, v, 6, 0);
+    kgpu_local(o, g, g->uint, "pid", pid, 0);
+    kgpu_local(o, g, g->uint, "f", "0u", 1);
+    kgpu_local(o, g, "bool", "live", "pid < patch_count", 0);
+    sbuf_printf(o, "\n    /* The patch's control points into shared memory, P threads cooperating. */\n"
+                   "    for (i = t; i < %sK; i += %sP)",
+                up, up);
+    kgpu_then(o, g);
+    sbuf_puts(o, "        if (live)");
+    kgpu_then(o, g);
+    sbuf_printf(o, "            pts[q * %sK + i] = cp[pid * %sK + i];\n", up, up);
+    kgpu_end(o, g, "        ");
+    kgpu_end(o, g, "    ");
+    sbuf_printf(o, "    %s\n\n", g->barrier);
+}
+
+/* The accumulation of the planes this thread owns, one round at a time; with differences, term
+ * (j, k, l) reads b_j, b_k - b_j, b_l - b_j (the same determinant). */
+static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
+    char a[128], b[320], c[320], w[96], term[1024], e[1152]; /* up has at most 63 bytes */
+    int r, n = (int)(strlen(px) + strlen(fn));
+    sbuf_printf(o,
+                "    /* Accumulate the planes this thread owns, one round at a time: no other thread\n"
+                "     * touches them. */\n"
+                "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++)",
+                px, px);
+    kgpu_then(o, g);
+    sbuf_printf(o, "        acc[q * %sL + %sown_plane[i]] = 0.0f;\n", up, px);
+    kgpu_end(o, g, "    ");
+    snprintf(a, sizeof a, "pts[q * %sK + (pj >> 16)]", up);
+    if (kgpu_differences(info, g)) { /* b_k - b_j and b_l - b_j */
+        snprintf(b, sizeof b, "%sdiff(pts[q * %sK + (kl & 0xffffu)], %s)", px, up, a);
+        snprintf(c, sizeof c, "%sdiff(pts[q * %sK + (kl >> 16)], %s)", px, up, a);
+    } else {
+        snprintf(b, sizeof b, "pts[q * %sK + (kl & 0xffffu)]", up);
+        snprintf(c, sizeof c, "pts[q * %sK + (kl >> 16)]", up);
+    }
+    for (r = 0; r < info->sched->rounds; r++) {
+        snprintf(w, sizeof w, "%sw%d[t]", px, r);
+        snprintf(term, sizeof term, "%s%s(%s,%s%*s %s,\n        %*s %s%s)", px, fn, a,
+                 kgpu_differences(info, g) ? "\n        " : "", kgpu_differences(info, g) ? n : 0, "", b, n, "",
+                 c, info->space == OUT_CLIP ? "" : ", eye");
+        kgpu_product(e, sizeof e, g, "\n        ", 2, (const char *const[]){w, term});
+        sbuf_printf(o, "    pj = %spj%d[t];\n    kl = %skl%d[t];\n"
+                       "    acc[q * %sL + (pj & 0xffffu)] += %s;\n",
+                    px, r, px, r, up, e);
+    }
+    sbuf_puts(o, "\n");
+}
+
+/* The values and flags of the owned planes (and with --planes, the values written out). */
+static void put_signs(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *px = info->prefix;
+    char e[256], d[320];
+    sbuf_printf(o,
+                "    /* The values and signs of the owned planes; then one thread combines the patch's. */\n"
+                "    for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n",
+                px, px);
+    snprintf(e, sizeof e, "%sown_plane[i]", px);
+    g->syntax->locals(o, g, "        ", g->uint, &(kern_var){"plane", e, 0}, 1, 0);
+    snprintf(e, sizeof e, "acc[q * %sL + plane]", up);
+    if (info->space == OUT_CLIP)
+        kgpu_mul(d, sizeof d, g, "eye.z", e);
+    g->syntax->locals(o, g, "        ", g->real, &(kern_var){"d", info->space == OUT_CLIP ? d : e, 0}, 1, 0);
+    if (info->planes) {
+        sbuf_printf(o, "        if (%slive)", g->planes_buffer ? "" : "planes && ");
+        kgpu_then(o, g);
+        sbuf_printf(o, "            planes[pid * %sL + plane] = d;\n", up);
+        kgpu_end(o, g, "        ");
+    }
+    if (info->certified)
+        kgpu_cert_flags(o, info, g);
+    else
+        sbuf_printf(o, "        f |= %sflags(d);\n", px);
+    sbuf_puts(o, "    }\n");
+}
+
+/* The end: the threads' flags through shared memory, and thread 0 of a patch writes its class. */
+static void put_combine(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    sbuf_printf(o,
+                "    flags[q * %sP + t] = f;\n"
+                "    %s\n"
+                "    if (live && t == 0u) {\n"
+                "        for (i = 1u; i < %sP; i++)",
+                up, g->barrier, up);
+    kgpu_then(o, g);
+    sbuf_printf(o, "            f |= flags[q * %sP + i];\n", up);
+    kgpu_end(o, g, "        ");
+    sbuf_printf(o, "        cls[pid] = %sclass_of(f);\n"
+                   "    }\n",
+                info->prefix);
+}
+
+void kgpu_body(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+               const char *up)
+{
+    if (g->shared_in_body)
+        kgpu_shared(o, info, g, up, "    ");
+    put_load(o, g, up);
+    put_accumulate(o, info, g, up);
+    if (info->certified)
+        kgpu_cert_scale(o, d, info, g, up);
+    put_signs(o, info, g, up);
+    if (kgpu_second_look(info, g))
+        kgpu_df_look(o, info, g, up);
+    put_combine(o, info, g, up);
+}

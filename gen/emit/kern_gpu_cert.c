@@ -1,0 +1,341 @@
+/* kern_gpu_cert.c: --certified in the GPU kernel: the bounds' tables, the patch's scale (its
+ * largest coordinates and monomials) and each plane's certified flags. */
+#include "plan/cert.h"
+#include "emit/kern_gpu.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Appends the constant <UP>QMAX<n> and the tables tau<n>_k, tau<n>_f of cb (n: "" or "2"), after
+ * the comment what, which ends with "for max(E, 1) R^3 < ". Clears cb. */
+static void put_bounds(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                       cert_bounds *cb, const char *n, const char *what)
+{
+    char name[128], lit[48];
+    sbuf_printf(o, "%s%sQMAX%s. */\n", what, up, n);
+    snprintf(name, sizeof name, "%sQMAX%s", up, n);
+    snprintf(lit, sizeof lit, "%.9gf", (double)cb->q_max);
+    g->syntax->constant(o, g, name, g->real, lit, NULL);
+    snprintf(name, sizeof name, "tau%s_k", n);
+    kgpu_float_table(o, g, info->prefix, name, cb->k, cb->nplanes);
+    snprintf(name, sizeof name, "tau%s_f", n);
+    kgpu_float_table(o, g, info->prefix, name, cb->k2, cb->nplanes);
+    sbuf_puts(o, "\n");
+    cert_clear(cb);
+}
+
+/* With exact zeros, the table zero: per plane the boundary edges (bit e) on which every term has
+ * two points, so that collapsing any of them makes the plane exactly 0. */
+static int put_zero_table(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                          ptp_error *err)
+{
+    unsigned long *z = calloc((size_t)t->dom.nplanes, sizeof *z);
+    size_t x;
+    if (!z)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
+    for (x = 0; x < t->nterms; x++) { /* sorted by plane */
+        const tp_term *a = &t->terms[x];
+        int k[3] = {a->j, a->k, a->l};
+        unsigned long e = tp_domain_term_edges(&t->dom, k);
+        z[a->plane] = x > 0 && t->terms[x - 1].plane == a->plane ? z[a->plane] & e : e;
+    }
+    sbuf_puts(o, "/* Degenerate rule: bit e of zero[P] where every term of plane P has two points on boundary\n"
+                 " * edge e, so that the plane is exactly 0 when that edge is collapsed. */\n");
+    kgpu_uint_table(o, g, info->prefix, "zero", z, t->dom.nplanes, 16, 0);
+    sbuf_puts(o, "\n");
+    free(z);
+    return PTP_OK;
+}
+
+int kgpu_cert_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                     const char *up, ptp_error *err)
+{
+    cert_bounds cb;
+    int st = cert_gpu(&cb, t, info->space == OUT_WORLD, g->unit_roundoff, kgpu_differences(info, g), err);
+    if (st)
+        return st;
+    put_bounds(o, info, g, up, &cb, "",
+               "/* Certified: |d_P - exact| <= tau_k[P] * M + tau_f[P] * (1 + R)^3 (1 + E), M from the\n"
+               " * patch's largest |coordinates| and the eye, R the largest of them, E the eye's largest\n"
+               " * |component|; for max(E, 1) R^3 < ");
+    if (kgpu_exact_zeros(info) && (st = put_zero_table(o, t, info, g, err)))
+        return st;
+    if (!g->vec2)
+        return PTP_OK;
+    if ((st = cert_table_df(&cb, t, info->space == OUT_WORLD, err)))
+        return st;
+    put_bounds(o, info, g, up, &cb, "2",
+               "/* Second look, in double-float from the points: |hi + lo - exact| <= tau2_k[P] * M2\n"
+               " * + tau2_f[P] * (1 + R)^3 (1 + E), M2 from the largest |coordinates|, for\n"
+               " * max(E, 1) R^3 < ");
+    return PTP_OK;
+}
+
+/* With exact zeros, col: bit e where boundary edge e of d is collapsed, its points bitwise equal
+ * and every coordinate of the patch finite (fin). */
+static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+                          const char *up)
+{
+    char base[96], bit[16];
+    int e, k, f, i, j;
+    sbuf_puts(o, "    /* Degenerate rule: bit e of col where boundary edge e is collapsed (its points bitwise\n"
+                 "     * equal, every coordinate finite); the planes of zero[] with bit e are then exactly 0. */\n");
+    kgpu_local(o, g, g->uint, "col", "0u", 1);
+    snprintf(base, sizeof base, "q * %sK", up);
+    kgpu_local(o, g, g->uint, "base", base, 0);
+    for (e = 0; e < tp_domain_edges(d); e++) {
+        sbuf cond;
+        char *sel;
+        sbuf_init(&cond);
+        sbuf_puts(&cond, "fin");
+        for (k = 0, f = -1; k < d->npoints; k++) {
+            tp_domain_point_ij(&i, &j, d, k);
+            if (!tp_domain_on_edge(d, e, i, j))
+                continue;
+            if (f < 0)
+                f = k;
+            else
+                sbuf_printf(&cond, " &&\n        %ssame(pts[base + %du], pts[base + %du])", info->prefix, k, f);
+        }
+        snprintf(bit, sizeof bit, "%uu", 1u << e);
+        sel = cond.failed ? NULL : malloc(strlen(cond.s) + 64);
+        if (sel) {
+            g->syntax->select(sel, strlen(cond.s) + 64, cond.s, bit, "0u");
+            sbuf_printf(o, "    col |= %s;\n", sel);
+        }
+        o->failed |= !sel;
+        free(sel);
+        sbuf_clear(&cond);
+    }
+}
+
+/* Into e (size bytes) the largest |monomial| of one coordinate and two differences over the
+ * coordinates u, D the extents, as a factor (kgpu_group): Ru0 Du1 Du2 + Du0 Ru1 Du2 + Du0 Du1 Ru2.
+ * Returns e. */
+static char *put_diff_monomial(char *e, size_t size, const kern_target *g, const char *u)
+{
+    char f[3][4], m[3][64], s[224];
+    int i, k;
+    for (i = 0; i < 3; i++) {
+        for (k = 0; k < 3; k++)
+            snprintf(f[k], sizeof f[k], "%c%c", k == i ? 'R' : 'D', u[k]);
+        kgpu_product(m[i], sizeof m[i], g, " ", 3, (const char *const[]){f[0], f[1], f[2]});
+    }
+    snprintf(s, sizeof s, "%s + %s + %s", m[0], m[1], m[2]);
+    return kgpu_group(e, size, g, s);
+}
+
+/* Into e (size bytes) world space's largest |monomial| with the eye's components h[0], h[1]
+ * (the other two r): (|eye.h0| Rh1 + |eye.h1| Rh0) (Rr0 Rr1). Returns e. */
+static char *put_eye_monomial(char *e, size_t size, const kern_target *g, const char *h,
+                              const char *r)
+{
+    char a[32], x[2][4], m[2][64], s[160], t[2][160];
+    int i;
+    for (i = 0; i < 2; i++) {
+        snprintf(a, sizeof a, "%s(eye.%c)", g->fabs, h[i]);
+        snprintf(x[0], sizeof x[0], "R%c", h[!i]);
+        kgpu_mul(m[i], sizeof m[i], g, a, x[0]);
+    }
+    snprintf(s, sizeof s, "%s + %s", m[0], m[1]);
+    snprintf(x[0], sizeof x[0], "R%c", r[0]);
+    snprintf(x[1], sizeof x[1], "R%c", r[1]);
+    kgpu_group(t[0], sizeof t[0], g, s);
+    kgpu_group(t[1], sizeof t[1], g, kgpu_mul(a, sizeof a, g, x[0], x[1]));
+    return kgpu_mul(e, size, g, t[0], t[1]);
+}
+
+/* Into e (1024 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
+ * largest |monomial| (clip space); in world space the sum over the eye's components of the
+ * largest |monomial| with that component (README: Certified). With diff (differences), a
+ * monomial has one coordinate and two differences instead (put_diff_monomial). */
+static void put_monomial_max(char *e, const out_info *info, const kern_target *g, int diff)
+{
+    static const char *const other[4] = {"yzw", "xzw", "xyw", "xyz"};
+    char a[32], m[256], x[160];
+    size_t n = 0;
+    int c;
+    if (info->space == OUT_CLIP) {
+        if (diff)
+            put_diff_monomial(m, sizeof m, g, "xyw");
+        else
+            kgpu_group(m, sizeof m, g, kgpu_product(x, sizeof x, g, " ", 3, (const char *const[]){"Rx", "Ry", "Rw"}));
+        kgpu_mul(e, 1024, g, "E", m);
+    } else if (diff) {
+        for (c = 0; c < 4 && n < 1024; c++) {
+            snprintf(a, sizeof a, "%s(eye.%c)", g->fabs, "xyzw"[c]);
+            put_diff_monomial(x, sizeof x, g, other[c]);
+            n += (size_t)snprintf(e + n, 1024 - n, "%s%s", c ? " +\n        " : "", kgpu_mul(m, sizeof m, g, a, x));
+        }
+    } else {
+        put_eye_monomial(m, sizeof m, g, "xy", "zw");
+        snprintf(e, 1024, "%s +\n        %s", m, put_eye_monomial(x, sizeof x, g, "zw", "xy"));
+    }
+}
+
+/* With differences, the patch's extents over the coordinates c (n of them): step 0 declares
+ * Hc = max b.c and Lc = max -b.c from the first point, step 1 (in the loop over the points a)
+ * updates them, step 2 declares the extents Dc = Hc + Lc (README: Differences of points). */
+static void put_extents(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                        const char *c, int n, int step)
+{
+    char name[2][4], init[2][96];
+    int k;
+    for (k = 0; kgpu_differences(info, g) && k < n; k++) {
+        snprintf(name[0], sizeof name[0], "H%c", c[k]);
+        snprintf(name[1], sizeof name[1], "L%c", c[k]);
+        snprintf(init[0], sizeof init[0], "pts[q * %sK].%c", up, c[k]);
+        snprintf(init[1], sizeof init[1], "-pts[q * %sK].%c", up, c[k]);
+        if (step == 0)
+            g->syntax->locals(o, g, "    ", g->real,
+                              (kern_var[2]){{name[0], init[0], 1}, {name[1], init[1], 1}}, 2, 0);
+        else if (step == 1)
+            sbuf_printf(o, "        H%c = %s(H%c, a.%c);\n        L%c = %s(L%c, -a.%c);\n", c[k], g->fmax,
+                        c[k], c[k], c[k], g->fmax, c[k], c[k]);
+        else {
+            snprintf(name[0], sizeof name[0], "D%c", c[k]);
+            snprintf(init[0], sizeof init[0], "H%c + L%c", c[k], c[k]);
+            kgpu_local(o, g, g->real, name[0], init[0], 0);
+        }
+    }
+}
+
+void kgpu_too_large(sbuf *o, const kern_target *g, const char *indent, const char *up,
+                    const char *qmax)
+{
+    char e[32], m[64];
+    snprintf(e, sizeof e, "%s(E, 1.0f)", g->fmax);
+    sbuf_printf(o, "%sif (!(%s < %s%s))", indent, kgpu_mul(m, sizeof m, g, e, "R3"), up, qmax);
+}
+
+/* The patch's largest |coordinates| Rc over the coordinates c (n of them), with differences its
+ * extents (put_extents' steps 0 and 1), with exact zeros fin: every coordinate is finite. */
+static void put_patch_max(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                          const char *c, int n)
+{
+    char e[96], rc[4][4];
+    kern_var r[4];
+    int k;
+    for (k = 0; k < n; k++) {
+        snprintf(rc[k], sizeof rc[k], "R%c", c[k]);
+        r[k] = (kern_var){rc[k], "0.0f", 1};
+    }
+    g->syntax->locals(o, g, "    ", g->real, r, n, 0);
+    put_extents(o, info, g, up, c, n, 0);
+    if (kgpu_exact_zeros(info))
+        kgpu_local(o, g, "bool", "fin", "true", 1);
+    sbuf_printf(o, "    for (i = 0u; i < %sK; i++) {\n", up);
+    snprintf(e, sizeof e, "pts[q * %sK + i]", up);
+    g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"a", e, 0}, 1, 0);
+    for (k = 0; k < n; k++)
+        sbuf_printf(o, "        R%c = %s(R%c, %s(a.%c));\n", c[k], g->fmax, c[k], g->fabs, c[k]);
+    put_extents(o, info, g, up, c, n, 1);
+    if (kgpu_exact_zeros(info))
+        sbuf_printf(o, "        fin = fin && %sfinite(a);\n", info->prefix);
+    sbuf_puts(o, "    }\n");
+}
+
+void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+                     const char *up)
+{
+    const char *ab = g->fabs, *mx = g->fmax, *f = g->real, *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
+    char e[1024], r1[16], e1[16];
+    int n = (int)strlen(c);
+    sbuf_puts(o, "    /* Certified: the patch's largest |coordinates| and the eye's bound the errors. */\n");
+    put_patch_max(o, info, g, up, c, n);
+    if (info->space == OUT_CLIP) {
+        snprintf(e, sizeof e, "%s(%s(Rx, Ry), Rw)", mx, mx);
+        kgpu_local(o, g, f, "R", e, 0);
+        snprintf(e, sizeof e, "%s(eye.z)", ab);
+    } else {
+        snprintf(e, sizeof e, "%s(%s(Rx, Ry), %s(Rz, Rw))", mx, mx, mx);
+        kgpu_local(o, g, f, "R", e, 0);
+        snprintf(e, sizeof e, "%s(%s(%s(eye.x), %s(eye.y)), %s(%s(eye.z), %s(eye.w)))", mx, mx, ab, ab,
+                 mx, ab, ab);
+    }
+    kgpu_local(o, g, f, "E", e, 0);
+    kgpu_product(e, sizeof e, g, " ", 3, (const char *const[]){"R", "R", "R"});
+    kgpu_local(o, g, f, "R3", e, 0);
+    put_extents(o, info, g, up, c, n, 2);
+    put_monomial_max(e, info, g, kgpu_differences(info, g));
+    kgpu_local(o, g, f, "M", e, 0);
+    if (kgpu_second_look(info, g)) { /* M2: the second look reads the points */
+        put_monomial_max(e, info, g, 0);
+        kgpu_local(o, g, f, "M2", e, 0);
+    }
+    kgpu_group(r1, sizeof r1, g, "1.0f + R");
+    kgpu_group(e1, sizeof e1, g, "1.0f + E");
+    kgpu_product(e, sizeof e, g, " ", 4, (const char *const[]){r1, r1, r1, e1});
+    kgpu_local(o, g, f, "F", e, 0);
+    kgpu_too_large(o, g, "    ", up, "QMAX");
+    kgpu_then(o, g);
+    sbuf_puts(o, "        f = 3u; /* too large for the bound, or NaN: never certified */\n");
+    kgpu_end(o, g, "    ");
+    if (kgpu_exact_zeros(info))
+        put_collapsed(o, d, info, g, up);
+    if (kgpu_second_look(info, g)) { /* the plain float signs' flags; the planes to look at again */
+        kern_var v[3] = {{"pf", "0u", 1}, {"redo", "0u", 1}, {"fd", "0u", 1}};
+        g->syntax->locals(o, g, "    ", g->uint, v, 3, 0);
+    }
+}
+
+void kgpu_keep(sbuf *o, const out_info *info, const kern_target *g, const char *indent,
+               const char *plane)
+{
+    char cond[224], e[320];
+    snprintf(cond, sizeof cond, "(%szero[%s] & col) == 0u", info->prefix, plane);
+    g->syntax->select(e, sizeof e, cond, "3u", "0u");
+    g->syntax->locals(o, g, indent, g->uint, &(kern_var){"keep", e, 0}, 1, 0);
+}
+
+/* Into x (initialized here; the caller clears it) the first look's certified flags of the
+ * plane: flags(d, tau_k[plane] * M + tau_f[plane] * F) (and keep), with the target's products.
+ * Returns its text. */
+static const char *first_flags(sbuf *x, const out_info *info, const kern_target *g)
+{
+    char k[96], f[96], m[2][128];
+    snprintf(k, sizeof k, "%stau_k[plane]", info->prefix);
+    snprintf(f, sizeof f, "%stau_f[plane]", info->prefix);
+    sbuf_init(x);
+    sbuf_printf(x, "%sflags(d, %s + %s)%s", info->prefix, kgpu_mul(m[0], sizeof m[0], g, k, "M"),
+                kgpu_mul(m[1], sizeof m[1], g, f, "F"), kgpu_exact_zeros(info) ? " & keep" : "");
+    return x->s ? x->s : "";
+}
+
+/* With the second look, a plane's certified flags fp and plain flags pp: into f and pf, and
+ * where they differ (the bound does not clear where the plain sign decides) the plane's bit in
+ * redo (its place in own_plane after own_start[t]), else fp into fd. */
+static void put_split_flags(sbuf *o, const out_info *info, const kern_target *g)
+{
+    const char *px = info->prefix, *keep = kgpu_exact_zeros(info) ? " & keep" : "";
+    char e[256];
+    sbuf fp;
+    kern_var v[2] = {{"fp", first_flags(&fp, info, g), 0}, {"pp", NULL, 0}};
+    char pp[128];
+    snprintf(pp, sizeof pp, "%sflags(d, 0.0f)%s", px, keep);
+    v[1].init = pp;
+    g->syntax->locals(o, g, "        ", g->uint, v, 1, 0);
+    g->syntax->locals(o, g, "        ", g->uint, v + 1, 1, 0);
+    o->failed |= fp.failed;
+    sbuf_clear(&fp);
+    snprintf(e, sizeof e, "1u << (i - %sown_start[t])", px);
+    g->syntax->select(pp, sizeof pp, "fp != pp", e, "0u");
+    sbuf_printf(o, "        f |= fp;\n        pf |= pp;\n        redo |= %s;\n", pp);
+    g->syntax->select(pp, sizeof pp, "fp != pp", "0u", "fp");
+    sbuf_printf(o, "        fd |= %s;\n", pp);
+}
+
+void kgpu_cert_flags(sbuf *o, const out_info *info, const kern_target *g)
+{
+    sbuf x;
+    if (kgpu_exact_zeros(info))
+        kgpu_keep(o, info, g, "        ", "plane");
+    if (kgpu_second_look(info, g)) {
+        put_split_flags(o, info, g);
+        return;
+    }
+    sbuf_printf(o, "        f |= %s;\n", first_flags(&x, info, g));
+    o->failed |= x.failed;
+    sbuf_clear(&x);
+}
