@@ -433,6 +433,25 @@ done
     ! "$P" --degree 2x3 --target opencl --prefix cull_ | grep -q 'ptp_2x3' &&
     ok "--prefix names every generated identifier" || notok "--prefix" "default names remain"
 
+# The longest prefix accepted (62 characters) writes the same code as a short one: with the
+# prefix (and its upper case) renamed and runs of spaces squeezed (alignment follows the names'
+# length), everything below the banner is equal, so no expression was cut short.
+long=$(printf 'p%.0s' $(seq 61))_
+long_up=$(echo "$long" | tr a-z A-Z)
+bad=""
+for d in "--degree 4" "--domain triangle --degree 4"; do
+    for t in c glsl hlsl opencl cuda wgsl; do
+        for v in "" "--planes" "--certified" "--certified --space world --rule degenerate" "--refine 2"; do
+            "$P" $d --target $t $v --prefix q_ >"$tmp/short.out" 2>/dev/null || continue
+            "$P" $d --target $t $v --prefix "$long" | sed "s/$long/q_/g; s/$long_up/Q_/g" >"$tmp/long.out"
+            cmp -s <(tail -n +6 "$tmp/short.out" | sed 's/  */ /g') \
+                   <(tail -n +6 "$tmp/long.out" | sed 's/  */ /g') || bad="$bad [$d $t $v]"
+        done
+    done
+done
+[ -z "$bad" ] && ok "a 62-character --prefix writes the same code as a short one (every target, degree 4 and triangle 4)" ||
+    notok "a 62-character --prefix" "differs:$bad"
+
 # The schedule in json: every term exactly once, only in its owner's slots, R = the largest load.
 cat >"$tmp/sched.py" <<'PY'
 import json, sys
