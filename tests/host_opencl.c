@@ -15,7 +15,7 @@
  * past patch_count (the output buffers are padded to whole blocks, filled with a sentinel, and
  * the padding is checked untouched; classes start as 0xFFFFFFFF, so kref_check catches unwritten
  * ones). Any setup failure is one "not ok - " line.
- * --random, --model and --exact may each be given more than once; at least one is required.
+ * --random, --model, --exact and --exact-far may each be given more than once; at least one is required.
  * Exit status 0 only when every check passed.
  *
  * --bench RUNS (for `make bench`): after each set's checked run, the set's dispatch, clFinish and

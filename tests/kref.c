@@ -23,7 +23,8 @@ static int usage(const char *host, const char *label, const char *detail)
           "%s; usage: %s [FILE] [--kernel NAME] --degree N M --space clip|world "
           "--rule strict|degenerate [--block-threads PQ --patches-per-block Q] [--planes] "
           "[--groups-x-constant] [--certified] (--random SETS COUNT SEED | "
-          "--model PATH NEYES SEED | --exact SETS COUNT SEED)... [--eye-radius R] --name LABEL",
+          "--model PATH NEYES SEED | --exact SETS COUNT SEED | --exact-far SETS COUNT SEED)... "
+          "[--eye-radius R] --name LABEL",
           detail, host);
     return 2;
 }
@@ -121,18 +122,19 @@ static int parse_valued(kref_args *o, parse_seen *seen, char **argv, int *i, int
     return 0;
 }
 
-/* Parses --random, --model or --exact s with its three values v[0..2] into a new source of o;
+/* Parses --random, --model, --exact or --exact-far s with its three values v[0..2] into a new source of o;
  * 0, or usage's 2. */
 static int parse_source(kref_args *o, const char *s, char **v, const char *host)
 {
     unsigned long long a, b, c;
     kref_source *sr;
     if (o->nsources == KREF_MAX_SOURCES)
-        return usage(host, o->label, "too many --random, --model and --exact options");
+        return usage(host, o->label, "too many --random, --model and --exact(-far) options");
     sr = &o->src[o->nsources++];
-    sr->kind = !strcmp(s, "--model")  ? KREF_SRC_MODEL
-               : !strcmp(s, "--exact") ? KREF_SRC_EXACT
-                                       : KREF_SRC_RANDOM;
+    sr->kind = !strcmp(s, "--model")       ? KREF_SRC_MODEL
+               : !strcmp(s, "--exact")     ? KREF_SRC_EXACT
+               : !strcmp(s, "--exact-far") ? KREF_SRC_EXACT_FAR
+                                           : KREF_SRC_RANDOM;
     if (sr->kind == KREF_SRC_MODEL) {
         sr->path = v[0];
         if (parse_ull(v[1], 1, INT_MAX, &a) || parse_ull(v[2], 0, UINT64_MAX, &c))
@@ -141,9 +143,9 @@ static int parse_source(kref_args *o, const char *s, char **v, const char *host)
     } else {
         if (parse_ull(v[0], 1, INT_MAX, &a) || parse_ull(v[1], 1, UINT32_MAX, &b) ||
             parse_ull(v[2], 0, UINT64_MAX, &c))
-            return usage(host, o->label, sr->kind == KREF_SRC_EXACT
-                                             ? "--exact takes SETS COUNT SEED (COUNT >= 1)"
-                                             : "--random takes SETS COUNT SEED (COUNT >= 1)");
+            return usage(host, o->label, sr->kind == KREF_SRC_RANDOM
+                                             ? "--random takes SETS COUNT SEED (COUNT >= 1)"
+                                             : "--exact and --exact-far take SETS COUNT SEED (COUNT >= 1)");
         sr->nsets = (long)a;
         sr->count = (size_t)b;
     }
@@ -167,8 +169,8 @@ static int parse_arg(kref_args *o, parse_seen *seen, int argc, char **argv, int 
         o->groups_x_constant = 1;
     } else if (!strcmp(s, "--certified")) {
         o->certified = 1;
-    } else if ((!strcmp(s, "--random") || !strcmp(s, "--model") || !strcmp(s, "--exact")) &&
-               left >= 3) {
+    } else if ((!strcmp(s, "--random") || !strcmp(s, "--model") || !strcmp(s, "--exact") ||
+                !strcmp(s, "--exact-far")) && left >= 3) {
         st = parse_source(o, s, argv + *i + 1, host);
         *i += 3;
         return st;
@@ -197,7 +199,7 @@ static int parse_check(kref_args *o, const parse_seen *seen, const char *host, u
     if (o->q && o->pq % o->q)
         return usage(host, o->label, "--block-threads PQ must be a multiple of --patches-per-block Q");
     if (!o->nsources)
-        return usage(host, o->label, "give at least one --random, --model or --exact");
+        return usage(host, o->label, "give at least one --random, --model or --exact(-far)");
     for (i = 0; i < o->nsources; i++)
         o->src[i].radius = seen->radius;
     return 0;
@@ -225,8 +227,9 @@ kref_set *kref_source_sets(const kref_ref *r, const kref_source *src, const char
     if (src->kind == KREF_SRC_MODEL) {
         if (!(sets = kref_model_sets_at(r, src->path, (int)src->nsets, src->seed, src->radius, &err)))
             check(0, label, "model %s: %s", src->path, err.msg);
-    } else if (src->kind == KREF_SRC_EXACT) {
-        if (!(sets = kref_exact_sets(r, (int)src->nsets, src->count, src->seed, &err)))
+    } else if (src->kind == KREF_SRC_EXACT || src->kind == KREF_SRC_EXACT_FAR) {
+        if (!(sets = kref_exact_sets(r, (int)src->nsets, src->count, src->seed,
+                                     src->kind == KREF_SRC_EXACT_FAR, &err)))
             check(0, label, "%ld exact sets of %zu patches: %s", src->nsets, src->count, err.msg);
     } else if (!(sets = kref_random_sets(r, (int)src->nsets, src->count, src->seed))) {
         check(0, label, "%ld random sets of %zu patches: out of memory", src->nsets, src->count);
@@ -492,19 +495,24 @@ kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t 
 
 /* ---- exact sets (--exact): integer data on the edge between the classes ---- */
 
-/* Eye-relative coordinates of exact sets stay within EXACT_MAX; exact_values accepts up to
- * EXACT_LIMIT, where a determinant of three points still fits 64 bits (cross products below
- * 2^39, determinants below 3 * 2^58) and every point fits a float exactly. */
+/* Eye-relative coordinates of exact sets stay within EXACT_MAX, those of far sets within
+ * EXACT_FAR_MAX; exact_values accepts points and eye-relative coordinates up to EXACT_LIMIT (a
+ * point fits a float exactly, cross products stay below 2^49 and determinants below 2^75, in
+ * 128 bits) and clip space's alpha up to EXACT_ALPHA. */
 #define EXACT_MAX ((int64_t)1 << 18)
-#define EXACT_LIMIT ((int64_t)1 << 19)
+#define EXACT_FAR_MAX ((int64_t)1 << 23)
+#define EXACT_LIMIT ((int64_t)1 << 24)
+#define EXACT_ALPHA ((int64_t)1 << 4)
 #define KREF_MAXK ((PTP_MAX_TRI_DEGREE + 1) * (PTP_MAX_TRI_DEGREE + 2) / 2 > \
                    (PTP_MAX_DEGREE + 1) * (PTP_MAX_DEGREE + 1)                  \
                ? (PTP_MAX_TRI_DEGREE + 1) * (PTP_MAX_TRI_DEGREE + 2) / 2        \
                : (PTP_MAX_DEGREE + 1) * (PTP_MAX_DEGREE + 1))
 
-enum { EX_RANDOM, EX_COLLAPSED, EX_PLANAR, EX_TANGENT, EX_NEAR, EX_KINDS };
-static const char *const exact_kind[EX_KINDS] = {"random", "collapsed edge", "planar",
-                                                 "tangent corner", "near-planar"};
+/* --exact cycles through the first EX_KINDS kinds; --exact-far makes EX_FAR only. */
+enum { EX_RANDOM, EX_COLLAPSED, EX_PLANAR, EX_TANGENT, EX_NEAR, EX_KINDS, EX_FAR = EX_KINDS };
+static const char *const exact_kind[EX_KINDS + 1] = {"random", "collapsed edge", "planar",
+                                                     "tangent corner", "near-planar",
+                                                     "far tangent corner"};
 
 /* A uniform integer in [lo, hi] from the stream *s (hi - lo < 2^62; the modulo bias is
  * negligible for test data). */
@@ -599,7 +607,7 @@ static int plane_frame(uint64_t *rng, int bits, int64_t n[3], int64_t a[3], int6
 /* One patch under construction: eye-relative points v and (world space) their w. */
 typedef struct {
     const tp_domain *dom;
-    int n, m, K, world;
+    int n, m, K, world, far; /* far: --exact-far's sets */
     int64_t v[KREF_MAXK][3];
     int64_t w[KREF_MAXK];
 } ipatch;
@@ -636,7 +644,21 @@ static int corner_cell(const tp_domain *d, int c, int i, int j)
     return tp_domain_point(d, c & 1 ? d->n - i : i, c & 2 ? d->m - j : j);
 }
 
-/* Kinds 2 to 4 on a plane frame of the given bits; returns -1 when plane_frame does. */
+/* The far tangent corner's steps k along u + v: up to about EXACT_FAR_MAX over the largest
+ * |u_c| + |v_c|, so that the patch lies far from the eye against its extent (at least 2). */
+static int64_t far_steps(uint64_t *rng, const int64_t u[3], const int64_t v[3])
+{
+    int64_t m = 1, k;
+    int c;
+    for (c = 0; c < 3; c++)
+        if (llabs(u[c]) + llabs(v[c]) > m)
+            m = llabs(u[c]) + llabs(v[c]);
+    k = (EXACT_FAR_MAX - 64 * m) / m;
+    return k < 4 ? 2 : irand(rng, k / 2, k);
+}
+
+/* Kinds 2 to 4 and EX_FAR on a plane frame of the given bits; returns -1 when plane_frame
+ * does. */
 static int exact_lattice(ipatch *pt, uint64_t *rng, int kind, int bits)
 {
     int64_t n[3], a[3], b[3], d[3], u[3], v[3], o[3], e[3] = {0, 0, 0};
@@ -650,19 +672,20 @@ static int exact_lattice(ipatch *pt, uint64_t *rng, int kind, int bits)
     }
     k0 = irand(rng, -4, 4);
     k1 = irand(rng, -4, 4);
-    if (kind == EX_TANGENT) {
+    if (kind == EX_TANGENT || kind == EX_FAR) {
         /* The corner (0, 0) at o = off d + k (u + v): o, o + u and o + v lie on n.x = off, 0
          * or one unit from the eye, and the convex bump h e (zero at those three points, e
          * along n's largest component) bends the rest away, so that the corner value is 0
          * or tiny and the others are large and of one sign. The corner is mirrored to any of
-         * the four. */
+         * the four. EX_FAR: the same with k far along the plane (far_steps), so that the
+         * points' magnitudes dwarf their differences. */
         off = irand(rng, -1, 1);
-        k0 = k1 = irand(rng, 2, 6);
+        k0 = k1 = kind == EX_FAR ? far_steps(rng, u, v) : irand(rng, 2, 6);
         for (c = 0; c < 3; c++)
             if (llabs(n[c]) > llabs(n[axis]))
                 axis = c;
         e[axis] = irand(rng, 0, 1) ? 1 : -1;
-        hc = (int64_t)1 << irand(rng, 0, 4);
+        hc = (int64_t)1 << irand(rng, 0, kind == EX_FAR ? 0 : 4);
         corner = (int)irand(rng, 0, 3);
     } else if (kind == EX_NEAR) {
         /* on n.x = off: through the eye, one unit from it, or further */
@@ -687,7 +710,7 @@ static int exact_lattice(ipatch *pt, uint64_t *rng, int kind, int bits)
         }
     if (kind == EX_NEAR)
         jiggle(pt, rng, 4);
-    else if (kind == EX_TANGENT && irand(rng, 0, 3) == 0) /* a quarter: 1 to 3 moved by 1 */
+    else if ((kind == EX_TANGENT || kind == EX_FAR) && irand(rng, 0, 3) == 0) /* a quarter: 1 to 3 moved by 1 */
         for (i = (int)irand(rng, 1, 3); i > 0; i--)
             pt->v[irand(rng, 0, pt->K - 1)][irand(rng, 0, 2)] += irand(rng, 0, 1) ? 1 : -1;
     return 0;
@@ -705,11 +728,13 @@ static void collapse_edge(ipatch *pt, int edge)
 }
 
 /* One patch of the given kind and level (0..3: the magnitude); the coordinates stay within
- * EXACT_MAX (a frame that would pass it is drawn again, with fewer bits each time). */
+ * EXACT_MAX, EX_FAR's within EXACT_FAR_MAX (a frame that would pass it is drawn again, with
+ * fewer bits each time). */
 static void exact_patch(ipatch *pt, uint64_t *rng, int kind, int level)
 {
-    static const int rbits[4] = {2, 4, 8, 12}, lbits[4] = {6, 12, 18, 24};
-    int bits = lbits[level], k, c, ok;
+    static const int rbits[4] = {2, 4, 8, 12}, lbits[4] = {6, 12, 18, 24}, fbits[4] = {9, 10, 11, 12};
+    int bits = kind == EX_FAR ? fbits[level] : lbits[level], k, c, ok;
+    int64_t cap = kind == EX_FAR ? EXACT_FAR_MAX : EXACT_MAX;
     for (k = 0; k < pt->K; k++) /* world space: w = 1, or 2..4 for a quarter */
         pt->w[k] = pt->world && irand(rng, 0, 3) == 0 ? irand(rng, 2, 4) : 1;
     do {
@@ -719,7 +744,7 @@ static void exact_patch(ipatch *pt, uint64_t *rng, int kind, int level)
         ok = base == EX_RANDOM || !exact_lattice(pt, rng, base, bits);
         for (k = 0; ok && k < pt->K; k++)
             for (c = 0; c < 3; c++)
-                ok &= llabs(pt->v[k][c]) <= EXACT_MAX;
+                ok &= llabs(pt->v[k][c]) <= cap;
         if (!ok && bits > 4)
             bits--;
     } while (!ok);
@@ -727,7 +752,7 @@ static void exact_patch(ipatch *pt, uint64_t *rng, int kind, int level)
         collapse_edge(pt, (int)irand(rng, 0, 3));
 }
 
-/* *out = f when f is an integer of magnitude <= lim (< 2^24, so exact in float); else -1. */
+/* *out = f when f is an integer of magnitude <= lim (<= 2^24, so exact in float); else -1. */
 static int float_int(float f, int64_t lim, int64_t *out)
 {
     if (!(fabsf(f) <= (float)lim) || (float)(int64_t)f != f)
@@ -739,8 +764,8 @@ static int float_int(float f, int64_t lim, int64_t *out)
 /* The exact values of patch p of an exact set s, each times its plane's r->den: v[i] =
  * den_i * d_i. cr is scratch for K * K cross products. Returns 0, or -1 when r->wint is NULL or
  * a coordinate or the eye is not an integer of the range kref_exact_sets makes.
- * No sum overflows: |det| < 2^60 for coordinates within EXACT_LIMIT, a plane's sum of |wint|
- * is below 2^47 (integer_weights) and |scale| <= EXACT_LIMIT, so |v| < 2^126. */
+ * No sum overflows: |det| < 2^75 for coordinates within EXACT_LIMIT, a plane's sum of |wint|
+ * is below 2^47 (integer_weights) and |scale| <= EXACT_ALPHA, so |v| < 2^126. */
 static int exact_values(const kref_ref *r, const kref_set *s, size_t p, int64_t (*cr)[3],
                         ptp_i128 *v)
 {
@@ -757,12 +782,12 @@ static int exact_values(const kref_ref *r, const kref_set *s, size_t p, int64_t 
     /* world: the eye is (e, 1) and value_t = e . cross4 = -det[b_j b_k b_l e] = -det3 of the
      * eye-relative points b - b.w e; clip: the eye is (0, 0, alpha, 0) and value_t = alpha
      * times det3 of the points' (x, y, w) (tests/kref.c cross4_mag: t.z = +det(x, y, w)) */
-    if (r->space == KREF_WORLD ? e[3] != 1 : e[0] || e[1] || e[3])
+    if (r->space == KREF_WORLD ? e[3] != 1 : e[0] || e[1] || e[3] || llabs(e[2]) > EXACT_ALPHA)
         return -1;
     scale = r->space == KREF_WORLD ? -1 : e[2];
     for (k = 0; k < r->K; k++) {
         for (c = 0; c < 4; c++)
-            if (float_int(b[k][c], (int64_t)1 << 23, &x[c]))
+            if (float_int(b[k][c], EXACT_LIMIT, &x[c]))
                 return -1;
         for (c = 0; c < 3; c++) {
             q[k][c] = r->space == KREF_WORLD ? x[c] - x[3] * e[c] : x[c == 2 ? 3 : c];
@@ -782,7 +807,8 @@ static int exact_values(const kref_ref *r, const kref_set *s, size_t p, int64_t 
         for (; t < r->t.nterms && r->t.terms[t].plane == i; t++) {
             const tp_term *te = &r->t.terms[t];
             const int64_t *a = q[te->j], *bc = cr[te->k * r->K + te->l];
-            sum += (ptp_i128)r->wint[t] * (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]);
+            sum += (ptp_i128)r->wint[t] * ((ptp_i128)a[0] * bc[0] + (ptp_i128)a[1] * bc[1] +
+                                           (ptp_i128)a[2] * bc[2]);
         }
         v[i] = sum * scale;
     }
@@ -850,7 +876,7 @@ static int exact_fill(const kref_ref *r, kref_set *set, int s, size_t count, uin
                       ptp_error *err)
 {
     uint64_t rng = seed * 1000033u + (uint64_t)s;
-    int kind = s % EX_KINDS, level = s / EX_KINDS % 4;
+    int far = pt->far, kind = far ? EX_FAR : s % EX_KINDS, level = far ? s % 4 : s / EX_KINDS % 4;
     size_t p;
     snprintf(set->name, sizeof set->name, "exact %s #%d (%s)", deg, s, exact_kind[kind]);
     exact_eye(set, s, pt->world, &rng);
@@ -867,7 +893,7 @@ static int exact_fill(const kref_ref *r, kref_set *set, int s, size_t count, uin
     return 0;
 }
 
-kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed,
+kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed, int far,
                           ptp_error *err)
 {
     kref_set *sets;
@@ -903,6 +929,7 @@ kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t s
     pt->m = r->t.dom.m;
     pt->K = r->K;
     pt->world = r->space == KREF_WORLD;
+    pt->far = far;
     for (s = 0; sets && s < nsets; s++)
         if (exact_fill(r, &sets[s], s, count, seed, deg, pt, cr, ev, err)) {
             kref_free_sets(sets, nsets);

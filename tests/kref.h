@@ -84,20 +84,21 @@ typedef struct {
  *   [FILE] [--kernel NAME] --degree N M [--domain quad|triangle] --space clip|world
  *   --rule strict|degenerate
  *   [--block-threads PQ --patches-per-block Q] [--planes] [--groups-x-constant] [--certified]
- *   (--random SETS COUNT SEED | --model PATH NEYES SEED | --exact SETS COUNT SEED)...
- *   [--eye-radius R] --name LABEL
+ *   (--random SETS COUNT SEED | --model PATH NEYES SEED | --exact SETS COUNT SEED
+ *    | --exact-far SETS COUNT SEED)... [--eye-radius R] --name LABEL
+ * --exact-far: kref_exact_sets' far tangent corners (far set).
  * --eye-radius R: the eyes of every --model at R bounding radii (1..1000) instead of 2 to 5.
  * --domain triangle: triangular patches of degree N (M is ignored).
  * --certified: the kernel was generated with --certified: it may answer silhouette wherever the
  * reference says back or front (counted as given up), and on --exact data it must never call a
  * patch back or front unless the exact class under --rule is that class. */
 #define KREF_MAX_SOURCES 16
-typedef enum { KREF_SRC_RANDOM, KREF_SRC_MODEL, KREF_SRC_EXACT } kref_source_kind;
+typedef enum { KREF_SRC_RANDOM, KREF_SRC_MODEL, KREF_SRC_EXACT, KREF_SRC_EXACT_FAR } kref_source_kind;
 typedef struct {
     kref_source_kind kind;
     const char *path; /* model */
-    long nsets;       /* random, exact: sets; model: eyes */
-    size_t count;     /* random, exact: patches per set */
+    long nsets;       /* random, exact(-far): sets; model: eyes */
+    size_t count;     /* random, exact(-far): patches per set */
     uint64_t seed;
     int radius;       /* model: eyes at this many bounding radii; 0: uniform in 2 to 5 */
 } kref_source;
@@ -159,8 +160,8 @@ kref_set *kref_model_sets(const kref_ref *r, const char *path, int neyes, uint64
 kref_set *kref_model_sets_at(const kref_ref *r, const char *path, int neyes, uint64_t seed,
                              int radius, ptp_error *err);
 /* nsets sets of count patches each (deterministic in seed) whose coordinates and eye are small
- * integers, stored exactly in float, built to sit on the edge between the classes; set s is of
- * kind s % 5 with magnitudes varying with s / 5:
+ * integers, stored exactly in float, built to sit on the edge between the classes; unless far,
+ * set s is of kind s % 5 with magnitudes varying with s / 5:
  *   0 random integers in [-2^a, 2^a], a in {2, 4, 8, 12}, w small and positive;
  *   1 near-planar patches (as 4) or random ones (as 0) with a boundary row or column collapsed;
  *   2 planar patches through the eye: every exact value is zero;
@@ -168,12 +169,17 @@ kref_set *kref_model_sets_at(const kref_ref *r, const char *path, int neyes, uin
  *     patch curving away, so that the corner value is 0 or tiny and every other value is large
  *     and of one sign; a quarter get one to three coordinates moved by 1;
  *   4 patches on a plane through the eye or near it, with coordinates moved by 1.
+ * With far every set is of kind 5, a far tangent corner: kind 3 (with normals up to 2^9 to 2^12
+ * by s % 4 and the smallest bump) slid along its tangent plane to 2^22 to 2^23 from the eye, so
+ * that the points' magnitudes dwarf their extent (by 2^13 to 2^15) and products of three of them
+ * round in double-float: what a certified kernel's second look must bound by the points' own
+ * magnitudes, not by their differences'.
  * World space: the eye is an integer point (ex, ey, ez, 1) and a point is (v + w e, w) for an
  * integer eye-relative v; clip space: the eye is (0, 0, alpha, 0), alpha in {1, -1, 2, 3}, and
- * a point is (v0, v1, v2 / 2, v2). Eye-relative coordinates reach 2^18, so that float products
- * round. The exact classes are computed here, in 128-bit integers (set.exact).
+ * a point is (v0, v1, v2 / 2, v2). Eye-relative coordinates reach 2^18 (far: 2^23), so that
+ * float products round. The exact classes are computed here, in 128-bit integers (set.exact).
  * Returns NULL (message in err) when out of memory or r->wint is NULL. */
-kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed,
+kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed, int far,
                           ptp_error *err);
 void kref_free_sets(kref_set *sets, int nsets);
 /* The exact signs (sign[L]: -1, 0 or 1) of the plane values of patch p of an exact set s, and
