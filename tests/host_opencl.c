@@ -4,7 +4,7 @@
  *   host_opencl KERNEL.cl --kernel NAME --degree N M --space clip|world --rule strict|degenerate
  *               --block-threads PQ --patches-per-block Q [--planes] [--certified]
  *               [--random SETS COUNT SEED] [--model PATH NEYES SEED] [--exact SETS COUNT SEED]
- *               --name LABEL [--bench RUNS]
+ *               [--exact-far SETS COUNT SEED] --name LABEL [--bench RUNS]
  *
  * Kernel contract: kernel void NAME(global const float4 *cp, global uint *cls,
  * global float *planes, float4 eye, uint patch_count) with reqd_work_group_size(PQ, 1, 1);
@@ -15,7 +15,8 @@
  * past patch_count (the output buffers are padded to whole blocks, filled with a sentinel, and
  * the padding is checked untouched; classes start as 0xFFFFFFFF, so kref_check catches unwritten
  * ones). Any setup failure is one "not ok - " line.
- * --random, --model, --exact and --exact-far may each be given more than once; at least one is required.
+ * --random, --model, --exact and --exact-far may each be given more than once; at least one is
+ * required.
  * Exit status 0 only when every check passed.
  *
  * --bench RUNS (for `make bench`): after each set's checked run, the set's dispatch, clFinish and

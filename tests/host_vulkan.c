@@ -5,7 +5,7 @@
  *   host_vulkan SPV --degree N M --space clip|world --rule strict|degenerate
  *               --block-threads PQ --patches-per-block Q [--planes] [--groups-x-constant]
  *               [--certified] [--random SETS COUNT SEED] [--model PATH NEYES SEED]
- *               [--exact SETS COUNT SEED] --name LABEL [--bench RUNS]
+ *               [--exact SETS COUNT SEED] [--exact-far SETS COUNT SEED] --name LABEL [--bench RUNS]
  *
  * Kernel contract: entry point "main"; std430 storage buffers in set 0: binding 0 the control
  * points (readonly vec4[], point k of patch p at p*K + k), binding 1 the classes (uint[], one per
@@ -26,8 +26,9 @@
  * past patch_count (the classes and values buffers are filled with 0xFFFFFFFF before every
  * dispatch and reach past the chunk as far as its last workgroup does; the part past the chunk
  * must come back untouched; unwritten classes in the chunk are caught by kref_check). --random,
- * --model and --exact may each be given more than once; at least one is required. Any setup
- * failure is one "not ok - LABEL: reason" line. Exit status 0 only when every check passed.
+ * --model, --exact and --exact-far may each be given more than once; at least one is required.
+ * Any setup failure is one "not ok - LABEL: reason" line. Exit status 0 only when every check
+ * passed.
  *
  * --bench RUNS (for `make bench`): after each set's checked run, the set's dispatch (with the wait
  * for its fence) and the copy of its classes out of the mapped buffer run RUNS more times

@@ -5,7 +5,7 @@
  *   host_wgpu WGSL --degree N M --space clip|world --rule strict|degenerate
  *             --block-threads PQ --patches-per-block Q [--planes] [--certified]
  *             [--random SETS COUNT SEED] [--model PATH NEYES SEED]
- *             [--exact SETS COUNT SEED] --name LABEL [--bench RUNS]
+ *             [--exact SETS COUNT SEED] [--exact-far SETS COUNT SEED] --name LABEL [--bench RUNS]
  *
  * Kernel contract (bind group 0): binding 0 the control points (var<storage, read>
  * array<vec4<f32>>, point k of patch p at p*K + k), binding 1 the classes (var<storage,

@@ -122,8 +122,8 @@ static int parse_valued(kref_args *o, parse_seen *seen, char **argv, int *i, int
     return 0;
 }
 
-/* Parses --random, --model, --exact or --exact-far s with its three values v[0..2] into a new source of o;
- * 0, or usage's 2. */
+/* Parses --random, --model, --exact or --exact-far s with its three values v[0..2] into a new
+ * source of o; 0, or usage's 2. */
 static int parse_source(kref_args *o, const char *s, char **v, const char *host)
 {
     unsigned long long a, b, c;
@@ -145,7 +145,7 @@ static int parse_source(kref_args *o, const char *s, char **v, const char *host)
             parse_ull(v[2], 0, UINT64_MAX, &c))
             return usage(host, o->label, sr->kind == KREF_SRC_RANDOM
                                              ? "--random takes SETS COUNT SEED (COUNT >= 1)"
-                                             : "--exact and --exact-far take SETS COUNT SEED (COUNT >= 1)");
+                                             : "--exact(-far) takes SETS COUNT SEED (COUNT >= 1)");
         sr->nsets = (long)a;
         sr->count = (size_t)b;
     }
@@ -710,8 +710,8 @@ static int exact_lattice(ipatch *pt, uint64_t *rng, int kind, int bits)
         }
     if (kind == EX_NEAR)
         jiggle(pt, rng, 4);
-    else if ((kind == EX_TANGENT || kind == EX_FAR) && irand(rng, 0, 3) == 0) /* a quarter: 1 to 3 moved by 1 */
-        for (i = (int)irand(rng, 1, 3); i > 0; i--)
+    else if ((kind == EX_TANGENT || kind == EX_FAR) && irand(rng, 0, 3) == 0) /* a quarter: */
+        for (i = (int)irand(rng, 1, 3); i > 0; i--) /* 1 to 3 moved by 1 */
             pt->v[irand(rng, 0, pt->K - 1)][irand(rng, 0, 2)] += irand(rng, 0, 1) ? 1 : -1;
     return 0;
 }
@@ -732,7 +732,8 @@ static void collapse_edge(ipatch *pt, int edge)
  * fewer bits each time). */
 static void exact_patch(ipatch *pt, uint64_t *rng, int kind, int level)
 {
-    static const int rbits[4] = {2, 4, 8, 12}, lbits[4] = {6, 12, 18, 24}, fbits[4] = {9, 10, 11, 12};
+    static const int rbits[4] = {2, 4, 8, 12}, lbits[4] = {6, 12, 18, 24};
+    static const int fbits[4] = {9, 10, 11, 12}; /* EX_FAR's normals */
     int bits = kind == EX_FAR ? fbits[level] : lbits[level], k, c, ok;
     int64_t cap = kind == EX_FAR ? EXACT_FAR_MAX : EXACT_MAX;
     for (k = 0; k < pt->K; k++) /* world space: w = 1, or 2..4 for a quarter */
