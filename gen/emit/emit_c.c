@@ -1,5 +1,6 @@
 /* emit_c.c: the C target, an stb-style header: the term table, planes, values, and classify (one
  * patch, batch, SoA) as straight-line code, with the second look of --certified or --refine. */
+#include "emit/emit_c.h"
 #include "emit/emit_c_batch.h"
 #include "emit/emit_c_cert.h"
 #include "emit/emit_c_mesh.h"

@@ -1,7 +1,7 @@
 /* emit_c_cert.c: the C header's --certified parts: the lanes' magnitudes, margins and collapsed
  * edges, and certify64, the second look in double at the patches float cannot certify. */
 #include "emit/emit_c_cert.h"
-#include "emit/kern.h"
+#include "emit/emit_c.h"
 
 #include <stdlib.h>
 

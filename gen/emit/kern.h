@@ -133,10 +133,5 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
 
 /* The C target (a header, not a kernel); the signature of the outputs of out.h. */
 int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);
-/* Appends component i of cross4(a, b, c) (Appendix A), for the C header's float and double
- * table loops: +-det of the rows other than i, expanded along the first of them; cast (e.g.
- * "(double)") converts the first factor of every product of a 2x2 minor, and ind is the
- * indentation of continuation lines. */
-void emit_c_cross4_component(sbuf *o, int i, const char *cast, int ind);
 
 #endif
