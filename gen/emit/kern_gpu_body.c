@@ -50,6 +50,7 @@ static void put_load(sbuf *o, const kern_target *g, const char *up)
 static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
+    const char *eye = info->space == OUT_CLIP ? "" : ", eye";
     char a[128], b[320], c[320], w[96], term[1024], e[1152]; /* up has at most 63 bytes */
     int r, n = (int)(strlen(px) + strlen(fn));
     sbuf_printf(o,
@@ -68,11 +69,14 @@ static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, 
         snprintf(b, sizeof b, "pts[q * %sK + (kl & 0xffffu)]", up);
         snprintf(c, sizeof c, "pts[q * %sK + (kl >> 16)]", up);
     }
+    if (kgpu_differences(info, g)) /* one argument a line: the differences are long */
+        snprintf(term, sizeof term, "%s%s(%s,\n        %*s %s,\n        %*s %s%s)", px, fn, a, n,
+                 "", b, n, "", c, eye);
+    else
+        snprintf(term, sizeof term, "%s%s(%s, %s,\n        %*s %s%s)", px, fn, a, b, n, "", c,
+                 eye);
     for (r = 0; r < info->sched->rounds; r++) {
         snprintf(w, sizeof w, "%sw%d[t]", px, r);
-        snprintf(term, sizeof term, "%s%s(%s,%s%*s %s,\n        %*s %s%s)", px, fn, a,
-                 kgpu_differences(info, g) ? "\n        " : "", kgpu_differences(info, g) ? n : 0, "", b, n, "",
-                 c, info->space == OUT_CLIP ? "" : ", eye");
         kgpu_product(e, sizeof e, g, "\n        ", 2, (const char *const[]){w, term});
         sbuf_printf(o, "    pj = %spj%d[t];\n    kl = %skl%d[t];\n"
                        "    acc[q * %sL + (pj & 0xffffu)] += %s;\n",
