@@ -607,7 +607,7 @@ static int plane_frame(uint64_t *rng, int bits, int64_t n[3], int64_t a[3], int6
 /* One patch under construction: eye-relative points v and (world space) their w. */
 typedef struct {
     const tp_domain *dom;
-    int n, m, K, world, far; /* far: --exact-far's sets */
+    int n, m, K, world;
     int64_t v[KREF_MAXK][3];
     int64_t w[KREF_MAXK];
 } ipatch;
@@ -870,14 +870,14 @@ static void exact_store(kref_set *set, size_t p, const ipatch *pt)
     }
 }
 
-/* Fills set s of kref_exact_sets (count patches, seed; deg names the degree) with pt, cr and ev
- * as scratch: its name, eye, patches and exact classes. 0, or -1 with err set. */
+/* Fills set s of kref_exact_sets (count patches, seed, far; deg names the degree) with pt, cr
+ * and ev as scratch: its name, eye, patches and exact classes. 0, or -1 with err set. */
 static int exact_fill(const kref_ref *r, kref_set *set, int s, size_t count, uint64_t seed,
-                      const char *deg, ipatch *pt, int64_t (*cr)[3], ptp_i128 *ev,
+                      int far, const char *deg, ipatch *pt, int64_t (*cr)[3], ptp_i128 *ev,
                       ptp_error *err)
 {
     uint64_t rng = seed * 1000033u + (uint64_t)s;
-    int far = pt->far, kind = far ? EX_FAR : s % EX_KINDS, level = far ? s % 4 : s / EX_KINDS % 4;
+    int kind = far ? EX_FAR : s % EX_KINDS, level = far ? s % 4 : s / EX_KINDS % 4;
     size_t p;
     snprintf(set->name, sizeof set->name, "exact %s #%d (%s)", deg, s, exact_kind[kind]);
     exact_eye(set, s, pt->world, &rng);
@@ -930,9 +930,8 @@ kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t s
     pt->m = r->t.dom.m;
     pt->K = r->K;
     pt->world = r->space == KREF_WORLD;
-    pt->far = far;
     for (s = 0; sets && s < nsets; s++)
-        if (exact_fill(r, &sets[s], s, count, seed, deg, pt, cr, ev, err)) {
+        if (exact_fill(r, &sets[s], s, count, seed, far, deg, pt, cr, ev, err)) {
             kref_free_sets(sets, nsets);
             sets = NULL;
         }
