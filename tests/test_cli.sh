@@ -415,9 +415,11 @@ expect_fail "a repeated flag" 2 "option --planes is given twice" --degree 3 --ta
 expect_fail "a repeated --seed" 2 "option --seed is given twice" vectors --degree 3 --count 2 --seed 1 --seed=2
 
 # Scheduler options: bad values are usage errors.
-for v in 0 -1 abc 1025 99999999999 4x ''; do
+for v in 0 -1 abc 1025 4x ''; do
     expect_fail "--threads-per-patch '$v' is a usage error" 2 "threads-per-patch" --degree 3 --threads-per-patch "$v"
 done
+expect_fail "a huge --threads-per-patch is named as given" 2 "'99999999999': the largest allowed is 1024" \
+    --degree 3 --threads-per-patch 99999999999
 expect_fail "--threads-per-patch beyond the planes is refused" 2 "exceeds the 64 planes" --degree 3 --threads-per-patch 65
 for v in 0 -2 x 1025; do
     expect_fail "--patches-per-block '$v' is a usage error" 2 "patches-per-block" --degree 3 --patches-per-block "$v"

@@ -103,20 +103,6 @@ void cli_usage(sbuf *o)
         "Exit status: 0 success, 1 failure, 2 usage error.\n");
 }
 
-/* Parses a thread count: decimal digits only; values past 10^6 are kept as 10^6 + 1 so that
- * the scheduler's range check names the limit. Zero is left to that check too. */
-static int parse_count(int *v, const char *opt, const char *arg, ptp_error *err)
-{
-    const char *p = arg;
-    long x = 0;
-    for (; *p >= '0' && *p <= '9'; p++)
-        x = x > 1000000 ? 1000001 : x * 10 + (*p - '0');
-    if (p == arg || *p != '\0')
-        return ptp_fail(err, PTP_EUSAGE, "%s '%s': expected a whole number", opt, arg);
-    *v = (int)x;
-    return PTP_OK;
-}
-
 /* Sets *v to the index of arg in names[0..n-1]; a usage error naming the choices otherwise. */
 static int parse_choice(int *v, const char *opt, const char *arg, const char *const *names, int n,
                         ptp_error *err)
@@ -166,6 +152,17 @@ static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t m
         return ptp_fail(err, PTP_EUSAGE, "%s '%s': expected a whole number", opt, arg);
     *v = x;
     return PTP_OK;
+}
+
+/* Parses a thread or patch count up to SCHED_MAX_THREADS (digits only) into *v; zero is left
+ * to the scheduler's range check, which names the lower limit. */
+static int parse_count(int *v, const char *opt, const char *arg, ptp_error *err)
+{
+    uint64_t x;
+    int st = parse_ulong(&x, opt, arg, SCHED_MAX_THREADS, err);
+    if (st == PTP_OK)
+        *v = (int)x;
+    return st;
 }
 
 /* The options, in the order the mode check names them. */
