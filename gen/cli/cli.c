@@ -158,7 +158,7 @@ static int parse_ulong(uint64_t *v, const char *opt, const char *arg, uint64_t m
  * to the scheduler's range check, which names the lower limit. */
 static int parse_count(int *v, const char *opt, const char *arg, ptp_error *err)
 {
-    uint64_t x;
+    uint64_t x = 0;
     int st = parse_ulong(&x, opt, arg, SCHED_MAX_THREADS, err);
     if (st == PTP_OK)
         *v = (int)x;
