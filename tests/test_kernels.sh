@@ -695,7 +695,7 @@ done
 # ... and the exact check can fail there: a header that counts every plane as zero where edge 0 is
 # collapsed, not only the planes along it, must be caught calling patches back that are not.
 "$P" --degree 3 --space clip --rule degenerate --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" &&
-    sed -i 's/notlt |= (v < 0.0f) == 0;/notlt |= ((v < 0.0f) | c0) == 0;/; s/s = PTP_3X3_VMIN(s, t);/amb |= ((t > F) | c0) == 0;/; s/notlt |= ((d\[x\] < -bound) | z) == 0;/notlt |= ((d[x] < -bound) | (col \& 1)) == 0;/' "$tmp/k.h"
+    sed -i 's/lt = PTP_3X3_KLT(lt, v);/lt \&= PTP_3X3_KLT0(v) | PTP_3X3_KC(c0);/; s/s = PTP_3X3_VMIN(s, t);/amb |= ((t > F) | c0) == 0;/; s/notlt |= ((d\[x\] < -bound) | z) == 0;/notlt |= ((d[x] < -bound) | (col \& 1)) == 0;/' "$tmp/k.h"
 mutant_caught degenerate '(t > F) | c0) == 0' "a certified degenerate C header that zeros planes off the collapsed edge"
 # Certified GPU kernels under the degenerate rule test the patch's edges too (their points'
 # bits) and count the planes along a collapsed one as exactly 0: like the C headers they keep the

@@ -281,9 +281,10 @@ static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_
         put_group_end(o, &p->s[x->group], first_group, up);
 }
 
-/* Plain strict rule: lt (gt) = the lanes whose values so far are all < 0 (> 0), one masked
- * compare a plane into an AVX-512 mask register (gcc otherwise keeps every value live to compare
- * them all at the end), else 0/1 or 0/-1 masks; KCLASS: 1 where lt, 0 where gt, else 2. */
+/* Strict rule, plain or certified: lt (gt) = the lanes whose values so far are all < 0 (> 0),
+ * one masked compare a plane into an AVX-512 mask register (gcc otherwise keeps every value live
+ * to compare them all at the end), else 0/1 or 0/-1 masks; KCLASS: 1 where lt, 0 where gt, else
+ * 2. */
 static void put_strict_macros(sbuf *o, const char *px, const char *up)
 {
     static const char *const rel[2][2] = {{"LT", "<"}, {"GT", ">"}};
@@ -311,7 +312,7 @@ static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
     int world = info->space == OUT_WORLD;
     if (info->certified)
         emit_c_cert_macros(o, px, up);
-    else if (info->rule == OUT_STRICT)
+    if (info->certified || info->rule == OUT_STRICT)
         put_strict_macros(o, px, up);
     sbuf_printf(o,
                 "/* The classification of n patches in structure-of-arrays order: coordinate c of point k\n"
@@ -352,9 +353,14 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
     int strict = info->rule == OUT_STRICT || info->certified; /* certified: strict with margins */
+    char more[96] = ""; /* the masks after lt and gt: certified amb, degenerate nan */
+    if (info->certified)
+        snprintf(more, sizeof more, ";\n        %svm amb", px);
+    else if (!strict)
+        strcpy(more, ", nan");
     sbuf_printf(o, "    size_t l;\n    for (l = 0; l < n; l += %sVW) {\n"
                    "        const float *q = soa + l;\n        size_t qs = stride;\n"
-                   "        %s%s %s, %s%s;\n        %svf u, v%s;\n"
+                   "        %s%s lt, gt%s;\n        %svf u, v%s;\n"
                    "#if %sVW > 1\n"
                    "        float tail[%sPOINTS * 4 * %sVW];\n"
                    "        if (n - l < %sVW) {\n"
@@ -364,9 +370,7 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
                    "%*sfor (i = 0; i < %sVW; i++)\n"
                    "%*s    tail[k * %sVW + i] = soa[k * stride + (l + i < n ? l + i : n - 1)];\n"
                    "            q = tail;\n            qs = %sVW;\n        }\n#endif\n",
-                up, px, info->certified || !strict ? "vm" : "vk", info->certified ? "notlt" : "lt",
-                info->certified ? "notgt" : "gt",
-                info->certified ? ", amb" : strict ? "" : ", nan", px,
+                up, px, strict ? "vk" : "vm", more, px,
                 info->certified ? ", t, s" : "", up, up, up, up, up,
                 world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
                 world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
@@ -495,7 +499,7 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
         sbuf_puts(o, "        /* Certified: back (1) iff every value is below minus its bound, front (0) iff\n"
                      "         * every value is above its bound; 3 where only the plain signs decide (a second\n"
                      "         * look in double follows), else silhouette (2). Masks 0 or 1 first. */\n"
-                     "        amb |= (s > F) == 0;\n        notlt &= 1;\n        notgt &= 1;\n        amb &= 1;\n");
+                     "        amb |= (s > F) == 0;\n        amb &= 1;\n");
     else if (strict)
         sbuf_puts(o, "        /* Strict: back (1) iff every value < 0, front (0) iff every value > 0, else\n"
                      "         * silhouette (2); arithmetic, not branches. */\n");
@@ -503,6 +507,8 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
         sbuf_puts(o, "        /* Degenerate: back (1) iff no value > 0, front (0) iff no value < 0, else\n"
                      "         * silhouette (2), and NaN silhouette; arithmetic, not branches. Masks 0 or 1 first. */\n"
                      "        lt &= 1;\n        gt &= 1;\n        nan &= 1;\n");
+    if (info->certified)
+        sbuf_printf(o, "        const %svm notlt = %sKNOT(lt), notgt = %sKNOT(gt);\n", px, up, up);
     if (strict && !info->certified)
         sbuf_printf(o, "        %svstore(cls + l, %sKCLASS(lt, gt), n - l);\n", px, up);
     else

@@ -190,6 +190,12 @@ void emit_c_cert_macros(sbuf *o, const char *px, const char *up)
     sbuf_printf(o, "#else\n#define %sVMIN(a, b) ((%svf)(((%svm)(a) & ((%svm)(a) < (%svm)(b))) | ((%svm)(b) & ((%svm)(a) >= (%svm)(b)))))\n"
                    "#endif\n#else\n#define %sVABS(x) ((x) < 0.0f ? -(x) : (x))\n#define %sVMIN(a, b) ((a) < (b) ? (a) : (b))\n#endif\n",
                 up, px, px, px, px, px, px, px, up, up);
+    sbuf_printf(o, "/* Certified: KC(c) = the lanes of a 0/-1 mask c as the strict masks hold them, KNOT(k) = 1\n"
+                   " * where mask k is clear and 0 where it is set. */\n"
+                   "#if %sVW == 16\n#define %sKC(c) _mm512_test_epi32_mask((__m512i)(c), (__m512i)(c))\n"
+                   "#define %sKNOT(k) ((%svm)_mm512_maskz_mov_epi32((__mmask16)~(k), _mm512_set1_epi32(1)))\n"
+                   "#else\n#define %sKC(c) (c)\n#define %sKNOT(k) (((k) & 1) ^ 1)\n#endif\n",
+                up, up, up, px, up, up);
 }
 
 void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
@@ -258,27 +264,44 @@ void emit_c_cert_magnitudes(sbuf *o, int npoints, const out_info *info, const ce
                 px, (double)k2, (double)cb->q_max);
 }
 
-/* Appends "(cond)", or "((cond) | c0 | c2)" with the masks of the collapsed edges in bits zero. */
-static void put_cond(sbuf *o, const char *cond, unsigned zero)
+/* Appends "c0 | c2", the masks of the collapsed edges in bits zero (not 0). */
+static void put_edges(sbuf *o, unsigned zero)
 {
-    int e;
-    sbuf_printf(o, zero ? "((%s)" : "(%s", cond);
+    int e, any = 0;
     for (e = 0; e < 8; e++)
         if (zero >> e & 1)
-            sbuf_printf(o, " | c%d", e);
+            sbuf_printf(o, any++ ? " | c%d" : "c%d", e);
+}
+
+/* Appends "((cond) | c0 | c2)" with the masks of the collapsed edges in bits zero (not 0). */
+static void put_cond(sbuf *o, const char *cond, unsigned zero)
+{
+    sbuf_printf(o, "((%s) | ", cond);
+    put_edges(o, zero);
     sbuf_puts(o, ")");
 }
 
 void emit_c_cert_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
                        const char *up, int plane, int first)
 {
+    static const char *const mask[2][2] = {{"lt", "LT"}, {"gt", "GT"}};
     unsigned zero = emit_c_cert_zeros(info) ? p->zero[plane] : 0;
-    const char *op = first ? "=" : "|=";
-    sbuf_printf(o, "        notlt %s ", op);
-    put_cond(o, "v < 0.0f", zero);
-    sbuf_printf(o, " == 0;\n        notgt %s ", op);
-    put_cond(o, "v > 0.0f", zero);
-    sbuf_printf(o, " == 0; /* plane %d */\n", plane);
+    int i;
+    for (i = 0; i < 2; i++) {
+        if (first)
+            sbuf_printf(o, "        %s = %sK%s0(v)", mask[i][0], up, mask[i][1]);
+        else if (zero)
+            sbuf_printf(o, "        %s &= %sK%s0(v)", mask[i][0], up, mask[i][1]);
+        else
+            sbuf_printf(o, "        %s = %sK%s(%s, v)", mask[i][0], up, mask[i][1], mask[i][0]);
+        if (zero) {
+            sbuf_printf(o, " | %sKC(", up);
+            put_edges(o, zero);
+            sbuf_puts(o, ")");
+        }
+        sbuf_puts(o, i ? ";" : ";\n");
+    }
+    sbuf_printf(o, " /* plane %d */\n", plane);
     sbuf_printf(o, "        t = %sVFMAS(%.8ef, ER3, %sVABS(v)); /* minus the bound of plane %d */\n",
                 up, -(double)cb->k[plane], up, plane);
     if (!zero) {

@@ -29,12 +29,12 @@ void emit_c_cert_magnitudes(sbuf *o, int npoints, const out_info *info, const ce
  * coordinate finite. Needs every point's coordinates (x<k>, y<k>, ...) declared before it. */
 void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info);
 
-/* Appends plane's value v into the certified masks (set by the first plane): notlt and notgt
- * (under the degenerate rule a plane that a collapsed edge of p->zero[plane] zeros counts as
- * both < 0 and > 0); t = |v| - K_P ER3 (cb->k), rounded once (twice without FMA: K_P allows
- * it), into s, their minimum (or, on a plane a collapsed edge can zero, into amb where t is not
- * above F and the edge is not collapsed); the signs are certified where s > F and amb is clear
- * (README: Certified). */
+/* Appends plane's value v into the certified masks (set by the first plane): the strict masks
+ * lt and gt (the lanes whose values so far are all < 0, all > 0; under the degenerate rule a
+ * plane that a collapsed edge of p->zero[plane] zeros counts as both); t = |v| - K_P ER3
+ * (cb->k), rounded once (twice without FMA: K_P allows it), into s, their minimum (or, on a
+ * plane a collapsed edge can zero, into amb where t is not above F and the edge is not
+ * collapsed); the signs are certified where s > F and amb is clear (README: Certified). */
 void emit_c_cert_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
                        const char *up, int plane, int first);
 
