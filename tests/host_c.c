@@ -10,14 +10,18 @@
 #include <string.h>
 
 /* Nonzero when class c is not the one values d (L of them, from values()) give under the rule:
- * certified, a class other than silhouette must be the rule's. v: L doubles of scratch. */
-static int class_not_of_values(double *v, unsigned c, const float *d, int L, const kref_ref *ref)
+ * certified, a class other than silhouette must be the rule's, or the exact class exact (-1:
+ * unknown), which a second look in double can find where the floats' signs are wrong (far
+ * patches). v: L doubles of scratch. */
+static int class_not_of_values(double *v, unsigned c, const float *d, int L, const kref_ref *ref,
+                               int exact)
 {
     int x;
     for (x = 0; x < L; x++)
         v[x] = d[x]; /* exact: the signs, zeros and NaNs are the floats' */
     if (ref->certified)
-        return c != MACRO(SILHOUETTE) && (int)c != kref_classify(v, L, ref->rule);
+        return c != MACRO(SILHOUETTE) && (int)c != kref_classify(v, L, ref->rule) &&
+               (int)c != exact;
     return (int)c != kref_classify(v, L, ref->rule);
 }
 
@@ -52,9 +56,11 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
     for (p = 0; p < s->count; p++) {
         const float(*cp)[4] = (const float(*)[4])s->cp + p * (size_t)ref->K;
         size_t x;
+        int exact;
         cls[p] = FN(classify)(cp, s->eye);
         FN(values)(cp, s->eye, d + p * L);
-        r->values_differ += (size_t)class_not_of_values(v, cls[p], d + p * L, ref->L, ref);
+        exact = !s->exact ? -1 : ref->rule == KREF_STRICT ? s->exact[p] & 3 : s->exact[p] >> 2;
+        r->values_differ += (size_t)class_not_of_values(v, cls[p], d + p * L, ref->L, ref, exact);
         if (s->exact && p % KREF_EXACT_SAMPLE)
             continue; /* kref_check reads the values of exact sets on this sample only */
         FN(planes)(cp, t);
