@@ -281,7 +281,7 @@ fi
 # in a statement, ((u + u) + (u + u)), are one sum each (the compiler shares them).
 count_ops() { # HEADER -> "muls flops adds"
     awk '/_vload\(q/ && !f {f = 1} /\/\* Strict:/ {f = 0}
-         f && !/if \(d\)|vstoref\(|notlt|notgt/ {
+         f && !/if \(d\)|vstoref\(/ {
              gsub(/_vload\([^)]*\)/, "L"); line = $0
              for (k = 1; k <= 6; k++)
                  if (gsub("\\(" (k > 1 ? "D" k - 1 : "u") " \\+ " (k > 1 ? "D" k - 1 : "u") "\\)", "D" k, line))
