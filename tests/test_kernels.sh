@@ -692,19 +692,26 @@ for cfg in "clip gcc -O2" "world clang -O3 -march=native"; do
         notok "$name compiles" "$(head -5 "$tmp/err")"
     fi
 done
-# The cubic triangle's certified C headers on exact data as well, far tangent corners included:
-# there the second look in double decides patches whose float values have the wrong signs, so
-# host_c accepts a class that values() contradicts only when it is the exact one.
+# The cubic triangle's certified C headers and OpenCL kernels on exact data as well, far tangent
+# corners included: there the C header's second look in double decides patches whose float
+# values have the wrong signs, so host_c accepts a class that values() contradicts only when it
+# is the exact one.
 for cfg in "clip strict" "clip degenerate" "world strict" "world degenerate"; do
     read -r tspace trule <<<"$cfg"
+    targs="--space $tspace --rule $trule --certified --exact 8 5000 41 $cert_far --random 1 5000 43"
     name="certified c/gcc -O2 -march=native tri3 $tspace $trule"
     if "$P" --domain triangle --degree 3 --space $tspace --rule $trule --certified --target c \
         --prefix ptp_tri3_ -o "$tmp/k.h" && build_host_c gcc "-O2 -march=native" "$tmp/k.h" tri3; then
-        run_host "$name" "$tmp/host_c" $(host_degree tri3) --space $tspace --rule $trule --certified \
-            --exact 8 5000 41 $cert_far --random 1 5000 43 --name "$name"
+        run_host "$name" "$tmp/host_c" $(host_degree tri3) $targs --name "$name"
     else
         notok "$name compiles" "$(head -5 "$tmp/err")"
     fi
+    name="certified opencl tri3 $tspace $trule"
+    [ -x "$B/host_opencl" ] && "$P" --domain triangle --degree 3 --target json -o "$tmp/k.json" &&
+        "$P" --domain triangle --degree 3 --space $tspace --rule $trule --certified --target opencl \
+            --prefix ptp_tri3_ -o "$tmp/k.cl" && read -r PQ Q < <(schedule "$tmp/k.json") &&
+        run_host "$name" "$B/host_opencl" "$tmp/k.cl" --kernel ptp_tri3_classify --block-threads $PQ \
+            --patches-per-block $Q $(host_degree tri3) $targs --name "$name"
 done
 # ... and the exact check can fail there: a header that counts every plane as zero where edge 0 is
 # collapsed, not only the planes along it, must be caught calling patches back that are not.
