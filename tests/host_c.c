@@ -59,7 +59,7 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
         int exact;
         cls[p] = FN(classify)(cp, s->eye);
         FN(values)(cp, s->eye, d + p * L);
-        exact = !s->exact ? -1 : ref->rule == KREF_STRICT ? s->exact[p] & 3 : s->exact[p] >> 2;
+        exact = kref_exact_class(s, p, ref->rule);
         r->values_differ += (size_t)class_not_of_values(v, cls[p], d + p * L, ref->L, ref, exact);
         if (s->exact && p % KREF_EXACT_SAMPLE)
             continue; /* kref_check reads the values of exact sets on this sample only */

@@ -531,6 +531,7 @@ int main(int argc, char **argv)
     int ok = 0, have_ref = 0, nsets_total = 0;
     long runs;
     run r;
+    char deg[32];
 
     if (kref_parse_bench_args(&o, &runs, argc, argv, "host_opencl",
                               KREF_NEED_FILE | KREF_NEED_KERNEL | KREF_NEED_BLOCK))
@@ -561,8 +562,9 @@ int main(int argc, char **argv)
     }
     if (build(&st, &o, dev) || check_group_size(&st, &o, dev))
         goto done;
-    printf("# kernel: %s in %s, %dx%d, %s, %s, %zu work-items per group, %zu patches per group%s\n",
-           o.kernel_name, o.file, o.n, o.m, o.space == KREF_CLIP ? "clip" : "world",
+    kref_degree_name(deg, sizeof deg, &ref.t.dom);
+    printf("# kernel: %s in %s, %s, %s, %s, %zu work-items per group, %zu patches per group%s\n",
+           o.kernel_name, o.file, deg, o.space == KREF_CLIP ? "clip" : "world",
            o.rule == KREF_STRICT ? "strict" : "degenerate", o.pq, o.q,
            o.planes ? ", planes" : "");
 

@@ -265,10 +265,11 @@ int host_run_kernel(const host_device *d, const kref_args *o, const kref_ref *re
                     uint64_t dev_bytes, uint64_t dev_x, uint64_t dev_y)
 {
     host_limits lim;
-    char err[HOST_ERRSZ];
-    printf("# kernel: %s, %dx%d, %s, %s, %zu invocations per group, %zu patches per group, "
+    char err[HOST_ERRSZ], deg[32];
+    kref_degree_name(deg, sizeof deg, &ref->t.dom);
+    printf("# kernel: %s, %s, %s, %s, %zu invocations per group, %zu patches per group, "
            "%s%s\n",
-           o->file, o->n, o->m, o->space == KREF_CLIP ? "clip" : "world",
+           o->file, deg, o->space == KREF_CLIP ? "clip" : "world",
            o->rule == KREF_STRICT ? "strict" : "degenerate", o->pq, o->q,
            o->planes ? "planes" : "no planes",
            o->groups_x_constant ? ", groups_x read from the push constants" : "");

@@ -394,8 +394,12 @@ static int edge_first(const tp_domain *d, int e, int k)
     }
 }
 
-/* Writes the degree as set names show it: "3x3", "tri3". */
-static void degree_name(char *buf, size_t size, const tp_domain *d)
+int kref_exact_class(const kref_set *s, size_t p, kref_rule rule)
+{
+    return !s->exact ? -1 : rule == KREF_STRICT ? s->exact[p] & 3 : s->exact[p] >> 2;
+}
+
+void kref_degree_name(char *buf, size_t size, const tp_domain *d)
 {
     char f[16];
     snprintf(buf, size, "%s%s", d->kind == TP_TRI ? "tri" : "", tp_domain_format(f, sizeof f, d));
@@ -445,7 +449,7 @@ kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t 
     char deg[16];
     if (!sets)
         return NULL;
-    degree_name(deg, sizeof deg, &r->t.dom);
+    kref_degree_name(deg, sizeof deg, &r->t.dom);
     for (s = 0; s < nsets; s++) {
         kref_set *set = &sets[s];
         uint64_t rng = seed * 1000003u + (uint64_t)s;
@@ -903,7 +907,7 @@ kref_set *kref_exact_sets(const kref_ref *r, int nsets, size_t count, uint64_t s
     int64_t(*cr)[3];
     int s;
     char deg[16];
-    degree_name(deg, sizeof deg, &r->t.dom);
+    kref_degree_name(deg, sizeof deg, &r->t.dom);
     if (!r->wint) {
         ptp_fail(err, PTP_ELIMIT, "the %s weights are too large for exact evaluation", deg);
         return NULL;
@@ -1219,7 +1223,8 @@ static void check_exact(kref_result *res, const kref_ref *r, const kref_set *s, 
 {
     static const char *const names[] = {"front", "back", "silhouette"};
     int strict = r->rule == KREF_STRICT, i, n, first;
-    int cl[2] = {s->exact[p] & 3, s->exact[p] >> 2}, want = cl[strict ? 0 : 1];
+    int cl[2] = {kref_exact_class(s, p, KREF_STRICT), kref_exact_class(s, p, KREF_DEGENERATE)};
+    int want = cl[strict ? 0 : 1];
     size_t len;
     res->exact++;
     res->exact_counts[0][cl[0]]++;

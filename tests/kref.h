@@ -24,6 +24,9 @@ typedef struct {
     unsigned char *exact; /* kref_exact_sets: per patch, its exact class under the strict rule
                              plus 4 times the one under the degenerate rule; NULL otherwise */
 } kref_set;
+/* The exact class of patch p of s under rule (KREF_FRONT, KREF_BACK or KREF_SILHOUETTE); -1 when
+ * s has no exact classes. */
+int kref_exact_class(const kref_set *s, size_t p, kref_rule rule);
 
 /* The exact table of one patch domain (quad or triangle), for the reference. */
 typedef struct {
@@ -139,6 +142,8 @@ int kref_init(kref_ref *r, tp_kind kind, int n, int m, kref_space space, kref_ru
  * --certified; 0, or 1 after a "not ok" line. */
 int kref_init_args(kref_ref *r, const kref_args *a);
 void kref_clear(kref_ref *r);
+/* Writes d's degree as the hosts and set names show it: "3x3", "tri3". */
+void kref_degree_name(char *buf, size_t size, const tp_domain *d);
 /* The largest plane (*maxp) and point (*maxk) index the terms of t use; -1 when it has none. */
 void kref_table_max(int *maxp, int *maxk, const tp_table *t);
 
