@@ -637,6 +637,15 @@ for space in clip world; do
         fi
     done
 done
+# mutant_verdict LABEL: the mutant run just made (its status, its output in $tmp/out) failed by
+# calling unsafe classes.
+mutant_verdict() {
+    if [ $? = 0 ] && grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
+        ok "$1 is caught unsafe on exact data"
+    else
+        notok "$1 is caught unsafe" "it passed, or its mutation was not found"
+    fi
+}
 # mutant_caught RULE MARK LABEL [DATA]: the mutated certified clip header $tmp/k.h (of --rule RULE),
 # which must contain MARK (a grep pattern), is caught calling unsafe classes on exact data (DATA,
 # else $cert_short).
@@ -692,27 +701,61 @@ for cfg in "clip gcc -O2" "world clang -O3 -march=native"; do
         notok "$name compiles" "$(head -5 "$tmp/err")"
     fi
 done
-# The cubic triangle's certified C headers and OpenCL kernels on exact data as well, far tangent
-# corners included: there the C header's second look in double decides patches whose float
-# values have the wrong signs, so host_c accepts a class that values() contradicts only when it
-# is the exact one.
-for cfg in "clip strict" "clip degenerate" "world strict" "world degenerate"; do
-    read -r tspace trule <<<"$cfg"
-    targs="--space $tspace --rule $trule --certified --exact 8 5000 41 $cert_far --random 1 5000 43"
-    name="certified c/gcc -O2 -march=native tri3 $tspace $trule"
-    if "$P" --domain triangle --degree 3 --space $tspace --rule $trule --certified --target c \
-        --prefix ptp_tri3_ -o "$tmp/k.h" && build_host_c gcc "-O2 -march=native" "$tmp/k.h" tri3; then
-        run_host "$name" "$tmp/host_c" $(host_degree tri3) $targs --name "$name"
-    else
-        notok "$name compiles" "$(head -5 "$tmp/err")"
-    fi
-    name="certified opencl tri3 $tspace $trule"
-    [ -x "$B/host_opencl" ] && "$P" --domain triangle --degree 3 --target json -o "$tmp/k.json" &&
-        "$P" --domain triangle --degree 3 --space $tspace --rule $trule --certified --target opencl \
-            --prefix ptp_tri3_ -o "$tmp/k.cl" && read -r PQ Q < <(schedule "$tmp/k.json") &&
-        run_host "$name" "$B/host_opencl" "$tmp/k.cl" --kernel ptp_tri3_classify --block-threads $PQ \
-            --patches-per-block $Q $(host_degree tri3) $targs --name "$name"
+# Triangular patches' certified kernels on every runtime, on exact data as well, far tangent
+# corners included: there a second look (the C header's in double, the GPU kernels' in
+# double-float) decides patches whose float values have the wrong signs, so host_c accepts a
+# class that values() contradicts only when it is the exact one. WGSL has no second look and
+# gives those patches up.
+for td in tri1 tri2 tri3 tri4; do
+    "$P" $(args_for json $td clip "") --target json -o "$tmp/$td.json" && read -r PQ Q < <(schedule "$tmp/$td.json")
+    for cfg in "clip strict" "clip degenerate" "world strict" "world degenerate"; do
+        read -r tspace trule <<<"$cfg"
+        dir="$tmp/cert/$td-$tspace-$trule" label="$td $tspace $trule"
+        targs="$(host_degree $td) --space $tspace --rule $trule --certified --exact 8 5000 41 $cert_far --random 1 5000 43"
+        mkdir -p "$dir"
+        for te in $files; do
+            [ ${te%%:*} = json ] && continue
+            "$P" $(args_for ${te%%:*} $td $tspace $trule --certified) --target ${te%%:*} -o "$dir/ptp_$td${te#*:}" ||
+                notok "certified $label ${te%%:*}" "ptpgen failed"
+        done
+        if build_host_c gcc "-O2 -march=native" "$dir/ptp_$td.h" $td; then
+            run_host "certified c/gcc $label" "$tmp/host_c" $targs --name "certified c/gcc -O2 -march=native $label"
+        else
+            notok "certified c $label compiles" "$(head -5 "$tmp/err")"
+        fi
+        [ -x "$B/host_opencl" ] && run_host "certified opencl $label" "$B/host_opencl" "$dir/ptp_$td.cl" \
+            --kernel ptp_${td}_classify --block-threads $PQ --patches-per-block $Q $targs --name "certified opencl $label"
+        for lang in glsl hlsl; do
+            [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ] || continue
+            if to_spirv $lang "$dir/ptp_$td"; then
+                run_host "certified $lang $label" "$B/host_vulkan" "$tmp/k.spv" --block-threads $PQ \
+                    --patches-per-block $Q $extra $targs --name "certified $lang $label"
+            else
+                notok "certified $lang $label compiles to SPIR-V" "$(grep -m3 -i error "$tmp/err")"
+            fi
+        done
+        [ -x "$B/host_wgpu" ] && run_host "certified wgsl $label" "$B/host_wgpu" "$dir/ptp_$td.wgsl" \
+            --block-threads $PQ --patches-per-block $Q $targs --name "certified wgsl $label"
+        if [ $have_emu = 1 ]; then
+            if cuda_emu_host "$dir" $td; then
+                run_host "certified cuda-emu $label" "$tmp/host_cuda_emu" --block-threads $PQ \
+                    --patches-per-block $Q $targs --name "certified cuda-emu $label"
+            else
+                notok "certified cuda $label builds for the emulation" "$(grep -m3 -i error "$tmp/err")"
+            fi
+        fi
+    done
 done
+# ... and the far triangles catch a certified GLSL kernel on lavapipe whose second look bounds by
+# the differences' magnitudes (M2 = M: 11 unsafe of 44,000, far tangent corners).
+if [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ]; then
+    sed 's/float M2 = .*;$/float M2 = M;/' "$tmp/cert/tri3-clip-strict/ptp_tri3.comp" >"$tmp/m.comp"
+    read -r PQ Q < <(schedule "$tmp/tri3.json")
+    grep -q 'float M2 = M;' "$tmp/m.comp" && to_spirv glsl "$tmp/m" &&
+        ! "$B/host_vulkan" "$tmp/k.spv" --block-threads $PQ --patches-per-block $Q $(host_degree tri3) \
+            --space clip --rule strict --certified --exact 8 5000 41 $cert_far --name mutant >"$tmp/out" 2>&1
+    mutant_verdict "a certified GLSL triangle kernel whose second look bounds by the differences' magnitudes"
+fi
 # ... and the exact check can fail there: a header that counts every plane as zero where edge 0 is
 # collapsed, not only the planes along it, must be caught calling patches back that are not.
 "$P" --degree 3 --space clip --rule degenerate --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" &&
@@ -790,15 +833,6 @@ ocl_mutant_caught() {
         grep -q "$4" "$tmp/m/ptp_3x3.cu" && cuda_emu_host "$tmp/m" 3x3 &&
             ! "$tmp/host_cuda_emu" $args >"$tmp/out" 2>&1
         mutant_verdict "$(echo "$5" | sed 's/OpenCL/CUDA/') (emulated)"
-    fi
-}
-# mutant_verdict LABEL: the mutant run just made (its status, its output in $tmp/out) failed by
-# calling unsafe classes.
-mutant_verdict() {
-    if [ $? = 0 ] && grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
-        ok "$1 is caught unsafe on exact data"
-    else
-        notok "$1 is caught unsafe" "it passed, or its mutation was not found"
     fi
 }
 # ... and the exact check can fail there: an OpenCL kernel that counts every plane as zero where
