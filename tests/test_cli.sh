@@ -643,7 +643,7 @@ bad=""
 while read -r t suffix opts desc; do
     "$P" --domain triangle --degree 2 --target $t >"$tmp/o" 2>"$tmp/err" && [ -s "$tmp/o" ] || bad="$bad $t"
     case ",$opts," in *,space,*)
-        head -1 "$tmp/o" | grep -q "^/\* ptp_tri2$suffix: back-patch culling of degree 2 Bezier patches" &&
+        head -1 "$tmp/o" | grep -q "^/\* ptp_tri2$suffix: back-patch culling of degree 2 triangular Bezier patches" &&
             grep -q 'k = (2-i)(3-i)/2 + 2-i-j with b_ijk weighted by u^i v^j w^k' "$tmp/o" || bad="$bad $t(banner)" ;;
     esac
 done <"$tmp/targets"

@@ -11,7 +11,7 @@ typedef struct {
     int ndeg;            /* degrees named by --degree: 2 is NxM */
     int max;             /* the largest supported degree */
     const char *tag;     /* between "ptp_" and the degree in the default prefix */
-    const char *word, *point_axes, *plane_axes, *plane_rows, *conventions;
+    const char *word, *patches, *point_axes, *plane_axes, *plane_rows, *conventions;
     void (*plane_degrees)(int *pu, int *pv, int n, int m);
     int (*count)(int a, int b);
     int (*index)(int a, int b, int i, int j);
@@ -124,11 +124,12 @@ static void tri_rule(char *buf, size_t size, const char *kij, int a, int b)
 }
 
 static const kind_ops kinds[] = {
-    {"quad", 2, PTP_MAX_DEGREE, "", "bidegree", "i along u", "I along u",
+    {"quad", 2, PTP_MAX_DEGREE, "", "bidegree", "Bezier patches", "i along u", "I along u",
      "row I along u, column J along v",
      "point k = i*(m+1)+j and plane P = I*(3m-1)+J, with i and I along u", quad_plane_degrees,
      quad_count, quad_index, quad_coords, quad_has, quad_row_start, quad_rule},
-    {"triangle", 1, PTP_MAX_TRI_DEGREE, "tri", "degree", "b_ijk weighted by u^i v^j w^k",
+    {"triangle", 1, PTP_MAX_TRI_DEGREE, "tri", "degree", "triangular Bezier patches",
+     "b_ijk weighted by u^i v^j w^k",
      "t_IJK weighted by u^I v^J w^K", "row I (power of u), J (power of v) descending",
      "point b_ijk (i+j+k = d) numbered (d-i)(d-i+1)/2+k and plane t_IJK (I+J+K = 3d-3) "
      "numbered (3d-3-I)(3d-2-I)/2+K, descending (i, j), weights u^i v^j w^k with w = 1-u-v",
@@ -323,6 +324,7 @@ void tp_domain_text_get(tp_domain_text *x, const tp_domain *d)
     x->word = k->word;
     tp_domain_format(x->degree, sizeof x->degree, d);
     snprintf(x->name, sizeof x->name, "%s %s", k->word, x->degree);
+    snprintf(x->patches, sizeof x->patches, "%s %s", x->name, k->patches);
     put_degrees(x->plane_degree, sizeof x->plane_degree, k, d->pu, d->pv, "x");
     put_degrees(x->degrees, sizeof x->degrees, k, d->n, d->m, ", ");
     put_degrees(x->plane_degrees, sizeof x->plane_degrees, k, d->pu, d->pv, ", ");

@@ -29,6 +29,7 @@ typedef struct {
     const char *word;        /* "bidegree" */
     char degree[16];         /* "3x3": the --degree argument that reads back as this domain */
     char name[32];           /* "bidegree 3x3" */
+    char patches[64];        /* "bidegree 3x3 Bezier patches", "degree 3 triangular Bezier patches" */
     char plane_degree[16];   /* "7x7" */
     char plane_name[32];     /* "bidegree 7x7" */
     char degrees[16];        /* "3, 3": the items of the JSON "degree" list */
