@@ -401,8 +401,9 @@ int kref_exact_class(const kref_set *s, size_t p, kref_rule rule)
 
 void kref_degree_name(char *buf, size_t size, const tp_domain *d)
 {
-    char f[16];
-    snprintf(buf, size, "%s%s", d->kind == TP_TRI ? "tri" : "", tp_domain_format(f, sizeof f, d));
+    char p[32]; /* the default prefix, "ptp_tri3_": the name between "ptp_" and "_" */
+    size_t n = strlen(tp_domain_prefix(p, sizeof p, d));
+    snprintf(buf, size, "%.*s", (int)(n - 5), p + 4);
 }
 
 /* A uniform double in [lo, hi) from the stream *s. */
