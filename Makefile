@@ -12,8 +12,13 @@ GEN_LAYERS = core plan emit tools cli
 GEN_SRC = $(sort $(foreach l,$(GEN_LAYERS),$(wildcard gen/$(l)/*.c)))
 GEN_HDR = $(sort $(foreach l,$(GEN_LAYERS),$(wildcard gen/$(l)/*.h)))
 TEMPLATES = $(sort $(wildcard templates/*/*))
-# The library the tests link: the generator without main, and the embedded templates.
+# The generator without main, and the embedded templates (the fuzzers compile them with sanitizers).
 LIB_SRC = $(filter-out gen/cli/main.c,$(GEN_SRC)) $(B)/templates.c
+# Each source compiles once per compiler into $(B)/obj/; ptpgen, the tests and the hosts link the
+# objects (make -j compiles them in parallel).
+GEN_OBJ = $(patsubst %.c,$(B)/obj/%.o,$(GEN_SRC)) $(B)/obj/templates.o
+# The library the tests and the hosts link: the generator without main, and kref.
+LIB_OBJ = $(filter-out $(B)/obj/gen/cli/main.o,$(GEN_OBJ)) $(B)/obj/tests/kref.o
 TESTS = $(patsubst tests/%.c,%,$(sort $(wildcard tests/test_*.c)))
 
 all: ptpgen
@@ -23,8 +28,16 @@ all: ptpgen
 ptpgen: $(B)/ptpgen FORCE
 	@cmp -s $< $@ || cp $< $@
 
-$(B)/ptpgen: $(GEN_SRC) $(GEN_HDR) $(B)/templates.c Makefile
-	$(CC) $(STD) $(CFLAGS) $(LDFLAGS) -Igen -o $@ $(GEN_SRC) $(B)/templates.c
+$(B)/ptpgen: $(GEN_OBJ)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(GEN_OBJ)
+
+$(B)/obj/%.o: %.c $(GEN_HDR) tests/kref.h tests/check.h Makefile
+	@mkdir -p $(@D)
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -c -o $@ $<
+
+$(B)/obj/templates.o: $(B)/templates.c gen/emit/template.h Makefile
+	@mkdir -p $(@D)
+	$(CC) $(STD) $(CFLAGS) -Igen -c -o $@ $<
 
 # The templates are compiled in, so an installed ptpgen works from any directory.
 $(B)/templates.c: $(TEMPLATES) $(B)/embed
@@ -34,31 +47,31 @@ $(B)/embed: gen/embed/embed.c
 	@mkdir -p $(B)
 	$(CC) $(STD) -O1 -o $@ $<
 
-$(B)/test_%: tests/test_%.c tests/check.h tests/float_widen.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
-	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lm
+$(B)/test_%: tests/test_%.c tests/check.h tests/float_widen.h tests/kref.h $(GEN_HDR) $(B)/libptptest.a Makefile
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< $(B)/libptptest.a -lm
 
-# The generator library and kref as an archive, for test programs built around emitted headers.
-$(B)/libptptest.a: $(LIB_SRC) $(GEN_HDR) tests/kref.c tests/kref.h tests/check.h Makefile
-	rm -rf $(B)/lib && mkdir -p $(B)/lib
-	cd $(B)/lib && $(CC) $(STD) $(CFLAGS) -I$(CURDIR)/gen -I$(CURDIR)/tests -c $(addprefix $(CURDIR)/,$(LIB_SRC) tests/kref.c)
-	ar rcs $@ $(B)/lib/*.o
+# The generator library and kref as an archive: the tests, the hosts and test programs built
+# around emitted headers link it.
+$(B)/libptptest.a: $(LIB_OBJ)
+	rm -f $@ && ar rcs $@ $(LIB_OBJ)
 
 # The hosts that run emitted kernels: OpenCL through PoCL, Vulkan (GLSL, HLSL) on lavapipe.
-$(B)/host_opencl: tests/host_opencl.c tests/check.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
-	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/kref.c $(LIB_SRC) -lOpenCL -lm
+$(B)/host_opencl: tests/host_opencl.c tests/check.h tests/kref.h $(GEN_HDR) $(B)/libptptest.a Makefile
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< $(B)/libptptest.a -lOpenCL -lm
 
-$(B)/host_vulkan: tests/host_vulkan.c tests/check.h tests/host_run.c tests/host_run.h tests/kref.c tests/kref.h \
-    tests/vk_result.h $(LIB_SRC) $(GEN_HDR) Makefile
-	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/host_run.c tests/kref.c $(LIB_SRC) -lvulkan -lm
+$(B)/host_vulkan: tests/host_vulkan.c tests/check.h tests/host_run.c tests/host_run.h tests/kref.h \
+    tests/vk_result.h $(GEN_HDR) $(B)/libptptest.a Makefile
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -o $@ $< tests/host_run.c $(B)/libptptest.a -lvulkan -lm
 
 # The WGSL host links wgpu-native (WebGPU's C API), from the wheel of the PyPI package wgpu that
 # tests/deps.sh installs into build/venv; WGPU_DIR holds webgpu.h, wgpu.h and the library.
 WGPU_DIR ?= $(firstword $(wildcard $(CURDIR)/build/venv/lib/python3*/site-packages/wgpu/resources))
 
-$(B)/host_wgpu: tests/host_wgpu.c tests/check.h tests/host_run.c tests/host_run.h tests/kref.c tests/kref.h $(LIB_SRC) $(GEN_HDR) Makefile
+$(B)/host_wgpu: tests/host_wgpu.c tests/check.h tests/host_run.c tests/host_run.h tests/kref.h $(GEN_HDR) \
+    $(B)/libptptest.a Makefile
 	@test -n "$(WGPU_DIR)" || { echo "host_wgpu: no wgpu-native (WGPU_DIR): run tests/deps.sh's ptp_ensure_wgpu" >&2; exit 1; }
 	$(CC) $(STD) $(CFLAGS) -Igen -Itests -isystem $(WGPU_DIR) -o $@ $< tests/host_run.c \
-	    tests/kref.c $(LIB_SRC) -L$(WGPU_DIR) -l:libwgpu_native-release.so -Wl,-rpath,$(WGPU_DIR) -lm
+	    $(B)/libptptest.a -L$(WGPU_DIR) -l:libwgpu_native-release.so -Wl,-rpath,$(WGPU_DIR) -lm
 
 # Everything one compiler builds for the tests.
 build-tests: $(B)/ptpgen $(addprefix $(B)/,$(TESTS))
