@@ -154,21 +154,67 @@ cuda_emu_host() {
         build/gcc/libptptest.a -lm -o "$tmp/host_cuda_emu" >"$tmp/err" 2>&1
 }
 
-# cuda_data KIND: runs $tmp/host_cuda (KIND cuda) or $tmp/host_cuda_emu (cuda-emu) on the data of
-# exercise's configuration (its $d, $hcfg, $PQ, $Q, $pl and $label).
-cuda_data() {
+# gpu_runtimes RUN DIR D LABEL: the GPU kernels DIR/ptp_D.{cl,comp,hlsl,wgsl,cu} (degree D as
+# degree_args takes it, default names) on every runtime this machine has: OpenCL on PoCL, GLSL
+# and HLSL on lavapipe (as SPIR-V that spirv-val accepts), WGSL on wgpu-native, CUDA compiled by
+# nvcc (and run where a GPU is) and emulated on the CPU. For each it calls RUN TARGET HOST... with
+# the command that runs the kernel with $PQ threads and $Q patches a workgroup; RUN appends the
+# configuration and the data from its caller's variables, which the gr_ locals here do not hide.
+# A kernel that does not compile is a "not ok" naming LABEL.
+gpu_runtimes() {
+    local gr_run=$1 gr_dir=$2 gr_d=$3 gr_label=$4 lang extra
+    local sched="--block-threads $PQ --patches-per-block $Q"
+    [ -x "$B/host_opencl" ] && $gr_run opencl "$B/host_opencl" "$gr_dir/ptp_$gr_d.cl" --kernel ptp_${gr_d}_classify $sched
+    for lang in glsl hlsl; do
+        [ $have_gpu_tools = 1 ] || break
+        if ! to_spirv $lang "$gr_dir/ptp_$gr_d"; then
+            notok "$lang $gr_label compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
+            continue
+        fi
+        ok "$lang $gr_label compiles to SPIR-V that spirv-val accepts"
+        [ -x "$B/host_vulkan" ] && $gr_run $lang "$B/host_vulkan" "$tmp/k.spv" $sched $extra
+    done
+    [ -x "$B/host_wgpu" ] && $gr_run wgsl "$B/host_wgpu" "$gr_dir/ptp_$gr_d.wgsl" $sched
+    if [ -x "$NVCC" ]; then
+        if cuda_compile "$gr_dir" $gr_d && cuda_host "$gr_dir" $gr_d; then
+            ok "cuda $gr_label compiles with nvcc (-c, -ptx with the entry ptp_${gr_d}_classify, and the host)"
+            cuda_no_fmad "$gr_label" "$gr_dir" $gr_d
+            # The host runs wherever a GPU is (it says so when there is none).
+            $gr_run cuda "$tmp/host_cuda" $sched
+        else
+            notok "cuda $gr_label compiles with nvcc" "$(grep -m3 -i error "$tmp/err")"
+        fi
+    fi
+    if [ $have_emu = 1 ]; then
+        if cuda_emu_host "$gr_dir" $gr_d; then
+            $gr_run cuda-emu "$tmp/host_cuda_emu" $sched
+        else
+            notok "cuda $gr_label builds for the emulation with $CUDA_EMU_CXX" "$(grep -m3 -i error "$tmp/err")"
+        fi
+    fi
+    return 0
+}
+
+# exercise_run TARGET HOST...: exercise's configuration (its $d, $hcfg, $pl and $label) through
+# HOST on each patch set of data_args; WGSL on exact data too (collapsed edges: exact zeros).
+exercise_run() {
+    local target=$1 data
+    shift
     data_args $d | while read -r data; do
-        run_host "$1 $label" "$tmp/host_${1/-/_}" $hcfg --block-threads $PQ --patches-per-block $Q \
-            $pl $data --name "$1 $label ${data%% *}"
+        if [ $target = wgsl ]; then
+            [ "${data%% *}" = --random ] && data="$data --exact 10 200 $seed"
+            # A 4x4 WGSL kernel takes about 1 ms a patch on lavapipe: a tenth of the patches.
+            [ $d = 4x4 ] && data=${data/--random 1 10000/--random 1 1000} && data=${data/--exact 10 200/--exact 10 20}
+        fi
+        run_host "$target $label" "$@" $hcfg $pl $data --name "$target $label ${data%% *}"
     done
 }
 
 # exercise DIR D SPACE RULE PLANES PQ Q LABEL: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu,wgsl}
 # (degree D as degree_args takes it, default names) and runs each on the data of data_args against the reference.
 exercise() {
-    local dir=$1 d=$2 space=$3 rule=$4 pl="" PQ=$6 Q=$7 label=$8 up cc lang extra rc data
+    local dir=$1 d=$2 pl="" PQ=$6 Q=$7 label=$8 cc data
     local hcfg="$(host_degree $2) --space $3 --rule $4"
-    up=$(echo "ptp_${d}_" | tr a-z A-Z)
     [ "$5" = 1 ] && pl=--planes
 
     # C, with gcc and clang.
@@ -182,65 +228,7 @@ exercise() {
             notok "c $label compiles with $cc" "$(head -5 "$tmp/err")"
         fi
     done
-
-    # OpenCL on PoCL.
-    if [ -x "$B/host_opencl" ]; then
-        data_args $d | while read -r data; do
-            run_host "opencl $label" "$B/host_opencl" "$dir/ptp_$d.cl" --kernel ptp_${d}_classify $hcfg \
-                --block-threads $PQ --patches-per-block $Q $pl $data --name "opencl $label ${data%% *}"
-        done
-    fi
-
-    # GLSL and HLSL: SPIR-V that spirv-val accepts, run on lavapipe.
-    if [ $have_gpu_tools = 1 ]; then
-        for lang in glsl hlsl; do
-            if ! to_spirv $lang "$dir/ptp_$d"; then
-                notok "$lang $label compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
-                continue
-            fi
-            ok "$lang $label compiles to SPIR-V that spirv-val accepts"
-            [ -x "$B/host_vulkan" ] || continue
-            data_args $d | while read -r data; do
-                run_host "$lang $label" "$B/host_vulkan" "$tmp/k.spv" $hcfg --block-threads $PQ \
-                    --patches-per-block $Q $pl $extra $data --name "$lang $label ${data%% *}"
-            done
-        done
-    fi
-
-    # WGSL on wgpu-native (lavapipe through Vulkan), on exact data too (collapsed edges: exact zeros).
-    if [ -x "$B/host_wgpu" ]; then
-        data_args $d | while read -r data; do
-            [ "${data%% *}" = --random ] && data="$data --exact 10 200 $seed"
-            # A 4x4 WGSL kernel takes about 1 ms a patch on lavapipe: a tenth of the patches.
-            [ $d = 4x4 ] && data=${data/--random 1 10000/--random 1 1000} && data=${data/--exact 10 200/--exact 10 20}
-            run_host "wgsl $label" "$B/host_wgpu" "$dir/ptp_$d.wgsl" $hcfg --block-threads $PQ \
-                --patches-per-block $Q $pl $data --name "wgsl $label ${data%% *}"
-        done
-    fi
-
-    # CUDA: compiled to an object and to PTX, and run by tests/host_cuda.cu where a GPU is.
-    if [ -x "$NVCC" ]; then
-        if cuda_compile "$dir" $d; then
-            ok "cuda $label compiles with nvcc (-c and -ptx, entry ptp_${d}_classify)"
-            cuda_no_fmad "$label" "$dir" $d
-            # The host links here and runs wherever a GPU is (it says so when there is none).
-            if cuda_host "$dir" $d; then
-                cuda_data cuda
-            else
-                notok "cuda $label host builds with nvcc" "$(grep -m2 error "$tmp/err")"
-            fi
-        else
-            notok "cuda $label compiles with nvcc" "$(head -5 "$tmp/err")"
-        fi
-    fi
-    # CUDA emulated on the CPU, on the same data.
-    if [ $have_emu = 1 ]; then
-        if cuda_emu_host "$dir" $d; then
-            cuda_data cuda-emu
-        else
-            notok "cuda $label builds for the emulation with $CUDA_EMU_CXX" "$(grep -m2 error "$tmp/err")"
-        fi
-    fi
+    gpu_runtimes exercise_run "$dir" $d "$label"
 }
 
 # Freshly generated kernels, with --planes: every degree (triangles too), space and rule of the
@@ -563,11 +551,11 @@ exact_run() {
         notok "$name: plain float is unsafe on some exact patch" "${n:-no} unsafe classes reported"
     fi
 }
-# run_exact TARGET DATA CMD...: the exact data DATA through a host, and for a certified kernel
-# the random data too ($space, $kind and the host options $hcfg of the loop below).
+# run_exact TARGET HOST...: the exact data $data through HOST, and for a certified kernel the
+# random data too ($space, $kind and the host options $hcfg of the loop below).
 run_exact() {
-    local target=$1 data=$2
-    shift 2
+    local target=$1
+    shift
     exact_run "$target 3x3 $space $kind" $kind "$@" $hcfg $data --name "$kind $target 3x3 $space exact"
     [ $kind = certified ] && run_host "$target 3x3 $space certified random" "$@" $hcfg \
         --random 1 10000 43 --name "certified $target 3x3 $space random"
@@ -591,50 +579,12 @@ for space in clip world; do
         for cc in "gcc -O2" "gcc -O2 -march=native" "clang -O3 -march=native"; do
             command -v ${cc%% *} >/dev/null || continue
             if build_host_c ${cc%% *} "${cc#* }" "$dir/ptp_3x3.h" 3x3; then
-                run_exact "c/$cc" "$data" "$tmp/host_c"
+                run_exact "c/$cc" "$tmp/host_c"
             else
                 notok "c 3x3 $space $kind compiles with $cc" "$(head -5 "$tmp/err")"
             fi
         done
-
-        # OpenCL on PoCL.
-        [ -x "$B/host_opencl" ] && run_exact opencl "$data" "$B/host_opencl" "$dir/ptp_3x3.cl" \
-            --kernel ptp_3x3_classify --block-threads $PQ --patches-per-block $Q
-
-        # GLSL and HLSL on lavapipe.
-        if [ $have_gpu_tools = 1 ]; then
-            for lang in glsl hlsl; do
-                if ! to_spirv $lang "$dir/ptp_3x3"; then
-                    notok "$lang 3x3 $space $kind compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
-                    continue
-                fi
-                [ -x "$B/host_vulkan" ] && run_exact $lang "$data" "$B/host_vulkan" "$tmp/k.spv" \
-                    --block-threads $PQ --patches-per-block $Q $extra
-            done
-        fi
-
-        # WGSL on wgpu-native.
-        [ -x "$B/host_wgpu" ] && run_exact wgsl "$data" "$B/host_wgpu" "$dir/ptp_3x3.wgsl" \
-            --block-threads $PQ --patches-per-block $Q
-
-        # CUDA: compiled, and run where a GPU is.
-        if [ -x "$NVCC" ]; then
-            if cuda_compile "$dir" 3x3 && cuda_host "$dir" 3x3; then
-                ok "cuda 3x3 $space $kind compiles with nvcc (-c, -ptx and the host)"
-                cuda_no_fmad "3x3 $space $kind" "$dir" 3x3
-                run_exact cuda "$data" "$tmp/host_cuda" --block-threads $PQ --patches-per-block $Q
-            else
-                notok "cuda 3x3 $space $kind compiles with nvcc" "$(grep -m3 -i error "$tmp/err")"
-            fi
-        fi
-        # CUDA emulated on the CPU: the same float operations as on a GPU (cuda_no_fmad).
-        if [ $have_emu = 1 ]; then
-            if cuda_emu_host "$dir" 3x3; then
-                run_exact cuda-emu "$data" "$tmp/host_cuda_emu" --block-threads $PQ --patches-per-block $Q
-            else
-                notok "cuda 3x3 $space $kind builds for the emulation" "$(grep -m3 -i error "$tmp/err")"
-            fi
-        fi
+        gpu_runtimes run_exact "$dir" 3x3 "3x3 $space $kind"
     done
 done
 # mutant_verdict LABEL: the mutant run just made (its status, its output in $tmp/out) failed by
@@ -701,6 +651,12 @@ for cfg in "clip gcc -O2" "world clang -O3 -march=native"; do
         notok "$name compiles" "$(head -5 "$tmp/err")"
     fi
 done
+# cert_tri_run TARGET HOST...: the configuration of the loop below ($label, $targs) through HOST.
+cert_tri_run() {
+    local target=$1
+    shift
+    run_host "certified $target $label" "$@" $targs --name "certified $target $label"
+}
 # Triangular patches' certified kernels on every runtime, on exact data as well, far tangent
 # corners included: there a second look (the C header's in double, the GPU kernels' in
 # double-float) decides patches whose float values have the wrong signs, so host_c accepts a
@@ -727,27 +683,7 @@ for td in tri1 tri2 tri3 tri4; do
         else
             notok "certified c $label compiles" "$(head -5 "$tmp/err")"
         fi
-        [ -x "$B/host_opencl" ] && run_host "certified opencl $label" "$B/host_opencl" "$dir/ptp_$td.cl" \
-            --kernel ptp_${td}_classify --block-threads $PQ --patches-per-block $Q $targs --name "certified opencl $label"
-        for lang in glsl hlsl; do
-            [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ] || continue
-            if to_spirv $lang "$dir/ptp_$td"; then
-                run_host "certified $lang $label" "$B/host_vulkan" "$tmp/k.spv" --block-threads $PQ \
-                    --patches-per-block $Q $extra $targs --name "certified $lang $label"
-            else
-                notok "certified $lang $label compiles to SPIR-V" "$(grep -m3 -i error "$tmp/err")"
-            fi
-        done
-        [ -x "$B/host_wgpu" ] && run_host "certified wgsl $label" "$B/host_wgpu" "$dir/ptp_$td.wgsl" \
-            --block-threads $PQ --patches-per-block $Q $targs --name "certified wgsl $label"
-        if [ $have_emu = 1 ]; then
-            if cuda_emu_host "$dir" $td; then
-                run_host "certified cuda-emu $label" "$tmp/host_cuda_emu" --block-threads $PQ \
-                    --patches-per-block $Q $targs --name "certified cuda-emu $label"
-            else
-                notok "certified cuda $label builds for the emulation" "$(grep -m3 -i error "$tmp/err")"
-            fi
-        fi
+        gpu_runtimes cert_tri_run "$dir" $td "certified $label"
     done
 done
 # ... and the far triangles catch a certified GLSL kernel on lavapipe whose second look bounds by
