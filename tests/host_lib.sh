@@ -1,4 +1,4 @@
-# host_lib.sh: the check-line helpers of the test scripts (sourced by tests/test_kernels.sh,
+# host_lib.sh: the check-line helpers of the test scripts (sourced by tests/kernels_lib.sh,
 # test_wgpu.sh, test_refine.sh and test_cullrate.sh).
 
 ok() { echo "ok - $1"; }
