@@ -31,7 +31,11 @@ ptpgen: $(B)/ptpgen FORCE
 $(B)/ptpgen: $(GEN_OBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(GEN_OBJ)
 
-$(B)/obj/%.o: %.c $(GEN_HDR) tests/kref.h tests/check.h Makefile
+$(B)/obj/gen/%.o: gen/%.c $(GEN_HDR) Makefile
+	@mkdir -p $(@D)
+	$(CC) $(STD) $(CFLAGS) -Igen -c -o $@ $<
+
+$(B)/obj/tests/kref.o: tests/kref.c tests/kref.h tests/check.h $(GEN_HDR) Makefile
 	@mkdir -p $(@D)
 	$(CC) $(STD) $(CFLAGS) -Igen -Itests -c -o $@ $<
 
