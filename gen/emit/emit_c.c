@@ -306,12 +306,14 @@ static void put_strict_macros(sbuf *o, const char *px, const char *up)
 }
 
 /* The lanes function's comment, attributes and head, and the eye's values (certified: E). */
-static void put_lanes_head(sbuf *o, const out_info *info, const char *up)
+static void put_lanes_head(sbuf *o, const out_info *info, const cert_bounds *cb, const char *up)
 {
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD;
     if (info->certified)
         emit_c_cert_macros(o, px, up);
+    if (emit_c_cert_late(info))
+        emit_c_cert_late_macros(o, cb, px, up);
     if (info->certified || info->rule == OUT_STRICT)
         put_strict_macros(o, px, up);
     sbuf_printf(o,
@@ -374,17 +376,25 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
                 info->certified ? ", t, s" : "", up, up, up, up, up,
                 world ? "" : "                if (k % 4 != 2) /* z: clip space never reads it */\n",
                 world ? 16 : 20, "", up, world ? 16 : 20, "", up, up);
+    if (emit_c_cert_late(info))
+        sbuf_printf(o, "#if %sCLATE\n        %svf raw[%sPLANES];\n#endif\n", up, px, up);
 }
 
 /* Certified: the magnitudes and the size guard, from loads of their own (gcc keeps the points
- * where first read, and the lanes run faster); degenerate rule: every point's coordinates up
- * front (put_point) and the collapsed edges. */
+ * where first read, and the lanes run faster), here unless CLATE puts them after the planes;
+ * degenerate rule: every point's coordinates up front (put_point) and the collapsed edges. */
 static void put_loads(sbuf *o, const slp_prog *p, const tp_table *t, const out_info *info,
-                      const cert_bounds *cb, unsigned char *done)
+                      const cert_bounds *cb, const char *up, unsigned char *done)
 {
     int k;
     if (!info->certified)
         return;
+    if (emit_c_cert_late(info)) {
+        sbuf_printf(o, "#if !%sCLATE\n", up);
+        emit_c_cert_magnitudes(o, t->dom.npoints, info, cb);
+        sbuf_puts(o, "#endif\n");
+        return;
+    }
     emit_c_cert_magnitudes(o, t->dom.npoints, info, cb);
     if (!emit_c_cert_zeros(info))
         return;
@@ -551,11 +561,13 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     int st;
     if (!done)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-    put_lanes_head(o, info, up);
+    put_lanes_head(o, info, cb, up);
     put_lanes_loop(o, info, up);
-    put_loads(o, p, t, info, cb, done);
+    put_loads(o, p, t, info, cb, up, done);
     st = put_program(o, p, cb, info, up, done, err);
     free(done);
+    if (st == PTP_OK && emit_c_cert_late(info))
+        emit_c_cert_late_bounds(o, t->dom.npoints, info, cb, up);
     if (st == PTP_OK)
         put_lanes_class(o, info, up);
     return st;

@@ -68,6 +68,11 @@ int emit_c_cert_zeros(const out_info *info)
     return info->certified && info->rule == OUT_DEGENERATE;
 }
 
+int emit_c_cert_late(const out_info *info)
+{
+    return info->certified && !emit_c_cert_zeros(info);
+}
+
 /* The first point on boundary edge e of d. */
 static int edge_first(const tp_domain *d, int e)
 {
@@ -198,6 +203,38 @@ void emit_c_cert_macros(sbuf *o, const char *px, const char *up)
                 up, up, up, px, up, up);
 }
 
+void emit_c_cert_late_macros(sbuf *o, const cert_bounds *cb, const char *px, const char *up)
+{
+    int k;
+    sbuf_printf(o, "/* Certified: cert_k[P] = -K_P, the bound of plane P's value over ER3. CBOUND(P) bounds the\n"
+                   " * value v of plane P: t = |v| - K_P ER3 into s, their minimum. With vectors (gcc, CLATE)\n"
+                   " * the lanes keep v in raw[P] and bound the values in a loop after the planes, which keeps\n"
+                   " * the straight-line code as small as the plain one (its size decides its speed); one patch\n"
+                   " * a lane (clang vectorizes the loop), at once. */\n"
+                   "static const float %scert_k[%d] = {",
+                px, cb->nplanes);
+    for (k = 0; k < cb->nplanes; k++)
+        sbuf_printf(o, "%s%.8ef", k == 0 ? "\n    " : k % 4 ? ", " : ",\n    ", -(double)cb->k[k]);
+    sbuf_printf(o, "\n};\n#if %sVW > 1\n#define %sCLATE 1\n#define %sCBOUND(P) (raw[P] = v)\n#else\n"
+                   "#define %sCLATE 0\n"
+                   "#define %sCBOUND(P) (t = %sVFMAS(%scert_k[P], ER3, %sVABS(v)), s = %sVMIN(s, t))\n#endif\n",
+                up, up, up, up, up, up, px, up, up);
+}
+
+void emit_c_cert_late_bounds(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb,
+                             const char *up)
+{
+    const char *px = info->prefix;
+    sbuf_printf(o, "#if %sCLATE\n"
+                   "        __asm__(\"\" : \"+r\"(q)); /* the magnitudes load the points again: not kept live */\n",
+                up);
+    emit_c_cert_magnitudes(o, npoints, info, cb);
+    sbuf_printf(o, "        {\n            size_t P;\n            for (P = 0; P < %sPLANES; P++) {\n"
+                   "                t = %sVFMAS(%scert_k[P], ER3, %sVABS(raw[P]));\n"
+                   "                s = %sVMIN(s, t);\n            }\n        }\n#endif\n",
+                up, up, px, up, up);
+}
+
 void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
 {
     static const char crd[] = "xyzw";
@@ -302,6 +339,10 @@ void emit_c_cert_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const 
         sbuf_puts(o, i ? ";" : ";\n");
     }
     sbuf_printf(o, " /* plane %d */\n", plane);
+    if (emit_c_cert_late(info)) {
+        sbuf_printf(o, "        %sCBOUND(%d);\n", up, plane);
+        return;
+    }
     sbuf_printf(o, "        t = %sVFMAS(%.8ef, ER3, %sVABS(v)); /* minus the bound of plane %d */\n",
                 up, -(double)cb->k[plane], up, plane);
     if (!zero) {

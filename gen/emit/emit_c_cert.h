@@ -17,6 +17,20 @@ int emit_c_cert_zeros(const out_info *info);
  * those): a minimum above F > 0 is the least value above F. */
 void emit_c_cert_macros(sbuf *o, const char *px, const char *up);
 
+/* Nonzero for a certified header whose planes all take the strict bound (no collapsed-edge
+ * zeros): its lanes bound the values after the planes where they run on vectors (CLATE). */
+int emit_c_cert_late(const out_info *info);
+
+/* Appends cert_k (the planes' -K_P from cb) and the macros CLATE (1 where the lanes run on
+ * vectors, VW > 1) and CBOUND(P) (plane P's value v kept in raw[P] under CLATE, else bounded at
+ * once into s), for a header where emit_c_cert_late holds. */
+void emit_c_cert_late_macros(sbuf *o, const cert_bounds *cb, const char *px, const char *up);
+
+/* Appends, under CLATE, the magnitudes (emit_c_cert_magnitudes, from the points loaded again)
+ * and the loop that bounds every plane's kept value raw[P] into s. After the planes. */
+void emit_c_cert_late_bounds(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb,
+                             const char *up);
+
 /* Appends the lanes' certified magnitudes from loads of their own: the largest |coordinate| Rc
  * of each coordinate c the kernel reads over the npoints points, their maximum R, ER3 >= every
  * monomial's magnitude (clip: E Rx Ry Rw; world: |e_i| times the other three coordinates' Rc,
@@ -34,7 +48,8 @@ void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info);
  * plane that a collapsed edge of p->zero[plane] zeros counts as both); t = |v| - K_P ER3
  * (cb->k), rounded once (twice without FMA: K_P allows it), into s, their minimum (or, on a
  * plane a collapsed edge can zero, into amb where t is not above F and the edge is not
- * collapsed); the signs are certified where s > F and amb is clear (README: Certified). */
+ * collapsed); the signs are certified where s > F and amb is clear (README: Certified). Where
+ * emit_c_cert_late holds, t and s come from CBOUND(plane). */
 void emit_c_cert_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
                        const char *up, int plane, int first);
 
