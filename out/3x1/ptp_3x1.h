@@ -155,11 +155,16 @@ static inline void ptp_3x1_vstore(unsigned char *cls, ptp_3x1_vm c, size_t count
     for (i = 0; i < count && i < PTP_3X1_VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* d[i] = v[i] for the first count (at most PTP_3X1_VW) lanes. */
+/* d[i] = v[i] for the first count (at most PTP_3X1_VW) lanes; a whole vector in one store (gcc
+ * otherwise stores lane by lane, and each plane's store grows the lanes' code). */
 static inline void ptp_3x1_vstoref(float *d, ptp_3x1_vf v, size_t count)
 {
     size_t i;
-    for (i = 0; i < count && i < PTP_3X1_VW; i++)
+    if (count >= PTP_3X1_VW) {
+        memcpy(d, &v, sizeof v);
+        return;
+    }
+    for (i = 0; i < count; i++)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's

@@ -128,11 +128,16 @@ static inline void {{PREFIX}}vstore(unsigned char *cls, {{PREFIX}}vm c, size_t c
     for (i = 0; i < count && i < {{UPREFIX}}VW; i++)
         cls[i] = (unsigned char)c[i];
 }
-/* d[i] = v[i] for the first count (at most {{UPREFIX}}VW) lanes. */
+/* d[i] = v[i] for the first count (at most {{UPREFIX}}VW) lanes; a whole vector in one store (gcc
+ * otherwise stores lane by lane, and each plane's store grows the lanes' code). */
 static inline void {{PREFIX}}vstoref(float *d, {{PREFIX}}vf v, size_t count)
 {
     size_t i;
-    for (i = 0; i < count && i < {{UPREFIX}}VW; i++)
+    if (count >= {{UPREFIX}}VW) {
+        memcpy(d, &v, sizeof v);
+        return;
+    }
+    for (i = 0; i < count; i++)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
