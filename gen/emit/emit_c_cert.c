@@ -206,33 +206,31 @@ void emit_c_cert_macros(sbuf *o, const char *px, const char *up)
 void emit_c_cert_late_macros(sbuf *o, const cert_bounds *cb, const char *px, const char *up)
 {
     int k;
-    sbuf_printf(o, "/* Certified: cert_k[P] = -K_P, the bound of plane P's value over ER3. CBOUND(P) bounds the\n"
-                   " * value v of plane P: t = |v| - K_P ER3 into s, their minimum. With vectors (gcc, CLATE)\n"
-                   " * the lanes keep v in raw[P] and bound the values in a loop after the planes, which keeps\n"
-                   " * the straight-line code as small as the plain one (its size decides its speed); one patch\n"
-                   " * a lane (clang vectorizes the loop), at once. */\n"
+    sbuf_printf(o, "/* Certified: cert_k[P] = -K_P, the bound of plane P's value over ER3. CMIN(P, x): s = the\n"
+                   " * least of s and |x| - K_P ER3. CBOUND(P) bounds the value v of plane P: with vectors (gcc,\n"
+                   " * CLATE) the lanes keep v in raw[P] and bound the values in a loop after the planes, which\n"
+                   " * keeps the straight-line code as small as the plain one (its size decides its speed); one\n"
+                   " * patch a lane (clang vectorizes the loop), at once. */\n"
                    "static const float %scert_k[%d] = {",
                 px, cb->nplanes);
     for (k = 0; k < cb->nplanes; k++)
         sbuf_printf(o, "%s%.8ef", k == 0 ? "\n    " : k % 4 ? ", " : ",\n    ", -(double)cb->k[k]);
-    sbuf_printf(o, "\n};\n#if %sVW > 1\n#define %sCLATE 1\n#define %sCBOUND(P) (raw[P] = v)\n#else\n"
-                   "#define %sCLATE 0\n"
-                   "#define %sCBOUND(P) (t = %sVFMAS(%scert_k[P], ER3, %sVABS(v)), s = %sVMIN(s, t))\n#endif\n",
-                up, up, up, up, up, up, px, up, up);
+    sbuf_printf(o, "\n};\n#define %sCMIN(P, x) (t = %sVFMAS(%scert_k[P], ER3, %sVABS(x)), s = %sVMIN(s, t))\n"
+                   "#if %sVW > 1\n#define %sCLATE 1\n#define %sCBOUND(P) (raw[P] = v)\n#else\n"
+                   "#define %sCLATE 0\n#define %sCBOUND(P) %sCMIN(P, v)\n#endif\n",
+                up, up, px, up, up, up, up, up, up, up, up);
 }
 
 void emit_c_cert_late_bounds(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb,
                              const char *up)
 {
-    const char *px = info->prefix;
     sbuf_printf(o, "#if %sCLATE\n"
                    "        __asm__(\"\" : \"+r\"(q)); /* the magnitudes load the points again: not kept live */\n",
                 up);
     emit_c_cert_magnitudes(o, npoints, info, cb);
-    sbuf_printf(o, "        {\n            size_t P;\n            for (P = 0; P < %sPLANES; P++) {\n"
-                   "                t = %sVFMAS(%scert_k[P], ER3, %sVABS(raw[P]));\n"
-                   "                s = %sVMIN(s, t);\n            }\n        }\n#endif\n",
-                up, up, px, up, up);
+    sbuf_printf(o, "        {\n            size_t P;\n            for (P = 0; P < %sPLANES; P++)\n"
+                   "                %sCMIN(P, raw[P]);\n        }\n#endif\n",
+                up, up);
 }
 
 void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)

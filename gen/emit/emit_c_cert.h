@@ -21,9 +21,9 @@ void emit_c_cert_macros(sbuf *o, const char *px, const char *up);
  * zeros): its lanes bound the values after the planes where they run on vectors (CLATE). */
 int emit_c_cert_late(const out_info *info);
 
-/* Appends cert_k (the planes' -K_P from cb) and the macros CLATE (1 where the lanes run on
- * vectors, VW > 1) and CBOUND(P) (plane P's value v kept in raw[P] under CLATE, else bounded at
- * once into s), for a header where emit_c_cert_late holds. */
+/* Appends cert_k (the planes' -K_P from cb) and the macros CMIN(P, x) (x bounded as plane P's
+ * value, into s), CLATE (1 where the lanes run on vectors, VW > 1) and CBOUND(P) (plane P's value
+ * v kept in raw[P] under CLATE, else CMIN at once), for a header where emit_c_cert_late holds. */
 void emit_c_cert_late_macros(sbuf *o, const cert_bounds *cb, const char *px, const char *up);
 
 /* Appends, under CLATE, the magnitudes (emit_c_cert_magnitudes, from the points loaded again)
