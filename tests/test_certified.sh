@@ -88,13 +88,9 @@ mutant_verdict() {
 # which must contain MARK (a grep pattern), is caught calling unsafe classes on exact data (DATA,
 # else $cert_short).
 mutant_caught() {
-    if grep -q "$2" "$tmp/k.h" && build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
-        ! "$tmp/host_c" --degree 3 3 --space clip --rule $1 --certified ${4:-$cert_short} --name mutant >"$tmp/out" 2>&1 &&
-        grep -q '^not ok - mutant.*certified: no unsafe class' "$tmp/out"; then
-        ok "$3 is caught unsafe on exact data"
-    else
-        notok "$3 is caught unsafe" "it passed, or its mutation was not found"
-    fi
+    grep -q "$2" "$tmp/k.h" && build_host_c gcc -O2 "$tmp/k.h" 3x3 &&
+        ! "$tmp/host_c" --degree 3 3 --space clip --rule $1 --certified ${4:-$cert_short} --name mutant >"$tmp/out" 2>&1
+    mutant_verdict "$3"
 }
 # The exact check can fail: a certified header whose bounds are 2^10 times too small must be
 # caught calling patches back or front that are not.
