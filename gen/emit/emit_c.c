@@ -9,8 +9,7 @@
 #include "emit/kern.h"
 #include "plan/cert.h"
 #include "plan/slp.h"
-#include "plan/slp_order.h"
-#include "plan/slp_point.h"
+#include "emit/slp_text.h"
 #include "emit/template.h"
 
 #include <stdio.h>
@@ -61,224 +60,6 @@ static void put_functions(sbuf *o, const out_info *info, const char *up)
                 "            t[%sterm_idx[x][0]][c] += %sterm_wgt[x] * r[c];\n"
                 "    }\n}\n\n",
                 px, up, up, px, px, px, px, px, px);
-}
-
-/* One bracket of a term: ((G(b_j) M(k,l) - G(b_k) M(j,l)) + G(b_l) M(j,k)) for one kind, with G
- * named g0, g1, ... and the minors m0_1, ... (letters g and m chosen by the caller). */
-static void put_bracket(sbuf *o, const slp_prog *p, const slp_term *x, char g, char m)
-{
-    const slp_pair *q = p->pairs;
-    sbuf_printf(o, "((%c%d * %c%d_%d - %c%d * %c%d_%d) + %c%d * %c%d_%d)", g, x->point[0], m,
-                q[x->pair[0]].k, q[x->pair[0]].l, g, x->point[1], m, q[x->pair[1]].k,
-                q[x->pair[1]].l, g, x->point[2], m, q[x->pair[2]].k, q[x->pair[2]].l);
-}
-
-/* Loads point k's coordinates (world: with the eye's products a, b; clip: g = e2 w) unless
- * done[npairs + k]: where first read, or all up front (put_loads). */
-static void put_point(sbuf *o, const slp_prog *p, int k, int world, const char *px,
-                      unsigned char *done)
-{
-    if (done[p->npairs + (size_t)k])
-        return;
-    done[p->npairs + (size_t)k] = 1;
-    if (world)
-        sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
-                       "            z%d = %svload(q + %d * qs), w%d = %svload(q + %d * qs);\n"
-                       "        const %svf a%d = e0 * y%d - e1 * x%d, b%d = e2 * w%d - e3 * z%d;\n",
-                    px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 2, k, px, 4 * k + 3, px, k,
-                    k, k, k, k, k);
-    else
-        sbuf_printf(o, "        const %svf x%d = %svload(q + %d * qs), y%d = %svload(q + %d * qs),\n"
-                       "            w%d = %svload(q + %d * qs), g%d = e2 * w%d;\n",
-                    px, k, px, 4 * k, k, px, 4 * k + 1, k, px, 4 * k + 3, k, k);
-}
-
-/* Declares the minor pair unless done[pair], after its points. */
-static void put_minor(sbuf *o, const slp_prog *p, int pair, int world, const char *px,
-                      unsigned char *done)
-{
-    const slp_pair *q = &p->pairs[pair];
-    if (done[pair])
-        return;
-    done[pair] = 1;
-    put_point(o, p, q->k, world, px, done);
-    put_point(o, p, q->l, world, px, done);
-    sbuf_printf(o, "        const %svf m%d_%d = x%d * y%d - y%d * x%d;\n", px, q->k, q->l, q->k, q->l,
-                q->k, q->l);
-    if (world)
-        sbuf_printf(o, "        const %svf n%d_%d = z%d * w%d - w%d * z%d;\n", px, q->k, q->l, q->k,
-                    q->l, q->k, q->l);
-}
-
-/* The signed sum of the minors (letter m) of fused entries [a, b), positive ones first. */
-static void put_minor_sum(sbuf *o, const slp_prog *p, size_t a, size_t b, char m)
-{
-    size_t i;
-    int pass, n = 0;
-    for (pass = 0; pass < 2; pass++)
-        for (i = a; i < b; i++) {
-            const slp_entry *x = &p->entries[i];
-            const slp_pair *q = &p->pairs[x->pair];
-            if (x->neg != pass)
-                continue;
-            sbuf_printf(o, "%s%c%d_%d", n++ ? (x->neg ? " - " : " + ") : x->neg ? "-" : "", m, q->k,
-                        q->l);
-        }
-}
-
-/* Appends 2^a u as a doublings, ((u + u) + (u + u)) (the compiler shares the repeats). */
-static void put_doubled(sbuf *o, int a)
-{
-    if (a == 0) {
-        sbuf_puts(o, "u");
-        return;
-    }
-    sbuf_puts(o, "(");
-    put_doubled(o, a - 1);
-    sbuf_puts(o, " + ");
-    put_doubled(o, a - 1);
-    sbuf_puts(o, ")");
-}
-
-/* Appends v's update with the group's sum u at scale s: assigned for the plane's first group.
- * s on the adders (slp_scale_of): 2^k u as one sum of doublings; else u's doublings and all
- * factors but the last into u, the last into v. Any other s: a product, or a multiply-add. */
-static void put_group_end(sbuf *o, const rat *s, int first_group, const char *up)
-{
-    char sv[RAT_STRLEN];
-    const char *to = first_group ? "=" : "+=";
-    slp_scale c;
-    int i;
-    rat one;
-    rat_set_si(&one, 1);
-    rat_get_str(sv, s);
-    if (rat_equal(s, &one))
-        sbuf_printf(o, "        v %s u;\n", to);
-    else if (slp_scale_of(&c, s) && c.nf == 0) {
-        sbuf_printf(o, "        v %s ", to);
-        put_doubled(o, c.shift);
-        sbuf_puts(o, ";\n");
-    } else if (slp_scale_of(&c, s)) {
-        for (i = 0; i < c.shift; i++)
-            sbuf_puts(o, "        u = u + u;\n");
-        for (i = 0; i < c.nf; i++) {
-            sbuf_printf(o, i + 1 < c.nf ? "        u = " : "        v %s ", to);
-            put_doubled(o, c.a[i]);
-            sbuf_puts(o, c.sign[i] > 0 ? " + u;\n" : " - u;\n");
-        }
-    } else if (first_group)
-        sbuf_printf(o, "        v = %s.0f * u;\n", sv);
-    else
-        sbuf_printf(o, "        v = %sVFMAS(%s.0f, u, v);\n", up, sv);
-}
-
-/* A fused plane from entries [a, ...): per group u = sum over points b of G(b) times the signed
- * sum of b's minors, with multiply-adds, then v; returns the end of the plane's entries. */
-static size_t put_fused(sbuf *o, const slp_prog *p, size_t a, int world, const char *px,
-                        const char *up, unsigned char *done)
-{
-    int plane = p->entries[a].plane, first_group = 1;
-    size_t g, b, e, i;
-    for (g = a; g < p->nentries && p->entries[g].plane == plane; g = e, first_group = 0) {
-        e = slp_group_end(p, g);
-        for (b = g; b < e; b = i) {
-            int k, pt = p->entries[b].point;
-            i = slp_point_end(p, b);
-            for (k = (int)b; k < (int)i; k++) /* the minors declared where first used */
-                put_minor(o, p, p->entries[k].pair, world, px, done);
-            put_point(o, p, pt, world, px, done);
-            for (k = 0; k < (world ? 2 : 1); k++) {
-                char gl = world ? (k ? 'b' : 'a') : 'g', ml = world && !k ? 'n' : 'm';
-                if (b == g && k == 0)
-                    sbuf_printf(o, "        u = %c%d * (", gl, pt);
-                else
-                    sbuf_printf(o, "        u = %sVFMA(%c%d, ", up, gl, pt);
-                put_minor_sum(o, p, b, i, ml);
-                sbuf_puts(o, b == g && k == 0 ? ");\n" : ", u);\n");
-            }
-        }
-        put_group_end(o, &p->s[p->entries[g].group], first_group, up);
-    }
-    return g;
-}
-
-/* u's update by the class of items [a, b) of kind letter m at |coef| c (slp_point.h): their
- * signed sum, times c by adds (slp_point_by_adds) or a product; assigned for the first class. */
-static void put_point_class(sbuf *o, const slp_prog *p, size_t a, size_t b, char m, int first,
-                            const char *up)
-{
-    long c = labs(p->items[a].coef);
-    int adds = slp_point_by_adds(c, first), n = 0;
-    size_t i;
-    if (!adds && first)
-        sbuf_printf(o, "        u = %ld.0f * (", c);
-    else if (!adds)
-        sbuf_printf(o, "        u = %sVFMAS(%ld.0f, ", up, c);
-    else
-        sbuf_printf(o, "        u %s %s", first ? "=" : "+=", c == 2 ? "(" : "");
-    for (i = a; i < b; i++) {
-        const slp_item *x = &p->items[i];
-        const slp_pair *q = &p->pairs[x->pair];
-        sbuf_printf(o, "%s%c%d_%d", n++ ? (x->coef < 0 ? " - " : " + ") : x->coef < 0 ? "-" : "",
-                    m, q->k, q->l);
-    }
-    if (adds && c == 2) /* first: u = t + t */
-        sbuf_puts(o, ");\n        u += u;\n");
-    else
-        sbuf_puts(o, adds ? ";\n" : first ? ");\n" : ", u);\n");
-}
-
-/* A point-form plane from item a (slp_point.h): per point and kind, u from the classes, then
- * v = G u or v = fma(G, u, v); returns the end of the plane's items. */
-static size_t put_point_form(sbuf *o, const slp_prog *p, size_t a, int world, const char *px,
-                             const char *up, unsigned char *done)
-{
-    size_t e = slp_point_plane_end(p->items, p->nitems, a), f, fe, c, ce, i;
-    int k;
-    for (f = a; f < e; f = fe) {
-        int pt = p->items[f].point;
-        fe = slp_point_factor_end(p->items, p->nitems, f);
-        for (i = f; i < fe; i++) /* the minors and the point declared where first used */
-            put_minor(o, p, p->items[i].pair, world, px, done);
-        put_point(o, p, pt, world, px, done);
-        for (k = 0; k < (world ? 2 : 1); k++) {
-            char gl = world ? (k ? 'b' : 'a') : 'g', ml = world && !k ? 'n' : 'm';
-            for (c = f; c < fe; c = ce) {
-                ce = slp_point_class_end(p->items, p->nitems, c);
-                put_point_class(o, p, c, ce, ml, c == f, up);
-            }
-            if (f == a && k == 0)
-                sbuf_printf(o, "        v = %c%d * u;\n", gl, pt);
-            else
-                sbuf_printf(o, "        v = %sVFMA(%c%d, u, v);\n", up, gl, pt);
-        }
-    }
-    return e;
-}
-
-/* The statements of term i: its group's sum u and, at the end of a group, the plane's v
- * (assigned when the group is the plane's first, first_group). */
-static void put_term(sbuf *o, const slp_prog *p, size_t i, int world, int first_group,
-                     const char *up)
-{
-    const slp_term *x = &p->terms[i];
-    int first = i == 0 || p->terms[i - 1].group != x->group;
-    int last = i + 1 == p->nterms || p->terms[i + 1].group != x->group;
-    if (first)
-        sbuf_printf(o, "        u = %s", x->neg ? "-" : "");
-    else
-        sbuf_printf(o, "        u %s ", x->neg ? "-=" : "+=");
-    if (world) {
-        sbuf_puts(o, "(");
-        put_bracket(o, p, x, 'a', 'n');
-        sbuf_puts(o, " + ");
-        put_bracket(o, p, x, 'b', 'm');
-        sbuf_puts(o, ")");
-    } else
-        put_bracket(o, p, x, 'g', 'm');
-    sbuf_puts(o, ";\n");
-    if (last)
-        put_group_end(o, &p->s[x->group], first_group, up);
 }
 
 /* Strict rule, plain or certified: lt (gt) = the lanes whose values so far are all < 0 (> 0),
@@ -382,56 +163,36 @@ static void put_lanes_loop(sbuf *o, const out_info *info, const char *up)
 
 /* Certified: the magnitudes and the size guard, from loads of their own (gcc keeps the points
  * where first read, and the lanes run faster), here unless CLATE puts them after the planes;
- * degenerate rule: every point's coordinates up front (put_point) and the collapsed edges. */
-static void put_loads(sbuf *o, const slp_prog *p, const tp_table *t, const out_info *info,
-                      const cert_bounds *cb, const char *up, unsigned char *done)
+ * degenerate rule: every point's coordinates up front (slpt_point) and the collapsed edges. */
+static void put_loads(slpt_writer *w, const tp_table *t, const out_info *info,
+                      const cert_bounds *cb, const char *up)
 {
     int k;
     if (!info->certified)
         return;
     if (emit_c_cert_late(info)) {
-        sbuf_printf(o, "#if !%sCLATE\n", up);
-        emit_c_cert_magnitudes(o, t->dom.npoints, info, cb);
-        sbuf_puts(o, "#endif\n");
+        sbuf_printf(w->o, "#if !%sCLATE\n", up);
+        emit_c_cert_magnitudes(w->o, t->dom.npoints, info, cb);
+        sbuf_puts(w->o, "#endif\n");
         return;
     }
-    emit_c_cert_magnitudes(o, t->dom.npoints, info, cb);
+    emit_c_cert_magnitudes(w->o, t->dom.npoints, info, cb);
     if (!emit_c_cert_zeros(info))
         return;
     for (k = 0; k < t->dom.npoints; k++)
-        put_point(o, p, k, info->space == OUT_WORLD, info->prefix, done);
-    emit_c_cert_collapsed(o, &t->dom, info);
+        slpt_point(w, k);
+    emit_c_cert_collapsed(w->o, &t->dom, info);
 }
 
 /* With d: d[P * ds + l] = the value v of plane P of each patch l times 1/c_P (its scale), which
  * keeps v's sign. */
 static void put_value_store(sbuf *o, const slp_prog *p, int plane, const char *px)
 {
-    char k[40];
-    rat one, inv;
-    rat_set_si(&one, 1);
+    char k[48];
     sbuf_printf(o, "        if (d)\n            %svstoref(d + %d * ds + l, v", px, plane);
-    if (!rat_equal(&p->c[plane], &one) && !rat_div(&inv, &one, &p->c[plane]))
-        sbuf_printf(o, " * %s", fmt_float_literal(k, &inv));
+    if (slpt_inverse_scale(k, sizeof k, p, plane))
+        sbuf_printf(o, " * %s", k);
     sbuf_puts(o, ", n - l);\n");
-}
-
-/* The terms of exact plane from term a, in bracket form; returns the end of its terms. */
-static size_t put_exact(sbuf *o, const slp_prog *p, size_t a, int world, const char *px,
-                        const char *up, unsigned char *done)
-{
-    size_t i;
-    int first_group = 1, k;
-    for (i = a; i < p->nterms && p->terms[i].plane == p->terms[a].plane; i++) {
-        for (k = 0; k < 3; k++)
-            put_minor(o, p, p->terms[i].pair[k], world, px, done);
-        for (k = 0; k < 3; k++)
-            put_point(o, p, p->terms[i].point[k], world, px, done);
-        if (i > a && p->terms[i - 1].group != p->terms[i].group)
-            first_group = 0;
-        put_term(o, p, i, world, first_group, up);
-    }
-    return i;
 }
 
 /* Plane P's value v into the masks (set by the first plane): plain strict lt and gt (the strict
@@ -450,50 +211,6 @@ static void put_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const o
         sbuf_printf(o, "        lt %s v < 0.0f;\n        gt %s v > 0.0f;\n"
                        "        nan %s v != v; /* plane %d */\n",
                     op, op, op, plane);
-}
-
-/* slp_order's registers (AVX-512 has 32 vector registers; 8 left for sums and temporaries) and
- * window (the planes it picks from): the fastest of those tried with gcc 12 and clang 14 on
- * bicubic patches (bench/README: Plane order). */
-#define SLP_ORDER_CAP 24
-#define SLP_ORDER_WIN 4
-
-/* The straight-line program: every plane, exact or fused, in slp_order's order (consecutive
- * planes share registers), then its value into the masks (and into d). */
-static int put_program(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
-                       const char *up, unsigned char *done, ptp_error *err)
-{
-    const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, n = 0, k, st;
-    size_t *term = malloc(((size_t)p->nplanes + 1) * 3 * sizeof *term), *entry = term + p->nplanes,
-           *item = entry + p->nplanes, i;
-    int *order = malloc(((size_t)p->nplanes + 1) * sizeof *order);
-    if (!term || !order) {
-        st = ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-        goto out;
-    }
-    for (i = p->nterms; i-- > 0;) /* each plane's first term and first fused entry */
-        term[p->terms[i].plane] = i;
-    for (i = p->nentries; i-- > 0;)
-        entry[p->entries[i].plane] = i;
-    for (i = p->nitems; i-- > 0;)
-        item[p->items[i].plane] = i;
-    if ((st = slp_order(order, &n, p, SLP_ORDER_CAP, SLP_ORDER_WIN, err)) != PTP_OK)
-        goto out;
-    for (k = 0; k < n; k++) {
-        if (p->form[order[k]] == SLP_BRACKET)
-            put_exact(o, p, term[order[k]], world, px, up, done);
-        else if (p->form[order[k]] == SLP_FUSED)
-            put_fused(o, p, entry[order[k]], world, px, up, done);
-        else
-            put_point_form(o, p, item[order[k]], world, px, up, done);
-        put_value_store(o, p, order[k], px);
-        put_masks(o, p, cb, info, up, order[k], k == 0);
-    }
-out:
-    free(term);
-    free(order);
-    return st;
 }
 
 /* The lanes and certify64 compute a class arithmetically from 0/1 masks, in these numbers. */
@@ -553,19 +270,47 @@ static void put_lanes_class(sbuf *o, const out_info *info, const char *up)
     sbuf_puts(o, "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n\n");
 }
 
+/* What the lanes' plane_end needs: the bounds and the options. */
+typedef struct {
+    const cert_bounds *cb;
+    const out_info *info;
+    const char *up;
+} lanes_ctx;
+
+/* The lanes' loads: coordinate c of point k of the VW patches at q. */
+static void lanes_load(char *out, size_t size, const slpt_writer *w, int k, int c)
+{
+    const lanes_ctx *x = w->ctx;
+    snprintf(out, size, "%svload(q + %d * qs)", x->info->prefix, 4 * k + c);
+}
+
+/* After each plane: its value into d, then into the masks. */
+static void lanes_plane_end(slpt_writer *w, int plane, int first)
+{
+    const lanes_ctx *x = w->ctx;
+    put_value_store(w->o, w->p, plane, x->info->prefix);
+    put_masks(w->o, w->p, x->cb, x->info, x->up, plane, first);
+}
+
 /* The straight-line kernel over n patches in structure-of-arrays order (the lanes function). */
 static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
                      const out_info *info, const char *up, ptp_error *err)
 {
-    unsigned char *done = calloc(p->npairs + (size_t)p->npoints, 1); /* minors, then points */
+    char decl[96], fma[96], fmas[96];
+    slpt_syntax syn = {"        ", decl, 1, "%s * %s", fma, fmas, lanes_load, lanes_plane_end};
+    lanes_ctx ctx = {cb, info, up};
+    slpt_writer w;
     int st;
-    if (!done)
-        return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
+    snprintf(decl, sizeof decl, "const %svf ", info->prefix);
+    snprintf(fma, sizeof fma, "%sVFMA(%%s, %%s, %%s)", up);
+    snprintf(fmas, sizeof fmas, "%sVFMAS(%%s, %%s, %%s)", up);
+    if ((st = slpt_init(&w, o, p, &syn, info->space == OUT_WORLD, &ctx, err)) != PTP_OK)
+        return st;
     put_lanes_head(o, info, cb, up);
     put_lanes_loop(o, info, up);
-    put_loads(o, p, t, info, cb, up, done);
-    st = put_program(o, p, cb, info, up, done, err);
-    free(done);
+    put_loads(&w, t, info, cb, up);
+    st = slpt_program(&w, err);
+    slpt_clear(&w);
     if (st == PTP_OK && emit_c_cert_late(info))
         emit_c_cert_late_bounds(o, t->dom.npoints, info, cb, up);
     if (st == PTP_OK)

@@ -1,0 +1,52 @@
+/* slp_text.h: the straight-line program (plan/slp.h) as statements of a C-like language: the one
+ * writer behind the C header's lanes and every GPU target's classify and values functions. */
+#ifndef SLP_TEXT_H
+#define SLP_TEXT_H
+
+#include "emit/sbuf.h"
+#include "plan/slp.h"
+
+typedef struct slpt_writer slpt_writer;
+
+/* What a language (and a caller) makes of the program: the writer's words are the float locals
+ * x<k> y<k> z<k> w<k> (point k; z only in world space), g<k> (clip space: e2 w) or a<k> b<k>
+ * (world: e0 y - e1 x, e2 w - e3 z), the minors m<k>_<l> (x, y) and n<k>_<l> (z, w), and u, v,
+ * e0..e3, which the caller declares. Every product goes through mul, so a language that would
+ * contract a * b - c * d into an FMA can forbid it there or in decl. */
+typedef struct {
+    const char *indent; /* of every statement */
+    const char *decl;   /* starts a declaration of float locals, with its space: "const float " */
+    int multi;          /* 1: several variables in one declaration, "a = x, b = y;" */
+    const char *mul;    /* printf format of the product of a and b: "%s * %s" */
+    const char *fma;    /* printf format of a * b + c, explicitly fused: "fma(%s, %s, %s)" */
+    const char *fmas;   /* the same with a a float literal (C: a scalar times a vector) */
+    /* Writes to out (size bytes) coordinate c (0 x, 1 y, 2 z, 3 w) of point k. */
+    void (*load)(char *out, size_t size, const slpt_writer *w, int k, int c);
+    /* Appends the statements after plane's value v (first: the first plane written). */
+    void (*plane_end)(slpt_writer *w, int plane, int first);
+} slpt_syntax;
+
+struct slpt_writer {
+    sbuf *o;
+    const slp_prog *p;
+    const slpt_syntax *s;
+    int world;           /* world space (else clip) */
+    const void *ctx;     /* the caller's, for its hooks */
+    unsigned char *done; /* the minors, then the points, declared so far */
+};
+
+/* Starts a writer of program p into o. Returns PTP_OK or PTP_ENOMEM (w is then cleared). */
+int slpt_init(slpt_writer *w, sbuf *o, const slp_prog *p, const slpt_syntax *s, int world,
+              const void *ctx, ptp_error *err);
+/* Frees w's storage. */
+void slpt_clear(slpt_writer *w);
+/* Declares point k's coordinates and eye products unless done. */
+void slpt_point(slpt_writer *w, int k);
+/* Writes every plane in slp_order's order (consecutive planes reuse values), each followed by
+ * the syntax's plane_end. */
+int slpt_program(slpt_writer *w, ptp_error *err);
+/* Appends to o the float literal of 1 / c_P, or nothing when c_P = 1: the factor that takes
+ * plane P's value v to its true scale (v * factor). Returns 1 when it appended one. */
+int slpt_inverse_scale(char *out, size_t size, const slp_prog *p, int plane);
+
+#endif
