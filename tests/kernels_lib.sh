@@ -53,11 +53,11 @@ host_degree() {
 }
 
 # args_for TARGET DEGREE SPACE RULE FLAG...: the options of a configuration that TARGET takes
-# (ptpgen --list-targets refuses the others): json, read for its schedule, gets the degree alone.
+# (ptpgen --list-targets refuses the others; a FLAG may be --name=value): json gets the degree alone.
 # RULE may be "" (the default). Targets that name things get the prefix ptp_NxM_ of the default
 # variant, which the hosts are built for (a variant's default prefix adds world_, certified_ ...).
 args_for() {
-    local a="$(degree_args $2)" opts f d=$2
+    local a="$(degree_args $2)" opts f n d=$2
     opts=",$("$P" --list-targets | awk -v t="$1" '$1 == t { print $3 }'),"
     case $d in tri* | *x*) ;; *) d=${d}x$d ;; esac
     [[ $opts == *,prefix,* ]] && a="$a --prefix ptp_${d}_"
@@ -65,14 +65,19 @@ args_for() {
     [[ -n $4 && $opts == *,rule,* ]] && a="$a --rule $4"
     shift 4
     for f in "$@"; do
-        [[ $opts == *,${f#--},* ]] && a="$a $f"
+        n=${f#--}
+        [[ $opts == *,${n%%=*},* ]] && a="$a $f"
     done
     echo "$a"
 }
 
-# schedule FILE.json: prints "PQ Q", the threads and the patches of a workgroup.
+# schedule FILE: prints "PQ Q", the threads and the patches of a workgroup: from a json file's
+# schedule (the table kernel's), or from a GPU kernel's banner (either form's).
 schedule() {
-    python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$1"
+    case $1 in
+    *.json) python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$1" ;;
+    *) sed -n 's/^ \* Schedule: [0-9]* threads\{0,1\} per patch, \([0-9]*\) patches per workgroup (\([0-9]*\) threads).*/\2 \1/p' "$1" ;;
+    esac
 }
 
 # build_host_c CC FLAGS HEADER D: builds tests/host_c.c around the C header HEADER of bidegree D

@@ -54,18 +54,21 @@ exercise() {
 }
 
 # Freshly generated kernels, with --planes: every degree (triangles too), space and rule of the
-# matrix.
+# matrix, in both GPU forms: the straight-line kernel and the paper's table kernel.
 seed=1
 mkdir -p "$tmp/gen"
 for d in 1x1 2x2 3x3 4x4 2x3 3x1 tri1 tri2 tri3; do
     for space in clip world; do
         for rule in strict degenerate; do
-            seed=$((seed + 1))
-            for te in $files; do
-                "$P" $(args_for ${te%%:*} $d $space $rule --planes) --target ${te%%:*} -o "$tmp/gen/ptp_$d${te#*:}" || notok "$d $space $rule ${te%%:*}" "ptpgen failed"
+            for kernel in slp table; do
+                seed=$((seed + 1))
+                for te in $files; do
+                    "$P" $(args_for ${te%%:*} $d $space $rule --planes --kernel=$kernel) --target ${te%%:*} \
+                        -o "$tmp/gen/ptp_$d${te#*:}" || notok "$d $space $rule $kernel ${te%%:*}" "ptpgen failed"
+                done
+                read -r PQ Q < <(schedule "$tmp/gen/ptp_$d.comp")
+                exercise "$tmp/gen" $d $space $rule 1 $PQ $Q "$d $space $rule $kernel"
             done
-            read -r PQ Q < <(schedule "$tmp/gen/ptp_$d.json")
-            exercise "$tmp/gen" $d $space $rule 1 $PQ $Q "$d $space $rule"
         done
     done
 done
@@ -74,34 +77,47 @@ done
 for dir in out/*x*/ out/tri*/; do
     d=$(basename "$dir")
     seed=$((seed + 1))
-    read -r PQ Q < <(schedule "out/$d/ptp_$d.json")
+    read -r PQ Q < <(schedule "out/$d/ptp_$d.comp")
     exercise "out/$d" $d clip strict 0 $PQ $Q "vendored out/$d"
 done
 
 # Without --planes the kernels write only the classes (OpenCL gets a null planes pointer).
-"$P" --degree 3 --target opencl -o "$tmp/k.cl" && [ -x "$B/host_opencl" ] &&
+"$P" --degree 3 --target opencl --kernel table -o "$tmp/k.cl" && [ -x "$B/host_opencl" ] &&
     run_host "opencl without --planes" "$B/host_opencl" "$tmp/k.cl" --kernel ptp_3x3_classify --degree 3 3 \
-        --space clip --rule strict --block-threads 128 --patches-per-block 8 --random 1 10000 99 --name "opencl 3x3 without --planes"
+        --space clip --rule strict --block-threads 128 --patches-per-block 8 --random 1 10000 99 --name "opencl 3x3 table without --planes"
 if [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ]; then
-    "$P" --degree 3 --target glsl -o "$tmp/k.comp" && to_spirv glsl "$tmp/k" &&
+    "$P" --degree 3 --target glsl --kernel table -o "$tmp/k.comp" && to_spirv glsl "$tmp/k" &&
         run_host "glsl without --planes" "$B/host_vulkan" "$tmp/k.spv" --degree 3 3 --space clip --rule strict \
-            --block-threads 128 --patches-per-block 8 --random 1 10000 99 --name "glsl 3x3 without --planes"
-    "$P" --degree 3 --target hlsl -o "$tmp/k.hlsl" && to_spirv hlsl "$tmp/k" &&
+            --block-threads 128 --patches-per-block 8 --random 1 10000 99 --name "glsl 3x3 table without --planes"
+    "$P" --degree 3 --target hlsl --kernel table -o "$tmp/k.hlsl" && to_spirv hlsl "$tmp/k" &&
         run_host "hlsl without --planes" "$B/host_vulkan" "$tmp/k.spv" --degree 3 3 --space clip --rule strict \
-            --block-threads 128 --patches-per-block 8 --groups-x-constant --random 1 10000 99 --name "hlsl 3x3 without --planes"
-    # A non-default schedule: 7 threads per patch, 5 patches per workgroup.
-    "$P" --degree 2x3 --target glsl --space world --planes --threads-per-patch 7 --patches-per-block 5 -o "$tmp/k.comp" &&
+            --block-threads 128 --patches-per-block 8 --groups-x-constant --random 1 10000 99 --name "hlsl 3x3 table without --planes"
+    # A non-default straight-line workgroup: 7 patches.
+    "$P" --degree 2x3 --target glsl --space world --planes --patches-per-block 7 -o "$tmp/k.comp" && to_spirv glsl "$tmp/k" &&
+        run_host "glsl Q=7" "$B/host_vulkan" "$tmp/k.spv" --degree 2 3 --space world --rule strict --block-threads 7 \
+            --patches-per-block 7 --planes --random 1 3000 7 --name "glsl 2x3 world, straight-line, 7 patches per group"
+    # A straight-line GLSL kernel with one term's sign flipped must disagree with the reference.
+    "$P" --degree 3 --target glsl -o "$tmp/k.comp" && sed -i '0,/u = -((/s//u = ((/' "$tmp/k.comp"
+    if grep -q 'u = ((' "$tmp/k.comp" && to_spirv glsl "$tmp/k" &&
+        ! "$B/host_vulkan" "$tmp/k.spv" --degree 3 3 --space clip --rule strict --block-threads 64 --patches-per-block 64 \
+            --random 1 2000 5 --name mutant >"$tmp/out" 2>&1 && grep -q '^not ok - mutant: .*classes agree' "$tmp/out"; then
+        ok "a straight-line GLSL kernel with one term's sign flipped fails its check"
+    else
+        notok "a straight-line GLSL kernel with one term's sign flipped fails its check" "it passed, or the term was not found"
+    fi
+    # A non-default table schedule: 7 threads per patch, 5 patches per workgroup.
+    "$P" --degree 2x3 --target glsl --space world --planes --kernel table --threads-per-patch 7 --patches-per-block 5 -o "$tmp/k.comp" &&
         to_spirv glsl "$tmp/k" &&
         run_host "glsl P=7 Q=5" "$B/host_vulkan" "$tmp/k.spv" --degree 2 3 --space world --rule strict --block-threads 35 \
             --patches-per-block 5 --planes --random 1 3000 7 --name "glsl 2x3 world, 7 threads per patch, 5 patches per group"
 fi
 
 if [ -x "$B/host_wgpu" ]; then
-    "$P" --degree 2x3 --target wgsl --space world --planes --threads-per-patch 7 --patches-per-block 5 -o "$tmp/k.wgsl" &&
+    "$P" --degree 2x3 --target wgsl --space world --planes --kernel table --threads-per-patch 7 --patches-per-block 5 -o "$tmp/k.wgsl" &&
         run_host "wgsl P=7 Q=5" "$B/host_wgpu" "$tmp/k.wgsl" --degree 2 3 --space world --rule strict --block-threads 35 \
             --patches-per-block 5 --planes --random 1 3000 7 --name "wgsl 2x3 world, 7 threads per patch, 5 patches per group"
     # A generated WGSL kernel with one weight's sign flipped must fail its checks.
-    "$P" --degree 2 --target wgsl --planes -o "$tmp/k.wgsl" && sed -i '0,/ -1.0f,/s// 1.0f,/' "$tmp/k.wgsl"
+    "$P" --degree 2 --target wgsl --planes --kernel table -o "$tmp/k.wgsl" && sed -i '0,/ -1.0f,/s// 1.0f,/' "$tmp/k.wgsl"
     if grep -q '^    -0.166666672f, -2.0f, 1.0f,' "$tmp/k.wgsl" &&
         ! "$B/host_wgpu" "$tmp/k.wgsl" --degree 2 2 --space clip --rule strict --block-threads 128 --patches-per-block 16 \
             --planes --random 1 2000 5 --name mutant >"$tmp/out" 2>&1 && grep -q '^not ok - mutant: .*plane values' "$tmp/out"; then
@@ -131,12 +147,12 @@ emu_mutant() {
 if [ $have_emu = 1 ]; then
     mkdir -p "$tmp/m"
     d=2x2
-    "$P" --degree 2 --target cuda --planes -o "$tmp/m/orig.cu" && cp "$tmp/m/orig.cu" "$tmp/m/k.cu"
+    "$P" --degree 2 --target cuda --planes --kernel table -o "$tmp/m/orig.cu" && cp "$tmp/m/orig.cu" "$tmp/m/k.cu"
     emu_mutant '0,/ -1.0f,/s// 1.0f,/' '.*plane values' "a 2x2 CUDA kernel with one weight's sign flipped" \
         --degree 2 2 --space clip --rule strict --block-threads 128 --patches-per-block 16 --planes --random 1 2000 5
     d=3x3
     for n in 1 2; do
-        cp out/3x3/ptp_3x3.cu "$tmp/m/orig.cu" && cp "$tmp/m/orig.cu" "$tmp/m/k.cu"
+        "$P" --degree 3 --target cuda --kernel table -o "$tmp/m/orig.cu" && cp "$tmp/m/orig.cu" "$tmp/m/k.cu"
         emu_mutant "$(awk -v n=$n '/__syncthreads\(\);/ && ++k == n { print NR "d" }' "$tmp/m/orig.cu")" \
             '.*classes agree' "a 3x3 CUDA kernel without barrier $n of 2" --degree 3 3 --space clip --rule strict \
             --block-threads 128 --patches-per-block 8 --random 1 2000 5

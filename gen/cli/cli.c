@@ -27,8 +27,8 @@ static void usage_synopsis(sbuf *o)
     sbuf_puts(o,
         "usage: ptpgen --degree N|NxM [--domain quad|triangle] [--target T] [--space clip|world]\n"
         "              [--rule strict|degenerate] [--planes] [--certified] [--refine K]\n"
-        "              [--prefix NAME] [--threads-per-patch P] [--patches-per-block Q]\n"
-        "              [-o FILE]\n"
+        "              [--prefix NAME] [--kernel slp|table] [--stage kernel|function]\n"
+        "              [--threads-per-patch P] [--patches-per-block Q] [-o FILE]\n"
         "       ptpgen verify FILE [--degree N|NxM] [--domain quad|triangle]\n"
         "              [--convention u-first|v-first] [-o REPORT]\n"
         "       ptpgen vectors --degree NxM [--domain quad|triangle] --count K --seed S\n"
@@ -66,11 +66,19 @@ static void usage_options(sbuf *o)
         "                   --certified in double, every value with a bound on its error\n"
         "  --prefix NAME    prefix of generated names (default ptp_NxM_ or ptp_triN_, then world_,\n"
         "                   degenerate_, certified_, refineK_ for the options given)\n"
+        "  --kernel K       GPU targets: slp (default): one patch an invocation, the\n"
+        "                   straight-line program; table (the default with --certified): the\n"
+        "                   paper's kernel, P threads a patch over the term table\n"
+        "  --stage S        GPU targets: kernel (default): a compute kernel; function: only\n"
+        "                   the functions classify_patch and values, for any shader stage\n"
+        "                   (tessellation control or hull, mesh, task, compute)\n"
         "  --threads-per-patch P\n"
-        "                   threads that share one patch, 1..%d, at most the number of\n"
-        "                   planes (default 16 for 3x3; see README for other degrees)\n"
+        "                   json, table, stats and --kernel table: threads that share one\n"
+        "                   patch, 1..%d, at most the number of planes (default 16 for 3x3;\n"
+        "                   see README for other degrees)\n"
         "  --patches-per-block Q\n"
-        "                   patches per thread block (default %d/P, at least 1)\n"
+        "                   patches per thread block (default %d/P, at least 1; the\n"
+        "                   straight-line kernel: Q invocations, default %d)\n"
         "  --convention C   verify: the table's index convention: u-first (default, ptpgen's):\n"
         "                   point (i, j) is i*(M+1)+j, plane (I, J) is I*(3M-1)+J; v-first:\n"
         "                   point j*(N+1)+i, plane J*(3N-1)+I (triangles: (i, j) numbered as\n"
@@ -84,7 +92,7 @@ static void usage_options(sbuf *o)
         "  --list-targets   list the targets, one a line: name, file suffix (- for none),\n"
         "                   the options it uses (comma-separated, - for none), description\n"
         "\n",
-        CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS, CLI_MAX_COUNT);
+        CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS, OUT_SLP_GROUP, CLI_MAX_COUNT);
 }
 
 void cli_usage(sbuf *o)
@@ -170,7 +178,7 @@ typedef enum {
     OPT_DEGREE, OPT_DOMAIN, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
     OPT_PATCHES, OPT_COUNT, OPT_SEED, OPT_CERTIFIED, OPT_REFINE, OPT_CONVENTION, OPT_FORMAT,
     OPT_OUTPUT, OPT_HELP,
-    OPT_VERSION, OPT_LIST, OPT_N
+    OPT_VERSION, OPT_LIST, OPT_KERNEL, OPT_STAGE, OPT_N
 } opt_id;
 
 /* The modes an option belongs to, as bits 1 << cli_mode. */
@@ -204,6 +212,8 @@ static const struct {
     [OPT_HELP] = {"--help", "-h", 0, GEN | VER | VEC, 0},
     [OPT_VERSION] = {"--version", NULL, 0, GEN | VER | VEC, 0},
     [OPT_LIST] = {"--list-targets", NULL, 0, GEN | VER | VEC, 0},
+    [OPT_KERNEL] = {"--kernel", NULL, 1, GEN, TGT_KERNEL},
+    [OPT_STAGE] = {"--stage", NULL, 1, GEN, TGT_KERNEL},
 };
 
 /* Finds the option argv[*i] names ("--name", its alias, or "--name=value" for one that takes a
@@ -249,6 +259,7 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
 {
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
     static const char *const conventions[] = {"u-first", "v-first"}, *const formats[] = {"json", "c"};
+    static const char *const kernels[] = {"slp", "table"}, *const stages[] = {"kernel", "function"};
     const char *kinds[] = {tp_kind_name(TP_QUAD), tp_kind_name(TP_TRI)};
     uint64_t u = 0;
     int st = PTP_OK, x = 0;
@@ -283,6 +294,8 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     case OPT_HELP: o->help = 1; break;
     case OPT_VERSION: o->version = 1; break;
     case OPT_LIST: o->list = 1; break;
+    case OPT_KERNEL: return parse_choice(&o->table, "kernel", v, kernels, 2, err);
+    case OPT_STAGE: return parse_choice(&o->functions, "stage", v, stages, 2, err);
     case OPT_N: break;
     }
     return st;
@@ -377,6 +390,28 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
     return PTP_OK;
 }
 
+/* The GPU targets' form: --certified takes the table kernel unless --kernel says otherwise, and
+ * the options of one form do not go with the other. */
+static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
+{
+    if (!(o->target->options & TGT_KERNEL))
+        return PTP_OK;
+    if (o->certified && !(seen >> OPT_KERNEL & 1))
+        o->table = 1;
+    if (o->certified && !o->table)
+        return ptp_fail(err, PTP_EUSAGE, "--certified GPU code is the table kernel (--kernel table)");
+    if (o->table && o->functions)
+        return ptp_fail(err, PTP_EUSAGE, "--stage function writes the straight-line functions, not "
+                                         "--kernel table");
+    if (seen >> OPT_THREADS & 1 && !o->table)
+        return ptp_fail(err, PTP_EUSAGE, "--threads-per-patch applies to --kernel table");
+    if (o->functions && (o->planes || seen >> OPT_PATCHES & 1))
+        return ptp_fail(err, PTP_EUSAGE, "%s applies to kernels (--stage function writes values "
+                                         "always, and has no workgroup)",
+                        o->planes ? "--planes" : "--patches-per-block");
+    return PTP_OK;
+}
+
 /* Writes o->command, the normalized command line: every option that was given, in one order. */
 static void put_command(cli_options *o)
 {
@@ -408,7 +443,11 @@ static void put_command(cli_options *o)
     if (o->threads >= 0)
         n += snprintf(c + n, size - (size_t)n, " --threads-per-patch %d", o->threads);
     if (o->patches >= 0)
-        snprintf(c + n, size - (size_t)n, " --patches-per-block %d", o->patches);
+        n += snprintf(c + n, size - (size_t)n, " --patches-per-block %d", o->patches);
+    if (o->kernel_given)
+        n += snprintf(c + n, size - (size_t)n, " --kernel %s", o->table ? "table" : "slp");
+    if (o->functions)
+        snprintf(c + n, size - (size_t)n, " --stage function");
 }
 
 /* Writes the default prefix: the domain's ("ptp_3x3_") and, in this order, each option that
@@ -444,8 +483,9 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         return st;
     if ((st = check_mode(o, seen, err)) || o->mode == CLI_VERIFY)
         return st;
-    if (o->mode == CLI_GENERATE && (st = check_target(o, seen, err)))
+    if (o->mode == CLI_GENERATE && ((st = check_target(o, seen, err)) || (st = check_kernel(o, seen, err))))
         return st;
+    o->kernel_given = seen >> OPT_KERNEL & 1;
     put_command(o);
     if (o->mode == CLI_GENERATE && !o->prefix[0])
         put_default_prefix(o);

@@ -34,6 +34,9 @@ typedef struct {
     int planes;           /* --planes */
     int certified;        /* --certified */
     int refine;           /* --refine K (C only), 0 when not given */
+    int table;            /* GPU targets: --kernel table (or --certified without --kernel) */
+    int kernel_given;     /* --kernel was given */
+    int functions;        /* GPU targets: --stage function */
     int vfirst;           /* verify: --convention v-first (else u-first) */
     int format_c;         /* vectors: --format c (else json) */
     int help, version;    /* --help or --version was given */

@@ -155,6 +155,10 @@ static int run(const cli_options *o, ptp_error *err)
     info.planes = o->planes;
     info.certified = o->certified;
     info.refine = o->refine;
+    info.table = o->table;
+    info.functions = o->functions;
+    if (o->target->options & TGT_KERNEL) /* the GPU targets */
+        info.group = o->patches >= 0 ? o->patches : OUT_SLP_GROUP;
     sbuf_init(&b);
     if (!(st = tgt_emit_target(&b, o->target, &t, &info, err)))
         st = write_output(o->output, &b, err);

@@ -31,4 +31,10 @@ const kern_target kern_cuda = {
     .vec2 = "float2", .vec2_make = "make_float2(%s, %s)",
     .fma = "__fmaf_rn(%s, %s, %s)", /* correctly rounded: one rounding */
     .df_table = 1,
+    .slp_classify = "static __device__ inline unsigned %s(const float4 cp[%d], float4 eye)\n{",
+    .slp_values = "static __device__ inline void %s(const float4 cp[%d], float4 eye, float d[%d])\n{",
+    .slp_d = "d[%d]",
+    .slp_decl = "const float ",
+    .slp_fma = "__fmaf_rn(%s, %s, %s)",
+    .slp_ref = "%s",
 };

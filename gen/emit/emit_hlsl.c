@@ -29,4 +29,10 @@ const kern_target kern_hlsl = {
     .bits = "asuint(%s)",
     .vec2 = "float2", .vec2_make = "float2(%s, %s)",
     .split_rounds = 1,
+    .slp_classify = "uint %s(float4 cp[%d], float4 eye)\n{",
+    .slp_values = "void %s(float4 cp[%d], float4 eye, out float d[%d])\n{",
+    .slp_d = "d[%d]",
+    .slp_decl = "precise float ",
+    .slp_fma = "mad(%s, %s, %s)",
+    .slp_ref = "%s",
 };

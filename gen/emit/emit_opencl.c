@@ -28,4 +28,13 @@ const kern_target kern_opencl = {
     .vec2 = "float2", .vec2_make = "(float2)(%s, %s)",
     .fma = "fma(%s, %s, %s)", /* correctly rounded: one rounding */
     .df_table = 1,
+    .slp_classify = "uint %s(const float4 cp[%d], float4 eye)\n{",
+    .slp_values = "void %s(const float4 cp[%d], float4 eye, float d[%d])\n{",
+    .slp_d = "d[%d]",
+    .slp_decl = "const float ",
+    .slp_fma = "fma(%s, %s, %s)",
+    .slp_ref = "%s",
+    .slp_preamble = "#pragma OPENCL FP_CONTRACT OFF\n\n",
+    .slp_note = " * The points are private memory (an array the caller copies them into). The file sets\n"
+                " * #pragma OPENCL FP_CONTRACT OFF: equal points give exact zeros.\n",
 };

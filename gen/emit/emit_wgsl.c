@@ -27,6 +27,13 @@ static void wgsl_shared(sbuf *o, const kern_target *g, const char *indent, const
     sbuf_printf(o, "%s%s %s: array<%s, %s>;\n", indent, g->shared_qual, name, type, count);
 }
 
+static void wgsl_array(sbuf *o, const kern_target *g, const char *indent, const char *type,
+                       const char *name, const char *count)
+{
+    (void)g;
+    sbuf_printf(o, "%svar %s: array<%s, %s>;\n", indent, name, type, count);
+}
+
 static void wgsl_function(sbuf *o, const kern_target *g, const char *ret, const char *name,
                           const kern_param *p, int n)
 {
@@ -60,6 +67,7 @@ static const kern_syntax wgsl_syntax = {
     .table_open = wgsl_table_open,
     .table_close = "\n);\n",
     .shared = wgsl_shared,
+    .array = wgsl_array,
     .function = wgsl_function,
     .locals = wgsl_locals,
     .select = wgsl_select,
@@ -92,4 +100,19 @@ const kern_target kern_wgsl = {
     .unit_roundoff = 0x1p-23, /* no rounding mode specified: either neighbour */
     .diff = "sub_rn(%s, %s)", /* the template's difference that no reassociation crosses */
     .bits = "bitcast<u32>(%s)",
+    .slp_classify = "fn %s(cp: array<vec4<f32>, %d>, eye: vec4<f32>, zero: u32) -> u32 {",
+    .slp_values = "fn %s(cp: array<vec4<f32>, %d>, eye: vec4<f32>, zero: u32,\n"
+                  "        d: ptr<function, array<f32, %d>>) {",
+    .slp_d = "(*d)[%d]",
+    .slp_decl = "let ",
+    .slp_fma = "fma(%s, %s, %s)",
+    .slp_mul = "%smul_rn(%%s, %%s, zero)",
+    .slp_helpers = "/* x * y rounded to a float: through an integer XOR with zero, 0 at run time but unknown to\n"
+                   " * the compiler, which no FMA contraction can cross (WGSL has no `precise`). */\n"
+                   "fn %smul_rn(x: f32, y: f32, zero: u32) -> f32 {\n"
+                   "    return bitcast<f32>(bitcast<u32>(x * y) ^ zero);\n}\n\n",
+    .slp_zero = ", params.zero",
+    .slp_ref = "&%s",
+    .slp_note = " * zero: 0, read from a uniform or storage buffer so that the compiler cannot know it\n"
+                " * (it keeps the products out of FMAs, so that equal points give exact zeros).\n",
 };

@@ -40,6 +40,10 @@ typedef struct {
      * count values of type; count is an expression of constants. C: `shared_qual type name[count];` */
     void (*shared)(sbuf *o, const kern_target *g, const char *indent, const char *type,
                    const char *name, const char *count);
+    /* Appends a whole line, starting with indent, declaring the local array name of count values
+     * of type. C: `type name[count];` */
+    void (*array)(sbuf *o, const kern_target *g, const char *indent, const char *type,
+                  const char *name, const char *count);
     /* Appends the head of a helper function through the line with its opening brace: the result
      * type ret, the name and the n parameters p. The body follows; the caller closes it with "}".
      * C: `func_qual ret name(type a, type b)` and "{" on its own line. */
@@ -119,6 +123,20 @@ struct kern_target {
      * (lavapipe copies a large constant array at every dynamic access, and compiles a loop over
      * one for minutes) */
     int df_table;
+    /* The straight-line functions (kern_gpu_slp.c): classify_patch and values. */
+    const char *slp_classify; /* classify_patch's head through its opening brace, printf format of
+                                 its name and the point count K: "uint %s(vec4 cp[%d], vec4 eye)\n{" */
+    const char *slp_values;   /* values' head, printf format of its name, K and the plane count L */
+    const char *slp_d;        /* values' element P of d, printf format of P: "d[%d]" */
+    const char *slp_decl;     /* declares float locals that no contraction crosses: "precise float " */
+    const char *slp_fma;      /* an explicitly fused a * b + c, printf format of a, b, c */
+    /* the program's product, printf format of the prefix giving that of a and b, or NULL: mul */
+    const char *slp_mul;
+    const char *slp_helpers;  /* functions the program calls, printf format of the prefix, or NULL */
+    const char *slp_zero;     /* the kernel's last argument of a call, with its comma, or NULL */
+    const char *slp_ref;      /* a call's argument for the array d, printf format of d: "%s" */
+    const char *slp_note;     /* the banner's words on calling the functions, or NULL */
+    const char *slp_preamble; /* what --stage function's file needs before them, or NULL */
 };
 
 /* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */
@@ -130,6 +148,10 @@ extern const kern_target kern_glsl, kern_hlsl, kern_opencl, kern_cuda, kern_wgsl
  * shared memory from the scheduled tables, then one thread per patch combines the signs. */
 int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                   ptp_error *err);
+
+/* --stage function: the target's classify_patch and values, as kern_emit_gpu's kernel calls them. */
+int kgpu_slp_functions(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                       ptp_error *err);
 
 /* The C target (a header, not a kernel); the signature of the outputs of out.h. */
 int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);

@@ -26,6 +26,13 @@ static void c_shared(sbuf *o, const kern_target *g, const char *indent, const ch
     sbuf_printf(o, "%s%s %s %s[%s];\n", indent, g->shared_qual, type, name, count);
 }
 
+static void c_array(sbuf *o, const kern_target *g, const char *indent, const char *type,
+                    const char *name, const char *count)
+{
+    (void)g;
+    sbuf_printf(o, "%s%s %s[%s];\n", indent, type, name, count);
+}
+
 static void c_function(sbuf *o, const kern_target *g, const char *ret, const char *name,
                        const kern_param *p, int n)
 {
@@ -57,6 +64,7 @@ const kern_syntax kern_c_syntax = {
     .table_open = c_table_open,
     .table_close = "\n};\n",
     .shared = c_shared,
+    .array = c_array,
     .function = c_function,
     .locals = c_locals,
     .select = c_select,

@@ -74,16 +74,15 @@ char *kgpu_group(char *out, size_t size, const kern_target *g, const char *e)
     return out;
 }
 
-int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
-                  ptp_error *err)
+/* The paper's table kernel: P threads a patch over the schedule's rounds, in the template. */
+static int emit_table(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                      const char *up, const char *file, ptp_error *err)
 {
     sbuf banner, tables, funcs, shared, body;
-    char up[64], file[96], threads[16];
+    char threads[16];
     tpl_slot slots[9];
     size_t n = 0;
     int st;
-    fmt_upper(up, sizeof up, info->prefix);
-    fmt_file_name(file, sizeof file, info->prefix, info->suffix);
     snprintf(threads, sizeof threads, "%d", info->sched->threads * info->sched->patches);
     sbuf_init(&banner);
     sbuf_init(&tables);
@@ -94,6 +93,8 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     st = kgpu_tables(&tables, t, info, g, up, err);
     kgpu_functions(&funcs, info, g);
     kgpu_body(&body, &t->dom, info, g, up);
+    if (!g->shared_in_body)
+        kgpu_shared(&shared, info, g, up, "");
     slots[n++] = (tpl_slot){"BANNER", banner.s};
     if (g->named_kernel)
         slots[n++] = (tpl_slot){"PREFIX", info->prefix};
@@ -101,10 +102,8 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     slots[n++] = (tpl_slot){"TABLES", tables.s};
     slots[n++] = (tpl_slot){"FUNCTIONS", funcs.s};
     slots[n++] = (tpl_slot){"BODY", body.s};
-    if (!g->shared_in_body) {
-        kgpu_shared(&shared, info, g, up, "");
+    if (!g->shared_in_body)
         slots[n++] = (tpl_slot){"SHARED", shared.s};
-    }
     if (g->planes_buffer)
         slots[n++] = (tpl_slot){"PLANES_BUFFER", info->planes ? g->planes_buffer : ""};
     if (banner.failed || tables.failed || funcs.failed || shared.failed || body.failed)
@@ -119,3 +118,79 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     return st;
 }
 
+/* The straight-line kernel: one patch an invocation, calling classify_patch (and values), in the
+ * same template with no tables and no shared memory. */
+static int emit_slp(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                    const char *up, const char *file, ptp_error *err)
+{
+    sbuf banner, consts, funcs, body;
+    out_info in = *info;
+    char threads[16];
+    tpl_slot slots[9];
+    size_t n = 0;
+    int st;
+    in.sched = NULL; /* the banner states the straight-line dispatch */
+    snprintf(threads, sizeof threads, "%d", info->group);
+    sbuf_init(&banner);
+    sbuf_init(&consts);
+    sbuf_init(&funcs);
+    sbuf_init(&body);
+    fmt_banner(&banner, t, &in, file, g->language, g->interface);
+    st = kgpu_slp_kernel_parts(&consts, &funcs, t, info, g, up, err);
+    kgpu_slp_body(&body, info, g, up);
+    slots[n++] = (tpl_slot){"BANNER", banner.s};
+    if (g->named_kernel)
+        slots[n++] = (tpl_slot){"PREFIX", info->prefix};
+    slots[n++] = (tpl_slot){"BLOCK_THREADS", threads};
+    slots[n++] = (tpl_slot){"TABLES", consts.s};
+    slots[n++] = (tpl_slot){"FUNCTIONS", funcs.s};
+    slots[n++] = (tpl_slot){"BODY", body.s};
+    if (!g->shared_in_body)
+        slots[n++] = (tpl_slot){"SHARED", ""};
+    if (g->planes_buffer)
+        slots[n++] = (tpl_slot){"PLANES_BUFFER", info->planes ? g->planes_buffer : ""};
+    if (banner.failed || consts.failed || funcs.failed || body.failed)
+        st = st ? st : ptp_fail(err, PTP_ENOMEM, "out of memory writing the kernel");
+    if (!st)
+        st = tpl_fill(o, g->template_name, slots, n, err);
+    sbuf_clear(&banner);
+    sbuf_clear(&consts);
+    sbuf_clear(&funcs);
+    sbuf_clear(&body);
+    return st;
+}
+
+/* --stage function: the banner, the target's preamble and the functions alone. */
+static int emit_functions(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                          const char *file, ptp_error *err)
+{
+    out_info in = *info;
+    sbuf note;
+    int st;
+    in.sched = NULL;
+    sbuf_init(&note);
+    sbuf_printf(&note, " * Functions for any shader stage (compute, tessellation control or hull, mesh, task):\n"
+                       " * %sclassify_patch(cp, eye%s) returns the class of the patch cp[0..K-1];\n"
+                       " * %svalues(cp, eye%s, d) writes the value d[P] of each plane.\n%s",
+                info->prefix, g->slp_zero ? ", zero" : "", info->prefix, g->slp_zero ? ", zero" : "",
+                kgpu_opt(g->slp_note));
+    fmt_banner(o, t, &in, file, g->language, note.s);
+    sbuf_puts(o, kgpu_opt(g->slp_preamble));
+    st = kgpu_slp_functions(o, t, info, g, err);
+    if (note.failed)
+        st = st ? st : ptp_fail(err, PTP_ENOMEM, "out of memory writing the functions");
+    sbuf_clear(&note);
+    return st;
+}
+
+int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                  ptp_error *err)
+{
+    char up[64], file[96];
+    fmt_upper(up, sizeof up, info->prefix);
+    fmt_file_name(file, sizeof file, info->prefix, info->suffix);
+    if (info->functions)
+        return emit_functions(o, t, info, g, file, err);
+    return info->table ? emit_table(o, t, info, g, up, file, err)
+                       : emit_slp(o, t, info, g, up, file, err);
+}

@@ -141,4 +141,14 @@ void kgpu_df_weight_lo(sbuf *o, const tp_table *t, const out_info *info, const k
  * part, for comparing the high part alone). */
 void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const char *up);
 
+/* kern_gpu_slp.c: the straight-line kernel, one patch an invocation. */
+
+/* The straight-line kernel's constants P (1), Q, K, L into tables and its functions into funcs. */
+int kgpu_slp_kernel_parts(sbuf *tables, sbuf *funcs, const tp_table *t, const out_info *info,
+                          const kern_target *g, const char *up, ptp_error *err);
+
+/* The straight-line kernel's body: invocation pid copies patch pid's points and calls
+ * classify_patch (with --planes, values too). */
+void kgpu_slp_body(sbuf *o, const out_info *info, const kern_target *g, const char *up);
+
 #endif

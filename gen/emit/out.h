@@ -14,6 +14,10 @@ typedef enum { OUT_CLIP, OUT_WORLD } out_space;
  * iff none > 0, front iff none < 0 (all zero counts as back). NaN makes a patch silhouette. */
 typedef enum { OUT_STRICT, OUT_DEGENERATE } out_rule;
 
+/* The straight-line GPU kernel's patches (invocations) per workgroup unless told otherwise: local
+ * sizes of 8 to 256 ran alike on lavapipe (bench/README). */
+#define OUT_SLP_GROUP 64
+
 /* What every output names besides the table itself. */
 typedef struct {
     const char *command; /* the normalized command line that makes this output */
@@ -24,6 +28,10 @@ typedef struct {
     int planes;          /* kernels also write the per-plane values */
     int certified;       /* back or front only when every value clears its rounding bound */
     int refine;          /* C: de Casteljau levels on e.T when the values have mixed signs */
+    int table;           /* GPU: the paper's table kernel, sched's P threads a patch (else the
+                            straight-line program, one patch an invocation) */
+    int functions;       /* GPU: only the functions classify_patch and values, for any stage */
+    int group;           /* GPU straight-line kernel: patches (invocations) per workgroup */
     const char *suffix;  /* the target's file suffix, ".comp" (tgt_emit_target sets it from the
                             registry): a banner names the file <prefix without its '_'><suffix> */
 } out_info;

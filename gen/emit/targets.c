@@ -4,7 +4,8 @@
 
 #include <string.h>
 
-#define KERNEL (TGT_SPACE | TGT_RULE | TGT_PLANES | TGT_CERTIFIED | TGT_PREFIX | TGT_SCHEDULE)
+#define KERNEL \
+    (TGT_SPACE | TGT_RULE | TGT_PLANES | TGT_CERTIFIED | TGT_PREFIX | TGT_SCHEDULE | TGT_KERNEL)
 
 const tgt_target tgt_targets[] = {
     {"json", ".json", "the exact terms and schedule, ptpgen-planes/1", out_json, NULL, TGT_SCHEDULE},
@@ -22,7 +23,7 @@ const tgt_target tgt_targets[] = {
 const int tgt_count = (int)(sizeof tgt_targets / sizeof *tgt_targets);
 
 static const char *const option_names[] = {"space",  "rule",   "planes",  "certified",
-                                           "refine", "prefix", "schedule"};
+                                           "refine", "prefix", "schedule", "kernel"};
 _Static_assert(sizeof option_names / sizeof *option_names == TGT_NOPTIONS,
                "one name per TGT_ bit");
 

@@ -14,11 +14,13 @@ enum {
     TGT_CERTIFIED = 1 << 3, /* --certified: C and kernels (rounding bounds) */
     TGT_REFINE = 1 << 4,    /* --refine K: C only (a de Casteljau loop on the CPU) */
     TGT_PREFIX = 1 << 5,    /* --prefix: targets that declare names (table, C, kernels) */
-    TGT_SCHEDULE = 1 << 6   /* --threads-per-patch, --patches-per-block: targets that write the
+    TGT_SCHEDULE = 1 << 6,  /* --threads-per-patch, --patches-per-block: targets that write the
                                schedule (json, table, stats, GPU kernels; C: a thread a patch) */
+    TGT_KERNEL = 1 << 7     /* --kernel, --stage: the GPU targets' form (straight-line or table,
+                               kernel or functions) */
 };
 /* The number of TGT_ bits. */
-#define TGT_NOPTIONS 7
+#define TGT_NOPTIONS 8
 
 /* An emitter: writes target output for table t into o (the signature of out.h and kern.h). */
 typedef int (*tgt_emit)(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err);

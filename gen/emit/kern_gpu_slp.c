@@ -1,0 +1,194 @@
+/* kern_gpu_slp.c: the straight-line program on the GPU targets: the functions classify_patch and
+ * values for any shader stage, and the compute kernel that runs one patch an invocation on them. */
+#include "emit/kern_gpu.h"
+#include "emit/slp_text.h"
+
+#include <stdio.h>
+#include <string.h>
+
+/* What the functions' plane_end hooks read: the target, the options and the function written. */
+typedef struct {
+    const kern_target *g;
+    const out_info *info;
+    int values; /* values (else classify_patch) */
+} fn_ctx;
+
+/* Coordinate c of point k: cp[k].x. */
+static void fn_load(char *out, size_t size, const slpt_writer *w, int k, int c)
+{
+    (void)w;
+    snprintf(out, size, "cp[%d].%c", k, "xyzw"[c]);
+}
+
+/* After each plane: values stores it at true scale; classify_patch folds it into the rule's
+ * flags (strict lt, gt: every value so far < 0, > 0; degenerate: some value < 0, > 0, NaN). */
+static void fn_plane_end(slpt_writer *w, int plane, int first)
+{
+    const fn_ctx *x = w->ctx;
+    const kern_target *g = x->g;
+    char d[32], k[48], e[160], nan[96];
+    if (x->values) {
+        snprintf(d, sizeof d, g->slp_d, plane);
+        if (slpt_inverse_scale(k, sizeof k, w->p, plane))
+            sbuf_printf(w->o, "    %s = %s;\n", d, kgpu_mul(e, sizeof e, g, "v", k));
+        else
+            sbuf_printf(w->o, "    %s = v;\n", d);
+        return;
+    }
+    if (x->info->rule == OUT_STRICT) {
+        if (first)
+            sbuf_printf(w->o, "    lt = v < 0.0f;\n    gt = v > 0.0f; /* plane %d */\n", plane);
+        else
+            sbuf_printf(w->o, "    lt = lt && v < 0.0f;\n    gt = gt && v > 0.0f; /* plane %d */\n", plane);
+        return;
+    }
+    snprintf(nan, sizeof nan, g->syntax->isnan, "v");
+    if (first)
+        sbuf_printf(w->o, "    lt = v < 0.0f;\n    gt = v > 0.0f;\n    nan = %s; /* plane %d */\n", nan,
+                    plane);
+    else
+        sbuf_printf(w->o, "    lt = lt || v < 0.0f;\n    gt = gt || v > 0.0f;\n"
+                          "    nan = nan || %s; /* plane %d */\n", nan, plane);
+}
+
+/* The eye's components the program reads (e2 in clip space), u and v, and the flags. */
+static void put_slp_locals(sbuf *o, const out_info *info, const kern_target *g, int values)
+{
+    static const char *const comp[4] = {"eye.x", "eye.y", "eye.z", "eye.w"};
+    kern_var e[4] = {{"e0", comp[0], 0}, {"e1", comp[1], 0}, {"e2", comp[2], 0}, {"e3", comp[3], 0}};
+    kern_var uv[2] = {{"u", NULL, 1}, {"v", NULL, 1}};
+    kern_var f[3] = {{"lt", NULL, 1}, {"gt", NULL, 1}, {"nan", NULL, 1}};
+    if (info->space == OUT_WORLD)
+        g->syntax->locals(o, g, "    ", g->real, e, 4, 1);
+    else
+        g->syntax->locals(o, g, "    ", g->real, e + 2, 1, 1);
+    g->syntax->locals(o, g, "    ", g->real, uv, 2, 1);
+    if (!values)
+        g->syntax->locals(o, g, "    ", "bool", f, info->rule == OUT_STRICT ? 2 : 3, 0);
+}
+
+/* The class from the flags: strict back (1) iff lt, front (0) iff gt; degenerate silhouette (2)
+ * on NaN, back iff no value > 0, front iff none < 0; else silhouette. */
+static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g)
+{
+    char a[128], b[192], c[256];
+    if (info->rule == OUT_STRICT) {
+        g->syntax->select(a, sizeof a, "gt", "0u", "2u");
+        g->syntax->select(b, sizeof b, "lt", "1u", a);
+    } else {
+        g->syntax->select(a, sizeof a, "lt", "2u", "0u");
+        g->syntax->select(c, sizeof c, "gt", a, "1u");
+        g->syntax->select(b, sizeof b, "nan", "2u", c);
+    }
+    sbuf_printf(o, "    return %s;\n", b);
+}
+
+/* One function: classify_patch (values 0) or values, its head, locals, program and end. */
+static int put_slp_function(sbuf *o, const slp_prog *p, const tp_table *t, const out_info *info,
+                            const kern_target *g, int values, ptp_error *err)
+{
+    char name[128], mul[160], fma[96];
+    slpt_syntax syn = {"    ", g->slp_decl, 0, mul, fma, fma, fn_load, fn_plane_end};
+    fn_ctx ctx = {g, info, values};
+    slpt_writer w;
+    int st;
+    if (g->slp_mul)
+        snprintf(mul, sizeof mul, g->slp_mul, info->prefix);
+    else
+        snprintf(mul, sizeof mul, "%s", g->mul);
+    snprintf(fma, sizeof fma, "%s", g->slp_fma);
+    snprintf(name, sizeof name, "%s%s", info->prefix, values ? "values" : "classify_patch");
+    if (values)
+        sbuf_printf(o, "/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */\n");
+    else
+        sbuf_printf(o, "/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */\n");
+    sbuf_printf(o, values ? g->slp_values : g->slp_classify, name, t->dom.npoints, t->dom.nplanes);
+    sbuf_puts(o, "\n");
+    put_slp_locals(o, info, g, values);
+    if ((st = slpt_init(&w, o, p, &syn, info->space == OUT_WORLD, &ctx, err)) != PTP_OK)
+        return st;
+    st = slpt_program(&w, err);
+    slpt_clear(&w);
+    if (!values)
+        put_slp_return(o, info, g);
+    sbuf_puts(o, "}\n\n");
+    return st;
+}
+
+int kgpu_slp_functions(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                       ptp_error *err)
+{
+    slp_prog prog;
+    int st = slp_build(&prog, t, err);
+    if (st)
+        return st;
+    if (g->slp_helpers)
+        sbuf_printf(o, g->slp_helpers, info->prefix);
+    st = put_slp_function(o, &prog, t, info, g, 0, err);
+    if (!st)
+        st = put_slp_function(o, &prog, t, info, g, 1, err);
+    slp_clear(&prog);
+    return st;
+}
+
+/* The constants P (1), Q, K and L of the compute kernel. */
+static void put_slp_constants(sbuf *o, const tp_table *t, const out_info *info,
+                              const kern_target *g, const char *up)
+{
+    static const char *const what[4] = {"threads per patch", "patches per workgroup",
+                                        "control points per patch", "control planes per patch"};
+    long v[4] = {1, info->group, t->dom.npoints, t->dom.nplanes};
+    char name[80], lit[32];
+    int i;
+    for (i = 0; i < 4; i++) {
+        snprintf(name, sizeof name, "%s%c", up, "PQKL"[i]);
+        snprintf(lit, sizeof lit, "%ldu", v[i]);
+        g->syntax->constant(o, g, name, g->uint, lit, what[i]);
+    }
+    sbuf_puts(o, "\n");
+}
+
+void kgpu_slp_body(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *px = info->prefix, *in = g->planes_buffer ? "    " : "        ";
+    char pid[256], arg[64], k[80], l[80];
+    kern_var i = {"i", NULL, 1};
+    snprintf(pid, sizeof pid, "(%s * %s + %s) * %sQ + %s", g->group_y, g->groups_x, g->group_x, up,
+             g->local_id);
+    snprintf(k, sizeof k, "%sK", up);
+    snprintf(l, sizeof l, "%sL", up);
+    kgpu_local(o, g, g->uint, "pid", pid, 0);
+    g->syntax->locals(o, g, "    ", g->uint, &i, 1, 0);
+    g->syntax->array(o, g, "    ", g->vec4, "p", k);
+    sbuf_puts(o, "    if (pid >= patch_count)");
+    kgpu_then(o, g);
+    sbuf_puts(o, "        return;\n");
+    kgpu_end(o, g, "    ");
+    sbuf_printf(o, "    for (i = 0u; i < %s; i++)", k);
+    kgpu_then(o, g);
+    sbuf_printf(o, "        p[i] = cp[pid * %s + i];\n", k);
+    kgpu_end(o, g, "    ");
+    sbuf_printf(o, "    cls[pid] = %sclassify_patch(p, eye%s);\n", px, kgpu_opt(g->slp_zero));
+    if (!info->planes)
+        return;
+    g->syntax->array(o, g, "    ", g->real, "d", l);
+    snprintf(arg, sizeof arg, g->slp_ref, "d");
+    sbuf_printf(o, "    %svalues(p, eye%s, %s);\n", px, kgpu_opt(g->slp_zero), arg);
+    if (!g->planes_buffer) { /* a kernel parameter that may be null */
+        sbuf_puts(o, "    if (planes)");
+        kgpu_then(o, g);
+    }
+    sbuf_printf(o, "%sfor (i = 0u; i < %s; i++)", in, l);
+    kgpu_then(o, g);
+    sbuf_printf(o, "%s    planes[pid * %s + i] = d[i];\n", in, l);
+    kgpu_end(o, g, in);
+    if (!g->planes_buffer)
+        kgpu_end(o, g, "    ");
+}
+
+int kgpu_slp_kernel_parts(sbuf *tables, sbuf *funcs, const tp_table *t, const out_info *info,
+                          const kern_target *g, const char *up, ptp_error *err)
+{
+    put_slp_constants(tables, t, info, g, up);
+    return kgpu_slp_functions(funcs, t, info, g, err);
+}
