@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # test_examples.sh: the README's examples (tests/examples/) compile and run: cull.c with gcc and
-# clang on BigGuy against world space, cull.tesc with glslangValidator; the README shows them verbatim.
+# clang on BigGuy against world space, cull.tesc with glslangValidator, and the shaders that cull
+# their own patch (cull_patch.tesc, the hull shader cull_patch.hlsl) on --stage function's files
+# with glslangValidator; the README shows them verbatim.
 # Needs PTPGEN (default build/gcc/ptpgen).
 set -u
 P=${PTPGEN:-build/gcc/ptpgen}
@@ -17,7 +19,7 @@ in_readme() {
     python3 -c 'import sys; sys.exit(open(sys.argv[1]).read() not in open("README.md").read())' "$1"
 }
 
-for f in $ex/cull.c $ex/cull.tesc; do
+for f in $ex/cull.c $ex/cull.tesc $ex/cull_patch.tesc $ex/cull_patch.hlsl; do
     if in_readme "$f"; then
         ok "README.md shows $f verbatim"
     else
@@ -67,4 +69,31 @@ elif glslangValidator -V $ex/cull.tesc -o "$tmp/cull.spv" >"$tmp/err" 2>&1 &&
     ok "cull.tesc compiles with glslangValidator -V and validates"
 else
     notok "cull.tesc compiles with glslangValidator -V" "$(grep -m3 -i error "$tmp/err")"
+fi
+
+# The shaders that cull their own patch, on the functions of --stage function: the GLSL
+# tessellation control shader and the HLSL hull shader compile to SPIR-V that validates; a
+# functions file with a wrong name does not compile (the include is really used).
+stage_shader() { # LABEL FILE FLAGS...: compiles FILE with the functions in $tmp
+    local label=$1 f=$2
+    shift 2
+    if glslangValidator "$@" -I"$tmp" "$f" -o "$tmp/stage.spv" >"$tmp/err" 2>&1 && spirv-val "$tmp/stage.spv" >>"$tmp/err" 2>&1; then
+        ok "$label compiles with glslangValidator and validates"
+    else
+        notok "$label compiles with glslangValidator" "$(grep -m3 -i error "$tmp/err")"
+    fi
+}
+if command -v glslangValidator >/dev/null && command -v spirv-val >/dev/null &&
+    "$P" --degree 3 --target glsl --stage function -o "$tmp/ptp_3x3.glsl" &&
+    "$P" --degree 3 --target hlsl --stage function -o "$tmp/ptp_3x3.hlsli"; then
+    stage_shader "cull_patch.tesc (GLSL tessellation control)" $ex/cull_patch.tesc -V
+    stage_shader "cull_patch.hlsl (HLSL hull shader)" $ex/cull_patch.hlsl -D -V -S tesc -e main
+    "$P" --degree 3 --target glsl --stage function --prefix other_ -o "$tmp/ptp_3x3.glsl"
+    if ! glslangValidator -V -I"$tmp" $ex/cull_patch.tesc -o "$tmp/stage.spv" >/dev/null 2>&1; then
+        ok "cull_patch.tesc fails to compile without ptp_3x3_classify_patch"
+    else
+        notok "cull_patch.tesc fails to compile without ptp_3x3_classify_patch" "it compiled"
+    fi
+else
+    notok "the --stage function shaders compile" "glslangValidator, spirv-val or ptpgen failed"
 fi

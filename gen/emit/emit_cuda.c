@@ -37,4 +37,6 @@ const kern_target kern_cuda = {
     .slp_decl = "const float ",
     .slp_fma = "__fmaf_rn(%s, %s, %s)",
     .slp_ref = "%s",
+    .slp_suffix = ".cuh",
+    .slp_language = "CUDA device functions",
 };

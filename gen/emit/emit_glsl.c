@@ -32,4 +32,6 @@ const kern_target kern_glsl = {
     .slp_decl = "precise float ",
     .slp_fma = "fma(%s, %s, %s)",
     .slp_ref = "%s",
+    .slp_suffix = ".glsl",
+    .slp_language = "GLSL 4.50 functions",
 };

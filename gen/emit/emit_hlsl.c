@@ -35,4 +35,6 @@ const kern_target kern_hlsl = {
     .slp_decl = "precise float ",
     .slp_fma = "mad(%s, %s, %s)",
     .slp_ref = "%s",
+    .slp_suffix = ".hlsli",
+    .slp_language = "HLSL functions (Shader Model 5 and later)",
 };

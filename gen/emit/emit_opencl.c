@@ -37,4 +37,6 @@ const kern_target kern_opencl = {
     .slp_preamble = "#pragma OPENCL FP_CONTRACT OFF\n\n",
     .slp_note = " * The points are private memory (an array the caller copies them into). The file sets\n"
                 " * #pragma OPENCL FP_CONTRACT OFF: equal points give exact zeros.\n",
+    .slp_suffix = ".cl",
+    .slp_language = "OpenCL C 1.2 functions",
 };

@@ -115,4 +115,6 @@ const kern_target kern_wgsl = {
     .slp_ref = "&%s",
     .slp_note = " * zero: 0, read from a uniform or storage buffer so that the compiler cannot know it\n"
                 " * (it keeps the products out of FMAs, so that equal points give exact zeros).\n",
+    .slp_suffix = ".wgsl",
+    .slp_language = "WGSL functions",
 };

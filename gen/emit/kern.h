@@ -137,6 +137,8 @@ struct kern_target {
     const char *slp_ref;      /* a call's argument for the array d, printf format of d: "%s" */
     const char *slp_note;     /* the banner's words on calling the functions, or NULL */
     const char *slp_preamble; /* what --stage function's file needs before them, or NULL */
+    const char *slp_suffix;   /* --stage function's file suffix, for the banner: ".glsl" */
+    const char *slp_language; /* --stage function's language, for the banner: "GLSL 4.50 functions" */
 };
 
 /* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */

@@ -168,13 +168,14 @@ static int emit_functions(sbuf *o, const tp_table *t, const out_info *info, cons
     sbuf note;
     int st;
     in.sched = NULL;
+    in.group = 0; /* no workgroup */
     sbuf_init(&note);
     sbuf_printf(&note, " * Functions for any shader stage (compute, tessellation control or hull, mesh, task):\n"
                        " * %sclassify_patch(cp, eye%s) returns the class of the patch cp[0..K-1];\n"
                        " * %svalues(cp, eye%s, d) writes the value d[P] of each plane.\n%s",
                 info->prefix, g->slp_zero ? ", zero" : "", info->prefix, g->slp_zero ? ", zero" : "",
                 kgpu_opt(g->slp_note));
-    fmt_banner(o, t, &in, file, g->language, note.s);
+    fmt_banner(o, t, &in, file, g->slp_language, note.s);
     sbuf_puts(o, kgpu_opt(g->slp_preamble));
     st = kgpu_slp_functions(o, t, info, g, err);
     if (note.failed)
@@ -188,7 +189,7 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
 {
     char up[64], file[96];
     fmt_upper(up, sizeof up, info->prefix);
-    fmt_file_name(file, sizeof file, info->prefix, info->suffix);
+    fmt_file_name(file, sizeof file, info->prefix, info->functions ? g->slp_suffix : info->suffix);
     if (info->functions)
         return emit_functions(o, t, info, g, file, err);
     return info->table ? emit_table(o, t, info, g, up, file, err)
