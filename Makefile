@@ -184,7 +184,7 @@ RENDER_SRC = $(sort $(wildcard bench/render/*.c)) bench/cones.c
 RENDER_HDR = $(wildcard bench/render/*.h) bench/cones.h bench/vec3.h tests/vk_result.h
 RENDER_SHADERS = xform:xform.comp cone:cone.comp vert:patch.vert tesc:patch.tesc \
     tese:patch.tese frag:shade.frag
-RENDER_SPV = $(foreach s,$(RENDER_SHADERS) ptp ptp_cert,$(RB)/spv_$(firstword $(subst :, ,$(s))).h)
+RENDER_SPV = $(foreach s,$(RENDER_SHADERS) ptp ptp_cert ptp_table tesc_ptp,$(RB)/spv_$(firstword $(subst :, ,$(s))).h)
 
 render: build/render
 
@@ -204,6 +204,20 @@ endef
 $(foreach s,$(RENDER_SHADERS),$(eval $(call render_spv,$(word 1,$(subst :, ,$(s))),bench/render/$(word 2,$(subst :, ,$(s))))))
 $(eval $(call render_spv,ptp,$(RB)/ptp.comp))
 $(eval $(call render_spv,ptp_cert,$(RB)/ptp_cert.comp))
+$(eval $(call render_spv,ptp_table,$(RB)/ptp_table.comp))
+
+# ptp-tcs: patch.tesc classifying its own patch with the functions of --stage function.
+$(RB)/spv_tesc_ptp.h: bench/render/patch.tesc bench/render/params.glsl $(RB)/ptp_3x3.glsl
+	@mkdir -p $(@D)
+	@glslangValidator -V -DPTP_TCS -I$(RB) --vn render_spv_tesc_ptp -o $@ $< >$@.log || { cat $@.log; exit 1; }
+
+$(RB)/ptp_3x3.glsl: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target glsl --stage function -o $@
+
+$(RB)/ptp_table.comp: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target glsl --space clip --kernel table -o $@
 
 $(RB)/ptp.comp: $(B)/ptpgen
 	@mkdir -p $(@D)
@@ -214,10 +228,11 @@ $(RB)/ptp_cert.comp: $(B)/ptpgen
 	$(B)/ptpgen --degree 3 --target glsl --space clip --certified --prefix ptp_3x3_ -o $@
 
 # The kernels' patches per workgroup (the default schedule), for the host's dispatch.
-$(RB)/ptp_groups.h: $(RB)/ptp.comp $(RB)/ptp_cert.comp
+$(RB)/ptp_groups.h: $(RB)/ptp.comp $(RB)/ptp_cert.comp $(RB)/ptp_table.comp
 	@{ sed -n 's/^#define PTP_3X3_Q \([0-9]*\)u.*/#define RENDER_PTP_Q \1u/p' $(RB)/ptp.comp; \
-	   sed -n 's/^#define PTP_3X3_Q \([0-9]*\)u.*/#define RENDER_PTP_CERT_Q \1u/p' $(RB)/ptp_cert.comp; } >$@.tmp
-	@test "$$(wc -l <$@.tmp)" = 2 || { echo "no PTP_3X3_Q in $(RB)/ptp*.comp"; exit 1; }
+	   sed -n 's/^#define PTP_3X3_Q \([0-9]*\)u.*/#define RENDER_PTP_CERT_Q \1u/p' $(RB)/ptp_cert.comp; \
+	   sed -n 's/^#define PTP_3X3_Q \([0-9]*\)u.*/#define RENDER_PTP_TABLE_Q \1u/p' $(RB)/ptp_table.comp; } >$@.tmp
+	@test "$$(wc -l <$@.tmp)" = 3 || { echo "no PTP_3X3_Q in $(RB)/ptp*.comp"; exit 1; }
 	@mv $@.tmp $@
 
 # `make figures`: build/render over tessellation factors 1 to 64 for every cull method on BigGuy

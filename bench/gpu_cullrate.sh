@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # gpu_cullrate.sh: what the certified GPU kernels cull on BigGuy as the GPU targets compute them
-# (GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native, CUDA emulated on the CPU by
+# (table kernels: GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native, CUDA emulated on the CPU by
 # tests/cuda_emu.h: "cuda-emu"), against the plain kernels of the same rule.
 #   bash bench/gpu_cullrate.sh BUILD [NEYES]   (BUILD holds ptpgen and the hosts; default 2 eyes
 #   per radius and space; MODELS names the models' folder). `make cullrate-gpu` runs it.
@@ -31,7 +31,7 @@ kernel() {
     local f="$tmp/$1-$2-$3-$4" cert="" t=${1%-emu}
     [ "$4" = certified ] && cert=--certified
     # a short prefix: the default names of the degenerate certified kernels grow long
-    "$B/ptpgen" --degree 3 --space "$2" --rule "$3" $cert --prefix gc_ --target $t -o "$f.$t" >&2 || return
+    "$B/ptpgen" --degree 3 --space "$2" --rule "$3" $cert --kernel table --prefix gc_ --target $t -o "$f.$t" >&2 || return
     case $1 in
     glsl) glslangValidator -S comp -V "$f.glsl" -o "$f.spv" >"$f.err" || { head -3 "$f.err" >&2; return; }
           echo "$B/host_vulkan $f.spv" ;;

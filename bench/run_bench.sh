@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# run_bench.sh: prints `make bench`'s table: the bench_cull rows of each bidegree, the OpenCL kernel
-# on PoCL, the GLSL kernel on lavapipe and the WGSL kernel on wgpu-native (lavapipe) through the
-# test hosts' --bench, ptpgen's own time, and bench_tri's triangle rows.
+# run_bench.sh: prints `make bench`'s table: the bench_cull rows of each bidegree, the OpenCL kernels
+# on PoCL and the GLSL kernels on lavapipe (straight-line and table), the WGSL kernel on
+# wgpu-native (lavapipe) through the test hosts' --bench, ptpgen's own time, and bench_tri's
+# triangle rows.
 #   bench/run_bench.sh BUILD CC "CFLAGS" DEGREE...   (BUILD holds ptpgen, bench/ and the hosts)
 set -u
 B=$1 CC=$2 FLAGS=$3
@@ -81,6 +82,13 @@ gpu_bench() {
     fi
 }
 
+# kernel_cfg KERNEL DEGREE: the hosts' options for a clip-space strict kernel of bidegree DEGREE,
+# with the workgroup of its banner ("Schedule: P threads per patch, Q patches per workgroup").
+kernel_cfg() {
+    sed -n 's/^ \* Schedule: [0-9]* threads\{0,1\} per patch, \([0-9]*\) patches per workgroup (\([0-9]*\) threads).*/--block-threads \2 --patches-per-block \1/p' "$1"
+    echo "--degree ${2%x*} ${2#*x} --space clip --rule strict"
+}
+
 notes=()
 gen=""
 for d in "$@"; do
@@ -89,34 +97,35 @@ for d in "$@"; do
     while IFS= read -r line; do notes+=("$line"); done < <(grep '^#' "$tmp/rows")
     # the paper loop's patches/s and flops, for the kernels' rows
     read -r paper flops < <(awk '$2 == "paper" && $3 == "loop" { print $4 * 1e6, $5 }' "$tmp/rows")
-    "$B/ptpgen" --degree "$d" --target json -o "$tmp/k.json" || fail "ptpgen --degree $d failed"
-    pq=$(sed -n 's/.*"threads_per_patch": \([0-9]*\).*/\1/p' "$tmp/k.json")
-    q=$(sed -n 's/.*"patches_per_block": \([0-9]*\).*/\1/p' "$tmp/k.json")
-    cfg=(--degree "${d%x*}" "${d#*x}" --space clip --rule strict --block-threads $((pq * q))
-        --patches-per-block "$q")
+    # The kernels: the straight-line kernel (default) and the paper's table kernel (table), each
+    # dispatched as its banner's schedule says.
+    for kernel in slp table; do
+        kn=$([ $kernel = table ] && echo " table")
 
-    # OpenCL on PoCL
-    rate="" check=""
-    if [ -x "$B/host_opencl" ] && "$B/ptpgen" --degree "$d" --target opencl -o "$tmp/k.cl"; then
-        gpu_bench "$B/host_opencl" "$tmp/k.cl" --kernel "ptp_${d}_classify" "${cfg[@]}"
-    fi
-    gpu_row "$d" "OpenCL (PoCL), $cores" "$rate" "$flops" "$paper" "$check"
+        # OpenCL on PoCL
+        rate="" check=""
+        if [ -x "$B/host_opencl" ] && "$B/ptpgen" --degree "$d" --target opencl --kernel $kernel -o "$tmp/k.cl"; then
+            gpu_bench "$B/host_opencl" "$tmp/k.cl" --kernel "ptp_${d}_classify" $(kernel_cfg "$tmp/k.cl" $d)
+        fi
+        gpu_row "$d" "OpenCL$kn (PoCL), $cores" "$rate" "$flops" "$paper" "$check"
 
-    # GLSL on lavapipe
-    rate="" check=""
-    if [ -x "$B/host_vulkan" ] && command -v glslangValidator >/dev/null &&
-        "$B/ptpgen" --degree "$d" --target glsl -o "$tmp/k.comp" &&
-        glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >/dev/null 2>&1; then
-        gpu_bench "$B/host_vulkan" "$tmp/k.spv" "${cfg[@]}"
-    fi
-    gpu_row "$d" "GLSL (lavapipe), $cores" "$rate" "$flops" "$paper" "$check"
+        # GLSL on lavapipe
+        rate="" check=""
+        if [ -x "$B/host_vulkan" ] && command -v glslangValidator >/dev/null &&
+            "$B/ptpgen" --degree "$d" --target glsl --kernel $kernel -o "$tmp/k.comp" &&
+            glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >/dev/null 2>&1; then
+            gpu_bench "$B/host_vulkan" "$tmp/k.spv" $(kernel_cfg "$tmp/k.comp" $d)
+        fi
+        gpu_row "$d" "GLSL$kn (lavapipe), $cores" "$rate" "$flops" "$paper" "$check"
 
-    # WGSL on wgpu-native (lavapipe through Vulkan)
-    rate="" check=""
-    if [ -x "$B/host_wgpu" ] && "$B/ptpgen" --degree "$d" --target wgsl -o "$tmp/k.wgsl"; then
-        gpu_bench "$B/host_wgpu" "$tmp/k.wgsl" "${cfg[@]}"
-    fi
-    gpu_row "$d" "WGSL (wgpu, lavapipe), $cores" "$rate" "$flops" "$paper" "$check"
+        # WGSL on wgpu-native (lavapipe through Vulkan): the straight-line kernel
+        [ $kernel = table ] && continue
+        rate="" check=""
+        if [ -x "$B/host_wgpu" ] && "$B/ptpgen" --degree "$d" --target wgsl -o "$tmp/k.wgsl"; then
+            gpu_bench "$B/host_wgpu" "$tmp/k.wgsl" $(kernel_cfg "$tmp/k.wgsl" $d)
+        fi
+        gpu_row "$d" "WGSL (wgpu, lavapipe), $cores" "$rate" "$flops" "$paper" "$check"
+    done
 
     gen+="${gen:+, }$d $("$B/bench/bench_cull_$d" --gen "$B/ptpgen" || echo ?) ms"
 done

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # second_look.sh: what the GPU certified kernel's second look in double-float recovers, and how
 # often it runs: the world-space bicubic GLSL (or OpenCL) kernel over BigGuy, plain, certified with
-# the float bound alone (the second look switched off) and certified, with the culls given up
+# the float bound alone (the second look switched off) and certified (table kernels), with the culls given up
 # against the double reference, the kernel's culls (back and front), the dispatch time and the
 # patches that take the second look.
 #   bash bench/second_look.sh BUILD [NEYES [SPACE [TARGET]]]   (BUILD holds ptpgen and host_vulkan,
@@ -9,7 +9,7 @@
 set -u
 B=$1 neyes=${2:-24} space=${3:-world} target=${4:-glsl}
 . bench/gpu_lib.sh
-"$B/ptpgen" --degree 3 --space "$space" --prefix sl_ --target "$target" -o "$tmp/plain.src" &&
+"$B/ptpgen" --degree 3 --space "$space" --kernel table --prefix sl_ --target "$target" -o "$tmp/plain.src" &&
     "$B/ptpgen" --degree 3 --space "$space" --certified --prefix sl_ --target "$target" -o "$tmp/on.src" || exit 1
 sed 's/bool again = live &&/bool again = false \&\& live \&\&/' "$tmp/on.src" >"$tmp/off.src"
 # the patches that take the second look, as front (every other patch silhouette)

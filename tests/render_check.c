@@ -3,9 +3,10 @@
  * (classify_batch) on the same clip-space floats, and the TCONE / NCONE shader's culled set
  * against bench/cones.c on the same model and eye (the axis negated for --orientation in).
  *
- *   render_check ptp|ptp-certified DUMP LABEL      (compiled with rc_s.h and rc_c.h, ptpgen's
- *   render_check tcone|ncone DUMP MODEL.bez LABEL   clip-space C headers, strict and certified,
- *                                                   and linked with libptptest.a)
+ *   render_check ptp|ptp-table|ptp-tcs|ptp-certified DUMP LABEL
+ *   render_check tcone|ncone DUMP MODEL.bez LABEL
+ * (compiled with rc_s.h and rc_c.h, ptpgen's clip-space C headers, strict and certified, and
+ * linked with libptptest.a)
  *
  * Prints "ok - LABEL: ..." / "not ok - ..." lines; exits 0 when every check passed, 1 when one
  * failed, 2 for bad input. */
@@ -170,12 +171,13 @@ int main(int argc, char **argv)
     dump d;
     int ok = 0, rc = 2;
     if (argc < 4 || read_dump(&d, argv[2])) {
-        fprintf(stderr, "usage: render_check ptp|ptp-certified DUMP LABEL | tcone|ncone DUMP "
+        fprintf(stderr, "usage: render_check ptp|ptp-table|ptp-tcs|ptp-certified DUMP LABEL | "
+                        "tcone|ncone DUMP "
                         "MODEL LABEL (DUMP: a build/render --dump-clip file)\n");
         return 2;
     }
-    if ((!strcmp(argv[1], "ptp") || !strcmp(argv[1], "ptp-certified")) && argc == 4) {
-        ok = check_ptp(&d, argv[1][3] == '-', argv[3]);
+    if (!strncmp(argv[1], "ptp", 3) && argc == 4) { /* every plain ptp method, or certified */
+        ok = check_ptp(&d, !strcmp(argv[1], "ptp-certified"), argv[3]);
         rc = ok ? 0 : 1;
     } else if ((!strcmp(argv[1], "tcone") || !strcmp(argv[1], "ncone")) && argc == 5) {
         ok = check_cone(&d, argv[3], argv[1][0] == 't', argv[4]);

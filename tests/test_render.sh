@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # test_render.sh: build/render (`make render`) on lavapipe: culling never changes the image (and
-# a broken cull pass does), the ptp kernels' classes agree with the kernel tests' reference and
+# a broken cull pass does), the ptp kernels' classes (the straight-line compute kernel, the paper's
+# table kernel, the TCS that classifies its own patch, the certified kernel) agree with the kernel tests' reference and
 # ptpgen's C header, TCONE and NCONE cull what bench/cones.c culls, on the dumped inputs;
 # tessellation work drops by exactly the culled share; bad input is one line and exit 1 or 2.
 # CC picks the compiler (default gcc). Under CI=true a missing tool is a failure, never a skip.
@@ -70,7 +71,7 @@ view() {
         "render: $name: the image is a valid PNG and the model covers $covered of 19200 pixels"
     check $([ "$tes_none" = $((patches * 25)) ] && [ "$(val "$line" tcs_patches)" = "$patches" ] && echo 1 || echo 0) \
         "render: $name: --cull none tessellates all $patches patches (25 evaluations each at factor 4)" "$line"
-    for m in ptp ptp-certified tcone ncone; do
+    for m in ptp ptp-table ptp-tcs ptp-certified tcone ncone; do
         if ! line=$($R "${args[@]}" --cull $m --png "$T/$m.png" --dump-clip "$T/$m.dump" 2>"$T/err"); then
             check 0 "render: $name, --cull $m runs" "$(cat "$T/err")"
             continue

@@ -10,11 +10,13 @@
 
 static const char usage[] =
     "usage: render --model FILE.bez --eye X,Y,Z [--target X,Y,Z] [--up X,Y,Z] [--fov DEG]\n"
-    "              --tess F --cull none|tcone|ncone|ptp|ptp-certified [--orientation out|in]\n"
-    "              [--size WxH] [--frames K] [--png FILE] [--overview FILE.png]\n"
-    "              [--dump-clip FILE] [--device N]\n";
+    "              --tess F --cull none|tcone|ncone|ptp|ptp-certified|ptp-table|ptp-tcs\n"
+    "              [--orientation out|in] [--size WxH] [--frames K] [--png FILE]\n"
+    "              [--overview FILE.png]"
+" [--dump-clip FILE] [--device N]\n";
 
-static const char *const method_names[] = {"none", "tcone", "ncone", "ptp", "ptp-certified"};
+static const char *const method_names[] = {"none",          "tcone",     "ncone",  "ptp",
+                                           "ptp-certified", "ptp-table", "ptp-tcs"};
 
 /* Parses the whole of s as n comma-separated finite doubles into v. */
 static int parse_doubles(const char *s, double *v, int n)
@@ -49,7 +51,7 @@ static int parse_ulong(const char *s, unsigned long lo, unsigned long hi, unsign
 
 static int parse_method(cli_opts *o, const char *s)
 {
-    for (int i = 0; i < 5; i++)
+    for (int i = 0; i < (int)(sizeof method_names / sizeof *method_names); i++)
         if (!strcmp(s, method_names[i])) {
             o->method = (render_method)i;
             o->method_name = method_names[i];

@@ -64,7 +64,7 @@ static void cull(render_gpu *g, const render_cam *cam, int overview)
     else
         cp.eye[2] = cam->alpha;
     vkCmdWriteTimestamp(g->cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, g->ts, 0);
-    if (g->method != RENDER_NONE)
+    if (g->method != RENDER_NONE && g->method != RENDER_PTP_TCS)
         compute(g, g->p_cull, g->set_cull, &cp, sizeof cp, g->npatches, g->cull_group);
     barrier(g, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
             VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
@@ -90,20 +90,22 @@ static uint32_t draw_patches(float tess)
 }
 
 /* The render pass with the draws of every patch (statistics query around them), timestamps 2
- * and 3 around it, and the copy of the colour image into g->pixels. */
-static void draw(render_gpu *g, const render_cam *view, float tess, int overview)
+ * and 3 around it, and the copy of the colour image into g->pixels; alpha is the classified
+ * camera's (ptp-tcs). */
+static void draw(render_gpu *g, const render_cam *view, float alpha, float tess, int overview)
 {
     static const VkDeviceSize zero[2] = {0, 0};
     VkClearValue clear[2];
     VkRenderPassBeginInfo rb;
     VkBuffer vb[2] = {g->clip.buf, g->world.buf};
     VkBufferImageCopy copy;
-    struct { float mvp[16], eye[4], tess; uint32_t mode; float orient; } gp;
+    struct { float mvp[16], eye[4], tess; uint32_t mode; float orient, alpha; } gp;
     memcpy(gp.mvp, view->mvp, sizeof gp.mvp);
     memcpy(gp.eye, view->eye, sizeof gp.eye);
     gp.tess = tess;
     gp.mode = overview ? 1u : 0u;
     gp.orient = g->inward ? -1.0f : 1.0f;
+    gp.alpha = alpha; /* the classified camera's, in the overview too */
     memset(clear, 0, sizeof clear);
     clear[0].color.float32[0] = clear[0].color.float32[1] = clear[0].color.float32[2] = 1.0f;
     clear[0].color.float32[3] = 1.0f;
@@ -142,7 +144,8 @@ static void draw(render_gpu *g, const render_cam *view, float tess, int overview
     copy.imageExtent.depth = 1;
     vkCmdCopyImageToBuffer(g->cmd, g->color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, g->pixels.buf,
                            1, &copy);
-    barrier(g, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+    barrier(g, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+                   VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT,
             VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
 }
@@ -227,7 +230,7 @@ int render_frame(render_gpu *g, const render_cam *cam, const render_cam *ov, flo
     cull(g, cam, overview);
     if (submit(g, &s->cull_wall_ms, &s->cull_cpu_ms, err) || begin(g, err))
         return -1;
-    draw(g, overview ? ov : cam, tess, overview);
+    draw(g, overview ? ov : cam, cam->alpha, tess, overview);
     if (submit(g, &s->draw_wall_ms, &s->draw_cpu_ms, err))
         return -1;
     s->frame_ms = clock_ms(CLOCK_MONOTONIC) - t0;

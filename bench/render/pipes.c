@@ -1,6 +1,6 @@
 /* pipes.c: the renderer's shader modules (SPIR-V compiled in at build time, ptpgen's kernels
- * among them), descriptor sets, layouts and its four pipelines: transform, cull, the exact ptp
- * classes for the overview, and the tessellated draw. */
+ * and functions among them), descriptor sets, layouts and its four pipelines: transform, cull,
+ * the exact ptp classes for the overview, and the tessellated draw (its TCS culls for ptp-tcs). */
 #include "render.h"
 
 #include <stdint.h>
@@ -10,31 +10,37 @@
 #include "spv_frag.h"
 #include "spv_ptp.h"
 #include "spv_ptp_cert.h"
+#include "spv_ptp_table.h"
 #include "spv_tesc.h"
+#include "spv_tesc_ptp.h"
 #include "spv_tese.h"
 #include "spv_vert.h"
 #include "spv_xform.h"
-#include "ptp_groups.h" /* RENDER_PTP_Q, RENDER_PTP_CERT_Q: the kernels' patches per workgroup */
+#include "ptp_groups.h" /* RENDER_PTP_Q, RENDER_PTP_CERT_Q, RENDER_PTP_TABLE_Q: the kernels' patches
+                          * per workgroup */
 
 /* Indices of g->mod. */
-enum { M_XFORM, M_CONE, M_PTP, M_PTP_CERT, M_VERT, M_TESC, M_TESE, M_FRAG };
+enum { M_XFORM, M_CONE, M_PTP, M_PTP_CERT, M_PTP_TABLE, M_VERT, M_TESC, M_TESE, M_FRAG, M_TESC_PTP,
+       M_COUNT };
 
 static int modules(render_gpu *g, char *err)
 {
     static const struct {
         const uint32_t *code;
         size_t bytes;
-    } spv[8] = {
+    } spv[M_COUNT] = {
         {render_spv_xform, sizeof render_spv_xform},
         {render_spv_cone, sizeof render_spv_cone},
         {render_spv_ptp, sizeof render_spv_ptp},
         {render_spv_ptp_cert, sizeof render_spv_ptp_cert},
+        {render_spv_ptp_table, sizeof render_spv_ptp_table},
         {render_spv_vert, sizeof render_spv_vert},
         {render_spv_tesc, sizeof render_spv_tesc},
         {render_spv_tese, sizeof render_spv_tese},
         {render_spv_frag, sizeof render_spv_frag},
+        {render_spv_tesc_ptp, sizeof render_spv_tesc_ptp},
     };
-    for (int i = 0; i < 8; i++)
+    for (int i = 0; i < M_COUNT; i++)
         if (vkx_shader(&g->vk, &g->mod[i], spv[i].code, spv[i].bytes, err))
             return -1;
     return 0;
@@ -132,14 +138,14 @@ static int compute_pipeline(render_gpu *g, VkShaderModule m, VkPipeline *p, char
 /* The compute pipelines: transform, the method's cull pass, and ptp strict for the overview. */
 static int computes(render_gpu *g, char *err)
 {
-    static const int cull_mod[] = {-1, M_CONE, M_CONE, M_PTP, M_PTP_CERT};
-    static const uint32_t group[] = {0, 64, 64, RENDER_PTP_Q, RENDER_PTP_CERT_Q};
+    static const int cull_mod[] = {-1, M_CONE, M_CONE, M_PTP, M_PTP_CERT, M_PTP_TABLE, -1};
+    static const uint32_t group[] = {0, 64, 64, RENDER_PTP_Q, RENDER_PTP_CERT_Q, RENDER_PTP_TABLE_Q, 0};
     g->cull_group = group[g->method];
     g->exact_group = RENDER_PTP_Q;
     if (compute_pipeline(g, g->mod[M_XFORM], &g->p_xform, err) ||
         compute_pipeline(g, g->mod[M_PTP], &g->p_exact, err))
         return -1;
-    return g->method == RENDER_NONE ? 0
+    return cull_mod[g->method] < 0 ? 0
                                     : compute_pipeline(g, g->mod[cull_mod[g->method]], &g->p_cull,
                                                        err);
 }
@@ -156,5 +162,7 @@ int render_pipelines(render_gpu *g, char *err)
                &g->glayout, err) ||
         sets(g, err) || computes(g, err))
         return -1;
-    return render_gfx_pipeline(g, g->mod + M_VERT, err);
+    VkShaderModule gfx[4] = {g->mod[M_VERT], g->mod[g->method == RENDER_PTP_TCS ? M_TESC_PTP : M_TESC],
+                             g->mod[M_TESE], g->mod[M_FRAG]};
+    return render_gfx_pipeline(g, gfx, err);
 }

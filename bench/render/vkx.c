@@ -97,13 +97,14 @@ static int pick(vkx *v, int index, char *err)
     if ((v->qfam = graphics_family(v->phys, &v->ts_valid_bits)) == UINT32_MAX)
         return vkx_fail(err, "device %d (%s) has no graphics and compute queue", i,
                         v->props.deviceName);
-    if (!f.tessellationShader || !f.pipelineStatisticsQuery)
-        return vkx_fail(err, "device %d (%s) lacks tessellation shaders or pipeline statistics",
+    if (!f.tessellationShader || !f.pipelineStatisticsQuery || !f.vertexPipelineStoresAndAtomics)
+        return vkx_fail(err, "device %d (%s) lacks tessellation shaders, pipeline statistics or "
+                             "stores from the tessellation stages",
                         i, v->props.deviceName);
     return 0;
 }
 
-/* The logical device with one queue, the two features, and a command pool. */
+/* The logical device with one queue, the three features, and a command pool. */
 static int make_device(vkx *v, char *err)
 {
     float prio = 1.0f;
@@ -116,6 +117,7 @@ static int make_device(vkx *v, char *err)
     memset(&f, 0, sizeof f);
     f.tessellationShader = VK_TRUE;
     f.pipelineStatisticsQuery = VK_TRUE;
+    f.vertexPipelineStoresAndAtomics = VK_TRUE; /* ptp-tcs: the TCS writes the classes */
     memset(&dci, 0, sizeof dci);
     dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     dci.queueCreateInfoCount = 1;

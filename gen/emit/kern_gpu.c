@@ -137,7 +137,7 @@ static int emit_slp(sbuf *o, const tp_table *t, const out_info *info, const kern
     sbuf_init(&body);
     fmt_banner(&banner, t, &in, file, g->language, g->interface);
     st = kgpu_slp_kernel_parts(&consts, &funcs, t, info, g, up, err);
-    kgpu_slp_body(&body, info, g, up);
+    kgpu_slp_body(&body, &t->dom, info, g, up);
     slots[n++] = (tpl_slot){"BANNER", banner.s};
     if (g->named_kernel)
         slots[n++] = (tpl_slot){"PREFIX", info->prefix};

@@ -149,6 +149,7 @@ int kgpu_slp_kernel_parts(sbuf *tables, sbuf *funcs, const tp_table *t, const ou
 
 /* The straight-line kernel's body: invocation pid copies patch pid's points and calls
  * classify_patch (with --planes, values too). */
-void kgpu_slp_body(sbuf *o, const out_info *info, const kern_target *g, const char *up);
+void kgpu_slp_body(sbuf *o, const tp_domain *dom, const out_info *info, const kern_target *g,
+                   const char *up);
 
 #endif

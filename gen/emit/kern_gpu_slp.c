@@ -148,26 +148,27 @@ static void put_slp_constants(sbuf *o, const tp_table *t, const out_info *info,
     sbuf_puts(o, "\n");
 }
 
-void kgpu_slp_body(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+void kgpu_slp_body(sbuf *o, const tp_domain *dom, const out_info *info, const kern_target *g,
+                   const char *up)
 {
     const char *px = info->prefix, *in = g->planes_buffer ? "    " : "        ";
     char pid[256], arg[64], k[80], l[80];
     kern_var i = {"i", NULL, 1};
+    int n;
     snprintf(pid, sizeof pid, "(%s * %s + %s) * %sQ + %s", g->group_y, g->groups_x, g->group_x, up,
              g->local_id);
     snprintf(k, sizeof k, "%sK", up);
     snprintf(l, sizeof l, "%sL", up);
     kgpu_local(o, g, g->uint, "pid", pid, 0);
-    g->syntax->locals(o, g, "    ", g->uint, &i, 1, 0);
+    if (info->planes)
+        g->syntax->locals(o, g, "    ", g->uint, &i, 1, 0);
     g->syntax->array(o, g, "    ", g->vec4, "p", k);
     sbuf_puts(o, "    if (pid >= patch_count)");
     kgpu_then(o, g);
     sbuf_puts(o, "        return;\n");
     kgpu_end(o, g, "    ");
-    sbuf_printf(o, "    for (i = 0u; i < %s; i++)", k);
-    kgpu_then(o, g);
-    sbuf_printf(o, "        p[i] = cp[pid * %s + i];\n", k);
-    kgpu_end(o, g, "    ");
+    for (n = 0; n < dom->npoints; n++) /* unrolled: PoCL keeps a loop's array in memory */
+        sbuf_printf(o, "    p[%d] = cp[pid * %s + %du];\n", n, k, n);
     sbuf_printf(o, "    cls[pid] = %sclassify_patch(p, eye%s);\n", px, kgpu_opt(g->slp_zero));
     if (!info->planes)
         return;
