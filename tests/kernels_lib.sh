@@ -101,11 +101,10 @@ to_spirv() {
     fi
     spirv-val "$tmp/k.spv" 2>>"$tmp/err"
 }
-# cuda_compile DIR D: compiles DIR/ptp_D.cu with nvcc to an object and to PTX with the entry
-# ptp_D_classify; errors in $tmp/err.
+# cuda_compile DIR D: compiles DIR/ptp_D.cu with nvcc to PTX with the entry ptp_D_classify (the
+# host, cuda_host, compiles it to an object); errors in $tmp/err.
 cuda_compile() {
-    "$NVCC" -c "$1/ptp_$2.cu" -o "$tmp/k.o" >"$tmp/err" 2>&1 &&
-        "$NVCC" -ptx "$1/ptp_$2.cu" -o "$tmp/k.ptx" >>"$tmp/err" 2>&1 &&
+    "$NVCC" -ptx "$1/ptp_$2.cu" -o "$tmp/k.ptx" >"$tmp/err" 2>&1 &&
         grep -q "\.entry ptp_${2}_classify" "$tmp/k.ptx"
 }
 # cuda_no_fmad LABEL DIR D: nvcc's default build (-fmad=true) of DIR/ptp_D.cu, whose PTX
@@ -168,7 +167,7 @@ gpu_runtimes() {
     [ -x "$B/host_wgpu" ] && $gr_run wgsl "$B/host_wgpu" "$gr_dir/ptp_$gr_d.wgsl" $sched
     if [ -x "$NVCC" ]; then
         if cuda_compile "$gr_dir" $gr_d && cuda_host "$gr_dir" $gr_d; then
-            ok "cuda $gr_label compiles with nvcc (-c, -ptx with the entry ptp_${gr_d}_classify, and the host)"
+            ok "cuda $gr_label compiles with nvcc (-ptx with the entry ptp_${gr_d}_classify, and the host)"
             cuda_no_fmad "$gr_label" "$gr_dir" $gr_d
             # The host runs wherever a GPU is (it says so when there is none).
             $gr_run cuda "$tmp/host_cuda" $sched

@@ -225,7 +225,7 @@ for space in clip world; do
         --block-threads $PQ --patches-per-block $Q
     if [ -x "$NVCC" ] && [ $space = clip ]; then
         if cuda_compile "$dir" 3x3 && cuda_host "$dir" 3x3; then
-            ok "cuda 3x3 $space certified degenerate compiles with nvcc (-c, -ptx and the host)"
+            ok "cuda 3x3 $space certified degenerate compiles with nvcc (-ptx and the host)"
             cuda_no_fmad "3x3 $space certified degenerate" "$dir" 3x3
             gpu_degenerate cuda $space "$tmp/host_cuda" --block-threads $PQ --patches-per-block $Q
         else

@@ -394,22 +394,12 @@ static int put_entries(sbuf *o, const tp_table *t, const slp_prog *p, const out_
 static int put_code(sbuf *o, char *flops, char *muls, const tp_table *t, const out_info *info,
                     const char *up, ptp_error *err)
 {
-    slp_prog prog;
-    cert_bounds cb = {0};
-    int st = slp_build(&prog, t, err);
-    if (st)
-        return st;
-    snprintf(flops, 24, "%ld", slp_flops(&prog, info->space == OUT_WORLD));
-    snprintf(muls, 24, "%ld", slp_muls(&prog, info->space == OUT_WORLD));
-    if (info->certified)
-        st = cert_slp(&cb, &prog, info->space == OUT_WORLD, err);
-    if (!st)
-        st = put_lanes(o, &prog, &cb, t, info, up, err);
-    if (!st)
-        st = put_entries(o, t, &prog, info, up, err);
-    cert_clear(&cb);
-    slp_clear(&prog);
-    return st;
+    const plan_slp *plan = info->slp;
+    int st;
+    snprintf(flops, 24, "%ld", plan->flops);
+    snprintf(muls, 24, "%ld", plan->muls);
+    st = put_lanes(o, &plan->prog, &plan->cert, t, info, up, err);
+    return st ? st : put_entries(o, t, &plan->prog, info, up, err);
 }
 
 /* The macros that record the header's variant (the options it was generated with). */

@@ -74,6 +74,17 @@ char *kgpu_group(char *out, size_t size, const kern_target *g, const char *e)
     return out;
 }
 
+void kgpu_dispatch(const out_info *info, unsigned *threads, unsigned *patches)
+{
+    if (info->table) {
+        *patches = (unsigned)info->sched->patches;
+        *threads = (unsigned)info->sched->threads * *patches;
+    } else {
+        *patches = (unsigned)info->group;
+        *threads = *patches;
+    }
+}
+
 /* The paper's table kernel: P threads a patch over the schedule's rounds, in the template. */
 static int emit_table(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                       const char *up, const char *file, ptp_error *err)
@@ -82,8 +93,10 @@ static int emit_table(sbuf *o, const tp_table *t, const out_info *info, const ke
     char threads[16];
     tpl_slot slots[9];
     size_t n = 0;
+    unsigned nthreads, npatches;
     int st;
-    snprintf(threads, sizeof threads, "%d", info->sched->threads * info->sched->patches);
+    kgpu_dispatch(info, &nthreads, &npatches);
+    snprintf(threads, sizeof threads, "%u", nthreads);
     sbuf_init(&banner);
     sbuf_init(&tables);
     sbuf_init(&funcs);
@@ -128,9 +141,11 @@ static int emit_slp(sbuf *o, const tp_table *t, const out_info *info, const kern
     char threads[16];
     tpl_slot slots[9];
     size_t n = 0;
+    unsigned nthreads, npatches;
     int st;
     in.sched = NULL; /* the banner states the straight-line dispatch */
-    snprintf(threads, sizeof threads, "%d", info->group);
+    kgpu_dispatch(info, &nthreads, &npatches);
+    snprintf(threads, sizeof threads, "%u", nthreads);
     sbuf_init(&banner);
     sbuf_init(&consts);
     sbuf_init(&funcs);
@@ -190,8 +205,10 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     char up[64], file[96];
     fmt_upper(up, sizeof up, info->prefix);
     fmt_file_name(file, sizeof file, info->prefix, info->functions ? g->slp_suffix : info->suffix);
+    if (info->functions && info->certified)
+        return ptp_fail(err, PTP_EUSAGE, "the straight-line functions are not certified");
     if (info->functions)
         return emit_functions(o, t, info, g, file, err);
-    return info->table ? emit_table(o, t, info, g, up, file, err)
-                       : emit_slp(o, t, info, g, up, file, err);
+    return info->table || info->certified ? emit_table(o, t, info, g, up, file, err)
+                                          : emit_slp(o, t, info, g, up, file, err);
 }

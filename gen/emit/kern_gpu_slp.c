@@ -118,17 +118,11 @@ static int put_slp_function(sbuf *o, const slp_prog *p, const tp_table *t, const
 int kgpu_slp_functions(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                        ptp_error *err)
 {
-    slp_prog prog;
-    int st = slp_build(&prog, t, err);
-    if (st)
-        return st;
+    int st;
     if (g->slp_helpers)
         sbuf_printf(o, g->slp_helpers, info->prefix);
-    st = put_slp_function(o, &prog, t, info, g, 0, err);
-    if (!st)
-        st = put_slp_function(o, &prog, t, info, g, 1, err);
-    slp_clear(&prog);
-    return st;
+    st = put_slp_function(o, &info->slp->prog, t, info, g, 0, err);
+    return st ? st : put_slp_function(o, &info->slp->prog, t, info, g, 1, err);
 }
 
 /* The constants P (1), Q, K and L of the compute kernel. */
@@ -137,9 +131,12 @@ static void put_slp_constants(sbuf *o, const tp_table *t, const out_info *info,
 {
     static const char *const what[4] = {"threads per patch", "patches per workgroup",
                                         "control points per patch", "control planes per patch"};
-    long v[4] = {1, info->group, t->dom.npoints, t->dom.nplanes};
+    unsigned threads, patches;
+    long v[4] = {1, 0, t->dom.npoints, t->dom.nplanes};
     char name[80], lit[32];
     int i;
+    kgpu_dispatch(info, &threads, &patches); /* the workgroup the host header states */
+    v[1] = (long)patches;
     for (i = 0; i < 4; i++) {
         snprintf(name, sizeof name, "%s%c", up, "PQKL"[i]);
         snprintf(lit, sizeof lit, "%ldu", v[i]);

@@ -4,6 +4,7 @@
 #define OUT_H
 
 #include "emit/sbuf.h"
+#include "plan/plan.h"
 #include "plan/sched.h"
 #include "core/tplane.h"
 
@@ -28,12 +29,14 @@ typedef struct {
     int planes;          /* kernels also write the per-plane values */
     int certified;       /* back or front only when every value clears its rounding bound */
     int refine;          /* C: de Casteljau levels on e.T when the values have mixed signs */
-    int table;           /* GPU: the paper's table kernel, sched's P threads a patch (else the
-                            straight-line program, one patch an invocation) */
-    int functions;       /* GPU: only the functions classify_patch and values, for any stage */
-    int group;           /* GPU straight-line kernel: patches (invocations) per workgroup */
     const char *suffix;  /* the target's file suffix, ".comp" (tgt_emit_target sets it from the
                             registry): a banner names the file <prefix without its '_'><suffix> */
+    int table;           /* GPU: the paper's table kernel, sched's P threads a patch (also with
+                            certified; else the straight-line program, one patch an invocation) */
+    int functions;       /* GPU: only the functions classify_patch and values, for any stage */
+    int group;           /* GPU straight-line kernel: patches (invocations) per workgroup */
+    const plan_slp *slp; /* the straight-line plan (the C header, the GPU straight-line code;
+                            tgt_emit_target builds it), or NULL */
 } out_info;
 
 /* The ptpgen-planes/1 JSON document of t. */

@@ -31,8 +31,17 @@ int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_i
                     ptp_error *err)
 {
     out_info in = *info;
+    plan_slp plan;
+    int st;
     in.suffix = g->suffix;
-    return g->gpu ? kern_emit_gpu(o, t, &in, g->gpu, err) : g->emit(o, t, &in, err);
+    if (!(g->options & TGT_SPACE)) /* no straight-line code */
+        return g->emit(o, t, &in, err);
+    if ((st = plan_slp_build(&plan, t, info->space == OUT_WORLD, info->certified, err)))
+        return st;
+    in.slp = &plan;
+    st = g->gpu ? kern_emit_gpu(o, t, &in, g->gpu, err) : g->emit(o, t, &in, err);
+    plan_slp_clear(&plan);
+    return st;
 }
 
 const tgt_target *tgt_find(const char *name)
