@@ -17,96 +17,115 @@
  * Kernel <prefix>classify(cp, cls, planes, eye, patch_count): planes receives d[p*L + P] when not
  * NULL. Work-group size exactly P*Q; ceil(patch_count / Q) work-groups, 1-D or 2-D:
  * work-group (x, y) handles the patches of block y * num_groups(0) + x.
- * Schedule: 4 threads per patch, 32 patches per workgroup (128 threads), 1 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 #pragma OPENCL FP_CONTRACT OFF
 
-#define PTP_1X1_P 4u /* threads per patch */
-#define PTP_1X1_Q 32u /* patches per workgroup */
+#define PTP_1X1_P 1u /* threads per patch */
+#define PTP_1X1_Q 64u /* patches per workgroup */
 #define PTP_1X1_K 4u /* control points per patch */
 #define PTP_1X1_L 4u /* control planes per patch */
-/* 1 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-constant uint ptp_1x1_own_start[5] = {
-    0u, 1u, 2u, 3u, 4u
-};
-constant uint ptp_1x1_own_plane[4] = {
-    0u, 1u, 2u, 3u
-};
-
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-constant uint ptp_1x1_pj0[4] = {
-    0x00000u, 0x00001u, 0x00002u, 0x10003u
-};
-constant uint ptp_1x1_kl0[4] = {
-    0x20001u, 0x30001u, 0x30002u, 0x30002u
-};
-constant float ptp_1x1_w0[4] = {
-    -1.0f, -1.0f, 1.0f, 1.0f
-};
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-float ptp_1x1_cross4z(float4 a, float4 b, float4 c)
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+uint ptp_1x1_classify_patch(const float4 cp[4], float4 eye)
 {
-    float z = a.x * (b.y * c.w - b.w * c.y) -
-        b.x * (a.y * c.w - a.w * c.y) +
-        c.x * (a.y * b.w - a.w * b.y);
-    return z;
+    float e2 = eye.z;
+    float u, v;
+    bool lt, gt;
+    const float x1 = cp[1].x;
+    const float y1 = cp[1].y;
+    const float w1 = cp[1].w;
+    const float g1 = e2 * w1;
+    const float x2 = cp[2].x;
+    const float y2 = cp[2].y;
+    const float w2 = cp[2].w;
+    const float g2 = e2 * w2;
+    const float m1_2 = x1 * y2 - y1 * x2;
+    const float x0 = cp[0].x;
+    const float y0 = cp[0].y;
+    const float w0 = cp[0].w;
+    const float g0 = e2 * w0;
+    const float m0_2 = x0 * y2 - y0 * x2;
+    const float m0_1 = x0 * y1 - y0 * x1;
+    u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    const float x3 = cp[3].x;
+    const float y3 = cp[3].y;
+    const float w3 = cp[3].w;
+    const float g3 = e2 * w3;
+    const float m1_3 = x1 * y3 - y1 * x3;
+    const float m0_3 = x0 * y3 - y0 * x3;
+    u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    const float m2_3 = x2 * y3 - y2 * x3;
+    u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    return lt ? 1u : gt ? 0u : 2u;
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-uint ptp_1x1_flags(float d)
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+void ptp_1x1_values(const float4 cp[4], float4 eye, float d[4])
 {
-    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);
+    float e2 = eye.z;
+    float u, v;
+    const float x1 = cp[1].x;
+    const float y1 = cp[1].y;
+    const float w1 = cp[1].w;
+    const float g1 = e2 * w1;
+    const float x2 = cp[2].x;
+    const float y2 = cp[2].y;
+    const float w2 = cp[2].w;
+    const float g2 = e2 * w2;
+    const float m1_2 = x1 * y2 - y1 * x2;
+    const float x0 = cp[0].x;
+    const float y0 = cp[0].y;
+    const float w0 = cp[0].w;
+    const float g0 = e2 * w0;
+    const float m0_2 = x0 * y2 - y0 * x2;
+    const float m0_1 = x0 * y1 - y0 * x1;
+    u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    d[0] = v;
+    const float x3 = cp[3].x;
+    const float y3 = cp[3].y;
+    const float w3 = cp[3].w;
+    const float g3 = e2 * w3;
+    const float m1_3 = x1 * y3 - y1 * x3;
+    const float m0_3 = x0 * y3 - y0 * x3;
+    u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
+    v = u;
+    d[1] = v;
+    const float m2_3 = x2 * y3 - y2 * x3;
+    u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
+    v = u;
+    d[2] = v;
+    u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+    v = u;
+    d[3] = v;
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-uint ptp_1x1_class_of(uint f)
-{
-    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;
-}
-
-kernel __attribute__((reqd_work_group_size(128, 1, 1)))
+kernel __attribute__((reqd_work_group_size(64, 1, 1)))
 void ptp_1x1_classify(global const float4 *cp, global uint *cls, global float *planes,
                         float4 eye, uint patch_count)
 {
-    local float4 pts[PTP_1X1_Q * PTP_1X1_K];
-    local float acc[PTP_1X1_Q * PTP_1X1_L];
-    local uint flags[PTP_1X1_Q * PTP_1X1_P];
-    uint lid = (uint)get_local_id(0), q = lid / PTP_1X1_P, t = lid % PTP_1X1_P, i, pj, kl;
-    uint pid = ((uint)get_group_id(1) * (uint)get_num_groups(0) + (uint)get_group_id(0)) * PTP_1X1_Q + q;
-    uint f = 0u;
-    bool live = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_1X1_K; i += PTP_1X1_P)
-        if (live)
-            pts[q * PTP_1X1_K + i] = cp[pid * PTP_1X1_K + i];
-    barrier(CLK_LOCAL_MEM_FENCE);
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_1x1_own_start[t]; i < ptp_1x1_own_start[t + 1u]; i++)
-        acc[q * PTP_1X1_L + ptp_1x1_own_plane[i]] = 0.0f;
-    pj = ptp_1x1_pj0[t];
-    kl = ptp_1x1_kl0[t];
-    acc[q * PTP_1X1_L + (pj & 0xffffu)] += ptp_1x1_w0[t] *
-        ptp_1x1_cross4z(pts[q * PTP_1X1_K + (pj >> 16)], pts[q * PTP_1X1_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X1_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_1x1_own_start[t]; i < ptp_1x1_own_start[t + 1u]; i++) {
-        uint plane = ptp_1x1_own_plane[i];
-        float d = eye.z * acc[q * PTP_1X1_L + plane];
-        f |= ptp_1x1_flags(d);
-    }
-    flags[q * PTP_1X1_P + t] = f;
-    barrier(CLK_LOCAL_MEM_FENCE);
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_1X1_P; i++)
-            f |= flags[q * PTP_1X1_P + i];
-        cls[pid] = ptp_1x1_class_of(f);
-    }
+    uint pid = ((uint)get_group_id(1) * (uint)get_num_groups(0) + (uint)get_group_id(0)) * PTP_1X1_Q + (uint)get_local_id(0);
+    float4 p[PTP_1X1_K];
+    if (pid >= patch_count)
+        return;
+    p[0] = cp[pid * PTP_1X1_K + 0u];
+    p[1] = cp[pid * PTP_1X1_K + 1u];
+    p[2] = cp[pid * PTP_1X1_K + 2u];
+    p[3] = cp[pid * PTP_1X1_K + 3u];
+    cls[pid] = ptp_1x1_classify_patch(p, eye);
 }

@@ -20,7 +20,7 @@
  * rest of the padding, must be 0). Entry point main. Dispatch ceil(patch_count / Q)
  * workgroups, in 2-D (x, y) when x would exceed the limit: workgroup (x, y) handles the
  * patches of block y * num_workgroups.x + x.
- * Schedule: 4 threads per patch, 32 patches per workgroup (128 threads), 1 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 struct Params {
@@ -44,99 +44,121 @@ fn sub_rn(b: vec4<f32>, a: vec4<f32>) -> vec4<f32> {
     return bitcast<vec4<f32>>(bitcast<vec4<u32>>(b - a) ^ vec4<u32>(params.zero));
 }
 
-const PTP_1X1_P: u32 = 4u; /* threads per patch */
-const PTP_1X1_Q: u32 = 32u; /* patches per workgroup */
+const PTP_1X1_P: u32 = 1u; /* threads per patch */
+const PTP_1X1_Q: u32 = 64u; /* patches per workgroup */
 const PTP_1X1_K: u32 = 4u; /* control points per patch */
 const PTP_1X1_L: u32 = 4u; /* control planes per patch */
-/* 1 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-const ptp_1x1_own_start: array<u32, 5> = array<u32, 5>(
-    0u, 1u, 2u, 3u, 4u
-);
-const ptp_1x1_own_plane: array<u32, 4> = array<u32, 4>(
-    0u, 1u, 2u, 3u
-);
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-const ptp_1x1_pj0: array<u32, 4> = array<u32, 4>(
-    0x00000u, 0x00001u, 0x00002u, 0x10003u
-);
-const ptp_1x1_kl0: array<u32, 4> = array<u32, 4>(
-    0x20001u, 0x30001u, 0x30002u, 0x30002u
-);
-const ptp_1x1_w0: array<f32, 4> = array<f32, 4>(
-    -1.0f, -1.0f, 1.0f, 1.0f
-);
-
-var<workgroup> pts: array<vec4<f32>, PTP_1X1_Q * PTP_1X1_K>;
-var<workgroup> acc: array<f32, PTP_1X1_Q * PTP_1X1_L>;
-var<workgroup> flags: array<u32, PTP_1X1_Q * PTP_1X1_P>;
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-fn ptp_1x1_cross4z(a: vec4<f32>, b: vec4<f32>, c: vec4<f32>) -> f32 {
-    let z: f32 = mul_rn(a.x, (mul_rn(b.y, c.w) - mul_rn(b.w, c.y))) -
-        mul_rn(b.x, (mul_rn(a.y, c.w) - mul_rn(a.w, c.y))) +
-        mul_rn(c.x, (mul_rn(a.y, b.w) - mul_rn(a.w, b.y)));
-    return z;
+/* x * y rounded to a float: through an integer XOR with zero, 0 at run time but unknown to
+ * the compiler, which no FMA contraction can cross (WGSL has no `precise`). */
+fn ptp_1x1_mul_rn(x: f32, y: f32, zero: u32) -> f32 {
+    return bitcast<f32>(bitcast<u32>(x * y) ^ zero);
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-fn ptp_1x1_flags(d: f32) -> u32 {
-    return (select(1u, 0u, d < 0.0f)) | (select(2u, 0u, d > 0.0f));
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+fn ptp_1x1_classify_patch(cp: array<vec4<f32>, 4>, eye: vec4<f32>, zero: u32) -> u32 {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    var lt: bool;
+    var gt: bool;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_1x1_mul_rn(e2, w1, zero);
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_1x1_mul_rn(e2, w2, zero);
+    let m1_2 = ptp_1x1_mul_rn(x1, y2, zero) - ptp_1x1_mul_rn(y1, x2, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_1x1_mul_rn(e2, w0, zero);
+    let m0_2 = ptp_1x1_mul_rn(x0, y2, zero) - ptp_1x1_mul_rn(y0, x2, zero);
+    let m0_1 = ptp_1x1_mul_rn(x0, y1, zero) - ptp_1x1_mul_rn(y0, x1, zero);
+    u = -((ptp_1x1_mul_rn(g0, m1_2, zero) - ptp_1x1_mul_rn(g1, m0_2, zero)) + ptp_1x1_mul_rn(g2, m0_1, zero));
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_1x1_mul_rn(e2, w3, zero);
+    let m1_3 = ptp_1x1_mul_rn(x1, y3, zero) - ptp_1x1_mul_rn(y1, x3, zero);
+    let m0_3 = ptp_1x1_mul_rn(x0, y3, zero) - ptp_1x1_mul_rn(y0, x3, zero);
+    u = -((ptp_1x1_mul_rn(g0, m1_3, zero) - ptp_1x1_mul_rn(g1, m0_3, zero)) + ptp_1x1_mul_rn(g3, m0_1, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    let m2_3 = ptp_1x1_mul_rn(x2, y3, zero) - ptp_1x1_mul_rn(y2, x3, zero);
+    u = ((ptp_1x1_mul_rn(g0, m2_3, zero) - ptp_1x1_mul_rn(g2, m0_3, zero)) + ptp_1x1_mul_rn(g3, m0_2, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    u = ((ptp_1x1_mul_rn(g1, m2_3, zero) - ptp_1x1_mul_rn(g2, m1_3, zero)) + ptp_1x1_mul_rn(g3, m1_2, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    return select(select(2u, 0u, gt), 1u, lt);
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-fn ptp_1x1_class_of(f: u32) -> u32 {
-    return select(select(2u, 0u, (f & 2u) == 0u), 1u, (f & 1u) == 0u);
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+fn ptp_1x1_values(cp: array<vec4<f32>, 4>, eye: vec4<f32>, zero: u32,
+        d: ptr<function, array<f32, 4>>) {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_1x1_mul_rn(e2, w1, zero);
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_1x1_mul_rn(e2, w2, zero);
+    let m1_2 = ptp_1x1_mul_rn(x1, y2, zero) - ptp_1x1_mul_rn(y1, x2, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_1x1_mul_rn(e2, w0, zero);
+    let m0_2 = ptp_1x1_mul_rn(x0, y2, zero) - ptp_1x1_mul_rn(y0, x2, zero);
+    let m0_1 = ptp_1x1_mul_rn(x0, y1, zero) - ptp_1x1_mul_rn(y0, x1, zero);
+    u = -((ptp_1x1_mul_rn(g0, m1_2, zero) - ptp_1x1_mul_rn(g1, m0_2, zero)) + ptp_1x1_mul_rn(g2, m0_1, zero));
+    v = u;
+    (*d)[0] = v;
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_1x1_mul_rn(e2, w3, zero);
+    let m1_3 = ptp_1x1_mul_rn(x1, y3, zero) - ptp_1x1_mul_rn(y1, x3, zero);
+    let m0_3 = ptp_1x1_mul_rn(x0, y3, zero) - ptp_1x1_mul_rn(y0, x3, zero);
+    u = -((ptp_1x1_mul_rn(g0, m1_3, zero) - ptp_1x1_mul_rn(g1, m0_3, zero)) + ptp_1x1_mul_rn(g3, m0_1, zero));
+    v = u;
+    (*d)[1] = v;
+    let m2_3 = ptp_1x1_mul_rn(x2, y3, zero) - ptp_1x1_mul_rn(y2, x3, zero);
+    u = ((ptp_1x1_mul_rn(g0, m2_3, zero) - ptp_1x1_mul_rn(g2, m0_3, zero)) + ptp_1x1_mul_rn(g3, m0_2, zero));
+    v = u;
+    (*d)[2] = v;
+    u = ((ptp_1x1_mul_rn(g1, m2_3, zero) - ptp_1x1_mul_rn(g2, m1_3, zero)) + ptp_1x1_mul_rn(g3, m1_2, zero));
+    v = u;
+    (*d)[3] = v;
 }
 
-@compute @workgroup_size(128)
+@compute @workgroup_size(64)
 fn main(@builtin(local_invocation_id) lid3: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>,
         @builtin(num_workgroups) nwg: vec3<u32>) {
     let eye = params.eye;
     let patch_count = params.patch_count;
-    let lid: u32 = lid3.x;
-    let q: u32 = lid / PTP_1X1_P;
-    let t: u32 = lid % PTP_1X1_P;
-    var i: u32;
-    var pj: u32;
-    var kl: u32;
-    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_1X1_Q + q;
-    var f: u32 = 0u;
-    let live: bool = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_1X1_K; i += PTP_1X1_P) {
-        if (live) {
-            pts[q * PTP_1X1_K + i] = cp[pid * PTP_1X1_K + i];
-        }
+    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_1X1_Q + lid3.x;
+    var p: array<vec4<f32>, PTP_1X1_K>;
+    if (pid >= patch_count) {
+        return;
     }
-    workgroupBarrier();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_1x1_own_start[t]; i < ptp_1x1_own_start[t + 1u]; i++) {
-        acc[q * PTP_1X1_L + ptp_1x1_own_plane[i]] = 0.0f;
-    }
-    pj = ptp_1x1_pj0[t];
-    kl = ptp_1x1_kl0[t];
-    acc[q * PTP_1X1_L + (pj & 0xffffu)] += ptp_1x1_w0[t] *
-        ptp_1x1_cross4z(pts[q * PTP_1X1_K + (pj >> 16)], pts[q * PTP_1X1_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X1_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_1x1_own_start[t]; i < ptp_1x1_own_start[t + 1u]; i++) {
-        let plane: u32 = ptp_1x1_own_plane[i];
-        let d: f32 = eye.z * acc[q * PTP_1X1_L + plane];
-        f |= ptp_1x1_flags(d);
-    }
-    flags[q * PTP_1X1_P + t] = f;
-    workgroupBarrier();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_1X1_P; i++) {
-            f |= flags[q * PTP_1X1_P + i];
-        }
-        cls[pid] = ptp_1x1_class_of(f);
-    }
+    p[0] = cp[pid * PTP_1X1_K + 0u];
+    p[1] = cp[pid * PTP_1X1_K + 1u];
+    p[2] = cp[pid * PTP_1X1_K + 2u];
+    p[3] = cp[pid * PTP_1X1_K + 3u];
+    cls[pid] = ptp_1x1_classify_patch(p, eye, params.zero);
 }

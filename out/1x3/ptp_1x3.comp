@@ -18,181 +18,420 @@
  * d[p*L + P] (float[], with --planes). Push constants: { vec4 eye; uint patch_count; }.
  * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:
  * workgroup (x, y) handles the patches of block y * num_groups_x + x.
- * Schedule: 8 threads per patch, 16 patches per workgroup (128 threads), 6 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 #version 450
 
-layout(local_size_x = 128) in;
+layout(local_size_x = 64) in;
 
 layout(std430, set = 0, binding = 0) readonly buffer ControlPoints { vec4 cp[]; };
 layout(std430, set = 0, binding = 1) writeonly buffer Classes { uint cls[]; };
 layout(push_constant) uniform Params { vec4 eye; uint patch_count; };
 
-#define PTP_1X3_P 8u /* threads per patch */
-#define PTP_1X3_Q 16u /* patches per workgroup */
+#define PTP_1X3_P 1u /* threads per patch */
+#define PTP_1X3_Q 64u /* patches per workgroup */
 #define PTP_1X3_K 8u /* control points per patch */
 #define PTP_1X3_L 16u /* control planes per patch */
-/* 6 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-const uint ptp_1x3_own_start[9] = {
-    0u, 2u, 4u, 6u, 8u, 10u, 12u, 14u, 16u
-};
-const uint ptp_1x3_own_plane[16] = {
-    0u, 3u, 4u, 7u, 8u, 11u, 12u, 15u, 1u, 2u, 5u, 6u, 9u, 10u, 13u, 14u
-};
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-const uint ptp_1x3_pj0[8] = {
-    0x00000u, 0x00004u, 0x00008u, 0x0000cu, 0x00001u, 0x00005u, 0x00009u, 0x1000du
-};
-const uint ptp_1x3_kl0[8] = {
-    0x40001u, 0x70002u, 0x50004u, 0x70006u, 0x50001u, 0x70003u, 0x60004u, 0x70006u
-};
-const float ptp_1x3_w0[8] = {
-    -3.0f, -0.171428576f, 3.0f, 0.0857142881f, -1.28571427f, -0.142857149f, 0.857142866f, 0.428571433f
-};
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-const uint ptp_1x3_pj1[8] = {
-    0x00003u, 0x00004u, 0x0000bu, 0x1000cu, 0x00001u, 0x10005u, 0x10009u, 0x2000du
-};
-const uint ptp_1x3_kl1[8] = {
-    0x70001u, 0x60003u, 0x70005u, 0x70005u, 0x40002u, 0x70002u, 0x50004u, 0x70005u
-};
-const float ptp_1x3_w1[8] = {
-    -0.0857142881f, -0.257142872f, 0.171428576f, 0.514285743f, -0.857142866f, -0.428571433f, 1.28571427f, 0.857142866f
-};
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-const uint ptp_1x3_pj2[8] = {
-    0x00003u, 0x10004u, 0x1000bu, 0x2000cu, 0x00002u, 0x10005u, 0x0000au, 0x3000du
-};
-const uint ptp_1x3_kl2[8] = {
-    0x60002u, 0x60002u, 0x70004u, 0x70004u, 0x60001u, 0x60003u, 0x70004u, 0x70004u
-};
-const float ptp_1x3_w2[8] = {
-    -0.514285743f, -0.771428585f, 0.257142872f, 0.257142872f, -0.428571433f, -0.857142866f, 0.142857149f, 0.142857149f
-};
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-const uint ptp_1x3_pj3[8] = {
-    0x00003u, 0x10004u, 0x1000bu, 0x2000cu, 0x00002u, 0x20005u, 0x0000au, 0x3000du
-};
-const uint ptp_1x3_kl3[8] = {
-    0x50003u, 0x50003u, 0x60005u, 0x60005u, 0x50002u, 0x50003u, 0x60005u, 0x60005u
-};
-const float ptp_1x3_w3[8] = {
-    -0.257142872f, -0.514285743f, 0.771428585f, 0.771428585f, -0.857142866f, -0.428571433f, 0.428571433f, 0.428571433f
-};
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-const uint ptp_1x3_pj4[8] = {
-    0x10003u, 0x20004u, 0x2000bu, 0x3000cu, 0x00002u, 0x10006u, 0x1000au, 0x2000eu
-};
-const uint ptp_1x3_kl4[8] = {
-    0x50002u, 0x40003u, 0x60004u, 0x60004u, 0x40003u, 0x70003u, 0x60004u, 0x70006u
-};
-const float ptp_1x3_w4[8] = {
-    -0.771428585f, -0.0857142881f, 0.514285743f, 0.171428576f, -0.142857149f, -0.857142866f, 0.857142866f, 1.28571427f
-};
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-const uint ptp_1x3_pj5[8] = {
-    0x10003u, 0x20007u, 0x3000bu, 0x3000fu, 0x10002u, 0x20006u, 0x2000au, 0x3000eu
-};
-const uint ptp_1x3_kl5[8] = {
-    0x40003u, 0x70003u, 0x50004u, 0x70006u, 0x40002u, 0x60003u, 0x50004u, 0x70005u
-};
-const float ptp_1x3_w5[8] = {
-    -0.171428576f, -3.0f, 0.0857142881f, 3.0f, -0.428571433f, -1.28571427f, 0.428571433f, 0.857142866f
-};
-
-shared vec4 pts[PTP_1X3_Q * PTP_1X3_K];
-shared float acc[PTP_1X3_Q * PTP_1X3_L];
-shared uint flags[PTP_1X3_Q * PTP_1X3_P];
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-float ptp_1x3_cross4z(vec4 a, vec4 b, vec4 c)
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+uint ptp_1x3_classify_patch(vec4 cp[8], vec4 eye)
 {
-    precise float z = a.x * (b.y * c.w - b.w * c.y) -
-        b.x * (a.y * c.w - a.w * c.y) +
-        c.x * (a.y * b.w - a.w * b.y);
-    return z;
+    precise float e2 = eye.z;
+    precise float u, v;
+    bool lt, gt;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x4 = cp[4].x;
+    precise float y4 = cp[4].y;
+    precise float w4 = cp[4].w;
+    precise float g4 = e2 * w4;
+    precise float m1_4 = x1 * y4 - y1 * x4;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_4 = x0 * y4 - y0 * x4;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m2_4 = x2 * y4 - y2 * x4;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = (u + u);
+    precise float x5 = cp[5].x;
+    precise float y5 = cp[5].y;
+    precise float w5 = cp[5].w;
+    precise float g5 = e2 * w5;
+    precise float m1_5 = x1 * y5 - y1 * x5;
+    precise float m0_5 = x0 * y5 - y0 * x5;
+    u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    precise float x3 = cp[3].x;
+    precise float y3 = cp[3].y;
+    precise float w3 = cp[3].w;
+    precise float g3 = e2 * w3;
+    precise float m3_4 = x3 * y4 - y3 * x4;
+    precise float m0_3 = x0 * y3 - y0 * x3;
+    u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    v = u;
+    precise float x6 = cp[6].x;
+    precise float y6 = cp[6].y;
+    precise float w6 = cp[6].w;
+    precise float g6 = e2 * w6;
+    precise float m1_6 = x1 * y6 - y1 * x6;
+    precise float m0_6 = x0 * y6 - y0 * x6;
+    u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
+    v += (u + u) + u;
+    precise float m2_5 = x2 * y5 - y2 * x5;
+    u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    precise float x7 = cp[7].x;
+    precise float y7 = cp[7].y;
+    precise float w7 = cp[7].w;
+    precise float g7 = e2 * w7;
+    precise float m1_7 = x1 * y7 - y1 * x7;
+    precise float m0_7 = x0 * y7 - y0 * x7;
+    u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+    v = u;
+    precise float m1_3 = x1 * y3 - y1 * x3;
+    u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v += (u + u);
+    precise float m3_5 = x3 * y5 - y3 * x5;
+    u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+    v += (u + u) + u;
+    precise float m2_6 = x2 * y6 - y2 * x6;
+    u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    precise float m3_7 = x3 * y7 - y3 * x7;
+    u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+    v = (u + u);
+    precise float m3_6 = x3 * y6 - y3 * x6;
+    precise float m2_3 = x2 * y3 - y2 * x3;
+    u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    precise float m2_7 = x2 * y7 - y2 * x7;
+    u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
+    v = u;
+    u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
+    u -= ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
+    v += (u + u) + u;
+    u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
+    v = u;
+    u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+    v += (u + u);
+    u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
+    v += (u + u) + u;
+    u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    precise float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    precise float m4_6 = x4 * y6 - y4 * x6;
+    u = ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
+    v = (u + u);
+    u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    precise float m4_7 = x4 * y7 - y4 * x7;
+    u = ((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
+    v = u;
+    precise float m5_6 = x5 * y6 - y5 * x6;
+    u = ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
+    u += ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+    v += (u + u) + u;
+    u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 10 */
+    u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
+    v = u;
+    precise float m5_7 = x5 * y7 - y5 * x7;
+    u = ((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
+    v += (u + u);
+    u = ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
+    v += (u + u) + u;
+    u = ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 11 */
+    u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
+    v = (u + u);
+    precise float m6_7 = x6 * y7 - y6 * x7;
+    u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 14 */
+    u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 15 */
+    u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
+    v = u;
+    u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
+    u += ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
+    v += (u + u) + u;
+    u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 13 */
+    u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+    v = u;
+    u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+    v += (u + u);
+    u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
+    v += (u + u) + u;
+    u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 12 */
+    return lt ? 1u : gt ? 0u : 2u;
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-uint ptp_1x3_flags(float d)
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+void ptp_1x3_values(vec4 cp[8], vec4 eye, out float d[16])
 {
-    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);
-}
-
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-uint ptp_1x3_class_of(uint f)
-{
-    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;
+    precise float e2 = eye.z;
+    precise float u, v;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x4 = cp[4].x;
+    precise float y4 = cp[4].y;
+    precise float w4 = cp[4].w;
+    precise float g4 = e2 * w4;
+    precise float m1_4 = x1 * y4 - y1 * x4;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_4 = x0 * y4 - y0 * x4;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    v = u;
+    d[0] = v * 3.0f;
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m2_4 = x2 * y4 - y2 * x4;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = (u + u);
+    precise float x5 = cp[5].x;
+    precise float y5 = cp[5].y;
+    precise float w5 = cp[5].w;
+    precise float g5 = e2 * w5;
+    precise float m1_5 = x1 * y5 - y1 * x5;
+    precise float m0_5 = x0 * y5 - y0 * x5;
+    u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    v += (u + u) + u;
+    d[1] = v * 0.428571433f;
+    precise float x3 = cp[3].x;
+    precise float y3 = cp[3].y;
+    precise float w3 = cp[3].w;
+    precise float g3 = e2 * w3;
+    precise float m3_4 = x3 * y4 - y3 * x4;
+    precise float m0_3 = x0 * y3 - y0 * x3;
+    u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    v = u;
+    precise float x6 = cp[6].x;
+    precise float y6 = cp[6].y;
+    precise float w6 = cp[6].w;
+    precise float g6 = e2 * w6;
+    precise float m1_6 = x1 * y6 - y1 * x6;
+    precise float m0_6 = x0 * y6 - y0 * x6;
+    u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
+    v += (u + u) + u;
+    precise float m2_5 = x2 * y5 - y2 * x5;
+    u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
+    u = u + u;
+    v += (u + u) + u;
+    d[2] = v * 0.142857149f;
+    precise float x7 = cp[7].x;
+    precise float y7 = cp[7].y;
+    precise float w7 = cp[7].w;
+    precise float g7 = e2 * w7;
+    precise float m1_7 = x1 * y7 - y1 * x7;
+    precise float m0_7 = x0 * y7 - y0 * x7;
+    u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+    v = u;
+    precise float m1_3 = x1 * y3 - y1 * x3;
+    u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v += (u + u);
+    precise float m3_5 = x3 * y5 - y3 * x5;
+    u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+    v += (u + u) + u;
+    precise float m2_6 = x2 * y6 - y2 * x6;
+    u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[3] = v * 0.0857142881f;
+    precise float m3_7 = x3 * y7 - y3 * x7;
+    u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+    v = (u + u);
+    precise float m3_6 = x3 * y6 - y3 * x6;
+    precise float m2_3 = x2 * y3 - y2 * x3;
+    u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+    v += (u + u) + u;
+    d[6] = v * 0.428571433f;
+    precise float m2_7 = x2 * y7 - y2 * x7;
+    u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
+    v = u;
+    d[7] = v * 3.0f;
+    u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
+    v = u;
+    u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
+    u -= ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
+    v += (u + u) + u;
+    u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    d[5] = v * 0.142857149f;
+    u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
+    v = u;
+    u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+    v += (u + u);
+    u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
+    v += (u + u) + u;
+    u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[4] = v * 0.0857142881f;
+    precise float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    v = u;
+    d[8] = v * 3.0f;
+    precise float m4_6 = x4 * y6 - y4 * x6;
+    u = ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
+    v = (u + u);
+    u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
+    v += (u + u) + u;
+    d[9] = v * 0.428571433f;
+    precise float m4_7 = x4 * y7 - y4 * x7;
+    u = ((g0 * m4_7 - g4 * m0_7) + g7 * m0_4);
+    v = u;
+    precise float m5_6 = x5 * y6 - y5 * x6;
+    u = ((g0 * m5_6 - g5 * m0_6) + g6 * m0_5);
+    u += ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+    v += (u + u) + u;
+    u = ((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
+    u = u + u;
+    v += (u + u) + u;
+    d[10] = v * 0.142857149f;
+    u = ((g3 * m4_5 - g4 * m3_5) + g5 * m3_4);
+    v = u;
+    precise float m5_7 = x5 * y7 - y5 * x7;
+    u = ((g0 * m5_7 - g5 * m0_7) + g7 * m0_5);
+    v += (u + u);
+    u = ((g1 * m4_7 - g4 * m1_7) + g7 * m1_4);
+    v += (u + u) + u;
+    u = ((g2 * m4_6 - g4 * m2_6) + g6 * m2_4);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g1 * m5_6 - g5 * m1_6) + g6 * m1_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[11] = v * 0.0857142881f;
+    u = ((g3 * m5_7 - g5 * m3_7) + g7 * m3_5);
+    v = (u + u);
+    precise float m6_7 = x6 * y7 - y6 * x7;
+    u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
+    v += (u + u) + u;
+    d[14] = v * 0.428571433f;
+    u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+    v = u;
+    d[15] = v * 3.0f;
+    u = ((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
+    v = u;
+    u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
+    u += ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
+    v += (u + u) + u;
+    u = ((g2 * m5_7 - g5 * m2_7) + g7 * m2_5);
+    u = u + u;
+    v += (u + u) + u;
+    d[13] = v * 0.142857149f;
+    u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+    v = u;
+    u = ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+    v += (u + u);
+    u = ((g2 * m4_7 - g4 * m2_7) + g7 * m2_4);
+    v += (u + u) + u;
+    u = ((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[12] = v * 0.0857142881f;
 }
 
 void main()
 {
-    uint lid = gl_LocalInvocationID.x, q = lid / PTP_1X3_P, t = lid % PTP_1X3_P, i, pj, kl;
-    uint pid = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * PTP_1X3_Q + q;
-    uint f = 0u;
-    bool live = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_1X3_K; i += PTP_1X3_P)
-        if (live)
-            pts[q * PTP_1X3_K + i] = cp[pid * PTP_1X3_K + i];
-    barrier();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_1x3_own_start[t]; i < ptp_1x3_own_start[t + 1u]; i++)
-        acc[q * PTP_1X3_L + ptp_1x3_own_plane[i]] = 0.0f;
-    pj = ptp_1x3_pj0[t];
-    kl = ptp_1x3_kl0[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w0[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj1[t];
-    kl = ptp_1x3_kl1[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w1[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj2[t];
-    kl = ptp_1x3_kl2[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w2[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj3[t];
-    kl = ptp_1x3_kl3[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w3[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj4[t];
-    kl = ptp_1x3_kl4[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w4[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj5[t];
-    kl = ptp_1x3_kl5[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w5[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_1x3_own_start[t]; i < ptp_1x3_own_start[t + 1u]; i++) {
-        uint plane = ptp_1x3_own_plane[i];
-        float d = eye.z * acc[q * PTP_1X3_L + plane];
-        f |= ptp_1x3_flags(d);
-    }
-    flags[q * PTP_1X3_P + t] = f;
-    barrier();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_1X3_P; i++)
-            f |= flags[q * PTP_1X3_P + i];
-        cls[pid] = ptp_1x3_class_of(f);
-    }
+    uint pid = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * PTP_1X3_Q + gl_LocalInvocationID.x;
+    vec4 p[PTP_1X3_K];
+    if (pid >= patch_count)
+        return;
+    p[0] = cp[pid * PTP_1X3_K + 0u];
+    p[1] = cp[pid * PTP_1X3_K + 1u];
+    p[2] = cp[pid * PTP_1X3_K + 2u];
+    p[3] = cp[pid * PTP_1X3_K + 3u];
+    p[4] = cp[pid * PTP_1X3_K + 4u];
+    p[5] = cp[pid * PTP_1X3_K + 5u];
+    p[6] = cp[pid * PTP_1X3_K + 6u];
+    p[7] = cp[pid * PTP_1X3_K + 7u];
+    cls[pid] = ptp_1x3_classify_patch(p, eye);
 }

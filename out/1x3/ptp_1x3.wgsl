@@ -20,7 +20,7 @@
  * rest of the padding, must be 0). Entry point main. Dispatch ceil(patch_count / Q)
  * workgroups, in 2-D (x, y) when x would exceed the limit: workgroup (x, y) handles the
  * patches of block y * num_workgroups.x + x.
- * Schedule: 8 threads per patch, 16 patches per workgroup (128 threads), 6 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 struct Params {
@@ -44,179 +44,421 @@ fn sub_rn(b: vec4<f32>, a: vec4<f32>) -> vec4<f32> {
     return bitcast<vec4<f32>>(bitcast<vec4<u32>>(b - a) ^ vec4<u32>(params.zero));
 }
 
-const PTP_1X3_P: u32 = 8u; /* threads per patch */
-const PTP_1X3_Q: u32 = 16u; /* patches per workgroup */
+const PTP_1X3_P: u32 = 1u; /* threads per patch */
+const PTP_1X3_Q: u32 = 64u; /* patches per workgroup */
 const PTP_1X3_K: u32 = 8u; /* control points per patch */
 const PTP_1X3_L: u32 = 16u; /* control planes per patch */
-/* 6 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-const ptp_1x3_own_start: array<u32, 9> = array<u32, 9>(
-    0u, 2u, 4u, 6u, 8u, 10u, 12u, 14u, 16u
-);
-const ptp_1x3_own_plane: array<u32, 16> = array<u32, 16>(
-    0u, 3u, 4u, 7u, 8u, 11u, 12u, 15u, 1u, 2u, 5u, 6u, 9u, 10u, 13u, 14u
-);
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-const ptp_1x3_pj0: array<u32, 8> = array<u32, 8>(
-    0x00000u, 0x00004u, 0x00008u, 0x0000cu, 0x00001u, 0x00005u, 0x00009u, 0x1000du
-);
-const ptp_1x3_kl0: array<u32, 8> = array<u32, 8>(
-    0x40001u, 0x70002u, 0x50004u, 0x70006u, 0x50001u, 0x70003u, 0x60004u, 0x70006u
-);
-const ptp_1x3_w0: array<f32, 8> = array<f32, 8>(
-    -3.0f, -0.171428576f, 3.0f, 0.0857142881f, -1.28571427f, -0.142857149f, 0.857142866f, 0.428571433f
-);
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-const ptp_1x3_pj1: array<u32, 8> = array<u32, 8>(
-    0x00003u, 0x00004u, 0x0000bu, 0x1000cu, 0x00001u, 0x10005u, 0x10009u, 0x2000du
-);
-const ptp_1x3_kl1: array<u32, 8> = array<u32, 8>(
-    0x70001u, 0x60003u, 0x70005u, 0x70005u, 0x40002u, 0x70002u, 0x50004u, 0x70005u
-);
-const ptp_1x3_w1: array<f32, 8> = array<f32, 8>(
-    -0.0857142881f, -0.257142872f, 0.171428576f, 0.514285743f, -0.857142866f, -0.428571433f, 1.28571427f, 0.857142866f
-);
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-const ptp_1x3_pj2: array<u32, 8> = array<u32, 8>(
-    0x00003u, 0x10004u, 0x1000bu, 0x2000cu, 0x00002u, 0x10005u, 0x0000au, 0x3000du
-);
-const ptp_1x3_kl2: array<u32, 8> = array<u32, 8>(
-    0x60002u, 0x60002u, 0x70004u, 0x70004u, 0x60001u, 0x60003u, 0x70004u, 0x70004u
-);
-const ptp_1x3_w2: array<f32, 8> = array<f32, 8>(
-    -0.514285743f, -0.771428585f, 0.257142872f, 0.257142872f, -0.428571433f, -0.857142866f, 0.142857149f, 0.142857149f
-);
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-const ptp_1x3_pj3: array<u32, 8> = array<u32, 8>(
-    0x00003u, 0x10004u, 0x1000bu, 0x2000cu, 0x00002u, 0x20005u, 0x0000au, 0x3000du
-);
-const ptp_1x3_kl3: array<u32, 8> = array<u32, 8>(
-    0x50003u, 0x50003u, 0x60005u, 0x60005u, 0x50002u, 0x50003u, 0x60005u, 0x60005u
-);
-const ptp_1x3_w3: array<f32, 8> = array<f32, 8>(
-    -0.257142872f, -0.514285743f, 0.771428585f, 0.771428585f, -0.857142866f, -0.428571433f, 0.428571433f, 0.428571433f
-);
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-const ptp_1x3_pj4: array<u32, 8> = array<u32, 8>(
-    0x10003u, 0x20004u, 0x2000bu, 0x3000cu, 0x00002u, 0x10006u, 0x1000au, 0x2000eu
-);
-const ptp_1x3_kl4: array<u32, 8> = array<u32, 8>(
-    0x50002u, 0x40003u, 0x60004u, 0x60004u, 0x40003u, 0x70003u, 0x60004u, 0x70006u
-);
-const ptp_1x3_w4: array<f32, 8> = array<f32, 8>(
-    -0.771428585f, -0.0857142881f, 0.514285743f, 0.171428576f, -0.142857149f, -0.857142866f, 0.857142866f, 1.28571427f
-);
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-const ptp_1x3_pj5: array<u32, 8> = array<u32, 8>(
-    0x10003u, 0x20007u, 0x3000bu, 0x3000fu, 0x10002u, 0x20006u, 0x2000au, 0x3000eu
-);
-const ptp_1x3_kl5: array<u32, 8> = array<u32, 8>(
-    0x40003u, 0x70003u, 0x50004u, 0x70006u, 0x40002u, 0x60003u, 0x50004u, 0x70005u
-);
-const ptp_1x3_w5: array<f32, 8> = array<f32, 8>(
-    -0.171428576f, -3.0f, 0.0857142881f, 3.0f, -0.428571433f, -1.28571427f, 0.428571433f, 0.857142866f
-);
-
-var<workgroup> pts: array<vec4<f32>, PTP_1X3_Q * PTP_1X3_K>;
-var<workgroup> acc: array<f32, PTP_1X3_Q * PTP_1X3_L>;
-var<workgroup> flags: array<u32, PTP_1X3_Q * PTP_1X3_P>;
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-fn ptp_1x3_cross4z(a: vec4<f32>, b: vec4<f32>, c: vec4<f32>) -> f32 {
-    let z: f32 = mul_rn(a.x, (mul_rn(b.y, c.w) - mul_rn(b.w, c.y))) -
-        mul_rn(b.x, (mul_rn(a.y, c.w) - mul_rn(a.w, c.y))) +
-        mul_rn(c.x, (mul_rn(a.y, b.w) - mul_rn(a.w, b.y)));
-    return z;
+/* x * y rounded to a float: through an integer XOR with zero, 0 at run time but unknown to
+ * the compiler, which no FMA contraction can cross (WGSL has no `precise`). */
+fn ptp_1x3_mul_rn(x: f32, y: f32, zero: u32) -> f32 {
+    return bitcast<f32>(bitcast<u32>(x * y) ^ zero);
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-fn ptp_1x3_flags(d: f32) -> u32 {
-    return (select(1u, 0u, d < 0.0f)) | (select(2u, 0u, d > 0.0f));
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+fn ptp_1x3_classify_patch(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32) -> u32 {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    var lt: bool;
+    var gt: bool;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_1x3_mul_rn(e2, w1, zero);
+    let x4 = cp[4].x;
+    let y4 = cp[4].y;
+    let w4 = cp[4].w;
+    let g4 = ptp_1x3_mul_rn(e2, w4, zero);
+    let m1_4 = ptp_1x3_mul_rn(x1, y4, zero) - ptp_1x3_mul_rn(y1, x4, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_1x3_mul_rn(e2, w0, zero);
+    let m0_4 = ptp_1x3_mul_rn(x0, y4, zero) - ptp_1x3_mul_rn(y0, x4, zero);
+    let m0_1 = ptp_1x3_mul_rn(x0, y1, zero) - ptp_1x3_mul_rn(y0, x1, zero);
+    u = -((ptp_1x3_mul_rn(g0, m1_4, zero) - ptp_1x3_mul_rn(g1, m0_4, zero)) + ptp_1x3_mul_rn(g4, m0_1, zero));
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_1x3_mul_rn(e2, w2, zero);
+    let m2_4 = ptp_1x3_mul_rn(x2, y4, zero) - ptp_1x3_mul_rn(y2, x4, zero);
+    let m0_2 = ptp_1x3_mul_rn(x0, y2, zero) - ptp_1x3_mul_rn(y0, x2, zero);
+    u = -((ptp_1x3_mul_rn(g0, m2_4, zero) - ptp_1x3_mul_rn(g2, m0_4, zero)) + ptp_1x3_mul_rn(g4, m0_2, zero));
+    v = (u + u);
+    let x5 = cp[5].x;
+    let y5 = cp[5].y;
+    let w5 = cp[5].w;
+    let g5 = ptp_1x3_mul_rn(e2, w5, zero);
+    let m1_5 = ptp_1x3_mul_rn(x1, y5, zero) - ptp_1x3_mul_rn(y1, x5, zero);
+    let m0_5 = ptp_1x3_mul_rn(x0, y5, zero) - ptp_1x3_mul_rn(y0, x5, zero);
+    u = -((ptp_1x3_mul_rn(g0, m1_5, zero) - ptp_1x3_mul_rn(g1, m0_5, zero)) + ptp_1x3_mul_rn(g5, m0_1, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_1x3_mul_rn(e2, w3, zero);
+    let m3_4 = ptp_1x3_mul_rn(x3, y4, zero) - ptp_1x3_mul_rn(y3, x4, zero);
+    let m0_3 = ptp_1x3_mul_rn(x0, y3, zero) - ptp_1x3_mul_rn(y0, x3, zero);
+    u = -((ptp_1x3_mul_rn(g0, m3_4, zero) - ptp_1x3_mul_rn(g3, m0_4, zero)) + ptp_1x3_mul_rn(g4, m0_3, zero));
+    v = u;
+    let x6 = cp[6].x;
+    let y6 = cp[6].y;
+    let w6 = cp[6].w;
+    let g6 = ptp_1x3_mul_rn(e2, w6, zero);
+    let m1_6 = ptp_1x3_mul_rn(x1, y6, zero) - ptp_1x3_mul_rn(y1, x6, zero);
+    let m0_6 = ptp_1x3_mul_rn(x0, y6, zero) - ptp_1x3_mul_rn(y0, x6, zero);
+    u = -((ptp_1x3_mul_rn(g0, m1_6, zero) - ptp_1x3_mul_rn(g1, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_1, zero));
+    let m1_2 = ptp_1x3_mul_rn(x1, y2, zero) - ptp_1x3_mul_rn(y1, x2, zero);
+    u -= ((ptp_1x3_mul_rn(g1, m2_4, zero) - ptp_1x3_mul_rn(g2, m1_4, zero)) + ptp_1x3_mul_rn(g4, m1_2, zero));
+    v += (u + u) + u;
+    let m2_5 = ptp_1x3_mul_rn(x2, y5, zero) - ptp_1x3_mul_rn(y2, x5, zero);
+    u = -((ptp_1x3_mul_rn(g0, m2_5, zero) - ptp_1x3_mul_rn(g2, m0_5, zero)) + ptp_1x3_mul_rn(g5, m0_2, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    let x7 = cp[7].x;
+    let y7 = cp[7].y;
+    let w7 = cp[7].w;
+    let g7 = ptp_1x3_mul_rn(e2, w7, zero);
+    let m1_7 = ptp_1x3_mul_rn(x1, y7, zero) - ptp_1x3_mul_rn(y1, x7, zero);
+    let m0_7 = ptp_1x3_mul_rn(x0, y7, zero) - ptp_1x3_mul_rn(y0, x7, zero);
+    u = -((ptp_1x3_mul_rn(g0, m1_7, zero) - ptp_1x3_mul_rn(g1, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_1, zero));
+    v = u;
+    let m1_3 = ptp_1x3_mul_rn(x1, y3, zero) - ptp_1x3_mul_rn(y1, x3, zero);
+    u = -((ptp_1x3_mul_rn(g1, m3_4, zero) - ptp_1x3_mul_rn(g3, m1_4, zero)) + ptp_1x3_mul_rn(g4, m1_3, zero));
+    v += (u + u);
+    let m3_5 = ptp_1x3_mul_rn(x3, y5, zero) - ptp_1x3_mul_rn(y3, x5, zero);
+    u = -((ptp_1x3_mul_rn(g0, m3_5, zero) - ptp_1x3_mul_rn(g3, m0_5, zero)) + ptp_1x3_mul_rn(g5, m0_3, zero));
+    v += (u + u) + u;
+    let m2_6 = ptp_1x3_mul_rn(x2, y6, zero) - ptp_1x3_mul_rn(y2, x6, zero);
+    u = -((ptp_1x3_mul_rn(g0, m2_6, zero) - ptp_1x3_mul_rn(g2, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_2, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((ptp_1x3_mul_rn(g1, m2_5, zero) - ptp_1x3_mul_rn(g2, m1_5, zero)) + ptp_1x3_mul_rn(g5, m1_2, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    let m3_7 = ptp_1x3_mul_rn(x3, y7, zero) - ptp_1x3_mul_rn(y3, x7, zero);
+    u = -((ptp_1x3_mul_rn(g1, m3_7, zero) - ptp_1x3_mul_rn(g3, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_3, zero));
+    v = (u + u);
+    let m3_6 = ptp_1x3_mul_rn(x3, y6, zero) - ptp_1x3_mul_rn(y3, x6, zero);
+    let m2_3 = ptp_1x3_mul_rn(x2, y3, zero) - ptp_1x3_mul_rn(y2, x3, zero);
+    u = -((ptp_1x3_mul_rn(g2, m3_6, zero) - ptp_1x3_mul_rn(g3, m2_6, zero)) + ptp_1x3_mul_rn(g6, m2_3, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    let m2_7 = ptp_1x3_mul_rn(x2, y7, zero) - ptp_1x3_mul_rn(y2, x7, zero);
+    u = -((ptp_1x3_mul_rn(g2, m3_7, zero) - ptp_1x3_mul_rn(g3, m2_7, zero)) + ptp_1x3_mul_rn(g7, m2_3, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    u = -((ptp_1x3_mul_rn(g0, m3_7, zero) - ptp_1x3_mul_rn(g3, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_3, zero));
+    v = u;
+    u = -((ptp_1x3_mul_rn(g1, m2_7, zero) - ptp_1x3_mul_rn(g2, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_2, zero));
+    u -= ((ptp_1x3_mul_rn(g2, m3_5, zero) - ptp_1x3_mul_rn(g3, m2_5, zero)) + ptp_1x3_mul_rn(g5, m2_3, zero));
+    v += (u + u) + u;
+    u = -((ptp_1x3_mul_rn(g1, m3_6, zero) - ptp_1x3_mul_rn(g3, m1_6, zero)) + ptp_1x3_mul_rn(g6, m1_3, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    u = -((ptp_1x3_mul_rn(g2, m3_4, zero) - ptp_1x3_mul_rn(g3, m2_4, zero)) + ptp_1x3_mul_rn(g4, m2_3, zero));
+    v = u;
+    u = -((ptp_1x3_mul_rn(g0, m2_7, zero) - ptp_1x3_mul_rn(g2, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_2, zero));
+    v += (u + u);
+    u = -((ptp_1x3_mul_rn(g0, m3_6, zero) - ptp_1x3_mul_rn(g3, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_3, zero));
+    v += (u + u) + u;
+    u = -((ptp_1x3_mul_rn(g1, m3_5, zero) - ptp_1x3_mul_rn(g3, m1_5, zero)) + ptp_1x3_mul_rn(g5, m1_3, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((ptp_1x3_mul_rn(g1, m2_6, zero) - ptp_1x3_mul_rn(g2, m1_6, zero)) + ptp_1x3_mul_rn(g6, m1_2, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    let m4_5 = ptp_1x3_mul_rn(x4, y5, zero) - ptp_1x3_mul_rn(y4, x5, zero);
+    u = ((ptp_1x3_mul_rn(g0, m4_5, zero) - ptp_1x3_mul_rn(g4, m0_5, zero)) + ptp_1x3_mul_rn(g5, m0_4, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    let m4_6 = ptp_1x3_mul_rn(x4, y6, zero) - ptp_1x3_mul_rn(y4, x6, zero);
+    u = ((ptp_1x3_mul_rn(g0, m4_6, zero) - ptp_1x3_mul_rn(g4, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_4, zero));
+    v = (u + u);
+    u = ((ptp_1x3_mul_rn(g1, m4_5, zero) - ptp_1x3_mul_rn(g4, m1_5, zero)) + ptp_1x3_mul_rn(g5, m1_4, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    let m4_7 = ptp_1x3_mul_rn(x4, y7, zero) - ptp_1x3_mul_rn(y4, x7, zero);
+    u = ((ptp_1x3_mul_rn(g0, m4_7, zero) - ptp_1x3_mul_rn(g4, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_4, zero));
+    v = u;
+    let m5_6 = ptp_1x3_mul_rn(x5, y6, zero) - ptp_1x3_mul_rn(y5, x6, zero);
+    u = ((ptp_1x3_mul_rn(g0, m5_6, zero) - ptp_1x3_mul_rn(g5, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_5, zero));
+    u += ((ptp_1x3_mul_rn(g2, m4_5, zero) - ptp_1x3_mul_rn(g4, m2_5, zero)) + ptp_1x3_mul_rn(g5, m2_4, zero));
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g1, m4_6, zero) - ptp_1x3_mul_rn(g4, m1_6, zero)) + ptp_1x3_mul_rn(g6, m1_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 10 */
+    u = ((ptp_1x3_mul_rn(g3, m4_5, zero) - ptp_1x3_mul_rn(g4, m3_5, zero)) + ptp_1x3_mul_rn(g5, m3_4, zero));
+    v = u;
+    let m5_7 = ptp_1x3_mul_rn(x5, y7, zero) - ptp_1x3_mul_rn(y5, x7, zero);
+    u = ((ptp_1x3_mul_rn(g0, m5_7, zero) - ptp_1x3_mul_rn(g5, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_5, zero));
+    v += (u + u);
+    u = ((ptp_1x3_mul_rn(g1, m4_7, zero) - ptp_1x3_mul_rn(g4, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_4, zero));
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g2, m4_6, zero) - ptp_1x3_mul_rn(g4, m2_6, zero)) + ptp_1x3_mul_rn(g6, m2_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g1, m5_6, zero) - ptp_1x3_mul_rn(g5, m1_6, zero)) + ptp_1x3_mul_rn(g6, m1_5, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 11 */
+    u = ((ptp_1x3_mul_rn(g3, m5_7, zero) - ptp_1x3_mul_rn(g5, m3_7, zero)) + ptp_1x3_mul_rn(g7, m3_5, zero));
+    v = (u + u);
+    let m6_7 = ptp_1x3_mul_rn(x6, y7, zero) - ptp_1x3_mul_rn(y6, x7, zero);
+    u = ((ptp_1x3_mul_rn(g2, m6_7, zero) - ptp_1x3_mul_rn(g6, m2_7, zero)) + ptp_1x3_mul_rn(g7, m2_6, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 14 */
+    u = ((ptp_1x3_mul_rn(g3, m6_7, zero) - ptp_1x3_mul_rn(g6, m3_7, zero)) + ptp_1x3_mul_rn(g7, m3_6, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 15 */
+    u = ((ptp_1x3_mul_rn(g3, m4_7, zero) - ptp_1x3_mul_rn(g4, m3_7, zero)) + ptp_1x3_mul_rn(g7, m3_4, zero));
+    v = u;
+    u = ((ptp_1x3_mul_rn(g1, m6_7, zero) - ptp_1x3_mul_rn(g6, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_6, zero));
+    u += ((ptp_1x3_mul_rn(g3, m5_6, zero) - ptp_1x3_mul_rn(g5, m3_6, zero)) + ptp_1x3_mul_rn(g6, m3_5, zero));
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g2, m5_7, zero) - ptp_1x3_mul_rn(g5, m2_7, zero)) + ptp_1x3_mul_rn(g7, m2_5, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 13 */
+    u = ((ptp_1x3_mul_rn(g0, m6_7, zero) - ptp_1x3_mul_rn(g6, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_6, zero));
+    v = u;
+    u = ((ptp_1x3_mul_rn(g3, m4_6, zero) - ptp_1x3_mul_rn(g4, m3_6, zero)) + ptp_1x3_mul_rn(g6, m3_4, zero));
+    v += (u + u);
+    u = ((ptp_1x3_mul_rn(g2, m4_7, zero) - ptp_1x3_mul_rn(g4, m2_7, zero)) + ptp_1x3_mul_rn(g7, m2_4, zero));
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g1, m5_7, zero) - ptp_1x3_mul_rn(g5, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_5, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g2, m5_6, zero) - ptp_1x3_mul_rn(g5, m2_6, zero)) + ptp_1x3_mul_rn(g6, m2_5, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 12 */
+    return select(select(2u, 0u, gt), 1u, lt);
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-fn ptp_1x3_class_of(f: u32) -> u32 {
-    return select(select(2u, 0u, (f & 2u) == 0u), 1u, (f & 1u) == 0u);
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+fn ptp_1x3_values(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32,
+        d: ptr<function, array<f32, 16>>) {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_1x3_mul_rn(e2, w1, zero);
+    let x4 = cp[4].x;
+    let y4 = cp[4].y;
+    let w4 = cp[4].w;
+    let g4 = ptp_1x3_mul_rn(e2, w4, zero);
+    let m1_4 = ptp_1x3_mul_rn(x1, y4, zero) - ptp_1x3_mul_rn(y1, x4, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_1x3_mul_rn(e2, w0, zero);
+    let m0_4 = ptp_1x3_mul_rn(x0, y4, zero) - ptp_1x3_mul_rn(y0, x4, zero);
+    let m0_1 = ptp_1x3_mul_rn(x0, y1, zero) - ptp_1x3_mul_rn(y0, x1, zero);
+    u = -((ptp_1x3_mul_rn(g0, m1_4, zero) - ptp_1x3_mul_rn(g1, m0_4, zero)) + ptp_1x3_mul_rn(g4, m0_1, zero));
+    v = u;
+    (*d)[0] = v * 3.0f;
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_1x3_mul_rn(e2, w2, zero);
+    let m2_4 = ptp_1x3_mul_rn(x2, y4, zero) - ptp_1x3_mul_rn(y2, x4, zero);
+    let m0_2 = ptp_1x3_mul_rn(x0, y2, zero) - ptp_1x3_mul_rn(y0, x2, zero);
+    u = -((ptp_1x3_mul_rn(g0, m2_4, zero) - ptp_1x3_mul_rn(g2, m0_4, zero)) + ptp_1x3_mul_rn(g4, m0_2, zero));
+    v = (u + u);
+    let x5 = cp[5].x;
+    let y5 = cp[5].y;
+    let w5 = cp[5].w;
+    let g5 = ptp_1x3_mul_rn(e2, w5, zero);
+    let m1_5 = ptp_1x3_mul_rn(x1, y5, zero) - ptp_1x3_mul_rn(y1, x5, zero);
+    let m0_5 = ptp_1x3_mul_rn(x0, y5, zero) - ptp_1x3_mul_rn(y0, x5, zero);
+    u = -((ptp_1x3_mul_rn(g0, m1_5, zero) - ptp_1x3_mul_rn(g1, m0_5, zero)) + ptp_1x3_mul_rn(g5, m0_1, zero));
+    v += (u + u) + u;
+    (*d)[1] = v * 0.428571433f;
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_1x3_mul_rn(e2, w3, zero);
+    let m3_4 = ptp_1x3_mul_rn(x3, y4, zero) - ptp_1x3_mul_rn(y3, x4, zero);
+    let m0_3 = ptp_1x3_mul_rn(x0, y3, zero) - ptp_1x3_mul_rn(y0, x3, zero);
+    u = -((ptp_1x3_mul_rn(g0, m3_4, zero) - ptp_1x3_mul_rn(g3, m0_4, zero)) + ptp_1x3_mul_rn(g4, m0_3, zero));
+    v = u;
+    let x6 = cp[6].x;
+    let y6 = cp[6].y;
+    let w6 = cp[6].w;
+    let g6 = ptp_1x3_mul_rn(e2, w6, zero);
+    let m1_6 = ptp_1x3_mul_rn(x1, y6, zero) - ptp_1x3_mul_rn(y1, x6, zero);
+    let m0_6 = ptp_1x3_mul_rn(x0, y6, zero) - ptp_1x3_mul_rn(y0, x6, zero);
+    u = -((ptp_1x3_mul_rn(g0, m1_6, zero) - ptp_1x3_mul_rn(g1, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_1, zero));
+    let m1_2 = ptp_1x3_mul_rn(x1, y2, zero) - ptp_1x3_mul_rn(y1, x2, zero);
+    u -= ((ptp_1x3_mul_rn(g1, m2_4, zero) - ptp_1x3_mul_rn(g2, m1_4, zero)) + ptp_1x3_mul_rn(g4, m1_2, zero));
+    v += (u + u) + u;
+    let m2_5 = ptp_1x3_mul_rn(x2, y5, zero) - ptp_1x3_mul_rn(y2, x5, zero);
+    u = -((ptp_1x3_mul_rn(g0, m2_5, zero) - ptp_1x3_mul_rn(g2, m0_5, zero)) + ptp_1x3_mul_rn(g5, m0_2, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[2] = v * 0.142857149f;
+    let x7 = cp[7].x;
+    let y7 = cp[7].y;
+    let w7 = cp[7].w;
+    let g7 = ptp_1x3_mul_rn(e2, w7, zero);
+    let m1_7 = ptp_1x3_mul_rn(x1, y7, zero) - ptp_1x3_mul_rn(y1, x7, zero);
+    let m0_7 = ptp_1x3_mul_rn(x0, y7, zero) - ptp_1x3_mul_rn(y0, x7, zero);
+    u = -((ptp_1x3_mul_rn(g0, m1_7, zero) - ptp_1x3_mul_rn(g1, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_1, zero));
+    v = u;
+    let m1_3 = ptp_1x3_mul_rn(x1, y3, zero) - ptp_1x3_mul_rn(y1, x3, zero);
+    u = -((ptp_1x3_mul_rn(g1, m3_4, zero) - ptp_1x3_mul_rn(g3, m1_4, zero)) + ptp_1x3_mul_rn(g4, m1_3, zero));
+    v += (u + u);
+    let m3_5 = ptp_1x3_mul_rn(x3, y5, zero) - ptp_1x3_mul_rn(y3, x5, zero);
+    u = -((ptp_1x3_mul_rn(g0, m3_5, zero) - ptp_1x3_mul_rn(g3, m0_5, zero)) + ptp_1x3_mul_rn(g5, m0_3, zero));
+    v += (u + u) + u;
+    let m2_6 = ptp_1x3_mul_rn(x2, y6, zero) - ptp_1x3_mul_rn(y2, x6, zero);
+    u = -((ptp_1x3_mul_rn(g0, m2_6, zero) - ptp_1x3_mul_rn(g2, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_2, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((ptp_1x3_mul_rn(g1, m2_5, zero) - ptp_1x3_mul_rn(g2, m1_5, zero)) + ptp_1x3_mul_rn(g5, m1_2, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[3] = v * 0.0857142881f;
+    let m3_7 = ptp_1x3_mul_rn(x3, y7, zero) - ptp_1x3_mul_rn(y3, x7, zero);
+    u = -((ptp_1x3_mul_rn(g1, m3_7, zero) - ptp_1x3_mul_rn(g3, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_3, zero));
+    v = (u + u);
+    let m3_6 = ptp_1x3_mul_rn(x3, y6, zero) - ptp_1x3_mul_rn(y3, x6, zero);
+    let m2_3 = ptp_1x3_mul_rn(x2, y3, zero) - ptp_1x3_mul_rn(y2, x3, zero);
+    u = -((ptp_1x3_mul_rn(g2, m3_6, zero) - ptp_1x3_mul_rn(g3, m2_6, zero)) + ptp_1x3_mul_rn(g6, m2_3, zero));
+    v += (u + u) + u;
+    (*d)[6] = v * 0.428571433f;
+    let m2_7 = ptp_1x3_mul_rn(x2, y7, zero) - ptp_1x3_mul_rn(y2, x7, zero);
+    u = -((ptp_1x3_mul_rn(g2, m3_7, zero) - ptp_1x3_mul_rn(g3, m2_7, zero)) + ptp_1x3_mul_rn(g7, m2_3, zero));
+    v = u;
+    (*d)[7] = v * 3.0f;
+    u = -((ptp_1x3_mul_rn(g0, m3_7, zero) - ptp_1x3_mul_rn(g3, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_3, zero));
+    v = u;
+    u = -((ptp_1x3_mul_rn(g1, m2_7, zero) - ptp_1x3_mul_rn(g2, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_2, zero));
+    u -= ((ptp_1x3_mul_rn(g2, m3_5, zero) - ptp_1x3_mul_rn(g3, m2_5, zero)) + ptp_1x3_mul_rn(g5, m2_3, zero));
+    v += (u + u) + u;
+    u = -((ptp_1x3_mul_rn(g1, m3_6, zero) - ptp_1x3_mul_rn(g3, m1_6, zero)) + ptp_1x3_mul_rn(g6, m1_3, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[5] = v * 0.142857149f;
+    u = -((ptp_1x3_mul_rn(g2, m3_4, zero) - ptp_1x3_mul_rn(g3, m2_4, zero)) + ptp_1x3_mul_rn(g4, m2_3, zero));
+    v = u;
+    u = -((ptp_1x3_mul_rn(g0, m2_7, zero) - ptp_1x3_mul_rn(g2, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_2, zero));
+    v += (u + u);
+    u = -((ptp_1x3_mul_rn(g0, m3_6, zero) - ptp_1x3_mul_rn(g3, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_3, zero));
+    v += (u + u) + u;
+    u = -((ptp_1x3_mul_rn(g1, m3_5, zero) - ptp_1x3_mul_rn(g3, m1_5, zero)) + ptp_1x3_mul_rn(g5, m1_3, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((ptp_1x3_mul_rn(g1, m2_6, zero) - ptp_1x3_mul_rn(g2, m1_6, zero)) + ptp_1x3_mul_rn(g6, m1_2, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[4] = v * 0.0857142881f;
+    let m4_5 = ptp_1x3_mul_rn(x4, y5, zero) - ptp_1x3_mul_rn(y4, x5, zero);
+    u = ((ptp_1x3_mul_rn(g0, m4_5, zero) - ptp_1x3_mul_rn(g4, m0_5, zero)) + ptp_1x3_mul_rn(g5, m0_4, zero));
+    v = u;
+    (*d)[8] = v * 3.0f;
+    let m4_6 = ptp_1x3_mul_rn(x4, y6, zero) - ptp_1x3_mul_rn(y4, x6, zero);
+    u = ((ptp_1x3_mul_rn(g0, m4_6, zero) - ptp_1x3_mul_rn(g4, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_4, zero));
+    v = (u + u);
+    u = ((ptp_1x3_mul_rn(g1, m4_5, zero) - ptp_1x3_mul_rn(g4, m1_5, zero)) + ptp_1x3_mul_rn(g5, m1_4, zero));
+    v += (u + u) + u;
+    (*d)[9] = v * 0.428571433f;
+    let m4_7 = ptp_1x3_mul_rn(x4, y7, zero) - ptp_1x3_mul_rn(y4, x7, zero);
+    u = ((ptp_1x3_mul_rn(g0, m4_7, zero) - ptp_1x3_mul_rn(g4, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_4, zero));
+    v = u;
+    let m5_6 = ptp_1x3_mul_rn(x5, y6, zero) - ptp_1x3_mul_rn(y5, x6, zero);
+    u = ((ptp_1x3_mul_rn(g0, m5_6, zero) - ptp_1x3_mul_rn(g5, m0_6, zero)) + ptp_1x3_mul_rn(g6, m0_5, zero));
+    u += ((ptp_1x3_mul_rn(g2, m4_5, zero) - ptp_1x3_mul_rn(g4, m2_5, zero)) + ptp_1x3_mul_rn(g5, m2_4, zero));
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g1, m4_6, zero) - ptp_1x3_mul_rn(g4, m1_6, zero)) + ptp_1x3_mul_rn(g6, m1_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[10] = v * 0.142857149f;
+    u = ((ptp_1x3_mul_rn(g3, m4_5, zero) - ptp_1x3_mul_rn(g4, m3_5, zero)) + ptp_1x3_mul_rn(g5, m3_4, zero));
+    v = u;
+    let m5_7 = ptp_1x3_mul_rn(x5, y7, zero) - ptp_1x3_mul_rn(y5, x7, zero);
+    u = ((ptp_1x3_mul_rn(g0, m5_7, zero) - ptp_1x3_mul_rn(g5, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_5, zero));
+    v += (u + u);
+    u = ((ptp_1x3_mul_rn(g1, m4_7, zero) - ptp_1x3_mul_rn(g4, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_4, zero));
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g2, m4_6, zero) - ptp_1x3_mul_rn(g4, m2_6, zero)) + ptp_1x3_mul_rn(g6, m2_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g1, m5_6, zero) - ptp_1x3_mul_rn(g5, m1_6, zero)) + ptp_1x3_mul_rn(g6, m1_5, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[11] = v * 0.0857142881f;
+    u = ((ptp_1x3_mul_rn(g3, m5_7, zero) - ptp_1x3_mul_rn(g5, m3_7, zero)) + ptp_1x3_mul_rn(g7, m3_5, zero));
+    v = (u + u);
+    let m6_7 = ptp_1x3_mul_rn(x6, y7, zero) - ptp_1x3_mul_rn(y6, x7, zero);
+    u = ((ptp_1x3_mul_rn(g2, m6_7, zero) - ptp_1x3_mul_rn(g6, m2_7, zero)) + ptp_1x3_mul_rn(g7, m2_6, zero));
+    v += (u + u) + u;
+    (*d)[14] = v * 0.428571433f;
+    u = ((ptp_1x3_mul_rn(g3, m6_7, zero) - ptp_1x3_mul_rn(g6, m3_7, zero)) + ptp_1x3_mul_rn(g7, m3_6, zero));
+    v = u;
+    (*d)[15] = v * 3.0f;
+    u = ((ptp_1x3_mul_rn(g3, m4_7, zero) - ptp_1x3_mul_rn(g4, m3_7, zero)) + ptp_1x3_mul_rn(g7, m3_4, zero));
+    v = u;
+    u = ((ptp_1x3_mul_rn(g1, m6_7, zero) - ptp_1x3_mul_rn(g6, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_6, zero));
+    u += ((ptp_1x3_mul_rn(g3, m5_6, zero) - ptp_1x3_mul_rn(g5, m3_6, zero)) + ptp_1x3_mul_rn(g6, m3_5, zero));
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g2, m5_7, zero) - ptp_1x3_mul_rn(g5, m2_7, zero)) + ptp_1x3_mul_rn(g7, m2_5, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[13] = v * 0.142857149f;
+    u = ((ptp_1x3_mul_rn(g0, m6_7, zero) - ptp_1x3_mul_rn(g6, m0_7, zero)) + ptp_1x3_mul_rn(g7, m0_6, zero));
+    v = u;
+    u = ((ptp_1x3_mul_rn(g3, m4_6, zero) - ptp_1x3_mul_rn(g4, m3_6, zero)) + ptp_1x3_mul_rn(g6, m3_4, zero));
+    v += (u + u);
+    u = ((ptp_1x3_mul_rn(g2, m4_7, zero) - ptp_1x3_mul_rn(g4, m2_7, zero)) + ptp_1x3_mul_rn(g7, m2_4, zero));
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g1, m5_7, zero) - ptp_1x3_mul_rn(g5, m1_7, zero)) + ptp_1x3_mul_rn(g7, m1_5, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((ptp_1x3_mul_rn(g2, m5_6, zero) - ptp_1x3_mul_rn(g5, m2_6, zero)) + ptp_1x3_mul_rn(g6, m2_5, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[12] = v * 0.0857142881f;
 }
 
-@compute @workgroup_size(128)
+@compute @workgroup_size(64)
 fn main(@builtin(local_invocation_id) lid3: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>,
         @builtin(num_workgroups) nwg: vec3<u32>) {
     let eye = params.eye;
     let patch_count = params.patch_count;
-    let lid: u32 = lid3.x;
-    let q: u32 = lid / PTP_1X3_P;
-    let t: u32 = lid % PTP_1X3_P;
-    var i: u32;
-    var pj: u32;
-    var kl: u32;
-    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_1X3_Q + q;
-    var f: u32 = 0u;
-    let live: bool = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_1X3_K; i += PTP_1X3_P) {
-        if (live) {
-            pts[q * PTP_1X3_K + i] = cp[pid * PTP_1X3_K + i];
-        }
+    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_1X3_Q + lid3.x;
+    var p: array<vec4<f32>, PTP_1X3_K>;
+    if (pid >= patch_count) {
+        return;
     }
-    workgroupBarrier();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_1x3_own_start[t]; i < ptp_1x3_own_start[t + 1u]; i++) {
-        acc[q * PTP_1X3_L + ptp_1x3_own_plane[i]] = 0.0f;
-    }
-    pj = ptp_1x3_pj0[t];
-    kl = ptp_1x3_kl0[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w0[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj1[t];
-    kl = ptp_1x3_kl1[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w1[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj2[t];
-    kl = ptp_1x3_kl2[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w2[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj3[t];
-    kl = ptp_1x3_kl3[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w3[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj4[t];
-    kl = ptp_1x3_kl4[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w4[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-    pj = ptp_1x3_pj5[t];
-    kl = ptp_1x3_kl5[t];
-    acc[q * PTP_1X3_L + (pj & 0xffffu)] += ptp_1x3_w5[t] *
-        ptp_1x3_cross4z(pts[q * PTP_1X3_K + (pj >> 16)], pts[q * PTP_1X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_1X3_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_1x3_own_start[t]; i < ptp_1x3_own_start[t + 1u]; i++) {
-        let plane: u32 = ptp_1x3_own_plane[i];
-        let d: f32 = eye.z * acc[q * PTP_1X3_L + plane];
-        f |= ptp_1x3_flags(d);
-    }
-    flags[q * PTP_1X3_P + t] = f;
-    workgroupBarrier();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_1X3_P; i++) {
-            f |= flags[q * PTP_1X3_P + i];
-        }
-        cls[pid] = ptp_1x3_class_of(f);
-    }
+    p[0] = cp[pid * PTP_1X3_K + 0u];
+    p[1] = cp[pid * PTP_1X3_K + 1u];
+    p[2] = cp[pid * PTP_1X3_K + 2u];
+    p[3] = cp[pid * PTP_1X3_K + 3u];
+    p[4] = cp[pid * PTP_1X3_K + 4u];
+    p[5] = cp[pid * PTP_1X3_K + 5u];
+    p[6] = cp[pid * PTP_1X3_K + 6u];
+    p[7] = cp[pid * PTP_1X3_K + 7u];
+    cls[pid] = ptp_1x3_classify_patch(p, eye, params.zero);
 }

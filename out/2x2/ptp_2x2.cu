@@ -17,238 +17,688 @@
  * Kernel <prefix>classify(cp, cls, planes, eye, patch_count), extern "C": planes receives
  * d[p*L + P] when not NULL. Launch P*Q threads per block and ceil(patch_count / Q) blocks,
  * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.
- * Schedule: 8 threads per patch, 16 patches per workgroup (128 threads), 10 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
-#define PTP_2X2_P 8u /* threads per patch */
-#define PTP_2X2_Q 16u /* patches per workgroup */
+#define PTP_2X2_P 1u /* threads per patch */
+#define PTP_2X2_Q 64u /* patches per workgroup */
 #define PTP_2X2_K 9u /* control points per patch */
 #define PTP_2X2_L 25u /* control planes per patch */
-/* 10 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-__constant__ unsigned ptp_2x2_own_start[9] = {
-    0u, 3u, 6u, 9u, 13u, 16u, 19u, 22u, 25u
-};
-__constant__ unsigned ptp_2x2_own_plane[25] = {
-    7u, 20u, 22u, 1u, 11u, 21u, 3u, 13u, 23u, 0u, 5u, 17u, 24u, 4u, 6u, 18u,
-    2u, 8u, 9u, 10u, 12u, 15u, 14u, 16u, 19u
-};
-
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-__constant__ unsigned ptp_2x2_pj0[8] = {
-    0x00007u, 0x00001u, 0x00003u, 0x00000u, 0x10004u, 0x00002u, 0x0000au, 0x1000eu
-};
-__constant__ unsigned ptp_2x2_kl0[8] = {
-    0x80001u, 0x40001u, 0x50002u, 0x30001u, 0x50002u, 0x50001u, 0x70003u, 0x80005u
-};
-__constant__ float ptp_2x2_w0[8] = {
-    -0.166666672f, -2.0f, -1.0f, -4.0f, -4.0f, -0.666666687f, 0.666666687f, -0.666666687f
-};
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-__constant__ unsigned ptp_2x2_pj1[8] = {
-    0x00007u, 0x00001u, 0x10003u, 0x00005u, 0x00006u, 0x00002u, 0x0000au, 0x2000eu
-};
-__constant__ unsigned ptp_2x2_kl1[8] = {
-    0x70002u, 0x30002u, 0x40002u, 0x60001u, 0x70001u, 0x40002u, 0x60004u, 0x80004u
-};
-__constant__ float ptp_2x2_w1[8] = {
-    -0.333333343f, -1.0f, -2.0f, -1.0f, -0.5f, -1.33333337f, -1.33333337f, 1.33333337f
-};
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-__constant__ unsigned ptp_2x2_pj2[8] = {
-    0x00007u, 0x0000bu, 0x0000du, 0x00005u, 0x00006u, 0x10002u, 0x1000au, 0x2000eu
-};
-__constant__ unsigned ptp_2x2_kl2[8] = {
-    0x50004u, 0x80003u, 0x80005u, 0x40003u, 0x60002u, 0x30002u, 0x60003u, 0x70005u
-};
-__constant__ float ptp_2x2_w2[8] = {
-    0.333333343f, 0.166666672f, -0.166666672f, 2.0f, -0.25f, -0.666666687f, 0.666666687f, -0.666666687f
-};
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-__constant__ unsigned ptp_2x2_pj3[8] = {
-    0x10007u, 0x0000bu, 0x1000du, 0x00011u, 0x00006u, 0x00008u, 0x0000cu, 0x00010u
-};
-__constant__ unsigned ptp_2x2_kl3[8] = {
-    0x60002u, 0x70004u, 0x80004u, 0x80007u, 0x50003u, 0x80002u, 0x70005u, 0x80006u
-};
-__constant__ float ptp_2x2_w3[8] = {
-    -0.166666672f, -0.333333343f, 0.333333343f, 0.166666672f, 0.5f, -0.25f, -0.333333343f, 0.25f
-};
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-__constant__ unsigned ptp_2x2_pj4[8] = {
-    0x10007u, 0x0000bu, 0x1000du, 0x10011u, 0x10006u, 0x10008u, 0x1000cu, 0x10010u
-};
-__constant__ unsigned ptp_2x2_kl4[8] = {
-    0x50003u, 0x60005u, 0x70005u, 0x80006u, 0x40003u, 0x70002u, 0x80003u, 0x70006u
-};
-__constant__ float ptp_2x2_w4[8] = {
-    0.666666687f, -0.333333343f, -0.666666687f, 0.333333343f, 1.0f, -0.5f, 0.333333343f, 0.5f
-};
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-__constant__ unsigned ptp_2x2_pj5[8] = {
-    0x20007u, 0x1000bu, 0x2000du, 0x20011u, 0x10012u, 0x10008u, 0x1000cu, 0x30010u
-};
-__constant__ unsigned ptp_2x2_kl5[8] = {
-    0x40003u, 0x70003u, 0x80003u, 0x70006u, 0x80007u, 0x50004u, 0x60005u, 0x70004u
-};
-__constant__ float ptp_2x2_w5[8] = {
-    0.333333343f, 0.666666687f, 0.333333343f, 0.166666672f, 0.5f, 1.0f, -0.333333343f, -1.0f
-};
-
-/* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-__constant__ unsigned ptp_2x2_pj6[8] = {
-    0x30014u, 0x1000bu, 0x2000du, 0x30011u, 0x20012u, 0x20008u, 0x2000cu, 0x30010u
-};
-__constant__ unsigned ptp_2x2_kl6[8] = {
-    0x70006u, 0x60004u, 0x70004u, 0x80004u, 0x80006u, 0x50003u, 0x70003u, 0x60005u
-};
-__constant__ float ptp_2x2_w6[8] = {
-    4.0f, -0.333333343f, 0.333333343f, -0.333333343f, 0.25f, 0.5f, 0.333333343f, -0.5f
-};
-
-/* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-__constant__ unsigned ptp_2x2_pj7[8] = {
-    0x30016u, 0x2000bu, 0x2000du, 0x30011u, 0x30012u, 0x10009u, 0x0000fu, 0x20013u
-};
-__constant__ unsigned ptp_2x2_kl7[8] = {
-    0x80007u, 0x60003u, 0x60005u, 0x70005u, 0x80005u, 0x80002u, 0x70006u, 0x80007u
-};
-__constant__ float ptp_2x2_w7[8] = {
-    0.666666687f, 0.166666672f, -0.166666672f, -0.666666687f, -0.5f, -1.0f, 1.0f, 1.0f
-};
-
-/* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-__constant__ unsigned ptp_2x2_pj8[8] = {
-    0x40016u, 0x30015u, 0x40017u, 0x40011u, 0x40012u, 0x20009u, 0x3000fu, 0x40013u
-};
-__constant__ unsigned ptp_2x2_kl8[8] = {
-    0x80006u, 0x80006u, 0x80007u, 0x60005u, 0x70005u, 0x50004u, 0x60004u, 0x80005u
-};
-__constant__ float ptp_2x2_w8[8] = {
-    1.33333337f, 1.0f, 2.0f, -0.333333343f, -1.0f, 2.0f, -2.0f, -2.0f
-};
-
-/* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-__constant__ unsigned ptp_2x2_pj9[8] = {
-    0x50016u, 0x40015u, 0x50017u, 0x50018u, 0x00004u, 0x00002u, 0x0000au, 0x0000eu
-};
-__constant__ unsigned ptp_2x2_kl9[8] = {
-    0x70006u, 0x70006u, 0x80006u, 0x80007u, 0x00000u, 0x00000u, 0x00000u, 0x00000u
-};
-__constant__ float ptp_2x2_w9[8] = {
-    0.666666687f, 2.0f, 1.0f, 4.0f, 0.0f, 0.0f, 0.0f, 0.0f
-};
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-static __device__ float ptp_2x2_cross4z(float4 a, float4 b, float4 c)
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+static __device__ inline unsigned ptp_2x2_classify_patch(const float4 cp[9], float4 eye)
 {
-    float z = __fmul_rn(a.x, (__fmul_rn(b.y, c.w) - __fmul_rn(b.w, c.y))) -
-        __fmul_rn(b.x, (__fmul_rn(a.y, c.w) - __fmul_rn(a.w, c.y))) +
-        __fmul_rn(c.x, (__fmul_rn(a.y, b.w) - __fmul_rn(a.w, b.y)));
-    return z;
+    float e2 = eye.z;
+    float u, v;
+    bool lt, gt;
+    const float x1 = cp[1].x;
+    const float y1 = cp[1].y;
+    const float w1 = cp[1].w;
+    const float g1 = __fmul_rn(e2, w1);
+    const float x3 = cp[3].x;
+    const float y3 = cp[3].y;
+    const float w3 = cp[3].w;
+    const float g3 = __fmul_rn(e2, w3);
+    const float m1_3 = __fmul_rn(x1, y3) - __fmul_rn(y1, x3);
+    const float x0 = cp[0].x;
+    const float y0 = cp[0].y;
+    const float w0 = cp[0].w;
+    const float g0 = __fmul_rn(e2, w0);
+    const float m0_3 = __fmul_rn(x0, y3) - __fmul_rn(y0, x3);
+    const float m0_1 = __fmul_rn(x0, y1) - __fmul_rn(y0, x1);
+    u = -((__fmul_rn(g0, m1_3) - __fmul_rn(g1, m0_3)) + __fmul_rn(g3, m0_1));
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    const float x2 = cp[2].x;
+    const float y2 = cp[2].y;
+    const float w2 = cp[2].w;
+    const float g2 = __fmul_rn(e2, w2);
+    const float x5 = cp[5].x;
+    const float y5 = cp[5].y;
+    const float w5 = cp[5].w;
+    const float g5 = __fmul_rn(e2, w5);
+    const float m2_5 = __fmul_rn(x2, y5) - __fmul_rn(y2, x5);
+    const float m1_5 = __fmul_rn(x1, y5) - __fmul_rn(y1, x5);
+    const float m1_2 = __fmul_rn(x1, y2) - __fmul_rn(y1, x2);
+    u = -((__fmul_rn(g1, m2_5) - __fmul_rn(g2, m1_5)) + __fmul_rn(g5, m1_2));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    const float m2_3 = __fmul_rn(x2, y3) - __fmul_rn(y2, x3);
+    const float m0_2 = __fmul_rn(x0, y2) - __fmul_rn(y0, x2);
+    u = -((__fmul_rn(g0, m2_3) - __fmul_rn(g2, m0_3)) + __fmul_rn(g3, m0_2));
+    v = u;
+    const float x4 = cp[4].x;
+    const float y4 = cp[4].y;
+    const float w4 = cp[4].w;
+    const float g4 = __fmul_rn(e2, w4);
+    const float m1_4 = __fmul_rn(x1, y4) - __fmul_rn(y1, x4);
+    const float m0_4 = __fmul_rn(x0, y4) - __fmul_rn(y0, x4);
+    u = -((__fmul_rn(g0, m1_4) - __fmul_rn(g1, m0_4)) + __fmul_rn(g4, m0_1));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    const float m0_5 = __fmul_rn(x0, y5) - __fmul_rn(y0, x5);
+    u = -((__fmul_rn(g0, m1_5) - __fmul_rn(g1, m0_5)) + __fmul_rn(g5, m0_1));
+    u -= ((__fmul_rn(g1, m2_3) - __fmul_rn(g2, m1_3)) + __fmul_rn(g3, m1_2));
+    v = u;
+    const float m2_4 = __fmul_rn(x2, y4) - __fmul_rn(y2, x4);
+    u = -((__fmul_rn(g0, m2_4) - __fmul_rn(g2, m0_4)) + __fmul_rn(g4, m0_2));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    u = -((__fmul_rn(g0, m2_5) - __fmul_rn(g2, m0_5)) + __fmul_rn(g5, m0_2));
+    v = u;
+    u = -((__fmul_rn(g1, m2_4) - __fmul_rn(g2, m1_4)) + __fmul_rn(g4, m1_2));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    const float x6 = cp[6].x;
+    const float y6 = cp[6].y;
+    const float w6 = cp[6].w;
+    const float g6 = __fmul_rn(e2, w6);
+    const float m1_6 = __fmul_rn(x1, y6) - __fmul_rn(y1, x6);
+    const float m0_6 = __fmul_rn(x0, y6) - __fmul_rn(y0, x6);
+    u = -((__fmul_rn(g0, m1_6) - __fmul_rn(g1, m0_6)) + __fmul_rn(g6, m0_1));
+    v = u;
+    const float m3_4 = __fmul_rn(x3, y4) - __fmul_rn(y3, x4);
+    u = ((__fmul_rn(g0, m3_4) - __fmul_rn(g3, m0_4)) + __fmul_rn(g4, m0_3));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    const float x8 = cp[8].x;
+    const float y8 = cp[8].y;
+    const float w8 = cp[8].w;
+    const float g8 = __fmul_rn(e2, w8);
+    const float m2_8 = __fmul_rn(x2, y8) - __fmul_rn(y2, x8);
+    const float m1_8 = __fmul_rn(x1, y8) - __fmul_rn(y1, x8);
+    u = -((__fmul_rn(g1, m2_8) - __fmul_rn(g2, m1_8)) + __fmul_rn(g8, m1_2));
+    v = u;
+    const float m4_5 = __fmul_rn(x4, y5) - __fmul_rn(y4, x5);
+    u = ((__fmul_rn(g2, m4_5) - __fmul_rn(g4, m2_5)) + __fmul_rn(g5, m2_4));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    const float m2_6 = __fmul_rn(x2, y6) - __fmul_rn(y2, x6);
+    u = -((__fmul_rn(g0, m2_6) - __fmul_rn(g2, m0_6)) + __fmul_rn(g6, m0_2));
+    v = u;
+    const float x7 = cp[7].x;
+    const float y7 = cp[7].y;
+    const float w7 = cp[7].w;
+    const float g7 = __fmul_rn(e2, w7);
+    const float m1_7 = __fmul_rn(x1, y7) - __fmul_rn(y1, x7);
+    const float m0_7 = __fmul_rn(x0, y7) - __fmul_rn(y0, x7);
+    u = -((__fmul_rn(g0, m1_7) - __fmul_rn(g1, m0_7)) + __fmul_rn(g7, m0_1));
+    const float m3_5 = __fmul_rn(x3, y5) - __fmul_rn(y3, x5);
+    u += ((__fmul_rn(g0, m3_5) - __fmul_rn(g3, m0_5)) + __fmul_rn(g5, m0_3));
+    v += (u + u);
+    u = ((__fmul_rn(g1, m3_4) - __fmul_rn(g3, m1_4)) + __fmul_rn(g4, m1_3));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    const float m3_7 = __fmul_rn(x3, y7) - __fmul_rn(y3, x7);
+    u = ((__fmul_rn(g0, m3_7) - __fmul_rn(g3, m0_7)) + __fmul_rn(g7, m0_3));
+    const float m3_6 = __fmul_rn(x3, y6) - __fmul_rn(y3, x6);
+    u += ((__fmul_rn(g1, m3_6) - __fmul_rn(g3, m1_6)) + __fmul_rn(g6, m1_3));
+    v = u;
+    const float m4_6 = __fmul_rn(x4, y6) - __fmul_rn(y4, x6);
+    u = -((__fmul_rn(g0, m4_6) - __fmul_rn(g4, m0_6)) + __fmul_rn(g6, m0_4));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 10 */
+    const float m3_8 = __fmul_rn(x3, y8) - __fmul_rn(y3, x8);
+    const float m4_7 = __fmul_rn(x4, y7) - __fmul_rn(y4, x7);
+    const float m5_6 = __fmul_rn(x5, y6) - __fmul_rn(y5, x6);
+    u = m3_8;
+    u = __fmaf_rn(2.0f, -m4_7 - m5_6, u);
+    v = __fmul_rn(g0, u);
+    u = (-m4_6);
+    u += u;
+    u = __fmaf_rn(4.0f, m3_7, u);
+    v = __fmaf_rn(g1, u, v);
+    u = m3_6;
+    v = __fmaf_rn(g2, u, v);
+    const float m0_8 = __fmul_rn(x0, y8) - __fmul_rn(y0, x8);
+    u = -m2_6 - m0_8;
+    u = __fmaf_rn(4.0f, -m1_7, u);
+    v = __fmaf_rn(g3, u, v);
+    u = (m1_6 + m0_7);
+    u += u;
+    v = __fmaf_rn(g4, u, v);
+    u = (m0_6);
+    u += u;
+    v = __fmaf_rn(g5, u, v);
+    u = m2_3;
+    u = __fmaf_rn(2.0f, -m1_4 - m0_5, u);
+    v = __fmaf_rn(g6, u, v);
+    u = (-m0_4);
+    u += u;
+    u = __fmaf_rn(4.0f, m1_3, u);
+    v = __fmaf_rn(g7, u, v);
+    u = m0_3;
+    v = __fmaf_rn(g8, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 11 */
+    const float m5_7 = __fmul_rn(x5, y7) - __fmul_rn(y5, x7);
+    u = -m5_7;
+    v = __fmul_rn(g0, u);
+    u = m3_8 - m5_6;
+    v = __fmaf_rn(g1, u, v);
+    u = m3_7;
+    v = __fmaf_rn(g2, u, v);
+    const float m2_7 = __fmul_rn(x2, y7) - __fmul_rn(y2, x7);
+    u = -m1_8 - m2_7;
+    v = __fmaf_rn(g3, u, v);
+    u = m1_6 + m0_7;
+    v = __fmaf_rn(g5, u, v);
+    u = -m1_5;
+    v = __fmaf_rn(g6, u, v);
+    u = m2_3 - m0_5;
+    v = __fmaf_rn(g7, u, v);
+    u = m1_3;
+    v = __fmaf_rn(g8, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 12 */
+    const float m5_8 = __fmul_rn(x5, y8) - __fmul_rn(y5, x8);
+    u = -((__fmul_rn(g1, m5_8) - __fmul_rn(g5, m1_8)) + __fmul_rn(g8, m1_5));
+    u -= ((__fmul_rn(g2, m5_7) - __fmul_rn(g5, m2_7)) + __fmul_rn(g7, m2_5));
+    v = u;
+    const float m4_8 = __fmul_rn(x4, y8) - __fmul_rn(y4, x8);
+    u = ((__fmul_rn(g2, m4_8) - __fmul_rn(g4, m2_8)) + __fmul_rn(g8, m2_4));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 14 */
+    const float m6_7 = __fmul_rn(x6, y7) - __fmul_rn(y6, x7);
+    u = ((__fmul_rn(g0, m6_7) - __fmul_rn(g6, m0_7)) + __fmul_rn(g7, m0_6));
+    v = u;
+    u = -((__fmul_rn(g3, m4_6) - __fmul_rn(g4, m3_6)) + __fmul_rn(g6, m3_4));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 15 */
+    u = -((__fmul_rn(g0, m2_8) - __fmul_rn(g2, m0_8)) + __fmul_rn(g8, m0_2));
+    v = u;
+    u = -((__fmul_rn(g1, m2_7) - __fmul_rn(g2, m1_7)) + __fmul_rn(g7, m1_2));
+    u += ((__fmul_rn(g2, m3_5) - __fmul_rn(g3, m2_5)) + __fmul_rn(g5, m2_3));
+    v += (u + u);
+    u = ((__fmul_rn(g1, m4_5) - __fmul_rn(g4, m1_5)) + __fmul_rn(g5, m1_4));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    const float m6_8 = __fmul_rn(x6, y8) - __fmul_rn(y6, x8);
+    u = ((__fmul_rn(g0, m6_8) - __fmul_rn(g6, m0_8)) + __fmul_rn(g8, m0_6));
+    v = u;
+    u = ((__fmul_rn(g1, m6_7) - __fmul_rn(g6, m1_7)) + __fmul_rn(g7, m1_6));
+    u -= ((__fmul_rn(g3, m5_6) - __fmul_rn(g5, m3_6)) + __fmul_rn(g6, m3_5));
+    v += (u + u);
+    u = -((__fmul_rn(g3, m4_7) - __fmul_rn(g4, m3_7)) + __fmul_rn(g7, m3_4));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 16 */
+    u = ((__fmul_rn(g2, m6_8) - __fmul_rn(g6, m2_8)) + __fmul_rn(g8, m2_6));
+    v = u;
+    const float m7_8 = __fmul_rn(x7, y8) - __fmul_rn(y7, x8);
+    u = ((__fmul_rn(g1, m7_8) - __fmul_rn(g7, m1_8)) + __fmul_rn(g8, m1_7));
+    u -= ((__fmul_rn(g3, m5_8) - __fmul_rn(g5, m3_8)) + __fmul_rn(g8, m3_5));
+    v += (u + u);
+    u = -((__fmul_rn(g4, m5_7) - __fmul_rn(g5, m4_7)) + __fmul_rn(g7, m4_5));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 18 */
+    u = ((__fmul_rn(g2, m7_8) - __fmul_rn(g7, m2_8)) + __fmul_rn(g8, m2_7));
+    v = u;
+    u = -((__fmul_rn(g4, m5_8) - __fmul_rn(g5, m4_8)) + __fmul_rn(g8, m4_5));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 19 */
+    u = ((__fmul_rn(g3, m6_7) - __fmul_rn(g6, m3_7)) + __fmul_rn(g7, m3_6));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 20 */
+    u = ((__fmul_rn(g3, m6_8) - __fmul_rn(g6, m3_8)) + __fmul_rn(g8, m3_6));
+    v = u;
+    u = ((__fmul_rn(g4, m6_7) - __fmul_rn(g6, m4_7)) + __fmul_rn(g7, m4_6));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 21 */
+    u = ((__fmul_rn(g3, m7_8) - __fmul_rn(g7, m3_8)) + __fmul_rn(g8, m3_7));
+    u += ((__fmul_rn(g5, m6_7) - __fmul_rn(g6, m5_7)) + __fmul_rn(g7, m5_6));
+    v = u;
+    u = ((__fmul_rn(g4, m6_8) - __fmul_rn(g6, m4_8)) + __fmul_rn(g8, m4_6));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 22 */
+    u = ((__fmul_rn(g5, m6_8) - __fmul_rn(g6, m5_8)) + __fmul_rn(g8, m5_6));
+    v = u;
+    u = ((__fmul_rn(g4, m7_8) - __fmul_rn(g7, m4_8)) + __fmul_rn(g8, m4_7));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 23 */
+    u = ((__fmul_rn(g5, m7_8) - __fmul_rn(g7, m5_8)) + __fmul_rn(g8, m5_7));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 24 */
+    u = m7_8;
+    v = __fmul_rn(g0, u);
+    u = (m6_8);
+    u += u;
+    v = __fmaf_rn(g1, u, v);
+    u = m6_7;
+    v = __fmaf_rn(g2, u, v);
+    u = (-m4_8);
+    u += u;
+    u = __fmaf_rn(4.0f, -m5_7, u);
+    v = __fmaf_rn(g3, u, v);
+    u = (m3_8 - m5_6);
+    u += u;
+    v = __fmaf_rn(g4, u, v);
+    u = (m4_6);
+    u += u;
+    u = __fmaf_rn(4.0f, m3_7, u);
+    v = __fmaf_rn(g5, u, v);
+    u = -m2_7;
+    u = __fmaf_rn(2.0f, -m1_8 - m4_5, u);
+    v = __fmaf_rn(g6, u, v);
+    u = m2_6 - m0_8;
+    u = __fmaf_rn(4.0f, -m3_5, u);
+    v = __fmaf_rn(g7, u, v);
+    u = m0_7;
+    u = __fmaf_rn(2.0f, m1_6 - m3_4, u);
+    v = __fmaf_rn(g8, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 17 */
+    u = -m1_8;
+    u = __fmaf_rn(2.0f, m4_5 - m2_7, u);
+    v = __fmul_rn(g0, u);
+    u = m0_8 - m2_6;
+    u = __fmaf_rn(4.0f, m3_5, u);
+    v = __fmaf_rn(g1, u, v);
+    u = m1_6;
+    u = __fmaf_rn(2.0f, m3_4 + m0_7, u);
+    v = __fmaf_rn(g2, u, v);
+    u = (-m2_4);
+    u += u;
+    u = __fmaf_rn(4.0f, -m1_5, u);
+    v = __fmaf_rn(g3, u, v);
+    u = (m2_3 - m0_5);
+    u += u;
+    v = __fmaf_rn(g4, u, v);
+    u = (m0_4);
+    u += u;
+    u = __fmaf_rn(4.0f, m1_3, u);
+    v = __fmaf_rn(g5, u, v);
+    u = -m1_2;
+    v = __fmaf_rn(g6, u, v);
+    u = (-m0_2);
+    u += u;
+    v = __fmaf_rn(g7, u, v);
+    u = -m0_1;
+    v = __fmaf_rn(g8, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    u = -m5_8;
+    v = __fmul_rn(g0, u);
+    u = (m4_8);
+    u += u;
+    u = __fmaf_rn(4.0f, -m5_7, u);
+    v = __fmaf_rn(g1, u, v);
+    u = -m5_6;
+    u = __fmaf_rn(2.0f, m3_8 + m4_7, u);
+    v = __fmaf_rn(g2, u, v);
+    u = (-m2_8);
+    u += u;
+    v = __fmaf_rn(g3, u, v);
+    u = (-m1_8 - m2_7);
+    u += u;
+    v = __fmaf_rn(g4, u, v);
+    u = m2_6 + m0_8;
+    u = __fmaf_rn(4.0f, m1_7, u);
+    v = __fmaf_rn(g5, u, v);
+    u = -m2_5;
+    v = __fmaf_rn(g6, u, v);
+    u = (m2_4);
+    u += u;
+    u = __fmaf_rn(4.0f, -m1_5, u);
+    v = __fmaf_rn(g7, u, v);
+    u = -m0_5;
+    u = __fmaf_rn(2.0f, m2_3 + m1_4, u);
+    v = __fmaf_rn(g8, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 13 */
+    return lt ? 1u : gt ? 0u : 2u;
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-static __device__ unsigned ptp_2x2_flags(float d)
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+static __device__ inline void ptp_2x2_values(const float4 cp[9], float4 eye, float d[25])
 {
-    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);
+    float e2 = eye.z;
+    float u, v;
+    const float x1 = cp[1].x;
+    const float y1 = cp[1].y;
+    const float w1 = cp[1].w;
+    const float g1 = __fmul_rn(e2, w1);
+    const float x3 = cp[3].x;
+    const float y3 = cp[3].y;
+    const float w3 = cp[3].w;
+    const float g3 = __fmul_rn(e2, w3);
+    const float m1_3 = __fmul_rn(x1, y3) - __fmul_rn(y1, x3);
+    const float x0 = cp[0].x;
+    const float y0 = cp[0].y;
+    const float w0 = cp[0].w;
+    const float g0 = __fmul_rn(e2, w0);
+    const float m0_3 = __fmul_rn(x0, y3) - __fmul_rn(y0, x3);
+    const float m0_1 = __fmul_rn(x0, y1) - __fmul_rn(y0, x1);
+    u = -((__fmul_rn(g0, m1_3) - __fmul_rn(g1, m0_3)) + __fmul_rn(g3, m0_1));
+    v = u;
+    d[0] = __fmul_rn(v, 4.0f);
+    const float x2 = cp[2].x;
+    const float y2 = cp[2].y;
+    const float w2 = cp[2].w;
+    const float g2 = __fmul_rn(e2, w2);
+    const float x5 = cp[5].x;
+    const float y5 = cp[5].y;
+    const float w5 = cp[5].w;
+    const float g5 = __fmul_rn(e2, w5);
+    const float m2_5 = __fmul_rn(x2, y5) - __fmul_rn(y2, x5);
+    const float m1_5 = __fmul_rn(x1, y5) - __fmul_rn(y1, x5);
+    const float m1_2 = __fmul_rn(x1, y2) - __fmul_rn(y1, x2);
+    u = -((__fmul_rn(g1, m2_5) - __fmul_rn(g2, m1_5)) + __fmul_rn(g5, m1_2));
+    v = u;
+    d[4] = __fmul_rn(v, 4.0f);
+    const float m2_3 = __fmul_rn(x2, y3) - __fmul_rn(y2, x3);
+    const float m0_2 = __fmul_rn(x0, y2) - __fmul_rn(y0, x2);
+    u = -((__fmul_rn(g0, m2_3) - __fmul_rn(g2, m0_3)) + __fmul_rn(g3, m0_2));
+    v = u;
+    const float x4 = cp[4].x;
+    const float y4 = cp[4].y;
+    const float w4 = cp[4].w;
+    const float g4 = __fmul_rn(e2, w4);
+    const float m1_4 = __fmul_rn(x1, y4) - __fmul_rn(y1, x4);
+    const float m0_4 = __fmul_rn(x0, y4) - __fmul_rn(y0, x4);
+    u = -((__fmul_rn(g0, m1_4) - __fmul_rn(g1, m0_4)) + __fmul_rn(g4, m0_1));
+    v += (u + u);
+    d[1] = v;
+    const float m0_5 = __fmul_rn(x0, y5) - __fmul_rn(y0, x5);
+    u = -((__fmul_rn(g0, m1_5) - __fmul_rn(g1, m0_5)) + __fmul_rn(g5, m0_1));
+    u -= ((__fmul_rn(g1, m2_3) - __fmul_rn(g2, m1_3)) + __fmul_rn(g3, m1_2));
+    v = u;
+    const float m2_4 = __fmul_rn(x2, y4) - __fmul_rn(y2, x4);
+    u = -((__fmul_rn(g0, m2_4) - __fmul_rn(g2, m0_4)) + __fmul_rn(g4, m0_2));
+    v += (u + u);
+    d[2] = __fmul_rn(v, 0.666666687f);
+    u = -((__fmul_rn(g0, m2_5) - __fmul_rn(g2, m0_5)) + __fmul_rn(g5, m0_2));
+    v = u;
+    u = -((__fmul_rn(g1, m2_4) - __fmul_rn(g2, m1_4)) + __fmul_rn(g4, m1_2));
+    v += (u + u);
+    d[3] = v;
+    const float x6 = cp[6].x;
+    const float y6 = cp[6].y;
+    const float w6 = cp[6].w;
+    const float g6 = __fmul_rn(e2, w6);
+    const float m1_6 = __fmul_rn(x1, y6) - __fmul_rn(y1, x6);
+    const float m0_6 = __fmul_rn(x0, y6) - __fmul_rn(y0, x6);
+    u = -((__fmul_rn(g0, m1_6) - __fmul_rn(g1, m0_6)) + __fmul_rn(g6, m0_1));
+    v = u;
+    const float m3_4 = __fmul_rn(x3, y4) - __fmul_rn(y3, x4);
+    u = ((__fmul_rn(g0, m3_4) - __fmul_rn(g3, m0_4)) + __fmul_rn(g4, m0_3));
+    v += (u + u);
+    d[5] = v;
+    const float x8 = cp[8].x;
+    const float y8 = cp[8].y;
+    const float w8 = cp[8].w;
+    const float g8 = __fmul_rn(e2, w8);
+    const float m2_8 = __fmul_rn(x2, y8) - __fmul_rn(y2, x8);
+    const float m1_8 = __fmul_rn(x1, y8) - __fmul_rn(y1, x8);
+    u = -((__fmul_rn(g1, m2_8) - __fmul_rn(g2, m1_8)) + __fmul_rn(g8, m1_2));
+    v = u;
+    const float m4_5 = __fmul_rn(x4, y5) - __fmul_rn(y4, x5);
+    u = ((__fmul_rn(g2, m4_5) - __fmul_rn(g4, m2_5)) + __fmul_rn(g5, m2_4));
+    v += (u + u);
+    d[9] = v;
+    const float m2_6 = __fmul_rn(x2, y6) - __fmul_rn(y2, x6);
+    u = -((__fmul_rn(g0, m2_6) - __fmul_rn(g2, m0_6)) + __fmul_rn(g6, m0_2));
+    v = u;
+    const float x7 = cp[7].x;
+    const float y7 = cp[7].y;
+    const float w7 = cp[7].w;
+    const float g7 = __fmul_rn(e2, w7);
+    const float m1_7 = __fmul_rn(x1, y7) - __fmul_rn(y1, x7);
+    const float m0_7 = __fmul_rn(x0, y7) - __fmul_rn(y0, x7);
+    u = -((__fmul_rn(g0, m1_7) - __fmul_rn(g1, m0_7)) + __fmul_rn(g7, m0_1));
+    const float m3_5 = __fmul_rn(x3, y5) - __fmul_rn(y3, x5);
+    u += ((__fmul_rn(g0, m3_5) - __fmul_rn(g3, m0_5)) + __fmul_rn(g5, m0_3));
+    v += (u + u);
+    u = ((__fmul_rn(g1, m3_4) - __fmul_rn(g3, m1_4)) + __fmul_rn(g4, m1_3));
+    v += ((u + u) + (u + u));
+    d[6] = __fmul_rn(v, 0.25f);
+    const float m3_7 = __fmul_rn(x3, y7) - __fmul_rn(y3, x7);
+    u = ((__fmul_rn(g0, m3_7) - __fmul_rn(g3, m0_7)) + __fmul_rn(g7, m0_3));
+    const float m3_6 = __fmul_rn(x3, y6) - __fmul_rn(y3, x6);
+    u += ((__fmul_rn(g1, m3_6) - __fmul_rn(g3, m1_6)) + __fmul_rn(g6, m1_3));
+    v = u;
+    const float m4_6 = __fmul_rn(x4, y6) - __fmul_rn(y4, x6);
+    u = -((__fmul_rn(g0, m4_6) - __fmul_rn(g4, m0_6)) + __fmul_rn(g6, m0_4));
+    v += (u + u);
+    d[10] = __fmul_rn(v, 0.666666687f);
+    const float m3_8 = __fmul_rn(x3, y8) - __fmul_rn(y3, x8);
+    const float m4_7 = __fmul_rn(x4, y7) - __fmul_rn(y4, x7);
+    const float m5_6 = __fmul_rn(x5, y6) - __fmul_rn(y5, x6);
+    u = m3_8;
+    u = __fmaf_rn(2.0f, -m4_7 - m5_6, u);
+    v = __fmul_rn(g0, u);
+    u = (-m4_6);
+    u += u;
+    u = __fmaf_rn(4.0f, m3_7, u);
+    v = __fmaf_rn(g1, u, v);
+    u = m3_6;
+    v = __fmaf_rn(g2, u, v);
+    const float m0_8 = __fmul_rn(x0, y8) - __fmul_rn(y0, x8);
+    u = -m2_6 - m0_8;
+    u = __fmaf_rn(4.0f, -m1_7, u);
+    v = __fmaf_rn(g3, u, v);
+    u = (m1_6 + m0_7);
+    u += u;
+    v = __fmaf_rn(g4, u, v);
+    u = (m0_6);
+    u += u;
+    v = __fmaf_rn(g5, u, v);
+    u = m2_3;
+    u = __fmaf_rn(2.0f, -m1_4 - m0_5, u);
+    v = __fmaf_rn(g6, u, v);
+    u = (-m0_4);
+    u += u;
+    u = __fmaf_rn(4.0f, m1_3, u);
+    v = __fmaf_rn(g7, u, v);
+    u = m0_3;
+    v = __fmaf_rn(g8, u, v);
+    d[11] = __fmul_rn(v, 0.166666672f);
+    const float m5_7 = __fmul_rn(x5, y7) - __fmul_rn(y5, x7);
+    u = -m5_7;
+    v = __fmul_rn(g0, u);
+    u = m3_8 - m5_6;
+    v = __fmaf_rn(g1, u, v);
+    u = m3_7;
+    v = __fmaf_rn(g2, u, v);
+    const float m2_7 = __fmul_rn(x2, y7) - __fmul_rn(y2, x7);
+    u = -m1_8 - m2_7;
+    v = __fmaf_rn(g3, u, v);
+    u = m1_6 + m0_7;
+    v = __fmaf_rn(g5, u, v);
+    u = -m1_5;
+    v = __fmaf_rn(g6, u, v);
+    u = m2_3 - m0_5;
+    v = __fmaf_rn(g7, u, v);
+    u = m1_3;
+    v = __fmaf_rn(g8, u, v);
+    d[12] = __fmul_rn(v, 0.333333343f);
+    const float m5_8 = __fmul_rn(x5, y8) - __fmul_rn(y5, x8);
+    u = -((__fmul_rn(g1, m5_8) - __fmul_rn(g5, m1_8)) + __fmul_rn(g8, m1_5));
+    u -= ((__fmul_rn(g2, m5_7) - __fmul_rn(g5, m2_7)) + __fmul_rn(g7, m2_5));
+    v = u;
+    const float m4_8 = __fmul_rn(x4, y8) - __fmul_rn(y4, x8);
+    u = ((__fmul_rn(g2, m4_8) - __fmul_rn(g4, m2_8)) + __fmul_rn(g8, m2_4));
+    v += (u + u);
+    d[14] = __fmul_rn(v, 0.666666687f);
+    const float m6_7 = __fmul_rn(x6, y7) - __fmul_rn(y6, x7);
+    u = ((__fmul_rn(g0, m6_7) - __fmul_rn(g6, m0_7)) + __fmul_rn(g7, m0_6));
+    v = u;
+    u = -((__fmul_rn(g3, m4_6) - __fmul_rn(g4, m3_6)) + __fmul_rn(g6, m3_4));
+    v += (u + u);
+    d[15] = v;
+    u = -((__fmul_rn(g0, m2_8) - __fmul_rn(g2, m0_8)) + __fmul_rn(g8, m0_2));
+    v = u;
+    u = -((__fmul_rn(g1, m2_7) - __fmul_rn(g2, m1_7)) + __fmul_rn(g7, m1_2));
+    u += ((__fmul_rn(g2, m3_5) - __fmul_rn(g3, m2_5)) + __fmul_rn(g5, m2_3));
+    v += (u + u);
+    u = ((__fmul_rn(g1, m4_5) - __fmul_rn(g4, m1_5)) + __fmul_rn(g5, m1_4));
+    v += ((u + u) + (u + u));
+    d[8] = __fmul_rn(v, 0.25f);
+    const float m6_8 = __fmul_rn(x6, y8) - __fmul_rn(y6, x8);
+    u = ((__fmul_rn(g0, m6_8) - __fmul_rn(g6, m0_8)) + __fmul_rn(g8, m0_6));
+    v = u;
+    u = ((__fmul_rn(g1, m6_7) - __fmul_rn(g6, m1_7)) + __fmul_rn(g7, m1_6));
+    u -= ((__fmul_rn(g3, m5_6) - __fmul_rn(g5, m3_6)) + __fmul_rn(g6, m3_5));
+    v += (u + u);
+    u = -((__fmul_rn(g3, m4_7) - __fmul_rn(g4, m3_7)) + __fmul_rn(g7, m3_4));
+    v += ((u + u) + (u + u));
+    d[16] = __fmul_rn(v, 0.25f);
+    u = ((__fmul_rn(g2, m6_8) - __fmul_rn(g6, m2_8)) + __fmul_rn(g8, m2_6));
+    v = u;
+    const float m7_8 = __fmul_rn(x7, y8) - __fmul_rn(y7, x8);
+    u = ((__fmul_rn(g1, m7_8) - __fmul_rn(g7, m1_8)) + __fmul_rn(g8, m1_7));
+    u -= ((__fmul_rn(g3, m5_8) - __fmul_rn(g5, m3_8)) + __fmul_rn(g8, m3_5));
+    v += (u + u);
+    u = -((__fmul_rn(g4, m5_7) - __fmul_rn(g5, m4_7)) + __fmul_rn(g7, m4_5));
+    v += ((u + u) + (u + u));
+    d[18] = __fmul_rn(v, 0.25f);
+    u = ((__fmul_rn(g2, m7_8) - __fmul_rn(g7, m2_8)) + __fmul_rn(g8, m2_7));
+    v = u;
+    u = -((__fmul_rn(g4, m5_8) - __fmul_rn(g5, m4_8)) + __fmul_rn(g8, m4_5));
+    v += (u + u);
+    d[19] = v;
+    u = ((__fmul_rn(g3, m6_7) - __fmul_rn(g6, m3_7)) + __fmul_rn(g7, m3_6));
+    v = u;
+    d[20] = __fmul_rn(v, 4.0f);
+    u = ((__fmul_rn(g3, m6_8) - __fmul_rn(g6, m3_8)) + __fmul_rn(g8, m3_6));
+    v = u;
+    u = ((__fmul_rn(g4, m6_7) - __fmul_rn(g6, m4_7)) + __fmul_rn(g7, m4_6));
+    v += (u + u);
+    d[21] = v;
+    u = ((__fmul_rn(g3, m7_8) - __fmul_rn(g7, m3_8)) + __fmul_rn(g8, m3_7));
+    u += ((__fmul_rn(g5, m6_7) - __fmul_rn(g6, m5_7)) + __fmul_rn(g7, m5_6));
+    v = u;
+    u = ((__fmul_rn(g4, m6_8) - __fmul_rn(g6, m4_8)) + __fmul_rn(g8, m4_6));
+    v += (u + u);
+    d[22] = __fmul_rn(v, 0.666666687f);
+    u = ((__fmul_rn(g5, m6_8) - __fmul_rn(g6, m5_8)) + __fmul_rn(g8, m5_6));
+    v = u;
+    u = ((__fmul_rn(g4, m7_8) - __fmul_rn(g7, m4_8)) + __fmul_rn(g8, m4_7));
+    v += (u + u);
+    d[23] = v;
+    u = ((__fmul_rn(g5, m7_8) - __fmul_rn(g7, m5_8)) + __fmul_rn(g8, m5_7));
+    v = u;
+    d[24] = __fmul_rn(v, 4.0f);
+    u = m7_8;
+    v = __fmul_rn(g0, u);
+    u = (m6_8);
+    u += u;
+    v = __fmaf_rn(g1, u, v);
+    u = m6_7;
+    v = __fmaf_rn(g2, u, v);
+    u = (-m4_8);
+    u += u;
+    u = __fmaf_rn(4.0f, -m5_7, u);
+    v = __fmaf_rn(g3, u, v);
+    u = (m3_8 - m5_6);
+    u += u;
+    v = __fmaf_rn(g4, u, v);
+    u = (m4_6);
+    u += u;
+    u = __fmaf_rn(4.0f, m3_7, u);
+    v = __fmaf_rn(g5, u, v);
+    u = -m2_7;
+    u = __fmaf_rn(2.0f, -m1_8 - m4_5, u);
+    v = __fmaf_rn(g6, u, v);
+    u = m2_6 - m0_8;
+    u = __fmaf_rn(4.0f, -m3_5, u);
+    v = __fmaf_rn(g7, u, v);
+    u = m0_7;
+    u = __fmaf_rn(2.0f, m1_6 - m3_4, u);
+    v = __fmaf_rn(g8, u, v);
+    d[17] = __fmul_rn(v, 0.166666672f);
+    u = -m1_8;
+    u = __fmaf_rn(2.0f, m4_5 - m2_7, u);
+    v = __fmul_rn(g0, u);
+    u = m0_8 - m2_6;
+    u = __fmaf_rn(4.0f, m3_5, u);
+    v = __fmaf_rn(g1, u, v);
+    u = m1_6;
+    u = __fmaf_rn(2.0f, m3_4 + m0_7, u);
+    v = __fmaf_rn(g2, u, v);
+    u = (-m2_4);
+    u += u;
+    u = __fmaf_rn(4.0f, -m1_5, u);
+    v = __fmaf_rn(g3, u, v);
+    u = (m2_3 - m0_5);
+    u += u;
+    v = __fmaf_rn(g4, u, v);
+    u = (m0_4);
+    u += u;
+    u = __fmaf_rn(4.0f, m1_3, u);
+    v = __fmaf_rn(g5, u, v);
+    u = -m1_2;
+    v = __fmaf_rn(g6, u, v);
+    u = (-m0_2);
+    u += u;
+    v = __fmaf_rn(g7, u, v);
+    u = -m0_1;
+    v = __fmaf_rn(g8, u, v);
+    d[7] = __fmul_rn(v, 0.166666672f);
+    u = -m5_8;
+    v = __fmul_rn(g0, u);
+    u = (m4_8);
+    u += u;
+    u = __fmaf_rn(4.0f, -m5_7, u);
+    v = __fmaf_rn(g1, u, v);
+    u = -m5_6;
+    u = __fmaf_rn(2.0f, m3_8 + m4_7, u);
+    v = __fmaf_rn(g2, u, v);
+    u = (-m2_8);
+    u += u;
+    v = __fmaf_rn(g3, u, v);
+    u = (-m1_8 - m2_7);
+    u += u;
+    v = __fmaf_rn(g4, u, v);
+    u = m2_6 + m0_8;
+    u = __fmaf_rn(4.0f, m1_7, u);
+    v = __fmaf_rn(g5, u, v);
+    u = -m2_5;
+    v = __fmaf_rn(g6, u, v);
+    u = (m2_4);
+    u += u;
+    u = __fmaf_rn(4.0f, -m1_5, u);
+    v = __fmaf_rn(g7, u, v);
+    u = -m0_5;
+    u = __fmaf_rn(2.0f, m2_3 + m1_4, u);
+    v = __fmaf_rn(g8, u, v);
+    d[13] = __fmul_rn(v, 0.166666672f);
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-static __device__ unsigned ptp_2x2_class_of(unsigned f)
-{
-    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;
-}
-
-extern "C" __global__ void __launch_bounds__(128)
+extern "C" __global__ void __launch_bounds__(64)
 ptp_2x2_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, unsigned patch_count)
 {
-    __shared__ float4 pts[PTP_2X2_Q * PTP_2X2_K];
-    __shared__ float acc[PTP_2X2_Q * PTP_2X2_L];
-    __shared__ unsigned flags[PTP_2X2_Q * PTP_2X2_P];
-    unsigned lid = threadIdx.x, q = lid / PTP_2X2_P, t = lid % PTP_2X2_P, i, pj, kl;
-    unsigned pid = (blockIdx.y * gridDim.x + blockIdx.x) * PTP_2X2_Q + q;
-    unsigned f = 0u;
-    bool live = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_2X2_K; i += PTP_2X2_P)
-        if (live)
-            pts[q * PTP_2X2_K + i] = cp[pid * PTP_2X2_K + i];
-    __syncthreads();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_2x2_own_start[t]; i < ptp_2x2_own_start[t + 1u]; i++)
-        acc[q * PTP_2X2_L + ptp_2x2_own_plane[i]] = 0.0f;
-    pj = ptp_2x2_pj0[t];
-    kl = ptp_2x2_kl0[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w0[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-    pj = ptp_2x2_pj1[t];
-    kl = ptp_2x2_kl1[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w1[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-    pj = ptp_2x2_pj2[t];
-    kl = ptp_2x2_kl2[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w2[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-    pj = ptp_2x2_pj3[t];
-    kl = ptp_2x2_kl3[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w3[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-    pj = ptp_2x2_pj4[t];
-    kl = ptp_2x2_kl4[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w4[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-    pj = ptp_2x2_pj5[t];
-    kl = ptp_2x2_kl5[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w5[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-    pj = ptp_2x2_pj6[t];
-    kl = ptp_2x2_kl6[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w6[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-    pj = ptp_2x2_pj7[t];
-    kl = ptp_2x2_kl7[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w7[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-    pj = ptp_2x2_pj8[t];
-    kl = ptp_2x2_kl8[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w8[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-    pj = ptp_2x2_pj9[t];
-    kl = ptp_2x2_kl9[t];
-    acc[q * PTP_2X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_2x2_w9[t],
-        ptp_2x2_cross4z(pts[q * PTP_2X2_K + (pj >> 16)], pts[q * PTP_2X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_2X2_K + (kl >> 16)]));
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_2x2_own_start[t]; i < ptp_2x2_own_start[t + 1u]; i++) {
-        unsigned plane = ptp_2x2_own_plane[i];
-        float d = __fmul_rn(eye.z, acc[q * PTP_2X2_L + plane]);
-        f |= ptp_2x2_flags(d);
-    }
-    flags[q * PTP_2X2_P + t] = f;
-    __syncthreads();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_2X2_P; i++)
-            f |= flags[q * PTP_2X2_P + i];
-        cls[pid] = ptp_2x2_class_of(f);
-    }
+    unsigned pid = (blockIdx.y * gridDim.x + blockIdx.x) * PTP_2X2_Q + threadIdx.x;
+    float4 p[PTP_2X2_K];
+    if (pid >= patch_count)
+        return;
+    p[0] = cp[pid * PTP_2X2_K + 0u];
+    p[1] = cp[pid * PTP_2X2_K + 1u];
+    p[2] = cp[pid * PTP_2X2_K + 2u];
+    p[3] = cp[pid * PTP_2X2_K + 3u];
+    p[4] = cp[pid * PTP_2X2_K + 4u];
+    p[5] = cp[pid * PTP_2X2_K + 5u];
+    p[6] = cp[pid * PTP_2X2_K + 6u];
+    p[7] = cp[pid * PTP_2X2_K + 7u];
+    p[8] = cp[pid * PTP_2X2_K + 8u];
+    cls[pid] = ptp_2x2_classify_patch(p, eye);
 }

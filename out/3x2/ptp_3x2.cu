@@ -17,327 +17,1576 @@
  * Kernel <prefix>classify(cp, cls, planes, eye, patch_count), extern "C": planes receives
  * d[p*L + P] when not NULL. Launch P*Q threads per block and ceil(patch_count / Q) blocks,
  * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.
- * Schedule: 16 threads per patch, 8 patches per workgroup (128 threads), 13 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
-#define PTP_3X2_P 16u /* threads per patch */
-#define PTP_3X2_Q 8u /* patches per workgroup */
+#define PTP_3X2_P 1u /* threads per patch */
+#define PTP_3X2_Q 64u /* patches per workgroup */
 #define PTP_3X2_K 12u /* control points per patch */
 #define PTP_3X2_L 40u /* control planes per patch */
-/* 13 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-__constant__ unsigned ptp_3x2_own_start[17] = {
-    0u, 2u, 4u, 6u, 8u, 11u, 14u, 16u, 18u, 20u, 22u, 25u, 28u, 31u, 34u, 37u,
-    40u
-};
-__constant__ unsigned ptp_3x2_own_plane[40] = {
-    0u, 17u, 4u, 22u, 2u, 16u, 18u, 37u, 1u, 21u, 35u, 3u, 23u, 39u, 11u, 25u,
-    13u, 29u, 26u, 31u, 28u, 33u, 10u, 12u, 36u, 14u, 27u, 38u, 5u, 6u, 7u, 8u,
-    9u, 32u, 15u, 20u, 30u, 19u, 24u, 34u
-};
-
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-__constant__ unsigned ptp_3x2_pj0[16] = {
-    0x00000u, 0x10004u, 0x00002u, 0x00012u, 0x00001u, 0x00003u, 0x0000bu, 0x0000du,
-    0x0001au, 0x1001cu, 0x0000au, 0x1000eu, 0x00005u, 0x00008u, 0x0000fu, 0x10013u
-};
-__constant__ unsigned ptp_3x2_kl0[16] = {
-    0x30001u, 0x50002u, 0x50001u, 0xb0005u, 0x40001u, 0x50002u, 0xa0001u, 0xb0002u,
-    0xb0009u, 0xb000au, 0x90001u, 0xb0002u, 0x60001u, 0x80002u, 0xa0003u, 0xb0005u
-};
-__constant__ float ptp_3x2_w0[16] = {
-    -6.0f, -6.0f, -1.0f, -0.0857142881f, -3.0f, -1.5f, -0.142857149f, -0.0714285746f,
-    0.0714285746f, 0.142857149f, -0.285714298f, -0.285714298f, -1.71428573f, -0.428571433f, 0.171428576f, -0.342857152f
-};
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-__constant__ unsigned ptp_3x2_pj1[16] = {
-    0x00011u, 0x00016u, 0x00002u, 0x10012u, 0x00001u, 0x10003u, 0x0000bu, 0x0000du,
-    0x1001au, 0x2001cu, 0x0000au, 0x1000eu, 0x00005u, 0x10008u, 0x0000fu, 0x20013u
-};
-__constant__ unsigned ptp_3x2_kl1[16] = {
-    0xb0004u, 0xb0007u, 0x40002u, 0xb0004u, 0x30002u, 0x40002u, 0x90002u, 0x80005u,
-    0xa0009u, 0xb0009u, 0x70003u, 0x80005u, 0x40003u, 0x70002u, 0x90004u, 0xb0004u
-};
-__constant__ float ptp_3x2_w1[16] = {
-    -0.0285714287f, 0.0285714287f, -2.0f, 0.0857142881f, -1.5f, -3.0f, -0.0714285746f, -0.214285716f,
-    0.142857149f, 0.0714285746f, 0.857142866f, -0.857142866f, 2.57142854f, -0.857142866f, -0.514285743f, 0.514285743f
-};
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-__constant__ unsigned ptp_3x2_pj2[16] = {
-    0x00011u, 0x00016u, 0x10002u, 0x10012u, 0x00015u, 0x00017u, 0x0000bu, 0x1000du,
-    0x3001au, 0x3001cu, 0x0000au, 0x2000eu, 0x00006u, 0x10008u, 0x0000fu, 0x20013u
-};
-__constant__ unsigned ptp_3x2_kl2[16] = {
-    0xa0005u, 0xa0008u, 0x30002u, 0xa0005u, 0xb0006u, 0xb0008u, 0x80003u, 0xa0002u,
-    0xb0006u, 0xb0008u, 0x60004u, 0x80004u, 0x70001u, 0x50004u, 0x70006u, 0xa0005u
-};
-__constant__ float ptp_3x2_w2[16] = {
-    -0.142857149f, -0.114285715f, -1.0f, -0.257142872f, 0.0857142881f, -0.042857144f, 0.214285716f, -0.142857149f,
-    0.214285716f, -0.214285716f, -1.71428573f, 1.71428573f, -0.857142866f, 1.28571427f, 1.02857149f, -0.171428576f
-};
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-__constant__ unsigned ptp_3x2_pj3[16] = {
-    0x00011u, 0x10016u, 0x00010u, 0x10012u, 0x00015u, 0x10017u, 0x0000bu, 0x1000du,
-    0x3001au, 0x4001cu, 0x1000au, 0x2000eu, 0x00006u, 0x20008u, 0x1000fu, 0x20013u
-};
-__constant__ unsigned ptp_3x2_kl3[16] = {
-    0x80007u, 0xb0006u, 0xb0003u, 0x80007u, 0xa0007u, 0xb0007u, 0x70004u, 0x80004u,
-    0xa0007u, 0xb0007u, 0x60003u, 0x70005u, 0x60002u, 0x50003u, 0x90003u, 0x80007u
-};
-__constant__ float ptp_3x2_w3[16] = {
-    0.171428576f, 0.142857149f, 0.042857144f, 0.514285743f, -0.0857142881f, 0.171428576f, -0.428571433f, 0.428571433f,
-    -0.428571433f, 0.428571433f, 0.857142866f, -0.857142866f, -0.428571433f, 0.642857134f, 0.342857152f, 1.02857149f
-};
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-__constant__ unsigned ptp_3x2_pj4[16] = {
-    0x10011u, 0x10016u, 0x00010u, 0x20012u, 0x00015u, 0x10017u, 0x0000bu, 0x1000du,
-    0x3001au, 0x4001cu, 0x0000cu, 0x0001bu, 0x00006u, 0x10009u, 0x3000fu, 0x40013u
-};
-__constant__ unsigned ptp_3x2_kl4[16] = {
-    0xb0003u, 0x90008u, 0xa0004u, 0xb0003u, 0x90008u, 0xa0008u, 0x60005u, 0x70005u,
-    0x90008u, 0xa0008u, 0xb0001u, 0xb000au, 0x50003u, 0x80002u, 0x60004u, 0x80005u
-};
-__constant__ float ptp_3x2_w4[16] = {
-    0.114285715f, -0.142857149f, -0.171428576f, 0.128571436f, -0.128571436f, -0.257142872f, -0.428571433f, -0.857142866f,
-    -0.428571433f, -0.857142866f, -0.0476190485f, 0.0476190485f, 0.642857134f, -1.71428573f, -1.54285717f, -1.54285717f
-};
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-__constant__ unsigned ptp_3x2_pj5[16] = {
-    0x10011u, 0x20016u, 0x00010u, 0x20012u, 0x10015u, 0x20017u, 0x1000bu, 0x2000du,
-    0x4001au, 0x5001cu, 0x0000cu, 0x1001bu, 0x10006u, 0x20009u, 0x00014u, 0x10018u
-};
-__constant__ unsigned ptp_3x2_kl5[16] = {
-    0x90005u, 0xa0006u, 0x90005u, 0xa0004u, 0xa0006u, 0xb0006u, 0x70003u, 0x80003u,
-    0xa0006u, 0xb0006u, 0xa0002u, 0xb0009u, 0x40003u, 0x50004u, 0xa0006u, 0xb0008u
-};
-__constant__ float ptp_3x2_w5[16] = {
-    -0.114285715f, 0.114285715f, -0.128571436f, 0.171428576f, 0.257142872f, 0.128571436f, 0.857142866f, 0.428571433f,
-    0.857142866f, 0.428571433f, -0.095238097f, 0.095238097f, 1.28571427f, 2.57142854f, 0.342857152f, -0.171428576f
-};
-
-/* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-__constant__ unsigned ptp_3x2_pj6[16] = {
-    0x10011u, 0x20016u, 0x00010u, 0x20012u, 0x10015u, 0x20017u, 0x1000bu, 0x2000du,
-    0x4001au, 0x5001cu, 0x0000cu, 0x2001bu, 0x00007u, 0x30020u, 0x00014u, 0x20018u
-};
-__constant__ unsigned ptp_3x2_kl6[16] = {
-    0x80006u, 0x90007u, 0x80006u, 0x90005u, 0x90007u, 0xa0007u, 0x60004u, 0x70004u,
-    0x90007u, 0xa0007u, 0x70005u, 0xa0009u, 0x80001u, 0xb000au, 0x90007u, 0xb0007u
-};
-__constant__ float ptp_3x2_w6[16] = {
-    0.342857152f, -0.0285714287f, 0.257142872f, -0.042857144f, -0.171428576f, 0.0857142881f, -0.428571433f, 0.428571433f,
-    -0.428571433f, 0.428571433f, -0.428571433f, 0.0476190485f, -0.285714298f, 0.285714298f, -0.514285743f, 0.514285743f
-};
-
-/* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-__constant__ unsigned ptp_3x2_pj7[16] = {
-    0x20011u, 0x30016u, 0x10010u, 0x20012u, 0x20015u, 0x20017u, 0x2000bu, 0x2000du,
-    0x5001au, 0x5001cu, 0x1000cu, 0x3001bu, 0x00007u, 0x40020u, 0x10014u, 0x20018u
-};
-__constant__ unsigned ptp_3x2_kl7[16] = {
-    0xa0003u, 0xb0004u, 0xa0003u, 0x80006u, 0x90006u, 0x90008u, 0x60003u, 0x60005u,
-    0x90006u, 0x90008u, 0x90002u, 0xa0008u, 0x70002u, 0xb0009u, 0x90006u, 0xa0008u
-};
-__constant__ float ptp_3x2_w7[16] = {
-    0.142857149f, -0.171428576f, 0.257142872f, 0.257142872f, 0.042857144f, -0.0857142881f, 0.214285716f, -0.214285716f,
-    0.214285716f, -0.214285716f, -0.0476190485f, -0.428571433f, -0.571428597f, 0.571428597f, 0.171428576f, -0.342857152f
-};
-
-/* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-__constant__ unsigned ptp_3x2_pj8[16] = {
-    0x20011u, 0x30016u, 0x10010u, 0x30012u, 0x30015u, 0x30017u, 0x00019u, 0x2001du,
-    0x3001fu, 0x40021u, 0x1000cu, 0x4001bu, 0x00007u, 0x50020u, 0x30014u, 0x40018u
-};
-__constant__ unsigned ptp_3x2_kl8[16] = {
-    0x90004u, 0xa0005u, 0x90004u, 0x80005u, 0xa0004u, 0xb0005u, 0xa0009u, 0xb000au,
-    0xb0009u, 0xb000au, 0x80003u, 0xb0006u, 0x50004u, 0xa0009u, 0x90004u, 0xb0005u
-};
-__constant__ float ptp_3x2_w8[16] = {
-    0.0285714287f, -0.342857152f, -0.0857142881f, -0.385714293f, -0.514285743f, -0.257142872f, 0.285714298f, 0.285714298f,
-    0.428571433f, 0.857142866f, 0.428571433f, 0.428571433f, 0.428571433f, 0.285714298f, -1.02857149f, -1.02857149f
-};
-
-/* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-__constant__ unsigned ptp_3x2_pj9[16] = {
-    0x20011u, 0x30016u, 0x10010u, 0x40012u, 0x30015u, 0x40017u, 0x30019u, 0x4001du,
-    0x4001fu, 0x50021u, 0x1000cu, 0x4001bu, 0x10007u, 0x60020u, 0x30014u, 0x50018u
-};
-__constant__ unsigned ptp_3x2_kl9[16] = {
-    0x70006u, 0x80007u, 0x70006u, 0x70005u, 0x90005u, 0xa0005u, 0xa0006u, 0xb0008u,
-    0xa0009u, 0xb0009u, 0x60005u, 0x90008u, 0x60002u, 0xb0007u, 0x70006u, 0x80007u
-};
-__constant__ float ptp_3x2_w9[16] = {
-    0.171428576f, 0.257142872f, 0.514285743f, -0.771428585f, -0.257142872f, -0.514285743f, 0.857142866f, -0.857142866f,
-    0.857142866f, 0.428571433f, -0.428571433f, -0.428571433f, -0.285714298f, -0.428571433f, 1.54285717f, 1.54285717f
-};
-
-/* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-__constant__ unsigned ptp_3x2_pj10[16] = {
-    0x30011u, 0x40016u, 0x20010u, 0x60025u, 0x30015u, 0x40017u, 0x30019u, 0x5001du,
-    0x6001fu, 0x60021u, 0x2000cu, 0x5001bu, 0x10007u, 0x60020u, 0x3001eu, 0x50022u
-};
-__constant__ unsigned ptp_3x2_kl10[16] = {
-    0x80004u, 0x90005u, 0x90003u, 0xb000au, 0x80006u, 0x80007u, 0x90007u, 0xb0007u,
-    0xa0007u, 0xb0008u, 0x70003u, 0xa0006u, 0x50003u, 0xa0008u, 0xa0009u, 0xb000au
-};
-__constant__ float ptp_3x2_w10[16] = {
-    -0.257142872f, -0.171428576f, 0.0857142881f, 1.0f, 0.385714293f, 0.771428585f, -1.71428573f, 1.71428573f,
-    -1.28571427f, -0.642857134f, 0.428571433f, 0.428571433f, 0.857142866f, -0.857142866f, 1.71428573f, 1.71428573f
-};
-
-/* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-__constant__ unsigned ptp_3x2_pj11[16] = {
-    0x30011u, 0x40016u, 0x30010u, 0x70025u, 0x40015u, 0x50017u, 0x40019u, 0x5001du,
-    0x6001fu, 0x70021u, 0x60024u, 0x70026u, 0x20007u, 0x70020u, 0x6001eu, 0x70022u
-};
-__constant__ unsigned ptp_3x2_kl11[16] = {
-    0x70005u, 0x80006u, 0x70004u, 0xb0009u, 0x70006u, 0x80006u, 0x90006u, 0xa0008u,
-    0x90008u, 0xa0008u, 0xb0009u, 0xb000au, 0x40003u, 0x90008u, 0x90007u, 0xb0008u
-};
-__constant__ float ptp_3x2_w11[16] = {
-    -0.514285743f, 0.514285743f, -0.771428585f, 2.0f, 0.771428585f, 0.385714293f, 0.857142866f, -0.857142866f,
-    -0.642857134f, -1.28571427f, 1.5f, 3.0f, 0.428571433f, -0.428571433f, -2.57142854f, -2.57142854f
-};
-
-/* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-__constant__ unsigned ptp_3x2_pj12[16] = {
-    0x40011u, 0x50016u, 0x30010u, 0x80025u, 0x60023u, 0x80027u, 0x0000bu, 0x0000du,
-    0x0001au, 0x0001cu, 0x70024u, 0x80026u, 0x00005u, 0x00008u, 0x0000fu, 0x00013u
-};
-__constant__ unsigned ptp_3x2_kl12[16] = {
-    0x60005u, 0x70006u, 0x60005u, 0xa0009u, 0xa0009u, 0xb000au, 0x00000u, 0x00000u,
-    0x00000u, 0x00000u, 0xa0009u, 0xb0009u, 0x00000u, 0x00000u, 0x00000u, 0x00000u
-};
-__constant__ float ptp_3x2_w12[16] = {
-    -0.257142872f, 0.257142872f, -0.385714293f, 1.0f, 6.0f, 6.0f, 0.0f, 0.0f,
-    0.0f, 0.0f, 3.0f, 1.5f, 0.0f, 0.0f, 0.0f, 0.0f
-};
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-static __device__ float ptp_3x2_cross4z(float4 a, float4 b, float4 c)
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
 {
-    float z = __fmul_rn(a.x, (__fmul_rn(b.y, c.w) - __fmul_rn(b.w, c.y))) -
-        __fmul_rn(b.x, (__fmul_rn(a.y, c.w) - __fmul_rn(a.w, c.y))) +
-        __fmul_rn(c.x, (__fmul_rn(a.y, b.w) - __fmul_rn(a.w, b.y)));
-    return z;
+    float e2 = eye.z;
+    float u, v;
+    bool lt, gt;
+    const float x1 = cp[1].x;
+    const float y1 = cp[1].y;
+    const float w1 = cp[1].w;
+    const float g1 = __fmul_rn(e2, w1);
+    const float x3 = cp[3].x;
+    const float y3 = cp[3].y;
+    const float w3 = cp[3].w;
+    const float g3 = __fmul_rn(e2, w3);
+    const float m1_3 = __fmul_rn(x1, y3) - __fmul_rn(y1, x3);
+    const float x0 = cp[0].x;
+    const float y0 = cp[0].y;
+    const float w0 = cp[0].w;
+    const float g0 = __fmul_rn(e2, w0);
+    const float m0_3 = __fmul_rn(x0, y3) - __fmul_rn(y0, x3);
+    const float m0_1 = __fmul_rn(x0, y1) - __fmul_rn(y0, x1);
+    u = -((__fmul_rn(g0, m1_3) - __fmul_rn(g1, m0_3)) + __fmul_rn(g3, m0_1));
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    const float x2 = cp[2].x;
+    const float y2 = cp[2].y;
+    const float w2 = cp[2].w;
+    const float g2 = __fmul_rn(e2, w2);
+    const float x5 = cp[5].x;
+    const float y5 = cp[5].y;
+    const float w5 = cp[5].w;
+    const float g5 = __fmul_rn(e2, w5);
+    const float m2_5 = __fmul_rn(x2, y5) - __fmul_rn(y2, x5);
+    const float m1_5 = __fmul_rn(x1, y5) - __fmul_rn(y1, x5);
+    const float m1_2 = __fmul_rn(x1, y2) - __fmul_rn(y1, x2);
+    u = -((__fmul_rn(g1, m2_5) - __fmul_rn(g2, m1_5)) + __fmul_rn(g5, m1_2));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    const float m2_3 = __fmul_rn(x2, y3) - __fmul_rn(y2, x3);
+    const float m0_2 = __fmul_rn(x0, y2) - __fmul_rn(y0, x2);
+    u = -((__fmul_rn(g0, m2_3) - __fmul_rn(g2, m0_3)) + __fmul_rn(g3, m0_2));
+    v = u;
+    const float x4 = cp[4].x;
+    const float y4 = cp[4].y;
+    const float w4 = cp[4].w;
+    const float g4 = __fmul_rn(e2, w4);
+    const float m1_4 = __fmul_rn(x1, y4) - __fmul_rn(y1, x4);
+    const float m0_4 = __fmul_rn(x0, y4) - __fmul_rn(y0, x4);
+    u = -((__fmul_rn(g0, m1_4) - __fmul_rn(g1, m0_4)) + __fmul_rn(g4, m0_1));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    const float m0_5 = __fmul_rn(x0, y5) - __fmul_rn(y0, x5);
+    u = -((__fmul_rn(g0, m1_5) - __fmul_rn(g1, m0_5)) + __fmul_rn(g5, m0_1));
+    u -= ((__fmul_rn(g1, m2_3) - __fmul_rn(g2, m1_3)) + __fmul_rn(g3, m1_2));
+    v = u;
+    const float m2_4 = __fmul_rn(x2, y4) - __fmul_rn(y2, x4);
+    u = -((__fmul_rn(g0, m2_4) - __fmul_rn(g2, m0_4)) + __fmul_rn(g4, m0_2));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    u = -((__fmul_rn(g0, m2_5) - __fmul_rn(g2, m0_5)) + __fmul_rn(g5, m0_2));
+    v = u;
+    u = -((__fmul_rn(g1, m2_4) - __fmul_rn(g2, m1_4)) + __fmul_rn(g4, m1_2));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    const float x6 = cp[6].x;
+    const float y6 = cp[6].y;
+    const float w6 = cp[6].w;
+    const float g6 = __fmul_rn(e2, w6);
+    const float m1_6 = __fmul_rn(x1, y6) - __fmul_rn(y1, x6);
+    const float m0_6 = __fmul_rn(x0, y6) - __fmul_rn(y0, x6);
+    u = -((__fmul_rn(g0, m1_6) - __fmul_rn(g1, m0_6)) + __fmul_rn(g6, m0_1));
+    v = (u + u);
+    const float m3_4 = __fmul_rn(x3, y4) - __fmul_rn(y3, x4);
+    u = ((__fmul_rn(g0, m3_4) - __fmul_rn(g3, m0_4)) + __fmul_rn(g4, m0_3));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    const float x8 = cp[8].x;
+    const float y8 = cp[8].y;
+    const float w8 = cp[8].w;
+    const float g8 = __fmul_rn(e2, w8);
+    const float m2_8 = __fmul_rn(x2, y8) - __fmul_rn(y2, x8);
+    const float m1_8 = __fmul_rn(x1, y8) - __fmul_rn(y1, x8);
+    u = -((__fmul_rn(g1, m2_8) - __fmul_rn(g2, m1_8)) + __fmul_rn(g8, m1_2));
+    v = (u + u);
+    const float m4_5 = __fmul_rn(x4, y5) - __fmul_rn(y4, x5);
+    u = ((__fmul_rn(g2, m4_5) - __fmul_rn(g4, m2_5)) + __fmul_rn(g5, m2_4));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    const float m2_6 = __fmul_rn(x2, y6) - __fmul_rn(y2, x6);
+    u = __fmul_rn(g0, (-m2_6));
+    u = __fmaf_rn(g2, m0_6, u);
+    u = __fmaf_rn(g6, -m0_2, u);
+    v = (u + u);
+    const float m3_5 = __fmul_rn(x3, y5) - __fmul_rn(y3, x5);
+    u = __fmul_rn(g0, (m3_5));
+    u = __fmaf_rn(g3, -m0_5, u);
+    u = __fmaf_rn(g5, m0_3, u);
+    v += (u + u) + u;
+    const float x7 = cp[7].x;
+    const float y7 = cp[7].y;
+    const float w7 = cp[7].w;
+    const float g7 = __fmul_rn(e2, w7);
+    const float m1_7 = __fmul_rn(x1, y7) - __fmul_rn(y1, x7);
+    u = __fmul_rn(g0, (-m1_7));
+    const float m0_7 = __fmul_rn(x0, y7) - __fmul_rn(y0, x7);
+    u = __fmaf_rn(g1, m0_7, u);
+    u = __fmaf_rn(g7, -m0_1, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (m3_4));
+    u = __fmaf_rn(g3, -m1_4, u);
+    u = __fmaf_rn(g4, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    u = __fmul_rn(g0, (-m2_8));
+    const float m0_8 = __fmul_rn(x0, y8) - __fmul_rn(y0, x8);
+    u = __fmaf_rn(g2, m0_8, u);
+    u = __fmaf_rn(g8, -m0_2, u);
+    v = (u + u);
+    u = __fmul_rn(g2, (m3_5));
+    u = __fmaf_rn(g3, -m2_5, u);
+    u = __fmaf_rn(g5, m2_3, u);
+    v += (u + u) + u;
+    const float m2_7 = __fmul_rn(x2, y7) - __fmul_rn(y2, x7);
+    u = __fmul_rn(g1, (-m2_7));
+    u = __fmaf_rn(g2, m1_7, u);
+    u = __fmaf_rn(g7, -m1_2, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (m4_5));
+    u = __fmaf_rn(g4, -m1_5, u);
+    u = __fmaf_rn(g5, m1_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    u = -((__fmul_rn(g0, m1_8) - __fmul_rn(g1, m0_8)) + __fmul_rn(g8, m0_1));
+    u -= ((__fmul_rn(g1, m2_6) - __fmul_rn(g2, m1_6)) + __fmul_rn(g6, m1_2));
+    v = (u + u);
+    u = ((__fmul_rn(g0, m4_5) - __fmul_rn(g4, m0_5)) + __fmul_rn(g5, m0_4));
+    u += ((__fmul_rn(g2, m3_4) - __fmul_rn(g3, m2_4)) + __fmul_rn(g4, m2_3));
+    v += (u + u) + u;
+    u = -((__fmul_rn(g0, m2_7) - __fmul_rn(g2, m0_7)) + __fmul_rn(g7, m0_2));
+    v += ((u + u) + (u + u));
+    u = ((__fmul_rn(g1, m3_5) - __fmul_rn(g3, m1_5)) + __fmul_rn(g5, m1_3));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    const float x9 = cp[9].x;
+    const float y9 = cp[9].y;
+    const float w9 = cp[9].w;
+    const float g9 = __fmul_rn(e2, w9);
+    const float m1_9 = __fmul_rn(x1, y9) - __fmul_rn(y1, x9);
+    const float m0_9 = __fmul_rn(x0, y9) - __fmul_rn(y0, x9);
+    u = -((__fmul_rn(g0, m1_9) - __fmul_rn(g1, m0_9)) + __fmul_rn(g9, m0_1));
+    v = u;
+    const float m3_7 = __fmul_rn(x3, y7) - __fmul_rn(y3, x7);
+    u = ((__fmul_rn(g0, m3_7) - __fmul_rn(g3, m0_7)) + __fmul_rn(g7, m0_3));
+    const float m3_6 = __fmul_rn(x3, y6) - __fmul_rn(y3, x6);
+    u += ((__fmul_rn(g1, m3_6) - __fmul_rn(g3, m1_6)) + __fmul_rn(g6, m1_3));
+    v += (u + u) + u;
+    const float m4_6 = __fmul_rn(x4, y6) - __fmul_rn(y4, x6);
+    u = -((__fmul_rn(g0, m4_6) - __fmul_rn(g4, m0_6)) + __fmul_rn(g6, m0_4));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 10 */
+    const float x11 = cp[11].x;
+    const float y11 = cp[11].y;
+    const float w11 = cp[11].w;
+    const float g11 = __fmul_rn(e2, w11);
+    const float m2_11 = __fmul_rn(x2, y11) - __fmul_rn(y2, x11);
+    const float m1_11 = __fmul_rn(x1, y11) - __fmul_rn(y1, x11);
+    u = -((__fmul_rn(g1, m2_11) - __fmul_rn(g2, m1_11)) + __fmul_rn(g11, m1_2));
+    v = u;
+    const float m5_8 = __fmul_rn(x5, y8) - __fmul_rn(y5, x8);
+    u = -((__fmul_rn(g1, m5_8) - __fmul_rn(g5, m1_8)) + __fmul_rn(g8, m1_5));
+    const float m5_7 = __fmul_rn(x5, y7) - __fmul_rn(y5, x7);
+    u -= ((__fmul_rn(g2, m5_7) - __fmul_rn(g5, m2_7)) + __fmul_rn(g7, m2_5));
+    v += (u + u) + u;
+    const float m4_8 = __fmul_rn(x4, y8) - __fmul_rn(y4, x8);
+    u = ((__fmul_rn(g2, m4_8) - __fmul_rn(g4, m2_8)) + __fmul_rn(g8, m2_4));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 14 */
+    const float x10 = cp[10].x;
+    const float y10 = cp[10].y;
+    const float w10 = cp[10].w;
+    const float g10 = __fmul_rn(e2, w10);
+    const float m3_10 = __fmul_rn(x3, y10) - __fmul_rn(y3, x10);
+    const float m0_10 = __fmul_rn(x0, y10) - __fmul_rn(y0, x10);
+    u = ((__fmul_rn(g0, m3_10) - __fmul_rn(g3, m0_10)) + __fmul_rn(g10, m0_3));
+    v = u;
+    const float m3_9 = __fmul_rn(x3, y9) - __fmul_rn(y3, x9);
+    u = ((__fmul_rn(g1, m3_9) - __fmul_rn(g3, m1_9)) + __fmul_rn(g9, m1_3));
+    v += (u + u);
+    const float m4_9 = __fmul_rn(x4, y9) - __fmul_rn(y4, x9);
+    u = -((__fmul_rn(g0, m4_9) - __fmul_rn(g4, m0_9)) + __fmul_rn(g9, m0_4));
+    v += (u + u) + u;
+    const float m6_7 = __fmul_rn(x6, y7) - __fmul_rn(y6, x7);
+    u = ((__fmul_rn(g0, m6_7) - __fmul_rn(g6, m0_7)) + __fmul_rn(g7, m0_6));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((__fmul_rn(g3, m4_6) - __fmul_rn(g4, m3_6)) + __fmul_rn(g6, m3_4));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 15 */
+    const float m2_9 = __fmul_rn(x2, y9) - __fmul_rn(y2, x9);
+    u = __fmul_rn(g0, (-m2_9));
+    u = __fmaf_rn(g2, m0_9, u);
+    u = __fmaf_rn(g9, -m0_2, u);
+    v = u;
+    const float m1_10 = __fmul_rn(x1, y10) - __fmul_rn(y1, x10);
+    u = __fmul_rn(g0, (-m1_10));
+    u = __fmaf_rn(g1, m0_10, u);
+    u = __fmaf_rn(g10, -m0_1, u);
+    v += (u + u);
+    const float m3_8 = __fmul_rn(x3, y8) - __fmul_rn(y3, x8);
+    u = __fmul_rn(g0, (m3_8));
+    u = __fmaf_rn(g2, m3_6, u);
+    u = __fmaf_rn(g3, -m2_6 - m0_8, u);
+    u = __fmaf_rn(g6, m2_3, u);
+    u = __fmaf_rn(g8, m0_3, u);
+    v += (u + u) + u;
+    const float m4_7 = __fmul_rn(x4, y7) - __fmul_rn(y4, x7);
+    const float m5_6 = __fmul_rn(x5, y6) - __fmul_rn(y5, x6);
+    u = __fmul_rn(g0, (-m4_7 - m5_6));
+    u = __fmaf_rn(g1, -m4_6, u);
+    u = __fmaf_rn(g4, m1_6 + m0_7, u);
+    u = __fmaf_rn(g5, m0_6, u);
+    u = __fmaf_rn(g6, -m1_4 - m0_5, u);
+    u = __fmaf_rn(g7, -m0_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g1, (m3_7));
+    u = __fmaf_rn(g3, -m1_7, u);
+    u = __fmaf_rn(g7, m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 11 */
+    const float m0_11 = __fmul_rn(x0, y11) - __fmul_rn(y0, x11);
+    u = -((__fmul_rn(g0, m1_11) - __fmul_rn(g1, m0_11)) + __fmul_rn(g11, m0_1));
+    u -= ((__fmul_rn(g1, m2_9) - __fmul_rn(g2, m1_9)) + __fmul_rn(g9, m1_2));
+    v = u;
+    const float m2_10 = __fmul_rn(x2, y10) - __fmul_rn(y2, x10);
+    u = -((__fmul_rn(g0, m2_10) - __fmul_rn(g2, m0_10)) + __fmul_rn(g10, m0_2));
+    v += (u + u);
+    u = -((__fmul_rn(g0, m5_7) - __fmul_rn(g5, m0_7)) + __fmul_rn(g7, m0_5));
+    u += ((__fmul_rn(g1, m3_8) - __fmul_rn(g3, m1_8)) + __fmul_rn(g8, m1_3));
+    u -= ((__fmul_rn(g1, m5_6) - __fmul_rn(g5, m1_6)) + __fmul_rn(g6, m1_5));
+    u += ((__fmul_rn(g2, m3_7) - __fmul_rn(g3, m2_7)) + __fmul_rn(g7, m2_3));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 12 */
+    u = __fmul_rn(g0, (-m2_11));
+    u = __fmaf_rn(g2, m0_11, u);
+    u = __fmaf_rn(g11, -m0_2, u);
+    v = u;
+    u = __fmul_rn(g1, (-m2_10));
+    u = __fmaf_rn(g2, m1_10, u);
+    u = __fmaf_rn(g10, -m1_2, u);
+    v += (u + u);
+    u = __fmul_rn(g0, (-m5_8));
+    u = __fmaf_rn(g2, -m5_6, u);
+    u = __fmaf_rn(g5, m2_6 + m0_8, u);
+    u = __fmaf_rn(g6, -m2_5, u);
+    u = __fmaf_rn(g8, -m0_5, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g1, (m4_8));
+    u = __fmaf_rn(g2, m3_8 + m4_7, u);
+    u = __fmaf_rn(g3, -m2_8, u);
+    u = __fmaf_rn(g4, -m1_8 - m2_7, u);
+    u = __fmaf_rn(g7, m2_4, u);
+    u = __fmaf_rn(g8, m2_3 + m1_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g1, (-m5_7));
+    u = __fmaf_rn(g5, m1_7, u);
+    u = __fmaf_rn(g7, -m1_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 13 */
+    const float m5_10 = __fmul_rn(x5, y10) - __fmul_rn(y5, x10);
+    u = -((__fmul_rn(g2, m5_10) - __fmul_rn(g5, m2_10)) + __fmul_rn(g10, m2_5));
+    v = u;
+    const float m5_11 = __fmul_rn(x5, y11) - __fmul_rn(y5, x11);
+    u = -((__fmul_rn(g1, m5_11) - __fmul_rn(g5, m1_11)) + __fmul_rn(g11, m1_5));
+    v += (u + u);
+    const float m4_11 = __fmul_rn(x4, y11) - __fmul_rn(y4, x11);
+    u = ((__fmul_rn(g2, m4_11) - __fmul_rn(g4, m2_11)) + __fmul_rn(g11, m2_4));
+    v += (u + u) + u;
+    const float m7_8 = __fmul_rn(x7, y8) - __fmul_rn(y7, x8);
+    u = ((__fmul_rn(g2, m7_8) - __fmul_rn(g7, m2_8)) + __fmul_rn(g8, m2_7));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((__fmul_rn(g4, m5_8) - __fmul_rn(g5, m4_8)) + __fmul_rn(g8, m4_5));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 19 */
+    const float m6_9 = __fmul_rn(x6, y9) - __fmul_rn(y6, x9);
+    u = ((__fmul_rn(g1, m6_9) - __fmul_rn(g6, m1_9)) + __fmul_rn(g9, m1_6));
+    v = u;
+    const float m6_10 = __fmul_rn(x6, y10) - __fmul_rn(y6, x10);
+    u = ((__fmul_rn(g0, m6_10) - __fmul_rn(g6, m0_10)) + __fmul_rn(g10, m0_6));
+    v += (u + u);
+    const float m7_9 = __fmul_rn(x7, y9) - __fmul_rn(y7, x9);
+    u = -((__fmul_rn(g0, m7_9) - __fmul_rn(g7, m0_9)) + __fmul_rn(g9, m0_7));
+    v += (u + u) + u;
+    u = -((__fmul_rn(g3, m4_9) - __fmul_rn(g4, m3_9)) + __fmul_rn(g9, m3_4));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((__fmul_rn(g3, m6_7) - __fmul_rn(g6, m3_7)) + __fmul_rn(g7, m3_6));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 20 */
+    u = __fmul_rn(g2, (m6_9));
+    u = __fmaf_rn(g6, -m2_9, u);
+    u = __fmaf_rn(g9, m2_6, u);
+    v = u;
+    const float m6_11 = __fmul_rn(x6, y11) - __fmul_rn(y6, x11);
+    const float m7_10 = __fmul_rn(x7, y10) - __fmul_rn(y7, x10);
+    u = __fmul_rn(g0, (m6_11 - m7_10));
+    u = __fmaf_rn(g6, -m0_11, u);
+    u = __fmaf_rn(g7, m0_10, u);
+    u = __fmaf_rn(g10, -m0_7, u);
+    u = __fmaf_rn(g11, m0_6, u);
+    v += (u + u);
+    const float m8_9 = __fmul_rn(x8, y9) - __fmul_rn(y8, x9);
+    u = __fmul_rn(g0, (-m8_9));
+    u = __fmaf_rn(g8, m0_9, u);
+    u = __fmaf_rn(g9, -m0_8, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g1, (-m7_9));
+    u = __fmaf_rn(g7, m1_9, u);
+    u = __fmaf_rn(g9, -m1_7, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (m6_10));
+    const float m5_9 = __fmul_rn(x5, y9) - __fmul_rn(y5, x9);
+    u = __fmaf_rn(g3, -m5_9, u);
+    u = __fmaf_rn(g5, m3_9, u);
+    u = __fmaf_rn(g6, -m1_10, u);
+    u = __fmaf_rn(g9, -m3_5, u);
+    u = __fmaf_rn(g10, m1_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    const float m6_8 = __fmul_rn(x6, y8) - __fmul_rn(y6, x8);
+    u = __fmul_rn(g3, (m6_8));
+    u = __fmaf_rn(g6, -m3_8, u);
+    u = __fmaf_rn(g8, m3_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    const float m4_10 = __fmul_rn(x4, y10) - __fmul_rn(y4, x10);
+    u = __fmul_rn(g3, (-m4_10));
+    u = __fmaf_rn(g4, m3_10, u);
+    u = __fmaf_rn(g10, -m3_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m6_7));
+    u = __fmaf_rn(g6, -m4_7, u);
+    u = __fmaf_rn(g7, m4_6, u);
+    v = __fmaf_rn(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 21 */
+    const float m3_11 = __fmul_rn(x3, y11) - __fmul_rn(y3, x11);
+    u = __fmul_rn(g0, (m3_11));
+    u = __fmaf_rn(g3, -m0_11, u);
+    u = __fmaf_rn(g11, m0_3, u);
+    v = u;
+    u = __fmul_rn(g1, (-m4_9));
+    u = __fmaf_rn(g2, m3_9, u);
+    u = __fmaf_rn(g3, -m2_9, u);
+    u = __fmaf_rn(g4, m1_9, u);
+    u = __fmaf_rn(g9, m2_3 - m1_4, u);
+    v += (u + u);
+    u = __fmul_rn(g0, (-m5_9));
+    u = __fmaf_rn(g5, m0_9, u);
+    u = __fmaf_rn(g9, -m0_5, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g0, (-m4_10));
+    u = __fmaf_rn(g4, m0_10, u);
+    u = __fmaf_rn(g10, -m0_4, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g0, (m6_8));
+    u = __fmaf_rn(g1, m3_10, u);
+    u = __fmaf_rn(g3, -m1_10, u);
+    u = __fmaf_rn(g6, -m0_8, u);
+    u = __fmaf_rn(g8, m0_6, u);
+    u = __fmaf_rn(g10, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m5_6));
+    u = __fmaf_rn(g5, m3_6, u);
+    u = __fmaf_rn(g6, -m3_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g1, (m6_7));
+    u = __fmaf_rn(g6, -m1_7, u);
+    u = __fmaf_rn(g7, m1_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m4_7));
+    u = __fmaf_rn(g4, m3_7, u);
+    u = __fmaf_rn(g7, -m3_4, u);
+    v = __fmaf_rn(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 16 */
+    const float m8_11 = __fmul_rn(x8, y11) - __fmul_rn(y8, x11);
+    u = __fmul_rn(g0, (-m8_11));
+    u = __fmaf_rn(g8, m0_11, u);
+    u = __fmaf_rn(g11, -m0_8, u);
+    v = u;
+    u = __fmul_rn(g2, (m7_10 - m8_9));
+    u = __fmaf_rn(g7, -m2_10, u);
+    u = __fmaf_rn(g8, m2_9, u);
+    u = __fmaf_rn(g9, -m2_8, u);
+    u = __fmaf_rn(g10, m2_7, u);
+    v += (u + u);
+    u = __fmul_rn(g2, (m6_11));
+    u = __fmaf_rn(g6, -m2_11, u);
+    u = __fmaf_rn(g11, m2_6, u);
+    v += (u + u) + u;
+    const float m7_11 = __fmul_rn(x7, y11) - __fmul_rn(y7, x11);
+    u = __fmul_rn(g1, (m7_11));
+    u = __fmaf_rn(g7, -m1_11, u);
+    u = __fmaf_rn(g11, m1_7, u);
+    v += ((u + u) + (u + u));
+    const float m8_10 = __fmul_rn(x8, y10) - __fmul_rn(y8, x10);
+    u = __fmul_rn(g1, (-m8_10));
+    u = __fmaf_rn(g3, -m5_11, u);
+    u = __fmaf_rn(g5, m3_11, u);
+    u = __fmaf_rn(g8, m1_10, u);
+    u = __fmaf_rn(g10, -m1_8, u);
+    u = __fmaf_rn(g11, -m3_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g5, (m6_8));
+    u = __fmaf_rn(g6, -m5_8, u);
+    u = __fmaf_rn(g8, m5_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g4, (-m5_10));
+    u = __fmaf_rn(g5, m4_10, u);
+    u = __fmaf_rn(g10, -m4_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m7_8));
+    u = __fmaf_rn(g7, -m4_8, u);
+    u = __fmaf_rn(g8, m4_7, u);
+    v = __fmaf_rn(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 23 */
+    u = -((__fmul_rn(g1, m8_11) - __fmul_rn(g8, m1_11)) + __fmul_rn(g11, m1_8));
+    v = u;
+    u = -((__fmul_rn(g2, m8_10) - __fmul_rn(g8, m2_10)) + __fmul_rn(g10, m2_8));
+    v += (u + u);
+    u = ((__fmul_rn(g2, m7_11) - __fmul_rn(g7, m2_11)) + __fmul_rn(g11, m2_7));
+    v += (u + u) + u;
+    u = -((__fmul_rn(g4, m5_11) - __fmul_rn(g5, m4_11)) + __fmul_rn(g11, m4_5));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((__fmul_rn(g5, m7_8) - __fmul_rn(g7, m5_8)) + __fmul_rn(g8, m5_7));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 24 */
+    const float m9_10 = __fmul_rn(x9, y10) - __fmul_rn(y9, x10);
+    u = ((__fmul_rn(g0, m9_10) - __fmul_rn(g9, m0_10)) + __fmul_rn(g10, m0_9));
+    v = u;
+    u = ((__fmul_rn(g3, m6_10) - __fmul_rn(g6, m3_10)) + __fmul_rn(g10, m3_6));
+    u += ((__fmul_rn(g4, m6_9) - __fmul_rn(g6, m4_9)) + __fmul_rn(g9, m4_6));
+    v += (u + u) + u;
+    u = -((__fmul_rn(g3, m7_9) - __fmul_rn(g7, m3_9)) + __fmul_rn(g9, m3_7));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 25 */
+    const float m9_11 = __fmul_rn(x9, y11) - __fmul_rn(y9, x11);
+    u = __fmul_rn(g0, (m9_11));
+    u = __fmaf_rn(g9, -m0_11, u);
+    u = __fmaf_rn(g11, m0_9, u);
+    v = u;
+    u = __fmul_rn(g1, (m9_10));
+    u = __fmaf_rn(g9, -m1_10, u);
+    u = __fmaf_rn(g10, m1_9, u);
+    v += (u + u);
+    u = __fmul_rn(g3, (m6_11));
+    u = __fmaf_rn(g5, m6_9, u);
+    u = __fmaf_rn(g6, -m3_11 - m5_9, u);
+    u = __fmaf_rn(g9, m5_6, u);
+    u = __fmaf_rn(g11, m3_6, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m7_10 - m8_9));
+    u = __fmaf_rn(g4, -m7_9, u);
+    u = __fmaf_rn(g7, m3_10 + m4_9, u);
+    u = __fmaf_rn(g8, m3_9, u);
+    u = __fmaf_rn(g9, -m3_8 - m4_7, u);
+    u = __fmaf_rn(g10, -m3_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m6_10));
+    u = __fmaf_rn(g6, -m4_10, u);
+    u = __fmaf_rn(g10, m4_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 26 */
+    const float m10_11 = __fmul_rn(x10, y11) - __fmul_rn(y10, x11);
+    u = ((__fmul_rn(g0, m10_11) - __fmul_rn(g10, m0_11)) + __fmul_rn(g11, m0_10));
+    u += ((__fmul_rn(g2, m9_10) - __fmul_rn(g9, m2_10)) + __fmul_rn(g10, m2_9));
+    v = u;
+    u = ((__fmul_rn(g1, m9_11) - __fmul_rn(g9, m1_11)) + __fmul_rn(g11, m1_9));
+    v += (u + u);
+    u = -((__fmul_rn(g3, m8_10) - __fmul_rn(g8, m3_10)) + __fmul_rn(g10, m3_8));
+    u += ((__fmul_rn(g4, m6_11) - __fmul_rn(g6, m4_11)) + __fmul_rn(g11, m4_6));
+    u -= ((__fmul_rn(g4, m8_9) - __fmul_rn(g8, m4_9)) + __fmul_rn(g9, m4_8));
+    u += ((__fmul_rn(g5, m6_10) - __fmul_rn(g6, m5_10)) + __fmul_rn(g10, m5_6));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 27 */
+    u = __fmul_rn(g2, (m9_11));
+    u = __fmaf_rn(g9, -m2_11, u);
+    u = __fmaf_rn(g11, m2_9, u);
+    v = u;
+    u = __fmul_rn(g1, (m10_11));
+    u = __fmaf_rn(g10, -m1_11, u);
+    u = __fmaf_rn(g11, m1_10, u);
+    v += (u + u);
+    u = __fmul_rn(g3, (-m8_11));
+    u = __fmaf_rn(g5, -m8_9, u);
+    u = __fmaf_rn(g8, m3_11 + m5_9, u);
+    u = __fmaf_rn(g9, -m5_8, u);
+    u = __fmaf_rn(g11, -m3_8, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m7_11));
+    u = __fmaf_rn(g5, m6_11 + m7_10, u);
+    u = __fmaf_rn(g6, -m5_11, u);
+    u = __fmaf_rn(g7, -m4_11 - m5_10, u);
+    u = __fmaf_rn(g10, m5_7, u);
+    u = __fmaf_rn(g11, m4_7 + m5_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (-m8_10));
+    u = __fmaf_rn(g8, m4_10, u);
+    u = __fmaf_rn(g10, -m4_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 28 */
+    u = ((__fmul_rn(g2, m10_11) - __fmul_rn(g10, m2_11)) + __fmul_rn(g11, m2_10));
+    v = u;
+    u = -((__fmul_rn(g4, m8_11) - __fmul_rn(g8, m4_11)) + __fmul_rn(g11, m4_8));
+    u -= ((__fmul_rn(g5, m8_10) - __fmul_rn(g8, m5_10)) + __fmul_rn(g10, m5_8));
+    v += (u + u) + u;
+    u = ((__fmul_rn(g5, m7_11) - __fmul_rn(g7, m5_11)) + __fmul_rn(g11, m5_7));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 29 */
+    u = ((__fmul_rn(g3, m9_10) - __fmul_rn(g9, m3_10)) + __fmul_rn(g10, m3_9));
+    v = (u + u);
+    u = -((__fmul_rn(g6, m7_9) - __fmul_rn(g7, m6_9)) + __fmul_rn(g9, m6_7));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 30 */
+    u = __fmul_rn(g3, (m9_11));
+    u = __fmaf_rn(g9, -m3_11, u);
+    u = __fmaf_rn(g11, m3_9, u);
+    v = (u + u);
+    u = __fmul_rn(g6, (-m8_9));
+    u = __fmaf_rn(g8, m6_9, u);
+    u = __fmaf_rn(g9, -m6_8, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m9_10));
+    u = __fmaf_rn(g9, -m4_10, u);
+    u = __fmaf_rn(g10, m4_9, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g6, (-m7_10));
+    u = __fmaf_rn(g7, m6_10, u);
+    u = __fmaf_rn(g10, -m6_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 31 */
+    u = ((__fmul_rn(g3, m10_11) - __fmul_rn(g10, m3_11)) + __fmul_rn(g11, m3_10));
+    u += ((__fmul_rn(g5, m9_10) - __fmul_rn(g9, m5_10)) + __fmul_rn(g10, m5_9));
+    v = (u + u);
+    u = -((__fmul_rn(g6, m7_11) - __fmul_rn(g7, m6_11)) + __fmul_rn(g11, m6_7));
+    u -= ((__fmul_rn(g7, m8_9) - __fmul_rn(g8, m7_9)) + __fmul_rn(g9, m7_8));
+    v += (u + u) + u;
+    u = ((__fmul_rn(g4, m9_11) - __fmul_rn(g9, m4_11)) + __fmul_rn(g11, m4_9));
+    v += ((u + u) + (u + u));
+    u = -((__fmul_rn(g6, m8_10) - __fmul_rn(g8, m6_10)) + __fmul_rn(g10, m6_8));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 32 */
+    u = __fmul_rn(g5, (m9_11));
+    u = __fmaf_rn(g9, -m5_11, u);
+    u = __fmaf_rn(g11, m5_9, u);
+    v = (u + u);
+    u = __fmul_rn(g6, (-m8_11));
+    u = __fmaf_rn(g8, m6_11, u);
+    u = __fmaf_rn(g11, -m6_8, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m10_11));
+    u = __fmaf_rn(g10, -m4_11, u);
+    u = __fmaf_rn(g11, m4_10, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g7, (-m8_10));
+    u = __fmaf_rn(g8, m7_10, u);
+    u = __fmaf_rn(g10, -m7_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 33 */
+    u = ((__fmul_rn(g5, m10_11) - __fmul_rn(g10, m5_11)) + __fmul_rn(g11, m5_10));
+    v = (u + u);
+    u = -((__fmul_rn(g7, m8_11) - __fmul_rn(g8, m7_11)) + __fmul_rn(g11, m7_8));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 34 */
+    u = ((__fmul_rn(g6, m9_10) - __fmul_rn(g9, m6_10)) + __fmul_rn(g10, m6_9));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 35 */
+    u = ((__fmul_rn(g6, m9_11) - __fmul_rn(g9, m6_11)) + __fmul_rn(g11, m6_9));
+    v = u;
+    u = ((__fmul_rn(g7, m9_10) - __fmul_rn(g9, m7_10)) + __fmul_rn(g10, m7_9));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 36 */
+    u = ((__fmul_rn(g6, m10_11) - __fmul_rn(g10, m6_11)) + __fmul_rn(g11, m6_10));
+    u += ((__fmul_rn(g8, m9_10) - __fmul_rn(g9, m8_10)) + __fmul_rn(g10, m8_9));
+    v = u;
+    u = ((__fmul_rn(g7, m9_11) - __fmul_rn(g9, m7_11)) + __fmul_rn(g11, m7_9));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 37 */
+    u = ((__fmul_rn(g8, m9_11) - __fmul_rn(g9, m8_11)) + __fmul_rn(g11, m8_9));
+    v = u;
+    u = ((__fmul_rn(g7, m10_11) - __fmul_rn(g10, m7_11)) + __fmul_rn(g11, m7_10));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 38 */
+    u = ((__fmul_rn(g8, m10_11) - __fmul_rn(g10, m8_11)) + __fmul_rn(g11, m8_10));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 39 */
+    u = __fmul_rn(g2, (-m5_9));
+    u = __fmaf_rn(g5, m2_9, u);
+    u = __fmaf_rn(g9, -m2_5, u);
+    v = u;
+    u = __fmul_rn(g0, (-m5_11));
+    u = __fmaf_rn(g1, m4_11, u);
+    u = __fmaf_rn(g4, -m1_11, u);
+    u = __fmaf_rn(g5, m0_11, u);
+    u = __fmaf_rn(g11, m1_4 - m0_5, u);
+    v += (u + u);
+    u = __fmul_rn(g2, (m3_11));
+    u = __fmaf_rn(g3, -m2_11, u);
+    u = __fmaf_rn(g11, m2_3, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g2, (m4_10));
+    u = __fmaf_rn(g4, -m2_10, u);
+    u = __fmaf_rn(g10, m2_4, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (-m5_10));
+    u = __fmaf_rn(g2, m6_8, u);
+    u = __fmaf_rn(g5, m1_10, u);
+    u = __fmaf_rn(g6, -m2_8, u);
+    u = __fmaf_rn(g8, m2_6, u);
+    u = __fmaf_rn(g10, -m1_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m5_8));
+    u = __fmaf_rn(g5, m3_8, u);
+    u = __fmaf_rn(g8, -m3_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g1, (m7_8));
+    u = __fmaf_rn(g7, -m1_8, u);
+    u = __fmaf_rn(g8, m1_7, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (-m5_7));
+    u = __fmaf_rn(g5, m4_7, u);
+    u = __fmaf_rn(g7, -m4_5, u);
+    v = __fmaf_rn(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 18 */
+    u = __fmul_rn(g0, (-m4_11));
+    u = __fmaf_rn(g2, m4_9, u);
+    u = __fmaf_rn(g4, m0_11 - m2_9, u);
+    u = __fmaf_rn(g9, m2_4, u);
+    u = __fmaf_rn(g11, -m0_4, u);
+    v = u;
+    u = __fmul_rn(g1, (m3_11 - m5_9));
+    u = __fmaf_rn(g3, -m1_11, u);
+    u = __fmaf_rn(g5, m1_9, u);
+    u = __fmaf_rn(g9, -m1_5, u);
+    u = __fmaf_rn(g11, m1_3, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g0, (-m5_10));
+    u = __fmaf_rn(g2, m3_10, u);
+    u = __fmaf_rn(g3, -m2_10, u);
+    u = __fmaf_rn(g5, m0_10, u);
+    u = __fmaf_rn(g10, m2_3 - m0_5, u);
+    v += ((u + u) + (u + u)) + u;
+    u = __fmul_rn(g0, (m7_8));
+    u = __fmaf_rn(g2, m6_7, u);
+    u = __fmaf_rn(g6, -m2_7, u);
+    u = __fmaf_rn(g7, m2_6 - m0_8, u);
+    u = __fmaf_rn(g8, m0_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m4_8));
+    u = __fmaf_rn(g4, m3_8 - m5_6, u);
+    u = __fmaf_rn(g5, m4_6, u);
+    u = __fmaf_rn(g6, -m4_5, u);
+    u = __fmaf_rn(g8, -m3_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g1, (m6_8));
+    u = __fmaf_rn(g6, -m1_8, u);
+    u = __fmaf_rn(g8, m1_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m5_7));
+    u = __fmaf_rn(g5, m3_7, u);
+    u = __fmaf_rn(g7, -m3_5, u);
+    v = __fmaf_rn(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 17 */
+    u = __fmul_rn(g0, (m7_11));
+    u = __fmaf_rn(g2, -m7_9, u);
+    u = __fmaf_rn(g7, m2_9 - m0_11, u);
+    u = __fmaf_rn(g9, -m2_7, u);
+    u = __fmaf_rn(g11, m0_7, u);
+    v = u;
+    u = __fmul_rn(g0, (-m8_10));
+    u = __fmaf_rn(g2, m6_10, u);
+    u = __fmaf_rn(g6, -m2_10, u);
+    u = __fmaf_rn(g8, m0_10, u);
+    u = __fmaf_rn(g10, m2_6 - m0_8, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (m6_11 - m8_9));
+    u = __fmaf_rn(g6, -m1_11, u);
+    u = __fmaf_rn(g8, m1_9, u);
+    u = __fmaf_rn(g9, -m1_8, u);
+    u = __fmaf_rn(g11, m1_6, u);
+    v += ((u + u) + (u + u)) + u;
+    u = __fmul_rn(g3, (-m4_11));
+    u = __fmaf_rn(g4, m3_11 - m5_9, u);
+    u = __fmaf_rn(g5, m4_9, u);
+    u = __fmaf_rn(g9, -m4_5, u);
+    u = __fmaf_rn(g11, -m3_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (m7_8));
+    u = __fmaf_rn(g5, m6_7, u);
+    u = __fmaf_rn(g6, -m5_7, u);
+    u = __fmaf_rn(g7, m5_6 - m3_8, u);
+    u = __fmaf_rn(g8, m3_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g3, (-m5_10));
+    u = __fmaf_rn(g5, m3_10, u);
+    u = __fmaf_rn(g10, -m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m6_8));
+    u = __fmaf_rn(g6, -m4_8, u);
+    u = __fmaf_rn(g8, m4_6, u);
+    v = __fmaf_rn(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 22 */
+    return lt ? 1u : gt ? 0u : 2u;
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-static __device__ unsigned ptp_3x2_flags(float d)
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
 {
-    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);
+    float e2 = eye.z;
+    float u, v;
+    const float x1 = cp[1].x;
+    const float y1 = cp[1].y;
+    const float w1 = cp[1].w;
+    const float g1 = __fmul_rn(e2, w1);
+    const float x3 = cp[3].x;
+    const float y3 = cp[3].y;
+    const float w3 = cp[3].w;
+    const float g3 = __fmul_rn(e2, w3);
+    const float m1_3 = __fmul_rn(x1, y3) - __fmul_rn(y1, x3);
+    const float x0 = cp[0].x;
+    const float y0 = cp[0].y;
+    const float w0 = cp[0].w;
+    const float g0 = __fmul_rn(e2, w0);
+    const float m0_3 = __fmul_rn(x0, y3) - __fmul_rn(y0, x3);
+    const float m0_1 = __fmul_rn(x0, y1) - __fmul_rn(y0, x1);
+    u = -((__fmul_rn(g0, m1_3) - __fmul_rn(g1, m0_3)) + __fmul_rn(g3, m0_1));
+    v = u;
+    d[0] = __fmul_rn(v, 6.0f);
+    const float x2 = cp[2].x;
+    const float y2 = cp[2].y;
+    const float w2 = cp[2].w;
+    const float g2 = __fmul_rn(e2, w2);
+    const float x5 = cp[5].x;
+    const float y5 = cp[5].y;
+    const float w5 = cp[5].w;
+    const float g5 = __fmul_rn(e2, w5);
+    const float m2_5 = __fmul_rn(x2, y5) - __fmul_rn(y2, x5);
+    const float m1_5 = __fmul_rn(x1, y5) - __fmul_rn(y1, x5);
+    const float m1_2 = __fmul_rn(x1, y2) - __fmul_rn(y1, x2);
+    u = -((__fmul_rn(g1, m2_5) - __fmul_rn(g2, m1_5)) + __fmul_rn(g5, m1_2));
+    v = u;
+    d[4] = __fmul_rn(v, 6.0f);
+    const float m2_3 = __fmul_rn(x2, y3) - __fmul_rn(y2, x3);
+    const float m0_2 = __fmul_rn(x0, y2) - __fmul_rn(y0, x2);
+    u = -((__fmul_rn(g0, m2_3) - __fmul_rn(g2, m0_3)) + __fmul_rn(g3, m0_2));
+    v = u;
+    const float x4 = cp[4].x;
+    const float y4 = cp[4].y;
+    const float w4 = cp[4].w;
+    const float g4 = __fmul_rn(e2, w4);
+    const float m1_4 = __fmul_rn(x1, y4) - __fmul_rn(y1, x4);
+    const float m0_4 = __fmul_rn(x0, y4) - __fmul_rn(y0, x4);
+    u = -((__fmul_rn(g0, m1_4) - __fmul_rn(g1, m0_4)) + __fmul_rn(g4, m0_1));
+    v += (u + u);
+    d[1] = __fmul_rn(v, 1.5f);
+    const float m0_5 = __fmul_rn(x0, y5) - __fmul_rn(y0, x5);
+    u = -((__fmul_rn(g0, m1_5) - __fmul_rn(g1, m0_5)) + __fmul_rn(g5, m0_1));
+    u -= ((__fmul_rn(g1, m2_3) - __fmul_rn(g2, m1_3)) + __fmul_rn(g3, m1_2));
+    v = u;
+    const float m2_4 = __fmul_rn(x2, y4) - __fmul_rn(y2, x4);
+    u = -((__fmul_rn(g0, m2_4) - __fmul_rn(g2, m0_4)) + __fmul_rn(g4, m0_2));
+    v += (u + u);
+    d[2] = v;
+    u = -((__fmul_rn(g0, m2_5) - __fmul_rn(g2, m0_5)) + __fmul_rn(g5, m0_2));
+    v = u;
+    u = -((__fmul_rn(g1, m2_4) - __fmul_rn(g2, m1_4)) + __fmul_rn(g4, m1_2));
+    v += (u + u);
+    d[3] = __fmul_rn(v, 1.5f);
+    const float x6 = cp[6].x;
+    const float y6 = cp[6].y;
+    const float w6 = cp[6].w;
+    const float g6 = __fmul_rn(e2, w6);
+    const float m1_6 = __fmul_rn(x1, y6) - __fmul_rn(y1, x6);
+    const float m0_6 = __fmul_rn(x0, y6) - __fmul_rn(y0, x6);
+    u = -((__fmul_rn(g0, m1_6) - __fmul_rn(g1, m0_6)) + __fmul_rn(g6, m0_1));
+    v = (u + u);
+    const float m3_4 = __fmul_rn(x3, y4) - __fmul_rn(y3, x4);
+    u = ((__fmul_rn(g0, m3_4) - __fmul_rn(g3, m0_4)) + __fmul_rn(g4, m0_3));
+    v += (u + u) + u;
+    d[5] = __fmul_rn(v, 0.857142866f);
+    const float x8 = cp[8].x;
+    const float y8 = cp[8].y;
+    const float w8 = cp[8].w;
+    const float g8 = __fmul_rn(e2, w8);
+    const float m2_8 = __fmul_rn(x2, y8) - __fmul_rn(y2, x8);
+    const float m1_8 = __fmul_rn(x1, y8) - __fmul_rn(y1, x8);
+    u = -((__fmul_rn(g1, m2_8) - __fmul_rn(g2, m1_8)) + __fmul_rn(g8, m1_2));
+    v = (u + u);
+    const float m4_5 = __fmul_rn(x4, y5) - __fmul_rn(y4, x5);
+    u = ((__fmul_rn(g2, m4_5) - __fmul_rn(g4, m2_5)) + __fmul_rn(g5, m2_4));
+    v += (u + u) + u;
+    d[9] = __fmul_rn(v, 0.857142866f);
+    const float m2_6 = __fmul_rn(x2, y6) - __fmul_rn(y2, x6);
+    u = __fmul_rn(g0, (-m2_6));
+    u = __fmaf_rn(g2, m0_6, u);
+    u = __fmaf_rn(g6, -m0_2, u);
+    v = (u + u);
+    const float m3_5 = __fmul_rn(x3, y5) - __fmul_rn(y3, x5);
+    u = __fmul_rn(g0, (m3_5));
+    u = __fmaf_rn(g3, -m0_5, u);
+    u = __fmaf_rn(g5, m0_3, u);
+    v += (u + u) + u;
+    const float x7 = cp[7].x;
+    const float y7 = cp[7].y;
+    const float w7 = cp[7].w;
+    const float g7 = __fmul_rn(e2, w7);
+    const float m1_7 = __fmul_rn(x1, y7) - __fmul_rn(y1, x7);
+    u = __fmul_rn(g0, (-m1_7));
+    const float m0_7 = __fmul_rn(x0, y7) - __fmul_rn(y0, x7);
+    u = __fmaf_rn(g1, m0_7, u);
+    u = __fmaf_rn(g7, -m0_1, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (m3_4));
+    u = __fmaf_rn(g3, -m1_4, u);
+    u = __fmaf_rn(g4, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    d[6] = __fmul_rn(v, 0.214285716f);
+    u = __fmul_rn(g0, (-m2_8));
+    const float m0_8 = __fmul_rn(x0, y8) - __fmul_rn(y0, x8);
+    u = __fmaf_rn(g2, m0_8, u);
+    u = __fmaf_rn(g8, -m0_2, u);
+    v = (u + u);
+    u = __fmul_rn(g2, (m3_5));
+    u = __fmaf_rn(g3, -m2_5, u);
+    u = __fmaf_rn(g5, m2_3, u);
+    v += (u + u) + u;
+    const float m2_7 = __fmul_rn(x2, y7) - __fmul_rn(y2, x7);
+    u = __fmul_rn(g1, (-m2_7));
+    u = __fmaf_rn(g2, m1_7, u);
+    u = __fmaf_rn(g7, -m1_2, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (m4_5));
+    u = __fmaf_rn(g4, -m1_5, u);
+    u = __fmaf_rn(g5, m1_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    d[8] = __fmul_rn(v, 0.214285716f);
+    u = -((__fmul_rn(g0, m1_8) - __fmul_rn(g1, m0_8)) + __fmul_rn(g8, m0_1));
+    u -= ((__fmul_rn(g1, m2_6) - __fmul_rn(g2, m1_6)) + __fmul_rn(g6, m1_2));
+    v = (u + u);
+    u = ((__fmul_rn(g0, m4_5) - __fmul_rn(g4, m0_5)) + __fmul_rn(g5, m0_4));
+    u += ((__fmul_rn(g2, m3_4) - __fmul_rn(g3, m2_4)) + __fmul_rn(g4, m2_3));
+    v += (u + u) + u;
+    u = -((__fmul_rn(g0, m2_7) - __fmul_rn(g2, m0_7)) + __fmul_rn(g7, m0_2));
+    v += ((u + u) + (u + u));
+    u = ((__fmul_rn(g1, m3_5) - __fmul_rn(g3, m1_5)) + __fmul_rn(g5, m1_3));
+    u = u + u;
+    v += (u + u) + u;
+    d[7] = __fmul_rn(v, 0.142857149f);
+    const float x9 = cp[9].x;
+    const float y9 = cp[9].y;
+    const float w9 = cp[9].w;
+    const float g9 = __fmul_rn(e2, w9);
+    const float m1_9 = __fmul_rn(x1, y9) - __fmul_rn(y1, x9);
+    const float m0_9 = __fmul_rn(x0, y9) - __fmul_rn(y0, x9);
+    u = -((__fmul_rn(g0, m1_9) - __fmul_rn(g1, m0_9)) + __fmul_rn(g9, m0_1));
+    v = u;
+    const float m3_7 = __fmul_rn(x3, y7) - __fmul_rn(y3, x7);
+    u = ((__fmul_rn(g0, m3_7) - __fmul_rn(g3, m0_7)) + __fmul_rn(g7, m0_3));
+    const float m3_6 = __fmul_rn(x3, y6) - __fmul_rn(y3, x6);
+    u += ((__fmul_rn(g1, m3_6) - __fmul_rn(g3, m1_6)) + __fmul_rn(g6, m1_3));
+    v += (u + u) + u;
+    const float m4_6 = __fmul_rn(x4, y6) - __fmul_rn(y4, x6);
+    u = -((__fmul_rn(g0, m4_6) - __fmul_rn(g4, m0_6)) + __fmul_rn(g6, m0_4));
+    u = u + u;
+    v += (u + u) + u;
+    d[10] = __fmul_rn(v, 0.285714298f);
+    const float x11 = cp[11].x;
+    const float y11 = cp[11].y;
+    const float w11 = cp[11].w;
+    const float g11 = __fmul_rn(e2, w11);
+    const float m2_11 = __fmul_rn(x2, y11) - __fmul_rn(y2, x11);
+    const float m1_11 = __fmul_rn(x1, y11) - __fmul_rn(y1, x11);
+    u = -((__fmul_rn(g1, m2_11) - __fmul_rn(g2, m1_11)) + __fmul_rn(g11, m1_2));
+    v = u;
+    const float m5_8 = __fmul_rn(x5, y8) - __fmul_rn(y5, x8);
+    u = -((__fmul_rn(g1, m5_8) - __fmul_rn(g5, m1_8)) + __fmul_rn(g8, m1_5));
+    const float m5_7 = __fmul_rn(x5, y7) - __fmul_rn(y5, x7);
+    u -= ((__fmul_rn(g2, m5_7) - __fmul_rn(g5, m2_7)) + __fmul_rn(g7, m2_5));
+    v += (u + u) + u;
+    const float m4_8 = __fmul_rn(x4, y8) - __fmul_rn(y4, x8);
+    u = ((__fmul_rn(g2, m4_8) - __fmul_rn(g4, m2_8)) + __fmul_rn(g8, m2_4));
+    u = u + u;
+    v += (u + u) + u;
+    d[14] = __fmul_rn(v, 0.285714298f);
+    const float x10 = cp[10].x;
+    const float y10 = cp[10].y;
+    const float w10 = cp[10].w;
+    const float g10 = __fmul_rn(e2, w10);
+    const float m3_10 = __fmul_rn(x3, y10) - __fmul_rn(y3, x10);
+    const float m0_10 = __fmul_rn(x0, y10) - __fmul_rn(y0, x10);
+    u = ((__fmul_rn(g0, m3_10) - __fmul_rn(g3, m0_10)) + __fmul_rn(g10, m0_3));
+    v = u;
+    const float m3_9 = __fmul_rn(x3, y9) - __fmul_rn(y3, x9);
+    u = ((__fmul_rn(g1, m3_9) - __fmul_rn(g3, m1_9)) + __fmul_rn(g9, m1_3));
+    v += (u + u);
+    const float m4_9 = __fmul_rn(x4, y9) - __fmul_rn(y4, x9);
+    u = -((__fmul_rn(g0, m4_9) - __fmul_rn(g4, m0_9)) + __fmul_rn(g9, m0_4));
+    v += (u + u) + u;
+    const float m6_7 = __fmul_rn(x6, y7) - __fmul_rn(y6, x7);
+    u = ((__fmul_rn(g0, m6_7) - __fmul_rn(g6, m0_7)) + __fmul_rn(g7, m0_6));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((__fmul_rn(g3, m4_6) - __fmul_rn(g4, m3_6)) + __fmul_rn(g6, m3_4));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[15] = __fmul_rn(v, 0.171428576f);
+    const float m2_9 = __fmul_rn(x2, y9) - __fmul_rn(y2, x9);
+    u = __fmul_rn(g0, (-m2_9));
+    u = __fmaf_rn(g2, m0_9, u);
+    u = __fmaf_rn(g9, -m0_2, u);
+    v = u;
+    const float m1_10 = __fmul_rn(x1, y10) - __fmul_rn(y1, x10);
+    u = __fmul_rn(g0, (-m1_10));
+    u = __fmaf_rn(g1, m0_10, u);
+    u = __fmaf_rn(g10, -m0_1, u);
+    v += (u + u);
+    const float m3_8 = __fmul_rn(x3, y8) - __fmul_rn(y3, x8);
+    u = __fmul_rn(g0, (m3_8));
+    u = __fmaf_rn(g2, m3_6, u);
+    u = __fmaf_rn(g3, -m2_6 - m0_8, u);
+    u = __fmaf_rn(g6, m2_3, u);
+    u = __fmaf_rn(g8, m0_3, u);
+    v += (u + u) + u;
+    const float m4_7 = __fmul_rn(x4, y7) - __fmul_rn(y4, x7);
+    const float m5_6 = __fmul_rn(x5, y6) - __fmul_rn(y5, x6);
+    u = __fmul_rn(g0, (-m4_7 - m5_6));
+    u = __fmaf_rn(g1, -m4_6, u);
+    u = __fmaf_rn(g4, m1_6 + m0_7, u);
+    u = __fmaf_rn(g5, m0_6, u);
+    u = __fmaf_rn(g6, -m1_4 - m0_5, u);
+    u = __fmaf_rn(g7, -m0_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g1, (m3_7));
+    u = __fmaf_rn(g3, -m1_7, u);
+    u = __fmaf_rn(g7, m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[11] = __fmul_rn(v, 0.0714285746f);
+    const float m0_11 = __fmul_rn(x0, y11) - __fmul_rn(y0, x11);
+    u = -((__fmul_rn(g0, m1_11) - __fmul_rn(g1, m0_11)) + __fmul_rn(g11, m0_1));
+    u -= ((__fmul_rn(g1, m2_9) - __fmul_rn(g2, m1_9)) + __fmul_rn(g9, m1_2));
+    v = u;
+    const float m2_10 = __fmul_rn(x2, y10) - __fmul_rn(y2, x10);
+    u = -((__fmul_rn(g0, m2_10) - __fmul_rn(g2, m0_10)) + __fmul_rn(g10, m0_2));
+    v += (u + u);
+    u = -((__fmul_rn(g0, m5_7) - __fmul_rn(g5, m0_7)) + __fmul_rn(g7, m0_5));
+    u += ((__fmul_rn(g1, m3_8) - __fmul_rn(g3, m1_8)) + __fmul_rn(g8, m1_3));
+    u -= ((__fmul_rn(g1, m5_6) - __fmul_rn(g5, m1_6)) + __fmul_rn(g6, m1_5));
+    u += ((__fmul_rn(g2, m3_7) - __fmul_rn(g3, m2_7)) + __fmul_rn(g7, m2_3));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[12] = __fmul_rn(v, 0.0476190485f);
+    u = __fmul_rn(g0, (-m2_11));
+    u = __fmaf_rn(g2, m0_11, u);
+    u = __fmaf_rn(g11, -m0_2, u);
+    v = u;
+    u = __fmul_rn(g1, (-m2_10));
+    u = __fmaf_rn(g2, m1_10, u);
+    u = __fmaf_rn(g10, -m1_2, u);
+    v += (u + u);
+    u = __fmul_rn(g0, (-m5_8));
+    u = __fmaf_rn(g2, -m5_6, u);
+    u = __fmaf_rn(g5, m2_6 + m0_8, u);
+    u = __fmaf_rn(g6, -m2_5, u);
+    u = __fmaf_rn(g8, -m0_5, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g1, (m4_8));
+    u = __fmaf_rn(g2, m3_8 + m4_7, u);
+    u = __fmaf_rn(g3, -m2_8, u);
+    u = __fmaf_rn(g4, -m1_8 - m2_7, u);
+    u = __fmaf_rn(g7, m2_4, u);
+    u = __fmaf_rn(g8, m2_3 + m1_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g1, (-m5_7));
+    u = __fmaf_rn(g5, m1_7, u);
+    u = __fmaf_rn(g7, -m1_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[13] = __fmul_rn(v, 0.0714285746f);
+    const float m5_10 = __fmul_rn(x5, y10) - __fmul_rn(y5, x10);
+    u = -((__fmul_rn(g2, m5_10) - __fmul_rn(g5, m2_10)) + __fmul_rn(g10, m2_5));
+    v = u;
+    const float m5_11 = __fmul_rn(x5, y11) - __fmul_rn(y5, x11);
+    u = -((__fmul_rn(g1, m5_11) - __fmul_rn(g5, m1_11)) + __fmul_rn(g11, m1_5));
+    v += (u + u);
+    const float m4_11 = __fmul_rn(x4, y11) - __fmul_rn(y4, x11);
+    u = ((__fmul_rn(g2, m4_11) - __fmul_rn(g4, m2_11)) + __fmul_rn(g11, m2_4));
+    v += (u + u) + u;
+    const float m7_8 = __fmul_rn(x7, y8) - __fmul_rn(y7, x8);
+    u = ((__fmul_rn(g2, m7_8) - __fmul_rn(g7, m2_8)) + __fmul_rn(g8, m2_7));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((__fmul_rn(g4, m5_8) - __fmul_rn(g5, m4_8)) + __fmul_rn(g8, m4_5));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[19] = __fmul_rn(v, 0.171428576f);
+    const float m6_9 = __fmul_rn(x6, y9) - __fmul_rn(y6, x9);
+    u = ((__fmul_rn(g1, m6_9) - __fmul_rn(g6, m1_9)) + __fmul_rn(g9, m1_6));
+    v = u;
+    const float m6_10 = __fmul_rn(x6, y10) - __fmul_rn(y6, x10);
+    u = ((__fmul_rn(g0, m6_10) - __fmul_rn(g6, m0_10)) + __fmul_rn(g10, m0_6));
+    v += (u + u);
+    const float m7_9 = __fmul_rn(x7, y9) - __fmul_rn(y7, x9);
+    u = -((__fmul_rn(g0, m7_9) - __fmul_rn(g7, m0_9)) + __fmul_rn(g9, m0_7));
+    v += (u + u) + u;
+    u = -((__fmul_rn(g3, m4_9) - __fmul_rn(g4, m3_9)) + __fmul_rn(g9, m3_4));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((__fmul_rn(g3, m6_7) - __fmul_rn(g6, m3_7)) + __fmul_rn(g7, m3_6));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[20] = __fmul_rn(v, 0.171428576f);
+    u = __fmul_rn(g2, (m6_9));
+    u = __fmaf_rn(g6, -m2_9, u);
+    u = __fmaf_rn(g9, m2_6, u);
+    v = u;
+    const float m6_11 = __fmul_rn(x6, y11) - __fmul_rn(y6, x11);
+    const float m7_10 = __fmul_rn(x7, y10) - __fmul_rn(y7, x10);
+    u = __fmul_rn(g0, (m6_11 - m7_10));
+    u = __fmaf_rn(g6, -m0_11, u);
+    u = __fmaf_rn(g7, m0_10, u);
+    u = __fmaf_rn(g10, -m0_7, u);
+    u = __fmaf_rn(g11, m0_6, u);
+    v += (u + u);
+    const float m8_9 = __fmul_rn(x8, y9) - __fmul_rn(y8, x9);
+    u = __fmul_rn(g0, (-m8_9));
+    u = __fmaf_rn(g8, m0_9, u);
+    u = __fmaf_rn(g9, -m0_8, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g1, (-m7_9));
+    u = __fmaf_rn(g7, m1_9, u);
+    u = __fmaf_rn(g9, -m1_7, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (m6_10));
+    const float m5_9 = __fmul_rn(x5, y9) - __fmul_rn(y5, x9);
+    u = __fmaf_rn(g3, -m5_9, u);
+    u = __fmaf_rn(g5, m3_9, u);
+    u = __fmaf_rn(g6, -m1_10, u);
+    u = __fmaf_rn(g9, -m3_5, u);
+    u = __fmaf_rn(g10, m1_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    const float m6_8 = __fmul_rn(x6, y8) - __fmul_rn(y6, x8);
+    u = __fmul_rn(g3, (m6_8));
+    u = __fmaf_rn(g6, -m3_8, u);
+    u = __fmaf_rn(g8, m3_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    const float m4_10 = __fmul_rn(x4, y10) - __fmul_rn(y4, x10);
+    u = __fmul_rn(g3, (-m4_10));
+    u = __fmaf_rn(g4, m3_10, u);
+    u = __fmaf_rn(g10, -m3_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m6_7));
+    u = __fmaf_rn(g6, -m4_7, u);
+    u = __fmaf_rn(g7, m4_6, u);
+    v = __fmaf_rn(18.0f, u, v);
+    d[21] = __fmul_rn(v, 0.042857144f);
+    const float m3_11 = __fmul_rn(x3, y11) - __fmul_rn(y3, x11);
+    u = __fmul_rn(g0, (m3_11));
+    u = __fmaf_rn(g3, -m0_11, u);
+    u = __fmaf_rn(g11, m0_3, u);
+    v = u;
+    u = __fmul_rn(g1, (-m4_9));
+    u = __fmaf_rn(g2, m3_9, u);
+    u = __fmaf_rn(g3, -m2_9, u);
+    u = __fmaf_rn(g4, m1_9, u);
+    u = __fmaf_rn(g9, m2_3 - m1_4, u);
+    v += (u + u);
+    u = __fmul_rn(g0, (-m5_9));
+    u = __fmaf_rn(g5, m0_9, u);
+    u = __fmaf_rn(g9, -m0_5, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g0, (-m4_10));
+    u = __fmaf_rn(g4, m0_10, u);
+    u = __fmaf_rn(g10, -m0_4, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g0, (m6_8));
+    u = __fmaf_rn(g1, m3_10, u);
+    u = __fmaf_rn(g3, -m1_10, u);
+    u = __fmaf_rn(g6, -m0_8, u);
+    u = __fmaf_rn(g8, m0_6, u);
+    u = __fmaf_rn(g10, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m5_6));
+    u = __fmaf_rn(g5, m3_6, u);
+    u = __fmaf_rn(g6, -m3_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g1, (m6_7));
+    u = __fmaf_rn(g6, -m1_7, u);
+    u = __fmaf_rn(g7, m1_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m4_7));
+    u = __fmaf_rn(g4, m3_7, u);
+    u = __fmaf_rn(g7, -m3_4, u);
+    v = __fmaf_rn(18.0f, u, v);
+    d[16] = __fmul_rn(v, 0.042857144f);
+    const float m8_11 = __fmul_rn(x8, y11) - __fmul_rn(y8, x11);
+    u = __fmul_rn(g0, (-m8_11));
+    u = __fmaf_rn(g8, m0_11, u);
+    u = __fmaf_rn(g11, -m0_8, u);
+    v = u;
+    u = __fmul_rn(g2, (m7_10 - m8_9));
+    u = __fmaf_rn(g7, -m2_10, u);
+    u = __fmaf_rn(g8, m2_9, u);
+    u = __fmaf_rn(g9, -m2_8, u);
+    u = __fmaf_rn(g10, m2_7, u);
+    v += (u + u);
+    u = __fmul_rn(g2, (m6_11));
+    u = __fmaf_rn(g6, -m2_11, u);
+    u = __fmaf_rn(g11, m2_6, u);
+    v += (u + u) + u;
+    const float m7_11 = __fmul_rn(x7, y11) - __fmul_rn(y7, x11);
+    u = __fmul_rn(g1, (m7_11));
+    u = __fmaf_rn(g7, -m1_11, u);
+    u = __fmaf_rn(g11, m1_7, u);
+    v += ((u + u) + (u + u));
+    const float m8_10 = __fmul_rn(x8, y10) - __fmul_rn(y8, x10);
+    u = __fmul_rn(g1, (-m8_10));
+    u = __fmaf_rn(g3, -m5_11, u);
+    u = __fmaf_rn(g5, m3_11, u);
+    u = __fmaf_rn(g8, m1_10, u);
+    u = __fmaf_rn(g10, -m1_8, u);
+    u = __fmaf_rn(g11, -m3_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g5, (m6_8));
+    u = __fmaf_rn(g6, -m5_8, u);
+    u = __fmaf_rn(g8, m5_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g4, (-m5_10));
+    u = __fmaf_rn(g5, m4_10, u);
+    u = __fmaf_rn(g10, -m4_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m7_8));
+    u = __fmaf_rn(g7, -m4_8, u);
+    u = __fmaf_rn(g8, m4_7, u);
+    v = __fmaf_rn(18.0f, u, v);
+    d[23] = __fmul_rn(v, 0.042857144f);
+    u = -((__fmul_rn(g1, m8_11) - __fmul_rn(g8, m1_11)) + __fmul_rn(g11, m1_8));
+    v = u;
+    u = -((__fmul_rn(g2, m8_10) - __fmul_rn(g8, m2_10)) + __fmul_rn(g10, m2_8));
+    v += (u + u);
+    u = ((__fmul_rn(g2, m7_11) - __fmul_rn(g7, m2_11)) + __fmul_rn(g11, m2_7));
+    v += (u + u) + u;
+    u = -((__fmul_rn(g4, m5_11) - __fmul_rn(g5, m4_11)) + __fmul_rn(g11, m4_5));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((__fmul_rn(g5, m7_8) - __fmul_rn(g7, m5_8)) + __fmul_rn(g8, m5_7));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[24] = __fmul_rn(v, 0.171428576f);
+    const float m9_10 = __fmul_rn(x9, y10) - __fmul_rn(y9, x10);
+    u = ((__fmul_rn(g0, m9_10) - __fmul_rn(g9, m0_10)) + __fmul_rn(g10, m0_9));
+    v = u;
+    u = ((__fmul_rn(g3, m6_10) - __fmul_rn(g6, m3_10)) + __fmul_rn(g10, m3_6));
+    u += ((__fmul_rn(g4, m6_9) - __fmul_rn(g6, m4_9)) + __fmul_rn(g9, m4_6));
+    v += (u + u) + u;
+    u = -((__fmul_rn(g3, m7_9) - __fmul_rn(g7, m3_9)) + __fmul_rn(g9, m3_7));
+    u = u + u;
+    v += (u + u) + u;
+    d[25] = __fmul_rn(v, 0.285714298f);
+    const float m9_11 = __fmul_rn(x9, y11) - __fmul_rn(y9, x11);
+    u = __fmul_rn(g0, (m9_11));
+    u = __fmaf_rn(g9, -m0_11, u);
+    u = __fmaf_rn(g11, m0_9, u);
+    v = u;
+    u = __fmul_rn(g1, (m9_10));
+    u = __fmaf_rn(g9, -m1_10, u);
+    u = __fmaf_rn(g10, m1_9, u);
+    v += (u + u);
+    u = __fmul_rn(g3, (m6_11));
+    u = __fmaf_rn(g5, m6_9, u);
+    u = __fmaf_rn(g6, -m3_11 - m5_9, u);
+    u = __fmaf_rn(g9, m5_6, u);
+    u = __fmaf_rn(g11, m3_6, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m7_10 - m8_9));
+    u = __fmaf_rn(g4, -m7_9, u);
+    u = __fmaf_rn(g7, m3_10 + m4_9, u);
+    u = __fmaf_rn(g8, m3_9, u);
+    u = __fmaf_rn(g9, -m3_8 - m4_7, u);
+    u = __fmaf_rn(g10, -m3_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m6_10));
+    u = __fmaf_rn(g6, -m4_10, u);
+    u = __fmaf_rn(g10, m4_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[26] = __fmul_rn(v, 0.0714285746f);
+    const float m10_11 = __fmul_rn(x10, y11) - __fmul_rn(y10, x11);
+    u = ((__fmul_rn(g0, m10_11) - __fmul_rn(g10, m0_11)) + __fmul_rn(g11, m0_10));
+    u += ((__fmul_rn(g2, m9_10) - __fmul_rn(g9, m2_10)) + __fmul_rn(g10, m2_9));
+    v = u;
+    u = ((__fmul_rn(g1, m9_11) - __fmul_rn(g9, m1_11)) + __fmul_rn(g11, m1_9));
+    v += (u + u);
+    u = -((__fmul_rn(g3, m8_10) - __fmul_rn(g8, m3_10)) + __fmul_rn(g10, m3_8));
+    u += ((__fmul_rn(g4, m6_11) - __fmul_rn(g6, m4_11)) + __fmul_rn(g11, m4_6));
+    u -= ((__fmul_rn(g4, m8_9) - __fmul_rn(g8, m4_9)) + __fmul_rn(g9, m4_8));
+    u += ((__fmul_rn(g5, m6_10) - __fmul_rn(g6, m5_10)) + __fmul_rn(g10, m5_6));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[27] = __fmul_rn(v, 0.0476190485f);
+    u = __fmul_rn(g2, (m9_11));
+    u = __fmaf_rn(g9, -m2_11, u);
+    u = __fmaf_rn(g11, m2_9, u);
+    v = u;
+    u = __fmul_rn(g1, (m10_11));
+    u = __fmaf_rn(g10, -m1_11, u);
+    u = __fmaf_rn(g11, m1_10, u);
+    v += (u + u);
+    u = __fmul_rn(g3, (-m8_11));
+    u = __fmaf_rn(g5, -m8_9, u);
+    u = __fmaf_rn(g8, m3_11 + m5_9, u);
+    u = __fmaf_rn(g9, -m5_8, u);
+    u = __fmaf_rn(g11, -m3_8, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m7_11));
+    u = __fmaf_rn(g5, m6_11 + m7_10, u);
+    u = __fmaf_rn(g6, -m5_11, u);
+    u = __fmaf_rn(g7, -m4_11 - m5_10, u);
+    u = __fmaf_rn(g10, m5_7, u);
+    u = __fmaf_rn(g11, m4_7 + m5_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (-m8_10));
+    u = __fmaf_rn(g8, m4_10, u);
+    u = __fmaf_rn(g10, -m4_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[28] = __fmul_rn(v, 0.0714285746f);
+    u = ((__fmul_rn(g2, m10_11) - __fmul_rn(g10, m2_11)) + __fmul_rn(g11, m2_10));
+    v = u;
+    u = -((__fmul_rn(g4, m8_11) - __fmul_rn(g8, m4_11)) + __fmul_rn(g11, m4_8));
+    u -= ((__fmul_rn(g5, m8_10) - __fmul_rn(g8, m5_10)) + __fmul_rn(g10, m5_8));
+    v += (u + u) + u;
+    u = ((__fmul_rn(g5, m7_11) - __fmul_rn(g7, m5_11)) + __fmul_rn(g11, m5_7));
+    u = u + u;
+    v += (u + u) + u;
+    d[29] = __fmul_rn(v, 0.285714298f);
+    u = ((__fmul_rn(g3, m9_10) - __fmul_rn(g9, m3_10)) + __fmul_rn(g10, m3_9));
+    v = (u + u);
+    u = -((__fmul_rn(g6, m7_9) - __fmul_rn(g7, m6_9)) + __fmul_rn(g9, m6_7));
+    v += (u + u) + u;
+    d[30] = __fmul_rn(v, 0.857142866f);
+    u = __fmul_rn(g3, (m9_11));
+    u = __fmaf_rn(g9, -m3_11, u);
+    u = __fmaf_rn(g11, m3_9, u);
+    v = (u + u);
+    u = __fmul_rn(g6, (-m8_9));
+    u = __fmaf_rn(g8, m6_9, u);
+    u = __fmaf_rn(g9, -m6_8, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m9_10));
+    u = __fmaf_rn(g9, -m4_10, u);
+    u = __fmaf_rn(g10, m4_9, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g6, (-m7_10));
+    u = __fmaf_rn(g7, m6_10, u);
+    u = __fmaf_rn(g10, -m6_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    d[31] = __fmul_rn(v, 0.214285716f);
+    u = ((__fmul_rn(g3, m10_11) - __fmul_rn(g10, m3_11)) + __fmul_rn(g11, m3_10));
+    u += ((__fmul_rn(g5, m9_10) - __fmul_rn(g9, m5_10)) + __fmul_rn(g10, m5_9));
+    v = (u + u);
+    u = -((__fmul_rn(g6, m7_11) - __fmul_rn(g7, m6_11)) + __fmul_rn(g11, m6_7));
+    u -= ((__fmul_rn(g7, m8_9) - __fmul_rn(g8, m7_9)) + __fmul_rn(g9, m7_8));
+    v += (u + u) + u;
+    u = ((__fmul_rn(g4, m9_11) - __fmul_rn(g9, m4_11)) + __fmul_rn(g11, m4_9));
+    v += ((u + u) + (u + u));
+    u = -((__fmul_rn(g6, m8_10) - __fmul_rn(g8, m6_10)) + __fmul_rn(g10, m6_8));
+    u = u + u;
+    v += (u + u) + u;
+    d[32] = __fmul_rn(v, 0.142857149f);
+    u = __fmul_rn(g5, (m9_11));
+    u = __fmaf_rn(g9, -m5_11, u);
+    u = __fmaf_rn(g11, m5_9, u);
+    v = (u + u);
+    u = __fmul_rn(g6, (-m8_11));
+    u = __fmaf_rn(g8, m6_11, u);
+    u = __fmaf_rn(g11, -m6_8, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m10_11));
+    u = __fmaf_rn(g10, -m4_11, u);
+    u = __fmaf_rn(g11, m4_10, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g7, (-m8_10));
+    u = __fmaf_rn(g8, m7_10, u);
+    u = __fmaf_rn(g10, -m7_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    d[33] = __fmul_rn(v, 0.214285716f);
+    u = ((__fmul_rn(g5, m10_11) - __fmul_rn(g10, m5_11)) + __fmul_rn(g11, m5_10));
+    v = (u + u);
+    u = -((__fmul_rn(g7, m8_11) - __fmul_rn(g8, m7_11)) + __fmul_rn(g11, m7_8));
+    v += (u + u) + u;
+    d[34] = __fmul_rn(v, 0.857142866f);
+    u = ((__fmul_rn(g6, m9_10) - __fmul_rn(g9, m6_10)) + __fmul_rn(g10, m6_9));
+    v = u;
+    d[35] = __fmul_rn(v, 6.0f);
+    u = ((__fmul_rn(g6, m9_11) - __fmul_rn(g9, m6_11)) + __fmul_rn(g11, m6_9));
+    v = u;
+    u = ((__fmul_rn(g7, m9_10) - __fmul_rn(g9, m7_10)) + __fmul_rn(g10, m7_9));
+    v += (u + u);
+    d[36] = __fmul_rn(v, 1.5f);
+    u = ((__fmul_rn(g6, m10_11) - __fmul_rn(g10, m6_11)) + __fmul_rn(g11, m6_10));
+    u += ((__fmul_rn(g8, m9_10) - __fmul_rn(g9, m8_10)) + __fmul_rn(g10, m8_9));
+    v = u;
+    u = ((__fmul_rn(g7, m9_11) - __fmul_rn(g9, m7_11)) + __fmul_rn(g11, m7_9));
+    v += (u + u);
+    d[37] = v;
+    u = ((__fmul_rn(g8, m9_11) - __fmul_rn(g9, m8_11)) + __fmul_rn(g11, m8_9));
+    v = u;
+    u = ((__fmul_rn(g7, m10_11) - __fmul_rn(g10, m7_11)) + __fmul_rn(g11, m7_10));
+    v += (u + u);
+    d[38] = __fmul_rn(v, 1.5f);
+    u = ((__fmul_rn(g8, m10_11) - __fmul_rn(g10, m8_11)) + __fmul_rn(g11, m8_10));
+    v = u;
+    d[39] = __fmul_rn(v, 6.0f);
+    u = __fmul_rn(g2, (-m5_9));
+    u = __fmaf_rn(g5, m2_9, u);
+    u = __fmaf_rn(g9, -m2_5, u);
+    v = u;
+    u = __fmul_rn(g0, (-m5_11));
+    u = __fmaf_rn(g1, m4_11, u);
+    u = __fmaf_rn(g4, -m1_11, u);
+    u = __fmaf_rn(g5, m0_11, u);
+    u = __fmaf_rn(g11, m1_4 - m0_5, u);
+    v += (u + u);
+    u = __fmul_rn(g2, (m3_11));
+    u = __fmaf_rn(g3, -m2_11, u);
+    u = __fmaf_rn(g11, m2_3, u);
+    v += (u + u) + u;
+    u = __fmul_rn(g2, (m4_10));
+    u = __fmaf_rn(g4, -m2_10, u);
+    u = __fmaf_rn(g10, m2_4, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (-m5_10));
+    u = __fmaf_rn(g2, m6_8, u);
+    u = __fmaf_rn(g5, m1_10, u);
+    u = __fmaf_rn(g6, -m2_8, u);
+    u = __fmaf_rn(g8, m2_6, u);
+    u = __fmaf_rn(g10, -m1_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m5_8));
+    u = __fmaf_rn(g5, m3_8, u);
+    u = __fmaf_rn(g8, -m3_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g1, (m7_8));
+    u = __fmaf_rn(g7, -m1_8, u);
+    u = __fmaf_rn(g8, m1_7, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (-m5_7));
+    u = __fmaf_rn(g5, m4_7, u);
+    u = __fmaf_rn(g7, -m4_5, u);
+    v = __fmaf_rn(18.0f, u, v);
+    d[18] = __fmul_rn(v, 0.042857144f);
+    u = __fmul_rn(g0, (-m4_11));
+    u = __fmaf_rn(g2, m4_9, u);
+    u = __fmaf_rn(g4, m0_11 - m2_9, u);
+    u = __fmaf_rn(g9, m2_4, u);
+    u = __fmaf_rn(g11, -m0_4, u);
+    v = u;
+    u = __fmul_rn(g1, (m3_11 - m5_9));
+    u = __fmaf_rn(g3, -m1_11, u);
+    u = __fmaf_rn(g5, m1_9, u);
+    u = __fmaf_rn(g9, -m1_5, u);
+    u = __fmaf_rn(g11, m1_3, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g0, (-m5_10));
+    u = __fmaf_rn(g2, m3_10, u);
+    u = __fmaf_rn(g3, -m2_10, u);
+    u = __fmaf_rn(g5, m0_10, u);
+    u = __fmaf_rn(g10, m2_3 - m0_5, u);
+    v += ((u + u) + (u + u)) + u;
+    u = __fmul_rn(g0, (m7_8));
+    u = __fmaf_rn(g2, m6_7, u);
+    u = __fmaf_rn(g6, -m2_7, u);
+    u = __fmaf_rn(g7, m2_6 - m0_8, u);
+    u = __fmaf_rn(g8, m0_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m4_8));
+    u = __fmaf_rn(g4, m3_8 - m5_6, u);
+    u = __fmaf_rn(g5, m4_6, u);
+    u = __fmaf_rn(g6, -m4_5, u);
+    u = __fmaf_rn(g8, -m3_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g1, (m6_8));
+    u = __fmaf_rn(g6, -m1_8, u);
+    u = __fmaf_rn(g8, m1_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (-m5_7));
+    u = __fmaf_rn(g5, m3_7, u);
+    u = __fmaf_rn(g7, -m3_5, u);
+    v = __fmaf_rn(18.0f, u, v);
+    d[17] = __fmul_rn(v, 0.0285714287f);
+    u = __fmul_rn(g0, (m7_11));
+    u = __fmaf_rn(g2, -m7_9, u);
+    u = __fmaf_rn(g7, m2_9 - m0_11, u);
+    u = __fmaf_rn(g9, -m2_7, u);
+    u = __fmaf_rn(g11, m0_7, u);
+    v = u;
+    u = __fmul_rn(g0, (-m8_10));
+    u = __fmaf_rn(g2, m6_10, u);
+    u = __fmaf_rn(g6, -m2_10, u);
+    u = __fmaf_rn(g8, m0_10, u);
+    u = __fmaf_rn(g10, m2_6 - m0_8, u);
+    v += ((u + u) + (u + u));
+    u = __fmul_rn(g1, (m6_11 - m8_9));
+    u = __fmaf_rn(g6, -m1_11, u);
+    u = __fmaf_rn(g8, m1_9, u);
+    u = __fmaf_rn(g9, -m1_8, u);
+    u = __fmaf_rn(g11, m1_6, u);
+    v += ((u + u) + (u + u)) + u;
+    u = __fmul_rn(g3, (-m4_11));
+    u = __fmaf_rn(g4, m3_11 - m5_9, u);
+    u = __fmaf_rn(g5, m4_9, u);
+    u = __fmaf_rn(g9, -m4_5, u);
+    u = __fmaf_rn(g11, -m3_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g3, (m7_8));
+    u = __fmaf_rn(g5, m6_7, u);
+    u = __fmaf_rn(g6, -m5_7, u);
+    u = __fmaf_rn(g7, m5_6 - m3_8, u);
+    u = __fmaf_rn(g8, m3_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = __fmul_rn(g3, (-m5_10));
+    u = __fmaf_rn(g5, m3_10, u);
+    u = __fmaf_rn(g10, -m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = __fmul_rn(g4, (m6_8));
+    u = __fmaf_rn(g6, -m4_8, u);
+    u = __fmaf_rn(g8, m4_6, u);
+    v = __fmaf_rn(18.0f, u, v);
+    d[22] = __fmul_rn(v, 0.0285714287f);
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-static __device__ unsigned ptp_3x2_class_of(unsigned f)
-{
-    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;
-}
-
-extern "C" __global__ void __launch_bounds__(128)
+extern "C" __global__ void __launch_bounds__(64)
 ptp_3x2_classify(const float4 *cp, unsigned *cls, float *planes, float4 eye, unsigned patch_count)
 {
-    __shared__ float4 pts[PTP_3X2_Q * PTP_3X2_K];
-    __shared__ float acc[PTP_3X2_Q * PTP_3X2_L];
-    __shared__ unsigned flags[PTP_3X2_Q * PTP_3X2_P];
-    unsigned lid = threadIdx.x, q = lid / PTP_3X2_P, t = lid % PTP_3X2_P, i, pj, kl;
-    unsigned pid = (blockIdx.y * gridDim.x + blockIdx.x) * PTP_3X2_Q + q;
-    unsigned f = 0u;
-    bool live = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_3X2_K; i += PTP_3X2_P)
-        if (live)
-            pts[q * PTP_3X2_K + i] = cp[pid * PTP_3X2_K + i];
-    __syncthreads();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_3x2_own_start[t]; i < ptp_3x2_own_start[t + 1u]; i++)
-        acc[q * PTP_3X2_L + ptp_3x2_own_plane[i]] = 0.0f;
-    pj = ptp_3x2_pj0[t];
-    kl = ptp_3x2_kl0[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w0[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj1[t];
-    kl = ptp_3x2_kl1[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w1[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj2[t];
-    kl = ptp_3x2_kl2[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w2[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj3[t];
-    kl = ptp_3x2_kl3[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w3[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj4[t];
-    kl = ptp_3x2_kl4[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w4[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj5[t];
-    kl = ptp_3x2_kl5[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w5[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj6[t];
-    kl = ptp_3x2_kl6[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w6[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj7[t];
-    kl = ptp_3x2_kl7[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w7[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj8[t];
-    kl = ptp_3x2_kl8[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w8[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj9[t];
-    kl = ptp_3x2_kl9[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w9[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj10[t];
-    kl = ptp_3x2_kl10[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w10[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj11[t];
-    kl = ptp_3x2_kl11[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w11[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-    pj = ptp_3x2_pj12[t];
-    kl = ptp_3x2_kl12[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += __fmul_rn(ptp_3x2_w12[t],
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]));
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_3x2_own_start[t]; i < ptp_3x2_own_start[t + 1u]; i++) {
-        unsigned plane = ptp_3x2_own_plane[i];
-        float d = __fmul_rn(eye.z, acc[q * PTP_3X2_L + plane]);
-        f |= ptp_3x2_flags(d);
-    }
-    flags[q * PTP_3X2_P + t] = f;
-    __syncthreads();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_3X2_P; i++)
-            f |= flags[q * PTP_3X2_P + i];
-        cls[pid] = ptp_3x2_class_of(f);
-    }
+    unsigned pid = (blockIdx.y * gridDim.x + blockIdx.x) * PTP_3X2_Q + threadIdx.x;
+    float4 p[PTP_3X2_K];
+    if (pid >= patch_count)
+        return;
+    p[0] = cp[pid * PTP_3X2_K + 0u];
+    p[1] = cp[pid * PTP_3X2_K + 1u];
+    p[2] = cp[pid * PTP_3X2_K + 2u];
+    p[3] = cp[pid * PTP_3X2_K + 3u];
+    p[4] = cp[pid * PTP_3X2_K + 4u];
+    p[5] = cp[pid * PTP_3X2_K + 5u];
+    p[6] = cp[pid * PTP_3X2_K + 6u];
+    p[7] = cp[pid * PTP_3X2_K + 7u];
+    p[8] = cp[pid * PTP_3X2_K + 8u];
+    p[9] = cp[pid * PTP_3X2_K + 9u];
+    p[10] = cp[pid * PTP_3X2_K + 10u];
+    p[11] = cp[pid * PTP_3X2_K + 11u];
+    cls[pid] = ptp_3x2_classify_patch(p, eye);
 }

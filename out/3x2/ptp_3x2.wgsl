@@ -20,7 +20,7 @@
  * rest of the padding, must be 0). Entry point main. Dispatch ceil(patch_count / Q)
  * workgroups, in 2-D (x, y) when x would exceed the limit: workgroup (x, y) handles the
  * patches of block y * num_workgroups.x + x.
- * Schedule: 16 threads per patch, 8 patches per workgroup (128 threads), 13 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 struct Params {
@@ -44,333 +44,1585 @@ fn sub_rn(b: vec4<f32>, a: vec4<f32>) -> vec4<f32> {
     return bitcast<vec4<f32>>(bitcast<vec4<u32>>(b - a) ^ vec4<u32>(params.zero));
 }
 
-const PTP_3X2_P: u32 = 16u; /* threads per patch */
-const PTP_3X2_Q: u32 = 8u; /* patches per workgroup */
+const PTP_3X2_P: u32 = 1u; /* threads per patch */
+const PTP_3X2_Q: u32 = 64u; /* patches per workgroup */
 const PTP_3X2_K: u32 = 12u; /* control points per patch */
 const PTP_3X2_L: u32 = 40u; /* control planes per patch */
-/* 13 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-const ptp_3x2_own_start: array<u32, 17> = array<u32, 17>(
-    0u, 2u, 4u, 6u, 8u, 11u, 14u, 16u, 18u, 20u, 22u, 25u, 28u, 31u, 34u, 37u,
-    40u
-);
-const ptp_3x2_own_plane: array<u32, 40> = array<u32, 40>(
-    0u, 17u, 4u, 22u, 2u, 16u, 18u, 37u, 1u, 21u, 35u, 3u, 23u, 39u, 11u, 25u,
-    13u, 29u, 26u, 31u, 28u, 33u, 10u, 12u, 36u, 14u, 27u, 38u, 5u, 6u, 7u, 8u,
-    9u, 32u, 15u, 20u, 30u, 19u, 24u, 34u
-);
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-const ptp_3x2_pj0: array<u32, 16> = array<u32, 16>(
-    0x00000u, 0x10004u, 0x00002u, 0x00012u, 0x00001u, 0x00003u, 0x0000bu, 0x0000du,
-    0x0001au, 0x1001cu, 0x0000au, 0x1000eu, 0x00005u, 0x00008u, 0x0000fu, 0x10013u
-);
-const ptp_3x2_kl0: array<u32, 16> = array<u32, 16>(
-    0x30001u, 0x50002u, 0x50001u, 0xb0005u, 0x40001u, 0x50002u, 0xa0001u, 0xb0002u,
-    0xb0009u, 0xb000au, 0x90001u, 0xb0002u, 0x60001u, 0x80002u, 0xa0003u, 0xb0005u
-);
-const ptp_3x2_w0: array<f32, 16> = array<f32, 16>(
-    -6.0f, -6.0f, -1.0f, -0.0857142881f, -3.0f, -1.5f, -0.142857149f, -0.0714285746f,
-    0.0714285746f, 0.142857149f, -0.285714298f, -0.285714298f, -1.71428573f, -0.428571433f, 0.171428576f, -0.342857152f
-);
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-const ptp_3x2_pj1: array<u32, 16> = array<u32, 16>(
-    0x00011u, 0x00016u, 0x00002u, 0x10012u, 0x00001u, 0x10003u, 0x0000bu, 0x0000du,
-    0x1001au, 0x2001cu, 0x0000au, 0x1000eu, 0x00005u, 0x10008u, 0x0000fu, 0x20013u
-);
-const ptp_3x2_kl1: array<u32, 16> = array<u32, 16>(
-    0xb0004u, 0xb0007u, 0x40002u, 0xb0004u, 0x30002u, 0x40002u, 0x90002u, 0x80005u,
-    0xa0009u, 0xb0009u, 0x70003u, 0x80005u, 0x40003u, 0x70002u, 0x90004u, 0xb0004u
-);
-const ptp_3x2_w1: array<f32, 16> = array<f32, 16>(
-    -0.0285714287f, 0.0285714287f, -2.0f, 0.0857142881f, -1.5f, -3.0f, -0.0714285746f, -0.214285716f,
-    0.142857149f, 0.0714285746f, 0.857142866f, -0.857142866f, 2.57142854f, -0.857142866f, -0.514285743f, 0.514285743f
-);
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-const ptp_3x2_pj2: array<u32, 16> = array<u32, 16>(
-    0x00011u, 0x00016u, 0x10002u, 0x10012u, 0x00015u, 0x00017u, 0x0000bu, 0x1000du,
-    0x3001au, 0x3001cu, 0x0000au, 0x2000eu, 0x00006u, 0x10008u, 0x0000fu, 0x20013u
-);
-const ptp_3x2_kl2: array<u32, 16> = array<u32, 16>(
-    0xa0005u, 0xa0008u, 0x30002u, 0xa0005u, 0xb0006u, 0xb0008u, 0x80003u, 0xa0002u,
-    0xb0006u, 0xb0008u, 0x60004u, 0x80004u, 0x70001u, 0x50004u, 0x70006u, 0xa0005u
-);
-const ptp_3x2_w2: array<f32, 16> = array<f32, 16>(
-    -0.142857149f, -0.114285715f, -1.0f, -0.257142872f, 0.0857142881f, -0.042857144f, 0.214285716f, -0.142857149f,
-    0.214285716f, -0.214285716f, -1.71428573f, 1.71428573f, -0.857142866f, 1.28571427f, 1.02857149f, -0.171428576f
-);
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-const ptp_3x2_pj3: array<u32, 16> = array<u32, 16>(
-    0x00011u, 0x10016u, 0x00010u, 0x10012u, 0x00015u, 0x10017u, 0x0000bu, 0x1000du,
-    0x3001au, 0x4001cu, 0x1000au, 0x2000eu, 0x00006u, 0x20008u, 0x1000fu, 0x20013u
-);
-const ptp_3x2_kl3: array<u32, 16> = array<u32, 16>(
-    0x80007u, 0xb0006u, 0xb0003u, 0x80007u, 0xa0007u, 0xb0007u, 0x70004u, 0x80004u,
-    0xa0007u, 0xb0007u, 0x60003u, 0x70005u, 0x60002u, 0x50003u, 0x90003u, 0x80007u
-);
-const ptp_3x2_w3: array<f32, 16> = array<f32, 16>(
-    0.171428576f, 0.142857149f, 0.042857144f, 0.514285743f, -0.0857142881f, 0.171428576f, -0.428571433f, 0.428571433f,
-    -0.428571433f, 0.428571433f, 0.857142866f, -0.857142866f, -0.428571433f, 0.642857134f, 0.342857152f, 1.02857149f
-);
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-const ptp_3x2_pj4: array<u32, 16> = array<u32, 16>(
-    0x10011u, 0x10016u, 0x00010u, 0x20012u, 0x00015u, 0x10017u, 0x0000bu, 0x1000du,
-    0x3001au, 0x4001cu, 0x0000cu, 0x0001bu, 0x00006u, 0x10009u, 0x3000fu, 0x40013u
-);
-const ptp_3x2_kl4: array<u32, 16> = array<u32, 16>(
-    0xb0003u, 0x90008u, 0xa0004u, 0xb0003u, 0x90008u, 0xa0008u, 0x60005u, 0x70005u,
-    0x90008u, 0xa0008u, 0xb0001u, 0xb000au, 0x50003u, 0x80002u, 0x60004u, 0x80005u
-);
-const ptp_3x2_w4: array<f32, 16> = array<f32, 16>(
-    0.114285715f, -0.142857149f, -0.171428576f, 0.128571436f, -0.128571436f, -0.257142872f, -0.428571433f, -0.857142866f,
-    -0.428571433f, -0.857142866f, -0.0476190485f, 0.0476190485f, 0.642857134f, -1.71428573f, -1.54285717f, -1.54285717f
-);
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-const ptp_3x2_pj5: array<u32, 16> = array<u32, 16>(
-    0x10011u, 0x20016u, 0x00010u, 0x20012u, 0x10015u, 0x20017u, 0x1000bu, 0x2000du,
-    0x4001au, 0x5001cu, 0x0000cu, 0x1001bu, 0x10006u, 0x20009u, 0x00014u, 0x10018u
-);
-const ptp_3x2_kl5: array<u32, 16> = array<u32, 16>(
-    0x90005u, 0xa0006u, 0x90005u, 0xa0004u, 0xa0006u, 0xb0006u, 0x70003u, 0x80003u,
-    0xa0006u, 0xb0006u, 0xa0002u, 0xb0009u, 0x40003u, 0x50004u, 0xa0006u, 0xb0008u
-);
-const ptp_3x2_w5: array<f32, 16> = array<f32, 16>(
-    -0.114285715f, 0.114285715f, -0.128571436f, 0.171428576f, 0.257142872f, 0.128571436f, 0.857142866f, 0.428571433f,
-    0.857142866f, 0.428571433f, -0.095238097f, 0.095238097f, 1.28571427f, 2.57142854f, 0.342857152f, -0.171428576f
-);
-
-/* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-const ptp_3x2_pj6: array<u32, 16> = array<u32, 16>(
-    0x10011u, 0x20016u, 0x00010u, 0x20012u, 0x10015u, 0x20017u, 0x1000bu, 0x2000du,
-    0x4001au, 0x5001cu, 0x0000cu, 0x2001bu, 0x00007u, 0x30020u, 0x00014u, 0x20018u
-);
-const ptp_3x2_kl6: array<u32, 16> = array<u32, 16>(
-    0x80006u, 0x90007u, 0x80006u, 0x90005u, 0x90007u, 0xa0007u, 0x60004u, 0x70004u,
-    0x90007u, 0xa0007u, 0x70005u, 0xa0009u, 0x80001u, 0xb000au, 0x90007u, 0xb0007u
-);
-const ptp_3x2_w6: array<f32, 16> = array<f32, 16>(
-    0.342857152f, -0.0285714287f, 0.257142872f, -0.042857144f, -0.171428576f, 0.0857142881f, -0.428571433f, 0.428571433f,
-    -0.428571433f, 0.428571433f, -0.428571433f, 0.0476190485f, -0.285714298f, 0.285714298f, -0.514285743f, 0.514285743f
-);
-
-/* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-const ptp_3x2_pj7: array<u32, 16> = array<u32, 16>(
-    0x20011u, 0x30016u, 0x10010u, 0x20012u, 0x20015u, 0x20017u, 0x2000bu, 0x2000du,
-    0x5001au, 0x5001cu, 0x1000cu, 0x3001bu, 0x00007u, 0x40020u, 0x10014u, 0x20018u
-);
-const ptp_3x2_kl7: array<u32, 16> = array<u32, 16>(
-    0xa0003u, 0xb0004u, 0xa0003u, 0x80006u, 0x90006u, 0x90008u, 0x60003u, 0x60005u,
-    0x90006u, 0x90008u, 0x90002u, 0xa0008u, 0x70002u, 0xb0009u, 0x90006u, 0xa0008u
-);
-const ptp_3x2_w7: array<f32, 16> = array<f32, 16>(
-    0.142857149f, -0.171428576f, 0.257142872f, 0.257142872f, 0.042857144f, -0.0857142881f, 0.214285716f, -0.214285716f,
-    0.214285716f, -0.214285716f, -0.0476190485f, -0.428571433f, -0.571428597f, 0.571428597f, 0.171428576f, -0.342857152f
-);
-
-/* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-const ptp_3x2_pj8: array<u32, 16> = array<u32, 16>(
-    0x20011u, 0x30016u, 0x10010u, 0x30012u, 0x30015u, 0x30017u, 0x00019u, 0x2001du,
-    0x3001fu, 0x40021u, 0x1000cu, 0x4001bu, 0x00007u, 0x50020u, 0x30014u, 0x40018u
-);
-const ptp_3x2_kl8: array<u32, 16> = array<u32, 16>(
-    0x90004u, 0xa0005u, 0x90004u, 0x80005u, 0xa0004u, 0xb0005u, 0xa0009u, 0xb000au,
-    0xb0009u, 0xb000au, 0x80003u, 0xb0006u, 0x50004u, 0xa0009u, 0x90004u, 0xb0005u
-);
-const ptp_3x2_w8: array<f32, 16> = array<f32, 16>(
-    0.0285714287f, -0.342857152f, -0.0857142881f, -0.385714293f, -0.514285743f, -0.257142872f, 0.285714298f, 0.285714298f,
-    0.428571433f, 0.857142866f, 0.428571433f, 0.428571433f, 0.428571433f, 0.285714298f, -1.02857149f, -1.02857149f
-);
-
-/* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-const ptp_3x2_pj9: array<u32, 16> = array<u32, 16>(
-    0x20011u, 0x30016u, 0x10010u, 0x40012u, 0x30015u, 0x40017u, 0x30019u, 0x4001du,
-    0x4001fu, 0x50021u, 0x1000cu, 0x4001bu, 0x10007u, 0x60020u, 0x30014u, 0x50018u
-);
-const ptp_3x2_kl9: array<u32, 16> = array<u32, 16>(
-    0x70006u, 0x80007u, 0x70006u, 0x70005u, 0x90005u, 0xa0005u, 0xa0006u, 0xb0008u,
-    0xa0009u, 0xb0009u, 0x60005u, 0x90008u, 0x60002u, 0xb0007u, 0x70006u, 0x80007u
-);
-const ptp_3x2_w9: array<f32, 16> = array<f32, 16>(
-    0.171428576f, 0.257142872f, 0.514285743f, -0.771428585f, -0.257142872f, -0.514285743f, 0.857142866f, -0.857142866f,
-    0.857142866f, 0.428571433f, -0.428571433f, -0.428571433f, -0.285714298f, -0.428571433f, 1.54285717f, 1.54285717f
-);
-
-/* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-const ptp_3x2_pj10: array<u32, 16> = array<u32, 16>(
-    0x30011u, 0x40016u, 0x20010u, 0x60025u, 0x30015u, 0x40017u, 0x30019u, 0x5001du,
-    0x6001fu, 0x60021u, 0x2000cu, 0x5001bu, 0x10007u, 0x60020u, 0x3001eu, 0x50022u
-);
-const ptp_3x2_kl10: array<u32, 16> = array<u32, 16>(
-    0x80004u, 0x90005u, 0x90003u, 0xb000au, 0x80006u, 0x80007u, 0x90007u, 0xb0007u,
-    0xa0007u, 0xb0008u, 0x70003u, 0xa0006u, 0x50003u, 0xa0008u, 0xa0009u, 0xb000au
-);
-const ptp_3x2_w10: array<f32, 16> = array<f32, 16>(
-    -0.257142872f, -0.171428576f, 0.0857142881f, 1.0f, 0.385714293f, 0.771428585f, -1.71428573f, 1.71428573f,
-    -1.28571427f, -0.642857134f, 0.428571433f, 0.428571433f, 0.857142866f, -0.857142866f, 1.71428573f, 1.71428573f
-);
-
-/* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-const ptp_3x2_pj11: array<u32, 16> = array<u32, 16>(
-    0x30011u, 0x40016u, 0x30010u, 0x70025u, 0x40015u, 0x50017u, 0x40019u, 0x5001du,
-    0x6001fu, 0x70021u, 0x60024u, 0x70026u, 0x20007u, 0x70020u, 0x6001eu, 0x70022u
-);
-const ptp_3x2_kl11: array<u32, 16> = array<u32, 16>(
-    0x70005u, 0x80006u, 0x70004u, 0xb0009u, 0x70006u, 0x80006u, 0x90006u, 0xa0008u,
-    0x90008u, 0xa0008u, 0xb0009u, 0xb000au, 0x40003u, 0x90008u, 0x90007u, 0xb0008u
-);
-const ptp_3x2_w11: array<f32, 16> = array<f32, 16>(
-    -0.514285743f, 0.514285743f, -0.771428585f, 2.0f, 0.771428585f, 0.385714293f, 0.857142866f, -0.857142866f,
-    -0.642857134f, -1.28571427f, 1.5f, 3.0f, 0.428571433f, -0.428571433f, -2.57142854f, -2.57142854f
-);
-
-/* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-const ptp_3x2_pj12: array<u32, 16> = array<u32, 16>(
-    0x40011u, 0x50016u, 0x30010u, 0x80025u, 0x60023u, 0x80027u, 0x0000bu, 0x0000du,
-    0x0001au, 0x0001cu, 0x70024u, 0x80026u, 0x00005u, 0x00008u, 0x0000fu, 0x00013u
-);
-const ptp_3x2_kl12: array<u32, 16> = array<u32, 16>(
-    0x60005u, 0x70006u, 0x60005u, 0xa0009u, 0xa0009u, 0xb000au, 0x00000u, 0x00000u,
-    0x00000u, 0x00000u, 0xa0009u, 0xb0009u, 0x00000u, 0x00000u, 0x00000u, 0x00000u
-);
-const ptp_3x2_w12: array<f32, 16> = array<f32, 16>(
-    -0.257142872f, 0.257142872f, -0.385714293f, 1.0f, 6.0f, 6.0f, 0.0f, 0.0f,
-    0.0f, 0.0f, 3.0f, 1.5f, 0.0f, 0.0f, 0.0f, 0.0f
-);
-
-var<workgroup> pts: array<vec4<f32>, PTP_3X2_Q * PTP_3X2_K>;
-var<workgroup> acc: array<f32, PTP_3X2_Q * PTP_3X2_L>;
-var<workgroup> flags: array<u32, PTP_3X2_Q * PTP_3X2_P>;
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-fn ptp_3x2_cross4z(a: vec4<f32>, b: vec4<f32>, c: vec4<f32>) -> f32 {
-    let z: f32 = mul_rn(a.x, (mul_rn(b.y, c.w) - mul_rn(b.w, c.y))) -
-        mul_rn(b.x, (mul_rn(a.y, c.w) - mul_rn(a.w, c.y))) +
-        mul_rn(c.x, (mul_rn(a.y, b.w) - mul_rn(a.w, b.y)));
-    return z;
+/* x * y rounded to a float: through an integer XOR with zero, 0 at run time but unknown to
+ * the compiler, which no FMA contraction can cross (WGSL has no `precise`). */
+fn ptp_3x2_mul_rn(x: f32, y: f32, zero: u32) -> f32 {
+    return bitcast<f32>(bitcast<u32>(x * y) ^ zero);
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-fn ptp_3x2_flags(d: f32) -> u32 {
-    return (select(1u, 0u, d < 0.0f)) | (select(2u, 0u, d > 0.0f));
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -> u32 {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    var lt: bool;
+    var gt: bool;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_3x2_mul_rn(e2, w1, zero);
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_3x2_mul_rn(e2, w3, zero);
+    let m1_3 = ptp_3x2_mul_rn(x1, y3, zero) - ptp_3x2_mul_rn(y1, x3, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_3x2_mul_rn(e2, w0, zero);
+    let m0_3 = ptp_3x2_mul_rn(x0, y3, zero) - ptp_3x2_mul_rn(y0, x3, zero);
+    let m0_1 = ptp_3x2_mul_rn(x0, y1, zero) - ptp_3x2_mul_rn(y0, x1, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_3, zero) - ptp_3x2_mul_rn(g1, m0_3, zero)) + ptp_3x2_mul_rn(g3, m0_1, zero));
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_3x2_mul_rn(e2, w2, zero);
+    let x5 = cp[5].x;
+    let y5 = cp[5].y;
+    let w5 = cp[5].w;
+    let g5 = ptp_3x2_mul_rn(e2, w5, zero);
+    let m2_5 = ptp_3x2_mul_rn(x2, y5, zero) - ptp_3x2_mul_rn(y2, x5, zero);
+    let m1_5 = ptp_3x2_mul_rn(x1, y5, zero) - ptp_3x2_mul_rn(y1, x5, zero);
+    let m1_2 = ptp_3x2_mul_rn(x1, y2, zero) - ptp_3x2_mul_rn(y1, x2, zero);
+    u = -((ptp_3x2_mul_rn(g1, m2_5, zero) - ptp_3x2_mul_rn(g2, m1_5, zero)) + ptp_3x2_mul_rn(g5, m1_2, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    let m2_3 = ptp_3x2_mul_rn(x2, y3, zero) - ptp_3x2_mul_rn(y2, x3, zero);
+    let m0_2 = ptp_3x2_mul_rn(x0, y2, zero) - ptp_3x2_mul_rn(y0, x2, zero);
+    u = -((ptp_3x2_mul_rn(g0, m2_3, zero) - ptp_3x2_mul_rn(g2, m0_3, zero)) + ptp_3x2_mul_rn(g3, m0_2, zero));
+    v = u;
+    let x4 = cp[4].x;
+    let y4 = cp[4].y;
+    let w4 = cp[4].w;
+    let g4 = ptp_3x2_mul_rn(e2, w4, zero);
+    let m1_4 = ptp_3x2_mul_rn(x1, y4, zero) - ptp_3x2_mul_rn(y1, x4, zero);
+    let m0_4 = ptp_3x2_mul_rn(x0, y4, zero) - ptp_3x2_mul_rn(y0, x4, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_4, zero) - ptp_3x2_mul_rn(g1, m0_4, zero)) + ptp_3x2_mul_rn(g4, m0_1, zero));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    let m0_5 = ptp_3x2_mul_rn(x0, y5, zero) - ptp_3x2_mul_rn(y0, x5, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_5, zero) - ptp_3x2_mul_rn(g1, m0_5, zero)) + ptp_3x2_mul_rn(g5, m0_1, zero));
+    u -= ((ptp_3x2_mul_rn(g1, m2_3, zero) - ptp_3x2_mul_rn(g2, m1_3, zero)) + ptp_3x2_mul_rn(g3, m1_2, zero));
+    v = u;
+    let m2_4 = ptp_3x2_mul_rn(x2, y4, zero) - ptp_3x2_mul_rn(y2, x4, zero);
+    u = -((ptp_3x2_mul_rn(g0, m2_4, zero) - ptp_3x2_mul_rn(g2, m0_4, zero)) + ptp_3x2_mul_rn(g4, m0_2, zero));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    u = -((ptp_3x2_mul_rn(g0, m2_5, zero) - ptp_3x2_mul_rn(g2, m0_5, zero)) + ptp_3x2_mul_rn(g5, m0_2, zero));
+    v = u;
+    u = -((ptp_3x2_mul_rn(g1, m2_4, zero) - ptp_3x2_mul_rn(g2, m1_4, zero)) + ptp_3x2_mul_rn(g4, m1_2, zero));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    let x6 = cp[6].x;
+    let y6 = cp[6].y;
+    let w6 = cp[6].w;
+    let g6 = ptp_3x2_mul_rn(e2, w6, zero);
+    let m1_6 = ptp_3x2_mul_rn(x1, y6, zero) - ptp_3x2_mul_rn(y1, x6, zero);
+    let m0_6 = ptp_3x2_mul_rn(x0, y6, zero) - ptp_3x2_mul_rn(y0, x6, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_6, zero) - ptp_3x2_mul_rn(g1, m0_6, zero)) + ptp_3x2_mul_rn(g6, m0_1, zero));
+    v = (u + u);
+    let m3_4 = ptp_3x2_mul_rn(x3, y4, zero) - ptp_3x2_mul_rn(y3, x4, zero);
+    u = ((ptp_3x2_mul_rn(g0, m3_4, zero) - ptp_3x2_mul_rn(g3, m0_4, zero)) + ptp_3x2_mul_rn(g4, m0_3, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    let x8 = cp[8].x;
+    let y8 = cp[8].y;
+    let w8 = cp[8].w;
+    let g8 = ptp_3x2_mul_rn(e2, w8, zero);
+    let m2_8 = ptp_3x2_mul_rn(x2, y8, zero) - ptp_3x2_mul_rn(y2, x8, zero);
+    let m1_8 = ptp_3x2_mul_rn(x1, y8, zero) - ptp_3x2_mul_rn(y1, x8, zero);
+    u = -((ptp_3x2_mul_rn(g1, m2_8, zero) - ptp_3x2_mul_rn(g2, m1_8, zero)) + ptp_3x2_mul_rn(g8, m1_2, zero));
+    v = (u + u);
+    let m4_5 = ptp_3x2_mul_rn(x4, y5, zero) - ptp_3x2_mul_rn(y4, x5, zero);
+    u = ((ptp_3x2_mul_rn(g2, m4_5, zero) - ptp_3x2_mul_rn(g4, m2_5, zero)) + ptp_3x2_mul_rn(g5, m2_4, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    let m2_6 = ptp_3x2_mul_rn(x2, y6, zero) - ptp_3x2_mul_rn(y2, x6, zero);
+    u = ptp_3x2_mul_rn(g0, (-m2_6), zero);
+    u = fma(g2, m0_6, u);
+    u = fma(g6, -m0_2, u);
+    v = (u + u);
+    let m3_5 = ptp_3x2_mul_rn(x3, y5, zero) - ptp_3x2_mul_rn(y3, x5, zero);
+    u = ptp_3x2_mul_rn(g0, (m3_5), zero);
+    u = fma(g3, -m0_5, u);
+    u = fma(g5, m0_3, u);
+    v += (u + u) + u;
+    let x7 = cp[7].x;
+    let y7 = cp[7].y;
+    let w7 = cp[7].w;
+    let g7 = ptp_3x2_mul_rn(e2, w7, zero);
+    let m1_7 = ptp_3x2_mul_rn(x1, y7, zero) - ptp_3x2_mul_rn(y1, x7, zero);
+    u = ptp_3x2_mul_rn(g0, (-m1_7), zero);
+    let m0_7 = ptp_3x2_mul_rn(x0, y7, zero) - ptp_3x2_mul_rn(y0, x7, zero);
+    u = fma(g1, m0_7, u);
+    u = fma(g7, -m0_1, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (m3_4), zero);
+    u = fma(g3, -m1_4, u);
+    u = fma(g4, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    u = ptp_3x2_mul_rn(g0, (-m2_8), zero);
+    let m0_8 = ptp_3x2_mul_rn(x0, y8, zero) - ptp_3x2_mul_rn(y0, x8, zero);
+    u = fma(g2, m0_8, u);
+    u = fma(g8, -m0_2, u);
+    v = (u + u);
+    u = ptp_3x2_mul_rn(g2, (m3_5), zero);
+    u = fma(g3, -m2_5, u);
+    u = fma(g5, m2_3, u);
+    v += (u + u) + u;
+    let m2_7 = ptp_3x2_mul_rn(x2, y7, zero) - ptp_3x2_mul_rn(y2, x7, zero);
+    u = ptp_3x2_mul_rn(g1, (-m2_7), zero);
+    u = fma(g2, m1_7, u);
+    u = fma(g7, -m1_2, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (m4_5), zero);
+    u = fma(g4, -m1_5, u);
+    u = fma(g5, m1_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    u = -((ptp_3x2_mul_rn(g0, m1_8, zero) - ptp_3x2_mul_rn(g1, m0_8, zero)) + ptp_3x2_mul_rn(g8, m0_1, zero));
+    u -= ((ptp_3x2_mul_rn(g1, m2_6, zero) - ptp_3x2_mul_rn(g2, m1_6, zero)) + ptp_3x2_mul_rn(g6, m1_2, zero));
+    v = (u + u);
+    u = ((ptp_3x2_mul_rn(g0, m4_5, zero) - ptp_3x2_mul_rn(g4, m0_5, zero)) + ptp_3x2_mul_rn(g5, m0_4, zero));
+    u += ((ptp_3x2_mul_rn(g2, m3_4, zero) - ptp_3x2_mul_rn(g3, m2_4, zero)) + ptp_3x2_mul_rn(g4, m2_3, zero));
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g0, m2_7, zero) - ptp_3x2_mul_rn(g2, m0_7, zero)) + ptp_3x2_mul_rn(g7, m0_2, zero));
+    v += ((u + u) + (u + u));
+    u = ((ptp_3x2_mul_rn(g1, m3_5, zero) - ptp_3x2_mul_rn(g3, m1_5, zero)) + ptp_3x2_mul_rn(g5, m1_3, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    let x9 = cp[9].x;
+    let y9 = cp[9].y;
+    let w9 = cp[9].w;
+    let g9 = ptp_3x2_mul_rn(e2, w9, zero);
+    let m1_9 = ptp_3x2_mul_rn(x1, y9, zero) - ptp_3x2_mul_rn(y1, x9, zero);
+    let m0_9 = ptp_3x2_mul_rn(x0, y9, zero) - ptp_3x2_mul_rn(y0, x9, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_9, zero) - ptp_3x2_mul_rn(g1, m0_9, zero)) + ptp_3x2_mul_rn(g9, m0_1, zero));
+    v = u;
+    let m3_7 = ptp_3x2_mul_rn(x3, y7, zero) - ptp_3x2_mul_rn(y3, x7, zero);
+    u = ((ptp_3x2_mul_rn(g0, m3_7, zero) - ptp_3x2_mul_rn(g3, m0_7, zero)) + ptp_3x2_mul_rn(g7, m0_3, zero));
+    let m3_6 = ptp_3x2_mul_rn(x3, y6, zero) - ptp_3x2_mul_rn(y3, x6, zero);
+    u += ((ptp_3x2_mul_rn(g1, m3_6, zero) - ptp_3x2_mul_rn(g3, m1_6, zero)) + ptp_3x2_mul_rn(g6, m1_3, zero));
+    v += (u + u) + u;
+    let m4_6 = ptp_3x2_mul_rn(x4, y6, zero) - ptp_3x2_mul_rn(y4, x6, zero);
+    u = -((ptp_3x2_mul_rn(g0, m4_6, zero) - ptp_3x2_mul_rn(g4, m0_6, zero)) + ptp_3x2_mul_rn(g6, m0_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 10 */
+    let x11 = cp[11].x;
+    let y11 = cp[11].y;
+    let w11 = cp[11].w;
+    let g11 = ptp_3x2_mul_rn(e2, w11, zero);
+    let m2_11 = ptp_3x2_mul_rn(x2, y11, zero) - ptp_3x2_mul_rn(y2, x11, zero);
+    let m1_11 = ptp_3x2_mul_rn(x1, y11, zero) - ptp_3x2_mul_rn(y1, x11, zero);
+    u = -((ptp_3x2_mul_rn(g1, m2_11, zero) - ptp_3x2_mul_rn(g2, m1_11, zero)) + ptp_3x2_mul_rn(g11, m1_2, zero));
+    v = u;
+    let m5_8 = ptp_3x2_mul_rn(x5, y8, zero) - ptp_3x2_mul_rn(y5, x8, zero);
+    u = -((ptp_3x2_mul_rn(g1, m5_8, zero) - ptp_3x2_mul_rn(g5, m1_8, zero)) + ptp_3x2_mul_rn(g8, m1_5, zero));
+    let m5_7 = ptp_3x2_mul_rn(x5, y7, zero) - ptp_3x2_mul_rn(y5, x7, zero);
+    u -= ((ptp_3x2_mul_rn(g2, m5_7, zero) - ptp_3x2_mul_rn(g5, m2_7, zero)) + ptp_3x2_mul_rn(g7, m2_5, zero));
+    v += (u + u) + u;
+    let m4_8 = ptp_3x2_mul_rn(x4, y8, zero) - ptp_3x2_mul_rn(y4, x8, zero);
+    u = ((ptp_3x2_mul_rn(g2, m4_8, zero) - ptp_3x2_mul_rn(g4, m2_8, zero)) + ptp_3x2_mul_rn(g8, m2_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 14 */
+    let x10 = cp[10].x;
+    let y10 = cp[10].y;
+    let w10 = cp[10].w;
+    let g10 = ptp_3x2_mul_rn(e2, w10, zero);
+    let m3_10 = ptp_3x2_mul_rn(x3, y10, zero) - ptp_3x2_mul_rn(y3, x10, zero);
+    let m0_10 = ptp_3x2_mul_rn(x0, y10, zero) - ptp_3x2_mul_rn(y0, x10, zero);
+    u = ((ptp_3x2_mul_rn(g0, m3_10, zero) - ptp_3x2_mul_rn(g3, m0_10, zero)) + ptp_3x2_mul_rn(g10, m0_3, zero));
+    v = u;
+    let m3_9 = ptp_3x2_mul_rn(x3, y9, zero) - ptp_3x2_mul_rn(y3, x9, zero);
+    u = ((ptp_3x2_mul_rn(g1, m3_9, zero) - ptp_3x2_mul_rn(g3, m1_9, zero)) + ptp_3x2_mul_rn(g9, m1_3, zero));
+    v += (u + u);
+    let m4_9 = ptp_3x2_mul_rn(x4, y9, zero) - ptp_3x2_mul_rn(y4, x9, zero);
+    u = -((ptp_3x2_mul_rn(g0, m4_9, zero) - ptp_3x2_mul_rn(g4, m0_9, zero)) + ptp_3x2_mul_rn(g9, m0_4, zero));
+    v += (u + u) + u;
+    let m6_7 = ptp_3x2_mul_rn(x6, y7, zero) - ptp_3x2_mul_rn(y6, x7, zero);
+    u = ((ptp_3x2_mul_rn(g0, m6_7, zero) - ptp_3x2_mul_rn(g6, m0_7, zero)) + ptp_3x2_mul_rn(g7, m0_6, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g3, m4_6, zero) - ptp_3x2_mul_rn(g4, m3_6, zero)) + ptp_3x2_mul_rn(g6, m3_4, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 15 */
+    let m2_9 = ptp_3x2_mul_rn(x2, y9, zero) - ptp_3x2_mul_rn(y2, x9, zero);
+    u = ptp_3x2_mul_rn(g0, (-m2_9), zero);
+    u = fma(g2, m0_9, u);
+    u = fma(g9, -m0_2, u);
+    v = u;
+    let m1_10 = ptp_3x2_mul_rn(x1, y10, zero) - ptp_3x2_mul_rn(y1, x10, zero);
+    u = ptp_3x2_mul_rn(g0, (-m1_10), zero);
+    u = fma(g1, m0_10, u);
+    u = fma(g10, -m0_1, u);
+    v += (u + u);
+    let m3_8 = ptp_3x2_mul_rn(x3, y8, zero) - ptp_3x2_mul_rn(y3, x8, zero);
+    u = ptp_3x2_mul_rn(g0, (m3_8), zero);
+    u = fma(g2, m3_6, u);
+    u = fma(g3, -m2_6 - m0_8, u);
+    u = fma(g6, m2_3, u);
+    u = fma(g8, m0_3, u);
+    v += (u + u) + u;
+    let m4_7 = ptp_3x2_mul_rn(x4, y7, zero) - ptp_3x2_mul_rn(y4, x7, zero);
+    let m5_6 = ptp_3x2_mul_rn(x5, y6, zero) - ptp_3x2_mul_rn(y5, x6, zero);
+    u = ptp_3x2_mul_rn(g0, (-m4_7 - m5_6), zero);
+    u = fma(g1, -m4_6, u);
+    u = fma(g4, m1_6 + m0_7, u);
+    u = fma(g5, m0_6, u);
+    u = fma(g6, -m1_4 - m0_5, u);
+    u = fma(g7, -m0_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g1, (m3_7), zero);
+    u = fma(g3, -m1_7, u);
+    u = fma(g7, m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 11 */
+    let m0_11 = ptp_3x2_mul_rn(x0, y11, zero) - ptp_3x2_mul_rn(y0, x11, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_11, zero) - ptp_3x2_mul_rn(g1, m0_11, zero)) + ptp_3x2_mul_rn(g11, m0_1, zero));
+    u -= ((ptp_3x2_mul_rn(g1, m2_9, zero) - ptp_3x2_mul_rn(g2, m1_9, zero)) + ptp_3x2_mul_rn(g9, m1_2, zero));
+    v = u;
+    let m2_10 = ptp_3x2_mul_rn(x2, y10, zero) - ptp_3x2_mul_rn(y2, x10, zero);
+    u = -((ptp_3x2_mul_rn(g0, m2_10, zero) - ptp_3x2_mul_rn(g2, m0_10, zero)) + ptp_3x2_mul_rn(g10, m0_2, zero));
+    v += (u + u);
+    u = -((ptp_3x2_mul_rn(g0, m5_7, zero) - ptp_3x2_mul_rn(g5, m0_7, zero)) + ptp_3x2_mul_rn(g7, m0_5, zero));
+    u += ((ptp_3x2_mul_rn(g1, m3_8, zero) - ptp_3x2_mul_rn(g3, m1_8, zero)) + ptp_3x2_mul_rn(g8, m1_3, zero));
+    u -= ((ptp_3x2_mul_rn(g1, m5_6, zero) - ptp_3x2_mul_rn(g5, m1_6, zero)) + ptp_3x2_mul_rn(g6, m1_5, zero));
+    u += ((ptp_3x2_mul_rn(g2, m3_7, zero) - ptp_3x2_mul_rn(g3, m2_7, zero)) + ptp_3x2_mul_rn(g7, m2_3, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 12 */
+    u = ptp_3x2_mul_rn(g0, (-m2_11), zero);
+    u = fma(g2, m0_11, u);
+    u = fma(g11, -m0_2, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (-m2_10), zero);
+    u = fma(g2, m1_10, u);
+    u = fma(g10, -m1_2, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g0, (-m5_8), zero);
+    u = fma(g2, -m5_6, u);
+    u = fma(g5, m2_6 + m0_8, u);
+    u = fma(g6, -m2_5, u);
+    u = fma(g8, -m0_5, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g1, (m4_8), zero);
+    u = fma(g2, m3_8 + m4_7, u);
+    u = fma(g3, -m2_8, u);
+    u = fma(g4, -m1_8 - m2_7, u);
+    u = fma(g7, m2_4, u);
+    u = fma(g8, m2_3 + m1_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g1, (-m5_7), zero);
+    u = fma(g5, m1_7, u);
+    u = fma(g7, -m1_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 13 */
+    let m5_10 = ptp_3x2_mul_rn(x5, y10, zero) - ptp_3x2_mul_rn(y5, x10, zero);
+    u = -((ptp_3x2_mul_rn(g2, m5_10, zero) - ptp_3x2_mul_rn(g5, m2_10, zero)) + ptp_3x2_mul_rn(g10, m2_5, zero));
+    v = u;
+    let m5_11 = ptp_3x2_mul_rn(x5, y11, zero) - ptp_3x2_mul_rn(y5, x11, zero);
+    u = -((ptp_3x2_mul_rn(g1, m5_11, zero) - ptp_3x2_mul_rn(g5, m1_11, zero)) + ptp_3x2_mul_rn(g11, m1_5, zero));
+    v += (u + u);
+    let m4_11 = ptp_3x2_mul_rn(x4, y11, zero) - ptp_3x2_mul_rn(y4, x11, zero);
+    u = ((ptp_3x2_mul_rn(g2, m4_11, zero) - ptp_3x2_mul_rn(g4, m2_11, zero)) + ptp_3x2_mul_rn(g11, m2_4, zero));
+    v += (u + u) + u;
+    let m7_8 = ptp_3x2_mul_rn(x7, y8, zero) - ptp_3x2_mul_rn(y7, x8, zero);
+    u = ((ptp_3x2_mul_rn(g2, m7_8, zero) - ptp_3x2_mul_rn(g7, m2_8, zero)) + ptp_3x2_mul_rn(g8, m2_7, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g4, m5_8, zero) - ptp_3x2_mul_rn(g5, m4_8, zero)) + ptp_3x2_mul_rn(g8, m4_5, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 19 */
+    let m6_9 = ptp_3x2_mul_rn(x6, y9, zero) - ptp_3x2_mul_rn(y6, x9, zero);
+    u = ((ptp_3x2_mul_rn(g1, m6_9, zero) - ptp_3x2_mul_rn(g6, m1_9, zero)) + ptp_3x2_mul_rn(g9, m1_6, zero));
+    v = u;
+    let m6_10 = ptp_3x2_mul_rn(x6, y10, zero) - ptp_3x2_mul_rn(y6, x10, zero);
+    u = ((ptp_3x2_mul_rn(g0, m6_10, zero) - ptp_3x2_mul_rn(g6, m0_10, zero)) + ptp_3x2_mul_rn(g10, m0_6, zero));
+    v += (u + u);
+    let m7_9 = ptp_3x2_mul_rn(x7, y9, zero) - ptp_3x2_mul_rn(y7, x9, zero);
+    u = -((ptp_3x2_mul_rn(g0, m7_9, zero) - ptp_3x2_mul_rn(g7, m0_9, zero)) + ptp_3x2_mul_rn(g9, m0_7, zero));
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g3, m4_9, zero) - ptp_3x2_mul_rn(g4, m3_9, zero)) + ptp_3x2_mul_rn(g9, m3_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((ptp_3x2_mul_rn(g3, m6_7, zero) - ptp_3x2_mul_rn(g6, m3_7, zero)) + ptp_3x2_mul_rn(g7, m3_6, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 20 */
+    u = ptp_3x2_mul_rn(g2, (m6_9), zero);
+    u = fma(g6, -m2_9, u);
+    u = fma(g9, m2_6, u);
+    v = u;
+    let m6_11 = ptp_3x2_mul_rn(x6, y11, zero) - ptp_3x2_mul_rn(y6, x11, zero);
+    let m7_10 = ptp_3x2_mul_rn(x7, y10, zero) - ptp_3x2_mul_rn(y7, x10, zero);
+    u = ptp_3x2_mul_rn(g0, (m6_11 - m7_10), zero);
+    u = fma(g6, -m0_11, u);
+    u = fma(g7, m0_10, u);
+    u = fma(g10, -m0_7, u);
+    u = fma(g11, m0_6, u);
+    v += (u + u);
+    let m8_9 = ptp_3x2_mul_rn(x8, y9, zero) - ptp_3x2_mul_rn(y8, x9, zero);
+    u = ptp_3x2_mul_rn(g0, (-m8_9), zero);
+    u = fma(g8, m0_9, u);
+    u = fma(g9, -m0_8, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g1, (-m7_9), zero);
+    u = fma(g7, m1_9, u);
+    u = fma(g9, -m1_7, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (m6_10), zero);
+    let m5_9 = ptp_3x2_mul_rn(x5, y9, zero) - ptp_3x2_mul_rn(y5, x9, zero);
+    u = fma(g3, -m5_9, u);
+    u = fma(g5, m3_9, u);
+    u = fma(g6, -m1_10, u);
+    u = fma(g9, -m3_5, u);
+    u = fma(g10, m1_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    let m6_8 = ptp_3x2_mul_rn(x6, y8, zero) - ptp_3x2_mul_rn(y6, x8, zero);
+    u = ptp_3x2_mul_rn(g3, (m6_8), zero);
+    u = fma(g6, -m3_8, u);
+    u = fma(g8, m3_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    let m4_10 = ptp_3x2_mul_rn(x4, y10, zero) - ptp_3x2_mul_rn(y4, x10, zero);
+    u = ptp_3x2_mul_rn(g3, (-m4_10), zero);
+    u = fma(g4, m3_10, u);
+    u = fma(g10, -m3_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m6_7), zero);
+    u = fma(g6, -m4_7, u);
+    u = fma(g7, m4_6, u);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 21 */
+    let m3_11 = ptp_3x2_mul_rn(x3, y11, zero) - ptp_3x2_mul_rn(y3, x11, zero);
+    u = ptp_3x2_mul_rn(g0, (m3_11), zero);
+    u = fma(g3, -m0_11, u);
+    u = fma(g11, m0_3, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (-m4_9), zero);
+    u = fma(g2, m3_9, u);
+    u = fma(g3, -m2_9, u);
+    u = fma(g4, m1_9, u);
+    u = fma(g9, m2_3 - m1_4, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g0, (-m5_9), zero);
+    u = fma(g5, m0_9, u);
+    u = fma(g9, -m0_5, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g0, (-m4_10), zero);
+    u = fma(g4, m0_10, u);
+    u = fma(g10, -m0_4, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g0, (m6_8), zero);
+    u = fma(g1, m3_10, u);
+    u = fma(g3, -m1_10, u);
+    u = fma(g6, -m0_8, u);
+    u = fma(g8, m0_6, u);
+    u = fma(g10, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m5_6), zero);
+    u = fma(g5, m3_6, u);
+    u = fma(g6, -m3_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g1, (m6_7), zero);
+    u = fma(g6, -m1_7, u);
+    u = fma(g7, m1_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m4_7), zero);
+    u = fma(g4, m3_7, u);
+    u = fma(g7, -m3_4, u);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 16 */
+    let m8_11 = ptp_3x2_mul_rn(x8, y11, zero) - ptp_3x2_mul_rn(y8, x11, zero);
+    u = ptp_3x2_mul_rn(g0, (-m8_11), zero);
+    u = fma(g8, m0_11, u);
+    u = fma(g11, -m0_8, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g2, (m7_10 - m8_9), zero);
+    u = fma(g7, -m2_10, u);
+    u = fma(g8, m2_9, u);
+    u = fma(g9, -m2_8, u);
+    u = fma(g10, m2_7, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g2, (m6_11), zero);
+    u = fma(g6, -m2_11, u);
+    u = fma(g11, m2_6, u);
+    v += (u + u) + u;
+    let m7_11 = ptp_3x2_mul_rn(x7, y11, zero) - ptp_3x2_mul_rn(y7, x11, zero);
+    u = ptp_3x2_mul_rn(g1, (m7_11), zero);
+    u = fma(g7, -m1_11, u);
+    u = fma(g11, m1_7, u);
+    v += ((u + u) + (u + u));
+    let m8_10 = ptp_3x2_mul_rn(x8, y10, zero) - ptp_3x2_mul_rn(y8, x10, zero);
+    u = ptp_3x2_mul_rn(g1, (-m8_10), zero);
+    u = fma(g3, -m5_11, u);
+    u = fma(g5, m3_11, u);
+    u = fma(g8, m1_10, u);
+    u = fma(g10, -m1_8, u);
+    u = fma(g11, -m3_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g5, (m6_8), zero);
+    u = fma(g6, -m5_8, u);
+    u = fma(g8, m5_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g4, (-m5_10), zero);
+    u = fma(g5, m4_10, u);
+    u = fma(g10, -m4_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m7_8), zero);
+    u = fma(g7, -m4_8, u);
+    u = fma(g8, m4_7, u);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 23 */
+    u = -((ptp_3x2_mul_rn(g1, m8_11, zero) - ptp_3x2_mul_rn(g8, m1_11, zero)) + ptp_3x2_mul_rn(g11, m1_8, zero));
+    v = u;
+    u = -((ptp_3x2_mul_rn(g2, m8_10, zero) - ptp_3x2_mul_rn(g8, m2_10, zero)) + ptp_3x2_mul_rn(g10, m2_8, zero));
+    v += (u + u);
+    u = ((ptp_3x2_mul_rn(g2, m7_11, zero) - ptp_3x2_mul_rn(g7, m2_11, zero)) + ptp_3x2_mul_rn(g11, m2_7, zero));
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g4, m5_11, zero) - ptp_3x2_mul_rn(g5, m4_11, zero)) + ptp_3x2_mul_rn(g11, m4_5, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((ptp_3x2_mul_rn(g5, m7_8, zero) - ptp_3x2_mul_rn(g7, m5_8, zero)) + ptp_3x2_mul_rn(g8, m5_7, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 24 */
+    let m9_10 = ptp_3x2_mul_rn(x9, y10, zero) - ptp_3x2_mul_rn(y9, x10, zero);
+    u = ((ptp_3x2_mul_rn(g0, m9_10, zero) - ptp_3x2_mul_rn(g9, m0_10, zero)) + ptp_3x2_mul_rn(g10, m0_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g3, m6_10, zero) - ptp_3x2_mul_rn(g6, m3_10, zero)) + ptp_3x2_mul_rn(g10, m3_6, zero));
+    u += ((ptp_3x2_mul_rn(g4, m6_9, zero) - ptp_3x2_mul_rn(g6, m4_9, zero)) + ptp_3x2_mul_rn(g9, m4_6, zero));
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g3, m7_9, zero) - ptp_3x2_mul_rn(g7, m3_9, zero)) + ptp_3x2_mul_rn(g9, m3_7, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 25 */
+    let m9_11 = ptp_3x2_mul_rn(x9, y11, zero) - ptp_3x2_mul_rn(y9, x11, zero);
+    u = ptp_3x2_mul_rn(g0, (m9_11), zero);
+    u = fma(g9, -m0_11, u);
+    u = fma(g11, m0_9, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (m9_10), zero);
+    u = fma(g9, -m1_10, u);
+    u = fma(g10, m1_9, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g3, (m6_11), zero);
+    u = fma(g5, m6_9, u);
+    u = fma(g6, -m3_11 - m5_9, u);
+    u = fma(g9, m5_6, u);
+    u = fma(g11, m3_6, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m7_10 - m8_9), zero);
+    u = fma(g4, -m7_9, u);
+    u = fma(g7, m3_10 + m4_9, u);
+    u = fma(g8, m3_9, u);
+    u = fma(g9, -m3_8 - m4_7, u);
+    u = fma(g10, -m3_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m6_10), zero);
+    u = fma(g6, -m4_10, u);
+    u = fma(g10, m4_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 26 */
+    let m10_11 = ptp_3x2_mul_rn(x10, y11, zero) - ptp_3x2_mul_rn(y10, x11, zero);
+    u = ((ptp_3x2_mul_rn(g0, m10_11, zero) - ptp_3x2_mul_rn(g10, m0_11, zero)) + ptp_3x2_mul_rn(g11, m0_10, zero));
+    u += ((ptp_3x2_mul_rn(g2, m9_10, zero) - ptp_3x2_mul_rn(g9, m2_10, zero)) + ptp_3x2_mul_rn(g10, m2_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g1, m9_11, zero) - ptp_3x2_mul_rn(g9, m1_11, zero)) + ptp_3x2_mul_rn(g11, m1_9, zero));
+    v += (u + u);
+    u = -((ptp_3x2_mul_rn(g3, m8_10, zero) - ptp_3x2_mul_rn(g8, m3_10, zero)) + ptp_3x2_mul_rn(g10, m3_8, zero));
+    u += ((ptp_3x2_mul_rn(g4, m6_11, zero) - ptp_3x2_mul_rn(g6, m4_11, zero)) + ptp_3x2_mul_rn(g11, m4_6, zero));
+    u -= ((ptp_3x2_mul_rn(g4, m8_9, zero) - ptp_3x2_mul_rn(g8, m4_9, zero)) + ptp_3x2_mul_rn(g9, m4_8, zero));
+    u += ((ptp_3x2_mul_rn(g5, m6_10, zero) - ptp_3x2_mul_rn(g6, m5_10, zero)) + ptp_3x2_mul_rn(g10, m5_6, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 27 */
+    u = ptp_3x2_mul_rn(g2, (m9_11), zero);
+    u = fma(g9, -m2_11, u);
+    u = fma(g11, m2_9, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (m10_11), zero);
+    u = fma(g10, -m1_11, u);
+    u = fma(g11, m1_10, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g3, (-m8_11), zero);
+    u = fma(g5, -m8_9, u);
+    u = fma(g8, m3_11 + m5_9, u);
+    u = fma(g9, -m5_8, u);
+    u = fma(g11, -m3_8, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m7_11), zero);
+    u = fma(g5, m6_11 + m7_10, u);
+    u = fma(g6, -m5_11, u);
+    u = fma(g7, -m4_11 - m5_10, u);
+    u = fma(g10, m5_7, u);
+    u = fma(g11, m4_7 + m5_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (-m8_10), zero);
+    u = fma(g8, m4_10, u);
+    u = fma(g10, -m4_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 28 */
+    u = ((ptp_3x2_mul_rn(g2, m10_11, zero) - ptp_3x2_mul_rn(g10, m2_11, zero)) + ptp_3x2_mul_rn(g11, m2_10, zero));
+    v = u;
+    u = -((ptp_3x2_mul_rn(g4, m8_11, zero) - ptp_3x2_mul_rn(g8, m4_11, zero)) + ptp_3x2_mul_rn(g11, m4_8, zero));
+    u -= ((ptp_3x2_mul_rn(g5, m8_10, zero) - ptp_3x2_mul_rn(g8, m5_10, zero)) + ptp_3x2_mul_rn(g10, m5_8, zero));
+    v += (u + u) + u;
+    u = ((ptp_3x2_mul_rn(g5, m7_11, zero) - ptp_3x2_mul_rn(g7, m5_11, zero)) + ptp_3x2_mul_rn(g11, m5_7, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 29 */
+    u = ((ptp_3x2_mul_rn(g3, m9_10, zero) - ptp_3x2_mul_rn(g9, m3_10, zero)) + ptp_3x2_mul_rn(g10, m3_9, zero));
+    v = (u + u);
+    u = -((ptp_3x2_mul_rn(g6, m7_9, zero) - ptp_3x2_mul_rn(g7, m6_9, zero)) + ptp_3x2_mul_rn(g9, m6_7, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 30 */
+    u = ptp_3x2_mul_rn(g3, (m9_11), zero);
+    u = fma(g9, -m3_11, u);
+    u = fma(g11, m3_9, u);
+    v = (u + u);
+    u = ptp_3x2_mul_rn(g6, (-m8_9), zero);
+    u = fma(g8, m6_9, u);
+    u = fma(g9, -m6_8, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m9_10), zero);
+    u = fma(g9, -m4_10, u);
+    u = fma(g10, m4_9, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g6, (-m7_10), zero);
+    u = fma(g7, m6_10, u);
+    u = fma(g10, -m6_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 31 */
+    u = ((ptp_3x2_mul_rn(g3, m10_11, zero) - ptp_3x2_mul_rn(g10, m3_11, zero)) + ptp_3x2_mul_rn(g11, m3_10, zero));
+    u += ((ptp_3x2_mul_rn(g5, m9_10, zero) - ptp_3x2_mul_rn(g9, m5_10, zero)) + ptp_3x2_mul_rn(g10, m5_9, zero));
+    v = (u + u);
+    u = -((ptp_3x2_mul_rn(g6, m7_11, zero) - ptp_3x2_mul_rn(g7, m6_11, zero)) + ptp_3x2_mul_rn(g11, m6_7, zero));
+    u -= ((ptp_3x2_mul_rn(g7, m8_9, zero) - ptp_3x2_mul_rn(g8, m7_9, zero)) + ptp_3x2_mul_rn(g9, m7_8, zero));
+    v += (u + u) + u;
+    u = ((ptp_3x2_mul_rn(g4, m9_11, zero) - ptp_3x2_mul_rn(g9, m4_11, zero)) + ptp_3x2_mul_rn(g11, m4_9, zero));
+    v += ((u + u) + (u + u));
+    u = -((ptp_3x2_mul_rn(g6, m8_10, zero) - ptp_3x2_mul_rn(g8, m6_10, zero)) + ptp_3x2_mul_rn(g10, m6_8, zero));
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 32 */
+    u = ptp_3x2_mul_rn(g5, (m9_11), zero);
+    u = fma(g9, -m5_11, u);
+    u = fma(g11, m5_9, u);
+    v = (u + u);
+    u = ptp_3x2_mul_rn(g6, (-m8_11), zero);
+    u = fma(g8, m6_11, u);
+    u = fma(g11, -m6_8, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m10_11), zero);
+    u = fma(g10, -m4_11, u);
+    u = fma(g11, m4_10, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g7, (-m8_10), zero);
+    u = fma(g8, m7_10, u);
+    u = fma(g10, -m7_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 33 */
+    u = ((ptp_3x2_mul_rn(g5, m10_11, zero) - ptp_3x2_mul_rn(g10, m5_11, zero)) + ptp_3x2_mul_rn(g11, m5_10, zero));
+    v = (u + u);
+    u = -((ptp_3x2_mul_rn(g7, m8_11, zero) - ptp_3x2_mul_rn(g8, m7_11, zero)) + ptp_3x2_mul_rn(g11, m7_8, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 34 */
+    u = ((ptp_3x2_mul_rn(g6, m9_10, zero) - ptp_3x2_mul_rn(g9, m6_10, zero)) + ptp_3x2_mul_rn(g10, m6_9, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 35 */
+    u = ((ptp_3x2_mul_rn(g6, m9_11, zero) - ptp_3x2_mul_rn(g9, m6_11, zero)) + ptp_3x2_mul_rn(g11, m6_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g7, m9_10, zero) - ptp_3x2_mul_rn(g9, m7_10, zero)) + ptp_3x2_mul_rn(g10, m7_9, zero));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 36 */
+    u = ((ptp_3x2_mul_rn(g6, m10_11, zero) - ptp_3x2_mul_rn(g10, m6_11, zero)) + ptp_3x2_mul_rn(g11, m6_10, zero));
+    u += ((ptp_3x2_mul_rn(g8, m9_10, zero) - ptp_3x2_mul_rn(g9, m8_10, zero)) + ptp_3x2_mul_rn(g10, m8_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g7, m9_11, zero) - ptp_3x2_mul_rn(g9, m7_11, zero)) + ptp_3x2_mul_rn(g11, m7_9, zero));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 37 */
+    u = ((ptp_3x2_mul_rn(g8, m9_11, zero) - ptp_3x2_mul_rn(g9, m8_11, zero)) + ptp_3x2_mul_rn(g11, m8_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g7, m10_11, zero) - ptp_3x2_mul_rn(g10, m7_11, zero)) + ptp_3x2_mul_rn(g11, m7_10, zero));
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 38 */
+    u = ((ptp_3x2_mul_rn(g8, m10_11, zero) - ptp_3x2_mul_rn(g10, m8_11, zero)) + ptp_3x2_mul_rn(g11, m8_10, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 39 */
+    u = ptp_3x2_mul_rn(g2, (-m5_9), zero);
+    u = fma(g5, m2_9, u);
+    u = fma(g9, -m2_5, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g0, (-m5_11), zero);
+    u = fma(g1, m4_11, u);
+    u = fma(g4, -m1_11, u);
+    u = fma(g5, m0_11, u);
+    u = fma(g11, m1_4 - m0_5, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g2, (m3_11), zero);
+    u = fma(g3, -m2_11, u);
+    u = fma(g11, m2_3, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g2, (m4_10), zero);
+    u = fma(g4, -m2_10, u);
+    u = fma(g10, m2_4, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (-m5_10), zero);
+    u = fma(g2, m6_8, u);
+    u = fma(g5, m1_10, u);
+    u = fma(g6, -m2_8, u);
+    u = fma(g8, m2_6, u);
+    u = fma(g10, -m1_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m5_8), zero);
+    u = fma(g5, m3_8, u);
+    u = fma(g8, -m3_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g1, (m7_8), zero);
+    u = fma(g7, -m1_8, u);
+    u = fma(g8, m1_7, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (-m5_7), zero);
+    u = fma(g5, m4_7, u);
+    u = fma(g7, -m4_5, u);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 18 */
+    u = ptp_3x2_mul_rn(g0, (-m4_11), zero);
+    u = fma(g2, m4_9, u);
+    u = fma(g4, m0_11 - m2_9, u);
+    u = fma(g9, m2_4, u);
+    u = fma(g11, -m0_4, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (m3_11 - m5_9), zero);
+    u = fma(g3, -m1_11, u);
+    u = fma(g5, m1_9, u);
+    u = fma(g9, -m1_5, u);
+    u = fma(g11, m1_3, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g0, (-m5_10), zero);
+    u = fma(g2, m3_10, u);
+    u = fma(g3, -m2_10, u);
+    u = fma(g5, m0_10, u);
+    u = fma(g10, m2_3 - m0_5, u);
+    v += ((u + u) + (u + u)) + u;
+    u = ptp_3x2_mul_rn(g0, (m7_8), zero);
+    u = fma(g2, m6_7, u);
+    u = fma(g6, -m2_7, u);
+    u = fma(g7, m2_6 - m0_8, u);
+    u = fma(g8, m0_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m4_8), zero);
+    u = fma(g4, m3_8 - m5_6, u);
+    u = fma(g5, m4_6, u);
+    u = fma(g6, -m4_5, u);
+    u = fma(g8, -m3_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g1, (m6_8), zero);
+    u = fma(g6, -m1_8, u);
+    u = fma(g8, m1_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m5_7), zero);
+    u = fma(g5, m3_7, u);
+    u = fma(g7, -m3_5, u);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 17 */
+    u = ptp_3x2_mul_rn(g0, (m7_11), zero);
+    u = fma(g2, -m7_9, u);
+    u = fma(g7, m2_9 - m0_11, u);
+    u = fma(g9, -m2_7, u);
+    u = fma(g11, m0_7, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g0, (-m8_10), zero);
+    u = fma(g2, m6_10, u);
+    u = fma(g6, -m2_10, u);
+    u = fma(g8, m0_10, u);
+    u = fma(g10, m2_6 - m0_8, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (m6_11 - m8_9), zero);
+    u = fma(g6, -m1_11, u);
+    u = fma(g8, m1_9, u);
+    u = fma(g9, -m1_8, u);
+    u = fma(g11, m1_6, u);
+    v += ((u + u) + (u + u)) + u;
+    u = ptp_3x2_mul_rn(g3, (-m4_11), zero);
+    u = fma(g4, m3_11 - m5_9, u);
+    u = fma(g5, m4_9, u);
+    u = fma(g9, -m4_5, u);
+    u = fma(g11, -m3_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (m7_8), zero);
+    u = fma(g5, m6_7, u);
+    u = fma(g6, -m5_7, u);
+    u = fma(g7, m5_6 - m3_8, u);
+    u = fma(g8, m3_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g3, (-m5_10), zero);
+    u = fma(g5, m3_10, u);
+    u = fma(g10, -m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m6_8), zero);
+    u = fma(g6, -m4_8, u);
+    u = fma(g8, m4_6, u);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 22 */
+    return select(select(2u, 0u, gt), 1u, lt);
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-fn ptp_3x2_class_of(f: u32) -> u32 {
-    return select(select(2u, 0u, (f & 2u) == 0u), 1u, (f & 1u) == 0u);
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
+        d: ptr<function, array<f32, 40>>) {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_3x2_mul_rn(e2, w1, zero);
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_3x2_mul_rn(e2, w3, zero);
+    let m1_3 = ptp_3x2_mul_rn(x1, y3, zero) - ptp_3x2_mul_rn(y1, x3, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_3x2_mul_rn(e2, w0, zero);
+    let m0_3 = ptp_3x2_mul_rn(x0, y3, zero) - ptp_3x2_mul_rn(y0, x3, zero);
+    let m0_1 = ptp_3x2_mul_rn(x0, y1, zero) - ptp_3x2_mul_rn(y0, x1, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_3, zero) - ptp_3x2_mul_rn(g1, m0_3, zero)) + ptp_3x2_mul_rn(g3, m0_1, zero));
+    v = u;
+    (*d)[0] = v * 6.0f;
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_3x2_mul_rn(e2, w2, zero);
+    let x5 = cp[5].x;
+    let y5 = cp[5].y;
+    let w5 = cp[5].w;
+    let g5 = ptp_3x2_mul_rn(e2, w5, zero);
+    let m2_5 = ptp_3x2_mul_rn(x2, y5, zero) - ptp_3x2_mul_rn(y2, x5, zero);
+    let m1_5 = ptp_3x2_mul_rn(x1, y5, zero) - ptp_3x2_mul_rn(y1, x5, zero);
+    let m1_2 = ptp_3x2_mul_rn(x1, y2, zero) - ptp_3x2_mul_rn(y1, x2, zero);
+    u = -((ptp_3x2_mul_rn(g1, m2_5, zero) - ptp_3x2_mul_rn(g2, m1_5, zero)) + ptp_3x2_mul_rn(g5, m1_2, zero));
+    v = u;
+    (*d)[4] = v * 6.0f;
+    let m2_3 = ptp_3x2_mul_rn(x2, y3, zero) - ptp_3x2_mul_rn(y2, x3, zero);
+    let m0_2 = ptp_3x2_mul_rn(x0, y2, zero) - ptp_3x2_mul_rn(y0, x2, zero);
+    u = -((ptp_3x2_mul_rn(g0, m2_3, zero) - ptp_3x2_mul_rn(g2, m0_3, zero)) + ptp_3x2_mul_rn(g3, m0_2, zero));
+    v = u;
+    let x4 = cp[4].x;
+    let y4 = cp[4].y;
+    let w4 = cp[4].w;
+    let g4 = ptp_3x2_mul_rn(e2, w4, zero);
+    let m1_4 = ptp_3x2_mul_rn(x1, y4, zero) - ptp_3x2_mul_rn(y1, x4, zero);
+    let m0_4 = ptp_3x2_mul_rn(x0, y4, zero) - ptp_3x2_mul_rn(y0, x4, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_4, zero) - ptp_3x2_mul_rn(g1, m0_4, zero)) + ptp_3x2_mul_rn(g4, m0_1, zero));
+    v += (u + u);
+    (*d)[1] = v * 1.5f;
+    let m0_5 = ptp_3x2_mul_rn(x0, y5, zero) - ptp_3x2_mul_rn(y0, x5, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_5, zero) - ptp_3x2_mul_rn(g1, m0_5, zero)) + ptp_3x2_mul_rn(g5, m0_1, zero));
+    u -= ((ptp_3x2_mul_rn(g1, m2_3, zero) - ptp_3x2_mul_rn(g2, m1_3, zero)) + ptp_3x2_mul_rn(g3, m1_2, zero));
+    v = u;
+    let m2_4 = ptp_3x2_mul_rn(x2, y4, zero) - ptp_3x2_mul_rn(y2, x4, zero);
+    u = -((ptp_3x2_mul_rn(g0, m2_4, zero) - ptp_3x2_mul_rn(g2, m0_4, zero)) + ptp_3x2_mul_rn(g4, m0_2, zero));
+    v += (u + u);
+    (*d)[2] = v;
+    u = -((ptp_3x2_mul_rn(g0, m2_5, zero) - ptp_3x2_mul_rn(g2, m0_5, zero)) + ptp_3x2_mul_rn(g5, m0_2, zero));
+    v = u;
+    u = -((ptp_3x2_mul_rn(g1, m2_4, zero) - ptp_3x2_mul_rn(g2, m1_4, zero)) + ptp_3x2_mul_rn(g4, m1_2, zero));
+    v += (u + u);
+    (*d)[3] = v * 1.5f;
+    let x6 = cp[6].x;
+    let y6 = cp[6].y;
+    let w6 = cp[6].w;
+    let g6 = ptp_3x2_mul_rn(e2, w6, zero);
+    let m1_6 = ptp_3x2_mul_rn(x1, y6, zero) - ptp_3x2_mul_rn(y1, x6, zero);
+    let m0_6 = ptp_3x2_mul_rn(x0, y6, zero) - ptp_3x2_mul_rn(y0, x6, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_6, zero) - ptp_3x2_mul_rn(g1, m0_6, zero)) + ptp_3x2_mul_rn(g6, m0_1, zero));
+    v = (u + u);
+    let m3_4 = ptp_3x2_mul_rn(x3, y4, zero) - ptp_3x2_mul_rn(y3, x4, zero);
+    u = ((ptp_3x2_mul_rn(g0, m3_4, zero) - ptp_3x2_mul_rn(g3, m0_4, zero)) + ptp_3x2_mul_rn(g4, m0_3, zero));
+    v += (u + u) + u;
+    (*d)[5] = v * 0.857142866f;
+    let x8 = cp[8].x;
+    let y8 = cp[8].y;
+    let w8 = cp[8].w;
+    let g8 = ptp_3x2_mul_rn(e2, w8, zero);
+    let m2_8 = ptp_3x2_mul_rn(x2, y8, zero) - ptp_3x2_mul_rn(y2, x8, zero);
+    let m1_8 = ptp_3x2_mul_rn(x1, y8, zero) - ptp_3x2_mul_rn(y1, x8, zero);
+    u = -((ptp_3x2_mul_rn(g1, m2_8, zero) - ptp_3x2_mul_rn(g2, m1_8, zero)) + ptp_3x2_mul_rn(g8, m1_2, zero));
+    v = (u + u);
+    let m4_5 = ptp_3x2_mul_rn(x4, y5, zero) - ptp_3x2_mul_rn(y4, x5, zero);
+    u = ((ptp_3x2_mul_rn(g2, m4_5, zero) - ptp_3x2_mul_rn(g4, m2_5, zero)) + ptp_3x2_mul_rn(g5, m2_4, zero));
+    v += (u + u) + u;
+    (*d)[9] = v * 0.857142866f;
+    let m2_6 = ptp_3x2_mul_rn(x2, y6, zero) - ptp_3x2_mul_rn(y2, x6, zero);
+    u = ptp_3x2_mul_rn(g0, (-m2_6), zero);
+    u = fma(g2, m0_6, u);
+    u = fma(g6, -m0_2, u);
+    v = (u + u);
+    let m3_5 = ptp_3x2_mul_rn(x3, y5, zero) - ptp_3x2_mul_rn(y3, x5, zero);
+    u = ptp_3x2_mul_rn(g0, (m3_5), zero);
+    u = fma(g3, -m0_5, u);
+    u = fma(g5, m0_3, u);
+    v += (u + u) + u;
+    let x7 = cp[7].x;
+    let y7 = cp[7].y;
+    let w7 = cp[7].w;
+    let g7 = ptp_3x2_mul_rn(e2, w7, zero);
+    let m1_7 = ptp_3x2_mul_rn(x1, y7, zero) - ptp_3x2_mul_rn(y1, x7, zero);
+    u = ptp_3x2_mul_rn(g0, (-m1_7), zero);
+    let m0_7 = ptp_3x2_mul_rn(x0, y7, zero) - ptp_3x2_mul_rn(y0, x7, zero);
+    u = fma(g1, m0_7, u);
+    u = fma(g7, -m0_1, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (m3_4), zero);
+    u = fma(g3, -m1_4, u);
+    u = fma(g4, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[6] = v * 0.214285716f;
+    u = ptp_3x2_mul_rn(g0, (-m2_8), zero);
+    let m0_8 = ptp_3x2_mul_rn(x0, y8, zero) - ptp_3x2_mul_rn(y0, x8, zero);
+    u = fma(g2, m0_8, u);
+    u = fma(g8, -m0_2, u);
+    v = (u + u);
+    u = ptp_3x2_mul_rn(g2, (m3_5), zero);
+    u = fma(g3, -m2_5, u);
+    u = fma(g5, m2_3, u);
+    v += (u + u) + u;
+    let m2_7 = ptp_3x2_mul_rn(x2, y7, zero) - ptp_3x2_mul_rn(y2, x7, zero);
+    u = ptp_3x2_mul_rn(g1, (-m2_7), zero);
+    u = fma(g2, m1_7, u);
+    u = fma(g7, -m1_2, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (m4_5), zero);
+    u = fma(g4, -m1_5, u);
+    u = fma(g5, m1_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[8] = v * 0.214285716f;
+    u = -((ptp_3x2_mul_rn(g0, m1_8, zero) - ptp_3x2_mul_rn(g1, m0_8, zero)) + ptp_3x2_mul_rn(g8, m0_1, zero));
+    u -= ((ptp_3x2_mul_rn(g1, m2_6, zero) - ptp_3x2_mul_rn(g2, m1_6, zero)) + ptp_3x2_mul_rn(g6, m1_2, zero));
+    v = (u + u);
+    u = ((ptp_3x2_mul_rn(g0, m4_5, zero) - ptp_3x2_mul_rn(g4, m0_5, zero)) + ptp_3x2_mul_rn(g5, m0_4, zero));
+    u += ((ptp_3x2_mul_rn(g2, m3_4, zero) - ptp_3x2_mul_rn(g3, m2_4, zero)) + ptp_3x2_mul_rn(g4, m2_3, zero));
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g0, m2_7, zero) - ptp_3x2_mul_rn(g2, m0_7, zero)) + ptp_3x2_mul_rn(g7, m0_2, zero));
+    v += ((u + u) + (u + u));
+    u = ((ptp_3x2_mul_rn(g1, m3_5, zero) - ptp_3x2_mul_rn(g3, m1_5, zero)) + ptp_3x2_mul_rn(g5, m1_3, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[7] = v * 0.142857149f;
+    let x9 = cp[9].x;
+    let y9 = cp[9].y;
+    let w9 = cp[9].w;
+    let g9 = ptp_3x2_mul_rn(e2, w9, zero);
+    let m1_9 = ptp_3x2_mul_rn(x1, y9, zero) - ptp_3x2_mul_rn(y1, x9, zero);
+    let m0_9 = ptp_3x2_mul_rn(x0, y9, zero) - ptp_3x2_mul_rn(y0, x9, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_9, zero) - ptp_3x2_mul_rn(g1, m0_9, zero)) + ptp_3x2_mul_rn(g9, m0_1, zero));
+    v = u;
+    let m3_7 = ptp_3x2_mul_rn(x3, y7, zero) - ptp_3x2_mul_rn(y3, x7, zero);
+    u = ((ptp_3x2_mul_rn(g0, m3_7, zero) - ptp_3x2_mul_rn(g3, m0_7, zero)) + ptp_3x2_mul_rn(g7, m0_3, zero));
+    let m3_6 = ptp_3x2_mul_rn(x3, y6, zero) - ptp_3x2_mul_rn(y3, x6, zero);
+    u += ((ptp_3x2_mul_rn(g1, m3_6, zero) - ptp_3x2_mul_rn(g3, m1_6, zero)) + ptp_3x2_mul_rn(g6, m1_3, zero));
+    v += (u + u) + u;
+    let m4_6 = ptp_3x2_mul_rn(x4, y6, zero) - ptp_3x2_mul_rn(y4, x6, zero);
+    u = -((ptp_3x2_mul_rn(g0, m4_6, zero) - ptp_3x2_mul_rn(g4, m0_6, zero)) + ptp_3x2_mul_rn(g6, m0_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[10] = v * 0.285714298f;
+    let x11 = cp[11].x;
+    let y11 = cp[11].y;
+    let w11 = cp[11].w;
+    let g11 = ptp_3x2_mul_rn(e2, w11, zero);
+    let m2_11 = ptp_3x2_mul_rn(x2, y11, zero) - ptp_3x2_mul_rn(y2, x11, zero);
+    let m1_11 = ptp_3x2_mul_rn(x1, y11, zero) - ptp_3x2_mul_rn(y1, x11, zero);
+    u = -((ptp_3x2_mul_rn(g1, m2_11, zero) - ptp_3x2_mul_rn(g2, m1_11, zero)) + ptp_3x2_mul_rn(g11, m1_2, zero));
+    v = u;
+    let m5_8 = ptp_3x2_mul_rn(x5, y8, zero) - ptp_3x2_mul_rn(y5, x8, zero);
+    u = -((ptp_3x2_mul_rn(g1, m5_8, zero) - ptp_3x2_mul_rn(g5, m1_8, zero)) + ptp_3x2_mul_rn(g8, m1_5, zero));
+    let m5_7 = ptp_3x2_mul_rn(x5, y7, zero) - ptp_3x2_mul_rn(y5, x7, zero);
+    u -= ((ptp_3x2_mul_rn(g2, m5_7, zero) - ptp_3x2_mul_rn(g5, m2_7, zero)) + ptp_3x2_mul_rn(g7, m2_5, zero));
+    v += (u + u) + u;
+    let m4_8 = ptp_3x2_mul_rn(x4, y8, zero) - ptp_3x2_mul_rn(y4, x8, zero);
+    u = ((ptp_3x2_mul_rn(g2, m4_8, zero) - ptp_3x2_mul_rn(g4, m2_8, zero)) + ptp_3x2_mul_rn(g8, m2_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[14] = v * 0.285714298f;
+    let x10 = cp[10].x;
+    let y10 = cp[10].y;
+    let w10 = cp[10].w;
+    let g10 = ptp_3x2_mul_rn(e2, w10, zero);
+    let m3_10 = ptp_3x2_mul_rn(x3, y10, zero) - ptp_3x2_mul_rn(y3, x10, zero);
+    let m0_10 = ptp_3x2_mul_rn(x0, y10, zero) - ptp_3x2_mul_rn(y0, x10, zero);
+    u = ((ptp_3x2_mul_rn(g0, m3_10, zero) - ptp_3x2_mul_rn(g3, m0_10, zero)) + ptp_3x2_mul_rn(g10, m0_3, zero));
+    v = u;
+    let m3_9 = ptp_3x2_mul_rn(x3, y9, zero) - ptp_3x2_mul_rn(y3, x9, zero);
+    u = ((ptp_3x2_mul_rn(g1, m3_9, zero) - ptp_3x2_mul_rn(g3, m1_9, zero)) + ptp_3x2_mul_rn(g9, m1_3, zero));
+    v += (u + u);
+    let m4_9 = ptp_3x2_mul_rn(x4, y9, zero) - ptp_3x2_mul_rn(y4, x9, zero);
+    u = -((ptp_3x2_mul_rn(g0, m4_9, zero) - ptp_3x2_mul_rn(g4, m0_9, zero)) + ptp_3x2_mul_rn(g9, m0_4, zero));
+    v += (u + u) + u;
+    let m6_7 = ptp_3x2_mul_rn(x6, y7, zero) - ptp_3x2_mul_rn(y6, x7, zero);
+    u = ((ptp_3x2_mul_rn(g0, m6_7, zero) - ptp_3x2_mul_rn(g6, m0_7, zero)) + ptp_3x2_mul_rn(g7, m0_6, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g3, m4_6, zero) - ptp_3x2_mul_rn(g4, m3_6, zero)) + ptp_3x2_mul_rn(g6, m3_4, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[15] = v * 0.171428576f;
+    let m2_9 = ptp_3x2_mul_rn(x2, y9, zero) - ptp_3x2_mul_rn(y2, x9, zero);
+    u = ptp_3x2_mul_rn(g0, (-m2_9), zero);
+    u = fma(g2, m0_9, u);
+    u = fma(g9, -m0_2, u);
+    v = u;
+    let m1_10 = ptp_3x2_mul_rn(x1, y10, zero) - ptp_3x2_mul_rn(y1, x10, zero);
+    u = ptp_3x2_mul_rn(g0, (-m1_10), zero);
+    u = fma(g1, m0_10, u);
+    u = fma(g10, -m0_1, u);
+    v += (u + u);
+    let m3_8 = ptp_3x2_mul_rn(x3, y8, zero) - ptp_3x2_mul_rn(y3, x8, zero);
+    u = ptp_3x2_mul_rn(g0, (m3_8), zero);
+    u = fma(g2, m3_6, u);
+    u = fma(g3, -m2_6 - m0_8, u);
+    u = fma(g6, m2_3, u);
+    u = fma(g8, m0_3, u);
+    v += (u + u) + u;
+    let m4_7 = ptp_3x2_mul_rn(x4, y7, zero) - ptp_3x2_mul_rn(y4, x7, zero);
+    let m5_6 = ptp_3x2_mul_rn(x5, y6, zero) - ptp_3x2_mul_rn(y5, x6, zero);
+    u = ptp_3x2_mul_rn(g0, (-m4_7 - m5_6), zero);
+    u = fma(g1, -m4_6, u);
+    u = fma(g4, m1_6 + m0_7, u);
+    u = fma(g5, m0_6, u);
+    u = fma(g6, -m1_4 - m0_5, u);
+    u = fma(g7, -m0_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g1, (m3_7), zero);
+    u = fma(g3, -m1_7, u);
+    u = fma(g7, m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[11] = v * 0.0714285746f;
+    let m0_11 = ptp_3x2_mul_rn(x0, y11, zero) - ptp_3x2_mul_rn(y0, x11, zero);
+    u = -((ptp_3x2_mul_rn(g0, m1_11, zero) - ptp_3x2_mul_rn(g1, m0_11, zero)) + ptp_3x2_mul_rn(g11, m0_1, zero));
+    u -= ((ptp_3x2_mul_rn(g1, m2_9, zero) - ptp_3x2_mul_rn(g2, m1_9, zero)) + ptp_3x2_mul_rn(g9, m1_2, zero));
+    v = u;
+    let m2_10 = ptp_3x2_mul_rn(x2, y10, zero) - ptp_3x2_mul_rn(y2, x10, zero);
+    u = -((ptp_3x2_mul_rn(g0, m2_10, zero) - ptp_3x2_mul_rn(g2, m0_10, zero)) + ptp_3x2_mul_rn(g10, m0_2, zero));
+    v += (u + u);
+    u = -((ptp_3x2_mul_rn(g0, m5_7, zero) - ptp_3x2_mul_rn(g5, m0_7, zero)) + ptp_3x2_mul_rn(g7, m0_5, zero));
+    u += ((ptp_3x2_mul_rn(g1, m3_8, zero) - ptp_3x2_mul_rn(g3, m1_8, zero)) + ptp_3x2_mul_rn(g8, m1_3, zero));
+    u -= ((ptp_3x2_mul_rn(g1, m5_6, zero) - ptp_3x2_mul_rn(g5, m1_6, zero)) + ptp_3x2_mul_rn(g6, m1_5, zero));
+    u += ((ptp_3x2_mul_rn(g2, m3_7, zero) - ptp_3x2_mul_rn(g3, m2_7, zero)) + ptp_3x2_mul_rn(g7, m2_3, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[12] = v * 0.0476190485f;
+    u = ptp_3x2_mul_rn(g0, (-m2_11), zero);
+    u = fma(g2, m0_11, u);
+    u = fma(g11, -m0_2, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (-m2_10), zero);
+    u = fma(g2, m1_10, u);
+    u = fma(g10, -m1_2, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g0, (-m5_8), zero);
+    u = fma(g2, -m5_6, u);
+    u = fma(g5, m2_6 + m0_8, u);
+    u = fma(g6, -m2_5, u);
+    u = fma(g8, -m0_5, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g1, (m4_8), zero);
+    u = fma(g2, m3_8 + m4_7, u);
+    u = fma(g3, -m2_8, u);
+    u = fma(g4, -m1_8 - m2_7, u);
+    u = fma(g7, m2_4, u);
+    u = fma(g8, m2_3 + m1_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g1, (-m5_7), zero);
+    u = fma(g5, m1_7, u);
+    u = fma(g7, -m1_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[13] = v * 0.0714285746f;
+    let m5_10 = ptp_3x2_mul_rn(x5, y10, zero) - ptp_3x2_mul_rn(y5, x10, zero);
+    u = -((ptp_3x2_mul_rn(g2, m5_10, zero) - ptp_3x2_mul_rn(g5, m2_10, zero)) + ptp_3x2_mul_rn(g10, m2_5, zero));
+    v = u;
+    let m5_11 = ptp_3x2_mul_rn(x5, y11, zero) - ptp_3x2_mul_rn(y5, x11, zero);
+    u = -((ptp_3x2_mul_rn(g1, m5_11, zero) - ptp_3x2_mul_rn(g5, m1_11, zero)) + ptp_3x2_mul_rn(g11, m1_5, zero));
+    v += (u + u);
+    let m4_11 = ptp_3x2_mul_rn(x4, y11, zero) - ptp_3x2_mul_rn(y4, x11, zero);
+    u = ((ptp_3x2_mul_rn(g2, m4_11, zero) - ptp_3x2_mul_rn(g4, m2_11, zero)) + ptp_3x2_mul_rn(g11, m2_4, zero));
+    v += (u + u) + u;
+    let m7_8 = ptp_3x2_mul_rn(x7, y8, zero) - ptp_3x2_mul_rn(y7, x8, zero);
+    u = ((ptp_3x2_mul_rn(g2, m7_8, zero) - ptp_3x2_mul_rn(g7, m2_8, zero)) + ptp_3x2_mul_rn(g8, m2_7, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g4, m5_8, zero) - ptp_3x2_mul_rn(g5, m4_8, zero)) + ptp_3x2_mul_rn(g8, m4_5, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[19] = v * 0.171428576f;
+    let m6_9 = ptp_3x2_mul_rn(x6, y9, zero) - ptp_3x2_mul_rn(y6, x9, zero);
+    u = ((ptp_3x2_mul_rn(g1, m6_9, zero) - ptp_3x2_mul_rn(g6, m1_9, zero)) + ptp_3x2_mul_rn(g9, m1_6, zero));
+    v = u;
+    let m6_10 = ptp_3x2_mul_rn(x6, y10, zero) - ptp_3x2_mul_rn(y6, x10, zero);
+    u = ((ptp_3x2_mul_rn(g0, m6_10, zero) - ptp_3x2_mul_rn(g6, m0_10, zero)) + ptp_3x2_mul_rn(g10, m0_6, zero));
+    v += (u + u);
+    let m7_9 = ptp_3x2_mul_rn(x7, y9, zero) - ptp_3x2_mul_rn(y7, x9, zero);
+    u = -((ptp_3x2_mul_rn(g0, m7_9, zero) - ptp_3x2_mul_rn(g7, m0_9, zero)) + ptp_3x2_mul_rn(g9, m0_7, zero));
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g3, m4_9, zero) - ptp_3x2_mul_rn(g4, m3_9, zero)) + ptp_3x2_mul_rn(g9, m3_4, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((ptp_3x2_mul_rn(g3, m6_7, zero) - ptp_3x2_mul_rn(g6, m3_7, zero)) + ptp_3x2_mul_rn(g7, m3_6, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[20] = v * 0.171428576f;
+    u = ptp_3x2_mul_rn(g2, (m6_9), zero);
+    u = fma(g6, -m2_9, u);
+    u = fma(g9, m2_6, u);
+    v = u;
+    let m6_11 = ptp_3x2_mul_rn(x6, y11, zero) - ptp_3x2_mul_rn(y6, x11, zero);
+    let m7_10 = ptp_3x2_mul_rn(x7, y10, zero) - ptp_3x2_mul_rn(y7, x10, zero);
+    u = ptp_3x2_mul_rn(g0, (m6_11 - m7_10), zero);
+    u = fma(g6, -m0_11, u);
+    u = fma(g7, m0_10, u);
+    u = fma(g10, -m0_7, u);
+    u = fma(g11, m0_6, u);
+    v += (u + u);
+    let m8_9 = ptp_3x2_mul_rn(x8, y9, zero) - ptp_3x2_mul_rn(y8, x9, zero);
+    u = ptp_3x2_mul_rn(g0, (-m8_9), zero);
+    u = fma(g8, m0_9, u);
+    u = fma(g9, -m0_8, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g1, (-m7_9), zero);
+    u = fma(g7, m1_9, u);
+    u = fma(g9, -m1_7, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (m6_10), zero);
+    let m5_9 = ptp_3x2_mul_rn(x5, y9, zero) - ptp_3x2_mul_rn(y5, x9, zero);
+    u = fma(g3, -m5_9, u);
+    u = fma(g5, m3_9, u);
+    u = fma(g6, -m1_10, u);
+    u = fma(g9, -m3_5, u);
+    u = fma(g10, m1_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    let m6_8 = ptp_3x2_mul_rn(x6, y8, zero) - ptp_3x2_mul_rn(y6, x8, zero);
+    u = ptp_3x2_mul_rn(g3, (m6_8), zero);
+    u = fma(g6, -m3_8, u);
+    u = fma(g8, m3_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    let m4_10 = ptp_3x2_mul_rn(x4, y10, zero) - ptp_3x2_mul_rn(y4, x10, zero);
+    u = ptp_3x2_mul_rn(g3, (-m4_10), zero);
+    u = fma(g4, m3_10, u);
+    u = fma(g10, -m3_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m6_7), zero);
+    u = fma(g6, -m4_7, u);
+    u = fma(g7, m4_6, u);
+    v = fma(18.0f, u, v);
+    (*d)[21] = v * 0.042857144f;
+    let m3_11 = ptp_3x2_mul_rn(x3, y11, zero) - ptp_3x2_mul_rn(y3, x11, zero);
+    u = ptp_3x2_mul_rn(g0, (m3_11), zero);
+    u = fma(g3, -m0_11, u);
+    u = fma(g11, m0_3, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (-m4_9), zero);
+    u = fma(g2, m3_9, u);
+    u = fma(g3, -m2_9, u);
+    u = fma(g4, m1_9, u);
+    u = fma(g9, m2_3 - m1_4, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g0, (-m5_9), zero);
+    u = fma(g5, m0_9, u);
+    u = fma(g9, -m0_5, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g0, (-m4_10), zero);
+    u = fma(g4, m0_10, u);
+    u = fma(g10, -m0_4, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g0, (m6_8), zero);
+    u = fma(g1, m3_10, u);
+    u = fma(g3, -m1_10, u);
+    u = fma(g6, -m0_8, u);
+    u = fma(g8, m0_6, u);
+    u = fma(g10, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m5_6), zero);
+    u = fma(g5, m3_6, u);
+    u = fma(g6, -m3_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g1, (m6_7), zero);
+    u = fma(g6, -m1_7, u);
+    u = fma(g7, m1_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m4_7), zero);
+    u = fma(g4, m3_7, u);
+    u = fma(g7, -m3_4, u);
+    v = fma(18.0f, u, v);
+    (*d)[16] = v * 0.042857144f;
+    let m8_11 = ptp_3x2_mul_rn(x8, y11, zero) - ptp_3x2_mul_rn(y8, x11, zero);
+    u = ptp_3x2_mul_rn(g0, (-m8_11), zero);
+    u = fma(g8, m0_11, u);
+    u = fma(g11, -m0_8, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g2, (m7_10 - m8_9), zero);
+    u = fma(g7, -m2_10, u);
+    u = fma(g8, m2_9, u);
+    u = fma(g9, -m2_8, u);
+    u = fma(g10, m2_7, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g2, (m6_11), zero);
+    u = fma(g6, -m2_11, u);
+    u = fma(g11, m2_6, u);
+    v += (u + u) + u;
+    let m7_11 = ptp_3x2_mul_rn(x7, y11, zero) - ptp_3x2_mul_rn(y7, x11, zero);
+    u = ptp_3x2_mul_rn(g1, (m7_11), zero);
+    u = fma(g7, -m1_11, u);
+    u = fma(g11, m1_7, u);
+    v += ((u + u) + (u + u));
+    let m8_10 = ptp_3x2_mul_rn(x8, y10, zero) - ptp_3x2_mul_rn(y8, x10, zero);
+    u = ptp_3x2_mul_rn(g1, (-m8_10), zero);
+    u = fma(g3, -m5_11, u);
+    u = fma(g5, m3_11, u);
+    u = fma(g8, m1_10, u);
+    u = fma(g10, -m1_8, u);
+    u = fma(g11, -m3_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g5, (m6_8), zero);
+    u = fma(g6, -m5_8, u);
+    u = fma(g8, m5_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g4, (-m5_10), zero);
+    u = fma(g5, m4_10, u);
+    u = fma(g10, -m4_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m7_8), zero);
+    u = fma(g7, -m4_8, u);
+    u = fma(g8, m4_7, u);
+    v = fma(18.0f, u, v);
+    (*d)[23] = v * 0.042857144f;
+    u = -((ptp_3x2_mul_rn(g1, m8_11, zero) - ptp_3x2_mul_rn(g8, m1_11, zero)) + ptp_3x2_mul_rn(g11, m1_8, zero));
+    v = u;
+    u = -((ptp_3x2_mul_rn(g2, m8_10, zero) - ptp_3x2_mul_rn(g8, m2_10, zero)) + ptp_3x2_mul_rn(g10, m2_8, zero));
+    v += (u + u);
+    u = ((ptp_3x2_mul_rn(g2, m7_11, zero) - ptp_3x2_mul_rn(g7, m2_11, zero)) + ptp_3x2_mul_rn(g11, m2_7, zero));
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g4, m5_11, zero) - ptp_3x2_mul_rn(g5, m4_11, zero)) + ptp_3x2_mul_rn(g11, m4_5, zero));
+    u = u + u;
+    v += (u + u) + u;
+    u = ((ptp_3x2_mul_rn(g5, m7_8, zero) - ptp_3x2_mul_rn(g7, m5_8, zero)) + ptp_3x2_mul_rn(g8, m5_7, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[24] = v * 0.171428576f;
+    let m9_10 = ptp_3x2_mul_rn(x9, y10, zero) - ptp_3x2_mul_rn(y9, x10, zero);
+    u = ((ptp_3x2_mul_rn(g0, m9_10, zero) - ptp_3x2_mul_rn(g9, m0_10, zero)) + ptp_3x2_mul_rn(g10, m0_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g3, m6_10, zero) - ptp_3x2_mul_rn(g6, m3_10, zero)) + ptp_3x2_mul_rn(g10, m3_6, zero));
+    u += ((ptp_3x2_mul_rn(g4, m6_9, zero) - ptp_3x2_mul_rn(g6, m4_9, zero)) + ptp_3x2_mul_rn(g9, m4_6, zero));
+    v += (u + u) + u;
+    u = -((ptp_3x2_mul_rn(g3, m7_9, zero) - ptp_3x2_mul_rn(g7, m3_9, zero)) + ptp_3x2_mul_rn(g9, m3_7, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[25] = v * 0.285714298f;
+    let m9_11 = ptp_3x2_mul_rn(x9, y11, zero) - ptp_3x2_mul_rn(y9, x11, zero);
+    u = ptp_3x2_mul_rn(g0, (m9_11), zero);
+    u = fma(g9, -m0_11, u);
+    u = fma(g11, m0_9, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (m9_10), zero);
+    u = fma(g9, -m1_10, u);
+    u = fma(g10, m1_9, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g3, (m6_11), zero);
+    u = fma(g5, m6_9, u);
+    u = fma(g6, -m3_11 - m5_9, u);
+    u = fma(g9, m5_6, u);
+    u = fma(g11, m3_6, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m7_10 - m8_9), zero);
+    u = fma(g4, -m7_9, u);
+    u = fma(g7, m3_10 + m4_9, u);
+    u = fma(g8, m3_9, u);
+    u = fma(g9, -m3_8 - m4_7, u);
+    u = fma(g10, -m3_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m6_10), zero);
+    u = fma(g6, -m4_10, u);
+    u = fma(g10, m4_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[26] = v * 0.0714285746f;
+    let m10_11 = ptp_3x2_mul_rn(x10, y11, zero) - ptp_3x2_mul_rn(y10, x11, zero);
+    u = ((ptp_3x2_mul_rn(g0, m10_11, zero) - ptp_3x2_mul_rn(g10, m0_11, zero)) + ptp_3x2_mul_rn(g11, m0_10, zero));
+    u += ((ptp_3x2_mul_rn(g2, m9_10, zero) - ptp_3x2_mul_rn(g9, m2_10, zero)) + ptp_3x2_mul_rn(g10, m2_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g1, m9_11, zero) - ptp_3x2_mul_rn(g9, m1_11, zero)) + ptp_3x2_mul_rn(g11, m1_9, zero));
+    v += (u + u);
+    u = -((ptp_3x2_mul_rn(g3, m8_10, zero) - ptp_3x2_mul_rn(g8, m3_10, zero)) + ptp_3x2_mul_rn(g10, m3_8, zero));
+    u += ((ptp_3x2_mul_rn(g4, m6_11, zero) - ptp_3x2_mul_rn(g6, m4_11, zero)) + ptp_3x2_mul_rn(g11, m4_6, zero));
+    u -= ((ptp_3x2_mul_rn(g4, m8_9, zero) - ptp_3x2_mul_rn(g8, m4_9, zero)) + ptp_3x2_mul_rn(g9, m4_8, zero));
+    u += ((ptp_3x2_mul_rn(g5, m6_10, zero) - ptp_3x2_mul_rn(g6, m5_10, zero)) + ptp_3x2_mul_rn(g10, m5_6, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[27] = v * 0.0476190485f;
+    u = ptp_3x2_mul_rn(g2, (m9_11), zero);
+    u = fma(g9, -m2_11, u);
+    u = fma(g11, m2_9, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (m10_11), zero);
+    u = fma(g10, -m1_11, u);
+    u = fma(g11, m1_10, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g3, (-m8_11), zero);
+    u = fma(g5, -m8_9, u);
+    u = fma(g8, m3_11 + m5_9, u);
+    u = fma(g9, -m5_8, u);
+    u = fma(g11, -m3_8, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m7_11), zero);
+    u = fma(g5, m6_11 + m7_10, u);
+    u = fma(g6, -m5_11, u);
+    u = fma(g7, -m4_11 - m5_10, u);
+    u = fma(g10, m5_7, u);
+    u = fma(g11, m4_7 + m5_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (-m8_10), zero);
+    u = fma(g8, m4_10, u);
+    u = fma(g10, -m4_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[28] = v * 0.0714285746f;
+    u = ((ptp_3x2_mul_rn(g2, m10_11, zero) - ptp_3x2_mul_rn(g10, m2_11, zero)) + ptp_3x2_mul_rn(g11, m2_10, zero));
+    v = u;
+    u = -((ptp_3x2_mul_rn(g4, m8_11, zero) - ptp_3x2_mul_rn(g8, m4_11, zero)) + ptp_3x2_mul_rn(g11, m4_8, zero));
+    u -= ((ptp_3x2_mul_rn(g5, m8_10, zero) - ptp_3x2_mul_rn(g8, m5_10, zero)) + ptp_3x2_mul_rn(g10, m5_8, zero));
+    v += (u + u) + u;
+    u = ((ptp_3x2_mul_rn(g5, m7_11, zero) - ptp_3x2_mul_rn(g7, m5_11, zero)) + ptp_3x2_mul_rn(g11, m5_7, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[29] = v * 0.285714298f;
+    u = ((ptp_3x2_mul_rn(g3, m9_10, zero) - ptp_3x2_mul_rn(g9, m3_10, zero)) + ptp_3x2_mul_rn(g10, m3_9, zero));
+    v = (u + u);
+    u = -((ptp_3x2_mul_rn(g6, m7_9, zero) - ptp_3x2_mul_rn(g7, m6_9, zero)) + ptp_3x2_mul_rn(g9, m6_7, zero));
+    v += (u + u) + u;
+    (*d)[30] = v * 0.857142866f;
+    u = ptp_3x2_mul_rn(g3, (m9_11), zero);
+    u = fma(g9, -m3_11, u);
+    u = fma(g11, m3_9, u);
+    v = (u + u);
+    u = ptp_3x2_mul_rn(g6, (-m8_9), zero);
+    u = fma(g8, m6_9, u);
+    u = fma(g9, -m6_8, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m9_10), zero);
+    u = fma(g9, -m4_10, u);
+    u = fma(g10, m4_9, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g6, (-m7_10), zero);
+    u = fma(g7, m6_10, u);
+    u = fma(g10, -m6_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[31] = v * 0.214285716f;
+    u = ((ptp_3x2_mul_rn(g3, m10_11, zero) - ptp_3x2_mul_rn(g10, m3_11, zero)) + ptp_3x2_mul_rn(g11, m3_10, zero));
+    u += ((ptp_3x2_mul_rn(g5, m9_10, zero) - ptp_3x2_mul_rn(g9, m5_10, zero)) + ptp_3x2_mul_rn(g10, m5_9, zero));
+    v = (u + u);
+    u = -((ptp_3x2_mul_rn(g6, m7_11, zero) - ptp_3x2_mul_rn(g7, m6_11, zero)) + ptp_3x2_mul_rn(g11, m6_7, zero));
+    u -= ((ptp_3x2_mul_rn(g7, m8_9, zero) - ptp_3x2_mul_rn(g8, m7_9, zero)) + ptp_3x2_mul_rn(g9, m7_8, zero));
+    v += (u + u) + u;
+    u = ((ptp_3x2_mul_rn(g4, m9_11, zero) - ptp_3x2_mul_rn(g9, m4_11, zero)) + ptp_3x2_mul_rn(g11, m4_9, zero));
+    v += ((u + u) + (u + u));
+    u = -((ptp_3x2_mul_rn(g6, m8_10, zero) - ptp_3x2_mul_rn(g8, m6_10, zero)) + ptp_3x2_mul_rn(g10, m6_8, zero));
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[32] = v * 0.142857149f;
+    u = ptp_3x2_mul_rn(g5, (m9_11), zero);
+    u = fma(g9, -m5_11, u);
+    u = fma(g11, m5_9, u);
+    v = (u + u);
+    u = ptp_3x2_mul_rn(g6, (-m8_11), zero);
+    u = fma(g8, m6_11, u);
+    u = fma(g11, -m6_8, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m10_11), zero);
+    u = fma(g10, -m4_11, u);
+    u = fma(g11, m4_10, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g7, (-m8_10), zero);
+    u = fma(g8, m7_10, u);
+    u = fma(g10, -m7_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    (*d)[33] = v * 0.214285716f;
+    u = ((ptp_3x2_mul_rn(g5, m10_11, zero) - ptp_3x2_mul_rn(g10, m5_11, zero)) + ptp_3x2_mul_rn(g11, m5_10, zero));
+    v = (u + u);
+    u = -((ptp_3x2_mul_rn(g7, m8_11, zero) - ptp_3x2_mul_rn(g8, m7_11, zero)) + ptp_3x2_mul_rn(g11, m7_8, zero));
+    v += (u + u) + u;
+    (*d)[34] = v * 0.857142866f;
+    u = ((ptp_3x2_mul_rn(g6, m9_10, zero) - ptp_3x2_mul_rn(g9, m6_10, zero)) + ptp_3x2_mul_rn(g10, m6_9, zero));
+    v = u;
+    (*d)[35] = v * 6.0f;
+    u = ((ptp_3x2_mul_rn(g6, m9_11, zero) - ptp_3x2_mul_rn(g9, m6_11, zero)) + ptp_3x2_mul_rn(g11, m6_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g7, m9_10, zero) - ptp_3x2_mul_rn(g9, m7_10, zero)) + ptp_3x2_mul_rn(g10, m7_9, zero));
+    v += (u + u);
+    (*d)[36] = v * 1.5f;
+    u = ((ptp_3x2_mul_rn(g6, m10_11, zero) - ptp_3x2_mul_rn(g10, m6_11, zero)) + ptp_3x2_mul_rn(g11, m6_10, zero));
+    u += ((ptp_3x2_mul_rn(g8, m9_10, zero) - ptp_3x2_mul_rn(g9, m8_10, zero)) + ptp_3x2_mul_rn(g10, m8_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g7, m9_11, zero) - ptp_3x2_mul_rn(g9, m7_11, zero)) + ptp_3x2_mul_rn(g11, m7_9, zero));
+    v += (u + u);
+    (*d)[37] = v;
+    u = ((ptp_3x2_mul_rn(g8, m9_11, zero) - ptp_3x2_mul_rn(g9, m8_11, zero)) + ptp_3x2_mul_rn(g11, m8_9, zero));
+    v = u;
+    u = ((ptp_3x2_mul_rn(g7, m10_11, zero) - ptp_3x2_mul_rn(g10, m7_11, zero)) + ptp_3x2_mul_rn(g11, m7_10, zero));
+    v += (u + u);
+    (*d)[38] = v * 1.5f;
+    u = ((ptp_3x2_mul_rn(g8, m10_11, zero) - ptp_3x2_mul_rn(g10, m8_11, zero)) + ptp_3x2_mul_rn(g11, m8_10, zero));
+    v = u;
+    (*d)[39] = v * 6.0f;
+    u = ptp_3x2_mul_rn(g2, (-m5_9), zero);
+    u = fma(g5, m2_9, u);
+    u = fma(g9, -m2_5, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g0, (-m5_11), zero);
+    u = fma(g1, m4_11, u);
+    u = fma(g4, -m1_11, u);
+    u = fma(g5, m0_11, u);
+    u = fma(g11, m1_4 - m0_5, u);
+    v += (u + u);
+    u = ptp_3x2_mul_rn(g2, (m3_11), zero);
+    u = fma(g3, -m2_11, u);
+    u = fma(g11, m2_3, u);
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g2, (m4_10), zero);
+    u = fma(g4, -m2_10, u);
+    u = fma(g10, m2_4, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (-m5_10), zero);
+    u = fma(g2, m6_8, u);
+    u = fma(g5, m1_10, u);
+    u = fma(g6, -m2_8, u);
+    u = fma(g8, m2_6, u);
+    u = fma(g10, -m1_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m5_8), zero);
+    u = fma(g5, m3_8, u);
+    u = fma(g8, -m3_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g1, (m7_8), zero);
+    u = fma(g7, -m1_8, u);
+    u = fma(g8, m1_7, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (-m5_7), zero);
+    u = fma(g5, m4_7, u);
+    u = fma(g7, -m4_5, u);
+    v = fma(18.0f, u, v);
+    (*d)[18] = v * 0.042857144f;
+    u = ptp_3x2_mul_rn(g0, (-m4_11), zero);
+    u = fma(g2, m4_9, u);
+    u = fma(g4, m0_11 - m2_9, u);
+    u = fma(g9, m2_4, u);
+    u = fma(g11, -m0_4, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g1, (m3_11 - m5_9), zero);
+    u = fma(g3, -m1_11, u);
+    u = fma(g5, m1_9, u);
+    u = fma(g9, -m1_5, u);
+    u = fma(g11, m1_3, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g0, (-m5_10), zero);
+    u = fma(g2, m3_10, u);
+    u = fma(g3, -m2_10, u);
+    u = fma(g5, m0_10, u);
+    u = fma(g10, m2_3 - m0_5, u);
+    v += ((u + u) + (u + u)) + u;
+    u = ptp_3x2_mul_rn(g0, (m7_8), zero);
+    u = fma(g2, m6_7, u);
+    u = fma(g6, -m2_7, u);
+    u = fma(g7, m2_6 - m0_8, u);
+    u = fma(g8, m0_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m4_8), zero);
+    u = fma(g4, m3_8 - m5_6, u);
+    u = fma(g5, m4_6, u);
+    u = fma(g6, -m4_5, u);
+    u = fma(g8, -m3_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g1, (m6_8), zero);
+    u = fma(g6, -m1_8, u);
+    u = fma(g8, m1_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (-m5_7), zero);
+    u = fma(g5, m3_7, u);
+    u = fma(g7, -m3_5, u);
+    v = fma(18.0f, u, v);
+    (*d)[17] = v * 0.0285714287f;
+    u = ptp_3x2_mul_rn(g0, (m7_11), zero);
+    u = fma(g2, -m7_9, u);
+    u = fma(g7, m2_9 - m0_11, u);
+    u = fma(g9, -m2_7, u);
+    u = fma(g11, m0_7, u);
+    v = u;
+    u = ptp_3x2_mul_rn(g0, (-m8_10), zero);
+    u = fma(g2, m6_10, u);
+    u = fma(g6, -m2_10, u);
+    u = fma(g8, m0_10, u);
+    u = fma(g10, m2_6 - m0_8, u);
+    v += ((u + u) + (u + u));
+    u = ptp_3x2_mul_rn(g1, (m6_11 - m8_9), zero);
+    u = fma(g6, -m1_11, u);
+    u = fma(g8, m1_9, u);
+    u = fma(g9, -m1_8, u);
+    u = fma(g11, m1_6, u);
+    v += ((u + u) + (u + u)) + u;
+    u = ptp_3x2_mul_rn(g3, (-m4_11), zero);
+    u = fma(g4, m3_11 - m5_9, u);
+    u = fma(g5, m4_9, u);
+    u = fma(g9, -m4_5, u);
+    u = fma(g11, -m3_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g3, (m7_8), zero);
+    u = fma(g5, m6_7, u);
+    u = fma(g6, -m5_7, u);
+    u = fma(g7, m5_6 - m3_8, u);
+    u = fma(g8, m3_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ptp_3x2_mul_rn(g3, (-m5_10), zero);
+    u = fma(g5, m3_10, u);
+    u = fma(g10, -m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = ptp_3x2_mul_rn(g4, (m6_8), zero);
+    u = fma(g6, -m4_8, u);
+    u = fma(g8, m4_6, u);
+    v = fma(18.0f, u, v);
+    (*d)[22] = v * 0.0285714287f;
 }
 
-@compute @workgroup_size(128)
+@compute @workgroup_size(64)
 fn main(@builtin(local_invocation_id) lid3: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>,
         @builtin(num_workgroups) nwg: vec3<u32>) {
     let eye = params.eye;
     let patch_count = params.patch_count;
-    let lid: u32 = lid3.x;
-    let q: u32 = lid / PTP_3X2_P;
-    let t: u32 = lid % PTP_3X2_P;
-    var i: u32;
-    var pj: u32;
-    var kl: u32;
-    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_3X2_Q + q;
-    var f: u32 = 0u;
-    let live: bool = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_3X2_K; i += PTP_3X2_P) {
-        if (live) {
-            pts[q * PTP_3X2_K + i] = cp[pid * PTP_3X2_K + i];
-        }
+    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_3X2_Q + lid3.x;
+    var p: array<vec4<f32>, PTP_3X2_K>;
+    if (pid >= patch_count) {
+        return;
     }
-    workgroupBarrier();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_3x2_own_start[t]; i < ptp_3x2_own_start[t + 1u]; i++) {
-        acc[q * PTP_3X2_L + ptp_3x2_own_plane[i]] = 0.0f;
-    }
-    pj = ptp_3x2_pj0[t];
-    kl = ptp_3x2_kl0[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w0[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj1[t];
-    kl = ptp_3x2_kl1[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w1[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj2[t];
-    kl = ptp_3x2_kl2[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w2[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj3[t];
-    kl = ptp_3x2_kl3[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w3[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj4[t];
-    kl = ptp_3x2_kl4[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w4[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj5[t];
-    kl = ptp_3x2_kl5[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w5[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj6[t];
-    kl = ptp_3x2_kl6[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w6[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj7[t];
-    kl = ptp_3x2_kl7[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w7[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj8[t];
-    kl = ptp_3x2_kl8[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w8[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj9[t];
-    kl = ptp_3x2_kl9[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w9[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj10[t];
-    kl = ptp_3x2_kl10[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w10[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj11[t];
-    kl = ptp_3x2_kl11[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w11[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-    pj = ptp_3x2_pj12[t];
-    kl = ptp_3x2_kl12[t];
-    acc[q * PTP_3X2_L + (pj & 0xffffu)] += ptp_3x2_w12[t] *
-        ptp_3x2_cross4z(pts[q * PTP_3X2_K + (pj >> 16)], pts[q * PTP_3X2_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X2_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_3x2_own_start[t]; i < ptp_3x2_own_start[t + 1u]; i++) {
-        let plane: u32 = ptp_3x2_own_plane[i];
-        let d: f32 = eye.z * acc[q * PTP_3X2_L + plane];
-        f |= ptp_3x2_flags(d);
-    }
-    flags[q * PTP_3X2_P + t] = f;
-    workgroupBarrier();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_3X2_P; i++) {
-            f |= flags[q * PTP_3X2_P + i];
-        }
-        cls[pid] = ptp_3x2_class_of(f);
-    }
+    p[0] = cp[pid * PTP_3X2_K + 0u];
+    p[1] = cp[pid * PTP_3X2_K + 1u];
+    p[2] = cp[pid * PTP_3X2_K + 2u];
+    p[3] = cp[pid * PTP_3X2_K + 3u];
+    p[4] = cp[pid * PTP_3X2_K + 4u];
+    p[5] = cp[pid * PTP_3X2_K + 5u];
+    p[6] = cp[pid * PTP_3X2_K + 6u];
+    p[7] = cp[pid * PTP_3X2_K + 7u];
+    p[8] = cp[pid * PTP_3X2_K + 8u];
+    p[9] = cp[pid * PTP_3X2_K + 9u];
+    p[10] = cp[pid * PTP_3X2_K + 10u];
+    p[11] = cp[pid * PTP_3X2_K + 11u];
+    cls[pid] = ptp_3x2_classify_patch(p, eye, params.zero);
 }

@@ -20,7 +20,7 @@
  * uint groups_x; }, groups_x = the number of workgroups dispatched along x.
  * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:
  * workgroup (x, y) handles the patches of block y * groups_x + x.
- * Schedule: 16 threads per patch, 8 patches per workgroup (128 threads), 33 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 [[vk::binding(0, 0)]] StructuredBuffer<float4> cp : register(t0);
@@ -33,706 +33,3978 @@
     uint groups_x;
 };
 
-#define PTP_3X3_P 16u /* threads per patch */
-#define PTP_3X3_Q 8u /* patches per workgroup */
+#define PTP_3X3_P 1u /* threads per patch */
+#define PTP_3X3_Q 64u /* patches per workgroup */
 #define PTP_3X3_K 16u /* control points per patch */
 #define PTP_3X3_L 64u /* control planes per patch */
-/* 33 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-static const uint ptp_3x3_own_start[17] = {
-    0u, 3u, 6u, 9u, 12u, 16u, 20u, 24u, 28u, 32u, 36u, 40u, 44u, 49u, 54u, 59u,
-    64u
-};
-static const uint ptp_3x3_own_plane[64] = {
-    27u, 41u, 49u, 28u, 46u, 54u, 35u, 50u, 58u, 36u, 53u, 61u, 0u, 16u, 19u, 33u,
-    7u, 20u, 23u, 38u, 26u, 40u, 51u, 56u, 29u, 47u, 52u, 63u, 1u, 10u, 32u, 34u,
-    6u, 13u, 37u, 39u, 8u, 17u, 43u, 59u, 15u, 22u, 44u, 60u, 2u, 3u, 11u, 18u,
-    48u, 4u, 5u, 12u, 21u, 55u, 9u, 24u, 25u, 42u, 57u, 14u, 30u, 31u, 45u, 62u
-};
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-static const uint ptp_3x3_pj0[16] = {
-    0x0001bu, 0x0001cu, 0x00023u, 0x00024u, 0x00000u, 0x20007u, 0x0001au, 0x0001du,
-    0x00001u, 0x10006u, 0x00008u, 0x2000fu, 0x00002u, 0x00004u, 0x00009u, 0x1000eu
-};
-static const uint ptp_3x3_kl0[16] = {
-    0xe0006u, 0xf0006u, 0xf0009u, 0xe000bu, 0x40001u, 0x70003u, 0xf0004u, 0xf0007u,
-    0x50001u, 0x70003u, 0x80001u, 0xb0003u, 0x60001u, 0x70002u, 0x90001u, 0xb0003u
-};
-static const float ptp_3x3_w0[16] = {
-    -0.0881632641f, -0.022040816f, 0.022040816f, -0.0367346928f, -9.0f, -9.0f, 0.0122448979f, -0.0244897958f,
-    -3.85714293f, -2.57142854f, -2.57142854f, -2.57142854f, -1.28571427f, -0.514285743f, -1.10204077f, -0.734693885f
-};
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-static const uint ptp_3x3_pj1[16] = {
-    0x0001bu, 0x0001cu, 0x00023u, 0x10024u, 0x00010u, 0x00014u, 0x0001au, 0x1001du,
-    0x00001u, 0x20006u, 0x00008u, 0x3000fu, 0x00002u, 0x00004u, 0x00009u, 0x2000eu
-};
-static const uint ptp_3x3_kl1[16] = {
-    0xd0007u, 0xe0007u, 0xe000au, 0xf0009u, 0xc0001u, 0xf0002u, 0xe0005u, 0xf0006u,
-    0x40002u, 0x60003u, 0x50004u, 0x70006u, 0x50002u, 0x60003u, 0x80002u, 0xa0003u
-};
-static const float ptp_3x3_w1[16] = {
-    -0.0587755106f, -0.0514285713f, -0.044081632f, 0.0881632641f, -0.428571433f, -0.0244897958f, -0.0367346928f, -0.0367346928f,
-    -2.57142854f, -3.85714293f, 3.85714293f, 3.85714293f, -2.57142854f, -0.771428585f, -0.734693885f, -1.10204077f
-};
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-static const uint ptp_3x3_pj2[16] = {
-    0x0001bu, 0x0001cu, 0x00023u, 0x10024u, 0x00010u, 0x00014u, 0x0001au, 0x1001du,
-    0x0000au, 0x0000du, 0x00011u, 0x10016u, 0x00002u, 0x10004u, 0x00009u, 0x2000eu
-};
-static const uint ptp_3x3_kl2[16] = {
-    0xb0009u, 0xb000au, 0xd000bu, 0xe000au, 0x90004u, 0xe0003u, 0xd0006u, 0xe0007u,
-    0xa0001u, 0xb0003u, 0xd0001u, 0xf0003u, 0x40003u, 0x60002u, 0x60004u, 0x70006u
-};
-static const float ptp_3x3_w2[16] = {
-    0.0881632641f, 0.044081632f, -0.0514285713f, -0.0661224499f, 1.28571427f, -0.0367346928f, -0.183673471f, -0.183673471f,
-    -0.367346942f, -0.122448981f, -0.183673471f, -0.122448981f, -0.428571433f, -2.31428576f, 1.10204077f, 1.65306127f
-};
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-static const uint ptp_3x3_pj3[16] = {
-    0x1001bu, 0x1001cu, 0x10023u, 0x10024u, 0x00010u, 0x00014u, 0x0001au, 0x1001du,
-    0x0000au, 0x1000du, 0x00011u, 0x10016u, 0x10002u, 0x10004u, 0x10009u, 0x3000eu
-};
-static const uint ptp_3x3_kl3[16] = {
-    0xf0004u, 0xf0005u, 0xf0008u, 0xd000bu, 0x80005u, 0xb0006u, 0xc0007u, 0xb000au,
-    0x90002u, 0xb0002u, 0xc0002u, 0xb0007u, 0x40002u, 0x50003u, 0x50004u, 0x70005u
-};
-static const float ptp_3x3_w3[16] = {
-    0.0367346928f, 0.044081632f, 0.0514285713f, -0.1322449f, -2.57142854f, -0.0367346928f, -0.0367346928f, 0.220408157f,
-    -0.734693885f, -0.367346942f, -0.122448981f, -0.367346942f, -1.28571427f, -1.54285717f, 1.65306127f, 1.10204077f
-};
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-static const uint ptp_3x3_pj4[16] = {
-    0x1001bu, 0x1001cu, 0x10023u, 0x20024u, 0x10010u, 0x00014u, 0x0001au, 0x2001du,
-    0x0000au, 0x1000du, 0x00011u, 0x20016u, 0x00003u, 0x20004u, 0x00018u, 0x1001eu
-};
-static const uint ptp_3x3_kl4[16] = {
-    0xe0005u, 0xe0006u, 0xe0009u, 0xf0008u, 0x80004u, 0xa0007u, 0xb0008u, 0xf0005u,
-    0x80003u, 0xa0003u, 0xa0004u, 0xe0003u, 0x70001u, 0x40003u, 0xd0004u, 0xf0007u
-};
-static const float ptp_3x3_w4[16] = {
-    0.0661224499f, -0.1322449f, 0.1322449f, 0.0587755106f, 1.28571427f, -0.146938771f, 0.0734693855f, 0.146938771f,
-    -0.122448981f, -0.734693885f, 0.367346942f, -0.183673471f, -0.257142872f, -0.257142872f, 0.257142872f, -0.146938771f
-};
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-static const uint ptp_3x3_pj5[16] = {
-    0x1001bu, 0x1001cu, 0x10023u, 0x20024u, 0x00013u, 0x10014u, 0x0001au, 0x2001du,
-    0x0000au, 0x1000du, 0x00011u, 0x20016u, 0x00003u, 0x00005u, 0x00018u, 0x2001eu
-};
-static const uint ptp_3x3_kl5[16] = {
-    0xd0006u, 0xd0007u, 0xd000au, 0xe0009u, 0xf0001u, 0xe0002u, 0xa0009u, 0xd0007u,
-    0x70004u, 0x70006u, 0x90005u, 0xb0006u, 0x60002u, 0x70003u, 0xc0005u, 0xf0006u
-};
-static const float ptp_3x3_w5[16] = {
-    -0.198367342f, -0.1322449f, -0.198367342f, 0.198367342f, -0.0122448979f, -0.110204078f, 0.220408157f, -0.146938771f,
-    0.183673471f, 0.551020384f, -0.551020384f, 0.551020384f, -1.54285717f, -0.428571433f, -0.771428585f, 0.110204078f
-};
-
-/* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-static const uint ptp_3x3_pj6[16] = {
-    0x1001bu, 0x1001cu, 0x10023u, 0x20024u, 0x00013u, 0x10014u, 0x1001au, 0x2001du,
-    0x0000au, 0x2000du, 0x00011u, 0x20016u, 0x00003u, 0x10005u, 0x00018u, 0x2001eu
-};
-static const uint ptp_3x3_kl6[16] = {
-    0xc0007u, 0xb0009u, 0xc000bu, 0xd000au, 0xe0002u, 0xd0003u, 0xe0004u, 0xb0009u,
-    0x60005u, 0x90003u, 0x80006u, 0xa0007u, 0x50003u, 0x70002u, 0x90008u, 0xe0007u
-};
-static const float ptp_3x3_w6[16] = {
-    -0.0514285713f, 0.2644898f, -0.0587755106f, -0.1322449f, -0.0734693855f, -0.0734693855f, 0.146938771f, 0.440816313f,
-    0.551020384f, -0.367346942f, -0.734693885f, -1.10204077f, -0.771428585f, -1.28571427f, 1.54285717f, -0.330612242f
-};
-
-/* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-static const uint ptp_3x3_pj7[16] = {
-    0x1001bu, 0x2001cu, 0x20023u, 0x20024u, 0x00013u, 0x10014u, 0x1001au, 0x3001du,
-    0x1000au, 0x2000du, 0x10011u, 0x30016u, 0x10003u, 0x10005u, 0x10018u, 0x2001eu
-};
-static const uint ptp_3x3_kl7[16] = {
-    0xb0008u, 0xf0004u, 0xe0008u, 0xc000bu, 0xd0003u, 0xb0005u, 0xc0006u, 0xf0004u,
-    0x80002u, 0x70005u, 0x90004u, 0xb0005u, 0x50002u, 0x60003u, 0xc0004u, 0xb000au
-};
-static const float ptp_3x3_w7[16] = {
-    0.1322449f, 0.0514285713f, 0.1322449f, -0.0514285713f, -0.0367346928f, 0.220408157f, -0.146938771f, 0.0367346928f,
-    -0.367346942f, 1.10204077f, 1.10204077f, 0.734693885f, -2.31428576f, -2.57142854f, 0.514285743f, 0.661224484f
-};
-
-/* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-static const uint ptp_3x3_pj8[16] = {
-    0x1001bu, 0x2001cu, 0x20023u, 0x30024u, 0x00013u, 0x10014u, 0x1001au, 0x3001du,
-    0x1000au, 0x3000du, 0x10011u, 0x30016u, 0x10003u, 0x20005u, 0x40018u, 0x3001eu
-};
-static const uint ptp_3x3_kl8[16] = {
-    0xa0009u, 0xe0005u, 0xd0009u, 0xe0008u, 0xb0005u, 0xa0006u, 0xa0008u, 0xe0005u,
-    0x60004u, 0x70004u, 0x80005u, 0xa0006u, 0x40003u, 0x50003u, 0x80005u, 0xf0005u
-};
-static const float ptp_3x3_w8[16] = {
-    0.396734685f, 0.198367342f, 0.0661224499f, 0.0514285713f, 0.0367346928f, -0.330612242f, 0.440816313f, 0.183673471f,
-    1.10204077f, 0.183673471f, -0.551020384f, 0.551020384f, -0.514285743f, -1.28571427f, -2.31428576f, 0.220408157f
-};
-
-/* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-static const uint ptp_3x3_pj9[16] = {
-    0x2001bu, 0x2001cu, 0x20023u, 0x30024u, 0x00013u, 0x10014u, 0x2001au, 0x3001du,
-    0x2000au, 0x3000du, 0x20011u, 0x30016u, 0x0000bu, 0x0000cu, 0x00019u, 0x3001eu
-};
-static const uint ptp_3x3_kl9[16] = {
-    0xe0004u, 0xd0006u, 0xc000au, 0xd0009u, 0xa0006u, 0x90007u, 0xd0004u, 0xd0006u,
-    0x50004u, 0x60005u, 0x80004u, 0x90007u, 0xb0001u, 0xb0002u, 0xe0004u, 0xe0006u
-};
-static const float ptp_3x3_w9[16] = {
-    0.1322449f, -0.0661224499f, -0.0881632641f, 0.044081632f, -0.220408157f, -0.440816313f, 0.183673471f, 0.0367346928f,
-    0.551020384f, 0.551020384f, 0.367346942f, -0.367346942f, -0.0734693855f, -0.146938771f, 0.0734693855f, 0.220408157f
-};
-
-/* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-static const uint ptp_3x3_pj10[16] = {
-    0x2001bu, 0x2001cu, 0x30023u, 0x30024u, 0x00013u, 0x20014u, 0x2001au, 0x3001du,
-    0x00020u, 0x00025u, 0x0002bu, 0x0002cu, 0x0000bu, 0x0000cu, 0x00019u, 0x3001eu
-};
-static const uint ptp_3x3_kl10[16] = {
-    0xd0005u, 0xc0007u, 0xd0008u, 0xc000au, 0x90007u, 0xc0003u, 0xc0005u, 0xc0007u,
-    0xd0008u, 0xf000bu, 0xf000du, 0xf000eu, 0xa0002u, 0xa0003u, 0xd0005u, 0xd0007u
-};
-static const float ptp_3x3_w10[16] = {
-    0.1322449f, -0.0367346928f, 0.0367346928f, -0.022040816f, -0.183673471f, -0.0122448979f, 0.0367346928f, -0.0122448979f,
-    0.514285743f, -0.0122448979f, 0.0244897958f, 0.0122448979f, -0.440816313f, -0.220408157f, -0.220408157f, -0.0734693855f
-};
-
-/* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-static const uint ptp_3x3_pj11[16] = {
-    0x2001bu, 0x2001cu, 0x40023u, 0x40024u, 0x10013u, 0x20014u, 0x2001au, 0x3001du,
-    0x00020u, 0x10025u, 0x1002bu, 0x1002cu, 0x0000bu, 0x0000cu, 0x00019u, 0x3001eu
-};
-static const uint ptp_3x3_kl11[16] = {
-    0xc0006u, 0xb0008u, 0xf0005u, 0xf0006u, 0xd0002u, 0xb0004u, 0x90008u, 0xb0008u,
-    0xc0009u, 0xf000au, 0xf000cu, 0xf000du, 0x90003u, 0x70006u, 0xc0006u, 0xb0009u
-};
-static const float ptp_3x3_w11[16] = {
-    -0.044081632f, 0.1322449f, -0.044081632f, -0.0881632641f, -0.110204078f, 0.183673471f, 0.220408157f, 0.0734693855f,
-    -0.771428585f, 0.0367346928f, 0.0367346928f, 0.0734693855f, -0.220408157f, 0.110204078f, -0.220408157f, 0.440816313f
-};
-
-/* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-static const uint ptp_3x3_pj12[16] = {
-    0x2001bu, 0x2001cu, 0x40023u, 0x40024u, 0x10013u, 0x20014u, 0x3001au, 0x3001du,
-    0x10020u, 0x10025u, 0x1002bu, 0x2002cu, 0x0000bu, 0x1000cu, 0x00019u, 0x5001eu
-};
-static const uint ptp_3x3_kl12[16] = {
-    0xa0008u, 0xa0009u, 0xe0006u, 0xe0007u, 0xc0003u, 0xa0005u, 0xc0004u, 0xa0009u,
-    0xc0008u, 0xe000bu, 0xe000du, 0xf000cu, 0x70005u, 0xa0002u, 0xa0008u, 0xb0007u
-};
-static const float ptp_3x3_w12[16] = {
-    0.2644898f, 0.396734685f, -0.2644898f, -0.1322449f, -0.0244897958f, 0.661224484f, 0.0244897958f, 0.220408157f,
-    0.257142872f, -0.146938771f, 0.110204078f, 0.0367346928f, 0.220408157f, -0.661224484f, 0.440816313f, -0.661224484f
-};
-
-/* Round 13: thread t adds w13[t] * term(plane | j << 16 = pj13[t], k | l << 16 = kl13[t]). */
-static const uint ptp_3x3_pj13[16] = {
-    0x3001bu, 0x3001cu, 0x40023u, 0x40024u, 0x10013u, 0x20014u, 0x4001au, 0x4001du,
-    0x40020u, 0x20025u, 0x2002bu, 0x2002cu, 0x1000bu, 0x1000cu, 0x10019u, 0x6001eu
-};
-static const uint ptp_3x3_kl13[16] = {
-    0xd0004u, 0xe0004u, 0xd0007u, 0xb000au, 0xb0004u, 0x90006u, 0xa0005u, 0xb0007u,
-    0xc0005u, 0xf0009u, 0xe000cu, 0xe000du, 0x90002u, 0x90003u, 0xd0004u, 0xa0007u
-};
-static const float ptp_3x3_w13[16] = {
-    0.0514285713f, 0.0587755106f, -0.1322449f, 0.0661224499f, 0.146938771f, -0.330612242f, -0.330612242f, -0.110204078f,
-    -1.54285717f, 0.183673471f, 0.0734693855f, 0.110204078f, -0.661224484f, -0.440816313f, 0.330612242f, -0.991836727f
-};
-
-/* Round 14: thread t adds w14[t] * term(plane | j << 16 = pj14[t], k | l << 16 = kl14[t]). */
-static const uint ptp_3x3_pj14[16] = {
-    0x3001bu, 0x3001cu, 0x40023u, 0x50024u, 0x10013u, 0x20014u, 0x4001au, 0x5001du,
-    0x40020u, 0x20025u, 0x3002bu, 0x3002cu, 0x1000bu, 0x1000cu, 0x10019u, 0x2001fu
-};
-static const uint ptp_3x3_kl14[16] = {
-    0xc0005u, 0xd0005u, 0xb0009u, 0xe0006u, 0xa0005u, 0x80007u, 0x90006u, 0xb0006u,
-    0x90008u, 0xd000bu, 0xd000cu, 0xe000cu, 0x80003u, 0x70005u, 0xc0005u, 0xf0007u
-};
-static const float ptp_3x3_w14[16] = {
-    0.022040816f, 0.0881632641f, 0.1322449f, -0.396734685f, 0.330612242f, -0.146938771f, -0.661224484f, -0.330612242f,
-    2.31428576f, -0.183673471f, 0.0122448979f, 0.0244897958f, -0.146938771f, 0.661224484f, -0.110204078f, -0.514285743f
-};
-
-/* Round 15: thread t adds w15[t] * term(plane | j << 16 = pj15[t], k | l << 16 = kl15[t]). */
-static const uint ptp_3x3_pj15[16] = {
-    0x3001bu, 0x3001cu, 0x50023u, 0x50024u, 0x10013u, 0x30014u, 0x4001au, 0x5001du,
-    0x00022u, 0x30025u, 0x4002bu, 0x4002cu, 0x1000bu, 0x2000cu, 0x10019u, 0x3001fu
-};
-static const uint ptp_3x3_kl15[16] = {
-    0x90008u, 0xa0008u, 0xd0006u, 0xd0007u, 0x90006u, 0xa0004u, 0x80007u, 0xa0007u,
-    0xf0008u, 0xf0008u, 0xf0009u, 0xf000au, 0x70004u, 0x80003u, 0x90008u, 0xf0006u
-};
-static const float ptp_3x3_w15[16] = {
-    0.044081632f, 0.0881632641f, -0.396734685f, -0.2644898f, -0.661224484f, 0.183673471f, -0.110204078f, -0.661224484f,
-    0.0244897958f, 0.0367346928f, 0.0367346928f, -0.0367346928f, 0.330612242f, -0.0734693855f, 0.661224484f, 0.771428585f
-};
-
-/* Round 16: thread t adds w16[t] * term(plane | j << 16 = pj16[t], k | l << 16 = kl16[t]). */
-static const uint ptp_3x3_pj16[16] = {
-    0x4001bu, 0x4001cu, 0x50023u, 0x50024u, 0x10013u, 0x30014u, 0x5001au, 0x6001du,
-    0x00022u, 0x30025u, 0x4002bu, 0x4002cu, 0x1000bu, 0x2000cu, 0x20019u, 0x3001fu
-};
-static const uint ptp_3x3_kl16[16] = {
-    0xb0005u, 0xb0006u, 0xc0007u, 0xb0009u, 0x80007u, 0x90005u, 0x80006u, 0x90007u,
-    0xe0009u, 0xe0009u, 0xe000au, 0xe000bu, 0x60005u, 0x70004u, 0xc0004u, 0xe0007u
-};
-static const float ptp_3x3_w16[16] = {
-    -0.0661224499f, -0.1322449f, -0.0881632641f, 0.396734685f, -0.183673471f, 0.220408157f, -0.330612242f, -0.330612242f,
-    0.0367346928f, 0.146938771f, -0.220408157f, -0.146938771f, 0.991836727f, 0.330612242f, 0.146938771f, -0.257142872f
-};
-
-/* Round 17: thread t adds w17[t] * term(plane | j << 16 = pj17[t], k | l << 16 = kl17[t]). */
-static const uint ptp_3x3_pj17[16] = {
-    0x4001bu, 0x4001cu, 0x50023u, 0x60024u, 0x20013u, 0x30014u, 0x00028u, 0x3002fu,
-    0x00022u, 0x30025u, 0x4002bu, 0x5002cu, 0x2000bu, 0x2000cu, 0x40019u, 0x3001fu
-};
-static const uint ptp_3x3_kl17[16] = {
-    0xa0006u, 0xa0007u, 0xb0008u, 0xc0007u, 0xa0004u, 0x80006u, 0xd000cu, 0xf000eu,
-    0xd000au, 0xd000au, 0xd000bu, 0xf0009u, 0x60004u, 0x60005u, 0x90005u, 0xb000au
-};
-static const float ptp_3x3_w17[16] = {
-    -0.396734685f, -0.198367342f, 0.198367342f, -0.044081632f, 0.440816313f, -0.0367346928f, 0.428571433f, 0.428571433f,
-    -0.146938771f, -0.0367346928f, -0.183673471f, 0.220408157f, 0.661224484f, 0.991836727f, -0.991836727f, 1.54285717f
-};
-
-/* Round 18: thread t adds w18[t] * term(plane | j << 16 = pj18[t], k | l << 16 = kl18[t]). */
-static const uint ptp_3x3_pj18[16] = {
-    0x4001bu, 0x5001cu, 0x50023u, 0x60024u, 0x20013u, 0x20017u, 0x40028u, 0x6002fu,
-    0x00022u, 0x30025u, 0x5002bu, 0x5002cu, 0x3000bu, 0x3000cu, 0x40019u, 0x6001fu
-};
-static const uint ptp_3x3_kl18[16] = {
-    0x90007u, 0xa0006u, 0xa0009u, 0xb0008u, 0x90005u, 0xf0003u, 0xd0008u, 0xf000bu,
-    0xc000bu, 0xc000bu, 0xf0008u, 0xe000au, 0x50004u, 0x60004u, 0x80006u, 0xb0007u
-};
-static const float ptp_3x3_w18[16] = {
-    -0.198367342f, -0.595102012f, 0.595102012f, 0.198367342f, 0.330612242f, -0.428571433f, 1.28571427f, -1.28571427f,
-    -0.0367346928f, -0.0244897958f, 0.146938771f, -0.330612242f, 0.110204078f, 0.220408157f, -0.661224484f, -2.31428576f
-};
-
-/* Round 19: thread t adds w19[t] * term(plane | j << 16 = pj19[t], k | l << 16 = kl19[t]). */
-static const uint ptp_3x3_pj19[16] = {
-    0x5001bu, 0x5001cu, 0x60023u, 0x60024u, 0x20013u, 0x20017u, 0x40028u, 0x7002fu,
-    0x10022u, 0x40025u, 0x5002bu, 0x5002cu, 0x00012u, 0x00015u, 0x0002au, 0x1002du
-};
-static const uint ptp_3x3_kl19[16] = {
-    0x90006u, 0x90007u, 0xa0008u, 0xa0009u, 0x80006u, 0xb0007u, 0xc0009u, 0xf000au,
-    0xe0008u, 0xf0007u, 0xe0009u, 0xd000bu, 0xe0001u, 0xf0003u, 0xf000cu, 0xf000eu
-};
-static const float ptp_3x3_w19[16] = {
-    -0.595102012f, -0.396734685f, 0.396734685f, 0.595102012f, -0.220408157f, -1.28571427f, -2.57142854f, 2.57142854f,
-    0.183673471f, -0.0734693855f, 0.330612242f, -0.440816313f, -0.0612244904f, -0.0204081628f, 0.0204081628f, 0.0612244904f
-};
-
-/* Round 20: thread t adds w20[t] * term(plane | j << 16 = pj20[t], k | l << 16 = kl20[t]). */
-static const uint ptp_3x3_pj20[16] = {
-    0x5001bu, 0x6001cu, 0x70023u, 0x70024u, 0x30013u, 0x30017u, 0x50028u, 0x7002fu,
-    0x10022u, 0x50025u, 0x5002bu, 0x6002cu, 0x00012u, 0x00015u, 0x0002au, 0x2002du
-};
-static const uint ptp_3x3_kl20[16] = {
-    0x80007u, 0x80007u, 0x90008u, 0xa0008u, 0x90004u, 0xb0006u, 0xc0008u, 0xe000bu,
-    0xc000au, 0xf0006u, 0xd000au, 0xf0008u, 0xd0002u, 0xb0007u, 0xe000du, 0xf000du
-};
-static const float ptp_3x3_w20[16] = {
-    -0.1322449f, -0.0661224499f, 0.0661224499f, 0.1322449f, 0.146938771f, 2.57142854f, 1.28571427f, -1.28571427f,
-    -0.183673471f, -0.220408157f, -0.661224484f, 0.183673471f, -0.122448981f, -0.0612244904f, 0.0612244904f, 0.122448981f
-};
-
-/* Round 21: thread t adds w21[t] * term(plane | j << 16 = pj21[t], k | l << 16 = kl21[t]). */
-static const uint ptp_3x3_pj21[16] = {
-    0x00029u, 0x2002eu, 0x40032u, 0x50035u, 0x30013u, 0x30017u, 0x40033u, 0x40034u,
-    0x20022u, 0x50025u, 0x5002bu, 0x6002cu, 0x00012u, 0x10015u, 0x1002au, 0x3002du
-};
-static const uint ptp_3x3_kl21[16] = {
-    0xe000cu, 0xf000eu, 0xf000cu, 0xf000eu, 0x80005u, 0xa0007u, 0xf000du, 0xf000eu,
-    0xd0008u, 0xe0007u, 0xc000bu, 0xe0009u, 0xc0003u, 0xf0002u, 0xe000cu, 0xf000cu
-};
-static const float ptp_3x3_w21[16] = {
-    0.122448981f, 0.183673471f, 0.122448981f, 0.367346942f, 0.0367346928f, -1.28571427f, 0.146938771f, 0.0734693855f,
-    0.146938771f, -0.440816313f, -0.183673471f, 0.661224484f, -0.0204081628f, -0.0612244904f, 0.122448981f, 0.0204081628f
-};
-
-/* Round 22: thread t adds w22[t] * term(plane | j << 16 = pj22[t], k | l << 16 = kl22[t]). */
-static const uint ptp_3x3_pj22[16] = {
-    0x10029u, 0x3002eu, 0x40032u, 0x60035u, 0x00021u, 0x10026u, 0x50033u, 0x50034u,
-    0x20022u, 0x50025u, 0x6002bu, 0x6002cu, 0x00012u, 0x10015u, 0x2002au, 0x3002du
-};
-static const uint ptp_3x3_kl22[16] = {
-    0xd000cu, 0xf000du, 0xe000du, 0xf000du, 0xe0008u, 0xf000bu, 0xf000cu, 0xf000du,
-    0xc0009u, 0xb000au, 0xe0008u, 0xd000au, 0xb0004u, 0xe0003u, 0xd000cu, 0xe000du
-};
-static const float ptp_3x3_w22[16] = {
-    0.183673471f, 0.122448981f, 0.367346942f, 0.734693885f, 0.146938771f, -0.0734693855f, 0.220408157f, 0.440816313f,
-    -0.0367346928f, 0.330612242f, 0.440816313f, -0.330612242f, 0.0612244904f, -0.122448981f, 0.0612244904f, 0.0612244904f
-};
-
-/* Round 23: thread t adds w23[t] * term(plane | j << 16 = pj23[t], k | l << 16 = kl23[t]). */
-static const uint ptp_3x3_pj23[16] = {
-    0x40029u, 0x5002eu, 0x50032u, 0x70035u, 0x00021u, 0x20026u, 0x50033u, 0x60034u,
-    0x30022u, 0x60025u, 0x6002bu, 0x6002cu, 0x00012u, 0x10015u, 0x4002au, 0x4002du
-};
-static const uint ptp_3x3_kl23[16] = {
-    0xe0008u, 0xf000bu, 0xe000cu, 0xf000cu, 0xd0009u, 0xf000au, 0xe000du, 0xf000cu,
-    0xc0008u, 0xd0007u, 0xd0009u, 0xc000bu, 0x90006u, 0xa0007u, 0xf0008u, 0xf000bu
-};
-static const float ptp_3x3_w23[16] = {
-    0.367346942f, -0.367346942f, 0.734693885f, 0.122448981f, -0.110204078f, 0.220408157f, 0.661224484f, 0.220408157f,
-    0.0122448979f, -0.220408157f, 0.330612242f, -0.146938771f, -0.551020384f, -0.551020384f, 0.0612244904f, -0.0612244904f
-};
-
-/* Round 24: thread t adds w24[t] * term(plane | j << 16 = pj24[t], k | l << 16 = kl24[t]). */
-static const uint ptp_3x3_pj24[16] = {
-    0x40029u, 0x6002eu, 0x60032u, 0x70035u, 0x00021u, 0x20026u, 0x60033u, 0x60034u,
-    0x40022u, 0x60025u, 0x6002bu, 0x7002cu, 0x00012u, 0x20015u, 0x4002au, 0x5002du
-};
-static const uint ptp_3x3_kl24[16] = {
-    0xd0009u, 0xf000au, 0xd000cu, 0xe000du, 0xc000au, 0xe000bu, 0xe000cu, 0xe000du,
-    0xe0005u, 0xb0009u, 0xc000au, 0xe0008u, 0x80007u, 0xd0003u, 0xd000au, 0xe000bu
-};
-static const float ptp_3x3_w24[16] = {
-    -0.551020384f, 0.551020384f, 0.367346942f, 0.367346942f, -0.220408157f, -0.330612242f, 0.440816313f, 0.661224484f,
-    -0.220408157f, 0.661224484f, -0.220408157f, 0.183673471f, -0.122448981f, -0.0612244904f, -0.551020384f, -0.551020384f
-};
-
-/* Round 25: thread t adds w25[t] * term(plane | j << 16 = pj25[t], k | l << 16 = kl25[t]). */
-static const uint ptp_3x3_pj25[16] = {
-    0x40029u, 0x6002eu, 0x80032u, 0x80035u, 0x10021u, 0x30026u, 0x70033u, 0x70034u,
-    0x40022u, 0x70025u, 0x7002bu, 0x7002cu, 0x10012u, 0x20015u, 0x4002au, 0x6002du
-};
-static const uint ptp_3x3_kl25[16] = {
-    0xc000au, 0xe000bu, 0xe0009u, 0xf000bu, 0xd0008u, 0xf0009u, 0xd000cu, 0xe000cu,
-    0xd0006u, 0xb0008u, 0xd0008u, 0xd0009u, 0xc0002u, 0xb0005u, 0xc000bu, 0xf0009u
-};
-static const float ptp_3x3_w25[16] = {
-    -0.734693885f, -1.10204077f, -0.551020384f, -0.183673471f, 0.330612242f, 0.220408157f, 0.0734693855f, 0.146938771f,
-    -0.440816313f, 0.110204078f, 0.146938771f, 0.220408157f, -0.0612244904f, 0.551020384f, -0.122448981f, 0.551020384f
-};
-
-/* Round 26: thread t adds w26[t] * term(plane | j << 16 = pj26[t], k | l << 16 = kl26[t]). */
-static const uint ptp_3x3_pj26[16] = {
-    0x50029u, 0x7002eu, 0x80032u, 0x90035u, 0x10021u, 0x30026u, 0x80033u, 0x80034u,
-    0x40022u, 0x70025u, 0x7002bu, 0x7002cu, 0x10012u, 0x20015u, 0x5002au, 0x6002du
-};
-static const uint ptp_3x3_kl26[16] = {
-    0xd0008u, 0xf0009u, 0xd000au, 0xf000au, 0xc0009u, 0xe000au, 0xf0009u, 0xf000au,
-    0xc0007u, 0xa0009u, 0xc0009u, 0xc000au, 0xa0004u, 0x90007u, 0xe0008u, 0xd000bu
-};
-static const float ptp_3x3_w26[16] = {
-    1.10204077f, 0.734693885f, -1.10204077f, -0.551020384f, -0.220408157f, 0.110204078f, -0.110204078f, -0.220408157f,
-    -0.0734693855f, 0.330612242f, 0.0367346928f, -0.0367346928f, 0.551020384f, -0.551020384f, 0.551020384f, -0.551020384f
-};
-
-/* Round 27: thread t adds w27[t] * term(plane | j << 16 = pj27[t], k | l << 16 = kl27[t]). */
-static const uint ptp_3x3_pj27[16] = {
-    0x50029u, 0x7002eu, 0x80032u, 0x90035u, 0x20021u, 0x30026u, 0x80033u, 0x80034u,
-    0x40022u, 0x20027u, 0x8003bu, 0x8003cu, 0x10012u, 0x30015u, 0x5002au, 0x7002du
-};
-static const uint ptp_3x3_kl27[16] = {
-    0xc0009u, 0xe000au, 0xc000bu, 0xe000bu, 0xc0008u, 0xd000bu, 0xe000au, 0xe000bu,
-    0xb0008u, 0xf000bu, 0xf000du, 0xf000eu, 0x80006u, 0xb0004u, 0xc000au, 0xf0008u
-};
-static const float ptp_3x3_w27[16] = {
-    -0.551020384f, 0.551020384f, -0.183673471f, -1.10204077f, 0.0734693855f, -0.146938771f, -0.661224484f, -0.330612242f,
-    0.110204078f, -0.257142872f, 0.514285743f, 0.257142872f, -0.551020384f, 0.122448981f, -0.551020384f, 0.122448981f
-};
-
-/* Round 28: thread t adds w28[t] * term(plane | j << 16 = pj28[t], k | l << 16 = kl28[t]). */
-static const uint ptp_3x3_pj28[16] = {
-    0x60029u, 0x7002eu, 0x90032u, 0xa0035u, 0x40021u, 0x50026u, 0x80033u, 0x90034u,
-    0x40022u, 0x30027u, 0x9003bu, 0x9003cu, 0x20012u, 0x30015u, 0x6002au, 0x7002du
-};
-static const uint ptp_3x3_kl28[16] = {
-    0xc0008u, 0xd000bu, 0xc000au, 0xd000bu, 0xd0005u, 0xf0007u, 0xd000bu, 0xe000au,
-    0xa0009u, 0xf000au, 0xf000cu, 0xf000du, 0x90004u, 0xa0005u, 0xd0008u, 0xe0009u
-};
-static const float ptp_3x3_w28[16] = {
-    0.367346942f, -0.367346942f, -0.551020384f, -0.551020384f, -0.661224484f, -0.440816313f, -0.330612242f, -0.991836727f,
-    0.330612242f, 0.771428585f, 0.771428585f, 1.54285717f, 0.551020384f, 0.551020384f, 0.551020384f, 0.551020384f
-};
-
-/* Round 29: thread t adds w29[t] * term(plane | j << 16 = pj29[t], k | l << 16 = kl29[t]). */
-static const uint ptp_3x3_pj29[16] = {
-    0x40031u, 0x60036u, 0x8003au, 0x9003du, 0x40021u, 0x60026u, 0x90033u, 0x90034u,
-    0x50022u, 0x30027u, 0x9003bu, 0xa003cu, 0x30012u, 0x30015u, 0x7002au, 0x7002du
-};
-static const uint ptp_3x3_kl29[16] = {
-    0xe000cu, 0xf000eu, 0xf000cu, 0xf000eu, 0xc0006u, 0xe0007u, 0xd000au, 0xd000bu,
-    0xc0006u, 0xe000bu, 0xe000du, 0xf000cu, 0x80004u, 0x80007u, 0xc0008u, 0xc000bu
-};
-static const float ptp_3x3_w29[16] = {
-    0.734693885f, 1.10204077f, 0.428571433f, 1.28571427f, -0.440816313f, -0.661224484f, -0.991836727f, -0.661224484f,
-    -0.220408157f, -0.514285743f, 2.31428576f, 0.771428585f, 0.0612244904f, -0.0612244904f, 0.0612244904f, -0.0612244904f
-};
-
-/* Round 30: thread t adds w30[t] * term(plane | j << 16 = pj30[t], k | l << 16 = kl30[t]). */
-static const uint ptp_3x3_pj30[16] = {
-    0x50031u, 0x70036u, 0x8003au, 0xa003du, 0x40021u, 0x60026u, 0x90033u, 0xa0034u,
-    0x50022u, 0x60027u, 0xa003bu, 0xa003cu, 0x40030u, 0x70037u, 0x80039u, 0xa003eu
-};
-static const uint ptp_3x3_kl30[16] = {
-    0xd000cu, 0xf000du, 0xe000du, 0xf000du, 0xa0008u, 0xb000au, 0xc000bu, 0xc000bu,
-    0xa0008u, 0xf0007u, 0xe000cu, 0xe000du, 0xd000cu, 0xf000eu, 0xe000cu, 0xf000eu
-};
-static const float ptp_3x3_w30[16] = {
-    1.10204077f, 0.734693885f, 1.28571427f, 2.57142854f, 0.661224484f, 0.991836727f, -0.220408157f, -0.110204078f,
-    0.661224484f, -1.54285717f, 1.54285717f, 2.31428576f, 2.57142854f, 2.57142854f, 2.57142854f, 3.85714293f
-};
-
-/* Round 31: thread t adds w31[t] * term(plane | j << 16 = pj31[t], k | l << 16 = kl31[t]). */
-static const uint ptp_3x3_pj31[16] = {
-    0x80031u, 0x90036u, 0x9003au, 0xb003du, 0x50021u, 0x70026u, 0x80038u, 0xb003fu,
-    0x60022u, 0x70027u, 0xb003bu, 0xb003cu, 0x80030u, 0xa0037u, 0x90039u, 0xb003eu
-};
-static const uint ptp_3x3_kl31[16] = {
-    0xd0009u, 0xf000bu, 0xe000cu, 0xf000cu, 0x90008u, 0xb0009u, 0xd000cu, 0xf000eu,
-    0x90008u, 0xb000au, 0xd000cu, 0xe000cu, 0xc0009u, 0xf000bu, 0xd000cu, 0xf000du
-};
-static const float ptp_3x3_w31[16] = {
-    -1.65306127f, -1.10204077f, 2.57142854f, 0.428571433f, 0.991836727f, 0.661224484f, 9.0f, 9.0f,
-    0.330612242f, 2.31428576f, 0.257142872f, 0.514285743f, -3.85714293f, -3.85714293f, 3.85714293f, 2.57142854f
-};
-
-/* Round 32: thread t adds w32[t] * term(plane | j << 16 = pj32[t], k | l << 16 = kl32[t]). */
-static const uint ptp_3x3_pj32[16] = {
-    0x80031u, 0xa0036u, 0xa003au, 0xb003du, 0x00000u, 0x00007u, 0x0001au, 0x0001du,
-    0x00001u, 0x00006u, 0x00008u, 0x0000fu, 0x00002u, 0x00004u, 0x00009u, 0x0000eu
-};
-static const uint ptp_3x3_kl32[16] = {
-    0xc000au, 0xe000bu, 0xd000cu, 0xe000du, 0x00000u, 0x00000u, 0x00000u, 0x00000u,
-    0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u
-};
-static const float ptp_3x3_w32[16] = {
-    -1.10204077f, -1.65306127f, 1.28571427f, 1.28571427f, 0.0f, 0.0f, 0.0f, 0.0f,
-    0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f
-};
-
-groupshared float4 pts[PTP_3X3_Q * PTP_3X3_K];
-groupshared float acc[PTP_3X3_Q * PTP_3X3_L];
-groupshared uint flags[PTP_3X3_Q * PTP_3X3_P];
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-float ptp_3x3_cross4z(float4 a, float4 b, float4 c)
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+uint ptp_3x3_classify_patch(float4 cp[16], float4 eye)
 {
-    precise float z = a.x * (b.y * c.w - b.w * c.y) -
-        b.x * (a.y * c.w - a.w * c.y) +
-        c.x * (a.y * b.w - a.w * b.y);
-    return z;
+    precise float e2 = eye.z;
+    precise float u, v;
+    bool lt, gt;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x4 = cp[4].x;
+    precise float y4 = cp[4].y;
+    precise float w4 = cp[4].w;
+    precise float g4 = e2 * w4;
+    precise float m1_4 = x1 * y4 - y1 * x4;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_4 = x0 * y4 - y0 * x4;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m2_4 = x2 * y4 - y2 * x4;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = (u + u);
+    precise float x5 = cp[5].x;
+    precise float y5 = cp[5].y;
+    precise float w5 = cp[5].w;
+    precise float g5 = e2 * w5;
+    precise float m1_5 = x1 * y5 - y1 * x5;
+    precise float m0_5 = x0 * y5 - y0 * x5;
+    u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    precise float x3 = cp[3].x;
+    precise float y3 = cp[3].y;
+    precise float w3 = cp[3].w;
+    precise float g3 = e2 * w3;
+    precise float m3_4 = x3 * y4 - y3 * x4;
+    precise float m0_3 = x0 * y3 - y0 * x3;
+    u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    v = u;
+    precise float x6 = cp[6].x;
+    precise float y6 = cp[6].y;
+    precise float w6 = cp[6].w;
+    precise float g6 = e2 * w6;
+    precise float m1_6 = x1 * y6 - y1 * x6;
+    precise float m0_6 = x0 * y6 - y0 * x6;
+    u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
+    v += (u + u) + u;
+    precise float m2_5 = x2 * y5 - y2 * x5;
+    u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    precise float x7 = cp[7].x;
+    precise float y7 = cp[7].y;
+    precise float w7 = cp[7].w;
+    precise float g7 = e2 * w7;
+    precise float m1_7 = x1 * y7 - y1 * x7;
+    precise float m0_7 = x0 * y7 - y0 * x7;
+    u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+    v = u;
+    precise float m1_3 = x1 * y3 - y1 * x3;
+    u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v += (u + u);
+    precise float m3_5 = x3 * y5 - y3 * x5;
+    u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+    v += (u + u) + u;
+    precise float m2_6 = x2 * y6 - y2 * x6;
+    u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    precise float m3_7 = x3 * y7 - y3 * x7;
+    u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+    v = (u + u);
+    precise float m3_6 = x3 * y6 - y3 * x6;
+    precise float m2_3 = x2 * y3 - y2 * x3;
+    u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    precise float m2_7 = x2 * y7 - y2 * x7;
+    u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
+    v = u;
+    u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
+    u -= ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
+    v += (u + u) + u;
+    u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
+    v = u;
+    u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+    v += (u + u);
+    u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
+    v += (u + u) + u;
+    u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    precise float x8 = cp[8].x;
+    precise float y8 = cp[8].y;
+    precise float w8 = cp[8].w;
+    precise float g8 = e2 * w8;
+    precise float m1_8 = x1 * y8 - y1 * x8;
+    precise float m0_8 = x0 * y8 - y0 * x8;
+    u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
+    v = (u + u);
+    precise float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    precise float m2_8 = x2 * y8 - y2 * x8;
+    u = g0 * (-m2_8);
+    u = mad(g2, m0_8, u);
+    u = mad(g8, -m0_2, u);
+    v = ((u + u) + (u + u));
+    precise float x9 = cp[9].x;
+    precise float y9 = cp[9].y;
+    precise float w9 = cp[9].w;
+    precise float g9 = e2 * w9;
+    precise float m1_9 = x1 * y9 - y1 * x9;
+    precise float m4_6 = x4 * y6 - y4 * x6;
+    u = g0 * (m4_6 - m1_9);
+    precise float m0_9 = x0 * y9 - y0 * x9;
+    u = mad(g1, m0_9, u);
+    u = mad(g4, -m0_6, u);
+    u = mad(g6, m0_4, u);
+    u = mad(g9, -m0_1, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_5);
+    u = mad(g4, -m1_5, u);
+    u = mad(g5, m1_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    precise float m3_8 = x3 * y8 - y3 * x8;
+    u = g0 * (-m3_8);
+    u = mad(g3, m0_8, u);
+    u = mad(g8, -m0_3, u);
+    v = (u + u);
+    precise float m4_7 = x4 * y7 - y4 * x7;
+    u = g0 * (m4_7);
+    u = mad(g4, -m0_7, u);
+    u = mad(g7, m0_4, u);
+    v += (u + u) + u;
+    precise float x10 = cp[10].x;
+    precise float y10 = cp[10].y;
+    precise float w10 = cp[10].w;
+    precise float g10 = e2 * w10;
+    precise float m1_10 = x1 * y10 - y1 * x10;
+    u = g0 * (-m1_10);
+    precise float m0_10 = x0 * y10 - y0 * x10;
+    u = mad(g1, m0_10 - m2_8, u);
+    u = mad(g2, m1_8, u);
+    u = mad(g8, -m1_2, u);
+    u = mad(g10, -m0_1, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m5_6 = x5 * y6 - y5 * x6;
+    u = g0 * (m5_6);
+    u = mad(g2, m4_5, u);
+    u = mad(g4, -m2_5, u);
+    u = mad(g5, m2_4 - m0_6, u);
+    u = mad(g6, m0_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m2_9 = x2 * y9 - y2 * x9;
+    u = g0 * (-m2_9);
+    u = mad(g2, m0_9, u);
+    u = mad(g9, -m0_2, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_6);
+    u = mad(g4, -m1_6, u);
+    u = mad(g6, m1_4, u);
+    v = mad(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 10 */
+    precise float x11 = cp[11].x;
+    precise float y11 = cp[11].y;
+    precise float w11 = cp[11].w;
+    precise float g11 = e2 * w11;
+    precise float m3_11 = x3 * y11 - y3 * x11;
+    u = g1 * (-m3_11);
+    precise float m1_11 = x1 * y11 - y1 * x11;
+    u = mad(g3, m1_11, u);
+    u = mad(g11, -m1_3, u);
+    v = ((u + u) + (u + u));
+    precise float m3_10 = x3 * y10 - y3 * x10;
+    u = g2 * (-m3_10);
+    precise float m5_7 = x5 * y7 - y5 * x7;
+    precise float m2_10 = x2 * y10 - y2 * x10;
+    u = mad(g3, m5_7 + m2_10, u);
+    u = mad(g5, -m3_7, u);
+    u = mad(g7, m3_5, u);
+    u = mad(g10, -m2_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m6_7 = x6 * y7 - y6 * x7;
+    u = g2 * (m6_7);
+    u = mad(g6, -m2_7, u);
+    u = mad(g7, m2_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 14 */
+    precise float m2_11 = x2 * y11 - y2 * x11;
+    u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
+    v = (u + u);
+    u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 15 */
+    u = g0 * (-m3_11);
+    precise float m0_11 = x0 * y11 - y0 * x11;
+    u = mad(g3, m0_11, u);
+    u = mad(g11, -m0_3, u);
+    v = (u + u);
+    u = g3 * (m4_7);
+    u = mad(g4, -m3_7, u);
+    u = mad(g7, m3_4, u);
+    v += (u + u) + u;
+    u = g1 * (-m2_11);
+    precise float m3_9 = x3 * y9 - y3 * x9;
+    u = mad(g2, m1_11 - m3_9, u);
+    u = mad(g3, m2_9, u);
+    u = mad(g9, -m2_3, u);
+    u = mad(g11, -m1_2, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m6_7);
+    u = mad(g3, m5_6, u);
+    u = mad(g5, -m3_6, u);
+    u = mad(g6, m3_5 - m1_7, u);
+    u = mad(g7, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (-m3_10);
+    u = mad(g3, m1_10, u);
+    u = mad(g10, -m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m5_7);
+    u = mad(g5, -m2_7, u);
+    u = mad(g7, m2_5, u);
+    v = mad(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 13 */
+    precise float x12 = cp[12].x;
+    precise float y12 = cp[12].y;
+    precise float w12 = cp[12].w;
+    precise float g12 = e2 * w12;
+    precise float m1_12 = x1 * y12 - y1 * x12;
+    precise float m0_12 = x0 * y12 - y0 * x12;
+    u = -((g0 * m1_12 - g1 * m0_12) + g12 * m0_1);
+    v = u;
+    precise float m4_9 = x4 * y9 - y4 * x9;
+    u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
+    precise float m4_8 = x4 * y8 - y4 * x8;
+    u += ((g1 * m4_8 - g4 * m1_8) + g8 * m1_4);
+    v += (u + u) + u;
+    precise float m5_8 = x5 * y8 - y5 * x8;
+    u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 16 */
+    precise float m2_12 = x2 * y12 - y2 * x12;
+    u = g0 * (-m2_12);
+    u = mad(g2, m0_12, u);
+    u = mad(g12, -m0_2, u);
+    v = (u + u);
+    precise float x13 = cp[13].x;
+    precise float y13 = cp[13].y;
+    precise float w13 = cp[13].w;
+    precise float g13 = e2 * w13;
+    precise float m1_13 = x1 * y13 - y1 * x13;
+    u = g0 * (-m1_13);
+    precise float m0_13 = x0 * y13 - y0 * x13;
+    u = mad(g1, m0_13, u);
+    u = mad(g13, -m0_1, u);
+    v += (u + u) + u;
+    precise float m4_10 = x4 * y10 - y4 * x10;
+    u = g0 * (m4_10);
+    u = mad(g2, m4_8, u);
+    u = mad(g4, -m2_8 - m0_10, u);
+    u = mad(g8, m2_4, u);
+    u = mad(g10, m0_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m5_9 = x5 * y9 - y5 * x9;
+    u = g0 * (-m5_9);
+    u = mad(g1, -m5_8, u);
+    u = mad(g5, m1_8 + m0_9, u);
+    u = mad(g8, -m1_5, u);
+    u = mad(g9, -m0_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m6_8 = x6 * y8 - y6 * x8;
+    u = g0 * (-m6_8);
+    u = mad(g6, m0_8, u);
+    u = mad(g8, -m0_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_9);
+    u = mad(g4, -m1_9, u);
+    u = mad(g9, m1_4, u);
+    v = mad(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 17 */
+    u = g0 * (-m1_11);
+    u = mad(g1, m0_11, u);
+    u = mad(g11, -m0_1, u);
+    v = (u + u);
+    u = g3 * (m4_5);
+    u = mad(g4, -m3_5, u);
+    u = mad(g5, m3_4, u);
+    v += (u + u) + u;
+    u = g1 * (-m3_8);
+    u = mad(g3, m1_8, u);
+    u = mad(g8, -m1_3, u);
+    v += ((u + u) + (u + u));
+    u = g0 * (m5_7 - m3_9);
+    u = mad(g3, m0_9, u);
+    u = mad(g5, -m0_7, u);
+    u = mad(g7, m0_5, u);
+    u = mad(g9, -m0_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_7);
+    u = mad(g4, -m1_7, u);
+    u = mad(g7, m1_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g0 * (-m2_10);
+    u = mad(g2, m0_10, u);
+    u = mad(g10, -m0_2, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_9);
+    u = mad(g2, m1_9 + m4_6, u);
+    u = mad(g4, -m2_6, u);
+    u = mad(g6, m2_4, u);
+    u = mad(g9, -m1_2, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (m5_6);
+    u = mad(g5, -m1_6, u);
+    u = mad(g6, m1_5, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 11 */
+    u = g2 * (-m3_8);
+    u = mad(g3, m2_8, u);
+    u = mad(g8, -m2_3, u);
+    v = (u + u);
+    u = g0 * (m6_7);
+    u = mad(g6, -m0_7, u);
+    u = mad(g7, m0_6, u);
+    v += (u + u) + u;
+    u = g0 * (-m2_11);
+    u = mad(g2, m0_11, u);
+    u = mad(g11, -m0_2, u);
+    v += ((u + u) + (u + u));
+    u = g0 * (-m3_10);
+    u = mad(g3, m4_6 + m0_10, u);
+    u = mad(g4, -m3_6, u);
+    u = mad(g6, m3_4, u);
+    u = mad(g10, -m0_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m4_7);
+    u = mad(g4, -m2_7, u);
+    u = mad(g7, m2_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (-m3_9);
+    u = mad(g3, m1_9, u);
+    u = mad(g9, -m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m5_7 - m2_10);
+    u = mad(g2, m1_10, u);
+    u = mad(g5, -m1_7, u);
+    u = mad(g7, m1_5, u);
+    u = mad(g10, -m1_2, u);
+    v = mad(18.0f, u, v);
+    u = g2 * (m5_6);
+    u = mad(g5, -m2_6, u);
+    u = mad(g6, m2_5, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 12 */
+    precise float x15 = cp[15].x;
+    precise float y15 = cp[15].y;
+    precise float w15 = cp[15].w;
+    precise float g15 = e2 * w15;
+    precise float m3_15 = x3 * y15 - y3 * x15;
+    u = g0 * (-m3_15);
+    precise float m0_15 = x0 * y15 - y0 * x15;
+    u = mad(g3, m0_15, u);
+    u = mad(g15, -m0_3, u);
+    v = u;
+    precise float m7_11 = x7 * y11 - y7 * x11;
+    u = g0 * (-m7_11);
+    precise float m2_15 = x2 * y15 - y2 * x15;
+    u = mad(g1, -m2_15, u);
+    precise float m1_15 = x1 * y15 - y1 * x15;
+    precise float m3_13 = x3 * y13 - y3 * x13;
+    u = mad(g2, m1_15 - m3_13, u);
+    precise float m2_13 = x2 * y13 - y2 * x13;
+    precise float m7_8 = x7 * y8 - y7 * x8;
+    u = mad(g3, m2_13 - m7_8, u);
+    u = mad(g7, m3_8 + m0_11, u);
+    u = mad(g8, -m3_7, u);
+    u = mad(g11, -m0_7, u);
+    u = mad(g13, -m2_3, u);
+    u = mad(g15, -m1_2, u);
+    v += (u + u) + u;
+    precise float x14 = cp[14].x;
+    precise float y14 = cp[14].y;
+    precise float w14 = cp[14].w;
+    precise float g14 = e2 * w14;
+    precise float m3_14 = x3 * y14 - y3 * x14;
+    u = g1 * (-m3_14);
+    precise float m1_14 = x1 * y14 - y1 * x14;
+    precise float m4_11 = x4 * y11 - y4 * x11;
+    u = mad(g3, m1_14 + m4_11, u);
+    u = mad(g4, -m3_11, u);
+    u = mad(g11, m3_4, u);
+    u = mad(g14, -m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m7_10 = x7 * y10 - y7 * x10;
+    u = g1 * (-m7_10);
+    precise float m5_11 = x5 * y11 - y5 * x11;
+    precise float m7_9 = x7 * y9 - y7 * x9;
+    u = mad(g2, m5_11 - m7_9, u);
+    precise float m5_10 = x5 * y10 - y5 * x10;
+    u = mad(g3, m5_10, u);
+    u = mad(g5, -m2_11 - m3_10, u);
+    u = mad(g7, m1_10 + m2_9, u);
+    u = mad(g9, -m2_7, u);
+    u = mad(g10, m3_5 - m1_7, u);
+    u = mad(g11, m2_5, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 21 */
+    u = g1 * (-m3_15);
+    u = mad(g3, m1_15, u);
+    u = mad(g15, -m1_3, u);
+    v = (u + u);
+    u = g2 * (-m3_14);
+    precise float m2_14 = x2 * y14 - y2 * x14;
+    u = mad(g3, m2_14, u);
+    u = mad(g14, -m2_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m7_11);
+    u = mad(g3, -m7_9, u);
+    u = mad(g7, m1_11 + m3_9, u);
+    u = mad(g9, -m3_7, u);
+    u = mad(g11, -m1_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m6_11 = x6 * y11 - y6 * x11;
+    u = g2 * (m6_11);
+    precise float m6_10 = x6 * y10 - y6 * x10;
+    u = mad(g3, m6_10, u);
+    u = mad(g6, -m2_11 - m3_10, u);
+    u = mad(g10, m3_6, u);
+    u = mad(g11, m2_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g3 * (m5_11);
+    u = mad(g5, -m3_11, u);
+    u = mad(g11, m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m7_10);
+    u = mad(g7, m2_10, u);
+    u = mad(g10, -m2_7, u);
+    v = mad(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 22 */
+    u = -((g2 * m3_15 - g3 * m2_15) + g15 * m2_3);
+    v = u;
+    u = -((g2 * m7_11 - g7 * m2_11) + g11 * m2_7);
+    u -= ((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
+    v += (u + u) + u;
+    u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 23 */
+    precise float m4_13 = x4 * y13 - y4 * x13;
+    u = ((g0 * m4_13 - g4 * m0_13) + g13 * m0_4);
+    v = u;
+    precise float m4_12 = x4 * y12 - y4 * x12;
+    u = ((g1 * m4_12 - g4 * m1_12) + g12 * m1_4);
+    v += (u + u);
+    precise float m5_12 = x5 * y12 - y5 * x12;
+    u = -((g0 * m5_12 - g5 * m0_12) + g12 * m0_5);
+    v += (u + u) + u;
+    precise float m8_9 = x8 * y9 - y8 * x9;
+    u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 24 */
+    precise float m4_14 = x4 * y14 - y4 * x14;
+    u = g0 * (m4_14);
+    precise float m0_14 = x0 * y14 - y0 * x14;
+    u = mad(g4, -m0_14, u);
+    u = mad(g14, m0_4, u);
+    v = (u + u);
+    u = g1 * (-m5_12);
+    u = mad(g5, m1_12, u);
+    u = mad(g12, -m1_5, u);
+    v += (u + u) + u;
+    u = g2 * (m4_12);
+    u = mad(g4, -m2_12, u);
+    u = mad(g12, m2_4, u);
+    v += ((u + u) + (u + u));
+    precise float m5_13 = x5 * y13 - y5 * x13;
+    precise float m6_12 = x6 * y12 - y6 * x12;
+    u = g0 * (-m5_13 - m6_12);
+    u = mad(g5, m0_13, u);
+    u = mad(g6, m0_12, u);
+    u = mad(g12, -m0_6, u);
+    u = mad(g13, -m0_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_13);
+    u = mad(g4, -m1_13, u);
+    u = mad(g13, m1_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m8_10 = x8 * y10 - y8 * x10;
+    u = g0 * (m8_10);
+    u = mad(g8, -m0_10, u);
+    u = mad(g10, m0_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_9);
+    u = mad(g4, -m6_8, u);
+    u = mad(g6, m4_8, u);
+    u = mad(g8, -m1_9 - m4_6, u);
+    u = mad(g9, m1_8, u);
+    v = mad(18.0f, u, v);
+    u = g4 * (-m5_9);
+    u = mad(g5, m4_9, u);
+    u = mad(g9, -m4_5, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 25 */
+    precise float m3_12 = x3 * y12 - y3 * x12;
+    u = g0 * (-m3_12);
+    u = mad(g3, m0_12, u);
+    u = mad(g12, -m0_3, u);
+    v = u;
+    u = g0 * (m4_11 - m1_14);
+    u = mad(g1, m0_14 - m2_12, u);
+    u = mad(g2, m1_12, u);
+    u = mad(g3, m4_8, u);
+    u = mad(g4, -m3_8 - m0_11, u);
+    u = mad(g8, m3_4, u);
+    u = mad(g11, m0_4, u);
+    u = mad(g12, -m1_2, u);
+    u = mad(g14, -m0_1, u);
+    v += (u + u) + u;
+    u = g0 * (-m2_13 - m7_8);
+    u = mad(g2, m0_13, u);
+    u = mad(g7, m0_8, u);
+    u = mad(g8, -m0_7, u);
+    u = mad(g13, -m0_2, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m6_9 = x6 * y9 - y6 * x9;
+    u = g0 * (-m6_9);
+    u = mad(g1, m4_10 - m6_8, u);
+    u = mad(g2, m4_9, u);
+    u = mad(g4, -m1_10 - m2_9, u);
+    u = mad(g6, m1_8 + m0_9, u);
+    u = mad(g8, -m1_6, u);
+    u = mad(g9, m2_4 - m0_6, u);
+    u = mad(g10, m1_4, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 18 */
+    u = g0 * (-m1_15);
+    u = mad(g1, m0_15, u);
+    u = mad(g15, -m0_1, u);
+    v = u;
+    u = g1 * (-m3_12);
+    u = mad(g3, m1_12, u);
+    u = mad(g12, -m1_3, u);
+    v += (u + u);
+    u = g0 * (m5_11 - m3_13);
+    u = mad(g3, m5_8 + m0_13, u);
+    u = mad(g5, -m3_8 - m0_11, u);
+    u = mad(g8, m3_5, u);
+    u = mad(g11, m0_5, u);
+    u = mad(g13, -m0_3, u);
+    v += (u + u) + u;
+    u = g0 * (-m2_14);
+    u = mad(g2, m0_14, u);
+    u = mad(g14, -m0_2, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_13);
+    u = mad(g2, m1_13, u);
+    u = mad(g13, -m1_2, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (m4_11);
+    u = mad(g3, m4_9, u);
+    u = mad(g4, -m1_11 - m3_9, u);
+    u = mad(g9, m3_4, u);
+    u = mad(g11, m1_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g0 * (-m7_9);
+    u = mad(g1, -m7_8, u);
+    u = mad(g7, m1_8 + m0_9, u);
+    u = mad(g8, -m1_7, u);
+    u = mad(g9, -m0_7, u);
+    v = mad(15.0f, u, v);
+    u = g0 * (-m6_10);
+    u = mad(g2, -m6_8, u);
+    u = mad(g6, m2_8 + m0_10, u);
+    u = mad(g8, -m2_6, u);
+    u = mad(g10, -m0_6, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (m5_10);
+    u = mad(g2, m5_9, u);
+    u = mad(g5, -m1_10 - m2_9, u);
+    u = mad(g9, m2_5, u);
+    u = mad(g10, m1_5, u);
+    v = mad(27.0f, u, v);
+    u = g2 * (m4_10);
+    u = mad(g4, -m2_10, u);
+    u = mad(g10, m2_4, u);
+    v = mad(36.0f, u, v);
+    u = g1 * (-m6_9);
+    u = mad(g6, m1_9, u);
+    u = mad(g9, -m1_6, u);
+    v = mad(54.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 19 */
+    u = g2 * (-m3_12);
+    u = mad(g3, m2_12, u);
+    u = mad(g12, -m2_3, u);
+    v = u;
+    u = g0 * (-m2_15);
+    u = mad(g2, m0_15, u);
+    u = mad(g15, -m0_2, u);
+    v += (u + u);
+    u = g0 * (-m3_14 - m6_11);
+    u = mad(g3, m0_14 - m6_8, u);
+    u = mad(g6, m3_8 + m0_11, u);
+    u = mad(g8, -m3_6, u);
+    u = mad(g11, -m0_6, u);
+    u = mad(g14, -m0_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m3_13);
+    u = mad(g3, m1_13, u);
+    u = mad(g13, -m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_14);
+    u = mad(g2, m1_14, u);
+    u = mad(g14, -m1_2, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g0 * (-m7_10);
+    u = mad(g2, -m7_8, u);
+    u = mad(g7, m2_8 + m0_10, u);
+    u = mad(g8, -m2_7, u);
+    u = mad(g10, -m0_7, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m4_11);
+    u = mad(g3, m4_10, u);
+    u = mad(g4, -m2_11 - m3_10, u);
+    u = mad(g10, m3_4, u);
+    u = mad(g11, m2_4, u);
+    v = mad(15.0f, u, v);
+    u = g1 * (m5_11);
+    u = mad(g3, m5_9, u);
+    u = mad(g5, -m1_11 - m3_9, u);
+    u = mad(g9, m3_5, u);
+    u = mad(g11, m1_5, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (-m6_10);
+    u = mad(g2, -m6_9, u);
+    u = mad(g6, m1_10 + m2_9, u);
+    u = mad(g9, -m2_6, u);
+    u = mad(g10, -m1_6, u);
+    v = mad(27.0f, u, v);
+    u = g1 * (-m7_9);
+    u = mad(g7, m1_9, u);
+    u = mad(g9, -m1_7, u);
+    v = mad(36.0f, u, v);
+    u = g2 * (m5_10);
+    u = mad(g5, -m2_10, u);
+    u = mad(g10, m2_5, u);
+    v = mad(54.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 20 */
+    precise float m7_12 = x7 * y12 - y7 * x12;
+    u = g3 * (-m7_12);
+    u = mad(g7, m3_12, u);
+    u = mad(g12, -m3_7, u);
+    v = u;
+    precise float m7_15 = x7 * y15 - y7 * x15;
+    u = g0 * (-m7_15);
+    u = mad(g7, m0_15, u);
+    u = mad(g15, -m0_7, u);
+    v += (u + u);
+    precise float m6_15 = x6 * y15 - y6 * x15;
+    u = g1 * (-m6_15);
+    precise float m4_15 = x4 * y15 - y4 * x15;
+    precise float m6_13 = x6 * y13 - y6 * x13;
+    u = mad(g3, m4_15 + m6_13, u);
+    u = mad(g4, -m3_15, u);
+    u = mad(g6, m1_15 - m3_13, u);
+    u = mad(g13, m3_6, u);
+    u = mad(g15, m3_4 - m1_6, u);
+    v += (u + u) + u;
+    precise float m8_11 = x8 * y11 - y8 * x11;
+    u = g3 * (m8_11);
+    u = mad(g8, -m3_11, u);
+    u = mad(g11, m3_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m7_11);
+    u = mad(g7, m4_11, u);
+    u = mad(g11, -m4_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m7_13 = x7 * y13 - y7 * x13;
+    precise float m5_15 = x5 * y15 - y5 * x15;
+    u = g2 * (m5_15 - m7_13);
+    u = mad(g5, -m2_15, u);
+    u = mad(g7, m2_13, u);
+    u = mad(g13, -m2_7, u);
+    u = mad(g15, m2_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    precise float m7_14 = x7 * y14 - y7 * x14;
+    u = g1 * (-m7_14);
+    precise float m5_14 = x5 * y14 - y5 * x14;
+    u = mad(g3, m5_14, u);
+    u = mad(g5, -m3_14, u);
+    u = mad(g7, m1_14, u);
+    u = mad(g14, m3_5 - m1_7, u);
+    v = mad(15.0f, u, v);
+    precise float m10_11 = x10 * y11 - y10 * x11;
+    u = g1 * (m10_11);
+    precise float m9_10 = x9 * y10 - y9 * x10;
+    u = mad(g3, m9_10, u);
+    u = mad(g9, -m3_10, u);
+    u = mad(g10, m3_9 - m1_11, u);
+    u = mad(g11, m1_10, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (-m6_11);
+    u = mad(g6, m5_11 - m7_9, u);
+    u = mad(g7, m6_9, u);
+    u = mad(g9, -m6_7, u);
+    u = mad(g11, -m5_6, u);
+    v = mad(27.0f, u, v);
+    precise float m9_11 = x9 * y11 - y9 * x11;
+    u = g2 * (m9_11);
+    u = mad(g9, -m2_11, u);
+    u = mad(g11, m2_9, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (-m7_10);
+    u = mad(g7, m5_10, u);
+    u = mad(g10, -m5_7, u);
+    v = mad(54.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 29 */
+    u = g3 * (-m7_13);
+    u = mad(g7, m3_13, u);
+    u = mad(g13, -m3_7, u);
+    v = (u + u);
+    u = g2 * (m6_15);
+    u = mad(g6, -m2_15, u);
+    u = mad(g15, m2_6, u);
+    v += (u + u) + u;
+    u = g1 * (-m7_15);
+    u = mad(g7, m1_15, u);
+    u = mad(g15, -m1_7, u);
+    v += ((u + u) + (u + u));
+    precise float m6_14 = x6 * y14 - y6 * x14;
+    u = g3 * (m6_14 + m5_15);
+    u = mad(g5, -m3_15, u);
+    u = mad(g6, -m3_14, u);
+    u = mad(g14, m3_6, u);
+    u = mad(g15, m3_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m7_14);
+    u = mad(g7, m2_14, u);
+    u = mad(g14, -m2_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g3 * (m9_11);
+    u = mad(g9, -m3_11, u);
+    u = mad(g11, m3_9, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m10_11);
+    u = mad(g5, -m7_11, u);
+    u = mad(g7, m5_11, u);
+    u = mad(g10, -m2_11, u);
+    u = mad(g11, m2_10 - m5_7, u);
+    v = mad(18.0f, u, v);
+    u = g6 * (-m7_10);
+    u = mad(g7, m6_10, u);
+    u = mad(g10, -m6_7, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 30 */
+    u = -((g3 * m7_14 - g7 * m3_14) + g14 * m3_7);
+    v = u;
+    u = -((g2 * m7_15 - g7 * m2_15) + g15 * m2_7);
+    v += (u + u);
+    u = ((g3 * m6_15 - g6 * m3_15) + g15 * m3_6);
+    v += (u + u) + u;
+    u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 31 */
+    precise float m8_12 = x8 * y12 - y8 * x12;
+    u = ((g1 * m8_12 - g8 * m1_12) + g12 * m1_8);
+    v = u;
+    precise float m8_13 = x8 * y13 - y8 * x13;
+    u = ((g0 * m8_13 - g8 * m0_13) + g13 * m0_8);
+    v += (u + u);
+    precise float m9_12 = x9 * y12 - y9 * x12;
+    u = -((g0 * m9_12 - g9 * m0_12) + g12 * m0_9);
+    v += (u + u) + u;
+    u = -((g4 * m5_12 - g5 * m4_12) + g12 * m4_5);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 32 */
+    u = g2 * (m8_12);
+    u = mad(g8, -m2_12, u);
+    u = mad(g12, m2_8, u);
+    v = (u + u);
+    precise float m9_13 = x9 * y13 - y9 * x13;
+    u = g0 * (-m9_13);
+    u = mad(g9, m0_13, u);
+    u = mad(g13, -m0_9, u);
+    v += (u + u) + u;
+    precise float m8_14 = x8 * y14 - y8 * x14;
+    u = g0 * (m8_14);
+    u = mad(g8, -m0_14, u);
+    u = mad(g14, m0_8, u);
+    v += ((u + u) + (u + u));
+    precise float m10_12 = x10 * y12 - y10 * x12;
+    u = g0 * (-m10_12);
+    u = mad(g1, -m9_12, u);
+    u = mad(g9, m1_12, u);
+    u = mad(g10, m0_12, u);
+    u = mad(g12, -m1_9 - m0_10, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_13);
+    u = mad(g8, -m1_13, u);
+    u = mad(g13, m1_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g4 * (-m6_12);
+    u = mad(g6, m4_12, u);
+    u = mad(g12, -m4_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (m8_10 - m5_13);
+    u = mad(g5, m4_13, u);
+    u = mad(g8, -m4_10, u);
+    u = mad(g10, m4_8, u);
+    u = mad(g13, -m4_5, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (m8_9);
+    u = mad(g8, -m5_9, u);
+    u = mad(g9, m5_8, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 33 */
+    u = g3 * (m8_12);
+    u = mad(g8, -m3_12, u);
+    u = mad(g12, m3_8, u);
+    v = u;
+    precise float m8_15 = x8 * y15 - y8 * x15;
+    u = g0 * (m8_15);
+    u = mad(g8, -m0_15, u);
+    u = mad(g15, m0_8, u);
+    v += (u + u);
+    precise float m9_14 = x9 * y14 - y9 * x14;
+    precise float m11_12 = x11 * y12 - y11 * x12;
+    u = g0 * (m9_14 - m11_12);
+    u = mad(g2, -m9_12, u);
+    u = mad(g9, m2_12 - m0_14, u);
+    u = mad(g11, m0_12, u);
+    u = mad(g12, -m2_9 - m0_11, u);
+    u = mad(g14, m0_9, u);
+    v += (u + u) + u;
+    u = g4 * (-m7_12);
+    u = mad(g7, m4_12, u);
+    u = mad(g12, -m4_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (m8_11);
+    u = mad(g8, -m4_11, u);
+    u = mad(g11, m4_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m10_13 = x10 * y13 - y10 * x13;
+    u = g0 * (-m10_13);
+    u = mad(g2, m8_13, u);
+    u = mad(g8, -m2_13, u);
+    u = mad(g10, m0_13, u);
+    u = mad(g13, m2_8 - m0_10, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_14 - m10_12);
+    u = mad(g8, -m1_14, u);
+    u = mad(g10, m1_12, u);
+    u = mad(g12, -m1_10, u);
+    u = mad(g14, m1_8, u);
+    v = mad(15.0f, u, v);
+    u = g4 * (-m5_14);
+    u = mad(g5, m4_14 - m6_12, u);
+    u = mad(g6, m5_12, u);
+    u = mad(g12, -m5_6, u);
+    u = mad(g14, -m4_5, u);
+    v = mad(18.0f, u, v);
+    u = g4 * (m9_10);
+    u = mad(g6, m8_9, u);
+    u = mad(g8, -m6_9, u);
+    u = mad(g9, m6_8 - m4_10, u);
+    u = mad(g10, m4_9, u);
+    v = mad(27.0f, u, v);
+    u = g4 * (-m6_13);
+    u = mad(g6, m4_13, u);
+    u = mad(g13, -m4_6, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (m8_10);
+    u = mad(g8, -m5_10, u);
+    u = mad(g10, m5_8, u);
+    v = mad(54.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 34 */
+    u = g0 * (m4_15);
+    u = mad(g4, -m0_15, u);
+    u = mad(g15, m0_4, u);
+    v = u;
+    u = g3 * (m4_12);
+    u = mad(g4, -m3_12, u);
+    u = mad(g12, m3_4, u);
+    v += (u + u);
+    u = g0 * (-m5_14 - m7_12);
+    u = mad(g2, m5_12, u);
+    u = mad(g5, m0_14 - m2_12, u);
+    u = mad(g7, m0_12, u);
+    u = mad(g12, m2_5 - m0_7, u);
+    u = mad(g14, -m0_5, u);
+    v += (u + u) + u;
+    u = g0 * (m8_11);
+    u = mad(g8, -m0_11, u);
+    u = mad(g11, m0_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m7_8);
+    u = mad(g7, m4_8, u);
+    u = mad(g8, -m4_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (m4_14 - m6_12);
+    u = mad(g4, -m1_14, u);
+    u = mad(g6, m1_12, u);
+    u = mad(g12, -m1_6, u);
+    u = mad(g14, m1_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g0 * (-m6_13);
+    u = mad(g2, m4_13, u);
+    u = mad(g4, -m2_13, u);
+    u = mad(g6, m0_13, u);
+    u = mad(g13, m2_4 - m0_6, u);
+    v = mad(15.0f, u, v);
+    u = g0 * (m9_10);
+    u = mad(g2, m8_9, u);
+    u = mad(g8, -m2_9, u);
+    u = mad(g9, m2_8 - m0_10, u);
+    u = mad(g10, m0_9, u);
+    v = mad(18.0f, u, v);
+    u = g4 * (-m5_10);
+    u = mad(g5, m4_10 - m6_8, u);
+    u = mad(g6, m5_8, u);
+    u = mad(g8, -m5_6, u);
+    u = mad(g10, -m4_5, u);
+    v = mad(27.0f, u, v);
+    u = g1 * (m8_10);
+    u = mad(g8, -m1_10, u);
+    u = mad(g10, m1_8, u);
+    v = mad(36.0f, u, v);
+    u = g4 * (-m6_9);
+    u = mad(g6, m4_9, u);
+    u = mad(g9, -m4_6, u);
+    v = mad(54.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 26 */
+    u = g3 * (m5_12);
+    u = mad(g5, -m3_12, u);
+    u = mad(g12, m3_5, u);
+    v = (u + u) + u;
+    u = g1 * (m4_15);
+    u = mad(g4, -m1_15, u);
+    u = mad(g15, m1_4, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (-m6_12);
+    u = mad(g3, m8_9, u);
+    u = mad(g6, m2_12, u);
+    u = mad(g8, -m3_9, u);
+    u = mad(g9, m3_8, u);
+    u = mad(g12, -m2_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m7_12);
+    u = mad(g3, m4_13, u);
+    u = mad(g4, -m3_13, u);
+    u = mad(g7, m1_12, u);
+    u = mad(g12, -m1_7, u);
+    u = mad(g13, m3_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) - u;
+    u = g0 * (-m7_13);
+    u = mad(g7, m0_13, u);
+    u = mad(g13, -m0_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (m5_14);
+    u = mad(g4, -m5_11, u);
+    u = mad(g5, m4_11 - m1_14, u);
+    u = mad(g11, -m4_5, u);
+    u = mad(g14, m1_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g0 * (m9_11 - m6_14);
+    u = mad(g6, m0_14, u);
+    u = mad(g9, -m0_11, u);
+    u = mad(g11, m0_9, u);
+    u = mad(g14, -m0_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_11);
+    u = mad(g2, m4_14 + m5_13, u);
+    u = mad(g4, -m2_14, u);
+    u = mad(g5, -m2_13 - m7_8, u);
+    u = mad(g7, m5_8, u);
+    u = mad(g8, -m1_11 - m5_7, u);
+    u = mad(g11, m1_8, u);
+    u = mad(g13, m2_5, u);
+    u = mad(g14, m2_4, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (-m6_13);
+    u = mad(g4, -m7_9, u);
+    u = mad(g6, m1_13, u);
+    u = mad(g7, m4_9, u);
+    u = mad(g9, -m4_7, u);
+    u = mad(g13, -m1_6, u);
+    v = mad(27.0f, u, v);
+    u = g2 * (m8_10);
+    u = mad(g8, -m2_10, u);
+    u = mad(g10, m2_8, u);
+    v = mad(36.0f, u, v);
+    u = g1 * (m9_10);
+    u = mad(g4, -m6_10, u);
+    u = mad(g6, m4_10, u);
+    u = mad(g9, -m1_10, u);
+    u = mad(g10, m1_9 - m4_6, u);
+    v = mad(54.0f, u, v);
+    u = g5 * (-m6_9);
+    u = mad(g6, m5_9, u);
+    u = mad(g9, -m5_6, u);
+    v = mad(81.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 27 */
+    precise float m11_15 = x11 * y15 - y11 * x15;
+    u = g0 * (-m11_15);
+    u = mad(g11, m0_15, u);
+    u = mad(g15, -m0_11, u);
+    v = u;
+    u = g3 * (-m11_12);
+    u = mad(g11, m3_12, u);
+    u = mad(g12, -m3_11, u);
+    v += (u + u);
+    precise float m10_15 = x10 * y15 - y10 * x15;
+    u = g1 * (m10_15);
+    u = mad(g3, m8_15 - m10_13, u);
+    u = mad(g8, -m3_15, u);
+    u = mad(g10, m3_13 - m1_15, u);
+    u = mad(g13, -m3_10, u);
+    u = mad(g15, m3_8 + m1_10, u);
+    v += (u + u) + u;
+    u = g4 * (-m7_15);
+    u = mad(g7, m4_15, u);
+    u = mad(g15, -m4_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g7 * (m8_11);
+    u = mad(g8, -m7_11, u);
+    u = mad(g11, m7_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m11_14 = x11 * y14 - y11 * x14;
+    u = g1 * (-m11_14);
+    u = mad(g3, m9_14, u);
+    u = mad(g9, -m3_14, u);
+    u = mad(g11, m1_14, u);
+    u = mad(g14, m3_9 - m1_11, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    precise float m9_15 = x9 * y15 - y9 * x15;
+    precise float m11_13 = x11 * y13 - y11 * x13;
+    u = g2 * (m9_15 - m11_13);
+    u = mad(g9, -m2_15, u);
+    u = mad(g11, m2_13, u);
+    u = mad(g13, -m2_11, u);
+    u = mad(g15, m2_9, u);
+    v = mad(15.0f, u, v);
+    u = g5 * (-m6_15);
+    u = mad(g6, m5_15 - m7_13, u);
+    u = mad(g7, m6_13, u);
+    u = mad(g13, -m6_7, u);
+    u = mad(g15, -m5_6, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (m10_11);
+    u = mad(g7, m9_10, u);
+    u = mad(g9, -m7_10, u);
+    u = mad(g10, m7_9 - m5_11, u);
+    u = mad(g11, m5_10, u);
+    v = mad(27.0f, u, v);
+    u = g5 * (-m7_14);
+    u = mad(g7, m5_14, u);
+    u = mad(g14, -m5_7, u);
+    v = mad(36.0f, u, v);
+    u = g6 * (m9_11);
+    u = mad(g9, -m6_11, u);
+    u = mad(g11, m6_9, u);
+    v = mad(54.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 37 */
+    u = g1 * (-m11_15);
+    u = mad(g11, m1_15, u);
+    u = mad(g15, -m1_11, u);
+    v = (u + u);
+    precise float m10_14 = x10 * y14 - y10 * x14;
+    u = g3 * (m10_14);
+    u = mad(g10, -m3_14, u);
+    u = mad(g14, m3_10, u);
+    v += (u + u) + u;
+    u = g3 * (-m11_13);
+    u = mad(g11, m3_13, u);
+    u = mad(g13, -m3_11, u);
+    v += ((u + u) + (u + u));
+    u = g2 * (m10_15);
+    u = mad(g3, m9_15, u);
+    u = mad(g9, -m3_15, u);
+    u = mad(g10, -m2_15, u);
+    u = mad(g15, m3_9 + m2_10, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m11_14);
+    u = mad(g11, m2_14, u);
+    u = mad(g14, -m2_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g5 * (-m7_15);
+    u = mad(g7, m5_15, u);
+    u = mad(g15, -m5_7, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (-m7_14);
+    u = mad(g7, m6_14 + m9_11, u);
+    u = mad(g9, -m7_11, u);
+    u = mad(g11, m7_9, u);
+    u = mad(g14, -m6_7, u);
+    v = mad(18.0f, u, v);
+    u = g6 * (m10_11);
+    u = mad(g10, -m6_11, u);
+    u = mad(g11, m6_10, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 38 */
+    u = -((g2 * m11_15 - g11 * m2_15) + g15 * m2_11);
+    v = u;
+    u = -((g3 * m11_14 - g11 * m3_14) + g14 * m3_11);
+    v += (u + u);
+    u = ((g3 * m10_15 - g10 * m3_15) + g15 * m3_10);
+    v += (u + u) + u;
+    u = -((g6 * m7_15 - g7 * m6_15) + g15 * m6_7);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 39 */
+    precise float m12_13 = x12 * y13 - y12 * x13;
+    u = ((g0 * m12_13 - g12 * m0_13) + g13 * m0_12);
+    v = u;
+    u = ((g4 * m8_13 - g8 * m4_13) + g13 * m4_8);
+    u += ((g5 * m8_12 - g8 * m5_12) + g12 * m5_8);
+    v += (u + u) + u;
+    u = -((g4 * m9_12 - g9 * m4_12) + g12 * m4_9);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 40 */
+    precise float m12_14 = x12 * y14 - y12 * x14;
+    u = g0 * (m12_14);
+    u = mad(g12, -m0_14, u);
+    u = mad(g14, m0_12, u);
+    v = (u + u);
+    u = g1 * (m12_13);
+    u = mad(g12, -m1_13, u);
+    u = mad(g13, m1_12, u);
+    v += (u + u) + u;
+    u = g4 * (m8_14);
+    u = mad(g6, m8_12, u);
+    u = mad(g8, -m4_14 - m6_12, u);
+    u = mad(g12, m6_8, u);
+    u = mad(g14, m4_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m9_13);
+    u = mad(g5, -m9_12, u);
+    u = mad(g9, m4_13 + m5_12, u);
+    u = mad(g12, -m5_9, u);
+    u = mad(g13, -m4_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g4 * (-m10_12);
+    u = mad(g10, m4_12, u);
+    u = mad(g12, -m4_10, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g5 * (m8_13);
+    u = mad(g8, -m5_13, u);
+    u = mad(g13, m5_8, u);
+    v = mad(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 41 */
+    precise float m12_15 = x12 * y15 - y12 * x15;
+    u = g0 * (m12_15);
+    u = mad(g12, -m0_15, u);
+    u = mad(g15, m0_12, u);
+    v = u;
+    precise float m13_14 = x13 * y14 - y13 * x14;
+    u = g0 * (m13_14);
+    u = mad(g2, m12_13, u);
+    u = mad(g4, m8_15, u);
+    u = mad(g7, m8_12, u);
+    u = mad(g8, -m4_15 - m7_12, u);
+    u = mad(g12, m7_8 - m2_13, u);
+    u = mad(g13, m2_12 - m0_14, u);
+    u = mad(g14, m0_13, u);
+    u = mad(g15, m4_8, u);
+    v += (u + u) + u;
+    u = g1 * (m12_14);
+    u = mad(g4, -m11_12, u);
+    u = mad(g11, m4_12, u);
+    u = mad(g12, -m1_14 - m4_11, u);
+    u = mad(g14, m1_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m10_13);
+    u = mad(g5, m8_14 - m10_12, u);
+    u = mad(g6, m8_13, u);
+    u = mad(g8, -m5_14 - m6_13, u);
+    u = mad(g10, m4_13 + m5_12, u);
+    u = mad(g12, -m5_10, u);
+    u = mad(g13, m6_8 - m4_10, u);
+    u = mad(g14, m5_8, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 42 */
+    u = g3 * (m12_13);
+    u = mad(g12, -m3_13, u);
+    u = mad(g13, m3_12, u);
+    v = u;
+    precise float m13_15 = x13 * y15 - y13 * x15;
+    u = g0 * (m13_15);
+    u = mad(g13, -m0_15, u);
+    u = mad(g15, m0_13, u);
+    v += (u + u);
+    u = g1 * (m12_15);
+    u = mad(g4, m9_15, u);
+    u = mad(g7, m9_12, u);
+    u = mad(g9, -m4_15 - m7_12, u);
+    u = mad(g12, m7_9 - m1_15, u);
+    u = mad(g15, m1_12 + m4_9, u);
+    v += (u + u) + u;
+    u = g2 * (m12_14);
+    u = mad(g12, -m2_14, u);
+    u = mad(g14, m2_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m13_14);
+    u = mad(g13, -m1_14, u);
+    u = mad(g14, m1_13, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g5 * (m8_15);
+    u = mad(g7, m8_13, u);
+    u = mad(g8, -m7_13 - m5_15, u);
+    u = mad(g13, m7_8, u);
+    u = mad(g15, m5_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m11_13);
+    u = mad(g5, -m11_12, u);
+    u = mad(g11, m4_13 + m5_12, u);
+    u = mad(g12, -m5_11, u);
+    u = mad(g13, -m4_11, u);
+    v = mad(15.0f, u, v);
+    u = g4 * (-m10_14);
+    u = mad(g6, -m10_12, u);
+    u = mad(g10, m4_14 + m6_12, u);
+    u = mad(g12, -m6_10, u);
+    u = mad(g14, -m4_10, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (m9_14);
+    u = mad(g6, m9_13, u);
+    u = mad(g9, -m5_14 - m6_13, u);
+    u = mad(g13, m6_9, u);
+    u = mad(g14, m5_9, u);
+    v = mad(27.0f, u, v);
+    u = g6 * (m8_14);
+    u = mad(g8, -m6_14, u);
+    u = mad(g14, m6_8, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (-m10_13);
+    u = mad(g10, m5_13, u);
+    u = mad(g13, -m5_10, u);
+    v = mad(54.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 43 */
+    precise float m14_15 = x14 * y15 - y14 * x15;
+    u = g0 * (m14_15);
+    u = mad(g14, -m0_15, u);
+    u = mad(g15, m0_14, u);
+    v = u;
+    u = g3 * (m12_14);
+    u = mad(g12, -m3_14, u);
+    u = mad(g14, m3_12, u);
+    v += (u + u);
+    u = g2 * (m12_15);
+    u = mad(g4, -m10_15, u);
+    u = mad(g7, -m10_12, u);
+    u = mad(g10, m4_15 + m7_12, u);
+    u = mad(g12, -m2_15 - m7_10, u);
+    u = mad(g15, m2_12 - m4_10, u);
+    v += (u + u) + u;
+    u = g1 * (m13_15);
+    u = mad(g13, -m1_15, u);
+    u = mad(g15, m1_13, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m13_14);
+    u = mad(g13, -m2_14, u);
+    u = mad(g14, m2_13, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g4 * (-m11_14);
+    u = mad(g6, -m11_12, u);
+    u = mad(g11, m4_14 + m6_12, u);
+    u = mad(g12, -m6_11, u);
+    u = mad(g14, -m4_11, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (m8_15);
+    u = mad(g7, m8_14, u);
+    u = mad(g8, -m6_15 - m7_14, u);
+    u = mad(g14, m7_8, u);
+    u = mad(g15, m6_8, u);
+    v = mad(15.0f, u, v);
+    u = g5 * (m9_15);
+    u = mad(g7, m9_13, u);
+    u = mad(g9, -m7_13 - m5_15, u);
+    u = mad(g13, m7_9, u);
+    u = mad(g15, m5_9, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (-m10_14);
+    u = mad(g6, -m10_13, u);
+    u = mad(g10, m5_14 + m6_13, u);
+    u = mad(g13, -m6_10, u);
+    u = mad(g14, -m5_10, u);
+    v = mad(27.0f, u, v);
+    u = g5 * (-m11_13);
+    u = mad(g11, m5_13, u);
+    u = mad(g13, -m5_11, u);
+    v = mad(36.0f, u, v);
+    u = g6 * (m9_14);
+    u = mad(g9, -m6_14, u);
+    u = mad(g14, m6_9, u);
+    v = mad(54.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 44 */
+    u = g3 * (m12_15);
+    u = mad(g12, -m3_15, u);
+    u = mad(g15, m3_12, u);
+    v = u;
+    u = g1 * (m14_15);
+    u = mad(g3, m13_14, u);
+    u = mad(g4, -m11_15, u);
+    u = mad(g7, -m11_12, u);
+    u = mad(g11, m4_15 + m7_12, u);
+    u = mad(g12, -m7_11, u);
+    u = mad(g13, -m3_14, u);
+    u = mad(g14, m3_13 - m1_15, u);
+    u = mad(g15, m1_14 - m4_11, u);
+    v += (u + u) + u;
+    u = g2 * (m13_15);
+    u = mad(g7, m8_15, u);
+    u = mad(g8, -m7_15, u);
+    u = mad(g13, -m2_15, u);
+    u = mad(g15, m2_13 + m7_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g5 * (-m11_14);
+    u = mad(g6, m9_15 - m11_13, u);
+    u = mad(g7, m9_14, u);
+    u = mad(g9, -m6_15 - m7_14, u);
+    u = mad(g11, m5_14 + m6_13, u);
+    u = mad(g13, -m6_11, u);
+    u = mad(g14, m7_9 - m5_11, u);
+    u = mad(g15, m6_9, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 45 */
+    u = g3 * (m13_15);
+    u = mad(g13, -m3_15, u);
+    u = mad(g15, m3_13, u);
+    v = (u + u);
+    u = g2 * (m14_15);
+    u = mad(g14, -m2_15, u);
+    u = mad(g15, m2_14, u);
+    v += (u + u) + u;
+    u = g5 * (-m11_15);
+    u = mad(g7, -m11_13, u);
+    u = mad(g11, m7_13 + m5_15, u);
+    u = mad(g13, -m7_11, u);
+    u = mad(g15, -m5_11, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (m10_15);
+    u = mad(g7, m10_14, u);
+    u = mad(g10, -m6_15 - m7_14, u);
+    u = mad(g14, m7_10, u);
+    u = mad(g15, m6_10, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g7 * (m9_15);
+    u = mad(g9, -m7_15, u);
+    u = mad(g15, m7_9, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (-m11_14);
+    u = mad(g11, m6_14, u);
+    u = mad(g14, -m6_11, u);
+    v = mad(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 46 */
+    u = ((g3 * m14_15 - g14 * m3_15) + g15 * m3_14);
+    v = u;
+    u = -((g6 * m11_15 - g11 * m6_15) + g15 * m6_11);
+    u -= ((g7 * m11_14 - g11 * m7_14) + g14 * m7_11);
+    v += (u + u) + u;
+    u = ((g7 * m10_15 - g10 * m7_15) + g15 * m7_10);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 47 */
+    u = ((g4 * m12_13 - g12 * m4_13) + g13 * m4_12);
+    v = (u + u);
+    u = -((g8 * m9_12 - g9 * m8_12) + g12 * m8_9);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 48 */
+    u = g4 * (m12_14);
+    u = mad(g12, -m4_14, u);
+    u = mad(g14, m4_12, u);
+    v = ((u + u) + (u + u));
+    u = g5 * (m12_13);
+    u = mad(g8, -m10_12, u);
+    u = mad(g10, m8_12, u);
+    u = mad(g12, -m5_13 - m8_10, u);
+    u = mad(g13, m5_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m9_13);
+    u = mad(g9, m8_13, u);
+    u = mad(g13, -m8_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 49 */
+    u = g4 * (m12_15);
+    u = mad(g12, -m4_15, u);
+    u = mad(g15, m4_12, u);
+    v = (u + u);
+    u = g8 * (-m11_12);
+    u = mad(g11, m8_12, u);
+    u = mad(g12, -m8_11, u);
+    v += (u + u) + u;
+    u = g4 * (m13_14);
+    u = mad(g6, m12_13, u);
+    u = mad(g12, -m6_13, u);
+    u = mad(g13, m6_12 - m4_14, u);
+    u = mad(g14, m4_13, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m9_14);
+    u = mad(g9, m8_14 - m10_12, u);
+    u = mad(g10, m9_12, u);
+    u = mad(g12, -m9_10, u);
+    u = mad(g14, -m8_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g5 * (m12_14);
+    u = mad(g12, -m5_14, u);
+    u = mad(g14, m5_12, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m10_13);
+    u = mad(g10, m8_13, u);
+    u = mad(g13, -m8_10, u);
+    v = mad(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 50 */
+    u = g7 * (m12_13);
+    u = mad(g12, -m7_13, u);
+    u = mad(g13, m7_12, u);
+    v = (u + u);
+    u = g8 * (-m9_15);
+    u = mad(g9, m8_15, u);
+    u = mad(g15, -m8_9, u);
+    v += (u + u) + u;
+    u = g4 * (m13_15);
+    u = mad(g13, -m4_15, u);
+    u = mad(g15, m4_13, u);
+    v += ((u + u) + (u + u));
+    u = g5 * (m12_15);
+    u = mad(g9, -m11_12, u);
+    u = mad(g11, m9_12, u);
+    u = mad(g12, -m9_11 - m5_15, u);
+    u = mad(g15, m5_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m11_13);
+    u = mad(g11, m8_13, u);
+    u = mad(g13, -m8_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g6 * (m12_14);
+    u = mad(g12, -m6_14, u);
+    u = mad(g14, m6_12, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g5 * (m13_14);
+    u = mad(g8, -m10_14, u);
+    u = mad(g10, m8_14, u);
+    u = mad(g13, -m5_14, u);
+    u = mad(g14, m5_13 - m8_10, u);
+    v = mad(18.0f, u, v);
+    u = g9 * (-m10_13);
+    u = mad(g10, m9_13, u);
+    u = mad(g13, -m9_10, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 51 */
+    u = g4 * (m14_15);
+    u = mad(g14, -m4_15, u);
+    u = mad(g15, m4_14, u);
+    v = (u + u);
+    u = g10 * (-m11_12);
+    u = mad(g11, m10_12, u);
+    u = mad(g12, -m10_11, u);
+    v += (u + u) + u;
+    u = g7 * (m12_14);
+    u = mad(g12, -m7_14, u);
+    u = mad(g14, m7_12, u);
+    v += ((u + u) + (u + u));
+    u = g6 * (m12_15);
+    u = mad(g8, -m10_15, u);
+    u = mad(g10, m8_15, u);
+    u = mad(g12, -m6_15, u);
+    u = mad(g15, m6_12 - m8_10, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m11_14);
+    u = mad(g11, m8_14, u);
+    u = mad(g14, -m8_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g5 * (m13_15);
+    u = mad(g13, -m5_15, u);
+    u = mad(g15, m5_13, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (m13_14);
+    u = mad(g9, -m11_13, u);
+    u = mad(g11, m9_13, u);
+    u = mad(g13, -m6_14 - m9_11, u);
+    u = mad(g14, m6_13, u);
+    v = mad(18.0f, u, v);
+    u = g9 * (-m10_14);
+    u = mad(g10, m9_14, u);
+    u = mad(g14, -m9_10, u);
+    v = mad(27.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 52 */
+    u = g7 * (m12_15);
+    u = mad(g12, -m7_15, u);
+    u = mad(g15, m7_12, u);
+    v = (u + u);
+    u = g8 * (-m11_15);
+    u = mad(g11, m8_15, u);
+    u = mad(g15, -m8_11, u);
+    v += (u + u) + u;
+    u = g5 * (m14_15);
+    u = mad(g7, m13_14, u);
+    u = mad(g13, -m7_14, u);
+    u = mad(g14, m7_13 - m5_15, u);
+    u = mad(g15, m5_14, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g9 * (-m10_15);
+    u = mad(g10, m9_15 - m11_13, u);
+    u = mad(g11, m10_13, u);
+    u = mad(g13, -m10_11, u);
+    u = mad(g15, -m9_10, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g6 * (m13_15);
+    u = mad(g13, -m6_15, u);
+    u = mad(g15, m6_13, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g9 * (-m11_14);
+    u = mad(g11, m9_14, u);
+    u = mad(g14, -m9_11, u);
+    v = mad(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 53 */
+    u = g7 * (m13_15);
+    u = mad(g13, -m7_15, u);
+    u = mad(g15, m7_13, u);
+    v = ((u + u) + (u + u));
+    u = g6 * (m14_15);
+    u = mad(g9, -m11_15, u);
+    u = mad(g11, m9_15, u);
+    u = mad(g14, -m6_15, u);
+    u = mad(g15, m6_14 - m9_11, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g10 * (-m11_14);
+    u = mad(g11, m10_14, u);
+    u = mad(g14, -m10_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 54 */
+    u = ((g7 * m14_15 - g14 * m7_15) + g15 * m7_14);
+    v = (u + u);
+    u = -((g10 * m11_15 - g11 * m10_15) + g15 * m10_11);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 55 */
+    u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 56 */
+    u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
+    v = (u + u);
+    u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 57 */
+    u = ((g8 * m12_15 - g12 * m8_15) + g15 * m8_12);
+    v = u;
+    u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
+    u += ((g10 * m12_13 - g12 * m10_13) + g13 * m10_12);
+    v += (u + u) + u;
+    u = ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 58 */
+    u = ((g11 * m12_13 - g12 * m11_13) + g13 * m11_12);
+    v = u;
+    u = ((g8 * m13_15 - g13 * m8_15) + g15 * m8_13);
+    v += (u + u);
+    u = ((g9 * m12_15 - g12 * m9_15) + g15 * m9_12);
+    v += (u + u) + u;
+    u = ((g10 * m12_14 - g12 * m10_14) + g14 * m10_12);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 59 */
+    u = ((g8 * m14_15 - g14 * m8_15) + g15 * m8_14);
+    v = u;
+    u = ((g11 * m12_14 - g12 * m11_14) + g14 * m11_12);
+    v += (u + u);
+    u = ((g10 * m12_15 - g12 * m10_15) + g15 * m10_12);
+    v += (u + u) + u;
+    u = ((g9 * m13_15 - g13 * m9_15) + g15 * m9_13);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g10 * m13_14 - g13 * m10_14) + g14 * m10_13);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 60 */
+    u = ((g11 * m12_15 - g12 * m11_15) + g15 * m11_12);
+    v = u;
+    u = ((g9 * m14_15 - g14 * m9_15) + g15 * m9_14);
+    u += ((g11 * m13_14 - g13 * m11_14) + g14 * m11_13);
+    v += (u + u) + u;
+    u = ((g10 * m13_15 - g13 * m10_15) + g15 * m10_13);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 61 */
+    u = ((g11 * m13_15 - g13 * m11_15) + g15 * m11_13);
+    v = (u + u);
+    u = ((g10 * m14_15 - g14 * m10_15) + g15 * m10_14);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 62 */
+    u = ((g11 * m14_15 - g14 * m11_15) + g15 * m11_14);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 63 */
+    u = g3 * (-m10_12);
+    u = mad(g10, m3_12, u);
+    u = mad(g12, -m3_10, u);
+    v = (u + u) + u;
+    u = g0 * (-m11_14);
+    u = mad(g11, m0_14, u);
+    u = mad(g14, -m0_11, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g3 * (m9_13);
+    u = mad(g6, -m7_12, u);
+    u = mad(g7, m6_12, u);
+    u = mad(g9, -m3_13, u);
+    u = mad(g12, -m6_7, u);
+    u = mad(g13, m3_9, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m11_12);
+    u = mad(g3, m8_14, u);
+    u = mad(g8, -m3_14, u);
+    u = mad(g11, m2_12, u);
+    u = mad(g12, -m2_11, u);
+    u = mad(g14, m3_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) - u;
+    u = g2 * (m8_15);
+    u = mad(g8, -m2_15, u);
+    u = mad(g15, m2_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m10_14);
+    u = mad(g4, m10_11, u);
+    u = mad(g10, m1_14 - m4_11, u);
+    u = mad(g11, m4_10, u);
+    u = mad(g14, -m1_10, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (m9_15);
+    u = mad(g4, -m6_15, u);
+    u = mad(g6, m4_15, u);
+    u = mad(g9, -m1_15, u);
+    u = mad(g15, m1_9 - m4_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m11_13);
+    u = mad(g2, -m10_13, u);
+    u = mad(g4, -m7_14, u);
+    u = mad(g7, m4_14 + m8_10, u);
+    u = mad(g8, -m7_10, u);
+    u = mad(g10, m2_13 + m7_8, u);
+    u = mad(g11, m1_13, u);
+    u = mad(g13, -m1_11 - m2_10, u);
+    u = mad(g14, -m4_7, u);
+    v = mad(18.0f, u, v);
+    u = g2 * (m9_14);
+    u = mad(g6, m8_11, u);
+    u = mad(g8, -m6_11, u);
+    u = mad(g9, -m2_14, u);
+    u = mad(g11, m6_8, u);
+    u = mad(g14, m2_9, u);
+    v = mad(27.0f, u, v);
+    u = g5 * (-m7_13);
+    u = mad(g7, m5_13, u);
+    u = mad(g13, -m5_7, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (m9_11 - m6_14);
+    u = mad(g6, m5_14, u);
+    u = mad(g9, -m5_11, u);
+    u = mad(g11, m5_9, u);
+    u = mad(g14, -m5_6, u);
+    v = mad(54.0f, u, v);
+    u = g6 * (m9_10);
+    u = mad(g9, -m6_10, u);
+    u = mad(g10, m6_9, u);
+    v = mad(81.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 36 */
+    u = g0 * (-m6_15);
+    u = mad(g6, m0_15, u);
+    u = mad(g15, -m0_6, u);
+    v = (u + u) + u;
+    u = g2 * (-m7_12);
+    u = mad(g7, m2_12, u);
+    u = mad(g12, -m2_7, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g0 * (m10_11);
+    u = mad(g1, m5_15, u);
+    u = mad(g5, -m1_15, u);
+    u = mad(g10, -m0_11, u);
+    u = mad(g11, m0_10, u);
+    u = mad(g15, m1_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g0 * (-m7_14);
+    u = mad(g2, m4_15, u);
+    u = mad(g4, -m2_15, u);
+    u = mad(g7, m0_14, u);
+    u = mad(g14, -m0_7, u);
+    u = mad(g15, m2_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) - u;
+    u = g3 * (m4_14);
+    u = mad(g4, -m3_14, u);
+    u = mad(g14, m3_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (-m6_13);
+    u = mad(g6, m2_13 - m7_8, u);
+    u = mad(g7, m6_8, u);
+    u = mad(g8, -m6_7, u);
+    u = mad(g13, -m2_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g3 * (m5_13 + m8_10);
+    u = mad(g5, -m3_13, u);
+    u = mad(g8, -m3_10, u);
+    u = mad(g10, m3_8, u);
+    u = mad(g13, m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m7_13 - m6_14);
+    u = mad(g2, m8_11, u);
+    u = mad(g4, -m6_11, u);
+    u = mad(g6, m1_14 + m4_11, u);
+    u = mad(g7, m1_13, u);
+    u = mad(g8, -m2_11, u);
+    u = mad(g11, m2_8 - m4_6, u);
+    u = mad(g13, -m1_7, u);
+    u = mad(g14, -m1_6, u);
+    v = mad(18.0f, u, v);
+    u = g2 * (m5_14);
+    u = mad(g4, -m7_10, u);
+    u = mad(g5, -m2_14, u);
+    u = mad(g7, m4_10, u);
+    u = mad(g10, -m4_7, u);
+    u = mad(g14, m2_5, u);
+    v = mad(27.0f, u, v);
+    u = g1 * (m9_11);
+    u = mad(g9, -m1_11, u);
+    u = mad(g11, m1_9, u);
+    v = mad(36.0f, u, v);
+    u = g2 * (m9_10);
+    u = mad(g5, -m7_9, u);
+    u = mad(g7, m5_9, u);
+    u = mad(g9, -m5_7 - m2_10, u);
+    u = mad(g10, m2_9, u);
+    v = mad(54.0f, u, v);
+    u = g5 * (-m6_10);
+    u = mad(g6, m5_10, u);
+    u = mad(g10, -m5_6, u);
+    v = mad(81.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 28 */
+    u = g0 * (m9_15);
+    u = mad(g9, -m0_15, u);
+    u = mad(g15, m0_9, u);
+    v = (u + u) + u;
+    u = g3 * (m8_13);
+    u = mad(g8, -m3_13, u);
+    u = mad(g13, m3_8, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g0 * (-m10_14);
+    u = mad(g4, -m5_15, u);
+    u = mad(g5, m4_15, u);
+    u = mad(g10, m0_14, u);
+    u = mad(g14, -m0_10, u);
+    u = mad(g15, -m4_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g0 * (-m11_13);
+    u = mad(g1, m8_15, u);
+    u = mad(g8, -m1_15, u);
+    u = mad(g11, m0_13, u);
+    u = mad(g13, -m0_11, u);
+    u = mad(g15, m1_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) - u;
+    u = g1 * (-m11_12);
+    u = mad(g11, m1_12, u);
+    u = mad(g12, -m1_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (m9_13);
+    u = mad(g7, m8_9, u);
+    u = mad(g8, -m7_9, u);
+    u = mad(g9, m7_8 - m2_13, u);
+    u = mad(g13, m2_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g2 * (-m10_12);
+    u = mad(g5, -m7_12, u);
+    u = mad(g7, m5_12, u);
+    u = mad(g10, m2_12, u);
+    u = mad(g12, -m5_7 - m2_10, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m9_14);
+    u = mad(g2, m8_14, u);
+    u = mad(g4, m9_11 - m7_13, u);
+    u = mad(g7, m4_13, u);
+    u = mad(g8, -m2_14, u);
+    u = mad(g9, -m1_14 - m4_11, u);
+    u = mad(g11, m4_9, u);
+    u = mad(g13, -m4_7, u);
+    u = mad(g14, m2_8 + m1_9, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (-m10_13);
+    u = mad(g5, m8_11, u);
+    u = mad(g8, -m5_11, u);
+    u = mad(g10, m1_13, u);
+    u = mad(g11, m5_8, u);
+    u = mad(g13, -m1_10, u);
+    v = mad(27.0f, u, v);
+    u = g4 * (-m6_14);
+    u = mad(g6, m4_14, u);
+    u = mad(g14, -m4_6, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (-m6_13);
+    u = mad(g6, m5_13 + m8_10, u);
+    u = mad(g8, -m6_10, u);
+    u = mad(g10, m6_8, u);
+    u = mad(g13, -m5_6, u);
+    v = mad(54.0f, u, v);
+    u = g5 * (m9_10);
+    u = mad(g9, -m5_10, u);
+    u = mad(g10, m5_9, u);
+    v = mad(81.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 35 */
+    return lt ? 1u : gt ? 0u : 2u;
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-uint ptp_3x3_flags(float d)
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+void ptp_3x3_values(float4 cp[16], float4 eye, out float d[64])
 {
-    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);
+    precise float e2 = eye.z;
+    precise float u, v;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x4 = cp[4].x;
+    precise float y4 = cp[4].y;
+    precise float w4 = cp[4].w;
+    precise float g4 = e2 * w4;
+    precise float m1_4 = x1 * y4 - y1 * x4;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_4 = x0 * y4 - y0 * x4;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = -((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    v = u;
+    d[0] = v * 9.0f;
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m2_4 = x2 * y4 - y2 * x4;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = (u + u);
+    precise float x5 = cp[5].x;
+    precise float y5 = cp[5].y;
+    precise float w5 = cp[5].w;
+    precise float g5 = e2 * w5;
+    precise float m1_5 = x1 * y5 - y1 * x5;
+    precise float m0_5 = x0 * y5 - y0 * x5;
+    u = -((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    v += (u + u) + u;
+    d[1] = v * 1.28571427f;
+    precise float x3 = cp[3].x;
+    precise float y3 = cp[3].y;
+    precise float w3 = cp[3].w;
+    precise float g3 = e2 * w3;
+    precise float m3_4 = x3 * y4 - y3 * x4;
+    precise float m0_3 = x0 * y3 - y0 * x3;
+    u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    v = u;
+    precise float x6 = cp[6].x;
+    precise float y6 = cp[6].y;
+    precise float w6 = cp[6].w;
+    precise float g6 = e2 * w6;
+    precise float m1_6 = x1 * y6 - y1 * x6;
+    precise float m0_6 = x0 * y6 - y0 * x6;
+    u = -((g0 * m1_6 - g1 * m0_6) + g6 * m0_1);
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    u -= ((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
+    v += (u + u) + u;
+    precise float m2_5 = x2 * y5 - y2 * x5;
+    u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
+    u = u + u;
+    v += (u + u) + u;
+    d[2] = v * 0.428571433f;
+    precise float x7 = cp[7].x;
+    precise float y7 = cp[7].y;
+    precise float w7 = cp[7].w;
+    precise float g7 = e2 * w7;
+    precise float m1_7 = x1 * y7 - y1 * x7;
+    precise float m0_7 = x0 * y7 - y0 * x7;
+    u = -((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+    v = u;
+    precise float m1_3 = x1 * y3 - y1 * x3;
+    u = -((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v += (u + u);
+    precise float m3_5 = x3 * y5 - y3 * x5;
+    u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+    v += (u + u) + u;
+    precise float m2_6 = x2 * y6 - y2 * x6;
+    u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[3] = v * 0.257142872f;
+    precise float m3_7 = x3 * y7 - y3 * x7;
+    u = -((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+    v = (u + u);
+    precise float m3_6 = x3 * y6 - y3 * x6;
+    precise float m2_3 = x2 * y3 - y2 * x3;
+    u = -((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+    v += (u + u) + u;
+    d[6] = v * 1.28571427f;
+    precise float m2_7 = x2 * y7 - y2 * x7;
+    u = -((g2 * m3_7 - g3 * m2_7) + g7 * m2_3);
+    v = u;
+    d[7] = v * 9.0f;
+    u = -((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
+    v = u;
+    u = -((g1 * m2_7 - g2 * m1_7) + g7 * m1_2);
+    u -= ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
+    v += (u + u) + u;
+    u = -((g1 * m3_6 - g3 * m1_6) + g6 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    d[5] = v * 0.428571433f;
+    u = -((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
+    v = u;
+    u = -((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+    v += (u + u);
+    u = -((g0 * m3_6 - g3 * m0_6) + g6 * m0_3);
+    v += (u + u) + u;
+    u = -((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[4] = v * 0.257142872f;
+    precise float x8 = cp[8].x;
+    precise float y8 = cp[8].y;
+    precise float w8 = cp[8].w;
+    precise float g8 = e2 * w8;
+    precise float m1_8 = x1 * y8 - y1 * x8;
+    precise float m0_8 = x0 * y8 - y0 * x8;
+    u = -((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
+    v = (u + u);
+    precise float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    v += (u + u) + u;
+    d[8] = v * 1.28571427f;
+    precise float m2_8 = x2 * y8 - y2 * x8;
+    u = g0 * (-m2_8);
+    u = mad(g2, m0_8, u);
+    u = mad(g8, -m0_2, u);
+    v = ((u + u) + (u + u));
+    precise float x9 = cp[9].x;
+    precise float y9 = cp[9].y;
+    precise float w9 = cp[9].w;
+    precise float g9 = e2 * w9;
+    precise float m1_9 = x1 * y9 - y1 * x9;
+    precise float m4_6 = x4 * y6 - y4 * x6;
+    u = g0 * (m4_6 - m1_9);
+    precise float m0_9 = x0 * y9 - y0 * x9;
+    u = mad(g1, m0_9, u);
+    u = mad(g4, -m0_6, u);
+    u = mad(g6, m0_4, u);
+    u = mad(g9, -m0_1, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_5);
+    u = mad(g4, -m1_5, u);
+    u = mad(g5, m1_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[9] = v * 0.183673471f;
+    precise float m3_8 = x3 * y8 - y3 * x8;
+    u = g0 * (-m3_8);
+    u = mad(g3, m0_8, u);
+    u = mad(g8, -m0_3, u);
+    v = (u + u);
+    precise float m4_7 = x4 * y7 - y4 * x7;
+    u = g0 * (m4_7);
+    u = mad(g4, -m0_7, u);
+    u = mad(g7, m0_4, u);
+    v += (u + u) + u;
+    precise float x10 = cp[10].x;
+    precise float y10 = cp[10].y;
+    precise float w10 = cp[10].w;
+    precise float g10 = e2 * w10;
+    precise float m1_10 = x1 * y10 - y1 * x10;
+    u = g0 * (-m1_10);
+    precise float m0_10 = x0 * y10 - y0 * x10;
+    u = mad(g1, m0_10 - m2_8, u);
+    u = mad(g2, m1_8, u);
+    u = mad(g8, -m1_2, u);
+    u = mad(g10, -m0_1, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m5_6 = x5 * y6 - y5 * x6;
+    u = g0 * (m5_6);
+    u = mad(g2, m4_5, u);
+    u = mad(g4, -m2_5, u);
+    u = mad(g5, m2_4 - m0_6, u);
+    u = mad(g6, m0_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m2_9 = x2 * y9 - y2 * x9;
+    u = g0 * (-m2_9);
+    u = mad(g2, m0_9, u);
+    u = mad(g9, -m0_2, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_6);
+    u = mad(g4, -m1_6, u);
+    u = mad(g6, m1_4, u);
+    v = mad(18.0f, u, v);
+    d[10] = v * 0.0612244904f;
+    precise float x11 = cp[11].x;
+    precise float y11 = cp[11].y;
+    precise float w11 = cp[11].w;
+    precise float g11 = e2 * w11;
+    precise float m3_11 = x3 * y11 - y3 * x11;
+    u = g1 * (-m3_11);
+    precise float m1_11 = x1 * y11 - y1 * x11;
+    u = mad(g3, m1_11, u);
+    u = mad(g11, -m1_3, u);
+    v = ((u + u) + (u + u));
+    precise float m3_10 = x3 * y10 - y3 * x10;
+    u = g2 * (-m3_10);
+    precise float m5_7 = x5 * y7 - y5 * x7;
+    precise float m2_10 = x2 * y10 - y2 * x10;
+    u = mad(g3, m5_7 + m2_10, u);
+    u = mad(g5, -m3_7, u);
+    u = mad(g7, m3_5, u);
+    u = mad(g10, -m2_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m6_7 = x6 * y7 - y6 * x7;
+    u = g2 * (m6_7);
+    u = mad(g6, -m2_7, u);
+    u = mad(g7, m2_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[14] = v * 0.183673471f;
+    precise float m2_11 = x2 * y11 - y2 * x11;
+    u = -((g2 * m3_11 - g3 * m2_11) + g11 * m2_3);
+    v = (u + u);
+    u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+    v += (u + u) + u;
+    d[15] = v * 1.28571427f;
+    u = g0 * (-m3_11);
+    precise float m0_11 = x0 * y11 - y0 * x11;
+    u = mad(g3, m0_11, u);
+    u = mad(g11, -m0_3, u);
+    v = (u + u);
+    u = g3 * (m4_7);
+    u = mad(g4, -m3_7, u);
+    u = mad(g7, m3_4, u);
+    v += (u + u) + u;
+    u = g1 * (-m2_11);
+    precise float m3_9 = x3 * y9 - y3 * x9;
+    u = mad(g2, m1_11 - m3_9, u);
+    u = mad(g3, m2_9, u);
+    u = mad(g9, -m2_3, u);
+    u = mad(g11, -m1_2, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m6_7);
+    u = mad(g3, m5_6, u);
+    u = mad(g5, -m3_6, u);
+    u = mad(g6, m3_5 - m1_7, u);
+    u = mad(g7, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (-m3_10);
+    u = mad(g3, m1_10, u);
+    u = mad(g10, -m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m5_7);
+    u = mad(g5, -m2_7, u);
+    u = mad(g7, m2_5, u);
+    v = mad(18.0f, u, v);
+    d[13] = v * 0.0612244904f;
+    precise float x12 = cp[12].x;
+    precise float y12 = cp[12].y;
+    precise float w12 = cp[12].w;
+    precise float g12 = e2 * w12;
+    precise float m1_12 = x1 * y12 - y1 * x12;
+    precise float m0_12 = x0 * y12 - y0 * x12;
+    u = -((g0 * m1_12 - g1 * m0_12) + g12 * m0_1);
+    v = u;
+    precise float m4_9 = x4 * y9 - y4 * x9;
+    u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
+    precise float m4_8 = x4 * y8 - y4 * x8;
+    u += ((g1 * m4_8 - g4 * m1_8) + g8 * m1_4);
+    v += (u + u) + u;
+    precise float m5_8 = x5 * y8 - y5 * x8;
+    u = -((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
+    u = u + u;
+    v += (u + u) + u;
+    d[16] = v * 0.428571433f;
+    precise float m2_12 = x2 * y12 - y2 * x12;
+    u = g0 * (-m2_12);
+    u = mad(g2, m0_12, u);
+    u = mad(g12, -m0_2, u);
+    v = (u + u);
+    precise float x13 = cp[13].x;
+    precise float y13 = cp[13].y;
+    precise float w13 = cp[13].w;
+    precise float g13 = e2 * w13;
+    precise float m1_13 = x1 * y13 - y1 * x13;
+    u = g0 * (-m1_13);
+    precise float m0_13 = x0 * y13 - y0 * x13;
+    u = mad(g1, m0_13, u);
+    u = mad(g13, -m0_1, u);
+    v += (u + u) + u;
+    precise float m4_10 = x4 * y10 - y4 * x10;
+    u = g0 * (m4_10);
+    u = mad(g2, m4_8, u);
+    u = mad(g4, -m2_8 - m0_10, u);
+    u = mad(g8, m2_4, u);
+    u = mad(g10, m0_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m5_9 = x5 * y9 - y5 * x9;
+    u = g0 * (-m5_9);
+    u = mad(g1, -m5_8, u);
+    u = mad(g5, m1_8 + m0_9, u);
+    u = mad(g8, -m1_5, u);
+    u = mad(g9, -m0_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m6_8 = x6 * y8 - y6 * x8;
+    u = g0 * (-m6_8);
+    u = mad(g6, m0_8, u);
+    u = mad(g8, -m0_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_9);
+    u = mad(g4, -m1_9, u);
+    u = mad(g9, m1_4, u);
+    v = mad(18.0f, u, v);
+    d[17] = v * 0.0612244904f;
+    u = g0 * (-m1_11);
+    u = mad(g1, m0_11, u);
+    u = mad(g11, -m0_1, u);
+    v = (u + u);
+    u = g3 * (m4_5);
+    u = mad(g4, -m3_5, u);
+    u = mad(g5, m3_4, u);
+    v += (u + u) + u;
+    u = g1 * (-m3_8);
+    u = mad(g3, m1_8, u);
+    u = mad(g8, -m1_3, u);
+    v += ((u + u) + (u + u));
+    u = g0 * (m5_7 - m3_9);
+    u = mad(g3, m0_9, u);
+    u = mad(g5, -m0_7, u);
+    u = mad(g7, m0_5, u);
+    u = mad(g9, -m0_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_7);
+    u = mad(g4, -m1_7, u);
+    u = mad(g7, m1_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g0 * (-m2_10);
+    u = mad(g2, m0_10, u);
+    u = mad(g10, -m0_2, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_9);
+    u = mad(g2, m1_9 + m4_6, u);
+    u = mad(g4, -m2_6, u);
+    u = mad(g6, m2_4, u);
+    u = mad(g9, -m1_2, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (m5_6);
+    u = mad(g5, -m1_6, u);
+    u = mad(g6, m1_5, u);
+    v = mad(27.0f, u, v);
+    d[11] = v * 0.0367346928f;
+    u = g2 * (-m3_8);
+    u = mad(g3, m2_8, u);
+    u = mad(g8, -m2_3, u);
+    v = (u + u);
+    u = g0 * (m6_7);
+    u = mad(g6, -m0_7, u);
+    u = mad(g7, m0_6, u);
+    v += (u + u) + u;
+    u = g0 * (-m2_11);
+    u = mad(g2, m0_11, u);
+    u = mad(g11, -m0_2, u);
+    v += ((u + u) + (u + u));
+    u = g0 * (-m3_10);
+    u = mad(g3, m4_6 + m0_10, u);
+    u = mad(g4, -m3_6, u);
+    u = mad(g6, m3_4, u);
+    u = mad(g10, -m0_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m4_7);
+    u = mad(g4, -m2_7, u);
+    u = mad(g7, m2_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (-m3_9);
+    u = mad(g3, m1_9, u);
+    u = mad(g9, -m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m5_7 - m2_10);
+    u = mad(g2, m1_10, u);
+    u = mad(g5, -m1_7, u);
+    u = mad(g7, m1_5, u);
+    u = mad(g10, -m1_2, u);
+    v = mad(18.0f, u, v);
+    u = g2 * (m5_6);
+    u = mad(g5, -m2_6, u);
+    u = mad(g6, m2_5, u);
+    v = mad(27.0f, u, v);
+    d[12] = v * 0.0367346928f;
+    precise float x15 = cp[15].x;
+    precise float y15 = cp[15].y;
+    precise float w15 = cp[15].w;
+    precise float g15 = e2 * w15;
+    precise float m3_15 = x3 * y15 - y3 * x15;
+    u = g0 * (-m3_15);
+    precise float m0_15 = x0 * y15 - y0 * x15;
+    u = mad(g3, m0_15, u);
+    u = mad(g15, -m0_3, u);
+    v = u;
+    precise float m7_11 = x7 * y11 - y7 * x11;
+    u = g0 * (-m7_11);
+    precise float m2_15 = x2 * y15 - y2 * x15;
+    u = mad(g1, -m2_15, u);
+    precise float m1_15 = x1 * y15 - y1 * x15;
+    precise float m3_13 = x3 * y13 - y3 * x13;
+    u = mad(g2, m1_15 - m3_13, u);
+    precise float m2_13 = x2 * y13 - y2 * x13;
+    precise float m7_8 = x7 * y8 - y7 * x8;
+    u = mad(g3, m2_13 - m7_8, u);
+    u = mad(g7, m3_8 + m0_11, u);
+    u = mad(g8, -m3_7, u);
+    u = mad(g11, -m0_7, u);
+    u = mad(g13, -m2_3, u);
+    u = mad(g15, -m1_2, u);
+    v += (u + u) + u;
+    precise float x14 = cp[14].x;
+    precise float y14 = cp[14].y;
+    precise float w14 = cp[14].w;
+    precise float g14 = e2 * w14;
+    precise float m3_14 = x3 * y14 - y3 * x14;
+    u = g1 * (-m3_14);
+    precise float m1_14 = x1 * y14 - y1 * x14;
+    precise float m4_11 = x4 * y11 - y4 * x11;
+    u = mad(g3, m1_14 + m4_11, u);
+    u = mad(g4, -m3_11, u);
+    u = mad(g11, m3_4, u);
+    u = mad(g14, -m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m7_10 = x7 * y10 - y7 * x10;
+    u = g1 * (-m7_10);
+    precise float m5_11 = x5 * y11 - y5 * x11;
+    precise float m7_9 = x7 * y9 - y7 * x9;
+    u = mad(g2, m5_11 - m7_9, u);
+    precise float m5_10 = x5 * y10 - y5 * x10;
+    u = mad(g3, m5_10, u);
+    u = mad(g5, -m2_11 - m3_10, u);
+    u = mad(g7, m1_10 + m2_9, u);
+    u = mad(g9, -m2_7, u);
+    u = mad(g10, m3_5 - m1_7, u);
+    u = mad(g11, m2_5, u);
+    v = mad(27.0f, u, v);
+    d[21] = v * 0.0204081628f;
+    u = g1 * (-m3_15);
+    u = mad(g3, m1_15, u);
+    u = mad(g15, -m1_3, u);
+    v = (u + u);
+    u = g2 * (-m3_14);
+    precise float m2_14 = x2 * y14 - y2 * x14;
+    u = mad(g3, m2_14, u);
+    u = mad(g14, -m2_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m7_11);
+    u = mad(g3, -m7_9, u);
+    u = mad(g7, m1_11 + m3_9, u);
+    u = mad(g9, -m3_7, u);
+    u = mad(g11, -m1_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m6_11 = x6 * y11 - y6 * x11;
+    u = g2 * (m6_11);
+    precise float m6_10 = x6 * y10 - y6 * x10;
+    u = mad(g3, m6_10, u);
+    u = mad(g6, -m2_11 - m3_10, u);
+    u = mad(g10, m3_6, u);
+    u = mad(g11, m2_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g3 * (m5_11);
+    u = mad(g5, -m3_11, u);
+    u = mad(g11, m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m7_10);
+    u = mad(g7, m2_10, u);
+    u = mad(g10, -m2_7, u);
+    v = mad(18.0f, u, v);
+    d[22] = v * 0.0612244904f;
+    u = -((g2 * m3_15 - g3 * m2_15) + g15 * m2_3);
+    v = u;
+    u = -((g2 * m7_11 - g7 * m2_11) + g11 * m2_7);
+    u -= ((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
+    v += (u + u) + u;
+    u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
+    u = u + u;
+    v += (u + u) + u;
+    d[23] = v * 0.428571433f;
+    precise float m4_13 = x4 * y13 - y4 * x13;
+    u = ((g0 * m4_13 - g4 * m0_13) + g13 * m0_4);
+    v = u;
+    precise float m4_12 = x4 * y12 - y4 * x12;
+    u = ((g1 * m4_12 - g4 * m1_12) + g12 * m1_4);
+    v += (u + u);
+    precise float m5_12 = x5 * y12 - y5 * x12;
+    u = -((g0 * m5_12 - g5 * m0_12) + g12 * m0_5);
+    v += (u + u) + u;
+    precise float m8_9 = x8 * y9 - y8 * x9;
+    u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[24] = v * 0.257142872f;
+    precise float m4_14 = x4 * y14 - y4 * x14;
+    u = g0 * (m4_14);
+    precise float m0_14 = x0 * y14 - y0 * x14;
+    u = mad(g4, -m0_14, u);
+    u = mad(g14, m0_4, u);
+    v = (u + u);
+    u = g1 * (-m5_12);
+    u = mad(g5, m1_12, u);
+    u = mad(g12, -m1_5, u);
+    v += (u + u) + u;
+    u = g2 * (m4_12);
+    u = mad(g4, -m2_12, u);
+    u = mad(g12, m2_4, u);
+    v += ((u + u) + (u + u));
+    precise float m5_13 = x5 * y13 - y5 * x13;
+    precise float m6_12 = x6 * y12 - y6 * x12;
+    u = g0 * (-m5_13 - m6_12);
+    u = mad(g5, m0_13, u);
+    u = mad(g6, m0_12, u);
+    u = mad(g12, -m0_6, u);
+    u = mad(g13, -m0_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m4_13);
+    u = mad(g4, -m1_13, u);
+    u = mad(g13, m1_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m8_10 = x8 * y10 - y8 * x10;
+    u = g0 * (m8_10);
+    u = mad(g8, -m0_10, u);
+    u = mad(g10, m0_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_9);
+    u = mad(g4, -m6_8, u);
+    u = mad(g6, m4_8, u);
+    u = mad(g8, -m1_9 - m4_6, u);
+    u = mad(g9, m1_8, u);
+    v = mad(18.0f, u, v);
+    u = g4 * (-m5_9);
+    u = mad(g5, m4_9, u);
+    u = mad(g9, -m4_5, u);
+    v = mad(27.0f, u, v);
+    d[25] = v * 0.0367346928f;
+    precise float m3_12 = x3 * y12 - y3 * x12;
+    u = g0 * (-m3_12);
+    u = mad(g3, m0_12, u);
+    u = mad(g12, -m0_3, u);
+    v = u;
+    u = g0 * (m4_11 - m1_14);
+    u = mad(g1, m0_14 - m2_12, u);
+    u = mad(g2, m1_12, u);
+    u = mad(g3, m4_8, u);
+    u = mad(g4, -m3_8 - m0_11, u);
+    u = mad(g8, m3_4, u);
+    u = mad(g11, m0_4, u);
+    u = mad(g12, -m1_2, u);
+    u = mad(g14, -m0_1, u);
+    v += (u + u) + u;
+    u = g0 * (-m2_13 - m7_8);
+    u = mad(g2, m0_13, u);
+    u = mad(g7, m0_8, u);
+    u = mad(g8, -m0_7, u);
+    u = mad(g13, -m0_2, u);
+    u = u + u;
+    v += (u + u) + u;
+    precise float m6_9 = x6 * y9 - y6 * x9;
+    u = g0 * (-m6_9);
+    u = mad(g1, m4_10 - m6_8, u);
+    u = mad(g2, m4_9, u);
+    u = mad(g4, -m1_10 - m2_9, u);
+    u = mad(g6, m1_8 + m0_9, u);
+    u = mad(g8, -m1_6, u);
+    u = mad(g9, m2_4 - m0_6, u);
+    u = mad(g10, m1_4, u);
+    v = mad(27.0f, u, v);
+    d[18] = v * 0.0204081628f;
+    u = g0 * (-m1_15);
+    u = mad(g1, m0_15, u);
+    u = mad(g15, -m0_1, u);
+    v = u;
+    u = g1 * (-m3_12);
+    u = mad(g3, m1_12, u);
+    u = mad(g12, -m1_3, u);
+    v += (u + u);
+    u = g0 * (m5_11 - m3_13);
+    u = mad(g3, m5_8 + m0_13, u);
+    u = mad(g5, -m3_8 - m0_11, u);
+    u = mad(g8, m3_5, u);
+    u = mad(g11, m0_5, u);
+    u = mad(g13, -m0_3, u);
+    v += (u + u) + u;
+    u = g0 * (-m2_14);
+    u = mad(g2, m0_14, u);
+    u = mad(g14, -m0_2, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_13);
+    u = mad(g2, m1_13, u);
+    u = mad(g13, -m1_2, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (m4_11);
+    u = mad(g3, m4_9, u);
+    u = mad(g4, -m1_11 - m3_9, u);
+    u = mad(g9, m3_4, u);
+    u = mad(g11, m1_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g0 * (-m7_9);
+    u = mad(g1, -m7_8, u);
+    u = mad(g7, m1_8 + m0_9, u);
+    u = mad(g8, -m1_7, u);
+    u = mad(g9, -m0_7, u);
+    v = mad(15.0f, u, v);
+    u = g0 * (-m6_10);
+    u = mad(g2, -m6_8, u);
+    u = mad(g6, m2_8 + m0_10, u);
+    u = mad(g8, -m2_6, u);
+    u = mad(g10, -m0_6, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (m5_10);
+    u = mad(g2, m5_9, u);
+    u = mad(g5, -m1_10 - m2_9, u);
+    u = mad(g9, m2_5, u);
+    u = mad(g10, m1_5, u);
+    v = mad(27.0f, u, v);
+    u = g2 * (m4_10);
+    u = mad(g4, -m2_10, u);
+    u = mad(g10, m2_4, u);
+    v = mad(36.0f, u, v);
+    u = g1 * (-m6_9);
+    u = mad(g6, m1_9, u);
+    u = mad(g9, -m1_6, u);
+    v = mad(54.0f, u, v);
+    d[19] = v * 0.0122448979f;
+    u = g2 * (-m3_12);
+    u = mad(g3, m2_12, u);
+    u = mad(g12, -m2_3, u);
+    v = u;
+    u = g0 * (-m2_15);
+    u = mad(g2, m0_15, u);
+    u = mad(g15, -m0_2, u);
+    v += (u + u);
+    u = g0 * (-m3_14 - m6_11);
+    u = mad(g3, m0_14 - m6_8, u);
+    u = mad(g6, m3_8 + m0_11, u);
+    u = mad(g8, -m3_6, u);
+    u = mad(g11, -m0_6, u);
+    u = mad(g14, -m0_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m3_13);
+    u = mad(g3, m1_13, u);
+    u = mad(g13, -m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_14);
+    u = mad(g2, m1_14, u);
+    u = mad(g14, -m1_2, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g0 * (-m7_10);
+    u = mad(g2, -m7_8, u);
+    u = mad(g7, m2_8 + m0_10, u);
+    u = mad(g8, -m2_7, u);
+    u = mad(g10, -m0_7, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m4_11);
+    u = mad(g3, m4_10, u);
+    u = mad(g4, -m2_11 - m3_10, u);
+    u = mad(g10, m3_4, u);
+    u = mad(g11, m2_4, u);
+    v = mad(15.0f, u, v);
+    u = g1 * (m5_11);
+    u = mad(g3, m5_9, u);
+    u = mad(g5, -m1_11 - m3_9, u);
+    u = mad(g9, m3_5, u);
+    u = mad(g11, m1_5, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (-m6_10);
+    u = mad(g2, -m6_9, u);
+    u = mad(g6, m1_10 + m2_9, u);
+    u = mad(g9, -m2_6, u);
+    u = mad(g10, -m1_6, u);
+    v = mad(27.0f, u, v);
+    u = g1 * (-m7_9);
+    u = mad(g7, m1_9, u);
+    u = mad(g9, -m1_7, u);
+    v = mad(36.0f, u, v);
+    u = g2 * (m5_10);
+    u = mad(g5, -m2_10, u);
+    u = mad(g10, m2_5, u);
+    v = mad(54.0f, u, v);
+    d[20] = v * 0.0122448979f;
+    precise float m7_12 = x7 * y12 - y7 * x12;
+    u = g3 * (-m7_12);
+    u = mad(g7, m3_12, u);
+    u = mad(g12, -m3_7, u);
+    v = u;
+    precise float m7_15 = x7 * y15 - y7 * x15;
+    u = g0 * (-m7_15);
+    u = mad(g7, m0_15, u);
+    u = mad(g15, -m0_7, u);
+    v += (u + u);
+    precise float m6_15 = x6 * y15 - y6 * x15;
+    u = g1 * (-m6_15);
+    precise float m4_15 = x4 * y15 - y4 * x15;
+    precise float m6_13 = x6 * y13 - y6 * x13;
+    u = mad(g3, m4_15 + m6_13, u);
+    u = mad(g4, -m3_15, u);
+    u = mad(g6, m1_15 - m3_13, u);
+    u = mad(g13, m3_6, u);
+    u = mad(g15, m3_4 - m1_6, u);
+    v += (u + u) + u;
+    precise float m8_11 = x8 * y11 - y8 * x11;
+    u = g3 * (m8_11);
+    u = mad(g8, -m3_11, u);
+    u = mad(g11, m3_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m7_11);
+    u = mad(g7, m4_11, u);
+    u = mad(g11, -m4_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m7_13 = x7 * y13 - y7 * x13;
+    precise float m5_15 = x5 * y15 - y5 * x15;
+    u = g2 * (m5_15 - m7_13);
+    u = mad(g5, -m2_15, u);
+    u = mad(g7, m2_13, u);
+    u = mad(g13, -m2_7, u);
+    u = mad(g15, m2_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    precise float m7_14 = x7 * y14 - y7 * x14;
+    u = g1 * (-m7_14);
+    precise float m5_14 = x5 * y14 - y5 * x14;
+    u = mad(g3, m5_14, u);
+    u = mad(g5, -m3_14, u);
+    u = mad(g7, m1_14, u);
+    u = mad(g14, m3_5 - m1_7, u);
+    v = mad(15.0f, u, v);
+    precise float m10_11 = x10 * y11 - y10 * x11;
+    u = g1 * (m10_11);
+    precise float m9_10 = x9 * y10 - y9 * x10;
+    u = mad(g3, m9_10, u);
+    u = mad(g9, -m3_10, u);
+    u = mad(g10, m3_9 - m1_11, u);
+    u = mad(g11, m1_10, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (-m6_11);
+    u = mad(g6, m5_11 - m7_9, u);
+    u = mad(g7, m6_9, u);
+    u = mad(g9, -m6_7, u);
+    u = mad(g11, -m5_6, u);
+    v = mad(27.0f, u, v);
+    precise float m9_11 = x9 * y11 - y9 * x11;
+    u = g2 * (m9_11);
+    u = mad(g9, -m2_11, u);
+    u = mad(g11, m2_9, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (-m7_10);
+    u = mad(g7, m5_10, u);
+    u = mad(g10, -m5_7, u);
+    v = mad(54.0f, u, v);
+    d[29] = v * 0.0122448979f;
+    u = g3 * (-m7_13);
+    u = mad(g7, m3_13, u);
+    u = mad(g13, -m3_7, u);
+    v = (u + u);
+    u = g2 * (m6_15);
+    u = mad(g6, -m2_15, u);
+    u = mad(g15, m2_6, u);
+    v += (u + u) + u;
+    u = g1 * (-m7_15);
+    u = mad(g7, m1_15, u);
+    u = mad(g15, -m1_7, u);
+    v += ((u + u) + (u + u));
+    precise float m6_14 = x6 * y14 - y6 * x14;
+    u = g3 * (m6_14 + m5_15);
+    u = mad(g5, -m3_15, u);
+    u = mad(g6, -m3_14, u);
+    u = mad(g14, m3_6, u);
+    u = mad(g15, m3_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m7_14);
+    u = mad(g7, m2_14, u);
+    u = mad(g14, -m2_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g3 * (m9_11);
+    u = mad(g9, -m3_11, u);
+    u = mad(g11, m3_9, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m10_11);
+    u = mad(g5, -m7_11, u);
+    u = mad(g7, m5_11, u);
+    u = mad(g10, -m2_11, u);
+    u = mad(g11, m2_10 - m5_7, u);
+    v = mad(18.0f, u, v);
+    u = g6 * (-m7_10);
+    u = mad(g7, m6_10, u);
+    u = mad(g10, -m6_7, u);
+    v = mad(27.0f, u, v);
+    d[30] = v * 0.0367346928f;
+    u = -((g3 * m7_14 - g7 * m3_14) + g14 * m3_7);
+    v = u;
+    u = -((g2 * m7_15 - g7 * m2_15) + g15 * m2_7);
+    v += (u + u);
+    u = ((g3 * m6_15 - g6 * m3_15) + g15 * m3_6);
+    v += (u + u) + u;
+    u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g6 * m7_11 - g7 * m6_11) + g11 * m6_7);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[31] = v * 0.257142872f;
+    precise float m8_12 = x8 * y12 - y8 * x12;
+    u = ((g1 * m8_12 - g8 * m1_12) + g12 * m1_8);
+    v = u;
+    precise float m8_13 = x8 * y13 - y8 * x13;
+    u = ((g0 * m8_13 - g8 * m0_13) + g13 * m0_8);
+    v += (u + u);
+    precise float m9_12 = x9 * y12 - y9 * x12;
+    u = -((g0 * m9_12 - g9 * m0_12) + g12 * m0_9);
+    v += (u + u) + u;
+    u = -((g4 * m5_12 - g5 * m4_12) + g12 * m4_5);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[32] = v * 0.257142872f;
+    u = g2 * (m8_12);
+    u = mad(g8, -m2_12, u);
+    u = mad(g12, m2_8, u);
+    v = (u + u);
+    precise float m9_13 = x9 * y13 - y9 * x13;
+    u = g0 * (-m9_13);
+    u = mad(g9, m0_13, u);
+    u = mad(g13, -m0_9, u);
+    v += (u + u) + u;
+    precise float m8_14 = x8 * y14 - y8 * x14;
+    u = g0 * (m8_14);
+    u = mad(g8, -m0_14, u);
+    u = mad(g14, m0_8, u);
+    v += ((u + u) + (u + u));
+    precise float m10_12 = x10 * y12 - y10 * x12;
+    u = g0 * (-m10_12);
+    u = mad(g1, -m9_12, u);
+    u = mad(g9, m1_12, u);
+    u = mad(g10, m0_12, u);
+    u = mad(g12, -m1_9 - m0_10, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_13);
+    u = mad(g8, -m1_13, u);
+    u = mad(g13, m1_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g4 * (-m6_12);
+    u = mad(g6, m4_12, u);
+    u = mad(g12, -m4_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (m8_10 - m5_13);
+    u = mad(g5, m4_13, u);
+    u = mad(g8, -m4_10, u);
+    u = mad(g10, m4_8, u);
+    u = mad(g13, -m4_5, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (m8_9);
+    u = mad(g8, -m5_9, u);
+    u = mad(g9, m5_8, u);
+    v = mad(27.0f, u, v);
+    d[33] = v * 0.0367346928f;
+    u = g3 * (m8_12);
+    u = mad(g8, -m3_12, u);
+    u = mad(g12, m3_8, u);
+    v = u;
+    precise float m8_15 = x8 * y15 - y8 * x15;
+    u = g0 * (m8_15);
+    u = mad(g8, -m0_15, u);
+    u = mad(g15, m0_8, u);
+    v += (u + u);
+    precise float m9_14 = x9 * y14 - y9 * x14;
+    precise float m11_12 = x11 * y12 - y11 * x12;
+    u = g0 * (m9_14 - m11_12);
+    u = mad(g2, -m9_12, u);
+    u = mad(g9, m2_12 - m0_14, u);
+    u = mad(g11, m0_12, u);
+    u = mad(g12, -m2_9 - m0_11, u);
+    u = mad(g14, m0_9, u);
+    v += (u + u) + u;
+    u = g4 * (-m7_12);
+    u = mad(g7, m4_12, u);
+    u = mad(g12, -m4_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (m8_11);
+    u = mad(g8, -m4_11, u);
+    u = mad(g11, m4_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m10_13 = x10 * y13 - y10 * x13;
+    u = g0 * (-m10_13);
+    u = mad(g2, m8_13, u);
+    u = mad(g8, -m2_13, u);
+    u = mad(g10, m0_13, u);
+    u = mad(g13, m2_8 - m0_10, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_14 - m10_12);
+    u = mad(g8, -m1_14, u);
+    u = mad(g10, m1_12, u);
+    u = mad(g12, -m1_10, u);
+    u = mad(g14, m1_8, u);
+    v = mad(15.0f, u, v);
+    u = g4 * (-m5_14);
+    u = mad(g5, m4_14 - m6_12, u);
+    u = mad(g6, m5_12, u);
+    u = mad(g12, -m5_6, u);
+    u = mad(g14, -m4_5, u);
+    v = mad(18.0f, u, v);
+    u = g4 * (m9_10);
+    u = mad(g6, m8_9, u);
+    u = mad(g8, -m6_9, u);
+    u = mad(g9, m6_8 - m4_10, u);
+    u = mad(g10, m4_9, u);
+    v = mad(27.0f, u, v);
+    u = g4 * (-m6_13);
+    u = mad(g6, m4_13, u);
+    u = mad(g13, -m4_6, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (m8_10);
+    u = mad(g8, -m5_10, u);
+    u = mad(g10, m5_8, u);
+    v = mad(54.0f, u, v);
+    d[34] = v * 0.0122448979f;
+    u = g0 * (m4_15);
+    u = mad(g4, -m0_15, u);
+    u = mad(g15, m0_4, u);
+    v = u;
+    u = g3 * (m4_12);
+    u = mad(g4, -m3_12, u);
+    u = mad(g12, m3_4, u);
+    v += (u + u);
+    u = g0 * (-m5_14 - m7_12);
+    u = mad(g2, m5_12, u);
+    u = mad(g5, m0_14 - m2_12, u);
+    u = mad(g7, m0_12, u);
+    u = mad(g12, m2_5 - m0_7, u);
+    u = mad(g14, -m0_5, u);
+    v += (u + u) + u;
+    u = g0 * (m8_11);
+    u = mad(g8, -m0_11, u);
+    u = mad(g11, m0_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m7_8);
+    u = mad(g7, m4_8, u);
+    u = mad(g8, -m4_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (m4_14 - m6_12);
+    u = mad(g4, -m1_14, u);
+    u = mad(g6, m1_12, u);
+    u = mad(g12, -m1_6, u);
+    u = mad(g14, m1_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g0 * (-m6_13);
+    u = mad(g2, m4_13, u);
+    u = mad(g4, -m2_13, u);
+    u = mad(g6, m0_13, u);
+    u = mad(g13, m2_4 - m0_6, u);
+    v = mad(15.0f, u, v);
+    u = g0 * (m9_10);
+    u = mad(g2, m8_9, u);
+    u = mad(g8, -m2_9, u);
+    u = mad(g9, m2_8 - m0_10, u);
+    u = mad(g10, m0_9, u);
+    v = mad(18.0f, u, v);
+    u = g4 * (-m5_10);
+    u = mad(g5, m4_10 - m6_8, u);
+    u = mad(g6, m5_8, u);
+    u = mad(g8, -m5_6, u);
+    u = mad(g10, -m4_5, u);
+    v = mad(27.0f, u, v);
+    u = g1 * (m8_10);
+    u = mad(g8, -m1_10, u);
+    u = mad(g10, m1_8, u);
+    v = mad(36.0f, u, v);
+    u = g4 * (-m6_9);
+    u = mad(g6, m4_9, u);
+    u = mad(g9, -m4_6, u);
+    v = mad(54.0f, u, v);
+    d[26] = v * 0.0122448979f;
+    u = g3 * (m5_12);
+    u = mad(g5, -m3_12, u);
+    u = mad(g12, m3_5, u);
+    v = (u + u) + u;
+    u = g1 * (m4_15);
+    u = mad(g4, -m1_15, u);
+    u = mad(g15, m1_4, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (-m6_12);
+    u = mad(g3, m8_9, u);
+    u = mad(g6, m2_12, u);
+    u = mad(g8, -m3_9, u);
+    u = mad(g9, m3_8, u);
+    u = mad(g12, -m2_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m7_12);
+    u = mad(g3, m4_13, u);
+    u = mad(g4, -m3_13, u);
+    u = mad(g7, m1_12, u);
+    u = mad(g12, -m1_7, u);
+    u = mad(g13, m3_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) - u;
+    u = g0 * (-m7_13);
+    u = mad(g7, m0_13, u);
+    u = mad(g13, -m0_7, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (m5_14);
+    u = mad(g4, -m5_11, u);
+    u = mad(g5, m4_11 - m1_14, u);
+    u = mad(g11, -m4_5, u);
+    u = mad(g14, m1_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g0 * (m9_11 - m6_14);
+    u = mad(g6, m0_14, u);
+    u = mad(g9, -m0_11, u);
+    u = mad(g11, m0_9, u);
+    u = mad(g14, -m0_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_11);
+    u = mad(g2, m4_14 + m5_13, u);
+    u = mad(g4, -m2_14, u);
+    u = mad(g5, -m2_13 - m7_8, u);
+    u = mad(g7, m5_8, u);
+    u = mad(g8, -m1_11 - m5_7, u);
+    u = mad(g11, m1_8, u);
+    u = mad(g13, m2_5, u);
+    u = mad(g14, m2_4, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (-m6_13);
+    u = mad(g4, -m7_9, u);
+    u = mad(g6, m1_13, u);
+    u = mad(g7, m4_9, u);
+    u = mad(g9, -m4_7, u);
+    u = mad(g13, -m1_6, u);
+    v = mad(27.0f, u, v);
+    u = g2 * (m8_10);
+    u = mad(g8, -m2_10, u);
+    u = mad(g10, m2_8, u);
+    v = mad(36.0f, u, v);
+    u = g1 * (m9_10);
+    u = mad(g4, -m6_10, u);
+    u = mad(g6, m4_10, u);
+    u = mad(g9, -m1_10, u);
+    u = mad(g10, m1_9 - m4_6, u);
+    v = mad(54.0f, u, v);
+    u = g5 * (-m6_9);
+    u = mad(g6, m5_9, u);
+    u = mad(g9, -m5_6, u);
+    v = mad(81.0f, u, v);
+    d[27] = v * 0.00734693883f;
+    precise float m11_15 = x11 * y15 - y11 * x15;
+    u = g0 * (-m11_15);
+    u = mad(g11, m0_15, u);
+    u = mad(g15, -m0_11, u);
+    v = u;
+    u = g3 * (-m11_12);
+    u = mad(g11, m3_12, u);
+    u = mad(g12, -m3_11, u);
+    v += (u + u);
+    precise float m10_15 = x10 * y15 - y10 * x15;
+    u = g1 * (m10_15);
+    u = mad(g3, m8_15 - m10_13, u);
+    u = mad(g8, -m3_15, u);
+    u = mad(g10, m3_13 - m1_15, u);
+    u = mad(g13, -m3_10, u);
+    u = mad(g15, m3_8 + m1_10, u);
+    v += (u + u) + u;
+    u = g4 * (-m7_15);
+    u = mad(g7, m4_15, u);
+    u = mad(g15, -m4_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g7 * (m8_11);
+    u = mad(g8, -m7_11, u);
+    u = mad(g11, m7_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    precise float m11_14 = x11 * y14 - y11 * x14;
+    u = g1 * (-m11_14);
+    u = mad(g3, m9_14, u);
+    u = mad(g9, -m3_14, u);
+    u = mad(g11, m1_14, u);
+    u = mad(g14, m3_9 - m1_11, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    precise float m9_15 = x9 * y15 - y9 * x15;
+    precise float m11_13 = x11 * y13 - y11 * x13;
+    u = g2 * (m9_15 - m11_13);
+    u = mad(g9, -m2_15, u);
+    u = mad(g11, m2_13, u);
+    u = mad(g13, -m2_11, u);
+    u = mad(g15, m2_9, u);
+    v = mad(15.0f, u, v);
+    u = g5 * (-m6_15);
+    u = mad(g6, m5_15 - m7_13, u);
+    u = mad(g7, m6_13, u);
+    u = mad(g13, -m6_7, u);
+    u = mad(g15, -m5_6, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (m10_11);
+    u = mad(g7, m9_10, u);
+    u = mad(g9, -m7_10, u);
+    u = mad(g10, m7_9 - m5_11, u);
+    u = mad(g11, m5_10, u);
+    v = mad(27.0f, u, v);
+    u = g5 * (-m7_14);
+    u = mad(g7, m5_14, u);
+    u = mad(g14, -m5_7, u);
+    v = mad(36.0f, u, v);
+    u = g6 * (m9_11);
+    u = mad(g9, -m6_11, u);
+    u = mad(g11, m6_9, u);
+    v = mad(54.0f, u, v);
+    d[37] = v * 0.0122448979f;
+    u = g1 * (-m11_15);
+    u = mad(g11, m1_15, u);
+    u = mad(g15, -m1_11, u);
+    v = (u + u);
+    precise float m10_14 = x10 * y14 - y10 * x14;
+    u = g3 * (m10_14);
+    u = mad(g10, -m3_14, u);
+    u = mad(g14, m3_10, u);
+    v += (u + u) + u;
+    u = g3 * (-m11_13);
+    u = mad(g11, m3_13, u);
+    u = mad(g13, -m3_11, u);
+    v += ((u + u) + (u + u));
+    u = g2 * (m10_15);
+    u = mad(g3, m9_15, u);
+    u = mad(g9, -m3_15, u);
+    u = mad(g10, -m2_15, u);
+    u = mad(g15, m3_9 + m2_10, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m11_14);
+    u = mad(g11, m2_14, u);
+    u = mad(g14, -m2_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g5 * (-m7_15);
+    u = mad(g7, m5_15, u);
+    u = mad(g15, -m5_7, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (-m7_14);
+    u = mad(g7, m6_14 + m9_11, u);
+    u = mad(g9, -m7_11, u);
+    u = mad(g11, m7_9, u);
+    u = mad(g14, -m6_7, u);
+    v = mad(18.0f, u, v);
+    u = g6 * (m10_11);
+    u = mad(g10, -m6_11, u);
+    u = mad(g11, m6_10, u);
+    v = mad(27.0f, u, v);
+    d[38] = v * 0.0367346928f;
+    u = -((g2 * m11_15 - g11 * m2_15) + g15 * m2_11);
+    v = u;
+    u = -((g3 * m11_14 - g11 * m3_14) + g14 * m3_11);
+    v += (u + u);
+    u = ((g3 * m10_15 - g10 * m3_15) + g15 * m3_10);
+    v += (u + u) + u;
+    u = -((g6 * m7_15 - g7 * m6_15) + g15 * m6_7);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[39] = v * 0.257142872f;
+    precise float m12_13 = x12 * y13 - y12 * x13;
+    u = ((g0 * m12_13 - g12 * m0_13) + g13 * m0_12);
+    v = u;
+    u = ((g4 * m8_13 - g8 * m4_13) + g13 * m4_8);
+    u += ((g5 * m8_12 - g8 * m5_12) + g12 * m5_8);
+    v += (u + u) + u;
+    u = -((g4 * m9_12 - g9 * m4_12) + g12 * m4_9);
+    u = u + u;
+    v += (u + u) + u;
+    d[40] = v * 0.428571433f;
+    precise float m12_14 = x12 * y14 - y12 * x14;
+    u = g0 * (m12_14);
+    u = mad(g12, -m0_14, u);
+    u = mad(g14, m0_12, u);
+    v = (u + u);
+    u = g1 * (m12_13);
+    u = mad(g12, -m1_13, u);
+    u = mad(g13, m1_12, u);
+    v += (u + u) + u;
+    u = g4 * (m8_14);
+    u = mad(g6, m8_12, u);
+    u = mad(g8, -m4_14 - m6_12, u);
+    u = mad(g12, m6_8, u);
+    u = mad(g14, m4_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m9_13);
+    u = mad(g5, -m9_12, u);
+    u = mad(g9, m4_13 + m5_12, u);
+    u = mad(g12, -m5_9, u);
+    u = mad(g13, -m4_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g4 * (-m10_12);
+    u = mad(g10, m4_12, u);
+    u = mad(g12, -m4_10, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g5 * (m8_13);
+    u = mad(g8, -m5_13, u);
+    u = mad(g13, m5_8, u);
+    v = mad(18.0f, u, v);
+    d[41] = v * 0.0612244904f;
+    precise float m12_15 = x12 * y15 - y12 * x15;
+    u = g0 * (m12_15);
+    u = mad(g12, -m0_15, u);
+    u = mad(g15, m0_12, u);
+    v = u;
+    precise float m13_14 = x13 * y14 - y13 * x14;
+    u = g0 * (m13_14);
+    u = mad(g2, m12_13, u);
+    u = mad(g4, m8_15, u);
+    u = mad(g7, m8_12, u);
+    u = mad(g8, -m4_15 - m7_12, u);
+    u = mad(g12, m7_8 - m2_13, u);
+    u = mad(g13, m2_12 - m0_14, u);
+    u = mad(g14, m0_13, u);
+    u = mad(g15, m4_8, u);
+    v += (u + u) + u;
+    u = g1 * (m12_14);
+    u = mad(g4, -m11_12, u);
+    u = mad(g11, m4_12, u);
+    u = mad(g12, -m1_14 - m4_11, u);
+    u = mad(g14, m1_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m10_13);
+    u = mad(g5, m8_14 - m10_12, u);
+    u = mad(g6, m8_13, u);
+    u = mad(g8, -m5_14 - m6_13, u);
+    u = mad(g10, m4_13 + m5_12, u);
+    u = mad(g12, -m5_10, u);
+    u = mad(g13, m6_8 - m4_10, u);
+    u = mad(g14, m5_8, u);
+    v = mad(27.0f, u, v);
+    d[42] = v * 0.0204081628f;
+    u = g3 * (m12_13);
+    u = mad(g12, -m3_13, u);
+    u = mad(g13, m3_12, u);
+    v = u;
+    precise float m13_15 = x13 * y15 - y13 * x15;
+    u = g0 * (m13_15);
+    u = mad(g13, -m0_15, u);
+    u = mad(g15, m0_13, u);
+    v += (u + u);
+    u = g1 * (m12_15);
+    u = mad(g4, m9_15, u);
+    u = mad(g7, m9_12, u);
+    u = mad(g9, -m4_15 - m7_12, u);
+    u = mad(g12, m7_9 - m1_15, u);
+    u = mad(g15, m1_12 + m4_9, u);
+    v += (u + u) + u;
+    u = g2 * (m12_14);
+    u = mad(g12, -m2_14, u);
+    u = mad(g14, m2_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m13_14);
+    u = mad(g13, -m1_14, u);
+    u = mad(g14, m1_13, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g5 * (m8_15);
+    u = mad(g7, m8_13, u);
+    u = mad(g8, -m7_13 - m5_15, u);
+    u = mad(g13, m7_8, u);
+    u = mad(g15, m5_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m11_13);
+    u = mad(g5, -m11_12, u);
+    u = mad(g11, m4_13 + m5_12, u);
+    u = mad(g12, -m5_11, u);
+    u = mad(g13, -m4_11, u);
+    v = mad(15.0f, u, v);
+    u = g4 * (-m10_14);
+    u = mad(g6, -m10_12, u);
+    u = mad(g10, m4_14 + m6_12, u);
+    u = mad(g12, -m6_10, u);
+    u = mad(g14, -m4_10, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (m9_14);
+    u = mad(g6, m9_13, u);
+    u = mad(g9, -m5_14 - m6_13, u);
+    u = mad(g13, m6_9, u);
+    u = mad(g14, m5_9, u);
+    v = mad(27.0f, u, v);
+    u = g6 * (m8_14);
+    u = mad(g8, -m6_14, u);
+    u = mad(g14, m6_8, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (-m10_13);
+    u = mad(g10, m5_13, u);
+    u = mad(g13, -m5_10, u);
+    v = mad(54.0f, u, v);
+    d[43] = v * 0.0122448979f;
+    precise float m14_15 = x14 * y15 - y14 * x15;
+    u = g0 * (m14_15);
+    u = mad(g14, -m0_15, u);
+    u = mad(g15, m0_14, u);
+    v = u;
+    u = g3 * (m12_14);
+    u = mad(g12, -m3_14, u);
+    u = mad(g14, m3_12, u);
+    v += (u + u);
+    u = g2 * (m12_15);
+    u = mad(g4, -m10_15, u);
+    u = mad(g7, -m10_12, u);
+    u = mad(g10, m4_15 + m7_12, u);
+    u = mad(g12, -m2_15 - m7_10, u);
+    u = mad(g15, m2_12 - m4_10, u);
+    v += (u + u) + u;
+    u = g1 * (m13_15);
+    u = mad(g13, -m1_15, u);
+    u = mad(g15, m1_13, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m13_14);
+    u = mad(g13, -m2_14, u);
+    u = mad(g14, m2_13, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g4 * (-m11_14);
+    u = mad(g6, -m11_12, u);
+    u = mad(g11, m4_14 + m6_12, u);
+    u = mad(g12, -m6_11, u);
+    u = mad(g14, -m4_11, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (m8_15);
+    u = mad(g7, m8_14, u);
+    u = mad(g8, -m6_15 - m7_14, u);
+    u = mad(g14, m7_8, u);
+    u = mad(g15, m6_8, u);
+    v = mad(15.0f, u, v);
+    u = g5 * (m9_15);
+    u = mad(g7, m9_13, u);
+    u = mad(g9, -m7_13 - m5_15, u);
+    u = mad(g13, m7_9, u);
+    u = mad(g15, m5_9, u);
+    v = mad(18.0f, u, v);
+    u = g5 * (-m10_14);
+    u = mad(g6, -m10_13, u);
+    u = mad(g10, m5_14 + m6_13, u);
+    u = mad(g13, -m6_10, u);
+    u = mad(g14, -m5_10, u);
+    v = mad(27.0f, u, v);
+    u = g5 * (-m11_13);
+    u = mad(g11, m5_13, u);
+    u = mad(g13, -m5_11, u);
+    v = mad(36.0f, u, v);
+    u = g6 * (m9_14);
+    u = mad(g9, -m6_14, u);
+    u = mad(g14, m6_9, u);
+    v = mad(54.0f, u, v);
+    d[44] = v * 0.0122448979f;
+    u = g3 * (m12_15);
+    u = mad(g12, -m3_15, u);
+    u = mad(g15, m3_12, u);
+    v = u;
+    u = g1 * (m14_15);
+    u = mad(g3, m13_14, u);
+    u = mad(g4, -m11_15, u);
+    u = mad(g7, -m11_12, u);
+    u = mad(g11, m4_15 + m7_12, u);
+    u = mad(g12, -m7_11, u);
+    u = mad(g13, -m3_14, u);
+    u = mad(g14, m3_13 - m1_15, u);
+    u = mad(g15, m1_14 - m4_11, u);
+    v += (u + u) + u;
+    u = g2 * (m13_15);
+    u = mad(g7, m8_15, u);
+    u = mad(g8, -m7_15, u);
+    u = mad(g13, -m2_15, u);
+    u = mad(g15, m2_13 + m7_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g5 * (-m11_14);
+    u = mad(g6, m9_15 - m11_13, u);
+    u = mad(g7, m9_14, u);
+    u = mad(g9, -m6_15 - m7_14, u);
+    u = mad(g11, m5_14 + m6_13, u);
+    u = mad(g13, -m6_11, u);
+    u = mad(g14, m7_9 - m5_11, u);
+    u = mad(g15, m6_9, u);
+    v = mad(27.0f, u, v);
+    d[45] = v * 0.0204081628f;
+    u = g3 * (m13_15);
+    u = mad(g13, -m3_15, u);
+    u = mad(g15, m3_13, u);
+    v = (u + u);
+    u = g2 * (m14_15);
+    u = mad(g14, -m2_15, u);
+    u = mad(g15, m2_14, u);
+    v += (u + u) + u;
+    u = g5 * (-m11_15);
+    u = mad(g7, -m11_13, u);
+    u = mad(g11, m7_13 + m5_15, u);
+    u = mad(g13, -m7_11, u);
+    u = mad(g15, -m5_11, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (m10_15);
+    u = mad(g7, m10_14, u);
+    u = mad(g10, -m6_15 - m7_14, u);
+    u = mad(g14, m7_10, u);
+    u = mad(g15, m6_10, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g7 * (m9_15);
+    u = mad(g9, -m7_15, u);
+    u = mad(g15, m7_9, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (-m11_14);
+    u = mad(g11, m6_14, u);
+    u = mad(g14, -m6_11, u);
+    v = mad(18.0f, u, v);
+    d[46] = v * 0.0612244904f;
+    u = ((g3 * m14_15 - g14 * m3_15) + g15 * m3_14);
+    v = u;
+    u = -((g6 * m11_15 - g11 * m6_15) + g15 * m6_11);
+    u -= ((g7 * m11_14 - g11 * m7_14) + g14 * m7_11);
+    v += (u + u) + u;
+    u = ((g7 * m10_15 - g10 * m7_15) + g15 * m7_10);
+    u = u + u;
+    v += (u + u) + u;
+    d[47] = v * 0.428571433f;
+    u = ((g4 * m12_13 - g12 * m4_13) + g13 * m4_12);
+    v = (u + u);
+    u = -((g8 * m9_12 - g9 * m8_12) + g12 * m8_9);
+    v += (u + u) + u;
+    d[48] = v * 1.28571427f;
+    u = g4 * (m12_14);
+    u = mad(g12, -m4_14, u);
+    u = mad(g14, m4_12, u);
+    v = ((u + u) + (u + u));
+    u = g5 * (m12_13);
+    u = mad(g8, -m10_12, u);
+    u = mad(g10, m8_12, u);
+    u = mad(g12, -m5_13 - m8_10, u);
+    u = mad(g13, m5_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m9_13);
+    u = mad(g9, m8_13, u);
+    u = mad(g13, -m8_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[49] = v * 0.183673471f;
+    u = g4 * (m12_15);
+    u = mad(g12, -m4_15, u);
+    u = mad(g15, m4_12, u);
+    v = (u + u);
+    u = g8 * (-m11_12);
+    u = mad(g11, m8_12, u);
+    u = mad(g12, -m8_11, u);
+    v += (u + u) + u;
+    u = g4 * (m13_14);
+    u = mad(g6, m12_13, u);
+    u = mad(g12, -m6_13, u);
+    u = mad(g13, m6_12 - m4_14, u);
+    u = mad(g14, m4_13, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m9_14);
+    u = mad(g9, m8_14 - m10_12, u);
+    u = mad(g10, m9_12, u);
+    u = mad(g12, -m9_10, u);
+    u = mad(g14, -m8_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g5 * (m12_14);
+    u = mad(g12, -m5_14, u);
+    u = mad(g14, m5_12, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m10_13);
+    u = mad(g10, m8_13, u);
+    u = mad(g13, -m8_10, u);
+    v = mad(18.0f, u, v);
+    d[50] = v * 0.0612244904f;
+    u = g7 * (m12_13);
+    u = mad(g12, -m7_13, u);
+    u = mad(g13, m7_12, u);
+    v = (u + u);
+    u = g8 * (-m9_15);
+    u = mad(g9, m8_15, u);
+    u = mad(g15, -m8_9, u);
+    v += (u + u) + u;
+    u = g4 * (m13_15);
+    u = mad(g13, -m4_15, u);
+    u = mad(g15, m4_13, u);
+    v += ((u + u) + (u + u));
+    u = g5 * (m12_15);
+    u = mad(g9, -m11_12, u);
+    u = mad(g11, m9_12, u);
+    u = mad(g12, -m9_11 - m5_15, u);
+    u = mad(g15, m5_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m11_13);
+    u = mad(g11, m8_13, u);
+    u = mad(g13, -m8_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g6 * (m12_14);
+    u = mad(g12, -m6_14, u);
+    u = mad(g14, m6_12, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g5 * (m13_14);
+    u = mad(g8, -m10_14, u);
+    u = mad(g10, m8_14, u);
+    u = mad(g13, -m5_14, u);
+    u = mad(g14, m5_13 - m8_10, u);
+    v = mad(18.0f, u, v);
+    u = g9 * (-m10_13);
+    u = mad(g10, m9_13, u);
+    u = mad(g13, -m9_10, u);
+    v = mad(27.0f, u, v);
+    d[51] = v * 0.0367346928f;
+    u = g4 * (m14_15);
+    u = mad(g14, -m4_15, u);
+    u = mad(g15, m4_14, u);
+    v = (u + u);
+    u = g10 * (-m11_12);
+    u = mad(g11, m10_12, u);
+    u = mad(g12, -m10_11, u);
+    v += (u + u) + u;
+    u = g7 * (m12_14);
+    u = mad(g12, -m7_14, u);
+    u = mad(g14, m7_12, u);
+    v += ((u + u) + (u + u));
+    u = g6 * (m12_15);
+    u = mad(g8, -m10_15, u);
+    u = mad(g10, m8_15, u);
+    u = mad(g12, -m6_15, u);
+    u = mad(g15, m6_12 - m8_10, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g8 * (-m11_14);
+    u = mad(g11, m8_14, u);
+    u = mad(g14, -m8_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g5 * (m13_15);
+    u = mad(g13, -m5_15, u);
+    u = mad(g15, m5_13, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (m13_14);
+    u = mad(g9, -m11_13, u);
+    u = mad(g11, m9_13, u);
+    u = mad(g13, -m6_14 - m9_11, u);
+    u = mad(g14, m6_13, u);
+    v = mad(18.0f, u, v);
+    u = g9 * (-m10_14);
+    u = mad(g10, m9_14, u);
+    u = mad(g14, -m9_10, u);
+    v = mad(27.0f, u, v);
+    d[52] = v * 0.0367346928f;
+    u = g7 * (m12_15);
+    u = mad(g12, -m7_15, u);
+    u = mad(g15, m7_12, u);
+    v = (u + u);
+    u = g8 * (-m11_15);
+    u = mad(g11, m8_15, u);
+    u = mad(g15, -m8_11, u);
+    v += (u + u) + u;
+    u = g5 * (m14_15);
+    u = mad(g7, m13_14, u);
+    u = mad(g13, -m7_14, u);
+    u = mad(g14, m7_13 - m5_15, u);
+    u = mad(g15, m5_14, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g9 * (-m10_15);
+    u = mad(g10, m9_15 - m11_13, u);
+    u = mad(g11, m10_13, u);
+    u = mad(g13, -m10_11, u);
+    u = mad(g15, -m9_10, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g6 * (m13_15);
+    u = mad(g13, -m6_15, u);
+    u = mad(g15, m6_13, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g9 * (-m11_14);
+    u = mad(g11, m9_14, u);
+    u = mad(g14, -m9_11, u);
+    v = mad(18.0f, u, v);
+    d[53] = v * 0.0612244904f;
+    u = g7 * (m13_15);
+    u = mad(g13, -m7_15, u);
+    u = mad(g15, m7_13, u);
+    v = ((u + u) + (u + u));
+    u = g6 * (m14_15);
+    u = mad(g9, -m11_15, u);
+    u = mad(g11, m9_15, u);
+    u = mad(g14, -m6_15, u);
+    u = mad(g15, m6_14 - m9_11, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g10 * (-m11_14);
+    u = mad(g11, m10_14, u);
+    u = mad(g14, -m10_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[54] = v * 0.183673471f;
+    u = ((g7 * m14_15 - g14 * m7_15) + g15 * m7_14);
+    v = (u + u);
+    u = -((g10 * m11_15 - g11 * m10_15) + g15 * m10_11);
+    v += (u + u) + u;
+    d[55] = v * 1.28571427f;
+    u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
+    v = u;
+    d[56] = v * 9.0f;
+    u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
+    v = (u + u);
+    u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
+    v += (u + u) + u;
+    d[57] = v * 1.28571427f;
+    u = ((g8 * m12_15 - g12 * m8_15) + g15 * m8_12);
+    v = u;
+    u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
+    u += ((g10 * m12_13 - g12 * m10_13) + g13 * m10_12);
+    v += (u + u) + u;
+    u = ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
+    u = u + u;
+    v += (u + u) + u;
+    d[58] = v * 0.428571433f;
+    u = ((g11 * m12_13 - g12 * m11_13) + g13 * m11_12);
+    v = u;
+    u = ((g8 * m13_15 - g13 * m8_15) + g15 * m8_13);
+    v += (u + u);
+    u = ((g9 * m12_15 - g12 * m9_15) + g15 * m9_12);
+    v += (u + u) + u;
+    u = ((g10 * m12_14 - g12 * m10_14) + g14 * m10_12);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[59] = v * 0.257142872f;
+    u = ((g8 * m14_15 - g14 * m8_15) + g15 * m8_14);
+    v = u;
+    u = ((g11 * m12_14 - g12 * m11_14) + g14 * m11_12);
+    v += (u + u);
+    u = ((g10 * m12_15 - g12 * m10_15) + g15 * m10_12);
+    v += (u + u) + u;
+    u = ((g9 * m13_15 - g13 * m9_15) + g15 * m9_13);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g10 * m13_14 - g13 * m10_14) + g14 * m10_13);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[60] = v * 0.257142872f;
+    u = ((g11 * m12_15 - g12 * m11_15) + g15 * m11_12);
+    v = u;
+    u = ((g9 * m14_15 - g14 * m9_15) + g15 * m9_14);
+    u += ((g11 * m13_14 - g13 * m11_14) + g14 * m11_13);
+    v += (u + u) + u;
+    u = ((g10 * m13_15 - g13 * m10_15) + g15 * m10_13);
+    u = u + u;
+    v += (u + u) + u;
+    d[61] = v * 0.428571433f;
+    u = ((g11 * m13_15 - g13 * m11_15) + g15 * m11_13);
+    v = (u + u);
+    u = ((g10 * m14_15 - g14 * m10_15) + g15 * m10_14);
+    v += (u + u) + u;
+    d[62] = v * 1.28571427f;
+    u = ((g11 * m14_15 - g14 * m11_15) + g15 * m11_14);
+    v = u;
+    d[63] = v * 9.0f;
+    u = g3 * (-m10_12);
+    u = mad(g10, m3_12, u);
+    u = mad(g12, -m3_10, u);
+    v = (u + u) + u;
+    u = g0 * (-m11_14);
+    u = mad(g11, m0_14, u);
+    u = mad(g14, -m0_11, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g3 * (m9_13);
+    u = mad(g6, -m7_12, u);
+    u = mad(g7, m6_12, u);
+    u = mad(g9, -m3_13, u);
+    u = mad(g12, -m6_7, u);
+    u = mad(g13, m3_9, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m11_12);
+    u = mad(g3, m8_14, u);
+    u = mad(g8, -m3_14, u);
+    u = mad(g11, m2_12, u);
+    u = mad(g12, -m2_11, u);
+    u = mad(g14, m3_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) - u;
+    u = g2 * (m8_15);
+    u = mad(g8, -m2_15, u);
+    u = mad(g15, m2_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m10_14);
+    u = mad(g4, m10_11, u);
+    u = mad(g10, m1_14 - m4_11, u);
+    u = mad(g11, m4_10, u);
+    u = mad(g14, -m1_10, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g1 * (m9_15);
+    u = mad(g4, -m6_15, u);
+    u = mad(g6, m4_15, u);
+    u = mad(g9, -m1_15, u);
+    u = mad(g15, m1_9 - m4_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m11_13);
+    u = mad(g2, -m10_13, u);
+    u = mad(g4, -m7_14, u);
+    u = mad(g7, m4_14 + m8_10, u);
+    u = mad(g8, -m7_10, u);
+    u = mad(g10, m2_13 + m7_8, u);
+    u = mad(g11, m1_13, u);
+    u = mad(g13, -m1_11 - m2_10, u);
+    u = mad(g14, -m4_7, u);
+    v = mad(18.0f, u, v);
+    u = g2 * (m9_14);
+    u = mad(g6, m8_11, u);
+    u = mad(g8, -m6_11, u);
+    u = mad(g9, -m2_14, u);
+    u = mad(g11, m6_8, u);
+    u = mad(g14, m2_9, u);
+    v = mad(27.0f, u, v);
+    u = g5 * (-m7_13);
+    u = mad(g7, m5_13, u);
+    u = mad(g13, -m5_7, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (m9_11 - m6_14);
+    u = mad(g6, m5_14, u);
+    u = mad(g9, -m5_11, u);
+    u = mad(g11, m5_9, u);
+    u = mad(g14, -m5_6, u);
+    v = mad(54.0f, u, v);
+    u = g6 * (m9_10);
+    u = mad(g9, -m6_10, u);
+    u = mad(g10, m6_9, u);
+    v = mad(81.0f, u, v);
+    d[36] = v * 0.00734693883f;
+    u = g0 * (-m6_15);
+    u = mad(g6, m0_15, u);
+    u = mad(g15, -m0_6, u);
+    v = (u + u) + u;
+    u = g2 * (-m7_12);
+    u = mad(g7, m2_12, u);
+    u = mad(g12, -m2_7, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g0 * (m10_11);
+    u = mad(g1, m5_15, u);
+    u = mad(g5, -m1_15, u);
+    u = mad(g10, -m0_11, u);
+    u = mad(g11, m0_10, u);
+    u = mad(g15, m1_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g0 * (-m7_14);
+    u = mad(g2, m4_15, u);
+    u = mad(g4, -m2_15, u);
+    u = mad(g7, m0_14, u);
+    u = mad(g14, -m0_7, u);
+    u = mad(g15, m2_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) - u;
+    u = g3 * (m4_14);
+    u = mad(g4, -m3_14, u);
+    u = mad(g14, m3_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (-m6_13);
+    u = mad(g6, m2_13 - m7_8, u);
+    u = mad(g7, m6_8, u);
+    u = mad(g8, -m6_7, u);
+    u = mad(g13, -m2_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g3 * (m5_13 + m8_10);
+    u = mad(g5, -m3_13, u);
+    u = mad(g8, -m3_10, u);
+    u = mad(g10, m3_8, u);
+    u = mad(g13, m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m7_13 - m6_14);
+    u = mad(g2, m8_11, u);
+    u = mad(g4, -m6_11, u);
+    u = mad(g6, m1_14 + m4_11, u);
+    u = mad(g7, m1_13, u);
+    u = mad(g8, -m2_11, u);
+    u = mad(g11, m2_8 - m4_6, u);
+    u = mad(g13, -m1_7, u);
+    u = mad(g14, -m1_6, u);
+    v = mad(18.0f, u, v);
+    u = g2 * (m5_14);
+    u = mad(g4, -m7_10, u);
+    u = mad(g5, -m2_14, u);
+    u = mad(g7, m4_10, u);
+    u = mad(g10, -m4_7, u);
+    u = mad(g14, m2_5, u);
+    v = mad(27.0f, u, v);
+    u = g1 * (m9_11);
+    u = mad(g9, -m1_11, u);
+    u = mad(g11, m1_9, u);
+    v = mad(36.0f, u, v);
+    u = g2 * (m9_10);
+    u = mad(g5, -m7_9, u);
+    u = mad(g7, m5_9, u);
+    u = mad(g9, -m5_7 - m2_10, u);
+    u = mad(g10, m2_9, u);
+    v = mad(54.0f, u, v);
+    u = g5 * (-m6_10);
+    u = mad(g6, m5_10, u);
+    u = mad(g10, -m5_6, u);
+    v = mad(81.0f, u, v);
+    d[28] = v * 0.00734693883f;
+    u = g0 * (m9_15);
+    u = mad(g9, -m0_15, u);
+    u = mad(g15, m0_9, u);
+    v = (u + u) + u;
+    u = g3 * (m8_13);
+    u = mad(g8, -m3_13, u);
+    u = mad(g13, m3_8, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g0 * (-m10_14);
+    u = mad(g4, -m5_15, u);
+    u = mad(g5, m4_15, u);
+    u = mad(g10, m0_14, u);
+    u = mad(g14, -m0_10, u);
+    u = mad(g15, -m4_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g0 * (-m11_13);
+    u = mad(g1, m8_15, u);
+    u = mad(g8, -m1_15, u);
+    u = mad(g11, m0_13, u);
+    u = mad(g13, -m0_11, u);
+    u = mad(g15, m1_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) - u;
+    u = g1 * (-m11_12);
+    u = mad(g11, m1_12, u);
+    u = mad(g12, -m1_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (m9_13);
+    u = mad(g7, m8_9, u);
+    u = mad(g8, -m7_9, u);
+    u = mad(g9, m7_8 - m2_13, u);
+    u = mad(g13, m2_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = g2 * (-m10_12);
+    u = mad(g5, -m7_12, u);
+    u = mad(g7, m5_12, u);
+    u = mad(g10, m2_12, u);
+    u = mad(g12, -m5_7 - m2_10, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m9_14);
+    u = mad(g2, m8_14, u);
+    u = mad(g4, m9_11 - m7_13, u);
+    u = mad(g7, m4_13, u);
+    u = mad(g8, -m2_14, u);
+    u = mad(g9, -m1_14 - m4_11, u);
+    u = mad(g11, m4_9, u);
+    u = mad(g13, -m4_7, u);
+    u = mad(g14, m2_8 + m1_9, u);
+    v = mad(18.0f, u, v);
+    u = g1 * (-m10_13);
+    u = mad(g5, m8_11, u);
+    u = mad(g8, -m5_11, u);
+    u = mad(g10, m1_13, u);
+    u = mad(g11, m5_8, u);
+    u = mad(g13, -m1_10, u);
+    v = mad(27.0f, u, v);
+    u = g4 * (-m6_14);
+    u = mad(g6, m4_14, u);
+    u = mad(g14, -m4_6, u);
+    v = mad(36.0f, u, v);
+    u = g5 * (-m6_13);
+    u = mad(g6, m5_13 + m8_10, u);
+    u = mad(g8, -m6_10, u);
+    u = mad(g10, m6_8, u);
+    u = mad(g13, -m5_6, u);
+    v = mad(54.0f, u, v);
+    u = g5 * (m9_10);
+    u = mad(g9, -m5_10, u);
+    u = mad(g10, m5_9, u);
+    v = mad(81.0f, u, v);
+    d[35] = v * 0.00734693883f;
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-uint ptp_3x3_class_of(uint f)
-{
-    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;
-}
-
-[numthreads(128, 1, 1)]
+[numthreads(64, 1, 1)]
 void main(uint3 lid3 : SV_GroupThreadID, uint3 gid : SV_GroupID)
 {
-    uint lid = lid3.x, q = lid / PTP_3X3_P, t = lid % PTP_3X3_P, i, pj, kl;
-    uint pid = (gid.y * groups_x + gid.x) * PTP_3X3_Q + q;
-    uint f = 0u;
-    bool live = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_3X3_K; i += PTP_3X3_P)
-        if (live)
-            pts[q * PTP_3X3_K + i] = cp[pid * PTP_3X3_K + i];
-    GroupMemoryBarrierWithGroupSync();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_3x3_own_start[t]; i < ptp_3x3_own_start[t + 1u]; i++)
-        acc[q * PTP_3X3_L + ptp_3x3_own_plane[i]] = 0.0f;
-    pj = ptp_3x3_pj0[t];
-    kl = ptp_3x3_kl0[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w0[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj1[t];
-    kl = ptp_3x3_kl1[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w1[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj2[t];
-    kl = ptp_3x3_kl2[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w2[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj3[t];
-    kl = ptp_3x3_kl3[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w3[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj4[t];
-    kl = ptp_3x3_kl4[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w4[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj5[t];
-    kl = ptp_3x3_kl5[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w5[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj6[t];
-    kl = ptp_3x3_kl6[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w6[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj7[t];
-    kl = ptp_3x3_kl7[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w7[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj8[t];
-    kl = ptp_3x3_kl8[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w8[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj9[t];
-    kl = ptp_3x3_kl9[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w9[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj10[t];
-    kl = ptp_3x3_kl10[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w10[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj11[t];
-    kl = ptp_3x3_kl11[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w11[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj12[t];
-    kl = ptp_3x3_kl12[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w12[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj13[t];
-    kl = ptp_3x3_kl13[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w13[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj14[t];
-    kl = ptp_3x3_kl14[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w14[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj15[t];
-    kl = ptp_3x3_kl15[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w15[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj16[t];
-    kl = ptp_3x3_kl16[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w16[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj17[t];
-    kl = ptp_3x3_kl17[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w17[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj18[t];
-    kl = ptp_3x3_kl18[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w18[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj19[t];
-    kl = ptp_3x3_kl19[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w19[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj20[t];
-    kl = ptp_3x3_kl20[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w20[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj21[t];
-    kl = ptp_3x3_kl21[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w21[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj22[t];
-    kl = ptp_3x3_kl22[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w22[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj23[t];
-    kl = ptp_3x3_kl23[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w23[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj24[t];
-    kl = ptp_3x3_kl24[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w24[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj25[t];
-    kl = ptp_3x3_kl25[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w25[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj26[t];
-    kl = ptp_3x3_kl26[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w26[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj27[t];
-    kl = ptp_3x3_kl27[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w27[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj28[t];
-    kl = ptp_3x3_kl28[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w28[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj29[t];
-    kl = ptp_3x3_kl29[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w29[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj30[t];
-    kl = ptp_3x3_kl30[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w30[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj31[t];
-    kl = ptp_3x3_kl31[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w31[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-    pj = ptp_3x3_pj32[t];
-    kl = ptp_3x3_kl32[t];
-    acc[q * PTP_3X3_L + (pj & 0xffffu)] += ptp_3x3_w32[t] *
-        ptp_3x3_cross4z(pts[q * PTP_3X3_K + (pj >> 16)], pts[q * PTP_3X3_K + (kl & 0xffffu)],
-                        pts[q * PTP_3X3_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_3x3_own_start[t]; i < ptp_3x3_own_start[t + 1u]; i++) {
-        uint plane = ptp_3x3_own_plane[i];
-        float d = eye.z * acc[q * PTP_3X3_L + plane];
-        f |= ptp_3x3_flags(d);
-    }
-    flags[q * PTP_3X3_P + t] = f;
-    GroupMemoryBarrierWithGroupSync();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_3X3_P; i++)
-            f |= flags[q * PTP_3X3_P + i];
-        cls[pid] = ptp_3x3_class_of(f);
-    }
+    uint pid = (gid.y * groups_x + gid.x) * PTP_3X3_Q + lid3.x;
+    float4 p[PTP_3X3_K];
+    if (pid >= patch_count)
+        return;
+    p[0] = cp[pid * PTP_3X3_K + 0u];
+    p[1] = cp[pid * PTP_3X3_K + 1u];
+    p[2] = cp[pid * PTP_3X3_K + 2u];
+    p[3] = cp[pid * PTP_3X3_K + 3u];
+    p[4] = cp[pid * PTP_3X3_K + 4u];
+    p[5] = cp[pid * PTP_3X3_K + 5u];
+    p[6] = cp[pid * PTP_3X3_K + 6u];
+    p[7] = cp[pid * PTP_3X3_K + 7u];
+    p[8] = cp[pid * PTP_3X3_K + 8u];
+    p[9] = cp[pid * PTP_3X3_K + 9u];
+    p[10] = cp[pid * PTP_3X3_K + 10u];
+    p[11] = cp[pid * PTP_3X3_K + 11u];
+    p[12] = cp[pid * PTP_3X3_K + 12u];
+    p[13] = cp[pid * PTP_3X3_K + 13u];
+    p[14] = cp[pid * PTP_3X3_K + 14u];
+    p[15] = cp[pid * PTP_3X3_K + 15u];
+    cls[pid] = ptp_3x3_classify_patch(p, eye);
 }

@@ -20,7 +20,7 @@
  * uint groups_x; }, groups_x = the number of workgroups dispatched along x.
  * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:
  * workgroup (x, y) handles the patches of block y * groups_x + x.
- * Schedule: 1 threads per patch, 128 patches per workgroup (128 threads), 1 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 [[vk::binding(0, 0)]] StructuredBuffer<float4> cp : register(t0);
@@ -34,90 +34,73 @@
 };
 
 #define PTP_TRI1_P 1u /* threads per patch */
-#define PTP_TRI1_Q 128u /* patches per workgroup */
+#define PTP_TRI1_Q 64u /* patches per workgroup */
 #define PTP_TRI1_K 3u /* control points per patch */
 #define PTP_TRI1_L 1u /* control planes per patch */
-/* 1 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-static const uint ptp_tri1_own_start[2] = {
-    0u, 1u
-};
-static const uint ptp_tri1_own_plane[1] = {
-    0u
-};
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-static const uint ptp_tri1_pj0[1] = {
-    0x00000u
-};
-static const uint ptp_tri1_kl0[1] = {
-    0x20001u
-};
-static const float ptp_tri1_w0[1] = {
-    1.0f
-};
-
-groupshared float4 pts[PTP_TRI1_Q * PTP_TRI1_K];
-groupshared float acc[PTP_TRI1_Q * PTP_TRI1_L];
-groupshared uint flags[PTP_TRI1_Q * PTP_TRI1_P];
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-float ptp_tri1_cross4z(float4 a, float4 b, float4 c)
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+uint ptp_tri1_classify_patch(float4 cp[3], float4 eye)
 {
-    precise float z = a.x * (b.y * c.w - b.w * c.y) -
-        b.x * (a.y * c.w - a.w * c.y) +
-        c.x * (a.y * b.w - a.w * b.y);
-    return z;
+    precise float e2 = eye.z;
+    precise float u, v;
+    bool lt, gt;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    return lt ? 1u : gt ? 0u : 2u;
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-uint ptp_tri1_flags(float d)
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+void ptp_tri1_values(float4 cp[3], float4 eye, out float d[1])
 {
-    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);
+    precise float e2 = eye.z;
+    precise float u, v;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    d[0] = v;
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-uint ptp_tri1_class_of(uint f)
-{
-    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;
-}
-
-[numthreads(128, 1, 1)]
+[numthreads(64, 1, 1)]
 void main(uint3 lid3 : SV_GroupThreadID, uint3 gid : SV_GroupID)
 {
-    uint lid = lid3.x, q = lid / PTP_TRI1_P, t = lid % PTP_TRI1_P, i, pj, kl;
-    uint pid = (gid.y * groups_x + gid.x) * PTP_TRI1_Q + q;
-    uint f = 0u;
-    bool live = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_TRI1_K; i += PTP_TRI1_P)
-        if (live)
-            pts[q * PTP_TRI1_K + i] = cp[pid * PTP_TRI1_K + i];
-    GroupMemoryBarrierWithGroupSync();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_tri1_own_start[t]; i < ptp_tri1_own_start[t + 1u]; i++)
-        acc[q * PTP_TRI1_L + ptp_tri1_own_plane[i]] = 0.0f;
-    pj = ptp_tri1_pj0[t];
-    kl = ptp_tri1_kl0[t];
-    acc[q * PTP_TRI1_L + (pj & 0xffffu)] += ptp_tri1_w0[t] *
-        ptp_tri1_cross4z(pts[q * PTP_TRI1_K + (pj >> 16)], pts[q * PTP_TRI1_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI1_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_tri1_own_start[t]; i < ptp_tri1_own_start[t + 1u]; i++) {
-        uint plane = ptp_tri1_own_plane[i];
-        float d = eye.z * acc[q * PTP_TRI1_L + plane];
-        f |= ptp_tri1_flags(d);
-    }
-    flags[q * PTP_TRI1_P + t] = f;
-    GroupMemoryBarrierWithGroupSync();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_TRI1_P; i++)
-            f |= flags[q * PTP_TRI1_P + i];
-        cls[pid] = ptp_tri1_class_of(f);
-    }
+    uint pid = (gid.y * groups_x + gid.x) * PTP_TRI1_Q + lid3.x;
+    float4 p[PTP_TRI1_K];
+    if (pid >= patch_count)
+        return;
+    p[0] = cp[pid * PTP_TRI1_K + 0u];
+    p[1] = cp[pid * PTP_TRI1_K + 1u];
+    p[2] = cp[pid * PTP_TRI1_K + 2u];
+    cls[pid] = ptp_tri1_classify_patch(p, eye);
 }

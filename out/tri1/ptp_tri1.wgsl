@@ -20,7 +20,7 @@
  * rest of the padding, must be 0). Entry point main. Dispatch ceil(patch_count / Q)
  * workgroups, in 2-D (x, y) when x would exceed the limit: workgroup (x, y) handles the
  * patches of block y * num_workgroups.x + x.
- * Schedule: 1 threads per patch, 128 patches per workgroup (128 threads), 1 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 struct Params {
@@ -45,98 +45,84 @@ fn sub_rn(b: vec4<f32>, a: vec4<f32>) -> vec4<f32> {
 }
 
 const PTP_TRI1_P: u32 = 1u; /* threads per patch */
-const PTP_TRI1_Q: u32 = 128u; /* patches per workgroup */
+const PTP_TRI1_Q: u32 = 64u; /* patches per workgroup */
 const PTP_TRI1_K: u32 = 3u; /* control points per patch */
 const PTP_TRI1_L: u32 = 1u; /* control planes per patch */
-/* 1 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-const ptp_tri1_own_start: array<u32, 2> = array<u32, 2>(
-    0u, 1u
-);
-const ptp_tri1_own_plane: array<u32, 1> = array<u32, 1>(
-    0u
-);
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-const ptp_tri1_pj0: array<u32, 1> = array<u32, 1>(
-    0x00000u
-);
-const ptp_tri1_kl0: array<u32, 1> = array<u32, 1>(
-    0x20001u
-);
-const ptp_tri1_w0: array<f32, 1> = array<f32, 1>(
-    1.0f
-);
-
-var<workgroup> pts: array<vec4<f32>, PTP_TRI1_Q * PTP_TRI1_K>;
-var<workgroup> acc: array<f32, PTP_TRI1_Q * PTP_TRI1_L>;
-var<workgroup> flags: array<u32, PTP_TRI1_Q * PTP_TRI1_P>;
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-fn ptp_tri1_cross4z(a: vec4<f32>, b: vec4<f32>, c: vec4<f32>) -> f32 {
-    let z: f32 = mul_rn(a.x, (mul_rn(b.y, c.w) - mul_rn(b.w, c.y))) -
-        mul_rn(b.x, (mul_rn(a.y, c.w) - mul_rn(a.w, c.y))) +
-        mul_rn(c.x, (mul_rn(a.y, b.w) - mul_rn(a.w, b.y)));
-    return z;
+/* x * y rounded to a float: through an integer XOR with zero, 0 at run time but unknown to
+ * the compiler, which no FMA contraction can cross (WGSL has no `precise`). */
+fn ptp_tri1_mul_rn(x: f32, y: f32, zero: u32) -> f32 {
+    return bitcast<f32>(bitcast<u32>(x * y) ^ zero);
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-fn ptp_tri1_flags(d: f32) -> u32 {
-    return (select(1u, 0u, d < 0.0f)) | (select(2u, 0u, d > 0.0f));
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+fn ptp_tri1_classify_patch(cp: array<vec4<f32>, 3>, eye: vec4<f32>, zero: u32) -> u32 {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    var lt: bool;
+    var gt: bool;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_tri1_mul_rn(e2, w1, zero);
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_tri1_mul_rn(e2, w2, zero);
+    let m1_2 = ptp_tri1_mul_rn(x1, y2, zero) - ptp_tri1_mul_rn(y1, x2, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_tri1_mul_rn(e2, w0, zero);
+    let m0_2 = ptp_tri1_mul_rn(x0, y2, zero) - ptp_tri1_mul_rn(y0, x2, zero);
+    let m0_1 = ptp_tri1_mul_rn(x0, y1, zero) - ptp_tri1_mul_rn(y0, x1, zero);
+    u = ((ptp_tri1_mul_rn(g0, m1_2, zero) - ptp_tri1_mul_rn(g1, m0_2, zero)) + ptp_tri1_mul_rn(g2, m0_1, zero));
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    return select(select(2u, 0u, gt), 1u, lt);
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-fn ptp_tri1_class_of(f: u32) -> u32 {
-    return select(select(2u, 0u, (f & 2u) == 0u), 1u, (f & 1u) == 0u);
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+fn ptp_tri1_values(cp: array<vec4<f32>, 3>, eye: vec4<f32>, zero: u32,
+        d: ptr<function, array<f32, 1>>) {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_tri1_mul_rn(e2, w1, zero);
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_tri1_mul_rn(e2, w2, zero);
+    let m1_2 = ptp_tri1_mul_rn(x1, y2, zero) - ptp_tri1_mul_rn(y1, x2, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_tri1_mul_rn(e2, w0, zero);
+    let m0_2 = ptp_tri1_mul_rn(x0, y2, zero) - ptp_tri1_mul_rn(y0, x2, zero);
+    let m0_1 = ptp_tri1_mul_rn(x0, y1, zero) - ptp_tri1_mul_rn(y0, x1, zero);
+    u = ((ptp_tri1_mul_rn(g0, m1_2, zero) - ptp_tri1_mul_rn(g1, m0_2, zero)) + ptp_tri1_mul_rn(g2, m0_1, zero));
+    v = u;
+    (*d)[0] = v;
 }
 
-@compute @workgroup_size(128)
+@compute @workgroup_size(64)
 fn main(@builtin(local_invocation_id) lid3: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>,
         @builtin(num_workgroups) nwg: vec3<u32>) {
     let eye = params.eye;
     let patch_count = params.patch_count;
-    let lid: u32 = lid3.x;
-    let q: u32 = lid / PTP_TRI1_P;
-    let t: u32 = lid % PTP_TRI1_P;
-    var i: u32;
-    var pj: u32;
-    var kl: u32;
-    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_TRI1_Q + q;
-    var f: u32 = 0u;
-    let live: bool = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_TRI1_K; i += PTP_TRI1_P) {
-        if (live) {
-            pts[q * PTP_TRI1_K + i] = cp[pid * PTP_TRI1_K + i];
-        }
+    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_TRI1_Q + lid3.x;
+    var p: array<vec4<f32>, PTP_TRI1_K>;
+    if (pid >= patch_count) {
+        return;
     }
-    workgroupBarrier();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_tri1_own_start[t]; i < ptp_tri1_own_start[t + 1u]; i++) {
-        acc[q * PTP_TRI1_L + ptp_tri1_own_plane[i]] = 0.0f;
-    }
-    pj = ptp_tri1_pj0[t];
-    kl = ptp_tri1_kl0[t];
-    acc[q * PTP_TRI1_L + (pj & 0xffffu)] += ptp_tri1_w0[t] *
-        ptp_tri1_cross4z(pts[q * PTP_TRI1_K + (pj >> 16)], pts[q * PTP_TRI1_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI1_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_tri1_own_start[t]; i < ptp_tri1_own_start[t + 1u]; i++) {
-        let plane: u32 = ptp_tri1_own_plane[i];
-        let d: f32 = eye.z * acc[q * PTP_TRI1_L + plane];
-        f |= ptp_tri1_flags(d);
-    }
-    flags[q * PTP_TRI1_P + t] = f;
-    workgroupBarrier();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_TRI1_P; i++) {
-            f |= flags[q * PTP_TRI1_P + i];
-        }
-        cls[pid] = ptp_tri1_class_of(f);
-    }
+    p[0] = cp[pid * PTP_TRI1_K + 0u];
+    p[1] = cp[pid * PTP_TRI1_K + 1u];
+    p[2] = cp[pid * PTP_TRI1_K + 2u];
+    cls[pid] = ptp_tri1_classify_patch(p, eye, params.zero);
 }

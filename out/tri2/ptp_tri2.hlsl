@@ -20,7 +20,7 @@
  * uint groups_x; }, groups_x = the number of workgroups dispatched along x.
  * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:
  * workgroup (x, y) handles the patches of block y * groups_x + x.
- * Schedule: 1 threads per patch, 128 patches per workgroup (128 threads), 17 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 [[vk::binding(0, 0)]] StructuredBuffer<float4> cp : register(t0);
@@ -34,346 +34,211 @@
 };
 
 #define PTP_TRI2_P 1u /* threads per patch */
-#define PTP_TRI2_Q 128u /* patches per workgroup */
+#define PTP_TRI2_Q 64u /* patches per workgroup */
 #define PTP_TRI2_K 6u /* control points per patch */
 #define PTP_TRI2_L 10u /* control planes per patch */
-/* 17 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-static const uint ptp_tri2_own_start[2] = {
-    0u, 10u
-};
-static const uint ptp_tri2_own_plane[10] = {
-    0u, 1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u
-};
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-static const uint ptp_tri2_pj0[1] = {
-    0x00000u
-};
-static const uint ptp_tri2_kl0[1] = {
-    0x20001u
-};
-static const float ptp_tri2_w0[1] = {
-    4.0f
-};
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-static const uint ptp_tri2_pj1[1] = {
-    0x00001u
-};
-static const uint ptp_tri2_kl1[1] = {
-    0x40001u
-};
-static const float ptp_tri2_w1[1] = {
-    1.33333337f
-};
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-static const uint ptp_tri2_pj2[1] = {
-    0x00001u
-};
-static const uint ptp_tri2_kl2[1] = {
-    0x30002u
-};
-static const float ptp_tri2_w2[1] = {
-    -1.33333337f
-};
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-static const uint ptp_tri2_pj3[1] = {
-    0x00002u
-};
-static const uint ptp_tri2_kl3[1] = {
-    0x50001u
-};
-static const float ptp_tri2_w3[1] = {
-    1.33333337f
-};
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-static const uint ptp_tri2_pj4[1] = {
-    0x00002u
-};
-static const uint ptp_tri2_kl4[1] = {
-    0x40002u
-};
-static const float ptp_tri2_w4[1] = {
-    -1.33333337f
-};
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-static const uint ptp_tri2_pj5[1] = {
-    0x00003u
-};
-static const uint ptp_tri2_kl5[1] = {
-    0x40003u
-};
-static const float ptp_tri2_w5[1] = {
-    1.33333337f
-};
-
-/* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-static const uint ptp_tri2_pj6[1] = {
-    0x10003u
-};
-static const uint ptp_tri2_kl6[1] = {
-    0x30002u
-};
-static const float ptp_tri2_w6[1] = {
-    -1.33333337f
-};
-
-/* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-static const uint ptp_tri2_pj7[1] = {
-    0x00004u
-};
-static const uint ptp_tri2_kl7[1] = {
-    0x50003u
-};
-static const float ptp_tri2_w7[1] = {
-    0.666666687f
-};
-
-/* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-static const uint ptp_tri2_pj8[1] = {
-    0x10004u
-};
-static const uint ptp_tri2_kl8[1] = {
-    0x40002u
-};
-static const float ptp_tri2_w8[1] = {
-    -1.33333337f
-};
-
-/* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-static const uint ptp_tri2_pj9[1] = {
-    0x00005u
-};
-static const uint ptp_tri2_kl9[1] = {
-    0x50004u
-};
-static const float ptp_tri2_w9[1] = {
-    1.33333337f
-};
-
-/* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-static const uint ptp_tri2_pj10[1] = {
-    0x10005u
-};
-static const uint ptp_tri2_kl10[1] = {
-    0x50002u
-};
-static const float ptp_tri2_w10[1] = {
-    -1.33333337f
-};
-
-/* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-static const uint ptp_tri2_pj11[1] = {
-    0x10006u
-};
-static const uint ptp_tri2_kl11[1] = {
-    0x40003u
-};
-static const float ptp_tri2_w11[1] = {
-    4.0f
-};
-
-/* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-static const uint ptp_tri2_pj12[1] = {
-    0x10007u
-};
-static const uint ptp_tri2_kl12[1] = {
-    0x50003u
-};
-static const float ptp_tri2_w12[1] = {
-    1.33333337f
-};
-
-/* Round 13: thread t adds w13[t] * term(plane | j << 16 = pj13[t], k | l << 16 = kl13[t]). */
-static const uint ptp_tri2_pj13[1] = {
-    0x20007u
-};
-static const uint ptp_tri2_kl13[1] = {
-    0x40003u
-};
-static const float ptp_tri2_w13[1] = {
-    1.33333337f
-};
-
-/* Round 14: thread t adds w14[t] * term(plane | j << 16 = pj14[t], k | l << 16 = kl14[t]). */
-static const uint ptp_tri2_pj14[1] = {
-    0x10008u
-};
-static const uint ptp_tri2_kl14[1] = {
-    0x50004u
-};
-static const float ptp_tri2_w14[1] = {
-    1.33333337f
-};
-
-/* Round 15: thread t adds w15[t] * term(plane | j << 16 = pj15[t], k | l << 16 = kl15[t]). */
-static const uint ptp_tri2_pj15[1] = {
-    0x20008u
-};
-static const uint ptp_tri2_kl15[1] = {
-    0x50003u
-};
-static const float ptp_tri2_w15[1] = {
-    1.33333337f
-};
-
-/* Round 16: thread t adds w16[t] * term(plane | j << 16 = pj16[t], k | l << 16 = kl16[t]). */
-static const uint ptp_tri2_pj16[1] = {
-    0x20009u
-};
-static const uint ptp_tri2_kl16[1] = {
-    0x50004u
-};
-static const float ptp_tri2_w16[1] = {
-    4.0f
-};
-
-groupshared float4 pts[PTP_TRI2_Q * PTP_TRI2_K];
-groupshared float acc[PTP_TRI2_Q * PTP_TRI2_L];
-groupshared uint flags[PTP_TRI2_Q * PTP_TRI2_P];
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-float ptp_tri2_cross4z(float4 a, float4 b, float4 c)
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+uint ptp_tri2_classify_patch(float4 cp[6], float4 eye)
 {
-    precise float z = a.x * (b.y * c.w - b.w * c.y) -
-        b.x * (a.y * c.w - a.w * c.y) +
-        c.x * (a.y * b.w - a.w * b.y);
-    return z;
+    precise float e2 = eye.z;
+    precise float u, v;
+    bool lt, gt;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    precise float x4 = cp[4].x;
+    precise float y4 = cp[4].y;
+    precise float w4 = cp[4].w;
+    precise float g4 = e2 * w4;
+    precise float m1_4 = x1 * y4 - y1 * x4;
+    precise float m0_4 = x0 * y4 - y0 * x4;
+    u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    precise float x3 = cp[3].x;
+    precise float y3 = cp[3].y;
+    precise float w3 = cp[3].w;
+    precise float g3 = e2 * w3;
+    precise float m2_3 = x2 * y3 - y2 * x3;
+    precise float m0_3 = x0 * y3 - y0 * x3;
+    u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    precise float m3_4 = x3 * y4 - y3 * x4;
+    u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    precise float m1_3 = x1 * y3 - y1 * x3;
+    u -= ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    precise float x5 = cp[5].x;
+    precise float y5 = cp[5].y;
+    precise float w5 = cp[5].w;
+    precise float g5 = e2 * w5;
+    precise float m1_5 = x1 * y5 - y1 * x5;
+    precise float m0_5 = x0 * y5 - y0 * x5;
+    u = ((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    precise float m2_4 = x2 * y4 - y2 * x4;
+    u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    precise float m3_5 = x3 * y5 - y3 * x5;
+    u = g0 * (m3_5);
+    u = mad(g3, -m0_5, u);
+    u = mad(g5, m0_3, u);
+    v = u;
+    u = g1 * (-m2_4);
+    u = mad(g2, m1_4, u);
+    u = mad(g4, -m1_2, u);
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+    u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    precise float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    precise float m2_5 = x2 * y5 - y2 * x5;
+    u -= ((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
+    u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    return lt ? 1u : gt ? 0u : 2u;
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-uint ptp_tri2_flags(float d)
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+void ptp_tri2_values(float4 cp[6], float4 eye, out float d[10])
 {
-    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);
+    precise float e2 = eye.z;
+    precise float u, v;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    d[0] = v * 4.0f;
+    precise float x4 = cp[4].x;
+    precise float y4 = cp[4].y;
+    precise float w4 = cp[4].w;
+    precise float g4 = e2 * w4;
+    precise float m1_4 = x1 * y4 - y1 * x4;
+    precise float m0_4 = x0 * y4 - y0 * x4;
+    u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    precise float x3 = cp[3].x;
+    precise float y3 = cp[3].y;
+    precise float w3 = cp[3].w;
+    precise float g3 = e2 * w3;
+    precise float m2_3 = x2 * y3 - y2 * x3;
+    precise float m0_3 = x0 * y3 - y0 * x3;
+    u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
+    v = u;
+    d[1] = v * 1.33333337f;
+    precise float m3_4 = x3 * y4 - y3 * x4;
+    u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    precise float m1_3 = x1 * y3 - y1 * x3;
+    u -= ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+    v = u;
+    d[3] = v * 1.33333337f;
+    u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v = u;
+    d[6] = v * 4.0f;
+    precise float x5 = cp[5].x;
+    precise float y5 = cp[5].y;
+    precise float w5 = cp[5].w;
+    precise float g5 = e2 * w5;
+    precise float m1_5 = x1 * y5 - y1 * x5;
+    precise float m0_5 = x0 * y5 - y0 * x5;
+    u = ((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    precise float m2_4 = x2 * y4 - y2 * x4;
+    u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = u;
+    d[2] = v * 1.33333337f;
+    precise float m3_5 = x3 * y5 - y3 * x5;
+    u = g0 * (m3_5);
+    u = mad(g3, -m0_5, u);
+    u = mad(g5, m0_3, u);
+    v = u;
+    u = g1 * (-m2_4);
+    u = mad(g2, m1_4, u);
+    u = mad(g4, -m1_2, u);
+    v += (u + u);
+    d[4] = v * 0.666666687f;
+    u = ((g1 * m3_5 - g3 * m1_5) + g5 * m1_3);
+    u += ((g2 * m3_4 - g3 * m2_4) + g4 * m2_3);
+    v = u;
+    d[7] = v * 1.33333337f;
+    precise float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    precise float m2_5 = x2 * y5 - y2 * x5;
+    u -= ((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v = u;
+    d[5] = v * 1.33333337f;
+    u = ((g1 * m4_5 - g4 * m1_5) + g5 * m1_4);
+    u += ((g2 * m3_5 - g3 * m2_5) + g5 * m2_3);
+    v = u;
+    d[8] = v * 1.33333337f;
+    u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+    v = u;
+    d[9] = v * 4.0f;
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-uint ptp_tri2_class_of(uint f)
-{
-    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;
-}
-
-[numthreads(128, 1, 1)]
+[numthreads(64, 1, 1)]
 void main(uint3 lid3 : SV_GroupThreadID, uint3 gid : SV_GroupID)
 {
-    uint lid = lid3.x, q = lid / PTP_TRI2_P, t = lid % PTP_TRI2_P, i, pj, kl;
-    uint pid = (gid.y * groups_x + gid.x) * PTP_TRI2_Q + q;
-    uint f = 0u;
-    bool live = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_TRI2_K; i += PTP_TRI2_P)
-        if (live)
-            pts[q * PTP_TRI2_K + i] = cp[pid * PTP_TRI2_K + i];
-    GroupMemoryBarrierWithGroupSync();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_tri2_own_start[t]; i < ptp_tri2_own_start[t + 1u]; i++)
-        acc[q * PTP_TRI2_L + ptp_tri2_own_plane[i]] = 0.0f;
-    pj = ptp_tri2_pj0[t];
-    kl = ptp_tri2_kl0[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w0[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj1[t];
-    kl = ptp_tri2_kl1[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w1[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj2[t];
-    kl = ptp_tri2_kl2[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w2[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj3[t];
-    kl = ptp_tri2_kl3[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w3[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj4[t];
-    kl = ptp_tri2_kl4[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w4[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj5[t];
-    kl = ptp_tri2_kl5[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w5[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj6[t];
-    kl = ptp_tri2_kl6[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w6[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj7[t];
-    kl = ptp_tri2_kl7[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w7[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj8[t];
-    kl = ptp_tri2_kl8[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w8[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj9[t];
-    kl = ptp_tri2_kl9[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w9[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj10[t];
-    kl = ptp_tri2_kl10[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w10[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj11[t];
-    kl = ptp_tri2_kl11[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w11[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj12[t];
-    kl = ptp_tri2_kl12[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w12[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj13[t];
-    kl = ptp_tri2_kl13[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w13[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj14[t];
-    kl = ptp_tri2_kl14[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w14[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj15[t];
-    kl = ptp_tri2_kl15[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w15[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj16[t];
-    kl = ptp_tri2_kl16[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w16[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_tri2_own_start[t]; i < ptp_tri2_own_start[t + 1u]; i++) {
-        uint plane = ptp_tri2_own_plane[i];
-        float d = eye.z * acc[q * PTP_TRI2_L + plane];
-        f |= ptp_tri2_flags(d);
-    }
-    flags[q * PTP_TRI2_P + t] = f;
-    GroupMemoryBarrierWithGroupSync();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_TRI2_P; i++)
-            f |= flags[q * PTP_TRI2_P + i];
-        cls[pid] = ptp_tri2_class_of(f);
-    }
+    uint pid = (gid.y * groups_x + gid.x) * PTP_TRI2_Q + lid3.x;
+    float4 p[PTP_TRI2_K];
+    if (pid >= patch_count)
+        return;
+    p[0] = cp[pid * PTP_TRI2_K + 0u];
+    p[1] = cp[pid * PTP_TRI2_K + 1u];
+    p[2] = cp[pid * PTP_TRI2_K + 2u];
+    p[3] = cp[pid * PTP_TRI2_K + 3u];
+    p[4] = cp[pid * PTP_TRI2_K + 4u];
+    p[5] = cp[pid * PTP_TRI2_K + 5u];
+    cls[pid] = ptp_tri2_classify_patch(p, eye);
 }

@@ -20,7 +20,7 @@
  * rest of the padding, must be 0). Entry point main. Dispatch ceil(patch_count / Q)
  * workgroups, in 2-D (x, y) when x would exceed the limit: workgroup (x, y) handles the
  * patches of block y * num_workgroups.x + x.
- * Schedule: 1 threads per patch, 128 patches per workgroup (128 threads), 17 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 struct Params {
@@ -45,354 +45,222 @@ fn sub_rn(b: vec4<f32>, a: vec4<f32>) -> vec4<f32> {
 }
 
 const PTP_TRI2_P: u32 = 1u; /* threads per patch */
-const PTP_TRI2_Q: u32 = 128u; /* patches per workgroup */
+const PTP_TRI2_Q: u32 = 64u; /* patches per workgroup */
 const PTP_TRI2_K: u32 = 6u; /* control points per patch */
 const PTP_TRI2_L: u32 = 10u; /* control planes per patch */
-/* 17 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-const ptp_tri2_own_start: array<u32, 2> = array<u32, 2>(
-    0u, 10u
-);
-const ptp_tri2_own_plane: array<u32, 10> = array<u32, 10>(
-    0u, 1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u
-);
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-const ptp_tri2_pj0: array<u32, 1> = array<u32, 1>(
-    0x00000u
-);
-const ptp_tri2_kl0: array<u32, 1> = array<u32, 1>(
-    0x20001u
-);
-const ptp_tri2_w0: array<f32, 1> = array<f32, 1>(
-    4.0f
-);
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-const ptp_tri2_pj1: array<u32, 1> = array<u32, 1>(
-    0x00001u
-);
-const ptp_tri2_kl1: array<u32, 1> = array<u32, 1>(
-    0x40001u
-);
-const ptp_tri2_w1: array<f32, 1> = array<f32, 1>(
-    1.33333337f
-);
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-const ptp_tri2_pj2: array<u32, 1> = array<u32, 1>(
-    0x00001u
-);
-const ptp_tri2_kl2: array<u32, 1> = array<u32, 1>(
-    0x30002u
-);
-const ptp_tri2_w2: array<f32, 1> = array<f32, 1>(
-    -1.33333337f
-);
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-const ptp_tri2_pj3: array<u32, 1> = array<u32, 1>(
-    0x00002u
-);
-const ptp_tri2_kl3: array<u32, 1> = array<u32, 1>(
-    0x50001u
-);
-const ptp_tri2_w3: array<f32, 1> = array<f32, 1>(
-    1.33333337f
-);
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-const ptp_tri2_pj4: array<u32, 1> = array<u32, 1>(
-    0x00002u
-);
-const ptp_tri2_kl4: array<u32, 1> = array<u32, 1>(
-    0x40002u
-);
-const ptp_tri2_w4: array<f32, 1> = array<f32, 1>(
-    -1.33333337f
-);
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-const ptp_tri2_pj5: array<u32, 1> = array<u32, 1>(
-    0x00003u
-);
-const ptp_tri2_kl5: array<u32, 1> = array<u32, 1>(
-    0x40003u
-);
-const ptp_tri2_w5: array<f32, 1> = array<f32, 1>(
-    1.33333337f
-);
-
-/* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-const ptp_tri2_pj6: array<u32, 1> = array<u32, 1>(
-    0x10003u
-);
-const ptp_tri2_kl6: array<u32, 1> = array<u32, 1>(
-    0x30002u
-);
-const ptp_tri2_w6: array<f32, 1> = array<f32, 1>(
-    -1.33333337f
-);
-
-/* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-const ptp_tri2_pj7: array<u32, 1> = array<u32, 1>(
-    0x00004u
-);
-const ptp_tri2_kl7: array<u32, 1> = array<u32, 1>(
-    0x50003u
-);
-const ptp_tri2_w7: array<f32, 1> = array<f32, 1>(
-    0.666666687f
-);
-
-/* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-const ptp_tri2_pj8: array<u32, 1> = array<u32, 1>(
-    0x10004u
-);
-const ptp_tri2_kl8: array<u32, 1> = array<u32, 1>(
-    0x40002u
-);
-const ptp_tri2_w8: array<f32, 1> = array<f32, 1>(
-    -1.33333337f
-);
-
-/* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-const ptp_tri2_pj9: array<u32, 1> = array<u32, 1>(
-    0x00005u
-);
-const ptp_tri2_kl9: array<u32, 1> = array<u32, 1>(
-    0x50004u
-);
-const ptp_tri2_w9: array<f32, 1> = array<f32, 1>(
-    1.33333337f
-);
-
-/* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-const ptp_tri2_pj10: array<u32, 1> = array<u32, 1>(
-    0x10005u
-);
-const ptp_tri2_kl10: array<u32, 1> = array<u32, 1>(
-    0x50002u
-);
-const ptp_tri2_w10: array<f32, 1> = array<f32, 1>(
-    -1.33333337f
-);
-
-/* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-const ptp_tri2_pj11: array<u32, 1> = array<u32, 1>(
-    0x10006u
-);
-const ptp_tri2_kl11: array<u32, 1> = array<u32, 1>(
-    0x40003u
-);
-const ptp_tri2_w11: array<f32, 1> = array<f32, 1>(
-    4.0f
-);
-
-/* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-const ptp_tri2_pj12: array<u32, 1> = array<u32, 1>(
-    0x10007u
-);
-const ptp_tri2_kl12: array<u32, 1> = array<u32, 1>(
-    0x50003u
-);
-const ptp_tri2_w12: array<f32, 1> = array<f32, 1>(
-    1.33333337f
-);
-
-/* Round 13: thread t adds w13[t] * term(plane | j << 16 = pj13[t], k | l << 16 = kl13[t]). */
-const ptp_tri2_pj13: array<u32, 1> = array<u32, 1>(
-    0x20007u
-);
-const ptp_tri2_kl13: array<u32, 1> = array<u32, 1>(
-    0x40003u
-);
-const ptp_tri2_w13: array<f32, 1> = array<f32, 1>(
-    1.33333337f
-);
-
-/* Round 14: thread t adds w14[t] * term(plane | j << 16 = pj14[t], k | l << 16 = kl14[t]). */
-const ptp_tri2_pj14: array<u32, 1> = array<u32, 1>(
-    0x10008u
-);
-const ptp_tri2_kl14: array<u32, 1> = array<u32, 1>(
-    0x50004u
-);
-const ptp_tri2_w14: array<f32, 1> = array<f32, 1>(
-    1.33333337f
-);
-
-/* Round 15: thread t adds w15[t] * term(plane | j << 16 = pj15[t], k | l << 16 = kl15[t]). */
-const ptp_tri2_pj15: array<u32, 1> = array<u32, 1>(
-    0x20008u
-);
-const ptp_tri2_kl15: array<u32, 1> = array<u32, 1>(
-    0x50003u
-);
-const ptp_tri2_w15: array<f32, 1> = array<f32, 1>(
-    1.33333337f
-);
-
-/* Round 16: thread t adds w16[t] * term(plane | j << 16 = pj16[t], k | l << 16 = kl16[t]). */
-const ptp_tri2_pj16: array<u32, 1> = array<u32, 1>(
-    0x20009u
-);
-const ptp_tri2_kl16: array<u32, 1> = array<u32, 1>(
-    0x50004u
-);
-const ptp_tri2_w16: array<f32, 1> = array<f32, 1>(
-    4.0f
-);
-
-var<workgroup> pts: array<vec4<f32>, PTP_TRI2_Q * PTP_TRI2_K>;
-var<workgroup> acc: array<f32, PTP_TRI2_Q * PTP_TRI2_L>;
-var<workgroup> flags: array<u32, PTP_TRI2_Q * PTP_TRI2_P>;
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-fn ptp_tri2_cross4z(a: vec4<f32>, b: vec4<f32>, c: vec4<f32>) -> f32 {
-    let z: f32 = mul_rn(a.x, (mul_rn(b.y, c.w) - mul_rn(b.w, c.y))) -
-        mul_rn(b.x, (mul_rn(a.y, c.w) - mul_rn(a.w, c.y))) +
-        mul_rn(c.x, (mul_rn(a.y, b.w) - mul_rn(a.w, b.y)));
-    return z;
+/* x * y rounded to a float: through an integer XOR with zero, 0 at run time but unknown to
+ * the compiler, which no FMA contraction can cross (WGSL has no `precise`). */
+fn ptp_tri2_mul_rn(x: f32, y: f32, zero: u32) -> f32 {
+    return bitcast<f32>(bitcast<u32>(x * y) ^ zero);
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-fn ptp_tri2_flags(d: f32) -> u32 {
-    return (select(1u, 0u, d < 0.0f)) | (select(2u, 0u, d > 0.0f));
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+fn ptp_tri2_classify_patch(cp: array<vec4<f32>, 6>, eye: vec4<f32>, zero: u32) -> u32 {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    var lt: bool;
+    var gt: bool;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_tri2_mul_rn(e2, w1, zero);
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_tri2_mul_rn(e2, w2, zero);
+    let m1_2 = ptp_tri2_mul_rn(x1, y2, zero) - ptp_tri2_mul_rn(y1, x2, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_tri2_mul_rn(e2, w0, zero);
+    let m0_2 = ptp_tri2_mul_rn(x0, y2, zero) - ptp_tri2_mul_rn(y0, x2, zero);
+    let m0_1 = ptp_tri2_mul_rn(x0, y1, zero) - ptp_tri2_mul_rn(y0, x1, zero);
+    u = ((ptp_tri2_mul_rn(g0, m1_2, zero) - ptp_tri2_mul_rn(g1, m0_2, zero)) + ptp_tri2_mul_rn(g2, m0_1, zero));
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    let x4 = cp[4].x;
+    let y4 = cp[4].y;
+    let w4 = cp[4].w;
+    let g4 = ptp_tri2_mul_rn(e2, w4, zero);
+    let m1_4 = ptp_tri2_mul_rn(x1, y4, zero) - ptp_tri2_mul_rn(y1, x4, zero);
+    let m0_4 = ptp_tri2_mul_rn(x0, y4, zero) - ptp_tri2_mul_rn(y0, x4, zero);
+    u = ((ptp_tri2_mul_rn(g0, m1_4, zero) - ptp_tri2_mul_rn(g1, m0_4, zero)) + ptp_tri2_mul_rn(g4, m0_1, zero));
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_tri2_mul_rn(e2, w3, zero);
+    let m2_3 = ptp_tri2_mul_rn(x2, y3, zero) - ptp_tri2_mul_rn(y2, x3, zero);
+    let m0_3 = ptp_tri2_mul_rn(x0, y3, zero) - ptp_tri2_mul_rn(y0, x3, zero);
+    u -= ((ptp_tri2_mul_rn(g0, m2_3, zero) - ptp_tri2_mul_rn(g2, m0_3, zero)) + ptp_tri2_mul_rn(g3, m0_2, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    let m3_4 = ptp_tri2_mul_rn(x3, y4, zero) - ptp_tri2_mul_rn(y3, x4, zero);
+    u = ((ptp_tri2_mul_rn(g0, m3_4, zero) - ptp_tri2_mul_rn(g3, m0_4, zero)) + ptp_tri2_mul_rn(g4, m0_3, zero));
+    let m1_3 = ptp_tri2_mul_rn(x1, y3, zero) - ptp_tri2_mul_rn(y1, x3, zero);
+    u -= ((ptp_tri2_mul_rn(g1, m2_3, zero) - ptp_tri2_mul_rn(g2, m1_3, zero)) + ptp_tri2_mul_rn(g3, m1_2, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    u = ((ptp_tri2_mul_rn(g1, m3_4, zero) - ptp_tri2_mul_rn(g3, m1_4, zero)) + ptp_tri2_mul_rn(g4, m1_3, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    let x5 = cp[5].x;
+    let y5 = cp[5].y;
+    let w5 = cp[5].w;
+    let g5 = ptp_tri2_mul_rn(e2, w5, zero);
+    let m1_5 = ptp_tri2_mul_rn(x1, y5, zero) - ptp_tri2_mul_rn(y1, x5, zero);
+    let m0_5 = ptp_tri2_mul_rn(x0, y5, zero) - ptp_tri2_mul_rn(y0, x5, zero);
+    u = ((ptp_tri2_mul_rn(g0, m1_5, zero) - ptp_tri2_mul_rn(g1, m0_5, zero)) + ptp_tri2_mul_rn(g5, m0_1, zero));
+    let m2_4 = ptp_tri2_mul_rn(x2, y4, zero) - ptp_tri2_mul_rn(y2, x4, zero);
+    u -= ((ptp_tri2_mul_rn(g0, m2_4, zero) - ptp_tri2_mul_rn(g2, m0_4, zero)) + ptp_tri2_mul_rn(g4, m0_2, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    let m3_5 = ptp_tri2_mul_rn(x3, y5, zero) - ptp_tri2_mul_rn(y3, x5, zero);
+    u = ptp_tri2_mul_rn(g0, (m3_5), zero);
+    u = fma(g3, -m0_5, u);
+    u = fma(g5, m0_3, u);
+    v = u;
+    u = ptp_tri2_mul_rn(g1, (-m2_4), zero);
+    u = fma(g2, m1_4, u);
+    u = fma(g4, -m1_2, u);
+    v += (u + u);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    u = ((ptp_tri2_mul_rn(g1, m3_5, zero) - ptp_tri2_mul_rn(g3, m1_5, zero)) + ptp_tri2_mul_rn(g5, m1_3, zero));
+    u += ((ptp_tri2_mul_rn(g2, m3_4, zero) - ptp_tri2_mul_rn(g3, m2_4, zero)) + ptp_tri2_mul_rn(g4, m2_3, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    let m4_5 = ptp_tri2_mul_rn(x4, y5, zero) - ptp_tri2_mul_rn(y4, x5, zero);
+    u = ((ptp_tri2_mul_rn(g0, m4_5, zero) - ptp_tri2_mul_rn(g4, m0_5, zero)) + ptp_tri2_mul_rn(g5, m0_4, zero));
+    let m2_5 = ptp_tri2_mul_rn(x2, y5, zero) - ptp_tri2_mul_rn(y2, x5, zero);
+    u -= ((ptp_tri2_mul_rn(g1, m2_5, zero) - ptp_tri2_mul_rn(g2, m1_5, zero)) + ptp_tri2_mul_rn(g5, m1_2, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    u = ((ptp_tri2_mul_rn(g1, m4_5, zero) - ptp_tri2_mul_rn(g4, m1_5, zero)) + ptp_tri2_mul_rn(g5, m1_4, zero));
+    u += ((ptp_tri2_mul_rn(g2, m3_5, zero) - ptp_tri2_mul_rn(g3, m2_5, zero)) + ptp_tri2_mul_rn(g5, m2_3, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    u = ((ptp_tri2_mul_rn(g2, m4_5, zero) - ptp_tri2_mul_rn(g4, m2_5, zero)) + ptp_tri2_mul_rn(g5, m2_4, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    return select(select(2u, 0u, gt), 1u, lt);
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-fn ptp_tri2_class_of(f: u32) -> u32 {
-    return select(select(2u, 0u, (f & 2u) == 0u), 1u, (f & 1u) == 0u);
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+fn ptp_tri2_values(cp: array<vec4<f32>, 6>, eye: vec4<f32>, zero: u32,
+        d: ptr<function, array<f32, 10>>) {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_tri2_mul_rn(e2, w1, zero);
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_tri2_mul_rn(e2, w2, zero);
+    let m1_2 = ptp_tri2_mul_rn(x1, y2, zero) - ptp_tri2_mul_rn(y1, x2, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_tri2_mul_rn(e2, w0, zero);
+    let m0_2 = ptp_tri2_mul_rn(x0, y2, zero) - ptp_tri2_mul_rn(y0, x2, zero);
+    let m0_1 = ptp_tri2_mul_rn(x0, y1, zero) - ptp_tri2_mul_rn(y0, x1, zero);
+    u = ((ptp_tri2_mul_rn(g0, m1_2, zero) - ptp_tri2_mul_rn(g1, m0_2, zero)) + ptp_tri2_mul_rn(g2, m0_1, zero));
+    v = u;
+    (*d)[0] = v * 4.0f;
+    let x4 = cp[4].x;
+    let y4 = cp[4].y;
+    let w4 = cp[4].w;
+    let g4 = ptp_tri2_mul_rn(e2, w4, zero);
+    let m1_4 = ptp_tri2_mul_rn(x1, y4, zero) - ptp_tri2_mul_rn(y1, x4, zero);
+    let m0_4 = ptp_tri2_mul_rn(x0, y4, zero) - ptp_tri2_mul_rn(y0, x4, zero);
+    u = ((ptp_tri2_mul_rn(g0, m1_4, zero) - ptp_tri2_mul_rn(g1, m0_4, zero)) + ptp_tri2_mul_rn(g4, m0_1, zero));
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_tri2_mul_rn(e2, w3, zero);
+    let m2_3 = ptp_tri2_mul_rn(x2, y3, zero) - ptp_tri2_mul_rn(y2, x3, zero);
+    let m0_3 = ptp_tri2_mul_rn(x0, y3, zero) - ptp_tri2_mul_rn(y0, x3, zero);
+    u -= ((ptp_tri2_mul_rn(g0, m2_3, zero) - ptp_tri2_mul_rn(g2, m0_3, zero)) + ptp_tri2_mul_rn(g3, m0_2, zero));
+    v = u;
+    (*d)[1] = v * 1.33333337f;
+    let m3_4 = ptp_tri2_mul_rn(x3, y4, zero) - ptp_tri2_mul_rn(y3, x4, zero);
+    u = ((ptp_tri2_mul_rn(g0, m3_4, zero) - ptp_tri2_mul_rn(g3, m0_4, zero)) + ptp_tri2_mul_rn(g4, m0_3, zero));
+    let m1_3 = ptp_tri2_mul_rn(x1, y3, zero) - ptp_tri2_mul_rn(y1, x3, zero);
+    u -= ((ptp_tri2_mul_rn(g1, m2_3, zero) - ptp_tri2_mul_rn(g2, m1_3, zero)) + ptp_tri2_mul_rn(g3, m1_2, zero));
+    v = u;
+    (*d)[3] = v * 1.33333337f;
+    u = ((ptp_tri2_mul_rn(g1, m3_4, zero) - ptp_tri2_mul_rn(g3, m1_4, zero)) + ptp_tri2_mul_rn(g4, m1_3, zero));
+    v = u;
+    (*d)[6] = v * 4.0f;
+    let x5 = cp[5].x;
+    let y5 = cp[5].y;
+    let w5 = cp[5].w;
+    let g5 = ptp_tri2_mul_rn(e2, w5, zero);
+    let m1_5 = ptp_tri2_mul_rn(x1, y5, zero) - ptp_tri2_mul_rn(y1, x5, zero);
+    let m0_5 = ptp_tri2_mul_rn(x0, y5, zero) - ptp_tri2_mul_rn(y0, x5, zero);
+    u = ((ptp_tri2_mul_rn(g0, m1_5, zero) - ptp_tri2_mul_rn(g1, m0_5, zero)) + ptp_tri2_mul_rn(g5, m0_1, zero));
+    let m2_4 = ptp_tri2_mul_rn(x2, y4, zero) - ptp_tri2_mul_rn(y2, x4, zero);
+    u -= ((ptp_tri2_mul_rn(g0, m2_4, zero) - ptp_tri2_mul_rn(g2, m0_4, zero)) + ptp_tri2_mul_rn(g4, m0_2, zero));
+    v = u;
+    (*d)[2] = v * 1.33333337f;
+    let m3_5 = ptp_tri2_mul_rn(x3, y5, zero) - ptp_tri2_mul_rn(y3, x5, zero);
+    u = ptp_tri2_mul_rn(g0, (m3_5), zero);
+    u = fma(g3, -m0_5, u);
+    u = fma(g5, m0_3, u);
+    v = u;
+    u = ptp_tri2_mul_rn(g1, (-m2_4), zero);
+    u = fma(g2, m1_4, u);
+    u = fma(g4, -m1_2, u);
+    v += (u + u);
+    (*d)[4] = v * 0.666666687f;
+    u = ((ptp_tri2_mul_rn(g1, m3_5, zero) - ptp_tri2_mul_rn(g3, m1_5, zero)) + ptp_tri2_mul_rn(g5, m1_3, zero));
+    u += ((ptp_tri2_mul_rn(g2, m3_4, zero) - ptp_tri2_mul_rn(g3, m2_4, zero)) + ptp_tri2_mul_rn(g4, m2_3, zero));
+    v = u;
+    (*d)[7] = v * 1.33333337f;
+    let m4_5 = ptp_tri2_mul_rn(x4, y5, zero) - ptp_tri2_mul_rn(y4, x5, zero);
+    u = ((ptp_tri2_mul_rn(g0, m4_5, zero) - ptp_tri2_mul_rn(g4, m0_5, zero)) + ptp_tri2_mul_rn(g5, m0_4, zero));
+    let m2_5 = ptp_tri2_mul_rn(x2, y5, zero) - ptp_tri2_mul_rn(y2, x5, zero);
+    u -= ((ptp_tri2_mul_rn(g1, m2_5, zero) - ptp_tri2_mul_rn(g2, m1_5, zero)) + ptp_tri2_mul_rn(g5, m1_2, zero));
+    v = u;
+    (*d)[5] = v * 1.33333337f;
+    u = ((ptp_tri2_mul_rn(g1, m4_5, zero) - ptp_tri2_mul_rn(g4, m1_5, zero)) + ptp_tri2_mul_rn(g5, m1_4, zero));
+    u += ((ptp_tri2_mul_rn(g2, m3_5, zero) - ptp_tri2_mul_rn(g3, m2_5, zero)) + ptp_tri2_mul_rn(g5, m2_3, zero));
+    v = u;
+    (*d)[8] = v * 1.33333337f;
+    u = ((ptp_tri2_mul_rn(g2, m4_5, zero) - ptp_tri2_mul_rn(g4, m2_5, zero)) + ptp_tri2_mul_rn(g5, m2_4, zero));
+    v = u;
+    (*d)[9] = v * 4.0f;
 }
 
-@compute @workgroup_size(128)
+@compute @workgroup_size(64)
 fn main(@builtin(local_invocation_id) lid3: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>,
         @builtin(num_workgroups) nwg: vec3<u32>) {
     let eye = params.eye;
     let patch_count = params.patch_count;
-    let lid: u32 = lid3.x;
-    let q: u32 = lid / PTP_TRI2_P;
-    let t: u32 = lid % PTP_TRI2_P;
-    var i: u32;
-    var pj: u32;
-    var kl: u32;
-    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_TRI2_Q + q;
-    var f: u32 = 0u;
-    let live: bool = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_TRI2_K; i += PTP_TRI2_P) {
-        if (live) {
-            pts[q * PTP_TRI2_K + i] = cp[pid * PTP_TRI2_K + i];
-        }
+    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_TRI2_Q + lid3.x;
+    var p: array<vec4<f32>, PTP_TRI2_K>;
+    if (pid >= patch_count) {
+        return;
     }
-    workgroupBarrier();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_tri2_own_start[t]; i < ptp_tri2_own_start[t + 1u]; i++) {
-        acc[q * PTP_TRI2_L + ptp_tri2_own_plane[i]] = 0.0f;
-    }
-    pj = ptp_tri2_pj0[t];
-    kl = ptp_tri2_kl0[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w0[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj1[t];
-    kl = ptp_tri2_kl1[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w1[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj2[t];
-    kl = ptp_tri2_kl2[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w2[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj3[t];
-    kl = ptp_tri2_kl3[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w3[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj4[t];
-    kl = ptp_tri2_kl4[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w4[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj5[t];
-    kl = ptp_tri2_kl5[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w5[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj6[t];
-    kl = ptp_tri2_kl6[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w6[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj7[t];
-    kl = ptp_tri2_kl7[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w7[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj8[t];
-    kl = ptp_tri2_kl8[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w8[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj9[t];
-    kl = ptp_tri2_kl9[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w9[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj10[t];
-    kl = ptp_tri2_kl10[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w10[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj11[t];
-    kl = ptp_tri2_kl11[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w11[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj12[t];
-    kl = ptp_tri2_kl12[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w12[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj13[t];
-    kl = ptp_tri2_kl13[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w13[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj14[t];
-    kl = ptp_tri2_kl14[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w14[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj15[t];
-    kl = ptp_tri2_kl15[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w15[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-    pj = ptp_tri2_pj16[t];
-    kl = ptp_tri2_kl16[t];
-    acc[q * PTP_TRI2_L + (pj & 0xffffu)] += ptp_tri2_w16[t] *
-        ptp_tri2_cross4z(pts[q * PTP_TRI2_K + (pj >> 16)], pts[q * PTP_TRI2_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI2_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_tri2_own_start[t]; i < ptp_tri2_own_start[t + 1u]; i++) {
-        let plane: u32 = ptp_tri2_own_plane[i];
-        let d: f32 = eye.z * acc[q * PTP_TRI2_L + plane];
-        f |= ptp_tri2_flags(d);
-    }
-    flags[q * PTP_TRI2_P + t] = f;
-    workgroupBarrier();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_TRI2_P; i++) {
-            f |= flags[q * PTP_TRI2_P + i];
-        }
-        cls[pid] = ptp_tri2_class_of(f);
-    }
+    p[0] = cp[pid * PTP_TRI2_K + 0u];
+    p[1] = cp[pid * PTP_TRI2_K + 1u];
+    p[2] = cp[pid * PTP_TRI2_K + 2u];
+    p[3] = cp[pid * PTP_TRI2_K + 3u];
+    p[4] = cp[pid * PTP_TRI2_K + 4u];
+    p[5] = cp[pid * PTP_TRI2_K + 5u];
+    cls[pid] = ptp_tri2_classify_patch(p, eye, params.zero);
 }

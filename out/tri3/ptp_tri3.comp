@@ -18,518 +18,836 @@
  * d[p*L + P] (float[], with --planes). Push constants: { vec4 eye; uint patch_count; }.
  * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:
  * workgroup (x, y) handles the patches of block y * num_groups_x + x.
- * Schedule: 4 threads per patch, 32 patches per workgroup (128 threads), 27 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 #version 450
 
-layout(local_size_x = 128) in;
+layout(local_size_x = 64) in;
 
 layout(std430, set = 0, binding = 0) readonly buffer ControlPoints { vec4 cp[]; };
 layout(std430, set = 0, binding = 1) writeonly buffer Classes { uint cls[]; };
 layout(push_constant) uniform Params { vec4 eye; uint patch_count; };
 
-#define PTP_TRI3_P 4u /* threads per patch */
-#define PTP_TRI3_Q 32u /* patches per workgroup */
+#define PTP_TRI3_P 1u /* threads per patch */
+#define PTP_TRI3_Q 64u /* patches per workgroup */
 #define PTP_TRI3_K 10u /* control points per patch */
 #define PTP_TRI3_L 28u /* control planes per patch */
-/* 27 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-const uint ptp_tri3_own_start[5] = {
-    0u, 7u, 13u, 20u, 28u
-};
-const uint ptp_tri3_own_plane[28] = {
-    5u, 7u, 13u, 14u, 20u, 24u, 27u, 6u, 8u, 16u, 17u, 22u, 25u, 1u, 2u, 9u,
-    11u, 18u, 19u, 26u, 0u, 3u, 4u, 10u, 12u, 15u, 21u, 23u
-};
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-const uint ptp_tri3_pj0[4] = {
-    0x00005u, 0x00006u, 0x00001u, 0x00000u
-};
-const uint ptp_tri3_kl0[4] = {
-    0x90001u, 0x70003u, 0x40001u, 0x20001u
-};
-const float ptp_tri3_w0[4] = {
-    0.600000024f, 0.899999976f, 3.0f, 9.0f
-};
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-const uint ptp_tri3_pj1[4] = {
-    0x00005u, 0x00006u, 0x00001u, 0x00003u
-};
-const uint ptp_tri3_kl1[4] = {
-    0x80002u, 0x60004u, 0x30002u, 0x70001u
-};
-const float ptp_tri3_w1[4] = {
-    -0.600000024f, -0.899999976f, -3.0f, 0.600000024f
-};
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-const uint ptp_tri3_pj2[4] = {
-    0x00005u, 0x10006u, 0x00002u, 0x00003u
-};
-const uint ptp_tri3_kl2[4] = {
-    0x50004u, 0x60002u, 0x50001u, 0x60002u
-};
-const float ptp_tri3_w2[4] = {
-    2.4000001f, -0.899999976f, 3.0f, -0.600000024f
-};
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-const uint ptp_tri3_pj3[4] = {
-    0x10005u, 0x10006u, 0x00002u, 0x00003u
-};
-const uint ptp_tri3_kl3[4] = {
-    0x50002u, 0x40003u, 0x40002u, 0x40003u
-};
-const float ptp_tri3_w3[4] = {
-    -1.79999995f, 2.70000005f, -3.0f, 2.4000001f
-};
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-const uint ptp_tri3_pj4[4] = {
-    0x00007u, 0x00008u, 0x00009u, 0x10003u
-};
-const uint ptp_tri3_kl4[4] = {
-    0x80003u, 0x90003u, 0x90004u, 0x30002u
-};
-const float ptp_tri3_w4[4] = {
-    0.600000024f, 0.300000012f, 0.899999976f, -1.79999995f
-};
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-const uint ptp_tri3_pj5[4] = {
-    0x00007u, 0x00008u, 0x00009u, 0x00004u
-};
-const uint ptp_tri3_kl5[4] = {
-    0x70004u, 0x80004u, 0x80005u, 0x80001u
-};
-const float ptp_tri3_w5[4] = {
-    -0.300000012f, 0.300000012f, -0.899999976f, 0.600000024f
-};
-
-/* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-const uint ptp_tri3_pj6[4] = {
-    0x00007u, 0x00008u, 0x10009u, 0x00004u
-};
-const uint ptp_tri3_kl6[4] = {
-    0x60005u, 0x70005u, 0x90002u, 0x70002u
-};
-const float ptp_tri3_w6[4] = {
-    -0.300000012f, -0.600000024f, -0.899999976f, -0.600000024f
-};
-
-/* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-const uint ptp_tri3_pj7[4] = {
-    0x10007u, 0x10008u, 0x20009u, 0x00004u
-};
-const uint ptp_tri3_kl7[4] = {
-    0x70002u, 0x80002u, 0x50004u, 0x50003u
-};
-const float ptp_tri3_w7[4] = {
-    -0.899999976f, -0.899999976f, 2.70000005f, 1.20000005f
-};
-
-/* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-const uint ptp_tri3_pj8[4] = {
-    0x10007u, 0x10008u, 0x0000bu, 0x10004u
-};
-const uint ptp_tri3_kl8[4] = {
-    0x50003u, 0x50004u, 0x80006u, 0x40002u
-};
-const float ptp_tri3_w8[4] = {
-    0.899999976f, 0.899999976f, 0.300000012f, -1.79999995f
-};
-
-/* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-const uint ptp_tri3_pj9[4] = {
-    0x20007u, 0x20008u, 0x1000bu, 0x0000au
-};
-const uint ptp_tri3_kl9[4] = {
-    0x40003u, 0x50003u, 0x80003u, 0x70006u
-};
-const float ptp_tri3_w9[4] = {
-    0.899999976f, 0.899999976f, 0.899999976f, 0.600000024f
-};
-
-/* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-const uint ptp_tri3_pj10[4] = {
-    0x0000du, 0x10010u, 0x1000bu, 0x1000au
-};
-const uint ptp_tri3_kl10[4] = {
-    0x90007u, 0x80006u, 0x70004u, 0x70003u
-};
-const float ptp_tri3_w10[4] = {
-    0.300000012f, 1.20000005f, -0.899999976f, 1.79999995f
-};
-
-/* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-const uint ptp_tri3_pj11[4] = {
-    0x1000du, 0x20010u, 0x1000bu, 0x1000au
-};
-const uint ptp_tri3_kl11[4] = {
-    0x90004u, 0x70006u, 0x60005u, 0x60004u
-};
-const float ptp_tri3_w11[4] = {
-    0.300000012f, 0.600000024f, -0.600000024f, -2.4000001f
-};
-
-/* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-const uint ptp_tri3_pj12[4] = {
-    0x1000du, 0x30010u, 0x2000bu, 0x2000au
-};
-const uint ptp_tri3_kl12[4] = {
-    0x80005u, 0x70004u, 0x70003u, 0x60003u
-};
-const float ptp_tri3_w12[4] = {
-    -0.899999976f, -1.79999995f, 0.899999976f, 0.600000024f
-};
-
-/* Round 13: thread t adds w13[t] * term(plane | j << 16 = pj13[t], k | l << 16 = kl13[t]). */
-const uint ptp_tri3_pj13[4] = {
-    0x2000du, 0x30010u, 0x2000bu, 0x0000cu
-};
-const uint ptp_tri3_kl13[4] = {
-    0x90003u, 0x60005u, 0x60004u, 0x90006u
-};
-const float ptp_tri3_w13[4] = {
-    0.600000024f, -0.600000024f, -0.300000012f, 0.100000001f
-};
-
-/* Round 14: thread t adds w14[t] * term(plane | j << 16 = pj14[t], k | l << 16 = kl14[t]). */
-const uint ptp_tri3_pj14[4] = {
-    0x2000du, 0x10011u, 0x10012u, 0x0000cu
-};
-const uint ptp_tri3_kl14[4] = {
-    0x80004u, 0x90006u, 0x90007u, 0x80007u
-};
-const float ptp_tri3_w14[4] = {
-    0.899999976f, 0.300000012f, 0.600000024f, 0.300000012f
-};
-
-/* Round 15: thread t adds w15[t] * term(plane | j << 16 = pj15[t], k | l << 16 = kl15[t]). */
-const uint ptp_tri3_pj15[4] = {
-    0x2000du, 0x10011u, 0x20012u, 0x1000cu
-};
-const uint ptp_tri3_kl15[4] = {
-    0x70005u, 0x80007u, 0x90006u, 0x90003u
-};
-const float ptp_tri3_w15[4] = {
-    -0.899999976f, 0.899999976f, 0.300000012f, 0.300000012f
-};
-
-/* Round 16: thread t adds w16[t] * term(plane | j << 16 = pj16[t], k | l << 16 = kl16[t]). */
-const uint ptp_tri3_pj16[4] = {
-    0x0000eu, 0x20011u, 0x20012u, 0x1000cu
-};
-const uint ptp_tri3_kl16[4] = {
-    0x90008u, 0x80006u, 0x80007u, 0x70005u
-};
-const float ptp_tri3_w16[4] = {
-    0.600000024f, 0.600000024f, 0.899999976f, -0.899999976f
-};
-
-/* Round 17: thread t adds w17[t] * term(plane | j << 16 = pj17[t], k | l << 16 = kl17[t]). */
-const uint ptp_tri3_pj17[4] = {
-    0x1000eu, 0x30011u, 0x30012u, 0x2000cu
-};
-const uint ptp_tri3_kl17[4] = {
-    0x90005u, 0x80004u, 0x90004u, 0x80003u
-};
-const float ptp_tri3_w17[4] = {
-    -0.600000024f, -0.899999976f, -0.300000012f, 0.899999976f
-};
-
-/* Round 18: thread t adds w18[t] * term(plane | j << 16 = pj18[t], k | l << 16 = kl18[t]). */
-const uint ptp_tri3_pj18[4] = {
-    0x2000eu, 0x30011u, 0x30012u, 0x2000cu
-};
-const uint ptp_tri3_kl18[4] = {
-    0x90004u, 0x70005u, 0x80005u, 0x60005u
-};
-const float ptp_tri3_w18[4] = {
-    2.4000001f, -0.899999976f, -0.899999976f, -0.300000012f
-};
-
-/* Round 19: thread t adds w19[t] * term(plane | j << 16 = pj19[t], k | l << 16 = kl19[t]). */
-const uint ptp_tri3_pj19[4] = {
-    0x2000eu, 0x40011u, 0x40012u, 0x1000fu
-};
-const uint ptp_tri3_kl19[4] = {
-    0x80005u, 0x60005u, 0x70005u, 0x70006u
-};
-const float ptp_tri3_w19[4] = {
-    -1.79999995f, -0.300000012f, -0.899999976f, 3.0f
-};
-
-/* Round 20: thread t adds w20[t] * term(plane | j << 16 = pj20[t], k | l << 16 = kl20[t]). */
-const uint ptp_tri3_pj20[4] = {
-    0x20014u, 0x30016u, 0x10013u, 0x3000fu
-};
-const uint ptp_tri3_kl20[4] = {
-    0x90008u, 0x80006u, 0x90008u, 0x60004u
-};
-const float ptp_tri3_w20[4] = {
-    3.0f, 3.0f, 0.600000024f, -3.0f
-};
-
-/* Round 21: thread t adds w21[t] * term(plane | j << 16 = pj21[t], k | l << 16 = kl21[t]). */
-const uint ptp_tri3_pj21[4] = {
-    0x40014u, 0x40016u, 0x20013u, 0x30015u
-};
-const uint ptp_tri3_kl21[4] = {
-    0x90005u, 0x70006u, 0x90007u, 0x70006u
-};
-const float ptp_tri3_w21[4] = {
-    -3.0f, 3.0f, 1.20000005f, 9.0f
-};
-
-/* Round 22: thread t adds w22[t] * term(plane | j << 16 = pj22[t], k | l << 16 = kl22[t]). */
-const uint ptp_tri3_pj22[4] = {
-    0x30018u, 0x30019u, 0x30013u, 0x30017u
-};
-const uint ptp_tri3_kl22[4] = {
-    0x90007u, 0x90008u, 0x90005u, 0x90006u
-};
-const float ptp_tri3_w22[4] = {
-    0.899999976f, 0.600000024f, -0.600000024f, 0.600000024f
-};
-
-/* Round 23: thread t adds w23[t] * term(plane | j << 16 = pj23[t], k | l << 16 = kl23[t]). */
-const uint ptp_tri3_pj23[4] = {
-    0x40018u, 0x40019u, 0x40013u, 0x30017u
-};
-const uint ptp_tri3_kl23[4] = {
-    0x90006u, 0x90007u, 0x80005u, 0x80007u
-};
-const float ptp_tri3_w23[4] = {
-    0.899999976f, 2.4000001f, -1.79999995f, 1.79999995f
-};
-
-/* Round 24: thread t adds w24[t] * term(plane | j << 16 = pj24[t], k | l << 16 = kl24[t]). */
-const uint ptp_tri3_pj24[4] = {
-    0x40018u, 0x50019u, 0x4001au, 0x40017u
-};
-const uint ptp_tri3_kl24[4] = {
-    0x80007u, 0x90006u, 0x90008u, 0x80006u
-};
-const float ptp_tri3_w24[4] = {
-    2.70000005f, 0.600000024f, 3.0f, 2.4000001f
-};
-
-/* Round 25: thread t adds w25[t] * term(plane | j << 16 = pj25[t], k | l << 16 = kl25[t]). */
-const uint ptp_tri3_pj25[4] = {
-    0x50018u, 0x50019u, 0x5001au, 0x50017u
-};
-const uint ptp_tri3_kl25[4] = {
-    0x80006u, 0x80007u, 0x90007u, 0x70006u
-};
-const float ptp_tri3_w25[4] = {
-    0.899999976f, 1.79999995f, 3.0f, 0.600000024f
-};
-
-/* Round 26: thread t adds w26[t] * term(plane | j << 16 = pj26[t], k | l << 16 = kl26[t]). */
-const uint ptp_tri3_pj26[4] = {
-    0x5001bu, 0x00006u, 0x00001u, 0x00000u
-};
-const uint ptp_tri3_kl26[4] = {
-    0x90008u, 0x00000u, 0x00000u, 0x00000u
-};
-const float ptp_tri3_w26[4] = {
-    9.0f, 0.0f, 0.0f, 0.0f
-};
-
-shared vec4 pts[PTP_TRI3_Q * PTP_TRI3_K];
-shared float acc[PTP_TRI3_Q * PTP_TRI3_L];
-shared uint flags[PTP_TRI3_Q * PTP_TRI3_P];
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-float ptp_tri3_cross4z(vec4 a, vec4 b, vec4 c)
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+uint ptp_tri3_classify_patch(vec4 cp[10], vec4 eye)
 {
-    precise float z = a.x * (b.y * c.w - b.w * c.y) -
-        b.x * (a.y * c.w - a.w * c.y) +
-        c.x * (a.y * b.w - a.w * b.y);
-    return z;
+    precise float e2 = eye.z;
+    precise float u, v;
+    bool lt, gt;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    precise float x4 = cp[4].x;
+    precise float y4 = cp[4].y;
+    precise float w4 = cp[4].w;
+    precise float g4 = e2 * w4;
+    precise float m1_4 = x1 * y4 - y1 * x4;
+    precise float m0_4 = x0 * y4 - y0 * x4;
+    u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    precise float x3 = cp[3].x;
+    precise float y3 = cp[3].y;
+    precise float w3 = cp[3].w;
+    precise float g3 = e2 * w3;
+    precise float m2_3 = x2 * y3 - y2 * x3;
+    precise float m0_3 = x0 * y3 - y0 * x3;
+    u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    precise float x5 = cp[5].x;
+    precise float y5 = cp[5].y;
+    precise float w5 = cp[5].w;
+    precise float g5 = e2 * w5;
+    precise float m1_5 = x1 * y5 - y1 * x5;
+    precise float m0_5 = x0 * y5 - y0 * x5;
+    u = ((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    precise float m2_4 = x2 * y4 - y2 * x4;
+    u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    precise float x8 = cp[8].x;
+    precise float y8 = cp[8].y;
+    precise float w8 = cp[8].w;
+    precise float g8 = e2 * w8;
+    precise float m1_8 = x1 * y8 - y1 * x8;
+    precise float m0_8 = x0 * y8 - y0 * x8;
+    u = ((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
+    precise float x7 = cp[7].x;
+    precise float y7 = cp[7].y;
+    precise float w7 = cp[7].w;
+    precise float g7 = e2 * w7;
+    precise float m2_7 = x2 * y7 - y2 * x7;
+    precise float m0_7 = x0 * y7 - y0 * x7;
+    u -= ((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+    v = u;
+    precise float m3_5 = x3 * y5 - y3 * x5;
+    u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+    v += (u + u);
+    u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    precise float m1_7 = x1 * y7 - y1 * x7;
+    u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+    precise float x6 = cp[6].x;
+    precise float y6 = cp[6].y;
+    precise float w6 = cp[6].w;
+    precise float g6 = e2 * w6;
+    precise float m2_6 = x2 * y6 - y2 * x6;
+    precise float m0_6 = x0 * y6 - y0 * x6;
+    u -= ((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+    v = u;
+    precise float m1_3 = x1 * y3 - y1 * x3;
+    u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+    v += (u + u) + u;
+    precise float m3_4 = x3 * y4 - y3 * x4;
+    u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    precise float m3_7 = x3 * y7 - y3 * x7;
+    u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
+    precise float m4_6 = x4 * y6 - y4 * x6;
+    u -= ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
+    precise float m1_6 = x1 * y6 - y1 * x6;
+    u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+    v = u;
+    u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    precise float m4_7 = x4 * y7 - y4 * x7;
+    precise float m5_6 = x5 * y6 - y5 * x6;
+    precise float m3_8 = x3 * y8 - y3 * x8;
+    u = -m4_7 - m5_6;
+    u = fma(2.0f, m3_8, u);
+    v = g0 * u;
+    u = 3.0f * (m3_5 - m2_7);
+    v = fma(g1, u, v);
+    u = 3.0f * (m1_7 + m3_4);
+    v = fma(g2, u, v);
+    u = (-m0_8);
+    u += u;
+    u = fma(3.0f, -m1_5 - m2_4, u);
+    v = fma(g3, u, v);
+    u = m0_7;
+    u = fma(3.0f, m2_3, u);
+    v = fma(g4, u, v);
+    u = m0_6;
+    u = fma(3.0f, m1_3, u);
+    v = fma(g5, u, v);
+    u = -m0_5;
+    v = fma(g6, u, v);
+    u = -m0_4;
+    u = fma(3.0f, -m1_2, u);
+    v = fma(g7, u, v);
+    u = (m0_3);
+    u += u;
+    v = fma(g8, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    precise float m6_7 = x6 * y7 - y6 * x7;
+    u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+    precise float m3_6 = x3 * y6 - y3 * x6;
+    u += ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+    v = u;
+    u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+    v += (u + u) + u;
+    u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 10 */
+    precise float m6_8 = x6 * y8 - y6 * x8;
+    u = m6_8;
+    v = g0 * u;
+    u = (-m5_6);
+    u += u;
+    u = fma(3.0f, m3_8 - m4_7, u);
+    v = fma(g1, u, v);
+    u = -m4_6;
+    u = fma(3.0f, m3_7, u);
+    v = fma(g2, u, v);
+    u = 3.0f * (-m1_8 - m2_7);
+    v = fma(g3, u, v);
+    u = m2_6;
+    u = fma(3.0f, m1_7, u);
+    v = fma(g4, u, v);
+    u = (m1_6);
+    u += u;
+    v = fma(g5, u, v);
+    u = -m2_4 - m0_8;
+    u = fma(2.0f, -m1_5, u);
+    v = fma(g6, u, v);
+    u = 3.0f * (m2_3 - m1_4);
+    v = fma(g7, u, v);
+    u = m0_6;
+    u = fma(3.0f, m1_3, u);
+    v = fma(g8, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 11 */
+    precise float x9 = cp[9].x;
+    precise float y9 = cp[9].y;
+    precise float w9 = cp[9].w;
+    precise float g9 = e2 * w9;
+    precise float m1_9 = x1 * y9 - y1 * x9;
+    precise float m0_9 = x0 * y9 - y0 * x9;
+    u = ((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
+    precise float m2_8 = x2 * y8 - y2 * x8;
+    u -= ((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
+    v = u;
+    precise float m2_5 = x2 * y5 - y2 * x5;
+    u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v += (u + u) + u;
+    precise float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    precise float m4_9 = x4 * y9 - y4 * x9;
+    u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
+    precise float m5_8 = x5 * y8 - y5 * x8;
+    u -= ((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
+    precise float m2_9 = x2 * y9 - y2 * x9;
+    u -= ((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
+    v = u;
+    u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    precise float m8_9 = x8 * y9 - y8 * x9;
+    u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
+    precise float m5_9 = x5 * y9 - y5 * x9;
+    u -= ((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
+    v = u;
+    u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
+    v += (u + u) + u;
+    u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 14 */
+    u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
+    u -= ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 15 */
+    u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
+    u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
+    v = u;
+    u = ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
+    v += (u + u);
+    u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 16 */
+    precise float m6_9 = x6 * y9 - y6 * x9;
+    precise float m7_8 = x7 * y8 - y7 * x8;
+    u = m6_9;
+    u = fma(3.0f, m7_8, u);
+    v = g1 * u;
+    u = (m6_8);
+    u += u;
+    v = fma(g2, u, v);
+    precise float m4_8 = x4 * y8 - y4 * x8;
+    precise float m5_7 = x5 * y7 - y5 * x7;
+    u = 3.0f * (-m4_8 - m5_7);
+    v = fma(g3, u, v);
+    u = -m5_6;
+    u = fma(3.0f, m3_8, u);
+    v = fma(g4, u, v);
+    u = m4_6;
+    u = fma(3.0f, m3_7, u);
+    v = fma(g5, u, v);
+    u = -m1_9 - m4_5;
+    u = fma(2.0f, -m2_8, u);
+    v = fma(g6, u, v);
+    u = 3.0f * (-m1_8 - m3_5);
+    v = fma(g7, u, v);
+    u = (m2_6);
+    u += u;
+    u = fma(3.0f, m1_7 - m3_4, u);
+    v = fma(g8, u, v);
+    u = m1_6;
+    v = fma(g9, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 17 */
+    precise float m7_9 = x7 * y9 - y7 * x9;
+    u = (m7_9);
+    u += u;
+    v = g1 * u;
+    u = m6_9;
+    u = fma(3.0f, m7_8, u);
+    v = fma(g2, u, v);
+    u = -m4_9;
+    u = fma(3.0f, -m5_8, u);
+    v = fma(g3, u, v);
+    precise float m3_9 = x3 * y9 - y3 * x9;
+    u = m3_9;
+    u = fma(3.0f, -m5_7, u);
+    v = fma(g4, u, v);
+    u = 3.0f * (m4_7 + m3_8);
+    v = fma(g5, u, v);
+    u = -m2_9;
+    v = fma(g6, u, v);
+    u = (-m1_9);
+    u += u;
+    u = fma(3.0f, -m2_8 - m4_5, u);
+    v = fma(g7, u, v);
+    u = 3.0f * (m2_7 - m3_5);
+    v = fma(g8, u, v);
+    u = m2_6 - m3_4;
+    u = fma(2.0f, m1_7, u);
+    v = fma(g9, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 18 */
+    u = ((g1 * m8_9 - g8 * m1_9) + g9 * m1_8);
+    u -= ((g3 * m5_9 - g5 * m3_9) + g9 * m3_5);
+    v = u;
+    u = ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
+    v += (u + u);
+    u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 19 */
+    u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
+    u -= ((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 20 */
+    u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 21 */
+    u = ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
+    u += ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 22 */
+    u = ((g3 * m6_9 - g6 * m3_9) + g9 * m3_6);
+    u += ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
+    v = u;
+    u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
+    v += (u + u) + u;
+    u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 23 */
+    u = ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
+    u += ((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
+    u += ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
+    v = u;
+    u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 24 */
+    u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
+    u += ((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
+    v = u;
+    u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
+    v += (u + u) + u;
+    u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 25 */
+    u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
+    u += ((g5 * m7_9 - g7 * m5_9) + g9 * m5_7);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 26 */
+    u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 27 */
+    u = ((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
+    v = u;
+    u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
+    u += ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
+    u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
+    v += (u + u) + u;
+    u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
+    u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 12 */
+    u = m3_9 + m4_8;
+    u = fma(2.0f, -m5_7, u);
+    v = g0 * u;
+    u = 3.0f * (m4_5 - m2_8);
+    v = fma(g1, u, v);
+    u = 3.0f * (m1_8 + m3_5);
+    v = fma(g2, u, v);
+    u = -m0_9;
+    u = fma(3.0f, -m2_5, u);
+    v = fma(g3, u, v);
+    u = -m0_8;
+    u = fma(3.0f, -m1_5, u);
+    v = fma(g4, u, v);
+    u = (m0_7);
+    u += u;
+    u = fma(3.0f, m1_4 + m2_3, u);
+    v = fma(g5, u, v);
+    u = (-m0_5);
+    u += u;
+    v = fma(g7, u, v);
+    u = m0_4;
+    u = fma(3.0f, -m1_2, u);
+    v = fma(g8, u, v);
+    u = m0_3;
+    v = fma(g9, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    u = m7_9;
+    v = g0 * u;
+    u = m4_9;
+    u = fma(3.0f, -m5_8, u);
+    v = fma(g1, u, v);
+    u = (m3_9);
+    u += u;
+    u = fma(3.0f, m4_8 - m5_7, u);
+    v = fma(g2, u, v);
+    u = (-m2_9);
+    u += u;
+    v = fma(g3, u, v);
+    u = -m1_9;
+    u = fma(3.0f, -m2_8, u);
+    v = fma(g4, u, v);
+    u = 3.0f * (m1_8 + m2_7);
+    v = fma(g5, u, v);
+    u = -m0_9;
+    u = fma(3.0f, -m2_5, u);
+    v = fma(g7, u, v);
+    u = 3.0f * (m2_4 - m1_5);
+    v = fma(g8, u, v);
+    u = m1_4 + m0_7;
+    u = fma(2.0f, m2_3, u);
+    v = fma(g9, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 13 */
+    return lt ? 1u : gt ? 0u : 2u;
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-uint ptp_tri3_flags(float d)
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+void ptp_tri3_values(vec4 cp[10], vec4 eye, out float d[28])
 {
-    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);
-}
-
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-uint ptp_tri3_class_of(uint f)
-{
-    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;
+    precise float e2 = eye.z;
+    precise float u, v;
+    precise float x1 = cp[1].x;
+    precise float y1 = cp[1].y;
+    precise float w1 = cp[1].w;
+    precise float g1 = e2 * w1;
+    precise float x2 = cp[2].x;
+    precise float y2 = cp[2].y;
+    precise float w2 = cp[2].w;
+    precise float g2 = e2 * w2;
+    precise float m1_2 = x1 * y2 - y1 * x2;
+    precise float x0 = cp[0].x;
+    precise float y0 = cp[0].y;
+    precise float w0 = cp[0].w;
+    precise float g0 = e2 * w0;
+    precise float m0_2 = x0 * y2 - y0 * x2;
+    precise float m0_1 = x0 * y1 - y0 * x1;
+    u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    d[0] = v * 9.0f;
+    precise float x4 = cp[4].x;
+    precise float y4 = cp[4].y;
+    precise float w4 = cp[4].w;
+    precise float g4 = e2 * w4;
+    precise float m1_4 = x1 * y4 - y1 * x4;
+    precise float m0_4 = x0 * y4 - y0 * x4;
+    u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    precise float x3 = cp[3].x;
+    precise float y3 = cp[3].y;
+    precise float w3 = cp[3].w;
+    precise float g3 = e2 * w3;
+    precise float m2_3 = x2 * y3 - y2 * x3;
+    precise float m0_3 = x0 * y3 - y0 * x3;
+    u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
+    v = u;
+    d[1] = v * 3.0f;
+    precise float x5 = cp[5].x;
+    precise float y5 = cp[5].y;
+    precise float w5 = cp[5].w;
+    precise float g5 = e2 * w5;
+    precise float m1_5 = x1 * y5 - y1 * x5;
+    precise float m0_5 = x0 * y5 - y0 * x5;
+    u = ((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    precise float m2_4 = x2 * y4 - y2 * x4;
+    u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = u;
+    d[2] = v * 3.0f;
+    precise float x8 = cp[8].x;
+    precise float y8 = cp[8].y;
+    precise float w8 = cp[8].w;
+    precise float g8 = e2 * w8;
+    precise float m1_8 = x1 * y8 - y1 * x8;
+    precise float m0_8 = x0 * y8 - y0 * x8;
+    u = ((g0 * m1_8 - g1 * m0_8) + g8 * m0_1);
+    precise float x7 = cp[7].x;
+    precise float y7 = cp[7].y;
+    precise float w7 = cp[7].w;
+    precise float g7 = e2 * w7;
+    precise float m2_7 = x2 * y7 - y2 * x7;
+    precise float m0_7 = x0 * y7 - y0 * x7;
+    u -= ((g0 * m2_7 - g2 * m0_7) + g7 * m0_2);
+    v = u;
+    precise float m3_5 = x3 * y5 - y3 * x5;
+    u = ((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
+    v += (u + u);
+    u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
+    v += (u + u) + u;
+    d[4] = v * 0.600000024f;
+    precise float m1_7 = x1 * y7 - y1 * x7;
+    u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+    precise float x6 = cp[6].x;
+    precise float y6 = cp[6].y;
+    precise float w6 = cp[6].w;
+    precise float g6 = e2 * w6;
+    precise float m2_6 = x2 * y6 - y2 * x6;
+    precise float m0_6 = x0 * y6 - y0 * x6;
+    u -= ((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+    v = u;
+    precise float m1_3 = x1 * y3 - y1 * x3;
+    u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+    v += (u + u) + u;
+    precise float m3_4 = x3 * y4 - y3 * x4;
+    u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    v += ((u + u) + (u + u));
+    d[3] = v * 0.600000024f;
+    precise float m3_7 = x3 * y7 - y3 * x7;
+    u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
+    precise float m4_6 = x4 * y6 - y4 * x6;
+    u -= ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
+    precise float m1_6 = x1 * y6 - y1 * x6;
+    u -= ((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+    v = u;
+    u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v += (u + u) + u;
+    d[6] = v * 0.899999976f;
+    precise float m4_7 = x4 * y7 - y4 * x7;
+    precise float m5_6 = x5 * y6 - y5 * x6;
+    precise float m3_8 = x3 * y8 - y3 * x8;
+    u = -m4_7 - m5_6;
+    u = fma(2.0f, m3_8, u);
+    v = g0 * u;
+    u = 3.0f * (m3_5 - m2_7);
+    v = fma(g1, u, v);
+    u = 3.0f * (m1_7 + m3_4);
+    v = fma(g2, u, v);
+    u = (-m0_8);
+    u += u;
+    u = fma(3.0f, -m1_5 - m2_4, u);
+    v = fma(g3, u, v);
+    u = m0_7;
+    u = fma(3.0f, m2_3, u);
+    v = fma(g4, u, v);
+    u = m0_6;
+    u = fma(3.0f, m1_3, u);
+    v = fma(g5, u, v);
+    u = -m0_5;
+    v = fma(g6, u, v);
+    u = -m0_4;
+    u = fma(3.0f, -m1_2, u);
+    v = fma(g7, u, v);
+    u = (m0_3);
+    u += u;
+    v = fma(g8, u, v);
+    d[7] = v * 0.300000012f;
+    precise float m6_7 = x6 * y7 - y6 * x7;
+    u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+    precise float m3_6 = x3 * y6 - y3 * x6;
+    u += ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+    v = u;
+    u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+    v += (u + u) + u;
+    u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
+    v += ((u + u) + (u + u));
+    d[10] = v * 0.600000024f;
+    precise float m6_8 = x6 * y8 - y6 * x8;
+    u = m6_8;
+    v = g0 * u;
+    u = (-m5_6);
+    u += u;
+    u = fma(3.0f, m3_8 - m4_7, u);
+    v = fma(g1, u, v);
+    u = -m4_6;
+    u = fma(3.0f, m3_7, u);
+    v = fma(g2, u, v);
+    u = 3.0f * (-m1_8 - m2_7);
+    v = fma(g3, u, v);
+    u = m2_6;
+    u = fma(3.0f, m1_7, u);
+    v = fma(g4, u, v);
+    u = (m1_6);
+    u += u;
+    v = fma(g5, u, v);
+    u = -m2_4 - m0_8;
+    u = fma(2.0f, -m1_5, u);
+    v = fma(g6, u, v);
+    u = 3.0f * (m2_3 - m1_4);
+    v = fma(g7, u, v);
+    u = m0_6;
+    u = fma(3.0f, m1_3, u);
+    v = fma(g8, u, v);
+    d[11] = v * 0.300000012f;
+    precise float x9 = cp[9].x;
+    precise float y9 = cp[9].y;
+    precise float w9 = cp[9].w;
+    precise float g9 = e2 * w9;
+    precise float m1_9 = x1 * y9 - y1 * x9;
+    precise float m0_9 = x0 * y9 - y0 * x9;
+    u = ((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
+    precise float m2_8 = x2 * y8 - y2 * x8;
+    u -= ((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
+    v = u;
+    precise float m2_5 = x2 * y5 - y2 * x5;
+    u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v += (u + u) + u;
+    precise float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    v += ((u + u) + (u + u));
+    d[5] = v * 0.600000024f;
+    precise float m4_9 = x4 * y9 - y4 * x9;
+    u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
+    precise float m5_8 = x5 * y8 - y5 * x8;
+    u -= ((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
+    precise float m2_9 = x2 * y9 - y2 * x9;
+    u -= ((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
+    v = u;
+    u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+    v += (u + u) + u;
+    d[9] = v * 0.899999976f;
+    precise float m8_9 = x8 * y9 - y8 * x9;
+    u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
+    precise float m5_9 = x5 * y9 - y5 * x9;
+    u -= ((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
+    v = u;
+    u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
+    v += (u + u) + u;
+    u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
+    v += ((u + u) + (u + u));
+    d[14] = v * 0.600000024f;
+    u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
+    u -= ((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+    v = u;
+    d[15] = v * 3.0f;
+    u = ((g2 * m6_7 - g6 * m2_7) + g7 * m2_6);
+    u -= ((g3 * m5_6 - g5 * m3_6) + g6 * m3_5);
+    v = u;
+    u = ((g1 * m6_8 - g6 * m1_8) + g8 * m1_6);
+    v += (u + u);
+    u = -((g3 * m4_7 - g4 * m3_7) + g7 * m3_4);
+    v += (u + u) + u;
+    d[16] = v * 0.600000024f;
+    precise float m6_9 = x6 * y9 - y6 * x9;
+    precise float m7_8 = x7 * y8 - y7 * x8;
+    u = m6_9;
+    u = fma(3.0f, m7_8, u);
+    v = g1 * u;
+    u = (m6_8);
+    u += u;
+    v = fma(g2, u, v);
+    precise float m4_8 = x4 * y8 - y4 * x8;
+    precise float m5_7 = x5 * y7 - y5 * x7;
+    u = 3.0f * (-m4_8 - m5_7);
+    v = fma(g3, u, v);
+    u = -m5_6;
+    u = fma(3.0f, m3_8, u);
+    v = fma(g4, u, v);
+    u = m4_6;
+    u = fma(3.0f, m3_7, u);
+    v = fma(g5, u, v);
+    u = -m1_9 - m4_5;
+    u = fma(2.0f, -m2_8, u);
+    v = fma(g6, u, v);
+    u = 3.0f * (-m1_8 - m3_5);
+    v = fma(g7, u, v);
+    u = (m2_6);
+    u += u;
+    u = fma(3.0f, m1_7 - m3_4, u);
+    v = fma(g8, u, v);
+    u = m1_6;
+    v = fma(g9, u, v);
+    d[17] = v * 0.300000012f;
+    precise float m7_9 = x7 * y9 - y7 * x9;
+    u = (m7_9);
+    u += u;
+    v = g1 * u;
+    u = m6_9;
+    u = fma(3.0f, m7_8, u);
+    v = fma(g2, u, v);
+    u = -m4_9;
+    u = fma(3.0f, -m5_8, u);
+    v = fma(g3, u, v);
+    precise float m3_9 = x3 * y9 - y3 * x9;
+    u = m3_9;
+    u = fma(3.0f, -m5_7, u);
+    v = fma(g4, u, v);
+    u = 3.0f * (m4_7 + m3_8);
+    v = fma(g5, u, v);
+    u = -m2_9;
+    v = fma(g6, u, v);
+    u = (-m1_9);
+    u += u;
+    u = fma(3.0f, -m2_8 - m4_5, u);
+    v = fma(g7, u, v);
+    u = 3.0f * (m2_7 - m3_5);
+    v = fma(g8, u, v);
+    u = m2_6 - m3_4;
+    u = fma(2.0f, m1_7, u);
+    v = fma(g9, u, v);
+    d[18] = v * 0.300000012f;
+    u = ((g1 * m8_9 - g8 * m1_9) + g9 * m1_8);
+    u -= ((g3 * m5_9 - g5 * m3_9) + g9 * m3_5);
+    v = u;
+    u = ((g2 * m7_9 - g7 * m2_9) + g9 * m2_7);
+    v += (u + u);
+    u = -((g4 * m5_8 - g5 * m4_8) + g8 * m4_5);
+    v += (u + u) + u;
+    d[19] = v * 0.600000024f;
+    u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
+    u -= ((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
+    v = u;
+    d[20] = v * 3.0f;
+    u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+    v = u;
+    d[21] = v * 9.0f;
+    u = ((g3 * m6_8 - g6 * m3_8) + g8 * m3_6);
+    u += ((g4 * m6_7 - g6 * m4_7) + g7 * m4_6);
+    v = u;
+    d[22] = v * 3.0f;
+    u = ((g3 * m6_9 - g6 * m3_9) + g9 * m3_6);
+    u += ((g5 * m6_7 - g6 * m5_7) + g7 * m5_6);
+    v = u;
+    u = ((g3 * m7_8 - g7 * m3_8) + g8 * m3_7);
+    v += (u + u) + u;
+    u = ((g4 * m6_8 - g6 * m4_8) + g8 * m4_6);
+    v += ((u + u) + (u + u));
+    d[23] = v * 0.600000024f;
+    u = ((g3 * m7_9 - g7 * m3_9) + g9 * m3_7);
+    u += ((g4 * m6_9 - g6 * m4_9) + g9 * m4_6);
+    u += ((g5 * m6_8 - g6 * m5_8) + g8 * m5_6);
+    v = u;
+    u = ((g4 * m7_8 - g7 * m4_8) + g8 * m4_7);
+    v += (u + u) + u;
+    d[24] = v * 0.899999976f;
+    u = ((g3 * m8_9 - g8 * m3_9) + g9 * m3_8);
+    u += ((g5 * m6_9 - g6 * m5_9) + g9 * m5_6);
+    v = u;
+    u = ((g5 * m7_8 - g7 * m5_8) + g8 * m5_7);
+    v += (u + u) + u;
+    u = ((g4 * m7_9 - g7 * m4_9) + g9 * m4_7);
+    v += ((u + u) + (u + u));
+    d[25] = v * 0.600000024f;
+    u = ((g4 * m8_9 - g8 * m4_9) + g9 * m4_8);
+    u += ((g5 * m7_9 - g7 * m5_9) + g9 * m5_7);
+    v = u;
+    d[26] = v * 3.0f;
+    u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
+    v = u;
+    d[27] = v * 9.0f;
+    u = ((g0 * m6_9 - g6 * m0_9) + g9 * m0_6);
+    v = u;
+    u = ((g0 * m7_8 - g7 * m0_8) + g8 * m0_7);
+    u += ((g1 * m3_9 - g3 * m1_9) + g9 * m1_3);
+    u -= ((g2 * m5_6 - g5 * m2_6) + g6 * m2_5);
+    v += (u + u) + u;
+    u = -((g1 * m5_7 - g5 * m1_7) + g7 * m1_5);
+    u += ((g2 * m3_8 - g3 * m2_8) + g8 * m2_3);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    d[12] = v * 0.100000001f;
+    u = m3_9 + m4_8;
+    u = fma(2.0f, -m5_7, u);
+    v = g0 * u;
+    u = 3.0f * (m4_5 - m2_8);
+    v = fma(g1, u, v);
+    u = 3.0f * (m1_8 + m3_5);
+    v = fma(g2, u, v);
+    u = -m0_9;
+    u = fma(3.0f, -m2_5, u);
+    v = fma(g3, u, v);
+    u = -m0_8;
+    u = fma(3.0f, -m1_5, u);
+    v = fma(g4, u, v);
+    u = (m0_7);
+    u += u;
+    u = fma(3.0f, m1_4 + m2_3, u);
+    v = fma(g5, u, v);
+    u = (-m0_5);
+    u += u;
+    v = fma(g7, u, v);
+    u = m0_4;
+    u = fma(3.0f, -m1_2, u);
+    v = fma(g8, u, v);
+    u = m0_3;
+    v = fma(g9, u, v);
+    d[8] = v * 0.300000012f;
+    u = m7_9;
+    v = g0 * u;
+    u = m4_9;
+    u = fma(3.0f, -m5_8, u);
+    v = fma(g1, u, v);
+    u = (m3_9);
+    u += u;
+    u = fma(3.0f, m4_8 - m5_7, u);
+    v = fma(g2, u, v);
+    u = (-m2_9);
+    u += u;
+    v = fma(g3, u, v);
+    u = -m1_9;
+    u = fma(3.0f, -m2_8, u);
+    v = fma(g4, u, v);
+    u = 3.0f * (m1_8 + m2_7);
+    v = fma(g5, u, v);
+    u = -m0_9;
+    u = fma(3.0f, -m2_5, u);
+    v = fma(g7, u, v);
+    u = 3.0f * (m2_4 - m1_5);
+    v = fma(g8, u, v);
+    u = m1_4 + m0_7;
+    u = fma(2.0f, m2_3, u);
+    v = fma(g9, u, v);
+    d[13] = v * 0.300000012f;
 }
 
 void main()
 {
-    uint lid = gl_LocalInvocationID.x, q = lid / PTP_TRI3_P, t = lid % PTP_TRI3_P, i, pj, kl;
-    uint pid = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * PTP_TRI3_Q + q;
-    uint f = 0u;
-    bool live = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_TRI3_K; i += PTP_TRI3_P)
-        if (live)
-            pts[q * PTP_TRI3_K + i] = cp[pid * PTP_TRI3_K + i];
-    barrier();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_tri3_own_start[t]; i < ptp_tri3_own_start[t + 1u]; i++)
-        acc[q * PTP_TRI3_L + ptp_tri3_own_plane[i]] = 0.0f;
-    pj = ptp_tri3_pj0[t];
-    kl = ptp_tri3_kl0[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w0[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj1[t];
-    kl = ptp_tri3_kl1[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w1[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj2[t];
-    kl = ptp_tri3_kl2[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w2[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj3[t];
-    kl = ptp_tri3_kl3[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w3[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj4[t];
-    kl = ptp_tri3_kl4[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w4[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj5[t];
-    kl = ptp_tri3_kl5[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w5[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj6[t];
-    kl = ptp_tri3_kl6[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w6[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj7[t];
-    kl = ptp_tri3_kl7[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w7[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj8[t];
-    kl = ptp_tri3_kl8[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w8[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj9[t];
-    kl = ptp_tri3_kl9[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w9[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj10[t];
-    kl = ptp_tri3_kl10[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w10[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj11[t];
-    kl = ptp_tri3_kl11[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w11[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj12[t];
-    kl = ptp_tri3_kl12[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w12[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj13[t];
-    kl = ptp_tri3_kl13[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w13[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj14[t];
-    kl = ptp_tri3_kl14[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w14[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj15[t];
-    kl = ptp_tri3_kl15[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w15[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj16[t];
-    kl = ptp_tri3_kl16[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w16[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj17[t];
-    kl = ptp_tri3_kl17[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w17[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj18[t];
-    kl = ptp_tri3_kl18[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w18[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj19[t];
-    kl = ptp_tri3_kl19[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w19[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj20[t];
-    kl = ptp_tri3_kl20[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w20[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj21[t];
-    kl = ptp_tri3_kl21[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w21[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj22[t];
-    kl = ptp_tri3_kl22[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w22[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj23[t];
-    kl = ptp_tri3_kl23[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w23[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj24[t];
-    kl = ptp_tri3_kl24[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w24[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj25[t];
-    kl = ptp_tri3_kl25[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w25[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj26[t];
-    kl = ptp_tri3_kl26[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w26[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_tri3_own_start[t]; i < ptp_tri3_own_start[t + 1u]; i++) {
-        uint plane = ptp_tri3_own_plane[i];
-        float d = eye.z * acc[q * PTP_TRI3_L + plane];
-        f |= ptp_tri3_flags(d);
-    }
-    flags[q * PTP_TRI3_P + t] = f;
-    barrier();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_TRI3_P; i++)
-            f |= flags[q * PTP_TRI3_P + i];
-        cls[pid] = ptp_tri3_class_of(f);
-    }
+    uint pid = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * PTP_TRI3_Q + gl_LocalInvocationID.x;
+    vec4 p[PTP_TRI3_K];
+    if (pid >= patch_count)
+        return;
+    p[0] = cp[pid * PTP_TRI3_K + 0u];
+    p[1] = cp[pid * PTP_TRI3_K + 1u];
+    p[2] = cp[pid * PTP_TRI3_K + 2u];
+    p[3] = cp[pid * PTP_TRI3_K + 3u];
+    p[4] = cp[pid * PTP_TRI3_K + 4u];
+    p[5] = cp[pid * PTP_TRI3_K + 5u];
+    p[6] = cp[pid * PTP_TRI3_K + 6u];
+    p[7] = cp[pid * PTP_TRI3_K + 7u];
+    p[8] = cp[pid * PTP_TRI3_K + 8u];
+    p[9] = cp[pid * PTP_TRI3_K + 9u];
+    cls[pid] = ptp_tri3_classify_patch(p, eye);
 }

@@ -20,7 +20,7 @@
  * rest of the padding, must be 0). Entry point main. Dispatch ceil(patch_count / Q)
  * workgroups, in 2-D (x, y) when x would exceed the limit: workgroup (x, y) handles the
  * patches of block y * num_workgroups.x + x.
- * Schedule: 4 threads per patch, 32 patches per workgroup (128 threads), 27 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 struct Params {
@@ -44,516 +44,837 @@ fn sub_rn(b: vec4<f32>, a: vec4<f32>) -> vec4<f32> {
     return bitcast<vec4<f32>>(bitcast<vec4<u32>>(b - a) ^ vec4<u32>(params.zero));
 }
 
-const PTP_TRI3_P: u32 = 4u; /* threads per patch */
-const PTP_TRI3_Q: u32 = 32u; /* patches per workgroup */
+const PTP_TRI3_P: u32 = 1u; /* threads per patch */
+const PTP_TRI3_Q: u32 = 64u; /* patches per workgroup */
 const PTP_TRI3_K: u32 = 10u; /* control points per patch */
 const PTP_TRI3_L: u32 = 28u; /* control planes per patch */
-/* 27 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-const ptp_tri3_own_start: array<u32, 5> = array<u32, 5>(
-    0u, 7u, 13u, 20u, 28u
-);
-const ptp_tri3_own_plane: array<u32, 28> = array<u32, 28>(
-    5u, 7u, 13u, 14u, 20u, 24u, 27u, 6u, 8u, 16u, 17u, 22u, 25u, 1u, 2u, 9u,
-    11u, 18u, 19u, 26u, 0u, 3u, 4u, 10u, 12u, 15u, 21u, 23u
-);
 
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-const ptp_tri3_pj0: array<u32, 4> = array<u32, 4>(
-    0x00005u, 0x00006u, 0x00001u, 0x00000u
-);
-const ptp_tri3_kl0: array<u32, 4> = array<u32, 4>(
-    0x90001u, 0x70003u, 0x40001u, 0x20001u
-);
-const ptp_tri3_w0: array<f32, 4> = array<f32, 4>(
-    0.600000024f, 0.899999976f, 3.0f, 9.0f
-);
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-const ptp_tri3_pj1: array<u32, 4> = array<u32, 4>(
-    0x00005u, 0x00006u, 0x00001u, 0x00003u
-);
-const ptp_tri3_kl1: array<u32, 4> = array<u32, 4>(
-    0x80002u, 0x60004u, 0x30002u, 0x70001u
-);
-const ptp_tri3_w1: array<f32, 4> = array<f32, 4>(
-    -0.600000024f, -0.899999976f, -3.0f, 0.600000024f
-);
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-const ptp_tri3_pj2: array<u32, 4> = array<u32, 4>(
-    0x00005u, 0x10006u, 0x00002u, 0x00003u
-);
-const ptp_tri3_kl2: array<u32, 4> = array<u32, 4>(
-    0x50004u, 0x60002u, 0x50001u, 0x60002u
-);
-const ptp_tri3_w2: array<f32, 4> = array<f32, 4>(
-    2.4000001f, -0.899999976f, 3.0f, -0.600000024f
-);
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-const ptp_tri3_pj3: array<u32, 4> = array<u32, 4>(
-    0x10005u, 0x10006u, 0x00002u, 0x00003u
-);
-const ptp_tri3_kl3: array<u32, 4> = array<u32, 4>(
-    0x50002u, 0x40003u, 0x40002u, 0x40003u
-);
-const ptp_tri3_w3: array<f32, 4> = array<f32, 4>(
-    -1.79999995f, 2.70000005f, -3.0f, 2.4000001f
-);
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-const ptp_tri3_pj4: array<u32, 4> = array<u32, 4>(
-    0x00007u, 0x00008u, 0x00009u, 0x10003u
-);
-const ptp_tri3_kl4: array<u32, 4> = array<u32, 4>(
-    0x80003u, 0x90003u, 0x90004u, 0x30002u
-);
-const ptp_tri3_w4: array<f32, 4> = array<f32, 4>(
-    0.600000024f, 0.300000012f, 0.899999976f, -1.79999995f
-);
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-const ptp_tri3_pj5: array<u32, 4> = array<u32, 4>(
-    0x00007u, 0x00008u, 0x00009u, 0x00004u
-);
-const ptp_tri3_kl5: array<u32, 4> = array<u32, 4>(
-    0x70004u, 0x80004u, 0x80005u, 0x80001u
-);
-const ptp_tri3_w5: array<f32, 4> = array<f32, 4>(
-    -0.300000012f, 0.300000012f, -0.899999976f, 0.600000024f
-);
-
-/* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-const ptp_tri3_pj6: array<u32, 4> = array<u32, 4>(
-    0x00007u, 0x00008u, 0x10009u, 0x00004u
-);
-const ptp_tri3_kl6: array<u32, 4> = array<u32, 4>(
-    0x60005u, 0x70005u, 0x90002u, 0x70002u
-);
-const ptp_tri3_w6: array<f32, 4> = array<f32, 4>(
-    -0.300000012f, -0.600000024f, -0.899999976f, -0.600000024f
-);
-
-/* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-const ptp_tri3_pj7: array<u32, 4> = array<u32, 4>(
-    0x10007u, 0x10008u, 0x20009u, 0x00004u
-);
-const ptp_tri3_kl7: array<u32, 4> = array<u32, 4>(
-    0x70002u, 0x80002u, 0x50004u, 0x50003u
-);
-const ptp_tri3_w7: array<f32, 4> = array<f32, 4>(
-    -0.899999976f, -0.899999976f, 2.70000005f, 1.20000005f
-);
-
-/* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-const ptp_tri3_pj8: array<u32, 4> = array<u32, 4>(
-    0x10007u, 0x10008u, 0x0000bu, 0x10004u
-);
-const ptp_tri3_kl8: array<u32, 4> = array<u32, 4>(
-    0x50003u, 0x50004u, 0x80006u, 0x40002u
-);
-const ptp_tri3_w8: array<f32, 4> = array<f32, 4>(
-    0.899999976f, 0.899999976f, 0.300000012f, -1.79999995f
-);
-
-/* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-const ptp_tri3_pj9: array<u32, 4> = array<u32, 4>(
-    0x20007u, 0x20008u, 0x1000bu, 0x0000au
-);
-const ptp_tri3_kl9: array<u32, 4> = array<u32, 4>(
-    0x40003u, 0x50003u, 0x80003u, 0x70006u
-);
-const ptp_tri3_w9: array<f32, 4> = array<f32, 4>(
-    0.899999976f, 0.899999976f, 0.899999976f, 0.600000024f
-);
-
-/* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-const ptp_tri3_pj10: array<u32, 4> = array<u32, 4>(
-    0x0000du, 0x10010u, 0x1000bu, 0x1000au
-);
-const ptp_tri3_kl10: array<u32, 4> = array<u32, 4>(
-    0x90007u, 0x80006u, 0x70004u, 0x70003u
-);
-const ptp_tri3_w10: array<f32, 4> = array<f32, 4>(
-    0.300000012f, 1.20000005f, -0.899999976f, 1.79999995f
-);
-
-/* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-const ptp_tri3_pj11: array<u32, 4> = array<u32, 4>(
-    0x1000du, 0x20010u, 0x1000bu, 0x1000au
-);
-const ptp_tri3_kl11: array<u32, 4> = array<u32, 4>(
-    0x90004u, 0x70006u, 0x60005u, 0x60004u
-);
-const ptp_tri3_w11: array<f32, 4> = array<f32, 4>(
-    0.300000012f, 0.600000024f, -0.600000024f, -2.4000001f
-);
-
-/* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-const ptp_tri3_pj12: array<u32, 4> = array<u32, 4>(
-    0x1000du, 0x30010u, 0x2000bu, 0x2000au
-);
-const ptp_tri3_kl12: array<u32, 4> = array<u32, 4>(
-    0x80005u, 0x70004u, 0x70003u, 0x60003u
-);
-const ptp_tri3_w12: array<f32, 4> = array<f32, 4>(
-    -0.899999976f, -1.79999995f, 0.899999976f, 0.600000024f
-);
-
-/* Round 13: thread t adds w13[t] * term(plane | j << 16 = pj13[t], k | l << 16 = kl13[t]). */
-const ptp_tri3_pj13: array<u32, 4> = array<u32, 4>(
-    0x2000du, 0x30010u, 0x2000bu, 0x0000cu
-);
-const ptp_tri3_kl13: array<u32, 4> = array<u32, 4>(
-    0x90003u, 0x60005u, 0x60004u, 0x90006u
-);
-const ptp_tri3_w13: array<f32, 4> = array<f32, 4>(
-    0.600000024f, -0.600000024f, -0.300000012f, 0.100000001f
-);
-
-/* Round 14: thread t adds w14[t] * term(plane | j << 16 = pj14[t], k | l << 16 = kl14[t]). */
-const ptp_tri3_pj14: array<u32, 4> = array<u32, 4>(
-    0x2000du, 0x10011u, 0x10012u, 0x0000cu
-);
-const ptp_tri3_kl14: array<u32, 4> = array<u32, 4>(
-    0x80004u, 0x90006u, 0x90007u, 0x80007u
-);
-const ptp_tri3_w14: array<f32, 4> = array<f32, 4>(
-    0.899999976f, 0.300000012f, 0.600000024f, 0.300000012f
-);
-
-/* Round 15: thread t adds w15[t] * term(plane | j << 16 = pj15[t], k | l << 16 = kl15[t]). */
-const ptp_tri3_pj15: array<u32, 4> = array<u32, 4>(
-    0x2000du, 0x10011u, 0x20012u, 0x1000cu
-);
-const ptp_tri3_kl15: array<u32, 4> = array<u32, 4>(
-    0x70005u, 0x80007u, 0x90006u, 0x90003u
-);
-const ptp_tri3_w15: array<f32, 4> = array<f32, 4>(
-    -0.899999976f, 0.899999976f, 0.300000012f, 0.300000012f
-);
-
-/* Round 16: thread t adds w16[t] * term(plane | j << 16 = pj16[t], k | l << 16 = kl16[t]). */
-const ptp_tri3_pj16: array<u32, 4> = array<u32, 4>(
-    0x0000eu, 0x20011u, 0x20012u, 0x1000cu
-);
-const ptp_tri3_kl16: array<u32, 4> = array<u32, 4>(
-    0x90008u, 0x80006u, 0x80007u, 0x70005u
-);
-const ptp_tri3_w16: array<f32, 4> = array<f32, 4>(
-    0.600000024f, 0.600000024f, 0.899999976f, -0.899999976f
-);
-
-/* Round 17: thread t adds w17[t] * term(plane | j << 16 = pj17[t], k | l << 16 = kl17[t]). */
-const ptp_tri3_pj17: array<u32, 4> = array<u32, 4>(
-    0x1000eu, 0x30011u, 0x30012u, 0x2000cu
-);
-const ptp_tri3_kl17: array<u32, 4> = array<u32, 4>(
-    0x90005u, 0x80004u, 0x90004u, 0x80003u
-);
-const ptp_tri3_w17: array<f32, 4> = array<f32, 4>(
-    -0.600000024f, -0.899999976f, -0.300000012f, 0.899999976f
-);
-
-/* Round 18: thread t adds w18[t] * term(plane | j << 16 = pj18[t], k | l << 16 = kl18[t]). */
-const ptp_tri3_pj18: array<u32, 4> = array<u32, 4>(
-    0x2000eu, 0x30011u, 0x30012u, 0x2000cu
-);
-const ptp_tri3_kl18: array<u32, 4> = array<u32, 4>(
-    0x90004u, 0x70005u, 0x80005u, 0x60005u
-);
-const ptp_tri3_w18: array<f32, 4> = array<f32, 4>(
-    2.4000001f, -0.899999976f, -0.899999976f, -0.300000012f
-);
-
-/* Round 19: thread t adds w19[t] * term(plane | j << 16 = pj19[t], k | l << 16 = kl19[t]). */
-const ptp_tri3_pj19: array<u32, 4> = array<u32, 4>(
-    0x2000eu, 0x40011u, 0x40012u, 0x1000fu
-);
-const ptp_tri3_kl19: array<u32, 4> = array<u32, 4>(
-    0x80005u, 0x60005u, 0x70005u, 0x70006u
-);
-const ptp_tri3_w19: array<f32, 4> = array<f32, 4>(
-    -1.79999995f, -0.300000012f, -0.899999976f, 3.0f
-);
-
-/* Round 20: thread t adds w20[t] * term(plane | j << 16 = pj20[t], k | l << 16 = kl20[t]). */
-const ptp_tri3_pj20: array<u32, 4> = array<u32, 4>(
-    0x20014u, 0x30016u, 0x10013u, 0x3000fu
-);
-const ptp_tri3_kl20: array<u32, 4> = array<u32, 4>(
-    0x90008u, 0x80006u, 0x90008u, 0x60004u
-);
-const ptp_tri3_w20: array<f32, 4> = array<f32, 4>(
-    3.0f, 3.0f, 0.600000024f, -3.0f
-);
-
-/* Round 21: thread t adds w21[t] * term(plane | j << 16 = pj21[t], k | l << 16 = kl21[t]). */
-const ptp_tri3_pj21: array<u32, 4> = array<u32, 4>(
-    0x40014u, 0x40016u, 0x20013u, 0x30015u
-);
-const ptp_tri3_kl21: array<u32, 4> = array<u32, 4>(
-    0x90005u, 0x70006u, 0x90007u, 0x70006u
-);
-const ptp_tri3_w21: array<f32, 4> = array<f32, 4>(
-    -3.0f, 3.0f, 1.20000005f, 9.0f
-);
-
-/* Round 22: thread t adds w22[t] * term(plane | j << 16 = pj22[t], k | l << 16 = kl22[t]). */
-const ptp_tri3_pj22: array<u32, 4> = array<u32, 4>(
-    0x30018u, 0x30019u, 0x30013u, 0x30017u
-);
-const ptp_tri3_kl22: array<u32, 4> = array<u32, 4>(
-    0x90007u, 0x90008u, 0x90005u, 0x90006u
-);
-const ptp_tri3_w22: array<f32, 4> = array<f32, 4>(
-    0.899999976f, 0.600000024f, -0.600000024f, 0.600000024f
-);
-
-/* Round 23: thread t adds w23[t] * term(plane | j << 16 = pj23[t], k | l << 16 = kl23[t]). */
-const ptp_tri3_pj23: array<u32, 4> = array<u32, 4>(
-    0x40018u, 0x40019u, 0x40013u, 0x30017u
-);
-const ptp_tri3_kl23: array<u32, 4> = array<u32, 4>(
-    0x90006u, 0x90007u, 0x80005u, 0x80007u
-);
-const ptp_tri3_w23: array<f32, 4> = array<f32, 4>(
-    0.899999976f, 2.4000001f, -1.79999995f, 1.79999995f
-);
-
-/* Round 24: thread t adds w24[t] * term(plane | j << 16 = pj24[t], k | l << 16 = kl24[t]). */
-const ptp_tri3_pj24: array<u32, 4> = array<u32, 4>(
-    0x40018u, 0x50019u, 0x4001au, 0x40017u
-);
-const ptp_tri3_kl24: array<u32, 4> = array<u32, 4>(
-    0x80007u, 0x90006u, 0x90008u, 0x80006u
-);
-const ptp_tri3_w24: array<f32, 4> = array<f32, 4>(
-    2.70000005f, 0.600000024f, 3.0f, 2.4000001f
-);
-
-/* Round 25: thread t adds w25[t] * term(plane | j << 16 = pj25[t], k | l << 16 = kl25[t]). */
-const ptp_tri3_pj25: array<u32, 4> = array<u32, 4>(
-    0x50018u, 0x50019u, 0x5001au, 0x50017u
-);
-const ptp_tri3_kl25: array<u32, 4> = array<u32, 4>(
-    0x80006u, 0x80007u, 0x90007u, 0x70006u
-);
-const ptp_tri3_w25: array<f32, 4> = array<f32, 4>(
-    0.899999976f, 1.79999995f, 3.0f, 0.600000024f
-);
-
-/* Round 26: thread t adds w26[t] * term(plane | j << 16 = pj26[t], k | l << 16 = kl26[t]). */
-const ptp_tri3_pj26: array<u32, 4> = array<u32, 4>(
-    0x5001bu, 0x00006u, 0x00001u, 0x00000u
-);
-const ptp_tri3_kl26: array<u32, 4> = array<u32, 4>(
-    0x90008u, 0x00000u, 0x00000u, 0x00000u
-);
-const ptp_tri3_w26: array<f32, 4> = array<f32, 4>(
-    9.0f, 0.0f, 0.0f, 0.0f
-);
-
-var<workgroup> pts: array<vec4<f32>, PTP_TRI3_Q * PTP_TRI3_K>;
-var<workgroup> acc: array<f32, PTP_TRI3_Q * PTP_TRI3_L>;
-var<workgroup> flags: array<u32, PTP_TRI3_Q * PTP_TRI3_P>;
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-fn ptp_tri3_cross4z(a: vec4<f32>, b: vec4<f32>, c: vec4<f32>) -> f32 {
-    let z: f32 = mul_rn(a.x, (mul_rn(b.y, c.w) - mul_rn(b.w, c.y))) -
-        mul_rn(b.x, (mul_rn(a.y, c.w) - mul_rn(a.w, c.y))) +
-        mul_rn(c.x, (mul_rn(a.y, b.w) - mul_rn(a.w, b.y)));
-    return z;
+/* x * y rounded to a float: through an integer XOR with zero, 0 at run time but unknown to
+ * the compiler, which no FMA contraction can cross (WGSL has no `precise`). */
+fn ptp_tri3_mul_rn(x: f32, y: f32, zero: u32) -> f32 {
+    return bitcast<f32>(bitcast<u32>(x * y) ^ zero);
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-fn ptp_tri3_flags(d: f32) -> u32 {
-    return (select(1u, 0u, d < 0.0f)) | (select(2u, 0u, d > 0.0f));
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+fn ptp_tri3_classify_patch(cp: array<vec4<f32>, 10>, eye: vec4<f32>, zero: u32) -> u32 {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    var lt: bool;
+    var gt: bool;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_tri3_mul_rn(e2, w1, zero);
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_tri3_mul_rn(e2, w2, zero);
+    let m1_2 = ptp_tri3_mul_rn(x1, y2, zero) - ptp_tri3_mul_rn(y1, x2, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_tri3_mul_rn(e2, w0, zero);
+    let m0_2 = ptp_tri3_mul_rn(x0, y2, zero) - ptp_tri3_mul_rn(y0, x2, zero);
+    let m0_1 = ptp_tri3_mul_rn(x0, y1, zero) - ptp_tri3_mul_rn(y0, x1, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_2, zero) - ptp_tri3_mul_rn(g1, m0_2, zero)) + ptp_tri3_mul_rn(g2, m0_1, zero));
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    let x4 = cp[4].x;
+    let y4 = cp[4].y;
+    let w4 = cp[4].w;
+    let g4 = ptp_tri3_mul_rn(e2, w4, zero);
+    let m1_4 = ptp_tri3_mul_rn(x1, y4, zero) - ptp_tri3_mul_rn(y1, x4, zero);
+    let m0_4 = ptp_tri3_mul_rn(x0, y4, zero) - ptp_tri3_mul_rn(y0, x4, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_4, zero) - ptp_tri3_mul_rn(g1, m0_4, zero)) + ptp_tri3_mul_rn(g4, m0_1, zero));
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_tri3_mul_rn(e2, w3, zero);
+    let m2_3 = ptp_tri3_mul_rn(x2, y3, zero) - ptp_tri3_mul_rn(y2, x3, zero);
+    let m0_3 = ptp_tri3_mul_rn(x0, y3, zero) - ptp_tri3_mul_rn(y0, x3, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_3, zero) - ptp_tri3_mul_rn(g2, m0_3, zero)) + ptp_tri3_mul_rn(g3, m0_2, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    let x5 = cp[5].x;
+    let y5 = cp[5].y;
+    let w5 = cp[5].w;
+    let g5 = ptp_tri3_mul_rn(e2, w5, zero);
+    let m1_5 = ptp_tri3_mul_rn(x1, y5, zero) - ptp_tri3_mul_rn(y1, x5, zero);
+    let m0_5 = ptp_tri3_mul_rn(x0, y5, zero) - ptp_tri3_mul_rn(y0, x5, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_5, zero) - ptp_tri3_mul_rn(g1, m0_5, zero)) + ptp_tri3_mul_rn(g5, m0_1, zero));
+    let m2_4 = ptp_tri3_mul_rn(x2, y4, zero) - ptp_tri3_mul_rn(y2, x4, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_4, zero) - ptp_tri3_mul_rn(g2, m0_4, zero)) + ptp_tri3_mul_rn(g4, m0_2, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    let x8 = cp[8].x;
+    let y8 = cp[8].y;
+    let w8 = cp[8].w;
+    let g8 = ptp_tri3_mul_rn(e2, w8, zero);
+    let m1_8 = ptp_tri3_mul_rn(x1, y8, zero) - ptp_tri3_mul_rn(y1, x8, zero);
+    let m0_8 = ptp_tri3_mul_rn(x0, y8, zero) - ptp_tri3_mul_rn(y0, x8, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_8, zero) - ptp_tri3_mul_rn(g1, m0_8, zero)) + ptp_tri3_mul_rn(g8, m0_1, zero));
+    let x7 = cp[7].x;
+    let y7 = cp[7].y;
+    let w7 = cp[7].w;
+    let g7 = ptp_tri3_mul_rn(e2, w7, zero);
+    let m2_7 = ptp_tri3_mul_rn(x2, y7, zero) - ptp_tri3_mul_rn(y2, x7, zero);
+    let m0_7 = ptp_tri3_mul_rn(x0, y7, zero) - ptp_tri3_mul_rn(y0, x7, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_7, zero) - ptp_tri3_mul_rn(g2, m0_7, zero)) + ptp_tri3_mul_rn(g7, m0_2, zero));
+    v = u;
+    let m3_5 = ptp_tri3_mul_rn(x3, y5, zero) - ptp_tri3_mul_rn(y3, x5, zero);
+    u = ((ptp_tri3_mul_rn(g0, m3_5, zero) - ptp_tri3_mul_rn(g3, m0_5, zero)) + ptp_tri3_mul_rn(g5, m0_3, zero));
+    v += (u + u);
+    u = -((ptp_tri3_mul_rn(g1, m2_4, zero) - ptp_tri3_mul_rn(g2, m1_4, zero)) + ptp_tri3_mul_rn(g4, m1_2, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    let m1_7 = ptp_tri3_mul_rn(x1, y7, zero) - ptp_tri3_mul_rn(y1, x7, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_7, zero) - ptp_tri3_mul_rn(g1, m0_7, zero)) + ptp_tri3_mul_rn(g7, m0_1, zero));
+    let x6 = cp[6].x;
+    let y6 = cp[6].y;
+    let w6 = cp[6].w;
+    let g6 = ptp_tri3_mul_rn(e2, w6, zero);
+    let m2_6 = ptp_tri3_mul_rn(x2, y6, zero) - ptp_tri3_mul_rn(y2, x6, zero);
+    let m0_6 = ptp_tri3_mul_rn(x0, y6, zero) - ptp_tri3_mul_rn(y0, x6, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_6, zero) - ptp_tri3_mul_rn(g2, m0_6, zero)) + ptp_tri3_mul_rn(g6, m0_2, zero));
+    v = u;
+    let m1_3 = ptp_tri3_mul_rn(x1, y3, zero) - ptp_tri3_mul_rn(y1, x3, zero);
+    u = -((ptp_tri3_mul_rn(g1, m2_3, zero) - ptp_tri3_mul_rn(g2, m1_3, zero)) + ptp_tri3_mul_rn(g3, m1_2, zero));
+    v += (u + u) + u;
+    let m3_4 = ptp_tri3_mul_rn(x3, y4, zero) - ptp_tri3_mul_rn(y3, x4, zero);
+    u = ((ptp_tri3_mul_rn(g0, m3_4, zero) - ptp_tri3_mul_rn(g3, m0_4, zero)) + ptp_tri3_mul_rn(g4, m0_3, zero));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    let m3_7 = ptp_tri3_mul_rn(x3, y7, zero) - ptp_tri3_mul_rn(y3, x7, zero);
+    u = ((ptp_tri3_mul_rn(g0, m3_7, zero) - ptp_tri3_mul_rn(g3, m0_7, zero)) + ptp_tri3_mul_rn(g7, m0_3, zero));
+    let m4_6 = ptp_tri3_mul_rn(x4, y6, zero) - ptp_tri3_mul_rn(y4, x6, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m4_6, zero) - ptp_tri3_mul_rn(g4, m0_6, zero)) + ptp_tri3_mul_rn(g6, m0_4, zero));
+    let m1_6 = ptp_tri3_mul_rn(x1, y6, zero) - ptp_tri3_mul_rn(y1, x6, zero);
+    u -= ((ptp_tri3_mul_rn(g1, m2_6, zero) - ptp_tri3_mul_rn(g2, m1_6, zero)) + ptp_tri3_mul_rn(g6, m1_2, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g1, m3_4, zero) - ptp_tri3_mul_rn(g3, m1_4, zero)) + ptp_tri3_mul_rn(g4, m1_3, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    let m4_7 = ptp_tri3_mul_rn(x4, y7, zero) - ptp_tri3_mul_rn(y4, x7, zero);
+    let m5_6 = ptp_tri3_mul_rn(x5, y6, zero) - ptp_tri3_mul_rn(y5, x6, zero);
+    let m3_8 = ptp_tri3_mul_rn(x3, y8, zero) - ptp_tri3_mul_rn(y3, x8, zero);
+    u = -m4_7 - m5_6;
+    u = fma(2.0f, m3_8, u);
+    v = ptp_tri3_mul_rn(g0, u, zero);
+    u = ptp_tri3_mul_rn(3.0f, (m3_5 - m2_7), zero);
+    v = fma(g1, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m1_7 + m3_4), zero);
+    v = fma(g2, u, v);
+    u = (-m0_8);
+    u += u;
+    u = fma(3.0f, -m1_5 - m2_4, u);
+    v = fma(g3, u, v);
+    u = m0_7;
+    u = fma(3.0f, m2_3, u);
+    v = fma(g4, u, v);
+    u = m0_6;
+    u = fma(3.0f, m1_3, u);
+    v = fma(g5, u, v);
+    u = -m0_5;
+    v = fma(g6, u, v);
+    u = -m0_4;
+    u = fma(3.0f, -m1_2, u);
+    v = fma(g7, u, v);
+    u = (m0_3);
+    u += u;
+    v = fma(g8, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    let m6_7 = ptp_tri3_mul_rn(x6, y7, zero) - ptp_tri3_mul_rn(y6, x7, zero);
+    u = ((ptp_tri3_mul_rn(g0, m6_7, zero) - ptp_tri3_mul_rn(g6, m0_7, zero)) + ptp_tri3_mul_rn(g7, m0_6, zero));
+    let m3_6 = ptp_tri3_mul_rn(x3, y6, zero) - ptp_tri3_mul_rn(y3, x6, zero);
+    u += ((ptp_tri3_mul_rn(g2, m3_6, zero) - ptp_tri3_mul_rn(g3, m2_6, zero)) + ptp_tri3_mul_rn(g6, m2_3, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g1, m3_7, zero) - ptp_tri3_mul_rn(g3, m1_7, zero)) + ptp_tri3_mul_rn(g7, m1_3, zero));
+    v += (u + u) + u;
+    u = -((ptp_tri3_mul_rn(g1, m4_6, zero) - ptp_tri3_mul_rn(g4, m1_6, zero)) + ptp_tri3_mul_rn(g6, m1_4, zero));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 10 */
+    let m6_8 = ptp_tri3_mul_rn(x6, y8, zero) - ptp_tri3_mul_rn(y6, x8, zero);
+    u = m6_8;
+    v = ptp_tri3_mul_rn(g0, u, zero);
+    u = (-m5_6);
+    u += u;
+    u = fma(3.0f, m3_8 - m4_7, u);
+    v = fma(g1, u, v);
+    u = -m4_6;
+    u = fma(3.0f, m3_7, u);
+    v = fma(g2, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (-m1_8 - m2_7), zero);
+    v = fma(g3, u, v);
+    u = m2_6;
+    u = fma(3.0f, m1_7, u);
+    v = fma(g4, u, v);
+    u = (m1_6);
+    u += u;
+    v = fma(g5, u, v);
+    u = -m2_4 - m0_8;
+    u = fma(2.0f, -m1_5, u);
+    v = fma(g6, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m2_3 - m1_4), zero);
+    v = fma(g7, u, v);
+    u = m0_6;
+    u = fma(3.0f, m1_3, u);
+    v = fma(g8, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 11 */
+    let x9 = cp[9].x;
+    let y9 = cp[9].y;
+    let w9 = cp[9].w;
+    let g9 = ptp_tri3_mul_rn(e2, w9, zero);
+    let m1_9 = ptp_tri3_mul_rn(x1, y9, zero) - ptp_tri3_mul_rn(y1, x9, zero);
+    let m0_9 = ptp_tri3_mul_rn(x0, y9, zero) - ptp_tri3_mul_rn(y0, x9, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_9, zero) - ptp_tri3_mul_rn(g1, m0_9, zero)) + ptp_tri3_mul_rn(g9, m0_1, zero));
+    let m2_8 = ptp_tri3_mul_rn(x2, y8, zero) - ptp_tri3_mul_rn(y2, x8, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_8, zero) - ptp_tri3_mul_rn(g2, m0_8, zero)) + ptp_tri3_mul_rn(g8, m0_2, zero));
+    v = u;
+    let m2_5 = ptp_tri3_mul_rn(x2, y5, zero) - ptp_tri3_mul_rn(y2, x5, zero);
+    u = -((ptp_tri3_mul_rn(g1, m2_5, zero) - ptp_tri3_mul_rn(g2, m1_5, zero)) + ptp_tri3_mul_rn(g5, m1_2, zero));
+    v += (u + u) + u;
+    let m4_5 = ptp_tri3_mul_rn(x4, y5, zero) - ptp_tri3_mul_rn(y4, x5, zero);
+    u = ((ptp_tri3_mul_rn(g0, m4_5, zero) - ptp_tri3_mul_rn(g4, m0_5, zero)) + ptp_tri3_mul_rn(g5, m0_4, zero));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    let m4_9 = ptp_tri3_mul_rn(x4, y9, zero) - ptp_tri3_mul_rn(y4, x9, zero);
+    u = ((ptp_tri3_mul_rn(g0, m4_9, zero) - ptp_tri3_mul_rn(g4, m0_9, zero)) + ptp_tri3_mul_rn(g9, m0_4, zero));
+    let m5_8 = ptp_tri3_mul_rn(x5, y8, zero) - ptp_tri3_mul_rn(y5, x8, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m5_8, zero) - ptp_tri3_mul_rn(g5, m0_8, zero)) + ptp_tri3_mul_rn(g8, m0_5, zero));
+    let m2_9 = ptp_tri3_mul_rn(x2, y9, zero) - ptp_tri3_mul_rn(y2, x9, zero);
+    u -= ((ptp_tri3_mul_rn(g1, m2_9, zero) - ptp_tri3_mul_rn(g2, m1_9, zero)) + ptp_tri3_mul_rn(g9, m1_2, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g2, m4_5, zero) - ptp_tri3_mul_rn(g4, m2_5, zero)) + ptp_tri3_mul_rn(g5, m2_4, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    let m8_9 = ptp_tri3_mul_rn(x8, y9, zero) - ptp_tri3_mul_rn(y8, x9, zero);
+    u = ((ptp_tri3_mul_rn(g0, m8_9, zero) - ptp_tri3_mul_rn(g8, m0_9, zero)) + ptp_tri3_mul_rn(g9, m0_8, zero));
+    let m5_9 = ptp_tri3_mul_rn(x5, y9, zero) - ptp_tri3_mul_rn(y5, x9, zero);
+    u -= ((ptp_tri3_mul_rn(g1, m5_9, zero) - ptp_tri3_mul_rn(g5, m1_9, zero)) + ptp_tri3_mul_rn(g9, m1_5, zero));
+    v = u;
+    u = -((ptp_tri3_mul_rn(g2, m5_8, zero) - ptp_tri3_mul_rn(g5, m2_8, zero)) + ptp_tri3_mul_rn(g8, m2_5, zero));
+    v += (u + u) + u;
+    u = ((ptp_tri3_mul_rn(g2, m4_9, zero) - ptp_tri3_mul_rn(g4, m2_9, zero)) + ptp_tri3_mul_rn(g9, m2_4, zero));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 14 */
+    u = ((ptp_tri3_mul_rn(g1, m6_7, zero) - ptp_tri3_mul_rn(g6, m1_7, zero)) + ptp_tri3_mul_rn(g7, m1_6, zero));
+    u -= ((ptp_tri3_mul_rn(g3, m4_6, zero) - ptp_tri3_mul_rn(g4, m3_6, zero)) + ptp_tri3_mul_rn(g6, m3_4, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 15 */
+    u = ((ptp_tri3_mul_rn(g2, m6_7, zero) - ptp_tri3_mul_rn(g6, m2_7, zero)) + ptp_tri3_mul_rn(g7, m2_6, zero));
+    u -= ((ptp_tri3_mul_rn(g3, m5_6, zero) - ptp_tri3_mul_rn(g5, m3_6, zero)) + ptp_tri3_mul_rn(g6, m3_5, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g1, m6_8, zero) - ptp_tri3_mul_rn(g6, m1_8, zero)) + ptp_tri3_mul_rn(g8, m1_6, zero));
+    v += (u + u);
+    u = -((ptp_tri3_mul_rn(g3, m4_7, zero) - ptp_tri3_mul_rn(g4, m3_7, zero)) + ptp_tri3_mul_rn(g7, m3_4, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 16 */
+    let m6_9 = ptp_tri3_mul_rn(x6, y9, zero) - ptp_tri3_mul_rn(y6, x9, zero);
+    let m7_8 = ptp_tri3_mul_rn(x7, y8, zero) - ptp_tri3_mul_rn(y7, x8, zero);
+    u = m6_9;
+    u = fma(3.0f, m7_8, u);
+    v = ptp_tri3_mul_rn(g1, u, zero);
+    u = (m6_8);
+    u += u;
+    v = fma(g2, u, v);
+    let m4_8 = ptp_tri3_mul_rn(x4, y8, zero) - ptp_tri3_mul_rn(y4, x8, zero);
+    let m5_7 = ptp_tri3_mul_rn(x5, y7, zero) - ptp_tri3_mul_rn(y5, x7, zero);
+    u = ptp_tri3_mul_rn(3.0f, (-m4_8 - m5_7), zero);
+    v = fma(g3, u, v);
+    u = -m5_6;
+    u = fma(3.0f, m3_8, u);
+    v = fma(g4, u, v);
+    u = m4_6;
+    u = fma(3.0f, m3_7, u);
+    v = fma(g5, u, v);
+    u = -m1_9 - m4_5;
+    u = fma(2.0f, -m2_8, u);
+    v = fma(g6, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (-m1_8 - m3_5), zero);
+    v = fma(g7, u, v);
+    u = (m2_6);
+    u += u;
+    u = fma(3.0f, m1_7 - m3_4, u);
+    v = fma(g8, u, v);
+    u = m1_6;
+    v = fma(g9, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 17 */
+    let m7_9 = ptp_tri3_mul_rn(x7, y9, zero) - ptp_tri3_mul_rn(y7, x9, zero);
+    u = (m7_9);
+    u += u;
+    v = ptp_tri3_mul_rn(g1, u, zero);
+    u = m6_9;
+    u = fma(3.0f, m7_8, u);
+    v = fma(g2, u, v);
+    u = -m4_9;
+    u = fma(3.0f, -m5_8, u);
+    v = fma(g3, u, v);
+    let m3_9 = ptp_tri3_mul_rn(x3, y9, zero) - ptp_tri3_mul_rn(y3, x9, zero);
+    u = m3_9;
+    u = fma(3.0f, -m5_7, u);
+    v = fma(g4, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m4_7 + m3_8), zero);
+    v = fma(g5, u, v);
+    u = -m2_9;
+    v = fma(g6, u, v);
+    u = (-m1_9);
+    u += u;
+    u = fma(3.0f, -m2_8 - m4_5, u);
+    v = fma(g7, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m2_7 - m3_5), zero);
+    v = fma(g8, u, v);
+    u = m2_6 - m3_4;
+    u = fma(2.0f, m1_7, u);
+    v = fma(g9, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 18 */
+    u = ((ptp_tri3_mul_rn(g1, m8_9, zero) - ptp_tri3_mul_rn(g8, m1_9, zero)) + ptp_tri3_mul_rn(g9, m1_8, zero));
+    u -= ((ptp_tri3_mul_rn(g3, m5_9, zero) - ptp_tri3_mul_rn(g5, m3_9, zero)) + ptp_tri3_mul_rn(g9, m3_5, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g2, m7_9, zero) - ptp_tri3_mul_rn(g7, m2_9, zero)) + ptp_tri3_mul_rn(g9, m2_7, zero));
+    v += (u + u);
+    u = -((ptp_tri3_mul_rn(g4, m5_8, zero) - ptp_tri3_mul_rn(g5, m4_8, zero)) + ptp_tri3_mul_rn(g8, m4_5, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 19 */
+    u = ((ptp_tri3_mul_rn(g2, m8_9, zero) - ptp_tri3_mul_rn(g8, m2_9, zero)) + ptp_tri3_mul_rn(g9, m2_8, zero));
+    u -= ((ptp_tri3_mul_rn(g4, m5_9, zero) - ptp_tri3_mul_rn(g5, m4_9, zero)) + ptp_tri3_mul_rn(g9, m4_5, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 20 */
+    u = ((ptp_tri3_mul_rn(g3, m6_7, zero) - ptp_tri3_mul_rn(g6, m3_7, zero)) + ptp_tri3_mul_rn(g7, m3_6, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 21 */
+    u = ((ptp_tri3_mul_rn(g3, m6_8, zero) - ptp_tri3_mul_rn(g6, m3_8, zero)) + ptp_tri3_mul_rn(g8, m3_6, zero));
+    u += ((ptp_tri3_mul_rn(g4, m6_7, zero) - ptp_tri3_mul_rn(g6, m4_7, zero)) + ptp_tri3_mul_rn(g7, m4_6, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 22 */
+    u = ((ptp_tri3_mul_rn(g3, m6_9, zero) - ptp_tri3_mul_rn(g6, m3_9, zero)) + ptp_tri3_mul_rn(g9, m3_6, zero));
+    u += ((ptp_tri3_mul_rn(g5, m6_7, zero) - ptp_tri3_mul_rn(g6, m5_7, zero)) + ptp_tri3_mul_rn(g7, m5_6, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g3, m7_8, zero) - ptp_tri3_mul_rn(g7, m3_8, zero)) + ptp_tri3_mul_rn(g8, m3_7, zero));
+    v += (u + u) + u;
+    u = ((ptp_tri3_mul_rn(g4, m6_8, zero) - ptp_tri3_mul_rn(g6, m4_8, zero)) + ptp_tri3_mul_rn(g8, m4_6, zero));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 23 */
+    u = ((ptp_tri3_mul_rn(g3, m7_9, zero) - ptp_tri3_mul_rn(g7, m3_9, zero)) + ptp_tri3_mul_rn(g9, m3_7, zero));
+    u += ((ptp_tri3_mul_rn(g4, m6_9, zero) - ptp_tri3_mul_rn(g6, m4_9, zero)) + ptp_tri3_mul_rn(g9, m4_6, zero));
+    u += ((ptp_tri3_mul_rn(g5, m6_8, zero) - ptp_tri3_mul_rn(g6, m5_8, zero)) + ptp_tri3_mul_rn(g8, m5_6, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g4, m7_8, zero) - ptp_tri3_mul_rn(g7, m4_8, zero)) + ptp_tri3_mul_rn(g8, m4_7, zero));
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 24 */
+    u = ((ptp_tri3_mul_rn(g3, m8_9, zero) - ptp_tri3_mul_rn(g8, m3_9, zero)) + ptp_tri3_mul_rn(g9, m3_8, zero));
+    u += ((ptp_tri3_mul_rn(g5, m6_9, zero) - ptp_tri3_mul_rn(g6, m5_9, zero)) + ptp_tri3_mul_rn(g9, m5_6, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g5, m7_8, zero) - ptp_tri3_mul_rn(g7, m5_8, zero)) + ptp_tri3_mul_rn(g8, m5_7, zero));
+    v += (u + u) + u;
+    u = ((ptp_tri3_mul_rn(g4, m7_9, zero) - ptp_tri3_mul_rn(g7, m4_9, zero)) + ptp_tri3_mul_rn(g9, m4_7, zero));
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 25 */
+    u = ((ptp_tri3_mul_rn(g4, m8_9, zero) - ptp_tri3_mul_rn(g8, m4_9, zero)) + ptp_tri3_mul_rn(g9, m4_8, zero));
+    u += ((ptp_tri3_mul_rn(g5, m7_9, zero) - ptp_tri3_mul_rn(g7, m5_9, zero)) + ptp_tri3_mul_rn(g9, m5_7, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 26 */
+    u = ((ptp_tri3_mul_rn(g5, m8_9, zero) - ptp_tri3_mul_rn(g8, m5_9, zero)) + ptp_tri3_mul_rn(g9, m5_8, zero));
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 27 */
+    u = ((ptp_tri3_mul_rn(g0, m6_9, zero) - ptp_tri3_mul_rn(g6, m0_9, zero)) + ptp_tri3_mul_rn(g9, m0_6, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g0, m7_8, zero) - ptp_tri3_mul_rn(g7, m0_8, zero)) + ptp_tri3_mul_rn(g8, m0_7, zero));
+    u += ((ptp_tri3_mul_rn(g1, m3_9, zero) - ptp_tri3_mul_rn(g3, m1_9, zero)) + ptp_tri3_mul_rn(g9, m1_3, zero));
+    u -= ((ptp_tri3_mul_rn(g2, m5_6, zero) - ptp_tri3_mul_rn(g5, m2_6, zero)) + ptp_tri3_mul_rn(g6, m2_5, zero));
+    v += (u + u) + u;
+    u = -((ptp_tri3_mul_rn(g1, m5_7, zero) - ptp_tri3_mul_rn(g5, m1_7, zero)) + ptp_tri3_mul_rn(g7, m1_5, zero));
+    u += ((ptp_tri3_mul_rn(g2, m3_8, zero) - ptp_tri3_mul_rn(g3, m2_8, zero)) + ptp_tri3_mul_rn(g8, m2_3, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 12 */
+    u = m3_9 + m4_8;
+    u = fma(2.0f, -m5_7, u);
+    v = ptp_tri3_mul_rn(g0, u, zero);
+    u = ptp_tri3_mul_rn(3.0f, (m4_5 - m2_8), zero);
+    v = fma(g1, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m1_8 + m3_5), zero);
+    v = fma(g2, u, v);
+    u = -m0_9;
+    u = fma(3.0f, -m2_5, u);
+    v = fma(g3, u, v);
+    u = -m0_8;
+    u = fma(3.0f, -m1_5, u);
+    v = fma(g4, u, v);
+    u = (m0_7);
+    u += u;
+    u = fma(3.0f, m1_4 + m2_3, u);
+    v = fma(g5, u, v);
+    u = (-m0_5);
+    u += u;
+    v = fma(g7, u, v);
+    u = m0_4;
+    u = fma(3.0f, -m1_2, u);
+    v = fma(g8, u, v);
+    u = m0_3;
+    v = fma(g9, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    u = m7_9;
+    v = ptp_tri3_mul_rn(g0, u, zero);
+    u = m4_9;
+    u = fma(3.0f, -m5_8, u);
+    v = fma(g1, u, v);
+    u = (m3_9);
+    u += u;
+    u = fma(3.0f, m4_8 - m5_7, u);
+    v = fma(g2, u, v);
+    u = (-m2_9);
+    u += u;
+    v = fma(g3, u, v);
+    u = -m1_9;
+    u = fma(3.0f, -m2_8, u);
+    v = fma(g4, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m1_8 + m2_7), zero);
+    v = fma(g5, u, v);
+    u = -m0_9;
+    u = fma(3.0f, -m2_5, u);
+    v = fma(g7, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m2_4 - m1_5), zero);
+    v = fma(g8, u, v);
+    u = m1_4 + m0_7;
+    u = fma(2.0f, m2_3, u);
+    v = fma(g9, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 13 */
+    return select(select(2u, 0u, gt), 1u, lt);
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-fn ptp_tri3_class_of(f: u32) -> u32 {
-    return select(select(2u, 0u, (f & 2u) == 0u), 1u, (f & 1u) == 0u);
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+fn ptp_tri3_values(cp: array<vec4<f32>, 10>, eye: vec4<f32>, zero: u32,
+        d: ptr<function, array<f32, 28>>) {
+    let e2: f32 = eye.z;
+    var u: f32;
+    var v: f32;
+    let x1 = cp[1].x;
+    let y1 = cp[1].y;
+    let w1 = cp[1].w;
+    let g1 = ptp_tri3_mul_rn(e2, w1, zero);
+    let x2 = cp[2].x;
+    let y2 = cp[2].y;
+    let w2 = cp[2].w;
+    let g2 = ptp_tri3_mul_rn(e2, w2, zero);
+    let m1_2 = ptp_tri3_mul_rn(x1, y2, zero) - ptp_tri3_mul_rn(y1, x2, zero);
+    let x0 = cp[0].x;
+    let y0 = cp[0].y;
+    let w0 = cp[0].w;
+    let g0 = ptp_tri3_mul_rn(e2, w0, zero);
+    let m0_2 = ptp_tri3_mul_rn(x0, y2, zero) - ptp_tri3_mul_rn(y0, x2, zero);
+    let m0_1 = ptp_tri3_mul_rn(x0, y1, zero) - ptp_tri3_mul_rn(y0, x1, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_2, zero) - ptp_tri3_mul_rn(g1, m0_2, zero)) + ptp_tri3_mul_rn(g2, m0_1, zero));
+    v = u;
+    (*d)[0] = v * 9.0f;
+    let x4 = cp[4].x;
+    let y4 = cp[4].y;
+    let w4 = cp[4].w;
+    let g4 = ptp_tri3_mul_rn(e2, w4, zero);
+    let m1_4 = ptp_tri3_mul_rn(x1, y4, zero) - ptp_tri3_mul_rn(y1, x4, zero);
+    let m0_4 = ptp_tri3_mul_rn(x0, y4, zero) - ptp_tri3_mul_rn(y0, x4, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_4, zero) - ptp_tri3_mul_rn(g1, m0_4, zero)) + ptp_tri3_mul_rn(g4, m0_1, zero));
+    let x3 = cp[3].x;
+    let y3 = cp[3].y;
+    let w3 = cp[3].w;
+    let g3 = ptp_tri3_mul_rn(e2, w3, zero);
+    let m2_3 = ptp_tri3_mul_rn(x2, y3, zero) - ptp_tri3_mul_rn(y2, x3, zero);
+    let m0_3 = ptp_tri3_mul_rn(x0, y3, zero) - ptp_tri3_mul_rn(y0, x3, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_3, zero) - ptp_tri3_mul_rn(g2, m0_3, zero)) + ptp_tri3_mul_rn(g3, m0_2, zero));
+    v = u;
+    (*d)[1] = v * 3.0f;
+    let x5 = cp[5].x;
+    let y5 = cp[5].y;
+    let w5 = cp[5].w;
+    let g5 = ptp_tri3_mul_rn(e2, w5, zero);
+    let m1_5 = ptp_tri3_mul_rn(x1, y5, zero) - ptp_tri3_mul_rn(y1, x5, zero);
+    let m0_5 = ptp_tri3_mul_rn(x0, y5, zero) - ptp_tri3_mul_rn(y0, x5, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_5, zero) - ptp_tri3_mul_rn(g1, m0_5, zero)) + ptp_tri3_mul_rn(g5, m0_1, zero));
+    let m2_4 = ptp_tri3_mul_rn(x2, y4, zero) - ptp_tri3_mul_rn(y2, x4, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_4, zero) - ptp_tri3_mul_rn(g2, m0_4, zero)) + ptp_tri3_mul_rn(g4, m0_2, zero));
+    v = u;
+    (*d)[2] = v * 3.0f;
+    let x8 = cp[8].x;
+    let y8 = cp[8].y;
+    let w8 = cp[8].w;
+    let g8 = ptp_tri3_mul_rn(e2, w8, zero);
+    let m1_8 = ptp_tri3_mul_rn(x1, y8, zero) - ptp_tri3_mul_rn(y1, x8, zero);
+    let m0_8 = ptp_tri3_mul_rn(x0, y8, zero) - ptp_tri3_mul_rn(y0, x8, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_8, zero) - ptp_tri3_mul_rn(g1, m0_8, zero)) + ptp_tri3_mul_rn(g8, m0_1, zero));
+    let x7 = cp[7].x;
+    let y7 = cp[7].y;
+    let w7 = cp[7].w;
+    let g7 = ptp_tri3_mul_rn(e2, w7, zero);
+    let m2_7 = ptp_tri3_mul_rn(x2, y7, zero) - ptp_tri3_mul_rn(y2, x7, zero);
+    let m0_7 = ptp_tri3_mul_rn(x0, y7, zero) - ptp_tri3_mul_rn(y0, x7, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_7, zero) - ptp_tri3_mul_rn(g2, m0_7, zero)) + ptp_tri3_mul_rn(g7, m0_2, zero));
+    v = u;
+    let m3_5 = ptp_tri3_mul_rn(x3, y5, zero) - ptp_tri3_mul_rn(y3, x5, zero);
+    u = ((ptp_tri3_mul_rn(g0, m3_5, zero) - ptp_tri3_mul_rn(g3, m0_5, zero)) + ptp_tri3_mul_rn(g5, m0_3, zero));
+    v += (u + u);
+    u = -((ptp_tri3_mul_rn(g1, m2_4, zero) - ptp_tri3_mul_rn(g2, m1_4, zero)) + ptp_tri3_mul_rn(g4, m1_2, zero));
+    v += (u + u) + u;
+    (*d)[4] = v * 0.600000024f;
+    let m1_7 = ptp_tri3_mul_rn(x1, y7, zero) - ptp_tri3_mul_rn(y1, x7, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_7, zero) - ptp_tri3_mul_rn(g1, m0_7, zero)) + ptp_tri3_mul_rn(g7, m0_1, zero));
+    let x6 = cp[6].x;
+    let y6 = cp[6].y;
+    let w6 = cp[6].w;
+    let g6 = ptp_tri3_mul_rn(e2, w6, zero);
+    let m2_6 = ptp_tri3_mul_rn(x2, y6, zero) - ptp_tri3_mul_rn(y2, x6, zero);
+    let m0_6 = ptp_tri3_mul_rn(x0, y6, zero) - ptp_tri3_mul_rn(y0, x6, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_6, zero) - ptp_tri3_mul_rn(g2, m0_6, zero)) + ptp_tri3_mul_rn(g6, m0_2, zero));
+    v = u;
+    let m1_3 = ptp_tri3_mul_rn(x1, y3, zero) - ptp_tri3_mul_rn(y1, x3, zero);
+    u = -((ptp_tri3_mul_rn(g1, m2_3, zero) - ptp_tri3_mul_rn(g2, m1_3, zero)) + ptp_tri3_mul_rn(g3, m1_2, zero));
+    v += (u + u) + u;
+    let m3_4 = ptp_tri3_mul_rn(x3, y4, zero) - ptp_tri3_mul_rn(y3, x4, zero);
+    u = ((ptp_tri3_mul_rn(g0, m3_4, zero) - ptp_tri3_mul_rn(g3, m0_4, zero)) + ptp_tri3_mul_rn(g4, m0_3, zero));
+    v += ((u + u) + (u + u));
+    (*d)[3] = v * 0.600000024f;
+    let m3_7 = ptp_tri3_mul_rn(x3, y7, zero) - ptp_tri3_mul_rn(y3, x7, zero);
+    u = ((ptp_tri3_mul_rn(g0, m3_7, zero) - ptp_tri3_mul_rn(g3, m0_7, zero)) + ptp_tri3_mul_rn(g7, m0_3, zero));
+    let m4_6 = ptp_tri3_mul_rn(x4, y6, zero) - ptp_tri3_mul_rn(y4, x6, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m4_6, zero) - ptp_tri3_mul_rn(g4, m0_6, zero)) + ptp_tri3_mul_rn(g6, m0_4, zero));
+    let m1_6 = ptp_tri3_mul_rn(x1, y6, zero) - ptp_tri3_mul_rn(y1, x6, zero);
+    u -= ((ptp_tri3_mul_rn(g1, m2_6, zero) - ptp_tri3_mul_rn(g2, m1_6, zero)) + ptp_tri3_mul_rn(g6, m1_2, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g1, m3_4, zero) - ptp_tri3_mul_rn(g3, m1_4, zero)) + ptp_tri3_mul_rn(g4, m1_3, zero));
+    v += (u + u) + u;
+    (*d)[6] = v * 0.899999976f;
+    let m4_7 = ptp_tri3_mul_rn(x4, y7, zero) - ptp_tri3_mul_rn(y4, x7, zero);
+    let m5_6 = ptp_tri3_mul_rn(x5, y6, zero) - ptp_tri3_mul_rn(y5, x6, zero);
+    let m3_8 = ptp_tri3_mul_rn(x3, y8, zero) - ptp_tri3_mul_rn(y3, x8, zero);
+    u = -m4_7 - m5_6;
+    u = fma(2.0f, m3_8, u);
+    v = ptp_tri3_mul_rn(g0, u, zero);
+    u = ptp_tri3_mul_rn(3.0f, (m3_5 - m2_7), zero);
+    v = fma(g1, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m1_7 + m3_4), zero);
+    v = fma(g2, u, v);
+    u = (-m0_8);
+    u += u;
+    u = fma(3.0f, -m1_5 - m2_4, u);
+    v = fma(g3, u, v);
+    u = m0_7;
+    u = fma(3.0f, m2_3, u);
+    v = fma(g4, u, v);
+    u = m0_6;
+    u = fma(3.0f, m1_3, u);
+    v = fma(g5, u, v);
+    u = -m0_5;
+    v = fma(g6, u, v);
+    u = -m0_4;
+    u = fma(3.0f, -m1_2, u);
+    v = fma(g7, u, v);
+    u = (m0_3);
+    u += u;
+    v = fma(g8, u, v);
+    (*d)[7] = v * 0.300000012f;
+    let m6_7 = ptp_tri3_mul_rn(x6, y7, zero) - ptp_tri3_mul_rn(y6, x7, zero);
+    u = ((ptp_tri3_mul_rn(g0, m6_7, zero) - ptp_tri3_mul_rn(g6, m0_7, zero)) + ptp_tri3_mul_rn(g7, m0_6, zero));
+    let m3_6 = ptp_tri3_mul_rn(x3, y6, zero) - ptp_tri3_mul_rn(y3, x6, zero);
+    u += ((ptp_tri3_mul_rn(g2, m3_6, zero) - ptp_tri3_mul_rn(g3, m2_6, zero)) + ptp_tri3_mul_rn(g6, m2_3, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g1, m3_7, zero) - ptp_tri3_mul_rn(g3, m1_7, zero)) + ptp_tri3_mul_rn(g7, m1_3, zero));
+    v += (u + u) + u;
+    u = -((ptp_tri3_mul_rn(g1, m4_6, zero) - ptp_tri3_mul_rn(g4, m1_6, zero)) + ptp_tri3_mul_rn(g6, m1_4, zero));
+    v += ((u + u) + (u + u));
+    (*d)[10] = v * 0.600000024f;
+    let m6_8 = ptp_tri3_mul_rn(x6, y8, zero) - ptp_tri3_mul_rn(y6, x8, zero);
+    u = m6_8;
+    v = ptp_tri3_mul_rn(g0, u, zero);
+    u = (-m5_6);
+    u += u;
+    u = fma(3.0f, m3_8 - m4_7, u);
+    v = fma(g1, u, v);
+    u = -m4_6;
+    u = fma(3.0f, m3_7, u);
+    v = fma(g2, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (-m1_8 - m2_7), zero);
+    v = fma(g3, u, v);
+    u = m2_6;
+    u = fma(3.0f, m1_7, u);
+    v = fma(g4, u, v);
+    u = (m1_6);
+    u += u;
+    v = fma(g5, u, v);
+    u = -m2_4 - m0_8;
+    u = fma(2.0f, -m1_5, u);
+    v = fma(g6, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m2_3 - m1_4), zero);
+    v = fma(g7, u, v);
+    u = m0_6;
+    u = fma(3.0f, m1_3, u);
+    v = fma(g8, u, v);
+    (*d)[11] = v * 0.300000012f;
+    let x9 = cp[9].x;
+    let y9 = cp[9].y;
+    let w9 = cp[9].w;
+    let g9 = ptp_tri3_mul_rn(e2, w9, zero);
+    let m1_9 = ptp_tri3_mul_rn(x1, y9, zero) - ptp_tri3_mul_rn(y1, x9, zero);
+    let m0_9 = ptp_tri3_mul_rn(x0, y9, zero) - ptp_tri3_mul_rn(y0, x9, zero);
+    u = ((ptp_tri3_mul_rn(g0, m1_9, zero) - ptp_tri3_mul_rn(g1, m0_9, zero)) + ptp_tri3_mul_rn(g9, m0_1, zero));
+    let m2_8 = ptp_tri3_mul_rn(x2, y8, zero) - ptp_tri3_mul_rn(y2, x8, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m2_8, zero) - ptp_tri3_mul_rn(g2, m0_8, zero)) + ptp_tri3_mul_rn(g8, m0_2, zero));
+    v = u;
+    let m2_5 = ptp_tri3_mul_rn(x2, y5, zero) - ptp_tri3_mul_rn(y2, x5, zero);
+    u = -((ptp_tri3_mul_rn(g1, m2_5, zero) - ptp_tri3_mul_rn(g2, m1_5, zero)) + ptp_tri3_mul_rn(g5, m1_2, zero));
+    v += (u + u) + u;
+    let m4_5 = ptp_tri3_mul_rn(x4, y5, zero) - ptp_tri3_mul_rn(y4, x5, zero);
+    u = ((ptp_tri3_mul_rn(g0, m4_5, zero) - ptp_tri3_mul_rn(g4, m0_5, zero)) + ptp_tri3_mul_rn(g5, m0_4, zero));
+    v += ((u + u) + (u + u));
+    (*d)[5] = v * 0.600000024f;
+    let m4_9 = ptp_tri3_mul_rn(x4, y9, zero) - ptp_tri3_mul_rn(y4, x9, zero);
+    u = ((ptp_tri3_mul_rn(g0, m4_9, zero) - ptp_tri3_mul_rn(g4, m0_9, zero)) + ptp_tri3_mul_rn(g9, m0_4, zero));
+    let m5_8 = ptp_tri3_mul_rn(x5, y8, zero) - ptp_tri3_mul_rn(y5, x8, zero);
+    u -= ((ptp_tri3_mul_rn(g0, m5_8, zero) - ptp_tri3_mul_rn(g5, m0_8, zero)) + ptp_tri3_mul_rn(g8, m0_5, zero));
+    let m2_9 = ptp_tri3_mul_rn(x2, y9, zero) - ptp_tri3_mul_rn(y2, x9, zero);
+    u -= ((ptp_tri3_mul_rn(g1, m2_9, zero) - ptp_tri3_mul_rn(g2, m1_9, zero)) + ptp_tri3_mul_rn(g9, m1_2, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g2, m4_5, zero) - ptp_tri3_mul_rn(g4, m2_5, zero)) + ptp_tri3_mul_rn(g5, m2_4, zero));
+    v += (u + u) + u;
+    (*d)[9] = v * 0.899999976f;
+    let m8_9 = ptp_tri3_mul_rn(x8, y9, zero) - ptp_tri3_mul_rn(y8, x9, zero);
+    u = ((ptp_tri3_mul_rn(g0, m8_9, zero) - ptp_tri3_mul_rn(g8, m0_9, zero)) + ptp_tri3_mul_rn(g9, m0_8, zero));
+    let m5_9 = ptp_tri3_mul_rn(x5, y9, zero) - ptp_tri3_mul_rn(y5, x9, zero);
+    u -= ((ptp_tri3_mul_rn(g1, m5_9, zero) - ptp_tri3_mul_rn(g5, m1_9, zero)) + ptp_tri3_mul_rn(g9, m1_5, zero));
+    v = u;
+    u = -((ptp_tri3_mul_rn(g2, m5_8, zero) - ptp_tri3_mul_rn(g5, m2_8, zero)) + ptp_tri3_mul_rn(g8, m2_5, zero));
+    v += (u + u) + u;
+    u = ((ptp_tri3_mul_rn(g2, m4_9, zero) - ptp_tri3_mul_rn(g4, m2_9, zero)) + ptp_tri3_mul_rn(g9, m2_4, zero));
+    v += ((u + u) + (u + u));
+    (*d)[14] = v * 0.600000024f;
+    u = ((ptp_tri3_mul_rn(g1, m6_7, zero) - ptp_tri3_mul_rn(g6, m1_7, zero)) + ptp_tri3_mul_rn(g7, m1_6, zero));
+    u -= ((ptp_tri3_mul_rn(g3, m4_6, zero) - ptp_tri3_mul_rn(g4, m3_6, zero)) + ptp_tri3_mul_rn(g6, m3_4, zero));
+    v = u;
+    (*d)[15] = v * 3.0f;
+    u = ((ptp_tri3_mul_rn(g2, m6_7, zero) - ptp_tri3_mul_rn(g6, m2_7, zero)) + ptp_tri3_mul_rn(g7, m2_6, zero));
+    u -= ((ptp_tri3_mul_rn(g3, m5_6, zero) - ptp_tri3_mul_rn(g5, m3_6, zero)) + ptp_tri3_mul_rn(g6, m3_5, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g1, m6_8, zero) - ptp_tri3_mul_rn(g6, m1_8, zero)) + ptp_tri3_mul_rn(g8, m1_6, zero));
+    v += (u + u);
+    u = -((ptp_tri3_mul_rn(g3, m4_7, zero) - ptp_tri3_mul_rn(g4, m3_7, zero)) + ptp_tri3_mul_rn(g7, m3_4, zero));
+    v += (u + u) + u;
+    (*d)[16] = v * 0.600000024f;
+    let m6_9 = ptp_tri3_mul_rn(x6, y9, zero) - ptp_tri3_mul_rn(y6, x9, zero);
+    let m7_8 = ptp_tri3_mul_rn(x7, y8, zero) - ptp_tri3_mul_rn(y7, x8, zero);
+    u = m6_9;
+    u = fma(3.0f, m7_8, u);
+    v = ptp_tri3_mul_rn(g1, u, zero);
+    u = (m6_8);
+    u += u;
+    v = fma(g2, u, v);
+    let m4_8 = ptp_tri3_mul_rn(x4, y8, zero) - ptp_tri3_mul_rn(y4, x8, zero);
+    let m5_7 = ptp_tri3_mul_rn(x5, y7, zero) - ptp_tri3_mul_rn(y5, x7, zero);
+    u = ptp_tri3_mul_rn(3.0f, (-m4_8 - m5_7), zero);
+    v = fma(g3, u, v);
+    u = -m5_6;
+    u = fma(3.0f, m3_8, u);
+    v = fma(g4, u, v);
+    u = m4_6;
+    u = fma(3.0f, m3_7, u);
+    v = fma(g5, u, v);
+    u = -m1_9 - m4_5;
+    u = fma(2.0f, -m2_8, u);
+    v = fma(g6, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (-m1_8 - m3_5), zero);
+    v = fma(g7, u, v);
+    u = (m2_6);
+    u += u;
+    u = fma(3.0f, m1_7 - m3_4, u);
+    v = fma(g8, u, v);
+    u = m1_6;
+    v = fma(g9, u, v);
+    (*d)[17] = v * 0.300000012f;
+    let m7_9 = ptp_tri3_mul_rn(x7, y9, zero) - ptp_tri3_mul_rn(y7, x9, zero);
+    u = (m7_9);
+    u += u;
+    v = ptp_tri3_mul_rn(g1, u, zero);
+    u = m6_9;
+    u = fma(3.0f, m7_8, u);
+    v = fma(g2, u, v);
+    u = -m4_9;
+    u = fma(3.0f, -m5_8, u);
+    v = fma(g3, u, v);
+    let m3_9 = ptp_tri3_mul_rn(x3, y9, zero) - ptp_tri3_mul_rn(y3, x9, zero);
+    u = m3_9;
+    u = fma(3.0f, -m5_7, u);
+    v = fma(g4, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m4_7 + m3_8), zero);
+    v = fma(g5, u, v);
+    u = -m2_9;
+    v = fma(g6, u, v);
+    u = (-m1_9);
+    u += u;
+    u = fma(3.0f, -m2_8 - m4_5, u);
+    v = fma(g7, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m2_7 - m3_5), zero);
+    v = fma(g8, u, v);
+    u = m2_6 - m3_4;
+    u = fma(2.0f, m1_7, u);
+    v = fma(g9, u, v);
+    (*d)[18] = v * 0.300000012f;
+    u = ((ptp_tri3_mul_rn(g1, m8_9, zero) - ptp_tri3_mul_rn(g8, m1_9, zero)) + ptp_tri3_mul_rn(g9, m1_8, zero));
+    u -= ((ptp_tri3_mul_rn(g3, m5_9, zero) - ptp_tri3_mul_rn(g5, m3_9, zero)) + ptp_tri3_mul_rn(g9, m3_5, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g2, m7_9, zero) - ptp_tri3_mul_rn(g7, m2_9, zero)) + ptp_tri3_mul_rn(g9, m2_7, zero));
+    v += (u + u);
+    u = -((ptp_tri3_mul_rn(g4, m5_8, zero) - ptp_tri3_mul_rn(g5, m4_8, zero)) + ptp_tri3_mul_rn(g8, m4_5, zero));
+    v += (u + u) + u;
+    (*d)[19] = v * 0.600000024f;
+    u = ((ptp_tri3_mul_rn(g2, m8_9, zero) - ptp_tri3_mul_rn(g8, m2_9, zero)) + ptp_tri3_mul_rn(g9, m2_8, zero));
+    u -= ((ptp_tri3_mul_rn(g4, m5_9, zero) - ptp_tri3_mul_rn(g5, m4_9, zero)) + ptp_tri3_mul_rn(g9, m4_5, zero));
+    v = u;
+    (*d)[20] = v * 3.0f;
+    u = ((ptp_tri3_mul_rn(g3, m6_7, zero) - ptp_tri3_mul_rn(g6, m3_7, zero)) + ptp_tri3_mul_rn(g7, m3_6, zero));
+    v = u;
+    (*d)[21] = v * 9.0f;
+    u = ((ptp_tri3_mul_rn(g3, m6_8, zero) - ptp_tri3_mul_rn(g6, m3_8, zero)) + ptp_tri3_mul_rn(g8, m3_6, zero));
+    u += ((ptp_tri3_mul_rn(g4, m6_7, zero) - ptp_tri3_mul_rn(g6, m4_7, zero)) + ptp_tri3_mul_rn(g7, m4_6, zero));
+    v = u;
+    (*d)[22] = v * 3.0f;
+    u = ((ptp_tri3_mul_rn(g3, m6_9, zero) - ptp_tri3_mul_rn(g6, m3_9, zero)) + ptp_tri3_mul_rn(g9, m3_6, zero));
+    u += ((ptp_tri3_mul_rn(g5, m6_7, zero) - ptp_tri3_mul_rn(g6, m5_7, zero)) + ptp_tri3_mul_rn(g7, m5_6, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g3, m7_8, zero) - ptp_tri3_mul_rn(g7, m3_8, zero)) + ptp_tri3_mul_rn(g8, m3_7, zero));
+    v += (u + u) + u;
+    u = ((ptp_tri3_mul_rn(g4, m6_8, zero) - ptp_tri3_mul_rn(g6, m4_8, zero)) + ptp_tri3_mul_rn(g8, m4_6, zero));
+    v += ((u + u) + (u + u));
+    (*d)[23] = v * 0.600000024f;
+    u = ((ptp_tri3_mul_rn(g3, m7_9, zero) - ptp_tri3_mul_rn(g7, m3_9, zero)) + ptp_tri3_mul_rn(g9, m3_7, zero));
+    u += ((ptp_tri3_mul_rn(g4, m6_9, zero) - ptp_tri3_mul_rn(g6, m4_9, zero)) + ptp_tri3_mul_rn(g9, m4_6, zero));
+    u += ((ptp_tri3_mul_rn(g5, m6_8, zero) - ptp_tri3_mul_rn(g6, m5_8, zero)) + ptp_tri3_mul_rn(g8, m5_6, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g4, m7_8, zero) - ptp_tri3_mul_rn(g7, m4_8, zero)) + ptp_tri3_mul_rn(g8, m4_7, zero));
+    v += (u + u) + u;
+    (*d)[24] = v * 0.899999976f;
+    u = ((ptp_tri3_mul_rn(g3, m8_9, zero) - ptp_tri3_mul_rn(g8, m3_9, zero)) + ptp_tri3_mul_rn(g9, m3_8, zero));
+    u += ((ptp_tri3_mul_rn(g5, m6_9, zero) - ptp_tri3_mul_rn(g6, m5_9, zero)) + ptp_tri3_mul_rn(g9, m5_6, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g5, m7_8, zero) - ptp_tri3_mul_rn(g7, m5_8, zero)) + ptp_tri3_mul_rn(g8, m5_7, zero));
+    v += (u + u) + u;
+    u = ((ptp_tri3_mul_rn(g4, m7_9, zero) - ptp_tri3_mul_rn(g7, m4_9, zero)) + ptp_tri3_mul_rn(g9, m4_7, zero));
+    v += ((u + u) + (u + u));
+    (*d)[25] = v * 0.600000024f;
+    u = ((ptp_tri3_mul_rn(g4, m8_9, zero) - ptp_tri3_mul_rn(g8, m4_9, zero)) + ptp_tri3_mul_rn(g9, m4_8, zero));
+    u += ((ptp_tri3_mul_rn(g5, m7_9, zero) - ptp_tri3_mul_rn(g7, m5_9, zero)) + ptp_tri3_mul_rn(g9, m5_7, zero));
+    v = u;
+    (*d)[26] = v * 3.0f;
+    u = ((ptp_tri3_mul_rn(g5, m8_9, zero) - ptp_tri3_mul_rn(g8, m5_9, zero)) + ptp_tri3_mul_rn(g9, m5_8, zero));
+    v = u;
+    (*d)[27] = v * 9.0f;
+    u = ((ptp_tri3_mul_rn(g0, m6_9, zero) - ptp_tri3_mul_rn(g6, m0_9, zero)) + ptp_tri3_mul_rn(g9, m0_6, zero));
+    v = u;
+    u = ((ptp_tri3_mul_rn(g0, m7_8, zero) - ptp_tri3_mul_rn(g7, m0_8, zero)) + ptp_tri3_mul_rn(g8, m0_7, zero));
+    u += ((ptp_tri3_mul_rn(g1, m3_9, zero) - ptp_tri3_mul_rn(g3, m1_9, zero)) + ptp_tri3_mul_rn(g9, m1_3, zero));
+    u -= ((ptp_tri3_mul_rn(g2, m5_6, zero) - ptp_tri3_mul_rn(g5, m2_6, zero)) + ptp_tri3_mul_rn(g6, m2_5, zero));
+    v += (u + u) + u;
+    u = -((ptp_tri3_mul_rn(g1, m5_7, zero) - ptp_tri3_mul_rn(g5, m1_7, zero)) + ptp_tri3_mul_rn(g7, m1_5, zero));
+    u += ((ptp_tri3_mul_rn(g2, m3_8, zero) - ptp_tri3_mul_rn(g3, m2_8, zero)) + ptp_tri3_mul_rn(g8, m2_3, zero));
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    (*d)[12] = v * 0.100000001f;
+    u = m3_9 + m4_8;
+    u = fma(2.0f, -m5_7, u);
+    v = ptp_tri3_mul_rn(g0, u, zero);
+    u = ptp_tri3_mul_rn(3.0f, (m4_5 - m2_8), zero);
+    v = fma(g1, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m1_8 + m3_5), zero);
+    v = fma(g2, u, v);
+    u = -m0_9;
+    u = fma(3.0f, -m2_5, u);
+    v = fma(g3, u, v);
+    u = -m0_8;
+    u = fma(3.0f, -m1_5, u);
+    v = fma(g4, u, v);
+    u = (m0_7);
+    u += u;
+    u = fma(3.0f, m1_4 + m2_3, u);
+    v = fma(g5, u, v);
+    u = (-m0_5);
+    u += u;
+    v = fma(g7, u, v);
+    u = m0_4;
+    u = fma(3.0f, -m1_2, u);
+    v = fma(g8, u, v);
+    u = m0_3;
+    v = fma(g9, u, v);
+    (*d)[8] = v * 0.300000012f;
+    u = m7_9;
+    v = ptp_tri3_mul_rn(g0, u, zero);
+    u = m4_9;
+    u = fma(3.0f, -m5_8, u);
+    v = fma(g1, u, v);
+    u = (m3_9);
+    u += u;
+    u = fma(3.0f, m4_8 - m5_7, u);
+    v = fma(g2, u, v);
+    u = (-m2_9);
+    u += u;
+    v = fma(g3, u, v);
+    u = -m1_9;
+    u = fma(3.0f, -m2_8, u);
+    v = fma(g4, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m1_8 + m2_7), zero);
+    v = fma(g5, u, v);
+    u = -m0_9;
+    u = fma(3.0f, -m2_5, u);
+    v = fma(g7, u, v);
+    u = ptp_tri3_mul_rn(3.0f, (m2_4 - m1_5), zero);
+    v = fma(g8, u, v);
+    u = m1_4 + m0_7;
+    u = fma(2.0f, m2_3, u);
+    v = fma(g9, u, v);
+    (*d)[13] = v * 0.300000012f;
 }
 
-@compute @workgroup_size(128)
+@compute @workgroup_size(64)
 fn main(@builtin(local_invocation_id) lid3: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>,
         @builtin(num_workgroups) nwg: vec3<u32>) {
     let eye = params.eye;
     let patch_count = params.patch_count;
-    let lid: u32 = lid3.x;
-    let q: u32 = lid / PTP_TRI3_P;
-    let t: u32 = lid % PTP_TRI3_P;
-    var i: u32;
-    var pj: u32;
-    var kl: u32;
-    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_TRI3_Q + q;
-    var f: u32 = 0u;
-    let live: bool = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_TRI3_K; i += PTP_TRI3_P) {
-        if (live) {
-            pts[q * PTP_TRI3_K + i] = cp[pid * PTP_TRI3_K + i];
-        }
+    let pid: u32 = (wid.y * nwg.x + wid.x) * PTP_TRI3_Q + lid3.x;
+    var p: array<vec4<f32>, PTP_TRI3_K>;
+    if (pid >= patch_count) {
+        return;
     }
-    workgroupBarrier();
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_tri3_own_start[t]; i < ptp_tri3_own_start[t + 1u]; i++) {
-        acc[q * PTP_TRI3_L + ptp_tri3_own_plane[i]] = 0.0f;
-    }
-    pj = ptp_tri3_pj0[t];
-    kl = ptp_tri3_kl0[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w0[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj1[t];
-    kl = ptp_tri3_kl1[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w1[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj2[t];
-    kl = ptp_tri3_kl2[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w2[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj3[t];
-    kl = ptp_tri3_kl3[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w3[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj4[t];
-    kl = ptp_tri3_kl4[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w4[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj5[t];
-    kl = ptp_tri3_kl5[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w5[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj6[t];
-    kl = ptp_tri3_kl6[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w6[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj7[t];
-    kl = ptp_tri3_kl7[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w7[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj8[t];
-    kl = ptp_tri3_kl8[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w8[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj9[t];
-    kl = ptp_tri3_kl9[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w9[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj10[t];
-    kl = ptp_tri3_kl10[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w10[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj11[t];
-    kl = ptp_tri3_kl11[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w11[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj12[t];
-    kl = ptp_tri3_kl12[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w12[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj13[t];
-    kl = ptp_tri3_kl13[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w13[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj14[t];
-    kl = ptp_tri3_kl14[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w14[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj15[t];
-    kl = ptp_tri3_kl15[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w15[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj16[t];
-    kl = ptp_tri3_kl16[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w16[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj17[t];
-    kl = ptp_tri3_kl17[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w17[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj18[t];
-    kl = ptp_tri3_kl18[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w18[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj19[t];
-    kl = ptp_tri3_kl19[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w19[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj20[t];
-    kl = ptp_tri3_kl20[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w20[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj21[t];
-    kl = ptp_tri3_kl21[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w21[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj22[t];
-    kl = ptp_tri3_kl22[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w22[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj23[t];
-    kl = ptp_tri3_kl23[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w23[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj24[t];
-    kl = ptp_tri3_kl24[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w24[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj25[t];
-    kl = ptp_tri3_kl25[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w25[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-    pj = ptp_tri3_pj26[t];
-    kl = ptp_tri3_kl26[t];
-    acc[q * PTP_TRI3_L + (pj & 0xffffu)] += ptp_tri3_w26[t] *
-        ptp_tri3_cross4z(pts[q * PTP_TRI3_K + (pj >> 16)], pts[q * PTP_TRI3_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI3_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_tri3_own_start[t]; i < ptp_tri3_own_start[t + 1u]; i++) {
-        let plane: u32 = ptp_tri3_own_plane[i];
-        let d: f32 = eye.z * acc[q * PTP_TRI3_L + plane];
-        f |= ptp_tri3_flags(d);
-    }
-    flags[q * PTP_TRI3_P + t] = f;
-    workgroupBarrier();
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_TRI3_P; i++) {
-            f |= flags[q * PTP_TRI3_P + i];
-        }
-        cls[pid] = ptp_tri3_class_of(f);
-    }
+    p[0] = cp[pid * PTP_TRI3_K + 0u];
+    p[1] = cp[pid * PTP_TRI3_K + 1u];
+    p[2] = cp[pid * PTP_TRI3_K + 2u];
+    p[3] = cp[pid * PTP_TRI3_K + 3u];
+    p[4] = cp[pid * PTP_TRI3_K + 4u];
+    p[5] = cp[pid * PTP_TRI3_K + 5u];
+    p[6] = cp[pid * PTP_TRI3_K + 6u];
+    p[7] = cp[pid * PTP_TRI3_K + 7u];
+    p[8] = cp[pid * PTP_TRI3_K + 8u];
+    p[9] = cp[pid * PTP_TRI3_K + 9u];
+    cls[pid] = ptp_tri3_classify_patch(p, eye, params.zero);
 }

@@ -17,578 +17,2949 @@
  * Kernel <prefix>classify(cp, cls, planes, eye, patch_count): planes receives d[p*L + P] when not
  * NULL. Work-group size exactly P*Q; ceil(patch_count / Q) work-groups, 1-D or 2-D:
  * work-group (x, y) handles the patches of block y * num_groups(0) + x.
- * Schedule: 16 threads per patch, 8 patches per workgroup (128 threads), 26 rounds.
+ * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
 #pragma OPENCL FP_CONTRACT OFF
 
-#define PTP_TRI4_P 16u /* threads per patch */
-#define PTP_TRI4_Q 8u /* patches per workgroup */
+#define PTP_TRI4_P 1u /* threads per patch */
+#define PTP_TRI4_Q 64u /* patches per workgroup */
 #define PTP_TRI4_K 15u /* control points per patch */
 #define PTP_TRI4_L 55u /* control planes per patch */
-/* 26 rounds: the largest number of terms of one thread. */
 
-/* Thread t owns the planes own_plane[own_start[t] .. own_start[t+1]-1]. */
-constant uint ptp_tri4_own_start[17] = {
-    0u, 3u, 6u, 9u, 12u, 15u, 18u, 22u, 26u, 30u, 34u, 37u, 40u, 44u, 48u, 52u,
-    55u
-};
-constant uint ptp_tri4_own_plane[55] = {
-    2u, 6u, 24u, 10u, 17u, 35u, 14u, 18u, 37u, 15u, 23u, 43u, 20u, 25u, 47u, 31u,
-    49u, 52u, 1u, 32u, 44u, 50u, 4u, 16u, 34u, 46u, 5u, 19u, 38u, 53u, 0u, 28u,
-    40u, 42u, 11u, 12u, 48u, 13u, 30u, 51u, 3u, 22u, 33u, 36u, 7u, 9u, 26u, 45u,
-    8u, 21u, 39u, 54u, 27u, 29u, 41u
-};
-
-/* Round 0: thread t adds w0[t] * term(plane | j << 16 = pj0[t], k | l << 16 = kl0[t]). */
-constant uint ptp_tri4_pj0[16] = {
-    0x00002u, 0x0000au, 0x0000eu, 0x0000fu, 0x00014u, 0x1001fu, 0x00001u, 0x00004u,
-    0x00005u, 0x00000u, 0x0000bu, 0x0000du, 0x00003u, 0x00007u, 0x00008u, 0x0001bu
-};
-constant uint ptp_tri4_kl0[16] = {
-    0x50001u, 0xb0003u, 0xe0004u, 0xb0006u, 0xe0008u, 0xe000au, 0x40001u, 0x80001u,
-    0x90001u, 0x20001u, 0xc0003u, 0xe0003u, 0x70001u, 0xc0001u, 0xd0001u, 0xe000du
-};
-constant float ptp_tri4_w0[16] = {
-    5.33333349f, 0.380952388f, 0.380952388f, 0.380952388f, 0.380952388f, 0.0380952395f, 5.33333349f, 1.33333337f,
-    1.33333337f, 16.0f, 0.285714298f, 0.095238097f, 1.33333337f, 0.190476194f, 0.190476194f, 0.190476194f
-};
-
-/* Round 1: thread t adds w1[t] * term(plane | j << 16 = pj1[t], k | l << 16 = kl1[t]). */
-constant uint ptp_tri4_pj1[16] = {
-    0x00002u, 0x0000au, 0x0000eu, 0x0000fu, 0x00014u, 0x1001fu, 0x00001u, 0x00004u,
-    0x00005u, 0x1001cu, 0x0000bu, 0x0000du, 0x00003u, 0x00007u, 0x00008u, 0x1001bu
-};
-constant uint ptp_tri4_kl1[16] = {
-    0x40002u, 0xa0004u, 0xd0005u, 0xa0007u, 0xd0009u, 0xd000bu, 0x30002u, 0x70002u,
-    0x80002u, 0xb000au, 0xb0004u, 0xd0004u, 0x60002u, 0xb0002u, 0xc0002u, 0xe0009u
-};
-constant float ptp_tri4_w1[16] = {
-    -5.33333349f, -0.380952388f, -0.380952388f, -0.380952388f, -0.380952388f, 0.304761916f, -5.33333349f, -1.33333337f,
-    -1.33333337f, 1.33333337f, -0.190476194f, 0.190476194f, -1.33333337f, -0.190476194f, -0.190476194f, -0.190476194f
-};
-
-/* Round 2: thread t adds w2[t] * term(plane | j << 16 = pj2[t], k | l << 16 = kl2[t]). */
-constant uint ptp_tri4_pj2[16] = {
-    0x00006u, 0x0000au, 0x0000eu, 0x1000fu, 0x10014u, 0x2001fu, 0x10020u, 0x00004u,
-    0x00005u, 0x3001cu, 0x0000bu, 0x0000du, 0x00003u, 0x00007u, 0x00008u, 0x2001bu
-};
-constant uint ptp_tri4_kl2[16] = {
-    0xb0001u, 0x70006u, 0x90008u, 0xb0003u, 0xe0005u, 0xd000au, 0xe000bu, 0x50003u,
-    0x50004u, 0xb0006u, 0xa0005u, 0xc0005u, 0x40003u, 0x80003u, 0x90003u, 0xe0008u
-};
-constant float ptp_tri4_w2[16] = {
-    0.190476194f, 1.14285719f, 1.14285719f, 0.761904776f, -0.380952388f, 0.114285715f, 0.114285715f, 2.0f,
-    4.0f, 2.66666675f, -0.095238097f, -0.285714298f, 4.0f, 1.14285719f, 0.571428597f, 1.71428573f
-};
-
-/* Round 3: thread t adds w3[t] * term(plane | j << 16 = pj3[t], k | l << 16 = kl3[t]). */
-constant uint ptp_tri4_pj3[16] = {
-    0x00006u, 0x1000au, 0x1000eu, 0x1000fu, 0x20014u, 0x2001fu, 0x10020u, 0x10004u,
-    0x10005u, 0x3001cu, 0x0000bu, 0x0000du, 0x10003u, 0x00007u, 0x00008u, 0x2001bu
-};
-constant uint ptp_tri4_kl3[16] = {
-    0xa0002u, 0xa0002u, 0xe0002u, 0xa0004u, 0xe0004u, 0xc000bu, 0xd000cu, 0x40002u,
-    0x50002u, 0xa0007u, 0x80006u, 0x90007u, 0x30002u, 0x70004u, 0x80004u, 0xd0009u
-};
-constant float ptp_tri4_w3[16] = {
-    -0.190476194f, -0.380952388f, -0.380952388f, -1.14285719f, 1.14285719f, 0.22857143f, 0.22857143f, -2.66666675f,
-    -2.66666675f, -4.0f, 0.571428597f, 0.571428597f, -2.66666675f, -0.571428597f, 0.571428597f, -1.52380955f
-};
-
-/* Round 4: thread t adds w4[t] * term(plane | j << 16 = pj4[t], k | l << 16 = kl4[t]). */
-constant uint ptp_tri4_pj4[16] = {
-    0x00006u, 0x1000au, 0x1000eu, 0x1000fu, 0x20014u, 0x3001fu, 0x20020u, 0x00010u,
-    0x00013u, 0x4001cu, 0x1000bu, 0x1000du, 0x00016u, 0x00007u, 0x00008u, 0x4001bu
-};
-constant uint ptp_tri4_kl4[16] = {
-    0x70003u, 0x70003u, 0x90005u, 0x70006u, 0xd0005u, 0xe0006u, 0xe000au, 0xc0006u,
-    0xe0007u, 0xa0006u, 0xb0002u, 0xd0002u, 0xc000au, 0x60005u, 0x70005u, 0xe0005u
-};
-constant float ptp_tri4_w4[16] = {
-    1.71428573f, 2.28571439f, -0.761904776f, 3.0476191f, -0.761904776f, 0.0761904791f, 0.0380952395f, 0.22857143f,
-    0.152380958f, 1.33333337f, -0.380952388f, -0.380952388f, 0.095238097f, -0.571428597f, -1.14285719f, -1.71428573f
-};
-
-/* Round 5: thread t adds w5[t] * term(plane | j << 16 = pj5[t], k | l << 16 = kl5[t]). */
-constant uint ptp_tri4_pj5[16] = {
-    0x00006u, 0x1000au, 0x2000eu, 0x2000fu, 0x20014u, 0x3001fu, 0x20020u, 0x00010u,
-    0x00013u, 0x30028u, 0x1000bu, 0x1000du, 0x10016u, 0x10007u, 0x10008u, 0x5001bu
-};
-constant uint ptp_tri4_kl5[16] = {
-    0x60004u, 0x60004u, 0x90004u, 0xa0003u, 0x90008u, 0xd0007u, 0xd000bu, 0xb0007u,
-    0xd0008u, 0xe000bu, 0x80003u, 0x90004u, 0xc0006u, 0x70002u, 0x80002u, 0x90008u
-};
-constant float ptp_tri4_w5[16] = {
-    -1.71428573f, -3.0476191f, 3.0476191f, 0.380952388f, 3.0476191f, 0.22857143f, 0.304761916f, -0.0761904791f,
-    0.0761904791f, 0.22857143f, 1.14285719f, 0.380952388f, 0.761904776f, -1.52380955f, -1.52380955f, 3.42857146f
-};
-
-/* Round 6: thread t adds w6[t] * term(plane | j << 16 = pj6[t], k | l << 16 = kl6[t]). */
-constant uint ptp_tri4_pj6[16] = {
-    0x10006u, 0x2000au, 0x2000eu, 0x3000fu, 0x40014u, 0x3001fu, 0x30020u, 0x00010u,
-    0x00013u, 0x30028u, 0x1000bu, 0x1000du, 0x10016u, 0x10007u, 0x10008u, 0x1001du
-};
-constant uint ptp_tri4_kl6[16] = {
-    0x60002u, 0x60003u, 0x80005u, 0x60004u, 0x90005u, 0xc0008u, 0xe0007u, 0xa0008u,
-    0xc0009u, 0xd000cu, 0x70004u, 0x80005u, 0xb0007u, 0x50003u, 0x50004u, 0xc000au
-};
-constant float ptp_tri4_w6[16] = {
-    -1.52380955f, 0.761904776f, -2.28571439f, -2.28571439f, -2.28571439f, -0.685714304f, 0.114285715f, -0.152380958f,
-    -0.22857143f, 0.45714286f, -1.14285719f, -1.14285719f, -0.380952388f, 1.14285719f, 1.14285719f, 0.571428597f
-};
-
-/* Round 7: thread t adds w7[t] * term(plane | j << 16 = pj7[t], k | l << 16 = kl7[t]). */
-constant uint ptp_tri4_pj7[16] = {
-    0x10006u, 0x00011u, 0x00012u, 0x00017u, 0x00019u, 0x3001fu, 0x30020u, 0x10010u,
-    0x10013u, 0x40028u, 0x1000bu, 0x2000du, 0x10016u, 0x20007u, 0x20008u, 0x2001du
-};
-constant uint ptp_tri4_kl7[16] = {
-    0x40003u, 0xd0006u, 0xe0006u, 0xd000au, 0xe000bu, 0xb0009u, 0xd0008u, 0xc0003u,
-    0xe0004u, 0xe000au, 0x60005u, 0x90003u, 0xa0008u, 0x40003u, 0x50003u, 0xb000au
-};
-constant float ptp_tri4_w7[16] = {
-    3.42857146f, 0.114285715f, 0.0380952395f, 0.0380952395f, 0.0380952395f, -0.380952388f, -0.22857143f, 0.45714286f,
-    0.0761904791f, 0.152380958f, -0.761904776f, 0.761904776f, -0.571428597f, 1.14285719f, 1.14285719f, 0.190476194f
-};
-
-/* Round 8: thread t adds w8[t] * term(plane | j << 16 = pj8[t], k | l << 16 = kl8[t]). */
-constant uint ptp_tri4_pj8[16] = {
-    0x00018u, 0x00011u, 0x00012u, 0x00017u, 0x00019u, 0x4001fu, 0x30020u, 0x10010u,
-    0x10013u, 0x40028u, 0x2000bu, 0x2000du, 0x20016u, 0x00009u, 0x00015u, 0x3001du
-};
-constant uint ptp_tri4_kl8[16] = {
-    0xe000au, 0xc0007u, 0xd0007u, 0xc000bu, 0xd000cu, 0xd0006u, 0xc0009u, 0xb0004u,
-    0xd0005u, 0xd000bu, 0x70003u, 0x80004u, 0xb0006u, 0xe0001u, 0xb000au, 0xc0006u
-};
-constant float ptp_tri4_w8[16] = {
-    0.00952380989f, 0.114285715f, 0.190476194f, 0.0761904791f, 0.0761904791f, 0.609523833f, -0.45714286f, -0.609523833f,
-    -0.45714286f, 1.21904767f, 1.14285719f, 1.14285719f, 0.380952388f, 0.190476194f, 0.190476194f, 1.14285719f
-};
-
-/* Round 9: thread t adds w9[t] * term(plane | j << 16 = pj9[t], k | l << 16 = kl9[t]). */
-constant uint ptp_tri4_pj9[16] = {
-    0x00018u, 0x00011u, 0x00012u, 0x10017u, 0x10019u, 0x4001fu, 0x40020u, 0x10010u,
-    0x10013u, 0x50028u, 0x2000bu, 0x2000du, 0x20016u, 0x00009u, 0x10015u, 0x3001du
-};
-constant uint ptp_tri4_kl9[16] = {
-    0xd000bu, 0xb0008u, 0xc0008u, 0xd0006u, 0xe0007u, 0xc0007u, 0xe0006u, 0xa0005u,
-    0x90008u, 0xd000au, 0x60004u, 0x70005u, 0xa0007u, 0xd0002u, 0xb0006u, 0xb0007u
-};
-constant float ptp_tri4_w9[16] = {
-    0.0761904791f, -0.190476194f, -0.114285715f, 0.304761916f, 0.190476194f, 0.685714304f, 0.190476194f, -0.22857143f,
-    0.609523833f, 0.22857143f, -0.380952388f, -1.14285719f, -0.190476194f, -0.190476194f, 1.52380955f, -1.14285719f
-};
-
-/* Round 10: thread t adds w10[t] * term(plane | j << 16 = pj10[t], k | l << 16 = kl10[t]). */
-constant uint ptp_tri4_pj10[16] = {
-    0x10018u, 0x00011u, 0x00012u, 0x10017u, 0x10019u, 0x4001fu, 0x40020u, 0x10010u,
-    0x20013u, 0x50028u, 0x0000cu, 0x1001eu, 0x30016u, 0x00009u, 0x10015u, 0x3001du
-};
-constant uint ptp_tri4_kl10[16] = {
-    0xe0006u, 0xa0009u, 0xb0009u, 0xc0007u, 0xc0009u, 0xb0008u, 0xd0007u, 0x80006u,
-    0xe0003u, 0xc000bu, 0xd0003u, 0xd000au, 0xb0004u, 0x90004u, 0xa0007u, 0xa0008u
-};
-constant float ptp_tri4_w10[16] = {
-    0.0761904791f, -0.0380952395f, -0.114285715f, 0.22857143f, -0.380952388f, -0.914285719f, 0.914285719f, 1.21904767f,
-    0.22857143f, 0.45714286f, 0.190476194f, 0.190476194f, -1.14285719f, 1.71428573f, -1.71428573f, -1.14285719f
-};
-
-/* Round 11: thread t adds w11[t] * term(plane | j << 16 = pj11[t], k | l << 16 = kl11[t]). */
-constant uint ptp_tri4_pj11[16] = {
-    0x10018u, 0x10011u, 0x10012u, 0x10017u, 0x20019u, 0x4001fu, 0x40020u, 0x20010u,
-    0x20013u, 0x60028u, 0x0000cu, 0x1001eu, 0x30016u, 0x00009u, 0x20015u, 0x4001du
-};
-constant uint ptp_tri4_kl11[16] = {
-    0xd0007u, 0xd0003u, 0xe0003u, 0xb0008u, 0xe0006u, 0xa0009u, 0xc0008u, 0xb0003u,
-    0xd0004u, 0xe0007u, 0xb0005u, 0xc000bu, 0xa0005u, 0x80005u, 0xa0006u, 0xb0006u
-};
-constant float ptp_tri4_w11[16] = {
-    0.342857152f, 0.22857143f, 0.0761904791f, -0.609523833f, 0.114285715f, -0.190476194f, -0.685714304f, 0.45714286f,
-    0.609523833f, -0.0761904791f, -0.190476194f, 0.380952388f, -0.285714298f, -1.71428573f, 0.190476194f, 1.52380955f
-};
-
-/* Round 12: thread t adds w12[t] * term(plane | j << 16 = pj12[t], k | l << 16 = kl12[t]). */
-constant uint ptp_tri4_pj12[16] = {
-    0x10018u, 0x10011u, 0x10012u, 0x10017u, 0x20019u, 0x5001fu, 0x40020u, 0x20010u,
-    0x20013u, 0x60028u, 0x0000cu, 0x2001eu, 0x30016u, 0x10009u, 0x30015u, 0x4001du
-};
-constant uint ptp_tri4_kl12[16] = {
-    0xc0008u, 0xc0004u, 0xc0005u, 0xa0009u, 0xd0007u, 0xc0006u, 0xb0009u, 0xa0004u,
-    0xc0005u, 0xd0008u, 0x90006u, 0xc000au, 0x80006u, 0x90002u, 0xa0004u, 0xa0007u
-};
-constant float ptp_tri4_w12[16] = {
-    -0.342857152f, -0.22857143f, -0.45714286f, -0.114285715f, 0.609523833f, 0.45714286f, -0.609523833f, -0.0761904791f,
-    -0.45714286f, -0.609523833f, 0.190476194f, 0.190476194f, 1.14285719f, -1.52380955f, -1.71428573f, -0.571428597f
-};
-
-/* Round 13: thread t adds w13[t] * term(plane | j << 16 = pj13[t], k | l << 16 = kl13[t]). */
-constant uint ptp_tri4_pj13[16] = {
-    0x10018u, 0x10011u, 0x10012u, 0x20017u, 0x20019u, 0x5001fu, 0x50020u, 0x20010u,
-    0x20013u, 0x60028u, 0x0000cu, 0x3001eu, 0x40016u, 0x20009u, 0x30015u, 0x5001du
-};
-constant uint ptp_tri4_kl13[16] = {
-    0xb0009u, 0xb0005u, 0x90007u, 0xc0006u, 0xc0008u, 0xb0007u, 0xd0006u, 0x70006u,
-    0x90007u, 0xc0009u, 0x80007u, 0xd0006u, 0x70006u, 0x50004u, 0x70006u, 0xa0006u
-};
-constant float ptp_tri4_w13[16] = {
-    -0.266666681f, -0.380952388f, 0.609523833f, 0.380952388f, -0.22857143f, 0.22857143f, 0.380952388f, 0.609523833f,
-    1.21904767f, -0.45714286f, 0.571428597f, 0.380952388f, 1.14285719f, 3.42857146f, 3.42857146f, 0.190476194f
-};
-
-/* Round 14: thread t adds w14[t] * term(plane | j << 16 = pj14[t], k | l << 16 = kl14[t]). */
-constant uint ptp_tri4_pj14[16] = {
-    0x20018u, 0x10011u, 0x20012u, 0x20017u, 0x20019u, 0x5001fu, 0x50020u, 0x30010u,
-    0x30013u, 0x70028u, 0x1000cu, 0x3001eu, 0x10021u, 0x0001au, 0x30027u, 0x30029u
-};
-constant uint ptp_tri4_kl14[16] = {
-    0xd0006u, 0x90006u, 0xd0003u, 0xa0008u, 0xb0009u, 0xa0008u, 0xc0007u, 0x70004u,
-    0x90005u, 0xc0008u, 0xc0002u, 0xb0008u, 0xe000cu, 0xe000cu, 0xe000au, 0xe000cu
-};
-constant float ptp_tri4_w14[16] = {
-    0.266666681f, 0.304761916f, 0.380952388f, -0.190476194f, -0.304761916f, -0.114285715f, 0.685714304f, -1.37142861f,
-    -0.45714286f, -1.37142861f, -0.380952388f, -1.14285719f, 0.190476194f, 0.095238097f, 0.095238097f, 0.285714298f
-};
-
-/* Round 15: thread t adds w15[t] * term(plane | j << 16 = pj15[t], k | l << 16 = kl15[t]). */
-constant uint ptp_tri4_pj15[16] = {
-    0x20018u, 0x10011u, 0x20012u, 0x30017u, 0x30019u, 0x60031u, 0x50020u, 0x30010u,
-    0x40013u, 0x70028u, 0x1000cu, 0x3001eu, 0x20021u, 0x1001au, 0x30027u, 0x40029u
-};
-constant uint ptp_tri4_kl15[16] = {
-    0xc0007u, 0x80007u, 0xc0004u, 0xc0004u, 0xe0004u, 0xe000bu, 0xb0008u, 0x60005u,
-    0x80005u, 0xb0009u, 0x90003u, 0xa0009u, 0xe000bu, 0xe0008u, 0xd000bu, 0xe000bu
-};
-constant float ptp_tri4_w15[16] = {
-    0.342857152f, 0.914285719f, 0.22857143f, -0.685714304f, -0.114285715f, 0.380952388f, -0.22857143f, -0.45714286f,
-    -1.37142861f, -0.609523833f, 0.380952388f, -0.190476194f, 0.190476194f, 0.190476194f, 0.761904776f, 0.571428597f
-};
-
-/* Round 16: thread t adds w16[t] * term(plane | j << 16 = pj16[t], k | l << 16 = kl16[t]). */
-constant uint ptp_tri4_pj16[16] = {
-    0x20018u, 0x20011u, 0x20012u, 0x30017u, 0x30019u, 0x60031u, 0x50020u, 0x10022u,
-    0x30026u, 0x80028u, 0x1000cu, 0x4001eu, 0x20021u, 0x1001au, 0x40027u, 0x40029u
-};
-constant uint ptp_tri4_kl16[16] = {
-    0xb0008u, 0xc0003u, 0xb0005u, 0xb0005u, 0xd0005u, 0xd000cu, 0xa0009u, 0xe000du,
-    0xd000au, 0xa0009u, 0x70005u, 0xc0006u, 0xd000cu, 0xd0009u, 0xd000au, 0xd000cu
-};
-constant float ptp_tri4_w16[16] = {
-    -0.342857152f, 0.45714286f, -0.22857143f, -0.45714286f, -0.45714286f, 0.761904776f, -0.0761904791f, 0.190476194f,
-    0.571428597f, -0.0761904791f, -1.14285719f, 1.14285719f, 0.380952388f, -0.380952388f, 0.571428597f, 1.14285719f
-};
-
-/* Round 17: thread t adds w17[t] * term(plane | j << 16 = pj17[t], k | l << 16 = kl17[t]). */
-constant uint ptp_tri4_pj17[16] = {
-    0x20018u, 0x20011u, 0x20012u, 0x30017u, 0x30019u, 0x70031u, 0x5002cu, 0x20022u,
-    0x30026u, 0x3002au, 0x2000cu, 0x4001eu, 0x30021u, 0x2001au, 0x40027u, 0x50029u
-};
-constant uint ptp_tri4_kl17[16] = {
-    0xa0009u, 0xa0005u, 0x90006u, 0x90006u, 0x90008u, 0xe000au, 0xe000du, 0xe000cu,
-    0xc000bu, 0xe000du, 0x80003u, 0xa0008u, 0xd0009u, 0xe0007u, 0xc000bu, 0xe000au
-};
-constant float ptp_tri4_w17[16] = {
-    -0.0761904791f, -0.0761904791f, 0.304761916f, 0.22857143f, 0.22857143f, 0.380952388f, 5.33333349f, 0.571428597f,
-    1.14285719f, 0.190476194f, 1.14285719f, -0.571428597f, -0.380952388f, 0.571428597f, 1.14285719f, 0.095238097f
-};
-
-/* Round 18: thread t adds w18[t] * term(plane | j << 16 = pj18[t], k | l << 16 = kl18[t]). */
-constant uint ptp_tri4_pj18[16] = {
-    0x30018u, 0x20011u, 0x20012u, 0x30017u, 0x40019u, 0x70031u, 0x8002cu, 0x30022u,
-    0x40026u, 0x4002au, 0x2000cu, 0x5001eu, 0x40021u, 0x2001au, 0x50027u, 0x50029u
-};
-constant uint ptp_tri4_kl18[16] = {
-    0xd0004u, 0x80006u, 0x80007u, 0x80007u, 0xc0005u, 0xd000bu, 0xe0009u, 0xe0009u,
-    0xc000au, 0xe000cu, 0x60005u, 0xb0006u, 0xe0007u, 0xd0008u, 0xc000au, 0xd000bu
-};
-constant float ptp_tri4_w18[16] = {
-    -0.342857152f, 0.609523833f, 0.914285719f, 0.685714304f, -0.685714304f, 3.0476191f, -5.33333349f, -0.190476194f,
-    1.14285719f, 1.14285719f, -0.380952388f, 0.380952388f, 0.571428597f, 0.380952388f, 0.285714298f, 0.761904776f
-};
-
-/* Round 19: thread t adds w19[t] * term(plane | j << 16 = pj19[t], k | l << 16 = kl19[t]). */
-constant uint ptp_tri4_pj19[16] = {
-    0x30018u, 0x30011u, 0x30012u, 0x40017u, 0x40019u, 0x80031u, 0x60032u, 0x40022u,
-    0x50026u, 0x5002au, 0x60030u, 0x60033u, 0x40021u, 0x2001au, 0x60027u, 0x60029u
-};
-constant uint ptp_tri4_kl19[16] = {
-    0xc0005u, 0x80004u, 0x90004u, 0xa0005u, 0x90007u, 0xd000au, 0xe000cu, 0xe0008u,
-    0xb000au, 0xe000bu, 0xe000au, 0xe000du, 0xc0009u, 0xc0009u, 0xd0007u, 0xe0008u
-};
-constant float ptp_tri4_w19[16] = {
-    -0.514285743f, -0.685714304f, -0.22857143f, -0.114285715f, 0.914285719f, 1.14285719f, 0.380952388f, 0.571428597f,
-    0.190476194f, 0.571428597f, 0.190476194f, 0.190476194f, -1.14285719f, -0.761904776f, -0.380952388f, -0.190476194f
-};
-
-/* Round 20: thread t adds w20[t] * term(plane | j << 16 = pj20[t], k | l << 16 = kl20[t]). */
-constant uint ptp_tri4_pj20[16] = {
-    0x30018u, 0x30011u, 0x30012u, 0x40017u, 0x50019u, 0x80031u, 0x70032u, 0x40022u,
-    0x60026u, 0x5002au, 0x60030u, 0x70033u, 0x50021u, 0x3001au, 0x60027u, 0x60029u
-};
-constant uint ptp_tri4_kl20[16] = {
-    0x90007u, 0x70005u, 0x80005u, 0x80006u, 0x90006u, 0xc000bu, 0xe000bu, 0xd0009u,
-    0xc0007u, 0xd000cu, 0xd000bu, 0xe000cu, 0xe0006u, 0xe0005u, 0xc0008u, 0xd0009u
-};
-constant float ptp_tri4_w20[16] = {
-    0.342857152f, -0.685714304f, -0.685714304f, 0.914285719f, 0.22857143f, 2.28571439f, 1.14285719f, -1.52380955f,
-    -1.14285719f, 1.14285719f, 1.52380955f, 1.71428573f, 0.190476194f, -0.285714298f, -1.14285719f, -0.380952388f
-};
-
-/* Round 21: thread t adds w21[t] * term(plane | j << 16 = pj21[t], k | l << 16 = kl21[t]). */
-constant uint ptp_tri4_pj21[16] = {
-    0x40018u, 0x40011u, 0x40012u, 0x50017u, 0x50019u, 0x90031u, 0x70032u, 0x50022u,
-    0x60026u, 0x6002au, 0x70030u, 0x80033u, 0x50021u, 0x4001au, 0x60027u, 0x70029u
-};
-constant uint ptp_tri4_kl21[16] = {
-    0xb0005u, 0x60005u, 0x70005u, 0x70006u, 0x80007u, 0xc000au, 0xd000cu, 0xe0007u,
-    0xb0008u, 0xe0009u, 0xd000au, 0xe000bu, 0xd0007u, 0xd0005u, 0xb0009u, 0xd0008u
-};
-constant float ptp_tri4_w21[16] = {
-    -0.342857152f, -0.22857143f, -0.685714304f, 0.22857143f, 0.685714304f, 0.380952388f, 2.28571439f, 1.14285719f,
-    -1.52380955f, -0.190476194f, 1.71428573f, 1.71428573f, 1.14285719f, -1.14285719f, -0.380952388f, -1.14285719f
-};
-
-/* Round 22: thread t adds w22[t] * term(plane | j << 16 = pj22[t], k | l << 16 = kl22[t]). */
-constant uint ptp_tri4_pj22[16] = {
-    0x40018u, 0x20023u, 0x30025u, 0x4002bu, 0x6002fu, 0x70034u, 0x80032u, 0x50022u,
-    0x60026u, 0x7002au, 0x70030u, 0x80033u, 0x50021u, 0x4001au, 0x70027u, 0x70029u
-};
-constant uint ptp_tri4_kl22[16] = {
-    0x90006u, 0xe000du, 0xc000au, 0xe000du, 0xd000au, 0xe000du, 0xe000au, 0xd0008u,
-    0xa0009u, 0xe0008u, 0xc000bu, 0xd000cu, 0xb0009u, 0x90008u, 0xb0008u, 0xc0009u
-};
-constant float ptp_tri4_w22[16] = {
-    0.342857152f, 1.33333337f, 2.0f, 1.33333337f, 1.33333337f, 1.33333337f, 0.380952388f, 1.14285719f,
-    -0.190476194f, -0.571428597f, 3.42857146f, 3.42857146f, -0.380952388f, 1.14285719f, -1.14285719f, -1.14285719f
-};
-
-/* Round 23: thread t adds w23[t] * term(plane | j << 16 = pj23[t], k | l << 16 = kl23[t]). */
-constant uint ptp_tri4_pj23[16] = {
-    0x40018u, 0x40023u, 0x40025u, 0x5002bu, 0x6002fu, 0x80034u, 0x80032u, 0x50022u,
-    0x70026u, 0x7002au, 0x80030u, 0x90033u, 0x30024u, 0x5001au, 0x70027u, 0x80029u
-};
-constant uint ptp_tri4_kl23[16] = {
-    0x80007u, 0xe0009u, 0xb000au, 0xe000cu, 0xc000bu, 0xe000cu, 0xd000bu, 0xc0009u,
-    0xa0008u, 0xd0009u, 0xc000au, 0xe000au, 0xb000au, 0x90007u, 0xa0009u, 0xb0009u
-};
-constant float ptp_tri4_w23[16] = {
-    1.02857149f, -1.33333337f, 1.33333337f, 2.0f, 2.66666675f, 4.0f, 3.0476191f, -1.14285719f,
-    -0.571428597f, -1.52380955f, 1.71428573f, 0.190476194f, 5.33333349f, 1.14285719f, -0.190476194f, -0.380952388f
-};
-
-/* Round 24: thread t adds w24[t] * term(plane | j << 16 = pj24[t], k | l << 16 = kl24[t]). */
-constant uint ptp_tri4_pj24[16] = {
-    0x50018u, 0x50023u, 0x60025u, 0x7002bu, 0x7002fu, 0x90034u, 0x90032u, 0x6002eu,
-    0x80035u, 0x8002au, 0x90030u, 0x90033u, 0x60024u, 0x6002du, 0x90036u, 0x0001bu
-};
-constant uint ptp_tri4_kl24[16] = {
-    0x80006u, 0xe0008u, 0xb0007u, 0xe0009u, 0xc000au, 0xe000bu, 0xd000au, 0xc000au,
-    0xe000du, 0xc0009u, 0xb000au, 0xd000bu, 0xa0007u, 0xb000au, 0xe000du, 0x00000u
-};
-constant float ptp_tri4_w24[16] = {
-    0.342857152f, 4.0f, -2.66666675f, -1.33333337f, 4.0f, 1.33333337f, 0.380952388f, 5.33333349f,
-    5.33333349f, -1.14285719f, 0.190476194f, 1.52380955f, -5.33333349f, 16.0f, 16.0f, 0.0f
-};
-
-/* Round 25: thread t adds w25[t] * term(plane | j << 16 = pj25[t], k | l << 16 = kl25[t]). */
-constant uint ptp_tri4_pj25[16] = {
-    0x00002u, 0x50023u, 0x60025u, 0x8002bu, 0x8002fu, 0x90034u, 0x90032u, 0x7002eu,
-    0x90035u, 0x00000u, 0x0000bu, 0x0000du, 0x00003u, 0x00007u, 0x00008u, 0x0001bu
-};
-constant uint ptp_tri4_kl25[16] = {
-    0x00000u, 0xd0009u, 0xa0008u, 0xd0009u, 0xb000au, 0xd000cu, 0xc000bu, 0xb000au,
-    0xe000cu, 0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u, 0x00000u
-};
-constant float ptp_tri4_w25[16] = {
-    0.0f, -2.66666675f, -1.33333337f, -2.66666675f, 1.33333337f, 2.66666675f, 0.761904776f, 5.33333349f,
-    5.33333349f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f
-};
-
-/* The z component of cross4(a, b, c): det of rows x, y, w. */
-float ptp_tri4_cross4z(float4 a, float4 b, float4 c)
+/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */
+uint ptp_tri4_classify_patch(const float4 cp[15], float4 eye)
 {
-    float z = a.x * (b.y * c.w - b.w * c.y) -
-        b.x * (a.y * c.w - a.w * c.y) +
-        c.x * (a.y * b.w - a.w * b.y);
-    return z;
+    float e2 = eye.z;
+    float u, v;
+    bool lt, gt;
+    const float x1 = cp[1].x;
+    const float y1 = cp[1].y;
+    const float w1 = cp[1].w;
+    const float g1 = e2 * w1;
+    const float x2 = cp[2].x;
+    const float y2 = cp[2].y;
+    const float w2 = cp[2].w;
+    const float g2 = e2 * w2;
+    const float m1_2 = x1 * y2 - y1 * x2;
+    const float x0 = cp[0].x;
+    const float y0 = cp[0].y;
+    const float w0 = cp[0].w;
+    const float g0 = e2 * w0;
+    const float m0_2 = x0 * y2 - y0 * x2;
+    const float m0_1 = x0 * y1 - y0 * x1;
+    u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    lt = v < 0.0f;
+    gt = v > 0.0f; /* plane 0 */
+    const float x4 = cp[4].x;
+    const float y4 = cp[4].y;
+    const float w4 = cp[4].w;
+    const float g4 = e2 * w4;
+    const float m1_4 = x1 * y4 - y1 * x4;
+    const float m0_4 = x0 * y4 - y0 * x4;
+    u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    const float x3 = cp[3].x;
+    const float y3 = cp[3].y;
+    const float w3 = cp[3].w;
+    const float g3 = e2 * w3;
+    const float m2_3 = x2 * y3 - y2 * x3;
+    const float m0_3 = x0 * y3 - y0 * x3;
+    u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 1 */
+    const float x5 = cp[5].x;
+    const float y5 = cp[5].y;
+    const float w5 = cp[5].w;
+    const float g5 = e2 * w5;
+    const float m1_5 = x1 * y5 - y1 * x5;
+    const float m0_5 = x0 * y5 - y0 * x5;
+    u = ((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    const float m2_4 = x2 * y4 - y2 * x4;
+    u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 2 */
+    const float x8 = cp[8].x;
+    const float y8 = cp[8].y;
+    const float w8 = cp[8].w;
+    const float g8 = e2 * w8;
+    const float m1_8 = x1 * y8 - y1 * x8;
+    const float x7 = cp[7].x;
+    const float y7 = cp[7].y;
+    const float w7 = cp[7].w;
+    const float g7 = e2 * w7;
+    const float m2_7 = x2 * y7 - y2 * x7;
+    u = g0 * (m1_8 - m2_7);
+    const float m0_8 = x0 * y8 - y0 * x8;
+    u = fma(g1, -m0_8, u);
+    const float m0_7 = x0 * y7 - y0 * x7;
+    u = fma(g2, m0_7, u);
+    u = fma(g7, -m0_2, u);
+    u = fma(g8, m0_1, u);
+    v = (u + u);
+    const float m3_5 = x3 * y5 - y3 * x5;
+    u = g0 * (m3_5);
+    u = fma(g3, -m0_5, u);
+    u = fma(g5, m0_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m2_4);
+    u = fma(g2, m1_4, u);
+    u = fma(g4, -m1_2, u);
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 4 */
+    const float m1_7 = x1 * y7 - y1 * x7;
+    u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+    const float x6 = cp[6].x;
+    const float y6 = cp[6].y;
+    const float w6 = cp[6].w;
+    const float g6 = e2 * w6;
+    const float m2_6 = x2 * y6 - y2 * x6;
+    const float m0_6 = x0 * y6 - y0 * x6;
+    u -= ((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+    v = u;
+    const float m1_3 = x1 * y3 - y1 * x3;
+    u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+    v += (u + u);
+    const float m3_4 = x3 * y4 - y3 * x4;
+    u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 3 */
+    const float x9 = cp[9].x;
+    const float y9 = cp[9].y;
+    const float w9 = cp[9].w;
+    const float g9 = e2 * w9;
+    const float m1_9 = x1 * y9 - y1 * x9;
+    const float m0_9 = x0 * y9 - y0 * x9;
+    u = ((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
+    const float m2_8 = x2 * y8 - y2 * x8;
+    u -= ((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
+    v = u;
+    const float m2_5 = x2 * y5 - y2 * x5;
+    u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v += (u + u);
+    const float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 5 */
+    const float x14 = cp[14].x;
+    const float y14 = cp[14].y;
+    const float w14 = cp[14].w;
+    const float g14 = e2 * w14;
+    const float m1_14 = x1 * y14 - y1 * x14;
+    const float m0_14 = x0 * y14 - y0 * x14;
+    u = ((g0 * m1_14 - g1 * m0_14) + g14 * m0_1);
+    const float x13 = cp[13].x;
+    const float y13 = cp[13].y;
+    const float w13 = cp[13].w;
+    const float g13 = e2 * w13;
+    const float m2_13 = x2 * y13 - y2 * x13;
+    const float m0_13 = x0 * y13 - y0 * x13;
+    u -= ((g0 * m2_13 - g2 * m0_13) + g13 * m0_2);
+    v = u;
+    const float m2_9 = x2 * y9 - y2 * x9;
+    u = -((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    const float m4_9 = x4 * y9 - y4 * x9;
+    u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
+    const float m5_8 = x5 * y8 - y5 * x8;
+    u -= ((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 9 */
+    const float m1_13 = x1 * y13 - y1 * x13;
+    const float x12 = cp[12].x;
+    const float y12 = cp[12].y;
+    const float w12 = cp[12].w;
+    const float g12 = e2 * w12;
+    const float m2_12 = x2 * y12 - y2 * x12;
+    u = g0 * (m1_13 - m2_12);
+    u = fma(g1, -m0_13, u);
+    const float m0_12 = x0 * y12 - y0 * x12;
+    u = fma(g2, m0_12, u);
+    u = fma(g12, -m0_2, u);
+    u = fma(g13, m0_1, u);
+    v = u;
+    const float m3_9 = x3 * y9 - y3 * x9;
+    const float m4_8 = x4 * y8 - y4 * x8;
+    u = g0 * (m3_9 + m4_8);
+    u = fma(g3, -m0_9, u);
+    u = fma(g4, -m0_8, u);
+    u = fma(g8, m0_4, u);
+    u = fma(g9, m0_3, u);
+    v += (u + u) + u;
+    const float m5_7 = x5 * y7 - y5 * x7;
+    u = g0 * (-m5_7);
+    u = fma(g1, m4_5, u);
+    u = fma(g2, m3_5, u);
+    u = fma(g3, -m2_5, u);
+    u = fma(g4, -m1_5, u);
+    u = fma(g5, m1_4 + m2_3 + m0_7, u);
+    u = fma(g7, -m0_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_8);
+    u = fma(g2, m1_8, u);
+    u = fma(g8, -m1_2, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 8 */
+    const float x11 = cp[11].x;
+    const float y11 = cp[11].y;
+    const float w11 = cp[11].w;
+    const float g11 = e2 * w11;
+    const float m1_11 = x1 * y11 - y1 * x11;
+    const float m0_11 = x0 * y11 - y0 * x11;
+    u = ((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
+    const float x10 = cp[10].x;
+    const float y10 = cp[10].y;
+    const float w10 = cp[10].w;
+    const float g10 = e2 * w10;
+    const float m2_10 = x2 * y10 - y2 * x10;
+    const float m0_10 = x0 * y10 - y0 * x10;
+    u -= ((g0 * m2_10 - g2 * m0_10) + g10 * m0_2);
+    v = u;
+    const float m1_6 = x1 * y6 - y1 * x6;
+    u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    const float m3_7 = x3 * y7 - y3 * x7;
+    u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
+    const float m4_6 = x4 * y6 - y4 * x6;
+    u -= ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 6 */
+    const float m3_11 = x3 * y11 - y3 * x11;
+    u = ((g0 * m3_11 - g3 * m0_11) + g11 * m0_3);
+    const float m4_10 = x4 * y10 - y4 * x10;
+    u -= ((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
+    const float m1_10 = x1 * y10 - y1 * x10;
+    u -= ((g1 * m2_10 - g2 * m1_10) + g10 * m1_2);
+    v = u;
+    const float m3_6 = x3 * y6 - y3 * x6;
+    u = ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+    v += (u + u);
+    const float m6_7 = x6 * y7 - y6 * x7;
+    u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+    v += (u + u) + u;
+    u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 10 */
+    const float m1_12 = x1 * y12 - y1 * x12;
+    const float m2_11 = x2 * y11 - y2 * x11;
+    u = g0 * (m1_12 - m2_11);
+    u = fma(g1, -m0_12, u);
+    u = fma(g2, m0_11, u);
+    u = fma(g11, -m0_2, u);
+    u = fma(g12, m0_1, u);
+    v = u;
+    const float m4_7 = x4 * y7 - y4 * x7;
+    const float m5_6 = x5 * y6 - y5 * x6;
+    u = g0 * (-m4_7 - m5_6);
+    u = fma(g4, m0_7, u);
+    u = fma(g5, m0_6, u);
+    u = fma(g6, -m0_5, u);
+    u = fma(g7, -m0_4, u);
+    v += (u + u) + u;
+    const float m3_8 = x3 * y8 - y3 * x8;
+    u = g0 * (m3_8);
+    u = fma(g1, m3_5, u);
+    u = fma(g2, m3_4, u);
+    u = fma(g3, -m1_5 - m2_4 - m0_8, u);
+    u = fma(g4, m2_3, u);
+    u = fma(g5, m1_3, u);
+    u = fma(g8, m0_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_7);
+    u = fma(g2, m1_7, u);
+    u = fma(g7, -m1_2, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 7 */
+    const float m5_10 = x5 * y10 - y5 * x10;
+    u = g0 * (-m5_10);
+    u = fma(g5, m0_10, u);
+    u = fma(g10, -m0_5, u);
+    v = u;
+    const float m4_11 = x4 * y11 - y4 * x11;
+    u = g0 * (-m4_11);
+    u = fma(g4, m0_11, u);
+    u = fma(g11, -m0_4, u);
+    v += (u + u);
+    const float m3_12 = x3 * y12 - y3 * x12;
+    u = g0 * (m3_12);
+    u = fma(g3, -m0_12, u);
+    u = fma(g12, m0_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m2_11);
+    u = fma(g2, m1_11 - m4_6, u);
+    u = fma(g4, m2_6, u);
+    u = fma(g6, -m2_4, u);
+    u = fma(g11, -m1_2, u);
+    v += ((u + u) + (u + u));
+    const float m6_8 = x6 * y8 - y6 * x8;
+    u = g0 * (m6_8);
+    u = fma(g6, -m0_8, u);
+    u = fma(g8, m0_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m5_6);
+    u = fma(g5, m1_6, u);
+    u = fma(g6, -m1_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (m3_8 - m4_7);
+    u = fma(g2, m3_7, u);
+    u = fma(g3, -m1_8 - m2_7, u);
+    u = fma(g4, m1_7, u);
+    u = fma(g7, m2_3 - m1_4, u);
+    u = fma(g8, m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 11 */
+    const float m6_11 = x6 * y11 - y6 * x11;
+    u = ((g0 * m6_11 - g6 * m0_11) + g11 * m0_6);
+    const float m7_10 = x7 * y10 - y7 * x10;
+    u -= ((g0 * m7_10 - g7 * m0_10) + g10 * m0_7);
+    const float m3_10 = x3 * y10 - y3 * x10;
+    u += ((g2 * m3_10 - g3 * m2_10) + g10 * m2_3);
+    v = u;
+    u = ((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
+    v += (u + u);
+    u = -((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
+    v += (u + u) + u;
+    u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 15 */
+    const float m4_14 = x4 * y14 - y4 * x14;
+    u = ((g0 * m4_14 - g4 * m0_14) + g14 * m0_4);
+    const float m5_13 = x5 * y13 - y5 * x13;
+    u -= ((g0 * m5_13 - g5 * m0_13) + g13 * m0_5);
+    const float m2_14 = x2 * y14 - y2 * x14;
+    u -= ((g1 * m2_14 - g2 * m1_14) + g14 * m1_2);
+    v = u;
+    const float m5_9 = x5 * y9 - y5 * x9;
+    u = -((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
+    v += (u + u);
+    const float m8_9 = x8 * y9 - y8 * x9;
+    u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
+    v += (u + u) + u;
+    u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 14 */
+    const float m3_13 = x3 * y13 - y3 * x13;
+    const float m5_11 = x5 * y11 - y5 * x11;
+    const float m6_9 = x6 * y9 - y6 * x9;
+    u = g0 * (m3_13 + m6_9 - m5_11);
+    u = fma(g3, -m0_13, u);
+    u = fma(g5, m0_11, u);
+    u = fma(g6, -m0_9, u);
+    u = fma(g9, m0_6, u);
+    u = fma(g11, -m0_5, u);
+    u = fma(g13, m0_3, u);
+    v = u;
+    u = g1 * (m3_9 - m2_12);
+    u = fma(g2, m1_12 - m5_6, u);
+    u = fma(g3, -m1_9, u);
+    u = fma(g5, m2_6, u);
+    u = fma(g6, -m2_5, u);
+    u = fma(g9, m1_3, u);
+    u = fma(g12, -m1_2, u);
+    v += (u + u);
+    const float m7_8 = x7 * y8 - y7 * x8;
+    u = g0 * (m7_8);
+    u = fma(g7, -m0_8, u);
+    u = fma(g8, m0_7, u);
+    v += (u + u) + u;
+    u = g1 * (-m5_7);
+    u = fma(g2, m3_8, u);
+    u = fma(g3, -m2_8, u);
+    u = fma(g5, m1_7, u);
+    u = fma(g7, -m1_5, u);
+    u = fma(g8, m2_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 12 */
+    const float m3_14 = x3 * y14 - y3 * x14;
+    u = g0 * (m3_14);
+    u = fma(g3, -m0_14, u);
+    u = fma(g14, m0_3, u);
+    v = u;
+    const float m4_13 = x4 * y13 - y4 * x13;
+    u = g0 * (m4_13);
+    u = fma(g4, -m0_13, u);
+    u = fma(g13, m0_4, u);
+    v += (u + u);
+    const float m5_12 = x5 * y12 - y5 * x12;
+    u = g0 * (-m5_12);
+    u = fma(g5, m0_12, u);
+    u = fma(g12, -m0_5, u);
+    v += (u + u) + u;
+    u = g1 * (m4_9 - m2_13);
+    u = fma(g2, m1_13, u);
+    u = fma(g4, -m1_9, u);
+    u = fma(g9, m1_4, u);
+    u = fma(g13, -m1_2, u);
+    v += ((u + u) + (u + u));
+    const float m7_9 = x7 * y9 - y7 * x9;
+    u = g0 * (m7_9);
+    u = fma(g7, -m0_9, u);
+    u = fma(g9, m0_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m3_9);
+    u = fma(g3, -m2_9, u);
+    u = fma(g9, m2_3, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m5_8);
+    u = fma(g2, m4_8 - m5_7, u);
+    u = fma(g4, -m2_8, u);
+    u = fma(g5, m1_8 + m2_7, u);
+    u = fma(g7, -m2_5, u);
+    u = fma(g8, m2_4 - m1_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 13 */
+    const float m8_13 = x8 * y13 - y8 * x13;
+    u = g0 * (m8_13);
+    u = fma(g1, m4_14, u);
+    u = fma(g4, -m1_14, u);
+    u = fma(g8, -m0_13, u);
+    u = fma(g13, m0_8, u);
+    u = fma(g14, m1_4, u);
+    v = u;
+    const float m7_14 = x7 * y14 - y7 * x14;
+    u = g0 * (m7_14);
+    u = fma(g7, -m0_14, u);
+    u = fma(g14, m0_7, u);
+    v += (u + u);
+    const float m9_12 = x9 * y12 - y9 * x12;
+    u = g0 * (-m9_12);
+    u = fma(g2, m3_14, u);
+    u = fma(g3, -m2_14, u);
+    u = fma(g9, m0_12, u);
+    u = fma(g12, -m0_9, u);
+    u = fma(g14, m2_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m5_13);
+    u = fma(g2, -m5_12, u);
+    u = fma(g3, -m5_9, u);
+    u = fma(g5, m1_13 + m2_12 + m3_9, u);
+    u = fma(g9, -m3_5, u);
+    u = fma(g12, -m2_5, u);
+    u = fma(g13, -m1_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_9);
+    u = fma(g2, m4_13, u);
+    u = fma(g4, -m2_13, u);
+    u = fma(g8, -m1_9, u);
+    u = fma(g9, m1_8, u);
+    u = fma(g13, m2_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (m7_9);
+    u = fma(g7, -m2_9, u);
+    u = fma(g9, m2_7, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g4 * (-m5_8);
+    u = fma(g5, m4_8, u);
+    u = fma(g8, -m4_5, u);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 19 */
+    const float m8_14 = x8 * y14 - y8 * x14;
+    u = ((g0 * m8_14 - g8 * m0_14) + g14 * m0_8);
+    const float m9_13 = x9 * y13 - y9 * x13;
+    u -= ((g0 * m9_13 - g9 * m0_13) + g13 * m0_9);
+    const float m5_14 = x5 * y14 - y5 * x14;
+    u -= ((g1 * m5_14 - g5 * m1_14) + g14 * m1_5);
+    v = u;
+    u = -((g2 * m5_13 - g5 * m2_13) + g13 * m2_5);
+    v += (u + u);
+    u = ((g2 * m4_14 - g4 * m2_14) + g14 * m2_4);
+    v += (u + u) + u;
+    u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 20 */
+    const float m10_11 = x10 * y11 - y10 * x11;
+    u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
+    const float m6_10 = x6 * y10 - y6 * x10;
+    u += ((g2 * m6_10 - g6 * m2_10) + g10 * m2_6);
+    v = u;
+    u = ((g1 * m6_11 - g6 * m1_11) + g11 * m1_6);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
+    u -= ((g3 * m4_10 - g4 * m3_10) + g10 * m3_4);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 21 */
+    const float m10_12 = x10 * y12 - y10 * x12;
+    u = g0 * (m10_12);
+    u = fma(g10, -m0_12, u);
+    u = fma(g12, m0_10, u);
+    v = u;
+    u = g2 * (-m7_10);
+    u = fma(g7, m2_10, u);
+    u = fma(g10, -m2_7, u);
+    v += (u + u);
+    u = g3 * (-m5_10);
+    u = fma(g5, m3_10, u);
+    u = fma(g10, -m3_5, u);
+    v += (u + u) + u;
+    const float m7_11 = x7 * y11 - y7 * x11;
+    u = g1 * (-m7_11);
+    u = fma(g2, m6_11, u);
+    u = fma(g6, -m2_11, u);
+    u = fma(g7, m1_11, u);
+    u = fma(g11, m2_6 - m1_7, u);
+    v += ((u + u) + (u + u));
+    const float m8_10 = x8 * y10 - y8 * x10;
+    u = g1 * (-m8_10);
+    u = fma(g8, m1_10, u);
+    u = fma(g10, -m1_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    const float m6_12 = x6 * y12 - y6 * x12;
+    u = g1 * (m6_12);
+    u = fma(g6, -m1_12, u);
+    u = fma(g12, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g3 * (m6_8 - m4_11);
+    u = fma(g4, m3_11 + m6_7, u);
+    u = fma(g6, -m4_7 - m3_8, u);
+    u = fma(g7, m4_6, u);
+    u = fma(g8, m3_6, u);
+    u = fma(g11, -m3_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 22 */
+    u = g0 * (-m7_11);
+    u = fma(g2, -m4_10, u);
+    u = fma(g4, m2_10, u);
+    u = fma(g7, m0_11, u);
+    u = fma(g10, -m2_4, u);
+    u = fma(g11, -m0_7, u);
+    v = u;
+    u = g0 * (-m8_10);
+    u = fma(g8, m0_10, u);
+    u = fma(g10, -m0_8, u);
+    v += (u + u);
+    u = g0 * (m6_12);
+    u = fma(g1, -m5_10, u);
+    u = fma(g5, m1_10, u);
+    u = fma(g6, -m0_12, u);
+    u = fma(g10, -m1_5, u);
+    u = fma(g12, m0_6, u);
+    v += (u + u) + u;
+    u = g1 * (m3_12);
+    u = fma(g2, m3_11, u);
+    u = fma(g3, -m1_12 - m2_11 - m5_6, u);
+    u = fma(g5, m3_6, u);
+    u = fma(g6, -m3_5, u);
+    u = fma(g11, m2_3, u);
+    u = fma(g12, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m4_11);
+    u = fma(g2, m6_7, u);
+    u = fma(g4, m1_11, u);
+    u = fma(g6, -m2_7, u);
+    u = fma(g7, m2_6, u);
+    u = fma(g11, -m1_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (m6_8);
+    u = fma(g6, -m1_8, u);
+    u = fma(g8, m1_6, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g3 * (-m4_7);
+    u = fma(g4, m3_7, u);
+    u = fma(g7, -m3_4, u);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 16 */
+    const float m9_10 = x9 * y10 - y9 * x10;
+    u = g0 * (-m9_10);
+    u = fma(g9, m0_10, u);
+    u = fma(g10, -m0_9, u);
+    v = u;
+    u = g2 * (-m5_10);
+    u = fma(g5, m2_10, u);
+    u = fma(g10, -m2_5, u);
+    v += (u + u);
+    const float m6_13 = x6 * y13 - y6 * x13;
+    const float m7_12 = x7 * y12 - y7 * x12;
+    u = g0 * (m6_13 + m7_12);
+    u = fma(g6, -m0_13, u);
+    u = fma(g7, -m0_12, u);
+    u = fma(g12, m0_7, u);
+    u = fma(g13, m0_6, u);
+    v += (u + u) + u;
+    const float m8_11 = x8 * y11 - y8 * x11;
+    u = g0 * (-m8_11);
+    u = fma(g8, m0_11, u);
+    u = fma(g11, -m0_8, u);
+    v += ((u + u) + (u + u)) + u;
+    const float m4_12 = x4 * y12 - y4 * x12;
+    u = g1 * (m3_13 - m4_12);
+    u = fma(g3, -m1_13, u);
+    u = fma(g4, m1_12 - m5_6, u);
+    u = fma(g5, m4_6, u);
+    u = fma(g6, -m4_5, u);
+    u = fma(g12, -m1_4, u);
+    u = fma(g13, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m6_9);
+    u = fma(g6, -m1_9, u);
+    u = fma(g9, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m5_11);
+    u = fma(g5, m1_11, u);
+    u = fma(g11, -m1_5, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (m3_12);
+    u = fma(g3, -m2_12, u);
+    u = fma(g12, m2_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m6_8);
+    u = fma(g6, -m2_8, u);
+    u = fma(g8, m2_6, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g3 * (-m4_8 - m5_7);
+    u = fma(g4, m3_8, u);
+    u = fma(g5, m3_7, u);
+    u = fma(g7, -m3_5, u);
+    u = fma(g8, -m3_4, u);
+    v = fma(18.0f, u, v);
+    u = g1 * (m7_8);
+    u = fma(g7, -m1_8, u);
+    u = fma(g8, m1_7, u);
+    v = fma(24.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 17 */
+    const float m10_13 = x10 * y13 - y10 * x13;
+    u = g0 * (m10_13);
+    u = fma(g10, -m0_13, u);
+    u = fma(g13, m0_10, u);
+    v = u;
+    const float m11_12 = x11 * y12 - y11 * x12;
+    u = g0 * (m11_12);
+    u = fma(g11, -m0_12, u);
+    u = fma(g12, m0_11, u);
+    v += (u + u);
+    u = g1 * (-m9_10);
+    u = fma(g4, -m5_10, u);
+    u = fma(g5, m4_10, u);
+    u = fma(g9, m1_10, u);
+    u = fma(g10, -m1_9 - m4_5, u);
+    v += (u + u) + u;
+    u = g2 * (-m8_10);
+    u = fma(g8, m2_10, u);
+    u = fma(g10, -m2_8, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g1 * (m7_12);
+    u = fma(g3, m6_9, u);
+    u = fma(g5, m6_7, u);
+    u = fma(g6, -m3_9 - m5_7, u);
+    u = fma(g7, m5_6 - m1_12, u);
+    u = fma(g9, m3_6, u);
+    u = fma(g12, m1_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m6_13);
+    u = fma(g6, -m1_13, u);
+    u = fma(g13, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (m6_12);
+    u = fma(g6, -m2_12, u);
+    u = fma(g12, m2_6, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g3 * (-m5_11);
+    u = fma(g5, m3_11, u);
+    u = fma(g11, -m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m8_11);
+    u = fma(g8, m1_11, u);
+    u = fma(g11, -m1_8, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g3 * (m7_8 - m4_12);
+    u = fma(g4, m3_12, u);
+    u = fma(g7, -m3_8, u);
+    u = fma(g8, m3_7, u);
+    u = fma(g12, -m3_4, u);
+    v = fma(18.0f, u, v);
+    u = g4 * (m6_8);
+    u = fma(g6, -m4_8, u);
+    u = fma(g8, m4_6, u);
+    v = fma(24.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 23 */
+    const float m12_14 = x12 * y14 - y12 * x14;
+    u = g0 * (m12_14);
+    u = fma(g12, -m0_14, u);
+    u = fma(g14, m0_12, u);
+    v = u;
+    u = g1 * (m8_14);
+    u = fma(g8, -m1_14, u);
+    u = fma(g14, m1_8, u);
+    v += (u + u);
+    u = g3 * (-m5_14);
+    u = fma(g5, m3_14, u);
+    u = fma(g14, -m3_5, u);
+    v += (u + u) + u;
+    u = g1 * (-m9_13);
+    u = fma(g2, m8_13, u);
+    u = fma(g8, -m2_13, u);
+    u = fma(g9, m1_13, u);
+    u = fma(g13, m2_8 - m1_9, u);
+    v += ((u + u) + (u + u));
+    u = g2 * (m7_14);
+    u = fma(g7, -m2_14, u);
+    u = fma(g14, m2_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m9_12);
+    u = fma(g9, m2_12, u);
+    u = fma(g12, -m2_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g4 * (m8_9 - m5_13);
+    u = fma(g5, m4_13 + m7_9, u);
+    u = fma(g7, -m5_9, u);
+    u = fma(g8, -m4_9, u);
+    u = fma(g9, m4_8 + m5_7, u);
+    u = fma(g13, -m4_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 26 */
+    const float m13_14 = x13 * y14 - y13 * x14;
+    u = ((g0 * m13_14 - g13 * m0_14) + g14 * m0_13);
+    const float m9_14 = x9 * y14 - y9 * x14;
+    u -= ((g1 * m9_14 - g9 * m1_14) + g14 * m1_9);
+    v = u;
+    u = -((g2 * m9_13 - g9 * m2_13) + g13 * m2_9);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = ((g2 * m8_14 - g8 * m2_14) + g14 * m2_8);
+    u -= ((g4 * m5_14 - g5 * m4_14) + g14 * m4_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 27 */
+    u = ((g1 * m10_11 - g10 * m1_11) + g11 * m1_10);
+    u += ((g4 * m6_10 - g6 * m4_10) + g10 * m4_6);
+    v = u;
+    u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
+    v += (u + u);
+    u = -((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 28 */
+    u = g2 * (m10_11);
+    u = fma(g5, m6_10, u);
+    u = fma(g6, -m5_10, u);
+    u = fma(g10, m5_6 - m2_11, u);
+    u = fma(g11, m2_10, u);
+    v = u;
+    u = g1 * (m10_12);
+    u = fma(g4, -m7_10, u);
+    u = fma(g7, m4_10, u);
+    u = fma(g10, -m1_12 - m4_7, u);
+    u = fma(g12, m1_10, u);
+    v += (u + u) + u;
+    u = g3 * (m6_12 - m7_11 - m8_10);
+    u = fma(g6, -m3_12, u);
+    u = fma(g7, m3_11, u);
+    u = fma(g8, m3_10, u);
+    u = fma(g10, -m3_8, u);
+    u = fma(g11, -m3_7, u);
+    u = fma(g12, m3_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (m6_11);
+    u = fma(g6, -m4_11, u);
+    u = fma(g11, m4_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 29 */
+    u = g1 * (m10_13);
+    u = fma(g2, m10_12, u);
+    u = fma(g3, -m9_10, u);
+    u = fma(g9, m3_10, u);
+    u = fma(g10, -m1_13 - m2_12 - m3_9, u);
+    u = fma(g12, m2_10, u);
+    u = fma(g13, m1_10, u);
+    v = u;
+    u = g1 * (m11_12);
+    u = fma(g3, m6_13, u);
+    u = fma(g5, m6_11, u);
+    u = fma(g6, -m3_13 - m5_11, u);
+    u = fma(g11, m5_6 - m1_12, u);
+    u = fma(g12, m1_11, u);
+    u = fma(g13, m3_6, u);
+    v += (u + u);
+    u = g4 * (-m8_10);
+    u = fma(g8, m4_10, u);
+    u = fma(g10, -m4_8, u);
+    v += (u + u) + u;
+    u = g3 * (-m8_11);
+    u = fma(g4, m6_12, u);
+    u = fma(g6, -m4_12, u);
+    u = fma(g8, m3_11, u);
+    u = fma(g11, -m3_8, u);
+    u = fma(g12, m4_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 30 */
+    const float m10_14 = x10 * y14 - y10 * x14;
+    u = g1 * (m10_14);
+    u = fma(g10, -m1_14, u);
+    u = fma(g14, m1_10, u);
+    v = u;
+    const float m6_14 = x6 * y14 - y6 * x14;
+    u = g3 * (m6_14);
+    u = fma(g6, -m3_14, u);
+    u = fma(g14, m3_6, u);
+    v += (u + u);
+    u = g2 * (m10_13);
+    u = fma(g5, -m8_10, u);
+    u = fma(g8, m5_10, u);
+    u = fma(g10, -m2_13 - m5_8, u);
+    u = fma(g13, m2_10, u);
+    v += (u + u) + u;
+    u = g4 * (-m9_10);
+    u = fma(g9, m4_10, u);
+    u = fma(g10, -m4_9, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (m11_12);
+    const float m7_13 = x7 * y13 - y7 * x13;
+    u = fma(g3, m7_13, u);
+    u = fma(g5, m7_11, u);
+    u = fma(g7, -m3_13 - m5_11, u);
+    u = fma(g11, m5_7 - m2_12, u);
+    u = fma(g12, m2_11, u);
+    u = fma(g13, m3_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    const float m11_13 = x11 * y13 - y11 * x13;
+    u = g1 * (m11_13);
+    u = fma(g11, -m1_13, u);
+    u = fma(g13, m1_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    const float m9_11 = x9 * y11 - y9 * x11;
+    u = g3 * (-m9_11);
+    u = fma(g9, m3_11, u);
+    u = fma(g11, -m3_9, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g5 * (m6_12);
+    u = fma(g6, -m5_12, u);
+    u = fma(g12, m5_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (m6_13);
+    u = fma(g6, -m4_13, u);
+    u = fma(g13, m4_6, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    const float m8_12 = x8 * y12 - y8 * x12;
+    u = g3 * (-m8_12);
+    u = fma(g4, m7_12, u);
+    u = fma(g7, -m4_12, u);
+    u = fma(g8, m3_12, u);
+    u = fma(g12, m4_7 - m3_8, u);
+    v = fma(18.0f, u, v);
+    u = g4 * (-m8_11);
+    u = fma(g8, m4_11, u);
+    u = fma(g11, -m4_8, u);
+    v = fma(24.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 31 */
+    u = g2 * (m10_14);
+    u = fma(g10, -m2_14, u);
+    u = fma(g14, m2_10, u);
+    v = u;
+    u = g5 * (-m9_10);
+    u = fma(g9, m5_10, u);
+    u = fma(g10, -m5_9, u);
+    v += (u + u);
+    const float m11_14 = x11 * y14 - y11 * x14;
+    u = g1 * (m11_14);
+    u = fma(g3, m7_14, u);
+    u = fma(g7, -m3_14, u);
+    u = fma(g11, -m1_14, u);
+    u = fma(g14, m1_11 + m3_7, u);
+    v += (u + u) + u;
+    u = g4 * (m6_14);
+    u = fma(g6, -m4_14, u);
+    u = fma(g14, m4_6, u);
+    v += ((u + u) + (u + u)) + u;
+    const float m12_13 = x12 * y13 - y12 * x13;
+    u = g1 * (m12_13);
+    u = fma(g3, -m8_13, u);
+    u = fma(g5, -m8_11, u);
+    u = fma(g8, m3_13 + m5_11, u);
+    u = fma(g11, -m5_8, u);
+    u = fma(g12, -m1_13, u);
+    u = fma(g13, m1_12 - m3_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m11_13);
+    u = fma(g11, -m2_13, u);
+    u = fma(g13, m2_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g5 * (m6_13);
+    u = fma(g6, -m5_13, u);
+    u = fma(g13, m5_6, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g3 * (-m9_12);
+    u = fma(g9, m3_12, u);
+    u = fma(g12, -m3_9, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m9_11);
+    u = fma(g9, m4_11, u);
+    u = fma(g11, -m4_9, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g4 * (-m8_12);
+    u = fma(g5, m7_12, u);
+    u = fma(g7, -m5_12, u);
+    u = fma(g8, m4_12, u);
+    u = fma(g12, m5_7 - m4_8, u);
+    v = fma(18.0f, u, v);
+    u = g4 * (m7_13);
+    u = fma(g7, -m4_13, u);
+    u = fma(g13, m4_7, u);
+    v = fma(24.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 32 */
+    u = g1 * (m12_14);
+    u = fma(g2, m11_14, u);
+    u = fma(g5, m6_14, u);
+    u = fma(g6, -m5_14, u);
+    u = fma(g11, -m2_14, u);
+    u = fma(g12, -m1_14, u);
+    u = fma(g14, m1_12 + m2_11 + m5_6, u);
+    v = u;
+    u = g2 * (m12_13);
+    u = fma(g3, -m9_13, u);
+    u = fma(g5, -m9_11, u);
+    u = fma(g9, m3_13 + m5_11, u);
+    u = fma(g11, -m5_9, u);
+    u = fma(g12, -m2_13, u);
+    u = fma(g13, m2_12 - m3_9, u);
+    v += (u + u);
+    u = g4 * (m7_14);
+    u = fma(g7, -m4_14, u);
+    u = fma(g14, m4_7, u);
+    v += (u + u) + u;
+    u = g4 * (-m9_12);
+    u = fma(g5, m7_13, u);
+    u = fma(g7, -m5_13, u);
+    u = fma(g9, m4_12, u);
+    u = fma(g12, -m4_9, u);
+    u = fma(g13, m5_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 33 */
+    u = g1 * (m13_14);
+    u = fma(g3, -m9_14, u);
+    u = fma(g9, m3_14, u);
+    u = fma(g13, -m1_14, u);
+    u = fma(g14, m1_13 - m3_9, u);
+    v = u;
+    u = g2 * (m12_14);
+    u = fma(g4, m8_14, u);
+    u = fma(g8, -m4_14, u);
+    u = fma(g12, -m2_14, u);
+    u = fma(g14, m2_12 + m4_8, u);
+    v += (u + u) + u;
+    u = g5 * (m8_13 + m7_14 - m9_12);
+    u = fma(g7, -m5_14, u);
+    u = fma(g8, -m5_13, u);
+    u = fma(g9, m5_12, u);
+    u = fma(g12, -m5_9, u);
+    u = fma(g13, m5_8, u);
+    u = fma(g14, m5_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m9_13);
+    u = fma(g9, m4_13, u);
+    u = fma(g13, -m4_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 34 */
+    u = ((g2 * m13_14 - g13 * m2_14) + g14 * m2_13);
+    u -= ((g4 * m9_14 - g9 * m4_14) + g14 * m4_9);
+    v = u;
+    u = -((g5 * m9_13 - g9 * m5_13) + g13 * m5_9);
+    v += (u + u);
+    u = ((g5 * m8_14 - g8 * m5_14) + g14 * m5_8);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 35 */
+    u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
+    u -= ((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 36 */
+    u = g4 * (m10_11);
+    u = fma(g6, -m8_10, u);
+    u = fma(g8, m6_10, u);
+    u = fma(g10, -m4_11 - m6_8, u);
+    u = fma(g11, m4_10, u);
+    v = (u + u);
+    u = g3 * (m10_12);
+    u = fma(g10, -m3_12, u);
+    u = fma(g12, m3_10, u);
+    v += (u + u) + u;
+    u = g6 * (-m7_11);
+    u = fma(g7, m6_11, u);
+    u = fma(g11, -m6_7, u);
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 37 */
+    u = g5 * (m10_11);
+    u = fma(g6, -m9_10, u);
+    u = fma(g9, m6_10, u);
+    u = fma(g10, -m5_11 - m6_9, u);
+    u = fma(g11, m5_10, u);
+    v = u;
+    u = g3 * (m10_13);
+    u = fma(g7, -m8_10, u);
+    u = fma(g8, m7_10, u);
+    u = fma(g10, -m3_13 - m7_8, u);
+    u = fma(g13, m3_10, u);
+    v += (u + u) + u;
+    u = g3 * (m11_12);
+    u = fma(g4, m10_12, u);
+    u = fma(g6, -m7_12, u);
+    u = fma(g7, m6_12, u);
+    u = fma(g10, -m4_12, u);
+    u = fma(g11, -m3_12, u);
+    u = fma(g12, m3_11 + m4_10 - m6_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (-m8_11);
+    u = fma(g8, m6_11, u);
+    u = fma(g11, -m6_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 38 */
+    u = g3 * (m10_14);
+    u = fma(g10, -m3_14, u);
+    u = fma(g14, m3_10, u);
+    v = u;
+    u = g7 * (-m9_10);
+    u = fma(g9, m7_10, u);
+    u = fma(g10, -m7_9, u);
+    v += (u + u);
+    u = g5 * (m10_12);
+    u = fma(g10, -m5_12, u);
+    u = fma(g12, m5_10, u);
+    v += (u + u) + u;
+    u = g6 * (-m9_11 - m7_13);
+    u = fma(g7, m6_13, u);
+    u = fma(g9, m6_11, u);
+    u = fma(g11, -m6_9, u);
+    u = fma(g13, -m6_7, u);
+    v += ((u + u) + (u + u));
+    u = g4 * (m10_13);
+    u = fma(g10, -m4_13, u);
+    u = fma(g13, m4_10, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g3 * (m11_13);
+    u = fma(g11, -m3_13, u);
+    u = fma(g13, m3_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g4 * (m11_12);
+    u = fma(g6, -m8_12, u);
+    u = fma(g7, -m8_11, u);
+    u = fma(g8, m7_11 + m6_12, u);
+    u = fma(g11, -m7_8 - m4_12, u);
+    u = fma(g12, m4_11 - m6_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 39 */
+    u = g6 * (-m7_14);
+    u = fma(g7, m6_14, u);
+    u = fma(g8, -m9_10, u);
+    u = fma(g9, m8_10, u);
+    u = fma(g10, -m8_9, u);
+    u = fma(g14, -m6_7, u);
+    v = u;
+    u = g4 * (m10_14);
+    u = fma(g10, -m4_14, u);
+    u = fma(g14, m4_10, u);
+    v += (u + u);
+    u = g3 * (m11_14);
+    u = fma(g5, m10_13, u);
+    u = fma(g10, -m5_13, u);
+    u = fma(g11, -m3_14, u);
+    u = fma(g13, m5_10, u);
+    u = fma(g14, m3_11, u);
+    v += (u + u) + u;
+    u = g3 * (m12_13);
+    u = fma(g5, m11_12, u);
+    u = fma(g6, -m9_12, u);
+    u = fma(g9, m6_12, u);
+    u = fma(g11, -m5_12, u);
+    u = fma(g12, m5_11 - m3_13 - m6_9, u);
+    u = fma(g13, m3_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (-m8_13);
+    u = fma(g7, -m9_11, u);
+    u = fma(g8, m6_13, u);
+    u = fma(g9, m7_11, u);
+    u = fma(g11, -m7_9, u);
+    u = fma(g13, -m6_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g4 * (m11_13);
+    u = fma(g11, -m4_13, u);
+    u = fma(g13, m4_11, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g7 * (-m8_12);
+    u = fma(g8, m7_12, u);
+    u = fma(g12, -m7_8, u);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 40 */
+    u = g5 * (m10_14);
+    u = fma(g10, -m5_14, u);
+    u = fma(g14, m5_10, u);
+    v = u;
+    u = g6 * (-m8_14);
+    u = fma(g8, m6_14, u);
+    u = fma(g14, -m6_8, u);
+    v += (u + u);
+    u = g3 * (m12_14);
+    u = fma(g12, -m3_14, u);
+    u = fma(g14, m3_12, u);
+    v += (u + u) + u;
+    u = g6 * (-m9_13);
+    u = fma(g8, -m9_11, u);
+    u = fma(g9, m6_13 + m8_11, u);
+    u = fma(g11, -m8_9, u);
+    u = fma(g13, -m6_9, u);
+    v += ((u + u) + (u + u));
+    u = g4 * (m11_14);
+    u = fma(g11, -m4_14, u);
+    u = fma(g14, m4_11, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g5 * (m11_13);
+    u = fma(g11, -m5_13, u);
+    u = fma(g13, m5_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g4 * (m12_13);
+    u = fma(g7, -m8_13 - m9_12, u);
+    u = fma(g8, m7_13, u);
+    u = fma(g9, m7_12, u);
+    u = fma(g12, -m4_13 - m7_9, u);
+    u = fma(g13, m4_12 - m7_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 41 */
+    u = g3 * (m13_14);
+    u = fma(g6, -m9_14, u);
+    u = fma(g9, m6_14, u);
+    u = fma(g13, -m3_14, u);
+    u = fma(g14, m3_13 - m6_9, u);
+    v = u;
+    u = g5 * (m11_14);
+    u = fma(g7, -m8_14, u);
+    u = fma(g8, m7_14, u);
+    u = fma(g11, -m5_14, u);
+    u = fma(g14, m5_11 - m7_8, u);
+    v += (u + u) + u;
+    u = g4 * (m12_14);
+    u = fma(g5, m12_13, u);
+    u = fma(g8, -m9_12, u);
+    u = fma(g9, m8_12, u);
+    u = fma(g12, -m4_14 - m5_13 - m8_9, u);
+    u = fma(g13, m5_12, u);
+    u = fma(g14, m4_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g7 * (-m9_13);
+    u = fma(g9, m7_13, u);
+    u = fma(g13, -m7_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 42 */
+    u = g4 * (m13_14);
+    u = fma(g7, -m9_14, u);
+    u = fma(g9, m7_14, u);
+    u = fma(g13, -m4_14, u);
+    u = fma(g14, m4_13 - m7_9, u);
+    v = (u + u);
+    u = g5 * (m12_14);
+    u = fma(g12, -m5_14, u);
+    u = fma(g14, m5_12, u);
+    v += (u + u) + u;
+    u = g8 * (-m9_13);
+    u = fma(g9, m8_13, u);
+    u = fma(g13, -m8_9, u);
+    v += ((u + u) + (u + u));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 43 */
+    u = ((g5 * m13_14 - g13 * m5_14) + g14 * m5_13);
+    u -= ((g8 * m9_14 - g9 * m8_14) + g14 * m8_9);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 44 */
+    u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 45 */
+    u = ((g6 * m10_12 - g10 * m6_12) + g12 * m6_10);
+    u += ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 46 */
+    u = ((g6 * m10_13 - g10 * m6_13) + g13 * m6_10);
+    u += ((g8 * m10_11 - g10 * m8_11) + g11 * m8_10);
+    v = u;
+    u = ((g6 * m11_12 - g11 * m6_12) + g12 * m6_11);
+    v += (u + u);
+    u = ((g7 * m10_12 - g10 * m7_12) + g12 * m7_10);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 47 */
+    u = ((g6 * m10_14 - g10 * m6_14) + g14 * m6_10);
+    u += ((g9 * m10_11 - g10 * m9_11) + g11 * m9_10);
+    v = u;
+    u = ((g6 * m11_13 - g11 * m6_13) + g13 * m6_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = ((g7 * m10_13 - g10 * m7_13) + g13 * m7_10);
+    u += ((g8 * m10_12 - g10 * m8_12) + g12 * m8_10);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g7 * m11_12 - g11 * m7_12) + g12 * m7_11);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 48 */
+    u = ((g6 * m11_14 - g11 * m6_14) + g14 * m6_11);
+    u += ((g7 * m10_14 - g10 * m7_14) + g14 * m7_10);
+    u += ((g9 * m10_12 - g10 * m9_12) + g12 * m9_10);
+    v = u;
+    u = ((g6 * m12_13 - g12 * m6_13) + g13 * m6_12);
+    v += (u + u);
+    u = ((g8 * m10_13 - g10 * m8_13) + g13 * m8_10);
+    v += (u + u) + u;
+    u = ((g8 * m11_12 - g11 * m8_12) + g12 * m8_11);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g7 * m11_13 - g11 * m7_13) + g13 * m7_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 49 */
+    u = ((g6 * m12_14 - g12 * m6_14) + g14 * m6_12);
+    u += ((g8 * m10_14 - g10 * m8_14) + g14 * m8_10);
+    u += ((g9 * m10_13 - g10 * m9_13) + g13 * m9_10);
+    v = u;
+    u = ((g9 * m11_12 - g11 * m9_12) + g12 * m9_11);
+    v += (u + u);
+    u = ((g7 * m11_14 - g11 * m7_14) + g14 * m7_11);
+    v += (u + u) + u;
+    u = ((g7 * m12_13 - g12 * m7_13) + g13 * m7_12);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g8 * m11_13 - g11 * m8_13) + g13 * m8_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 50 */
+    u = ((g6 * m13_14 - g13 * m6_14) + g14 * m6_13);
+    u += ((g9 * m10_14 - g10 * m9_14) + g14 * m9_10);
+    v = u;
+    u = ((g9 * m11_13 - g11 * m9_13) + g13 * m9_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = ((g7 * m12_14 - g12 * m7_14) + g14 * m7_12);
+    u += ((g8 * m11_14 - g11 * m8_14) + g14 * m8_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
+    v = fma(18.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 51 */
+    u = ((g7 * m13_14 - g13 * m7_14) + g14 * m7_13);
+    u += ((g9 * m11_14 - g11 * m9_14) + g14 * m9_11);
+    v = u;
+    u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
+    v += (u + u);
+    u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
+    v += (u + u) + u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 52 */
+    u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
+    u += ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 53 */
+    u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
+    v = u;
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 54 */
+    u = g0 * (m11_14);
+    u = fma(g11, -m0_14, u);
+    u = fma(g14, m0_11, u);
+    v = u;
+    u = g0 * (m12_13);
+    u = fma(g12, -m0_13, u);
+    u = fma(g13, m0_12, u);
+    v += (u + u);
+    u = g2 * (m6_14);
+    u = fma(g3, -m4_14, u);
+    u = fma(g4, m3_14, u);
+    u = fma(g6, -m2_14, u);
+    u = fma(g14, m2_6 - m3_4, u);
+    v += (u + u) + u;
+    u = g1 * (m7_14);
+    u = fma(g7, -m1_14, u);
+    u = fma(g14, m1_7, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (-m8_12);
+    u = fma(g3, m8_9, u);
+    u = fma(g5, m6_9, u);
+    u = fma(g6, -m5_9, u);
+    u = fma(g8, m2_12 - m3_9, u);
+    u = fma(g9, m5_6 + m3_8, u);
+    u = fma(g12, -m2_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m9_11);
+    u = fma(g9, m2_11, u);
+    u = fma(g11, -m2_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m9_12);
+    u = fma(g9, m1_12, u);
+    u = fma(g12, -m1_9, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g3 * (-m5_13);
+    u = fma(g5, m3_13, u);
+    u = fma(g13, -m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m7_13);
+    u = fma(g7, -m2_13, u);
+    u = fma(g13, m2_7, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g4 * (-m5_12);
+    u = fma(g5, m7_8 + m4_12, u);
+    u = fma(g7, -m5_8, u);
+    u = fma(g8, m5_7, u);
+    u = fma(g12, -m4_5, u);
+    v = fma(18.0f, u, v);
+    u = g4 * (m7_9);
+    u = fma(g7, -m4_9, u);
+    u = fma(g9, m4_7, u);
+    v = fma(24.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 25 */
+    u = g0 * (m6_14);
+    u = fma(g6, -m0_14, u);
+    u = fma(g14, m0_6, u);
+    v = u;
+    u = g1 * (m3_14);
+    u = fma(g3, -m1_14, u);
+    u = fma(g14, m1_3, u);
+    v += (u + u);
+    u = g0 * (-m8_12 - m9_11);
+    u = fma(g8, m0_12, u);
+    u = fma(g9, m0_11, u);
+    u = fma(g11, -m0_9, u);
+    u = fma(g12, -m0_8, u);
+    v += (u + u) + u;
+    u = g0 * (m7_13);
+    u = fma(g7, -m0_13, u);
+    u = fma(g13, m0_7, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (m4_12 - m5_11);
+    u = fma(g3, -m4_9, u);
+    u = fma(g4, m3_9 - m2_12, u);
+    u = fma(g5, m2_11, u);
+    u = fma(g9, -m3_4, u);
+    u = fma(g11, -m2_5, u);
+    u = fma(g12, m2_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m6_9);
+    u = fma(g6, -m2_9, u);
+    u = fma(g9, m2_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (m3_13);
+    u = fma(g3, -m2_13, u);
+    u = fma(g13, m2_3, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g1 * (-m5_12);
+    u = fma(g5, m1_12, u);
+    u = fma(g12, -m1_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m7_9);
+    u = fma(g7, -m1_9, u);
+    u = fma(g9, m1_7, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g3 * (-m5_8);
+    u = fma(g4, -m5_7, u);
+    u = fma(g5, m4_7 + m3_8, u);
+    u = fma(g7, -m4_5, u);
+    u = fma(g8, -m3_5, u);
+    v = fma(18.0f, u, v);
+    u = g2 * (m7_8);
+    u = fma(g7, -m2_8, u);
+    u = fma(g8, m2_7, u);
+    v = fma(24.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 18 */
+    u = g0 * (m10_14);
+    u = fma(g10, -m0_14, u);
+    u = fma(g14, m0_10, u);
+    v = u;
+    u = g0 * (m11_13);
+    u = fma(g1, m6_14, u);
+    u = fma(g2, -m9_10, u);
+    u = fma(g6, -m1_14, u);
+    u = fma(g9, m2_10, u);
+    u = fma(g10, -m2_9, u);
+    u = fma(g11, -m0_13, u);
+    u = fma(g13, m0_11, u);
+    u = fma(g14, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m9_11);
+    u = fma(g2, m6_13, u);
+    u = fma(g6, -m2_13, u);
+    u = fma(g9, m1_11, u);
+    u = fma(g11, -m1_9, u);
+    u = fma(g13, m2_6, u);
+    v = fma(28.0f, u, v);
+    u = g1 * (m7_13 - m8_12);
+    u = fma(g2, m7_12 - m8_11, u);
+    u = fma(g3, m7_9 - m4_13, u);
+    u = fma(g4, m3_13 + m6_9 - m5_11, u);
+    u = fma(g5, m4_11 + m6_8, u);
+    u = fma(g6, -m4_9 - m5_8, u);
+    u = fma(g7, -m1_13 - m2_12 - m3_9, u);
+    u = fma(g8, m1_12 + m2_11 + m5_6, u);
+    u = fma(g9, m3_7 + m4_6, u);
+    u = fma(g11, -m2_8 - m4_5, u);
+    u = fma(g12, m2_7 - m1_8, u);
+    u = fma(g13, m1_7 - m3_4, u);
+    v = fma(36.0f, u, v);
+    u = g3 * (-m5_12);
+    u = fma(g5, m3_12, u);
+    u = fma(g12, -m3_5, u);
+    v = fma(54.0f, u, v);
+    u = g4 * (m7_8);
+    u = fma(g7, -m4_8, u);
+    u = fma(g8, m4_7, u);
+    v = fma(108.0f, u, v);
+    lt = lt && v < 0.0f;
+    gt = gt && v > 0.0f; /* plane 24 */
+    return lt ? 1u : gt ? 0u : 2u;
 }
 
-/* Bit 0: d is not < 0; bit 1: d is not > 0 (NaN sets both). */
-uint ptp_tri4_flags(float d)
+/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */
+void ptp_tri4_values(const float4 cp[15], float4 eye, float d[55])
 {
-    return (d < 0.0f ? 0u : 1u) | (d > 0.0f ? 0u : 2u);
+    float e2 = eye.z;
+    float u, v;
+    const float x1 = cp[1].x;
+    const float y1 = cp[1].y;
+    const float w1 = cp[1].w;
+    const float g1 = e2 * w1;
+    const float x2 = cp[2].x;
+    const float y2 = cp[2].y;
+    const float w2 = cp[2].w;
+    const float g2 = e2 * w2;
+    const float m1_2 = x1 * y2 - y1 * x2;
+    const float x0 = cp[0].x;
+    const float y0 = cp[0].y;
+    const float w0 = cp[0].w;
+    const float g0 = e2 * w0;
+    const float m0_2 = x0 * y2 - y0 * x2;
+    const float m0_1 = x0 * y1 - y0 * x1;
+    u = ((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
+    v = u;
+    d[0] = v * 16.0f;
+    const float x4 = cp[4].x;
+    const float y4 = cp[4].y;
+    const float w4 = cp[4].w;
+    const float g4 = e2 * w4;
+    const float m1_4 = x1 * y4 - y1 * x4;
+    const float m0_4 = x0 * y4 - y0 * x4;
+    u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
+    const float x3 = cp[3].x;
+    const float y3 = cp[3].y;
+    const float w3 = cp[3].w;
+    const float g3 = e2 * w3;
+    const float m2_3 = x2 * y3 - y2 * x3;
+    const float m0_3 = x0 * y3 - y0 * x3;
+    u -= ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
+    v = u;
+    d[1] = v * 5.33333349f;
+    const float x5 = cp[5].x;
+    const float y5 = cp[5].y;
+    const float w5 = cp[5].w;
+    const float g5 = e2 * w5;
+    const float m1_5 = x1 * y5 - y1 * x5;
+    const float m0_5 = x0 * y5 - y0 * x5;
+    u = ((g0 * m1_5 - g1 * m0_5) + g5 * m0_1);
+    const float m2_4 = x2 * y4 - y2 * x4;
+    u -= ((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
+    v = u;
+    d[2] = v * 5.33333349f;
+    const float x8 = cp[8].x;
+    const float y8 = cp[8].y;
+    const float w8 = cp[8].w;
+    const float g8 = e2 * w8;
+    const float m1_8 = x1 * y8 - y1 * x8;
+    const float x7 = cp[7].x;
+    const float y7 = cp[7].y;
+    const float w7 = cp[7].w;
+    const float g7 = e2 * w7;
+    const float m2_7 = x2 * y7 - y2 * x7;
+    u = g0 * (m1_8 - m2_7);
+    const float m0_8 = x0 * y8 - y0 * x8;
+    u = fma(g1, -m0_8, u);
+    const float m0_7 = x0 * y7 - y0 * x7;
+    u = fma(g2, m0_7, u);
+    u = fma(g7, -m0_2, u);
+    u = fma(g8, m0_1, u);
+    v = (u + u);
+    const float m3_5 = x3 * y5 - y3 * x5;
+    u = g0 * (m3_5);
+    u = fma(g3, -m0_5, u);
+    u = fma(g5, m0_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m2_4);
+    u = fma(g2, m1_4, u);
+    u = fma(g4, -m1_2, u);
+    v += ((u + u) + (u + u));
+    d[4] = v * 0.666666687f;
+    const float m1_7 = x1 * y7 - y1 * x7;
+    u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
+    const float x6 = cp[6].x;
+    const float y6 = cp[6].y;
+    const float w6 = cp[6].w;
+    const float g6 = e2 * w6;
+    const float m2_6 = x2 * y6 - y2 * x6;
+    const float m0_6 = x0 * y6 - y0 * x6;
+    u -= ((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
+    v = u;
+    const float m1_3 = x1 * y3 - y1 * x3;
+    u = -((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
+    v += (u + u);
+    const float m3_4 = x3 * y4 - y3 * x4;
+    u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
+    v += (u + u) + u;
+    d[3] = v * 1.33333337f;
+    const float x9 = cp[9].x;
+    const float y9 = cp[9].y;
+    const float w9 = cp[9].w;
+    const float g9 = e2 * w9;
+    const float m1_9 = x1 * y9 - y1 * x9;
+    const float m0_9 = x0 * y9 - y0 * x9;
+    u = ((g0 * m1_9 - g1 * m0_9) + g9 * m0_1);
+    const float m2_8 = x2 * y8 - y2 * x8;
+    u -= ((g0 * m2_8 - g2 * m0_8) + g8 * m0_2);
+    v = u;
+    const float m2_5 = x2 * y5 - y2 * x5;
+    u = -((g1 * m2_5 - g2 * m1_5) + g5 * m1_2);
+    v += (u + u);
+    const float m4_5 = x4 * y5 - y4 * x5;
+    u = ((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
+    v += (u + u) + u;
+    d[5] = v * 1.33333337f;
+    const float x14 = cp[14].x;
+    const float y14 = cp[14].y;
+    const float w14 = cp[14].w;
+    const float g14 = e2 * w14;
+    const float m1_14 = x1 * y14 - y1 * x14;
+    const float m0_14 = x0 * y14 - y0 * x14;
+    u = ((g0 * m1_14 - g1 * m0_14) + g14 * m0_1);
+    const float x13 = cp[13].x;
+    const float y13 = cp[13].y;
+    const float w13 = cp[13].w;
+    const float g13 = e2 * w13;
+    const float m2_13 = x2 * y13 - y2 * x13;
+    const float m0_13 = x0 * y13 - y0 * x13;
+    u -= ((g0 * m2_13 - g2 * m0_13) + g13 * m0_2);
+    v = u;
+    const float m2_9 = x2 * y9 - y2 * x9;
+    u = -((g1 * m2_9 - g2 * m1_9) + g9 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    const float m4_9 = x4 * y9 - y4 * x9;
+    u = ((g0 * m4_9 - g4 * m0_9) + g9 * m0_4);
+    const float m5_8 = x5 * y8 - y5 * x8;
+    u -= ((g0 * m5_8 - g5 * m0_8) + g8 * m0_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g2 * m4_5 - g4 * m2_5) + g5 * m2_4);
+    v = fma(18.0f, u, v);
+    d[9] = v * 0.190476194f;
+    const float m1_13 = x1 * y13 - y1 * x13;
+    const float x12 = cp[12].x;
+    const float y12 = cp[12].y;
+    const float w12 = cp[12].w;
+    const float g12 = e2 * w12;
+    const float m2_12 = x2 * y12 - y2 * x12;
+    u = g0 * (m1_13 - m2_12);
+    u = fma(g1, -m0_13, u);
+    const float m0_12 = x0 * y12 - y0 * x12;
+    u = fma(g2, m0_12, u);
+    u = fma(g12, -m0_2, u);
+    u = fma(g13, m0_1, u);
+    v = u;
+    const float m3_9 = x3 * y9 - y3 * x9;
+    const float m4_8 = x4 * y8 - y4 * x8;
+    u = g0 * (m3_9 + m4_8);
+    u = fma(g3, -m0_9, u);
+    u = fma(g4, -m0_8, u);
+    u = fma(g8, m0_4, u);
+    u = fma(g9, m0_3, u);
+    v += (u + u) + u;
+    const float m5_7 = x5 * y7 - y5 * x7;
+    u = g0 * (-m5_7);
+    u = fma(g1, m4_5, u);
+    u = fma(g2, m3_5, u);
+    u = fma(g3, -m2_5, u);
+    u = fma(g4, -m1_5, u);
+    u = fma(g5, m1_4 + m2_3 + m0_7, u);
+    u = fma(g7, -m0_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_8);
+    u = fma(g2, m1_8, u);
+    u = fma(g8, -m1_2, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[8] = v * 0.190476194f;
+    const float x11 = cp[11].x;
+    const float y11 = cp[11].y;
+    const float w11 = cp[11].w;
+    const float g11 = e2 * w11;
+    const float m1_11 = x1 * y11 - y1 * x11;
+    const float m0_11 = x0 * y11 - y0 * x11;
+    u = ((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
+    const float x10 = cp[10].x;
+    const float y10 = cp[10].y;
+    const float w10 = cp[10].w;
+    const float g10 = e2 * w10;
+    const float m2_10 = x2 * y10 - y2 * x10;
+    const float m0_10 = x0 * y10 - y0 * x10;
+    u -= ((g0 * m2_10 - g2 * m0_10) + g10 * m0_2);
+    v = u;
+    const float m1_6 = x1 * y6 - y1 * x6;
+    u = -((g1 * m2_6 - g2 * m1_6) + g6 * m1_2);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    const float m3_7 = x3 * y7 - y3 * x7;
+    u = ((g0 * m3_7 - g3 * m0_7) + g7 * m0_3);
+    const float m4_6 = x4 * y6 - y4 * x6;
+    u -= ((g0 * m4_6 - g4 * m0_6) + g6 * m0_4);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g1 * m3_4 - g3 * m1_4) + g4 * m1_3);
+    v = fma(18.0f, u, v);
+    d[6] = v * 0.190476194f;
+    const float m3_11 = x3 * y11 - y3 * x11;
+    u = ((g0 * m3_11 - g3 * m0_11) + g11 * m0_3);
+    const float m4_10 = x4 * y10 - y4 * x10;
+    u -= ((g0 * m4_10 - g4 * m0_10) + g10 * m0_4);
+    const float m1_10 = x1 * y10 - y1 * x10;
+    u -= ((g1 * m2_10 - g2 * m1_10) + g10 * m1_2);
+    v = u;
+    const float m3_6 = x3 * y6 - y3 * x6;
+    u = ((g2 * m3_6 - g3 * m2_6) + g6 * m2_3);
+    v += (u + u);
+    const float m6_7 = x6 * y7 - y6 * x7;
+    u = ((g0 * m6_7 - g6 * m0_7) + g7 * m0_6);
+    v += (u + u) + u;
+    u = ((g1 * m3_7 - g3 * m1_7) + g7 * m1_3);
+    u = u + u;
+    v += (u + u) + u;
+    u = -((g1 * m4_6 - g4 * m1_6) + g6 * m1_4);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[10] = v * 0.380952388f;
+    const float m1_12 = x1 * y12 - y1 * x12;
+    const float m2_11 = x2 * y11 - y2 * x11;
+    u = g0 * (m1_12 - m2_11);
+    u = fma(g1, -m0_12, u);
+    u = fma(g2, m0_11, u);
+    u = fma(g11, -m0_2, u);
+    u = fma(g12, m0_1, u);
+    v = u;
+    const float m4_7 = x4 * y7 - y4 * x7;
+    const float m5_6 = x5 * y6 - y5 * x6;
+    u = g0 * (-m4_7 - m5_6);
+    u = fma(g4, m0_7, u);
+    u = fma(g5, m0_6, u);
+    u = fma(g6, -m0_5, u);
+    u = fma(g7, -m0_4, u);
+    v += (u + u) + u;
+    const float m3_8 = x3 * y8 - y3 * x8;
+    u = g0 * (m3_8);
+    u = fma(g1, m3_5, u);
+    u = fma(g2, m3_4, u);
+    u = fma(g3, -m1_5 - m2_4 - m0_8, u);
+    u = fma(g4, m2_3, u);
+    u = fma(g5, m1_3, u);
+    u = fma(g8, m0_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m2_7);
+    u = fma(g2, m1_7, u);
+    u = fma(g7, -m1_2, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[7] = v * 0.190476194f;
+    const float m5_10 = x5 * y10 - y5 * x10;
+    u = g0 * (-m5_10);
+    u = fma(g5, m0_10, u);
+    u = fma(g10, -m0_5, u);
+    v = u;
+    const float m4_11 = x4 * y11 - y4 * x11;
+    u = g0 * (-m4_11);
+    u = fma(g4, m0_11, u);
+    u = fma(g11, -m0_4, u);
+    v += (u + u);
+    const float m3_12 = x3 * y12 - y3 * x12;
+    u = g0 * (m3_12);
+    u = fma(g3, -m0_12, u);
+    u = fma(g12, m0_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m2_11);
+    u = fma(g2, m1_11 - m4_6, u);
+    u = fma(g4, m2_6, u);
+    u = fma(g6, -m2_4, u);
+    u = fma(g11, -m1_2, u);
+    v += ((u + u) + (u + u));
+    const float m6_8 = x6 * y8 - y6 * x8;
+    u = g0 * (m6_8);
+    u = fma(g6, -m0_8, u);
+    u = fma(g8, m0_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m5_6);
+    u = fma(g5, m1_6, u);
+    u = fma(g6, -m1_5, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (m3_8 - m4_7);
+    u = fma(g2, m3_7, u);
+    u = fma(g3, -m1_8 - m2_7, u);
+    u = fma(g4, m1_7, u);
+    u = fma(g7, m2_3 - m1_4, u);
+    u = fma(g8, m1_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[11] = v * 0.095238097f;
+    const float m6_11 = x6 * y11 - y6 * x11;
+    u = ((g0 * m6_11 - g6 * m0_11) + g11 * m0_6);
+    const float m7_10 = x7 * y10 - y7 * x10;
+    u -= ((g0 * m7_10 - g7 * m0_10) + g10 * m0_7);
+    const float m3_10 = x3 * y10 - y3 * x10;
+    u += ((g2 * m3_10 - g3 * m2_10) + g10 * m2_3);
+    v = u;
+    u = ((g1 * m3_11 - g3 * m1_11) + g11 * m1_3);
+    v += (u + u);
+    u = -((g1 * m4_10 - g4 * m1_10) + g10 * m1_4);
+    v += (u + u) + u;
+    u = -((g3 * m4_6 - g4 * m3_6) + g6 * m3_4);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g1 * m6_7 - g6 * m1_7) + g7 * m1_6);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[15] = v * 0.380952388f;
+    const float m4_14 = x4 * y14 - y4 * x14;
+    u = ((g0 * m4_14 - g4 * m0_14) + g14 * m0_4);
+    const float m5_13 = x5 * y13 - y5 * x13;
+    u -= ((g0 * m5_13 - g5 * m0_13) + g13 * m0_5);
+    const float m2_14 = x2 * y14 - y2 * x14;
+    u -= ((g1 * m2_14 - g2 * m1_14) + g14 * m1_2);
+    v = u;
+    const float m5_9 = x5 * y9 - y5 * x9;
+    u = -((g1 * m5_9 - g5 * m1_9) + g9 * m1_5);
+    v += (u + u);
+    const float m8_9 = x8 * y9 - y8 * x9;
+    u = ((g0 * m8_9 - g8 * m0_9) + g9 * m0_8);
+    v += (u + u) + u;
+    u = -((g2 * m5_8 - g5 * m2_8) + g8 * m2_5);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g2 * m4_9 - g4 * m2_9) + g9 * m2_4);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[14] = v * 0.380952388f;
+    const float m3_13 = x3 * y13 - y3 * x13;
+    const float m5_11 = x5 * y11 - y5 * x11;
+    const float m6_9 = x6 * y9 - y6 * x9;
+    u = g0 * (m3_13 + m6_9 - m5_11);
+    u = fma(g3, -m0_13, u);
+    u = fma(g5, m0_11, u);
+    u = fma(g6, -m0_9, u);
+    u = fma(g9, m0_6, u);
+    u = fma(g11, -m0_5, u);
+    u = fma(g13, m0_3, u);
+    v = u;
+    u = g1 * (m3_9 - m2_12);
+    u = fma(g2, m1_12 - m5_6, u);
+    u = fma(g3, -m1_9, u);
+    u = fma(g5, m2_6, u);
+    u = fma(g6, -m2_5, u);
+    u = fma(g9, m1_3, u);
+    u = fma(g12, -m1_2, u);
+    v += (u + u);
+    const float m7_8 = x7 * y8 - y7 * x8;
+    u = g0 * (m7_8);
+    u = fma(g7, -m0_8, u);
+    u = fma(g8, m0_7, u);
+    v += (u + u) + u;
+    u = g1 * (-m5_7);
+    u = fma(g2, m3_8, u);
+    u = fma(g3, -m2_8, u);
+    u = fma(g5, m1_7, u);
+    u = fma(g7, -m1_5, u);
+    u = fma(g8, m2_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    d[12] = v * 0.190476194f;
+    const float m3_14 = x3 * y14 - y3 * x14;
+    u = g0 * (m3_14);
+    u = fma(g3, -m0_14, u);
+    u = fma(g14, m0_3, u);
+    v = u;
+    const float m4_13 = x4 * y13 - y4 * x13;
+    u = g0 * (m4_13);
+    u = fma(g4, -m0_13, u);
+    u = fma(g13, m0_4, u);
+    v += (u + u);
+    const float m5_12 = x5 * y12 - y5 * x12;
+    u = g0 * (-m5_12);
+    u = fma(g5, m0_12, u);
+    u = fma(g12, -m0_5, u);
+    v += (u + u) + u;
+    u = g1 * (m4_9 - m2_13);
+    u = fma(g2, m1_13, u);
+    u = fma(g4, -m1_9, u);
+    u = fma(g9, m1_4, u);
+    u = fma(g13, -m1_2, u);
+    v += ((u + u) + (u + u));
+    const float m7_9 = x7 * y9 - y7 * x9;
+    u = g0 * (m7_9);
+    u = fma(g7, -m0_9, u);
+    u = fma(g9, m0_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m3_9);
+    u = fma(g3, -m2_9, u);
+    u = fma(g9, m2_3, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m5_8);
+    u = fma(g2, m4_8 - m5_7, u);
+    u = fma(g4, -m2_8, u);
+    u = fma(g5, m1_8 + m2_7, u);
+    u = fma(g7, -m2_5, u);
+    u = fma(g8, m2_4 - m1_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[13] = v * 0.095238097f;
+    const float m8_13 = x8 * y13 - y8 * x13;
+    u = g0 * (m8_13);
+    u = fma(g1, m4_14, u);
+    u = fma(g4, -m1_14, u);
+    u = fma(g8, -m0_13, u);
+    u = fma(g13, m0_8, u);
+    u = fma(g14, m1_4, u);
+    v = u;
+    const float m7_14 = x7 * y14 - y7 * x14;
+    u = g0 * (m7_14);
+    u = fma(g7, -m0_14, u);
+    u = fma(g14, m0_7, u);
+    v += (u + u);
+    const float m9_12 = x9 * y12 - y9 * x12;
+    u = g0 * (-m9_12);
+    u = fma(g2, m3_14, u);
+    u = fma(g3, -m2_14, u);
+    u = fma(g9, m0_12, u);
+    u = fma(g12, -m0_9, u);
+    u = fma(g14, m2_3, u);
+    v += (u + u) + u;
+    u = g1 * (-m5_13);
+    u = fma(g2, -m5_12, u);
+    u = fma(g3, -m5_9, u);
+    u = fma(g5, m1_13 + m2_12 + m3_9, u);
+    u = fma(g9, -m3_5, u);
+    u = fma(g12, -m2_5, u);
+    u = fma(g13, -m1_5, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m8_9);
+    u = fma(g2, m4_13, u);
+    u = fma(g4, -m2_13, u);
+    u = fma(g8, -m1_9, u);
+    u = fma(g9, m1_8, u);
+    u = fma(g13, m2_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (m7_9);
+    u = fma(g7, -m2_9, u);
+    u = fma(g9, m2_7, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g4 * (-m5_8);
+    u = fma(g5, m4_8, u);
+    u = fma(g8, -m4_5, u);
+    v = fma(18.0f, u, v);
+    d[19] = v * 0.0761904791f;
+    const float m8_14 = x8 * y14 - y8 * x14;
+    u = ((g0 * m8_14 - g8 * m0_14) + g14 * m0_8);
+    const float m9_13 = x9 * y13 - y9 * x13;
+    u -= ((g0 * m9_13 - g9 * m0_13) + g13 * m0_9);
+    const float m5_14 = x5 * y14 - y5 * x14;
+    u -= ((g1 * m5_14 - g5 * m1_14) + g14 * m1_5);
+    v = u;
+    u = -((g2 * m5_13 - g5 * m2_13) + g13 * m2_5);
+    v += (u + u);
+    u = ((g2 * m4_14 - g4 * m2_14) + g14 * m2_4);
+    v += (u + u) + u;
+    u = -((g4 * m5_9 - g5 * m4_9) + g9 * m4_5);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g2 * m8_9 - g8 * m2_9) + g9 * m2_8);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[20] = v * 0.380952388f;
+    const float m10_11 = x10 * y11 - y10 * x11;
+    u = ((g0 * m10_11 - g10 * m0_11) + g11 * m0_10);
+    const float m6_10 = x6 * y10 - y6 * x10;
+    u += ((g2 * m6_10 - g6 * m2_10) + g10 * m2_6);
+    v = u;
+    u = ((g1 * m6_11 - g6 * m1_11) + g11 * m1_6);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = -((g1 * m7_10 - g7 * m1_10) + g10 * m1_7);
+    u -= ((g3 * m4_10 - g4 * m3_10) + g10 * m3_4);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g3 * m6_7 - g6 * m3_7) + g7 * m3_6);
+    v = fma(18.0f, u, v);
+    d[21] = v * 0.190476194f;
+    const float m10_12 = x10 * y12 - y10 * x12;
+    u = g0 * (m10_12);
+    u = fma(g10, -m0_12, u);
+    u = fma(g12, m0_10, u);
+    v = u;
+    u = g2 * (-m7_10);
+    u = fma(g7, m2_10, u);
+    u = fma(g10, -m2_7, u);
+    v += (u + u);
+    u = g3 * (-m5_10);
+    u = fma(g5, m3_10, u);
+    u = fma(g10, -m3_5, u);
+    v += (u + u) + u;
+    const float m7_11 = x7 * y11 - y7 * x11;
+    u = g1 * (-m7_11);
+    u = fma(g2, m6_11, u);
+    u = fma(g6, -m2_11, u);
+    u = fma(g7, m1_11, u);
+    u = fma(g11, m2_6 - m1_7, u);
+    v += ((u + u) + (u + u));
+    const float m8_10 = x8 * y10 - y8 * x10;
+    u = g1 * (-m8_10);
+    u = fma(g8, m1_10, u);
+    u = fma(g10, -m1_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    const float m6_12 = x6 * y12 - y6 * x12;
+    u = g1 * (m6_12);
+    u = fma(g6, -m1_12, u);
+    u = fma(g12, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g3 * (m6_8 - m4_11);
+    u = fma(g4, m3_11 + m6_7, u);
+    u = fma(g6, -m4_7 - m3_8, u);
+    u = fma(g7, m4_6, u);
+    u = fma(g8, m3_6, u);
+    u = fma(g11, -m3_4, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[22] = v * 0.095238097f;
+    u = g0 * (-m7_11);
+    u = fma(g2, -m4_10, u);
+    u = fma(g4, m2_10, u);
+    u = fma(g7, m0_11, u);
+    u = fma(g10, -m2_4, u);
+    u = fma(g11, -m0_7, u);
+    v = u;
+    u = g0 * (-m8_10);
+    u = fma(g8, m0_10, u);
+    u = fma(g10, -m0_8, u);
+    v += (u + u);
+    u = g0 * (m6_12);
+    u = fma(g1, -m5_10, u);
+    u = fma(g5, m1_10, u);
+    u = fma(g6, -m0_12, u);
+    u = fma(g10, -m1_5, u);
+    u = fma(g12, m0_6, u);
+    v += (u + u) + u;
+    u = g1 * (m3_12);
+    u = fma(g2, m3_11, u);
+    u = fma(g3, -m1_12 - m2_11 - m5_6, u);
+    u = fma(g5, m3_6, u);
+    u = fma(g6, -m3_5, u);
+    u = fma(g11, m2_3, u);
+    u = fma(g12, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m4_11);
+    u = fma(g2, m6_7, u);
+    u = fma(g4, m1_11, u);
+    u = fma(g6, -m2_7, u);
+    u = fma(g7, m2_6, u);
+    u = fma(g11, -m1_4, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (m6_8);
+    u = fma(g6, -m1_8, u);
+    u = fma(g8, m1_6, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g3 * (-m4_7);
+    u = fma(g4, m3_7, u);
+    u = fma(g7, -m3_4, u);
+    v = fma(18.0f, u, v);
+    d[16] = v * 0.0761904791f;
+    const float m9_10 = x9 * y10 - y9 * x10;
+    u = g0 * (-m9_10);
+    u = fma(g9, m0_10, u);
+    u = fma(g10, -m0_9, u);
+    v = u;
+    u = g2 * (-m5_10);
+    u = fma(g5, m2_10, u);
+    u = fma(g10, -m2_5, u);
+    v += (u + u);
+    const float m6_13 = x6 * y13 - y6 * x13;
+    const float m7_12 = x7 * y12 - y7 * x12;
+    u = g0 * (m6_13 + m7_12);
+    u = fma(g6, -m0_13, u);
+    u = fma(g7, -m0_12, u);
+    u = fma(g12, m0_7, u);
+    u = fma(g13, m0_6, u);
+    v += (u + u) + u;
+    const float m8_11 = x8 * y11 - y8 * x11;
+    u = g0 * (-m8_11);
+    u = fma(g8, m0_11, u);
+    u = fma(g11, -m0_8, u);
+    v += ((u + u) + (u + u)) + u;
+    const float m4_12 = x4 * y12 - y4 * x12;
+    u = g1 * (m3_13 - m4_12);
+    u = fma(g3, -m1_13, u);
+    u = fma(g4, m1_12 - m5_6, u);
+    u = fma(g5, m4_6, u);
+    u = fma(g6, -m4_5, u);
+    u = fma(g12, -m1_4, u);
+    u = fma(g13, m1_3, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m6_9);
+    u = fma(g6, -m1_9, u);
+    u = fma(g9, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m5_11);
+    u = fma(g5, m1_11, u);
+    u = fma(g11, -m1_5, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (m3_12);
+    u = fma(g3, -m2_12, u);
+    u = fma(g12, m2_3, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m6_8);
+    u = fma(g6, -m2_8, u);
+    u = fma(g8, m2_6, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g3 * (-m4_8 - m5_7);
+    u = fma(g4, m3_8, u);
+    u = fma(g5, m3_7, u);
+    u = fma(g7, -m3_5, u);
+    u = fma(g8, -m3_4, u);
+    v = fma(18.0f, u, v);
+    u = g1 * (m7_8);
+    u = fma(g7, -m1_8, u);
+    u = fma(g8, m1_7, u);
+    v = fma(24.0f, u, v);
+    d[17] = v * 0.0380952395f;
+    const float m10_13 = x10 * y13 - y10 * x13;
+    u = g0 * (m10_13);
+    u = fma(g10, -m0_13, u);
+    u = fma(g13, m0_10, u);
+    v = u;
+    const float m11_12 = x11 * y12 - y11 * x12;
+    u = g0 * (m11_12);
+    u = fma(g11, -m0_12, u);
+    u = fma(g12, m0_11, u);
+    v += (u + u);
+    u = g1 * (-m9_10);
+    u = fma(g4, -m5_10, u);
+    u = fma(g5, m4_10, u);
+    u = fma(g9, m1_10, u);
+    u = fma(g10, -m1_9 - m4_5, u);
+    v += (u + u) + u;
+    u = g2 * (-m8_10);
+    u = fma(g8, m2_10, u);
+    u = fma(g10, -m2_8, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g1 * (m7_12);
+    u = fma(g3, m6_9, u);
+    u = fma(g5, m6_7, u);
+    u = fma(g6, -m3_9 - m5_7, u);
+    u = fma(g7, m5_6 - m1_12, u);
+    u = fma(g9, m3_6, u);
+    u = fma(g12, m1_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m6_13);
+    u = fma(g6, -m1_13, u);
+    u = fma(g13, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (m6_12);
+    u = fma(g6, -m2_12, u);
+    u = fma(g12, m2_6, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g3 * (-m5_11);
+    u = fma(g5, m3_11, u);
+    u = fma(g11, -m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (-m8_11);
+    u = fma(g8, m1_11, u);
+    u = fma(g11, -m1_8, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g3 * (m7_8 - m4_12);
+    u = fma(g4, m3_12, u);
+    u = fma(g7, -m3_8, u);
+    u = fma(g8, m3_7, u);
+    u = fma(g12, -m3_4, u);
+    v = fma(18.0f, u, v);
+    u = g4 * (m6_8);
+    u = fma(g6, -m4_8, u);
+    u = fma(g8, m4_6, u);
+    v = fma(24.0f, u, v);
+    d[23] = v * 0.0380952395f;
+    const float m12_14 = x12 * y14 - y12 * x14;
+    u = g0 * (m12_14);
+    u = fma(g12, -m0_14, u);
+    u = fma(g14, m0_12, u);
+    v = u;
+    u = g1 * (m8_14);
+    u = fma(g8, -m1_14, u);
+    u = fma(g14, m1_8, u);
+    v += (u + u);
+    u = g3 * (-m5_14);
+    u = fma(g5, m3_14, u);
+    u = fma(g14, -m3_5, u);
+    v += (u + u) + u;
+    u = g1 * (-m9_13);
+    u = fma(g2, m8_13, u);
+    u = fma(g8, -m2_13, u);
+    u = fma(g9, m1_13, u);
+    u = fma(g13, m2_8 - m1_9, u);
+    v += ((u + u) + (u + u));
+    u = g2 * (m7_14);
+    u = fma(g7, -m2_14, u);
+    u = fma(g14, m2_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m9_12);
+    u = fma(g9, m2_12, u);
+    u = fma(g12, -m2_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g4 * (m8_9 - m5_13);
+    u = fma(g5, m4_13 + m7_9, u);
+    u = fma(g7, -m5_9, u);
+    u = fma(g8, -m4_9, u);
+    u = fma(g9, m4_8 + m5_7, u);
+    u = fma(g13, -m4_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[26] = v * 0.095238097f;
+    const float m13_14 = x13 * y14 - y13 * x14;
+    u = ((g0 * m13_14 - g13 * m0_14) + g14 * m0_13);
+    const float m9_14 = x9 * y14 - y9 * x14;
+    u -= ((g1 * m9_14 - g9 * m1_14) + g14 * m1_9);
+    v = u;
+    u = -((g2 * m9_13 - g9 * m2_13) + g13 * m2_9);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = ((g2 * m8_14 - g8 * m2_14) + g14 * m2_8);
+    u -= ((g4 * m5_14 - g5 * m4_14) + g14 * m4_5);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g5 * m8_9 - g8 * m5_9) + g9 * m5_8);
+    v = fma(18.0f, u, v);
+    d[27] = v * 0.190476194f;
+    u = ((g1 * m10_11 - g10 * m1_11) + g11 * m1_10);
+    u += ((g4 * m6_10 - g6 * m4_10) + g10 * m4_6);
+    v = u;
+    u = ((g3 * m6_11 - g6 * m3_11) + g11 * m3_6);
+    v += (u + u);
+    u = -((g3 * m7_10 - g7 * m3_10) + g10 * m3_7);
+    v += (u + u) + u;
+    d[28] = v * 1.33333337f;
+    u = g2 * (m10_11);
+    u = fma(g5, m6_10, u);
+    u = fma(g6, -m5_10, u);
+    u = fma(g10, m5_6 - m2_11, u);
+    u = fma(g11, m2_10, u);
+    v = u;
+    u = g1 * (m10_12);
+    u = fma(g4, -m7_10, u);
+    u = fma(g7, m4_10, u);
+    u = fma(g10, -m1_12 - m4_7, u);
+    u = fma(g12, m1_10, u);
+    v += (u + u) + u;
+    u = g3 * (m6_12 - m7_11 - m8_10);
+    u = fma(g6, -m3_12, u);
+    u = fma(g7, m3_11, u);
+    u = fma(g8, m3_10, u);
+    u = fma(g10, -m3_8, u);
+    u = fma(g11, -m3_7, u);
+    u = fma(g12, m3_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (m6_11);
+    u = fma(g6, -m4_11, u);
+    u = fma(g11, m4_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[29] = v * 0.190476194f;
+    u = g1 * (m10_13);
+    u = fma(g2, m10_12, u);
+    u = fma(g3, -m9_10, u);
+    u = fma(g9, m3_10, u);
+    u = fma(g10, -m1_13 - m2_12 - m3_9, u);
+    u = fma(g12, m2_10, u);
+    u = fma(g13, m1_10, u);
+    v = u;
+    u = g1 * (m11_12);
+    u = fma(g3, m6_13, u);
+    u = fma(g5, m6_11, u);
+    u = fma(g6, -m3_13 - m5_11, u);
+    u = fma(g11, m5_6 - m1_12, u);
+    u = fma(g12, m1_11, u);
+    u = fma(g13, m3_6, u);
+    v += (u + u);
+    u = g4 * (-m8_10);
+    u = fma(g8, m4_10, u);
+    u = fma(g10, -m4_8, u);
+    v += (u + u) + u;
+    u = g3 * (-m8_11);
+    u = fma(g4, m6_12, u);
+    u = fma(g6, -m4_12, u);
+    u = fma(g8, m3_11, u);
+    u = fma(g11, -m3_8, u);
+    u = fma(g12, m4_6, u);
+    u = u + u;
+    v += (u + u) + u;
+    d[30] = v * 0.190476194f;
+    const float m10_14 = x10 * y14 - y10 * x14;
+    u = g1 * (m10_14);
+    u = fma(g10, -m1_14, u);
+    u = fma(g14, m1_10, u);
+    v = u;
+    const float m6_14 = x6 * y14 - y6 * x14;
+    u = g3 * (m6_14);
+    u = fma(g6, -m3_14, u);
+    u = fma(g14, m3_6, u);
+    v += (u + u);
+    u = g2 * (m10_13);
+    u = fma(g5, -m8_10, u);
+    u = fma(g8, m5_10, u);
+    u = fma(g10, -m2_13 - m5_8, u);
+    u = fma(g13, m2_10, u);
+    v += (u + u) + u;
+    u = g4 * (-m9_10);
+    u = fma(g9, m4_10, u);
+    u = fma(g10, -m4_9, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (m11_12);
+    const float m7_13 = x7 * y13 - y7 * x13;
+    u = fma(g3, m7_13, u);
+    u = fma(g5, m7_11, u);
+    u = fma(g7, -m3_13 - m5_11, u);
+    u = fma(g11, m5_7 - m2_12, u);
+    u = fma(g12, m2_11, u);
+    u = fma(g13, m3_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    const float m11_13 = x11 * y13 - y11 * x13;
+    u = g1 * (m11_13);
+    u = fma(g11, -m1_13, u);
+    u = fma(g13, m1_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    const float m9_11 = x9 * y11 - y9 * x11;
+    u = g3 * (-m9_11);
+    u = fma(g9, m3_11, u);
+    u = fma(g11, -m3_9, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g5 * (m6_12);
+    u = fma(g6, -m5_12, u);
+    u = fma(g12, m5_6, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (m6_13);
+    u = fma(g6, -m4_13, u);
+    u = fma(g13, m4_6, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    const float m8_12 = x8 * y12 - y8 * x12;
+    u = g3 * (-m8_12);
+    u = fma(g4, m7_12, u);
+    u = fma(g7, -m4_12, u);
+    u = fma(g8, m3_12, u);
+    u = fma(g12, m4_7 - m3_8, u);
+    v = fma(18.0f, u, v);
+    u = g4 * (-m8_11);
+    u = fma(g8, m4_11, u);
+    u = fma(g11, -m4_8, u);
+    v = fma(24.0f, u, v);
+    d[31] = v * 0.0380952395f;
+    u = g2 * (m10_14);
+    u = fma(g10, -m2_14, u);
+    u = fma(g14, m2_10, u);
+    v = u;
+    u = g5 * (-m9_10);
+    u = fma(g9, m5_10, u);
+    u = fma(g10, -m5_9, u);
+    v += (u + u);
+    const float m11_14 = x11 * y14 - y11 * x14;
+    u = g1 * (m11_14);
+    u = fma(g3, m7_14, u);
+    u = fma(g7, -m3_14, u);
+    u = fma(g11, -m1_14, u);
+    u = fma(g14, m1_11 + m3_7, u);
+    v += (u + u) + u;
+    u = g4 * (m6_14);
+    u = fma(g6, -m4_14, u);
+    u = fma(g14, m4_6, u);
+    v += ((u + u) + (u + u)) + u;
+    const float m12_13 = x12 * y13 - y12 * x13;
+    u = g1 * (m12_13);
+    u = fma(g3, -m8_13, u);
+    u = fma(g5, -m8_11, u);
+    u = fma(g8, m3_13 + m5_11, u);
+    u = fma(g11, -m5_8, u);
+    u = fma(g12, -m1_13, u);
+    u = fma(g13, m1_12 - m3_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m11_13);
+    u = fma(g11, -m2_13, u);
+    u = fma(g13, m2_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g5 * (m6_13);
+    u = fma(g6, -m5_13, u);
+    u = fma(g13, m5_6, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g3 * (-m9_12);
+    u = fma(g9, m3_12, u);
+    u = fma(g12, -m3_9, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m9_11);
+    u = fma(g9, m4_11, u);
+    u = fma(g11, -m4_9, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g4 * (-m8_12);
+    u = fma(g5, m7_12, u);
+    u = fma(g7, -m5_12, u);
+    u = fma(g8, m4_12, u);
+    u = fma(g12, m5_7 - m4_8, u);
+    v = fma(18.0f, u, v);
+    u = g4 * (m7_13);
+    u = fma(g7, -m4_13, u);
+    u = fma(g13, m4_7, u);
+    v = fma(24.0f, u, v);
+    d[32] = v * 0.0380952395f;
+    u = g1 * (m12_14);
+    u = fma(g2, m11_14, u);
+    u = fma(g5, m6_14, u);
+    u = fma(g6, -m5_14, u);
+    u = fma(g11, -m2_14, u);
+    u = fma(g12, -m1_14, u);
+    u = fma(g14, m1_12 + m2_11 + m5_6, u);
+    v = u;
+    u = g2 * (m12_13);
+    u = fma(g3, -m9_13, u);
+    u = fma(g5, -m9_11, u);
+    u = fma(g9, m3_13 + m5_11, u);
+    u = fma(g11, -m5_9, u);
+    u = fma(g12, -m2_13, u);
+    u = fma(g13, m2_12 - m3_9, u);
+    v += (u + u);
+    u = g4 * (m7_14);
+    u = fma(g7, -m4_14, u);
+    u = fma(g14, m4_7, u);
+    v += (u + u) + u;
+    u = g4 * (-m9_12);
+    u = fma(g5, m7_13, u);
+    u = fma(g7, -m5_13, u);
+    u = fma(g9, m4_12, u);
+    u = fma(g12, -m4_9, u);
+    u = fma(g13, m5_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    d[33] = v * 0.190476194f;
+    u = g1 * (m13_14);
+    u = fma(g3, -m9_14, u);
+    u = fma(g9, m3_14, u);
+    u = fma(g13, -m1_14, u);
+    u = fma(g14, m1_13 - m3_9, u);
+    v = u;
+    u = g2 * (m12_14);
+    u = fma(g4, m8_14, u);
+    u = fma(g8, -m4_14, u);
+    u = fma(g12, -m2_14, u);
+    u = fma(g14, m2_12 + m4_8, u);
+    v += (u + u) + u;
+    u = g5 * (m8_13 + m7_14 - m9_12);
+    u = fma(g7, -m5_14, u);
+    u = fma(g8, -m5_13, u);
+    u = fma(g9, m5_12, u);
+    u = fma(g12, -m5_9, u);
+    u = fma(g13, m5_8, u);
+    u = fma(g14, m5_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g4 * (-m9_13);
+    u = fma(g9, m4_13, u);
+    u = fma(g13, -m4_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[34] = v * 0.190476194f;
+    u = ((g2 * m13_14 - g13 * m2_14) + g14 * m2_13);
+    u -= ((g4 * m9_14 - g9 * m4_14) + g14 * m4_9);
+    v = u;
+    u = -((g5 * m9_13 - g9 * m5_13) + g13 * m5_9);
+    v += (u + u);
+    u = ((g5 * m8_14 - g8 * m5_14) + g14 * m5_8);
+    v += (u + u) + u;
+    d[35] = v * 1.33333337f;
+    u = ((g3 * m10_11 - g10 * m3_11) + g11 * m3_10);
+    u -= ((g6 * m7_10 - g7 * m6_10) + g10 * m6_7);
+    v = u;
+    d[36] = v * 5.33333349f;
+    u = g4 * (m10_11);
+    u = fma(g6, -m8_10, u);
+    u = fma(g8, m6_10, u);
+    u = fma(g10, -m4_11 - m6_8, u);
+    u = fma(g11, m4_10, u);
+    v = (u + u);
+    u = g3 * (m10_12);
+    u = fma(g10, -m3_12, u);
+    u = fma(g12, m3_10, u);
+    v += (u + u) + u;
+    u = g6 * (-m7_11);
+    u = fma(g7, m6_11, u);
+    u = fma(g11, -m6_7, u);
+    v += ((u + u) + (u + u));
+    d[37] = v * 0.666666687f;
+    u = g5 * (m10_11);
+    u = fma(g6, -m9_10, u);
+    u = fma(g9, m6_10, u);
+    u = fma(g10, -m5_11 - m6_9, u);
+    u = fma(g11, m5_10, u);
+    v = u;
+    u = g3 * (m10_13);
+    u = fma(g7, -m8_10, u);
+    u = fma(g8, m7_10, u);
+    u = fma(g10, -m3_13 - m7_8, u);
+    u = fma(g13, m3_10, u);
+    v += (u + u) + u;
+    u = g3 * (m11_12);
+    u = fma(g4, m10_12, u);
+    u = fma(g6, -m7_12, u);
+    u = fma(g7, m6_12, u);
+    u = fma(g10, -m4_12, u);
+    u = fma(g11, -m3_12, u);
+    u = fma(g12, m3_11 + m4_10 - m6_7, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (-m8_11);
+    u = fma(g8, m6_11, u);
+    u = fma(g11, -m6_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[38] = v * 0.190476194f;
+    u = g3 * (m10_14);
+    u = fma(g10, -m3_14, u);
+    u = fma(g14, m3_10, u);
+    v = u;
+    u = g7 * (-m9_10);
+    u = fma(g9, m7_10, u);
+    u = fma(g10, -m7_9, u);
+    v += (u + u);
+    u = g5 * (m10_12);
+    u = fma(g10, -m5_12, u);
+    u = fma(g12, m5_10, u);
+    v += (u + u) + u;
+    u = g6 * (-m9_11 - m7_13);
+    u = fma(g7, m6_13, u);
+    u = fma(g9, m6_11, u);
+    u = fma(g11, -m6_9, u);
+    u = fma(g13, -m6_7, u);
+    v += ((u + u) + (u + u));
+    u = g4 * (m10_13);
+    u = fma(g10, -m4_13, u);
+    u = fma(g13, m4_10, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g3 * (m11_13);
+    u = fma(g11, -m3_13, u);
+    u = fma(g13, m3_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g4 * (m11_12);
+    u = fma(g6, -m8_12, u);
+    u = fma(g7, -m8_11, u);
+    u = fma(g8, m7_11 + m6_12, u);
+    u = fma(g11, -m7_8 - m4_12, u);
+    u = fma(g12, m4_11 - m6_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[39] = v * 0.095238097f;
+    u = g6 * (-m7_14);
+    u = fma(g7, m6_14, u);
+    u = fma(g8, -m9_10, u);
+    u = fma(g9, m8_10, u);
+    u = fma(g10, -m8_9, u);
+    u = fma(g14, -m6_7, u);
+    v = u;
+    u = g4 * (m10_14);
+    u = fma(g10, -m4_14, u);
+    u = fma(g14, m4_10, u);
+    v += (u + u);
+    u = g3 * (m11_14);
+    u = fma(g5, m10_13, u);
+    u = fma(g10, -m5_13, u);
+    u = fma(g11, -m3_14, u);
+    u = fma(g13, m5_10, u);
+    u = fma(g14, m3_11, u);
+    v += (u + u) + u;
+    u = g3 * (m12_13);
+    u = fma(g5, m11_12, u);
+    u = fma(g6, -m9_12, u);
+    u = fma(g9, m6_12, u);
+    u = fma(g11, -m5_12, u);
+    u = fma(g12, m5_11 - m3_13 - m6_9, u);
+    u = fma(g13, m3_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g6 * (-m8_13);
+    u = fma(g7, -m9_11, u);
+    u = fma(g8, m6_13, u);
+    u = fma(g9, m7_11, u);
+    u = fma(g11, -m7_9, u);
+    u = fma(g13, -m6_8, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g4 * (m11_13);
+    u = fma(g11, -m4_13, u);
+    u = fma(g13, m4_11, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g7 * (-m8_12);
+    u = fma(g8, m7_12, u);
+    u = fma(g12, -m7_8, u);
+    v = fma(18.0f, u, v);
+    d[40] = v * 0.0761904791f;
+    u = g5 * (m10_14);
+    u = fma(g10, -m5_14, u);
+    u = fma(g14, m5_10, u);
+    v = u;
+    u = g6 * (-m8_14);
+    u = fma(g8, m6_14, u);
+    u = fma(g14, -m6_8, u);
+    v += (u + u);
+    u = g3 * (m12_14);
+    u = fma(g12, -m3_14, u);
+    u = fma(g14, m3_12, u);
+    v += (u + u) + u;
+    u = g6 * (-m9_13);
+    u = fma(g8, -m9_11, u);
+    u = fma(g9, m6_13 + m8_11, u);
+    u = fma(g11, -m8_9, u);
+    u = fma(g13, -m6_9, u);
+    v += ((u + u) + (u + u));
+    u = g4 * (m11_14);
+    u = fma(g11, -m4_14, u);
+    u = fma(g14, m4_11, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g5 * (m11_13);
+    u = fma(g11, -m5_13, u);
+    u = fma(g13, m5_11, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g4 * (m12_13);
+    u = fma(g7, -m8_13 - m9_12, u);
+    u = fma(g8, m7_13, u);
+    u = fma(g9, m7_12, u);
+    u = fma(g12, -m4_13 - m7_9, u);
+    u = fma(g13, m4_12 - m7_8, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    d[41] = v * 0.095238097f;
+    u = g3 * (m13_14);
+    u = fma(g6, -m9_14, u);
+    u = fma(g9, m6_14, u);
+    u = fma(g13, -m3_14, u);
+    u = fma(g14, m3_13 - m6_9, u);
+    v = u;
+    u = g5 * (m11_14);
+    u = fma(g7, -m8_14, u);
+    u = fma(g8, m7_14, u);
+    u = fma(g11, -m5_14, u);
+    u = fma(g14, m5_11 - m7_8, u);
+    v += (u + u) + u;
+    u = g4 * (m12_14);
+    u = fma(g5, m12_13, u);
+    u = fma(g8, -m9_12, u);
+    u = fma(g9, m8_12, u);
+    u = fma(g12, -m4_14 - m5_13 - m8_9, u);
+    u = fma(g13, m5_12, u);
+    u = fma(g14, m4_12, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g7 * (-m9_13);
+    u = fma(g9, m7_13, u);
+    u = fma(g13, -m7_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[42] = v * 0.190476194f;
+    u = g4 * (m13_14);
+    u = fma(g7, -m9_14, u);
+    u = fma(g9, m7_14, u);
+    u = fma(g13, -m4_14, u);
+    u = fma(g14, m4_13 - m7_9, u);
+    v = (u + u);
+    u = g5 * (m12_14);
+    u = fma(g12, -m5_14, u);
+    u = fma(g14, m5_12, u);
+    v += (u + u) + u;
+    u = g8 * (-m9_13);
+    u = fma(g9, m8_13, u);
+    u = fma(g13, -m8_9, u);
+    v += ((u + u) + (u + u));
+    d[43] = v * 0.666666687f;
+    u = ((g5 * m13_14 - g13 * m5_14) + g14 * m5_13);
+    u -= ((g8 * m9_14 - g9 * m8_14) + g14 * m8_9);
+    v = u;
+    d[44] = v * 5.33333349f;
+    u = ((g6 * m10_11 - g10 * m6_11) + g11 * m6_10);
+    v = u;
+    d[45] = v * 16.0f;
+    u = ((g6 * m10_12 - g10 * m6_12) + g12 * m6_10);
+    u += ((g7 * m10_11 - g10 * m7_11) + g11 * m7_10);
+    v = u;
+    d[46] = v * 5.33333349f;
+    u = ((g6 * m10_13 - g10 * m6_13) + g13 * m6_10);
+    u += ((g8 * m10_11 - g10 * m8_11) + g11 * m8_10);
+    v = u;
+    u = ((g6 * m11_12 - g11 * m6_12) + g12 * m6_11);
+    v += (u + u);
+    u = ((g7 * m10_12 - g10 * m7_12) + g12 * m7_10);
+    v += (u + u) + u;
+    d[47] = v * 1.33333337f;
+    u = ((g6 * m10_14 - g10 * m6_14) + g14 * m6_10);
+    u += ((g9 * m10_11 - g10 * m9_11) + g11 * m9_10);
+    v = u;
+    u = ((g6 * m11_13 - g11 * m6_13) + g13 * m6_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = ((g7 * m10_13 - g10 * m7_13) + g13 * m7_10);
+    u += ((g8 * m10_12 - g10 * m8_12) + g12 * m8_10);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g7 * m11_12 - g11 * m7_12) + g12 * m7_11);
+    v = fma(18.0f, u, v);
+    d[48] = v * 0.190476194f;
+    u = ((g6 * m11_14 - g11 * m6_14) + g14 * m6_11);
+    u += ((g7 * m10_14 - g10 * m7_14) + g14 * m7_10);
+    u += ((g9 * m10_12 - g10 * m9_12) + g12 * m9_10);
+    v = u;
+    u = ((g6 * m12_13 - g12 * m6_13) + g13 * m6_12);
+    v += (u + u);
+    u = ((g8 * m10_13 - g10 * m8_13) + g13 * m8_10);
+    v += (u + u) + u;
+    u = ((g8 * m11_12 - g11 * m8_12) + g12 * m8_11);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g7 * m11_13 - g11 * m7_13) + g13 * m7_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[49] = v * 0.380952388f;
+    u = ((g6 * m12_14 - g12 * m6_14) + g14 * m6_12);
+    u += ((g8 * m10_14 - g10 * m8_14) + g14 * m8_10);
+    u += ((g9 * m10_13 - g10 * m9_13) + g13 * m9_10);
+    v = u;
+    u = ((g9 * m11_12 - g11 * m9_12) + g12 * m9_11);
+    v += (u + u);
+    u = ((g7 * m11_14 - g11 * m7_14) + g14 * m7_11);
+    v += (u + u) + u;
+    u = ((g7 * m12_13 - g12 * m7_13) + g13 * m7_12);
+    u = u + u;
+    v += (u + u) + u;
+    u = ((g8 * m11_13 - g11 * m8_13) + g13 * m8_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    d[50] = v * 0.380952388f;
+    u = ((g6 * m13_14 - g13 * m6_14) + g14 * m6_13);
+    u += ((g9 * m10_14 - g10 * m9_14) + g14 * m9_10);
+    v = u;
+    u = ((g9 * m11_13 - g11 * m9_13) + g13 * m9_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = ((g7 * m12_14 - g12 * m7_14) + g14 * m7_12);
+    u += ((g8 * m11_14 - g11 * m8_14) + g14 * m8_11);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
+    u = ((g8 * m12_13 - g12 * m8_13) + g13 * m8_12);
+    v = fma(18.0f, u, v);
+    d[51] = v * 0.190476194f;
+    u = ((g7 * m13_14 - g13 * m7_14) + g14 * m7_13);
+    u += ((g9 * m11_14 - g11 * m9_14) + g14 * m9_11);
+    v = u;
+    u = ((g9 * m12_13 - g12 * m9_13) + g13 * m9_12);
+    v += (u + u);
+    u = ((g8 * m12_14 - g12 * m8_14) + g14 * m8_12);
+    v += (u + u) + u;
+    d[52] = v * 1.33333337f;
+    u = ((g8 * m13_14 - g13 * m8_14) + g14 * m8_13);
+    u += ((g9 * m12_14 - g12 * m9_14) + g14 * m9_12);
+    v = u;
+    d[53] = v * 5.33333349f;
+    u = ((g9 * m13_14 - g13 * m9_14) + g14 * m9_13);
+    v = u;
+    d[54] = v * 16.0f;
+    u = g0 * (m11_14);
+    u = fma(g11, -m0_14, u);
+    u = fma(g14, m0_11, u);
+    v = u;
+    u = g0 * (m12_13);
+    u = fma(g12, -m0_13, u);
+    u = fma(g13, m0_12, u);
+    v += (u + u);
+    u = g2 * (m6_14);
+    u = fma(g3, -m4_14, u);
+    u = fma(g4, m3_14, u);
+    u = fma(g6, -m2_14, u);
+    u = fma(g14, m2_6 - m3_4, u);
+    v += (u + u) + u;
+    u = g1 * (m7_14);
+    u = fma(g7, -m1_14, u);
+    u = fma(g14, m1_7, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (-m8_12);
+    u = fma(g3, m8_9, u);
+    u = fma(g5, m6_9, u);
+    u = fma(g6, -m5_9, u);
+    u = fma(g8, m2_12 - m3_9, u);
+    u = fma(g9, m5_6 + m3_8, u);
+    u = fma(g12, -m2_8, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (-m9_11);
+    u = fma(g9, m2_11, u);
+    u = fma(g11, -m2_9, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m9_12);
+    u = fma(g9, m1_12, u);
+    u = fma(g12, -m1_9, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g3 * (-m5_13);
+    u = fma(g5, m3_13, u);
+    u = fma(g13, -m3_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m7_13);
+    u = fma(g7, -m2_13, u);
+    u = fma(g13, m2_7, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g4 * (-m5_12);
+    u = fma(g5, m7_8 + m4_12, u);
+    u = fma(g7, -m5_8, u);
+    u = fma(g8, m5_7, u);
+    u = fma(g12, -m4_5, u);
+    v = fma(18.0f, u, v);
+    u = g4 * (m7_9);
+    u = fma(g7, -m4_9, u);
+    u = fma(g9, m4_7, u);
+    v = fma(24.0f, u, v);
+    d[25] = v * 0.0380952395f;
+    u = g0 * (m6_14);
+    u = fma(g6, -m0_14, u);
+    u = fma(g14, m0_6, u);
+    v = u;
+    u = g1 * (m3_14);
+    u = fma(g3, -m1_14, u);
+    u = fma(g14, m1_3, u);
+    v += (u + u);
+    u = g0 * (-m8_12 - m9_11);
+    u = fma(g8, m0_12, u);
+    u = fma(g9, m0_11, u);
+    u = fma(g11, -m0_9, u);
+    u = fma(g12, -m0_8, u);
+    v += (u + u) + u;
+    u = g0 * (m7_13);
+    u = fma(g7, -m0_13, u);
+    u = fma(g13, m0_7, u);
+    v += ((u + u) + (u + u)) + u;
+    u = g2 * (m4_12 - m5_11);
+    u = fma(g3, -m4_9, u);
+    u = fma(g4, m3_9 - m2_12, u);
+    u = fma(g5, m2_11, u);
+    u = fma(g9, -m3_4, u);
+    u = fma(g11, -m2_5, u);
+    u = fma(g12, m2_4, u);
+    u = u + u;
+    v += (u + u) + u;
+    u = g2 * (m6_9);
+    u = fma(g6, -m2_9, u);
+    u = fma(g9, m2_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g2 * (m3_13);
+    u = fma(g3, -m2_13, u);
+    u = fma(g13, m2_3, u);
+    u = u + u;
+    v += ((u + u) + (u + u)) + u;
+    u = g1 * (-m5_12);
+    u = fma(g5, m1_12, u);
+    u = fma(g12, -m1_5, u);
+    u = u + u;
+    u = u + u;
+    v += (u + u) + u;
+    u = g1 * (m7_9);
+    u = fma(g7, -m1_9, u);
+    u = fma(g9, m1_7, u);
+    v += ((((u + u) + (u + u)) + ((u + u) + (u + u))) + (((u + u) + (u + u)) + ((u + u) + (u + u))));
+    u = g3 * (-m5_8);
+    u = fma(g4, -m5_7, u);
+    u = fma(g5, m4_7 + m3_8, u);
+    u = fma(g7, -m4_5, u);
+    u = fma(g8, -m3_5, u);
+    v = fma(18.0f, u, v);
+    u = g2 * (m7_8);
+    u = fma(g7, -m2_8, u);
+    u = fma(g8, m2_7, u);
+    v = fma(24.0f, u, v);
+    d[18] = v * 0.0380952395f;
+    u = g0 * (m10_14);
+    u = fma(g10, -m0_14, u);
+    u = fma(g14, m0_10, u);
+    v = u;
+    u = g0 * (m11_13);
+    u = fma(g1, m6_14, u);
+    u = fma(g2, -m9_10, u);
+    u = fma(g6, -m1_14, u);
+    u = fma(g9, m2_10, u);
+    u = fma(g10, -m2_9, u);
+    u = fma(g11, -m0_13, u);
+    u = fma(g13, m0_11, u);
+    u = fma(g14, m1_6, u);
+    v += (((u + u) + (u + u)) + ((u + u) + (u + u)));
+    u = g1 * (-m9_11);
+    u = fma(g2, m6_13, u);
+    u = fma(g6, -m2_13, u);
+    u = fma(g9, m1_11, u);
+    u = fma(g11, -m1_9, u);
+    u = fma(g13, m2_6, u);
+    v = fma(28.0f, u, v);
+    u = g1 * (m7_13 - m8_12);
+    u = fma(g2, m7_12 - m8_11, u);
+    u = fma(g3, m7_9 - m4_13, u);
+    u = fma(g4, m3_13 + m6_9 - m5_11, u);
+    u = fma(g5, m4_11 + m6_8, u);
+    u = fma(g6, -m4_9 - m5_8, u);
+    u = fma(g7, -m1_13 - m2_12 - m3_9, u);
+    u = fma(g8, m1_12 + m2_11 + m5_6, u);
+    u = fma(g9, m3_7 + m4_6, u);
+    u = fma(g11, -m2_8 - m4_5, u);
+    u = fma(g12, m2_7 - m1_8, u);
+    u = fma(g13, m1_7 - m3_4, u);
+    v = fma(36.0f, u, v);
+    u = g3 * (-m5_12);
+    u = fma(g5, m3_12, u);
+    u = fma(g12, -m3_5, u);
+    v = fma(54.0f, u, v);
+    u = g4 * (m7_8);
+    u = fma(g7, -m4_8, u);
+    u = fma(g8, m4_7, u);
+    v = fma(108.0f, u, v);
+    d[24] = v * 0.00952380989f;
 }
 
-/* Strict rule: back iff every value < 0, front iff every value > 0. */
-uint ptp_tri4_class_of(uint f)
-{
-    return (f & 1u) == 0u ? 1u : (f & 2u) == 0u ? 0u : 2u;
-}
-
-kernel __attribute__((reqd_work_group_size(128, 1, 1)))
+kernel __attribute__((reqd_work_group_size(64, 1, 1)))
 void ptp_tri4_classify(global const float4 *cp, global uint *cls, global float *planes,
                         float4 eye, uint patch_count)
 {
-    local float4 pts[PTP_TRI4_Q * PTP_TRI4_K];
-    local float acc[PTP_TRI4_Q * PTP_TRI4_L];
-    local uint flags[PTP_TRI4_Q * PTP_TRI4_P];
-    uint lid = (uint)get_local_id(0), q = lid / PTP_TRI4_P, t = lid % PTP_TRI4_P, i, pj, kl;
-    uint pid = ((uint)get_group_id(1) * (uint)get_num_groups(0) + (uint)get_group_id(0)) * PTP_TRI4_Q + q;
-    uint f = 0u;
-    bool live = pid < patch_count;
-
-    /* The patch's control points into shared memory, P threads cooperating. */
-    for (i = t; i < PTP_TRI4_K; i += PTP_TRI4_P)
-        if (live)
-            pts[q * PTP_TRI4_K + i] = cp[pid * PTP_TRI4_K + i];
-    barrier(CLK_LOCAL_MEM_FENCE);
-
-    /* Accumulate the planes this thread owns, one round at a time: no other thread
-     * touches them. */
-    for (i = ptp_tri4_own_start[t]; i < ptp_tri4_own_start[t + 1u]; i++)
-        acc[q * PTP_TRI4_L + ptp_tri4_own_plane[i]] = 0.0f;
-    pj = ptp_tri4_pj0[t];
-    kl = ptp_tri4_kl0[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w0[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj1[t];
-    kl = ptp_tri4_kl1[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w1[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj2[t];
-    kl = ptp_tri4_kl2[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w2[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj3[t];
-    kl = ptp_tri4_kl3[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w3[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj4[t];
-    kl = ptp_tri4_kl4[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w4[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj5[t];
-    kl = ptp_tri4_kl5[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w5[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj6[t];
-    kl = ptp_tri4_kl6[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w6[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj7[t];
-    kl = ptp_tri4_kl7[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w7[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj8[t];
-    kl = ptp_tri4_kl8[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w8[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj9[t];
-    kl = ptp_tri4_kl9[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w9[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj10[t];
-    kl = ptp_tri4_kl10[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w10[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj11[t];
-    kl = ptp_tri4_kl11[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w11[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj12[t];
-    kl = ptp_tri4_kl12[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w12[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj13[t];
-    kl = ptp_tri4_kl13[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w13[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj14[t];
-    kl = ptp_tri4_kl14[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w14[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj15[t];
-    kl = ptp_tri4_kl15[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w15[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj16[t];
-    kl = ptp_tri4_kl16[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w16[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj17[t];
-    kl = ptp_tri4_kl17[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w17[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj18[t];
-    kl = ptp_tri4_kl18[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w18[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj19[t];
-    kl = ptp_tri4_kl19[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w19[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj20[t];
-    kl = ptp_tri4_kl20[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w20[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj21[t];
-    kl = ptp_tri4_kl21[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w21[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj22[t];
-    kl = ptp_tri4_kl22[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w22[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj23[t];
-    kl = ptp_tri4_kl23[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w23[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj24[t];
-    kl = ptp_tri4_kl24[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w24[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-    pj = ptp_tri4_pj25[t];
-    kl = ptp_tri4_kl25[t];
-    acc[q * PTP_TRI4_L + (pj & 0xffffu)] += ptp_tri4_w25[t] *
-        ptp_tri4_cross4z(pts[q * PTP_TRI4_K + (pj >> 16)], pts[q * PTP_TRI4_K + (kl & 0xffffu)],
-                         pts[q * PTP_TRI4_K + (kl >> 16)]);
-
-    /* The values and signs of the owned planes; then one thread combines the patch's. */
-    for (i = ptp_tri4_own_start[t]; i < ptp_tri4_own_start[t + 1u]; i++) {
-        uint plane = ptp_tri4_own_plane[i];
-        float d = eye.z * acc[q * PTP_TRI4_L + plane];
-        f |= ptp_tri4_flags(d);
-    }
-    flags[q * PTP_TRI4_P + t] = f;
-    barrier(CLK_LOCAL_MEM_FENCE);
-    if (live && t == 0u) {
-        for (i = 1u; i < PTP_TRI4_P; i++)
-            f |= flags[q * PTP_TRI4_P + i];
-        cls[pid] = ptp_tri4_class_of(f);
-    }
+    uint pid = ((uint)get_group_id(1) * (uint)get_num_groups(0) + (uint)get_group_id(0)) * PTP_TRI4_Q + (uint)get_local_id(0);
+    float4 p[PTP_TRI4_K];
+    if (pid >= patch_count)
+        return;
+    p[0] = cp[pid * PTP_TRI4_K + 0u];
+    p[1] = cp[pid * PTP_TRI4_K + 1u];
+    p[2] = cp[pid * PTP_TRI4_K + 2u];
+    p[3] = cp[pid * PTP_TRI4_K + 3u];
+    p[4] = cp[pid * PTP_TRI4_K + 4u];
+    p[5] = cp[pid * PTP_TRI4_K + 5u];
+    p[6] = cp[pid * PTP_TRI4_K + 6u];
+    p[7] = cp[pid * PTP_TRI4_K + 7u];
+    p[8] = cp[pid * PTP_TRI4_K + 8u];
+    p[9] = cp[pid * PTP_TRI4_K + 9u];
+    p[10] = cp[pid * PTP_TRI4_K + 10u];
+    p[11] = cp[pid * PTP_TRI4_K + 11u];
+    p[12] = cp[pid * PTP_TRI4_K + 12u];
+    p[13] = cp[pid * PTP_TRI4_K + 13u];
+    p[14] = cp[pid * PTP_TRI4_K + 14u];
+    cls[pid] = ptp_tri4_classify_patch(p, eye);
 }
