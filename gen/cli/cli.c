@@ -29,6 +29,7 @@ static void usage_synopsis(sbuf *o)
         "              [--rule strict|degenerate] [--planes] [--certified] [--refine K]\n"
         "              [--prefix NAME] [--kernel slp|table] [--stage kernel|function]\n"
         "              [--threads-per-patch P] [--patches-per-block Q] [-o FILE]\n"
+        "              [--host-header FILE]\n"
         "       ptpgen verify FILE [--degree N|NxM] [--domain quad|triangle]\n"
         "              [--convention u-first|v-first] [-o REPORT]\n"
         "       ptpgen vectors --degree NxM [--domain quad|triangle] --count K --seed S\n"
@@ -87,6 +88,9 @@ static void usage_options(sbuf *o)
         "  --seed S         vectors: the seed of their random stream, 0 to 2^64 - 1\n"
         "  --format F       vectors: json (default) or c (a C include of the same vectors)\n"
         "  -o, --output F   write to F (atomically) instead of standard output\n"
+        "  --host-header F  GPU compute kernels: also write F (atomically), a C/C++ header for the\n"
+        "                   host: parameter struct, binding slots, workgroup size, dispatch\n"
+        "                   function and the kernel's source (docs/gpu-hosts.md)\n"
         "  -h, --help       show this help\n"
         "  --version        show the version\n"
         "  --list-targets   list the targets, one a line: name, file suffix (- for none),\n"
@@ -178,7 +182,7 @@ typedef enum {
     OPT_DEGREE, OPT_DOMAIN, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
     OPT_PATCHES, OPT_COUNT, OPT_SEED, OPT_CERTIFIED, OPT_REFINE, OPT_CONVENTION, OPT_FORMAT,
     OPT_OUTPUT, OPT_HELP,
-    OPT_VERSION, OPT_LIST, OPT_KERNEL, OPT_STAGE, OPT_N
+    OPT_VERSION, OPT_LIST, OPT_KERNEL, OPT_STAGE, OPT_HOST_HEADER, OPT_N
 } opt_id;
 
 /* The modes an option belongs to, as bits 1 << cli_mode. */
@@ -214,6 +218,7 @@ static const struct {
     [OPT_LIST] = {"--list-targets", NULL, 0, GEN | VER | VEC, 0},
     [OPT_KERNEL] = {"--kernel", NULL, 1, GEN, TGT_KERNEL},
     [OPT_STAGE] = {"--stage", NULL, 1, GEN, TGT_KERNEL},
+    [OPT_HOST_HEADER] = {"--host-header", NULL, 1, GEN, TGT_KERNEL},
 };
 
 /* Finds the option argv[*i] names ("--name", its alias, or "--name=value" for one that takes a
@@ -296,6 +301,7 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     case OPT_LIST: o->list = 1; break;
     case OPT_KERNEL: return parse_choice(&o->table, "kernel", v, kernels, 2, err);
     case OPT_STAGE: return parse_choice(&o->functions, "stage", v, stages, 2, err);
+    case OPT_HOST_HEADER: o->host_header = v; break;
     case OPT_N: break;
     }
     return st;
@@ -409,6 +415,12 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
         return ptp_fail(err, PTP_EUSAGE, "%s applies to kernels (--stage function writes values "
                                          "always, and has no workgroup)",
                         o->planes ? "--planes" : "--patches-per-block");
+    if (o->host_header && (o->functions || !o->host_header[0] ||
+                           (o->output && strcmp(o->host_header, o->output) == 0)))
+        return ptp_fail(err, PTP_EUSAGE, "--host-header %s", o->functions
+                        ? "applies to compute kernels (--stage kernel), not --stage function"
+                        : !o->host_header[0] ? "needs a file name"
+                                             : "must name another file than -o");
     return PTP_OK;
 }
 

@@ -28,6 +28,7 @@ typedef struct {
     tp_domain dom;        /* the patch domain of --degree; dom.n is 0 until it is given */
     const tgt_target *target; /* an entry of tgt_targets (default: the first) */
     const char *output;   /* -o path, or NULL for stdout */
+    const char *host_header; /* --host-header path (GPU compute kernels), or NULL */
     int threads, patches; /* --threads-per-patch, --patches-per-block; -1 when not given */
     int world;            /* --space world (else clip) */
     int degenerate;       /* --rule degenerate (else strict) */

@@ -137,7 +137,7 @@ static int run(const cli_options *o, ptp_error *err)
     out_info info = {0};
     tp_table t;
     sched s;
-    sbuf b;
+    sbuf b, h;
     int st, P, Q;
     if ((st = tp_derive_domain(&t, &o->dom, err)))
         return st;
@@ -160,8 +160,17 @@ static int run(const cli_options *o, ptp_error *err)
     if (o->target->options & TGT_KERNEL) /* the GPU targets */
         info.group = o->patches >= 0 ? o->patches : OUT_SLP_GROUP;
     sbuf_init(&b);
-    if (!(st = tgt_emit_target(&b, o->target, &t, &info, err)))
+    sbuf_init(&h);
+    st = tgt_emit_target(&b, o->target, &t, &info, err);
+    if (!st && o->host_header) { /* both in memory before either file is written */
+        info.suffix = o->target->suffix;
+        st = hh_write(&h, &t, &info, o->target->gpu, &b, err);
+    }
+    if (!st && o->host_header)
+        st = write_output(o->host_header, &h, err);
+    if (!st)
         st = write_output(o->output, &b, err);
+    sbuf_clear(&h);
     sbuf_clear(&b);
     sched_clear(&s);
     tp_clear(&t);

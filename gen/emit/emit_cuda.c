@@ -2,6 +2,15 @@
  * What is CUDA's own is this table; the kernel itself comes from kern_gpu.c and the template. */
 #include "emit/kern.h"
 
+/* --host-header: the kernel's arguments in order. */
+static const kern_host_slot host_slots[] = {
+    {"ARG_POINTS", 0, "const float4 *cp: the control points", 0},
+    {"ARG_CLASSES", 1, "unsigned *cls: the classes", 0},
+    {"ARG_PLANES", 2, "float *planes: the values d[p*L + P], or NULL", 0},
+    {"ARG_EYE", 3, "float4 eye", 0},
+    {"ARG_PATCH_COUNT", 4, "unsigned patch_count", 0},
+    {NULL, 0, NULL, 0}};
+
 const kern_target kern_cuda = {
     .name = "cuda",
     .language = "CUDA kernel",
@@ -39,4 +48,10 @@ const kern_target kern_cuda = {
     .slp_ref = "%s",
     .slp_suffix = ".cuh",
     .slp_language = "CUDA device functions",
+    .host_params_note =
+        " * Arguments of extern \"C\" __global__ <prefix>classify, in order (cuLaunchKernel's\n"
+        " * kernelParams index): (const float4 *cp, unsigned *cls, float *planes, float4 eye,\n"
+        " *  unsigned patch_count); planes may be NULL. Block {WORKGROUP_SIZE, 1, 1}, grid\n"
+        " * {groups[0], groups[1], 1} from <prefix>dispatch.\n",
+    .host_slots = host_slots,
 };

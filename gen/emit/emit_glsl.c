@@ -2,6 +2,16 @@
  * What is GLSL's own is this table; the kernel itself comes from kern_gpu.c and the template. */
 #include "emit/kern.h"
 
+/* --host-header: the push constants { vec4 eye; uint patch_count; } (std430 and std140 alike). */
+static const kern_host_field host_params[] = {
+    {"float", "eye", 4, 0}, {"uint32_t", "patch_count", 1, 16}, {NULL, NULL, 0, 0}};
+static const kern_host_slot host_slots[] = {
+    {"SET", 0, "descriptor set of the buffers", 0},
+    {"BINDING_POINTS", 0, "storage buffer: the control points, vec4[] (read)", 0},
+    {"BINDING_CLASSES", 1, "storage buffer: the classes, uint[] (written)", 0},
+    {"BINDING_PLANES", 2, "storage buffer: the values d[p*L + P], float[] (written)", 1},
+    {NULL, 0, NULL, 0}};
+
 const kern_target kern_glsl = {
     .name = "glsl",
     .language = "GLSL 4.50 compute shader for Vulkan",
@@ -34,4 +44,8 @@ const kern_target kern_glsl = {
     .slp_ref = "%s",
     .slp_suffix = ".glsl",
     .slp_language = "GLSL 4.50 functions",
+    .host_params_note =
+        " * Push constants (layout(push_constant), std430 offsets, the same under std140), stage\n"
+        " * VK_SHADER_STAGE_COMPUTE_BIT, range offset 0, size sizeof(params).\n",
+    .host_params = host_params, .host_params_size = 20, .host_slots = host_slots,
 };

@@ -2,6 +2,22 @@
  * What is HLSL's own is this table; the kernel itself comes from kern_gpu.c and the template. */
 #include "emit/kern.h"
 
+/* --host-header: the cbuffer Params in b0 (Vulkan: push constants), padded to 16 bytes. */
+static const kern_host_field host_params[] = {
+    {"float", "eye", 4, 0}, {"uint32_t", "patch_count", 1, 16}, {"uint32_t", "groups_x", 1, 20},
+    {"uint32_t", "pad", 2, 24}, {NULL, NULL, 0, 0}};
+static const kern_host_slot host_slots[] = {
+    {"REGISTER_POINTS", 0, "t0: StructuredBuffer<float4>, the control points (SRV)", 0},
+    {"REGISTER_CLASSES", 1, "u1: RWStructuredBuffer<uint>, the classes (UAV)", 0},
+    {"REGISTER_PLANES", 2, "u2: RWStructuredBuffer<float>, the values d[p*L + P] (UAV)", 1},
+    {"REGISTER_PARAMS", 0, "b0: cbuffer Params (CBV or root constants)", 0},
+    {"ROOT_CONSTANTS", 6, "32-bit root constants the kernel reads (eye, patch_count, groups_x)", 0},
+    {"SET", 0, "Vulkan: descriptor set of the buffers", 0},
+    {"BINDING_POINTS", 0, "Vulkan: storage buffer binding of the control points", 0},
+    {"BINDING_CLASSES", 1, "Vulkan: storage buffer binding of the classes", 0},
+    {"BINDING_PLANES", 2, "Vulkan: storage buffer binding of the values", 1},
+    {NULL, 0, NULL, 0}};
+
 const kern_target kern_hlsl = {
     .name = "hlsl",
     .language = "HLSL compute shader (Direct3D 11/12; Vulkan via glslangValidator -D or DXC)",
@@ -37,4 +53,9 @@ const kern_target kern_hlsl = {
     .slp_ref = "%s",
     .slp_suffix = ".hlsli",
     .slp_language = "HLSL functions (Shader Model 5 and later)",
+    .host_params_note =
+        " * cbuffer Params : register(b0) (Vulkan: [[vk::push_constant]]), packed in 16-byte rows;\n"
+        " * a constant buffer is sizeof(params) = 32 bytes (pad = 0), root constants the first\n"
+        " * ROOT_CONSTANTS 32-bit values. groups_x = groups[0] of <prefix>dispatch.\n",
+    .host_params = host_params, .host_params_size = 32, .host_slots = host_slots,
 };

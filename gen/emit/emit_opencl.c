@@ -2,6 +2,15 @@
  * What is OpenCL's own is this table; the kernel itself comes from kern_gpu.c and the template. */
 #include "emit/kern.h"
 
+/* --host-header: the kernel's arguments in order. */
+static const kern_host_slot host_slots[] = {
+    {"ARG_POINTS", 0, "global const float4 *cp: the control points", 0},
+    {"ARG_CLASSES", 1, "global uint *cls: the classes", 0},
+    {"ARG_PLANES", 2, "global float *planes: the values d[p*L + P], or NULL", 0},
+    {"ARG_EYE", 3, "float4 eye (cl_float4)", 0},
+    {"ARG_PATCH_COUNT", 4, "uint patch_count (cl_uint)", 0},
+    {NULL, 0, NULL, 0}};
+
 const kern_target kern_opencl = {
     .name = "opencl",
     .language = "OpenCL C 1.2 kernel",
@@ -39,4 +48,10 @@ const kern_target kern_opencl = {
                 " * #pragma OPENCL FP_CONTRACT OFF: equal points give exact zeros.\n",
     .slp_suffix = ".cl",
     .slp_language = "OpenCL C 1.2 functions",
+    .host_params_note =
+        " * Arguments of kernel <prefix>classify, in order (clSetKernelArg index):\n"
+        " * (global const float4 *cp, global uint *cls, global float *planes, float4 eye,\n"
+        " *  uint patch_count); planes may be NULL. Local size {WORKGROUP_SIZE, 1, 1}, global size\n"
+        " * {groups[0] * WORKGROUP_SIZE, groups[1], 1} from <prefix>dispatch.\n",
+    .host_slots = host_slots,
 };

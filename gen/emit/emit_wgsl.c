@@ -76,6 +76,18 @@ static const kern_syntax wgsl_syntax = {
     .braces = 1,
 };
 
+/* --host-header: the uniform Params at binding 3, 32 bytes (zero and the padding 0). */
+static const kern_host_field host_params[] = {
+    {"float", "eye", 4, 0}, {"uint32_t", "patch_count", 1, 16}, {"uint32_t", "zero", 1, 20},
+    {"uint32_t", "pad", 2, 24}, {NULL, NULL, 0, 0}};
+static const kern_host_slot host_slots[] = {
+    {"GROUP", 0, "bind group of every binding", 0},
+    {"BINDING_POINTS", 0, "storage, read-only: the control points, array<vec4<f32>>", 0},
+    {"BINDING_CLASSES", 1, "storage: the classes, array<u32>", 0},
+    {"BINDING_PLANES", 2, "storage: the values d[p*L + P], array<f32>", 1},
+    {"BINDING_PARAMS", 3, "uniform: Params, sizeof(params) bytes", 0},
+    {NULL, 0, NULL, 0}};
+
 const kern_target kern_wgsl = {
     .name = "wgsl",
     .language = "WGSL compute shader for WebGPU",
@@ -117,4 +129,8 @@ const kern_target kern_wgsl = {
                 " * (it keeps the products out of FMAs, so that equal points give exact zeros).\n",
     .slp_suffix = ".wgsl",
     .slp_language = "WGSL functions",
+    .host_params_note =
+        " * var<uniform> params: Params at group 0 binding 3: a uniform buffer of sizeof(params) =\n"
+        " * 32 bytes (WGSL rounds the struct up to its 16-byte alignment); zero and pad must be 0.\n",
+    .host_params = host_params, .host_params_size = 32, .host_slots = host_slots,
 };

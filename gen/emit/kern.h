@@ -7,6 +7,24 @@
 
 typedef struct kern_target kern_target;
 
+/* A member of the kernel's parameter block as the host writes it (--host-header): C type
+ * ("float" or "uint32_t"), name, element count (1: a scalar, else an array), and byte offset
+ * where the kernel reads it; pad members are named pad and must be 0. */
+typedef struct {
+    const char *type, *name;
+    int count;
+    unsigned offset;
+} kern_host_field;
+
+/* A binding slot or argument index the host header declares as PREFIX_NAME (--host-header): the
+ * name after the prefix, its value, what it is, and whether it exists only with --planes. */
+typedef struct {
+    const char *name;
+    long value;
+    const char *comment;
+    int planes_only;
+} kern_host_slot;
+
 /* A variable of a local declaration: its name, its initializer (NULL: none; the kernel assigns
  * the variable before it reads it), and whether it is assigned again after its declaration. */
 typedef struct {
@@ -139,6 +157,14 @@ struct kern_target {
     const char *slp_preamble; /* what --stage function's file needs before them, or NULL */
     const char *slp_suffix;   /* --stage function's file suffix, for the banner: ".glsl" */
     const char *slp_language; /* --stage function's language, for the banner: "GLSL 4.50 functions" */
+    /* The host header (--host-header, host_header.c). */
+    const char *host_params_note; /* where the parameter block goes and its layout, comment lines
+                                     " * ..." each ending in \n; or the argument order */
+    const kern_host_field *host_params; /* the parameter block's members, ending at name NULL;
+                                           NULL: no block (kernel arguments, host_slots) */
+    unsigned host_params_size;          /* its size in bytes, padding included */
+    const kern_host_slot *host_slots;   /* bindings, registers or argument indices, ending at
+                                           name NULL */
 };
 
 /* The C family's syntax: GLSL, HLSL, OpenCL C and CUDA. */
@@ -150,6 +176,16 @@ extern const kern_target kern_glsl, kern_hlsl, kern_opencl, kern_cuda, kern_wgsl
  * shared memory from the scheduled tables, then one thread per patch combines the signs. */
 int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                   ptp_error *err);
+
+/* The workgroup of kern_emit_gpu's compute kernel for info: *threads invocations, handling
+ * *patches patches (the straight-line kernel: info->group of each; the table kernel: the
+ * schedule's P threads times Q patches, and Q). The kernel and the host header read it here. */
+void kgpu_dispatch(const out_info *info, unsigned *threads, unsigned *patches);
+
+/* --host-header: appends the C/C++ host header of the compute kernel `kernel` (kern_emit_gpu's
+ * output for info and g): parameter block, slots, workgroup, dispatch and the source. */
+int hh_write(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+             const sbuf *kernel, ptp_error *err);
 
 /* --stage function: the target's classify_patch and values, as kern_emit_gpu's kernel calls them. */
 int kgpu_slp_functions(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,

@@ -76,7 +76,7 @@ char *kgpu_group(char *out, size_t size, const kern_target *g, const char *e)
 
 void kgpu_dispatch(const out_info *info, unsigned *threads, unsigned *patches)
 {
-    if (info->table) {
+    if (info->table || info->certified) { /* kern_emit_gpu's choice of the table kernel */
         *patches = (unsigned)info->sched->patches;
         *threads = (unsigned)info->sched->threads * *patches;
     } else {

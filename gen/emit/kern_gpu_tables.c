@@ -59,8 +59,10 @@ static void put_owners(sbuf *o, const tp_table *t, const out_info *info, const k
 {
     const sched *s = info->sched;
     int P = s->threads, th, p, k = 0;
+    unsigned threads, patches;
+    kgpu_dispatch(info, &threads, &patches); /* the workgroup the host header states */
     put_uint_constant(o, g, up, "P", P, "threads per patch");
-    put_uint_constant(o, g, up, "Q", s->patches, "patches per workgroup");
+    put_uint_constant(o, g, up, "Q", (long)patches, "patches per workgroup");
     put_uint_constant(o, g, up, "K", t->dom.npoints, "control points per patch");
     put_uint_constant(o, g, up, "L", t->dom.nplanes, "control planes per patch");
     sbuf_printf(o, "/* %d rounds: the largest number of terms of one thread. */\n\n", s->rounds);
