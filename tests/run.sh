@@ -66,6 +66,7 @@ run tests/test_layers.sh bash tests/test_layers.sh
 if [ -x build/gcc/ptpgen ]; then
     run tests/test_cli.sh env PTPGEN=build/gcc/ptpgen PTPGEN_OTHER=build/clang/ptpgen bash tests/test_cli.sh
     run tests/test_examples.sh env PTPGEN=build/gcc/ptpgen bash tests/test_examples.sh
+    run tests/test_host_header.sh env PTPGEN=build/gcc/ptpgen bash tests/test_host_header.sh
 fi
 
 # bench/cullrate (make cullrate) on small models (bicubic and PN triangles), its errors on bad

@@ -18,9 +18,9 @@ static void hh_banner(sbuf *o, const out_info *info, const kern_target *g, const
     sbuf_printf(o, " * Dispatch: %sdispatch(patch_count, max_groups_x, groups) gives the workgroups;\n"
                    " * workgroup (x, y) handles the patches of block y * groups[0] + x.\n"
                    " * C99 or later, C++11 or later; everything is static, so any number of files\n"
-                   " * may include it. %sSOURCE_SIZE bytes of source; MSVC takes string\n"
-                   " * literals of at most 65535 bytes.\n */\n\n",
-                info->prefix, up);
+                   " * may include it. %sSOURCE_SIZE bytes of source (MSVC takes string literals\n"
+                   " * of at most 65535 bytes: define %sNO_SOURCE there, and load the kernel's file).\n */\n\n",
+                info->prefix, up, up);
 }
 
 /* The guard, the includes and PREFIX_HOST_ASSERT(cond, name): static_assert, _Static_assert, or
@@ -153,12 +153,14 @@ static void hh_source(sbuf *o, const sbuf *kernel, const char *px, const char *u
 {
     const char *s = kernel->s ? kernel->s : "";
     size_t n = kernel->len, i = 0;
-    sbuf_printf(o, "/* The kernel's source, byte for byte (SOURCE_SIZE bytes and a NUL). */\n"
+    sbuf_printf(o, "/* The kernel's source, byte for byte (SOURCE_SIZE bytes and a NUL); define NO_SOURCE\n"
+                   " * to leave it out (MSVC refuses literals past 65535 bytes). */\n"
                    "#define %sSOURCE_SIZE %zuu\n"
+                   "#ifndef %sNO_SOURCE\n"
                    "#if defined(__GNUC__)\n#pragma GCC diagnostic push\n"
                    "#pragma GCC diagnostic ignored \"-Woverlength-strings\"\n#endif\n"
                    "static const char %ssource[] %sHOST_UNUSED =",
-                up, n, px, up);
+                up, n, up, px, up);
     if (n == 0)
         sbuf_puts(o, " \"\"");
     while (i < n) {
@@ -170,7 +172,7 @@ static void hh_source(sbuf *o, const sbuf *kernel, const char *px, const char *u
         i = end;
     }
     sbuf_printf(o, ";\n#if defined(__GNUC__)\n#pragma GCC diagnostic pop\n#endif\n"
-                   "%sHOST_ASSERT(sizeof %ssource == %sSOURCE_SIZE + 1, source_size);\n\n",
+                   "%sHOST_ASSERT(sizeof %ssource == %sSOURCE_SIZE + 1, source_size);\n#endif\n\n",
                 up, px, up);
 }
 
