@@ -265,7 +265,7 @@ ocl_mutant_caught() {
 ocl_mutant_caught "$tmp/cert/clip-degenerate" degenerate \
     's/ptp_3x3_zero\[plane\] & col/col/; s/ptp_3x3_zero\[ptp_3x3_own_plane\[i\]\] & col/col/' \
     '(col) == 0u' "a certified degenerate OpenCL kernel that zeros planes off the collapsed edge"
-# The certified GPU kernels' terms read differences of points (README: Differences of points). The
+# The certified GPU kernels' terms read differences of points (docs/errors.md: differences). The
 # exact data are integer points, whose differences are exact and whose float errors stay far below
 # the bound (none unsafe at 2^-6 of it, 21 at 2^-10): an OpenCL kernel whose float-pass bounds are
 # 2^12 times too small is caught (about 1,100 unsafe of 200,000), though its second look, against

@@ -48,7 +48,7 @@ void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info);
  * plane that a collapsed edge of p->zero[plane] zeros counts as both); t = |v| - K_P ER3
  * (cb->k), rounded once (twice without FMA: K_P allows it), into s, their minimum (or, on a
  * plane a collapsed edge can zero, into amb where t is not above F and the edge is not
- * collapsed); the signs are certified where s > F and amb is clear (README: Certified). Where
+ * collapsed); the signs are certified where s > F and amb is clear (docs/errors.md). Where
  * emit_c_cert_late holds, t and s come from CBOUND(plane). */
 void emit_c_cert_masks(sbuf *o, const slp_prog *p, const cert_bounds *cb, const out_info *info,
                        const char *up, int plane, int first);

@@ -121,7 +121,7 @@ struct kern_target {
      * crossed by no reassociation or contraction (the kernel's diff function returns it from an
      * exact local), printf format of the arguments b, a, b, a, b, a, b, a (a format may take the
      * components one by one); the terms then read b_j, b_k - b_j, b_l - b_j, whose monomials
-     * are far smaller than b_j, b_k, b_l's (README: Differences of points); NULL: b_j, b_k, b_l */
+     * are far smaller than b_j, b_k, b_l's (docs/errors.md: differences); NULL: b_j, b_k, b_l */
     const char *diff;
     const char *bits;          /* a float's bits as a uint, printf format of the float (--certified
                                   --rule degenerate: the exact tests of collapsed edges) */

@@ -148,7 +148,7 @@ static char *put_eye_monomial(char *e, size_t size, const kern_target *g, const 
 
 /* Into e (1024 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
  * largest |monomial| (clip space); in world space the sum over the eye's components of the
- * largest |monomial| with that component (README: Certified). With diff (differences), a
+ * largest |monomial| with that component (docs/errors.md). With diff (differences), a
  * monomial has one coordinate and two differences instead (put_diff_monomial). */
 static void put_monomial_max(char *e, const out_info *info, const kern_target *g, int diff)
 {
@@ -176,7 +176,7 @@ static void put_monomial_max(char *e, const out_info *info, const kern_target *g
 
 /* With differences, the patch's extents over the coordinates c (n of them): step 0 declares
  * Hc = max b.c and Lc = max -b.c from the first point, step 1 (in the loop over the points a)
- * updates them, step 2 declares the extents Dc = Hc + Lc (README: Differences of points). */
+ * updates them, step 2 declares the extents Dc = Hc + Lc (docs/errors.md: differences). */
 static void put_extents(sbuf *o, const out_info *info, const kern_target *g, const char *up,
                         const char *c, int n, int step)
 {

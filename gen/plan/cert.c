@@ -121,7 +121,7 @@ static int cmp_desc(const void *a, const void *b)
 /* Into d[P] and D[P] for the n terms of one plane whose |weights| are a (sorted here, largest
  * first): each term's m monomials have own roundings own in all (at most own_max on one), plus
  * those of the plane's sum of n terms in whatever order and association: at most the depths
- * n - 1, n - 1, n - 2, ..., 1 of a chain, the deepest given to the heaviest (README: Certified). */
+ * n - 1, n - 1, n - 2, ..., 1 of a chain, the deepest given to the heaviest (docs/errors.md). */
 static void gpu_sums(double *d, double *D, double *a, size_t n, double own, double own_max, double m)
 {
     size_t k;
@@ -134,7 +134,7 @@ static void gpu_sums(double *d, double *D, double *a, size_t n, double own, doub
 int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differences, ptp_error *err)
 {
     /* A term's monomials (of one eye component in world space, where the kernel's M sums the
-     * components' bounds) and their own roundings (README: Certified): clip space 6, 46 in all,
+     * components' bounds) and their own roundings (docs/errors.md): clip space 6, 46 in all,
      * at most 8; world space 6, 64, at most 11; with differences 2 more on every monomial. */
     const double m = 6, own = (world ? 64 : 46) + (differences ? 2 * m : 0),
                  own_max = (world ? 11 : 8) + (differences ? 2 : 0);
@@ -175,7 +175,7 @@ int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differe
 /* Roundings on the path from a group's u at scale s to its plane's value: s u's own (none for
  * s = 1; the rounded adds of its chain, whose doublings are exact; else one product), v's update
  * (an add, or a multiply-add counted as a product and an add) unless the group is the plane's
- * first, and the adds of the later groups: group gi of groups (README: Certified). */
+ * first, and the adds of the later groups: group gi of groups (docs/errors.md). */
 static double group_depth(const rat *s, int gi, int groups)
 {
     slp_scale c;
@@ -183,7 +183,7 @@ static double group_depth(const rat *s, int gi, int groups)
     return own + (gi > 0) + (groups - 1 - gi);
 }
 
-/* Fused plane P from entry a (README: Certified): into d[P] the most roundings on a path, into
+/* Fused plane P from entry a (docs/errors.md): into d[P] the most roundings on a path, into
  * D[P] the sum over its monomials of their path's roundings times |s|. Run j of a group (a point
  * b and a kind K: G_K(b) times the signed sum of b's n minors) has 2 n (world: 4 n) monomials,
  * each through a minor (2) and G (1, world 2), the n - 1 sums of the minors, the product with G
@@ -214,7 +214,7 @@ static void fused_sums(double *d, double *D, const slp_prog *p, size_t a, int wo
     }
 }
 
-/* Exact plane P from term a (README: Certified): d[P] and D[P] as for fused_sums. Term q of a
+/* Exact plane P from term a (docs/errors.md): d[P] and D[P] as for fused_sums. Term q of a
  * group of L (u = t_0; u += t_1 ...) has 7 (world 8) roundings in its bracket, L - max(q, 1) in
  * the group's sum, one more, and the group's path to the plane's value. Returns the next term. */
 static size_t exact_sums(double *d, double *D, const slp_prog *p, size_t a, int world)
@@ -238,7 +238,7 @@ static size_t exact_sums(double *d, double *D, const slp_prog *p, size_t a, int 
     return g;
 }
 
-/* Point-form plane P from item a (README: Certified): d[P] and D[P] from slp_point_plane, which
+/* Point-form plane P from item a (docs/errors.md): d[P] and D[P] from slp_point_plane, which
  * follows the code as emitted. */
 static void point_sums(double *d, double *D, const slp_prog *p, size_t a, int world)
 {

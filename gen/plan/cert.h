@@ -1,5 +1,5 @@
 /* cert.h: the constants of certified classification: per plane, a rigorous bound on the float
- * rounding error of its value, as K * E R^3 + K2 * (1 + R)^3 (1 + E) (README: Certified). */
+ * rounding error of its value, as K * E R^3 + K2 * (1 + R)^3 (1 + E) (docs/errors.md). */
 #ifndef CERT_H
 #define CERT_H
 #include "plan/slp.h"
@@ -26,7 +26,7 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
 /* The bounds of the GPU kernels' float pass for float operations of relative error at most u:
  * each monomial at its own depth, a term's own roundings and its plane's sum in any order and
  * association, for M the largest |monomial| (clip space) or the sum over the eye's components of
- * the largest |monomial| with that component (world space) (README: Certified). With
+ * the largest |monomial| with that component (world space) (docs/errors.md). With
  * differences, the terms read b_j, b_k - b_j, b_l - b_j, the differences computed in float (two
  * more roundings a monomial), and M from the largest coordinates and the extents (README:
  * Differences of points). k64 and k2_64 stay NULL. */
@@ -34,7 +34,7 @@ int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differe
 /* The bounds of the GPU kernels' second look: the table loop again in double-float arithmetic
  * (hi + lo floats from error-free transformations, + - * only), each double-float operation with
  * relative error at most 2^-44, eta = 2^-126 per float operation, and q_max low enough that the
- * splitter's 4097 x never overflows (README: Certified). k64 and k2_64 stay NULL. */
+ * splitter's 4097 x never overflows (docs/errors.md). k64 and k2_64 stay NULL. */
 int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
 /* The bounds of the straight-line program p (the C target's classify), at its planes' scales:
  * each monomial's roundings d_i from the program's summation trees as emitted. */

@@ -23,7 +23,7 @@ size_t slp_point_class_end(const slp_item *it, size_t n, size_t a);
  * first), which is as many instructions or fewer. */
 int slp_point_by_adds(long c, int first);
 /* A point-form plane's operations (products, multiply-adds, and adds or subtracts) beyond the
- * shared minors and G's, and its roundings (README: Certified): w the sum of |weight| of its
+ * shared minors and G's, and its roundings (docs/errors.md): w the sum of |weight| of its
  * monomials (a term's 6 in clip space, 24 in world space, times |coef|), dsum the sum over them
  * of their roundings times |weight|, dmax the most on any path, where a multiply-add counts as a
  * product and a sum (targets without FMA round both). */
