@@ -85,93 +85,71 @@ void kgpu_dispatch(const out_info *info, unsigned *threads, unsigned *patches)
     }
 }
 
-/* The paper's table kernel: P threads a patch over the schedule's rounds, in the template. */
-static int emit_table(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
-                      const char *up, const char *file, ptp_error *err)
+/* A kernel's parts, each written into its own buffer before the template is filled. */
+typedef struct {
+    sbuf banner, tables, shared, funcs, body;
+} kernel_parts;
+
+/* Fills g's template with the parts p and the workgroup of kgpu_dispatch. */
+static int fill_kernel(sbuf *o, const kernel_parts *p, const out_info *info, const kern_target *g,
+                       ptp_error *err)
 {
-    sbuf banner, tables, funcs, shared, body;
     char threads[16];
     tpl_slot slots[9];
     size_t n = 0;
     unsigned nthreads, npatches;
-    int st;
     kgpu_dispatch(info, &nthreads, &npatches);
     snprintf(threads, sizeof threads, "%u", nthreads);
-    sbuf_init(&banner);
-    sbuf_init(&tables);
-    sbuf_init(&funcs);
-    sbuf_init(&shared);
-    sbuf_init(&body);
-    fmt_banner(&banner, t, info, file, g->language, g->interface);
-    st = kgpu_tables(&tables, t, info, g, up, err);
-    kgpu_functions(&funcs, info, g);
-    kgpu_body(&body, &t->dom, info, g, up);
-    if (!g->shared_in_body)
-        kgpu_shared(&shared, info, g, up, "");
-    slots[n++] = (tpl_slot){"BANNER", banner.s};
+    slots[n++] = (tpl_slot){"BANNER", p->banner.s};
     if (g->named_kernel)
         slots[n++] = (tpl_slot){"PREFIX", info->prefix};
     slots[n++] = (tpl_slot){"BLOCK_THREADS", threads};
-    slots[n++] = (tpl_slot){"TABLES", tables.s};
-    slots[n++] = (tpl_slot){"FUNCTIONS", funcs.s};
-    slots[n++] = (tpl_slot){"BODY", body.s};
+    slots[n++] = (tpl_slot){"TABLES", p->tables.s};
+    slots[n++] = (tpl_slot){"FUNCTIONS", p->funcs.s};
+    slots[n++] = (tpl_slot){"BODY", p->body.s};
     if (!g->shared_in_body)
-        slots[n++] = (tpl_slot){"SHARED", shared.s};
+        slots[n++] = (tpl_slot){"SHARED", p->shared.s ? p->shared.s : ""};
     if (g->planes_buffer)
         slots[n++] = (tpl_slot){"PLANES_BUFFER", info->planes ? g->planes_buffer : ""};
-    if (banner.failed || tables.failed || funcs.failed || shared.failed || body.failed)
-        st = st ? st : ptp_fail(err, PTP_ENOMEM, "out of memory writing the kernel");
-    if (!st)
-        st = tpl_fill(o, g->template_name, slots, n, err);
-    sbuf_clear(&banner);
-    sbuf_clear(&tables);
-    sbuf_clear(&funcs);
-    sbuf_clear(&shared);
-    sbuf_clear(&body);
-    return st;
+    if (p->banner.failed || p->tables.failed || p->shared.failed || p->funcs.failed ||
+        p->body.failed)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing the kernel");
+    return tpl_fill(o, g->template_name, slots, n, err);
 }
 
-/* The straight-line kernel: one patch an invocation, calling classify_patch (and values), in the
- * same template with no tables and no shared memory. */
-static int emit_slp(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
-                    const char *up, const char *file, ptp_error *err)
+/* The kernel: the paper's table kernel (P threads a patch over the schedule's rounds, shared
+ * memory) or the straight-line kernel (one patch an invocation calling classify_patch). */
+static int emit_kernel(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                       const char *up, const char *file, ptp_error *err)
 {
-    sbuf banner, consts, funcs, body;
+    int table = info->table || info->certified, st;
     out_info in = *info;
-    char threads[16];
-    tpl_slot slots[9];
-    size_t n = 0;
-    unsigned nthreads, npatches;
-    int st;
-    in.sched = NULL; /* the banner states the straight-line dispatch */
-    kgpu_dispatch(info, &nthreads, &npatches);
-    snprintf(threads, sizeof threads, "%u", nthreads);
-    sbuf_init(&banner);
-    sbuf_init(&consts);
-    sbuf_init(&funcs);
-    sbuf_init(&body);
-    fmt_banner(&banner, t, &in, file, g->language, g->interface);
-    st = kgpu_slp_kernel_parts(&consts, &funcs, t, info, g, up, err);
-    kgpu_slp_body(&body, &t->dom, info, g, up);
-    slots[n++] = (tpl_slot){"BANNER", banner.s};
-    if (g->named_kernel)
-        slots[n++] = (tpl_slot){"PREFIX", info->prefix};
-    slots[n++] = (tpl_slot){"BLOCK_THREADS", threads};
-    slots[n++] = (tpl_slot){"TABLES", consts.s};
-    slots[n++] = (tpl_slot){"FUNCTIONS", funcs.s};
-    slots[n++] = (tpl_slot){"BODY", body.s};
-    if (!g->shared_in_body)
-        slots[n++] = (tpl_slot){"SHARED", ""};
-    if (g->planes_buffer)
-        slots[n++] = (tpl_slot){"PLANES_BUFFER", info->planes ? g->planes_buffer : ""};
-    if (banner.failed || consts.failed || funcs.failed || body.failed)
-        st = st ? st : ptp_fail(err, PTP_ENOMEM, "out of memory writing the kernel");
+    kernel_parts p;
+    sbuf_init(&p.banner);
+    sbuf_init(&p.tables);
+    sbuf_init(&p.shared);
+    sbuf_init(&p.funcs);
+    sbuf_init(&p.body);
+    if (!table)
+        in.sched = NULL; /* the banner states the straight-line dispatch */
+    fmt_banner(&p.banner, t, &in, file, g->language, g->interface);
+    if (table) {
+        st = kgpu_tables(&p.tables, t, info, g, up, err);
+        kgpu_functions(&p.funcs, info, g);
+        kgpu_body(&p.body, &t->dom, info, g, up);
+        if (!g->shared_in_body)
+            kgpu_shared(&p.shared, info, g, up, "");
+    } else {
+        st = kgpu_slp_kernel_parts(&p.tables, &p.funcs, t, info, g, up, err);
+        kgpu_slp_body(&p.body, &t->dom, info, g, up);
+    }
     if (!st)
-        st = tpl_fill(o, g->template_name, slots, n, err);
-    sbuf_clear(&banner);
-    sbuf_clear(&consts);
-    sbuf_clear(&funcs);
-    sbuf_clear(&body);
+        st = fill_kernel(o, &p, table ? info : &in, g, err);
+    sbuf_clear(&p.banner);
+    sbuf_clear(&p.tables);
+    sbuf_clear(&p.shared);
+    sbuf_clear(&p.funcs);
+    sbuf_clear(&p.body);
     return st;
 }
 
@@ -209,6 +187,5 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
         return ptp_fail(err, PTP_EUSAGE, "the straight-line functions are not certified");
     if (info->functions)
         return emit_functions(o, t, info, g, file, err);
-    return info->table || info->certified ? emit_table(o, t, info, g, up, file, err)
-                                          : emit_slp(o, t, info, g, up, file, err);
+    return emit_kernel(o, t, info, g, up, file, err);
 }
