@@ -380,18 +380,22 @@ done
 # Each generation option is accepted exactly by the targets --list-targets names for it, and
 # changes their bytes (besides the command line they quote); any other target refuses it (exit 2)
 # with one line naming the targets it applies to.
+# opt_args OPTION [TARGET_OPTIONS]: the arguments that set OPTION (the GPU targets take a schedule
+# for their table kernel).
 opt_args() {
     case $1 in
     space) echo --space world ;; rule) echo --rule degenerate ;; planes) echo --planes ;;
     certified) echo --certified ;; refine) echo --refine 1 ;; prefix) echo --prefix x_ ;;
     schedule) echo --threads-per-patch 2 --patches-per-block 3 ;;
+    kernel) echo --kernel table ;;
     esac
+    [[ $1 = schedule && ,${2:-}, == *,kernel,* ]] && echo --kernel table
 }
-for opt in space rule planes certified refine prefix schedule; do
+for opt in space rule planes certified refine prefix schedule kernel; do
     bad="" takers=$(awk -v o="$opt" '("," $3 ",") ~ ("," o ",") { printf "%s%s", s, $1; s = ", " }' "$tmp/targets")
     [ -n "$takers" ] || bad=" no target takes it"
     while read -r t _ opts _; do
-        "$P" --degree 2x3 --target $t $(opt_args $opt) >"$tmp/out" 2>"$tmp/err"
+        "$P" --degree 2x3 --target $t $(opt_args $opt "$opts") >"$tmp/out" 2>"$tmp/err"
         rc=$?
         case ",$opts," in
         *,$opt,*) [ $rc -eq 0 ] && [ -s "$tmp/out" ] &&
@@ -405,6 +409,13 @@ for opt in space rule planes certified refine prefix schedule; do
     [ -z "$bad" ] && ok "$(opt_args $opt | cut -d' ' -f1) changes the output of $takers; other targets refuse it, naming those" ||
         notok "$opt applies only where listed" "$bad"
 done
+# The GPU targets' two forms: options of one are refused with the other, each with one line.
+expect_fail "--threads-per-patch needs the table kernel on a GPU target" 2 "--threads-per-patch applies to --kernel table$" --degree 3 --target glsl --threads-per-patch 4
+expect_fail "--kernel slp is not certified" 2 "--certified GPU code is the table kernel" --degree 3 --target cuda --certified --kernel slp
+expect_fail "--stage function with --kernel table is refused" 2 "not --kernel table$" --degree 3 --target hlsl --stage function --kernel table
+expect_fail "--stage function with --planes is refused" 2 "--planes applies to kernels" --degree 3 --target wgsl --stage function --planes
+expect_fail "--stage function with --certified is refused" 2 "is the table kernel" --degree 3 --target glsl --stage function --certified
+expect_fail "an unknown --kernel is named" 2 "kernel" --degree 3 --target glsl --kernel fast
 expect_fail "--planes for the C header is refused" 2 "--planes applies to targets glsl, hlsl, opencl, cuda, wgsl \\(not c\\)$" --degree 3 --target c --planes
 expect_fail "--space for json is refused" 2 "--space applies to targets c, glsl, hlsl, opencl, cuda, wgsl \\(not json\\)" --degree 3 --space world
 

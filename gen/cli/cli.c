@@ -402,6 +402,10 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
 {
     if (!(o->target->options & TGT_KERNEL))
         return PTP_OK;
+    if (o->certified && o->functions)
+        return ptp_fail(err, PTP_EUSAGE, "--stage function writes the straight-line functions, "
+                                         "which are not certified (--certified GPU code is the "
+                                         "table kernel)");
     if (o->certified && !(seen >> OPT_KERNEL & 1))
         o->table = 1;
     if (o->certified && !o->table)
