@@ -74,7 +74,7 @@ for a in "help" "help verify" "help vectors" "verify --help" "vectors -h"; do
         ok "ptpgen $a prints the usage, exit 0" || notok "ptpgen $a prints the usage" "$(head -2 "$tmp/out" "$tmp/err")"
 done
 # --help describes exactly the options of README.md's option table (README "Command line").
-readme_opts=$(sed -n '/^## Command line/,/^## The JSON document/p' README.md | grep '^| `' | cut -d'|' -f2 |
+readme_opts=$(awk '/^## /{f = /^## Command line/} f' README.md | grep '^| `' | cut -d'|' -f2 |
     grep -o -- '--[a-z-]*' | sort -u | tr '\n' ' ')
 help_opts=$(grep -E '^  (-[a-z], )?--' "$tmp/help" | grep -o -- '--[a-z-]*' | sort -u | tr '\n' ' ')
 [ -n "$help_opts" ] && [ "$readme_opts" = "$help_opts" ] &&
