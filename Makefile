@@ -238,7 +238,8 @@ $(RB)/ptp_groups.h: $(RB)/ptp.comp $(RB)/ptp_cert.comp $(RB)/ptp_table.comp
 # `make figures`: build/render over tessellation factors 1 to 64 for every cull method on BigGuy
 # and the teapot (bench/render/figures.py): bench/figures/ gets the Figure-1 images, gnuplot plots
 # of frame time and tessellation work against the factor, and table.md. gnuplot comes from Debian
-# (installed when missing and run as root). FIGURES_ARGS=--quick for a short run.
+# (installed when missing and run as root). FIGURES_ARGS=--quick for a short run, --one-view for
+# every factor from the first view alone.
 FIGURES_MODELS ?= ../shared/models
 FIGURES_ARGS ?=
 

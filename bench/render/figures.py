@@ -4,7 +4,8 @@ tessellation factors 1..64 from fixed views; writes bench/figures/: the Figure-1
 view, plots of frame time and of tessellation-evaluation invocations against the factor (gnuplot),
 table.md with the numbers, and raw.txt with every output line.
 
-  figures.py RENDER MODELS_DIR OUT_DIR [--quick]   (--quick: factors 1, 4, 16; one view; 1 frame)
+  figures.py RENDER MODELS_DIR OUT_DIR [--quick | --one-view]   (--quick: factors 1, 4, 16; one
+  view; 1 frame. --one-view: every factor and frame, the first view of each model)
 """
 import os
 import struct
@@ -145,14 +146,15 @@ def figure1(render, models, out):
 def main():
     render, models, out = sys.argv[1:4]
     quick = "--quick" in sys.argv[4:]
+    views = 1 if quick or "--one-view" in sys.argv[4:] else 3
     factors = [1, 4, 16] if quick else FACTORS
-    eyes_of = (lambda eyes: eyes[:1]) if quick else (lambda eyes: eyes)
+    eyes_of = lambda eyes: eyes[:views]
     frames = 1 if quick else FRAMES
     os.makedirs(out, exist_ok=True)
     figure1(render, models, out)
     rows = measure(render, models, out, factors, eyes_of, frames)
     plot(rows, out, factors, frames)
-    table(rows, out, factors, 1 if quick else 3, frames)
+    table(rows, out, factors, views, frames)
 
 
 if __name__ == "__main__":
