@@ -1,4 +1,5 @@
 # ptpgen: build, test, install and benchmark. `make` builds ./ptpgen with $(CC) (gcc or clang).
+# Objects go to build/<compiler>/; `make B=dir` builds in another folder. `make install PREFIX=...`.
 CC ?= cc
 CFLAGS ?= -O2
 # Static linking halves process start-up, a third of a small run (make LDFLAGS= to link dynamically).
@@ -28,8 +29,11 @@ all: ptpgen
 ptpgen: $(B)/ptpgen FORCE
 	@cmp -s $< $@ || cp $< $@
 
+# Where a static link fails (no static libc), ptpgen is linked again without -static.
 $(B)/ptpgen: $(GEN_OBJ)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(GEN_OBJ)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(GEN_OBJ) || \
+	    { echo "ptpgen: the static link failed; linking dynamically" >&2; \
+	      $(CC) $(CFLAGS) $(filter-out -static,$(LDFLAGS)) -o $@ $(GEN_OBJ); }
 
 $(B)/obj/gen/%.o: gen/%.c $(GEN_HDR) Makefile
 	@mkdir -p $(@D)
@@ -84,8 +88,9 @@ test:
 	@bash tests/run.sh
 
 install: ptpgen
-	install -d $(DESTDIR)$(PREFIX)/bin
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 ptpgen $(DESTDIR)$(PREFIX)/bin/ptpgen
+	install -m 644 docs/ptpgen.1 $(DESTDIR)$(PREFIX)/share/man/man1/ptpgen.1
 
 bench-gen: $(B)/bench_gen ptpgen
 	$(B)/bench_gen ./ptpgen

@@ -3,7 +3,7 @@
 
 # what -> Debian package; "what" is a command, an absolute path for a file a package ships, or
 # py.MODULE for a module python3 must import (ensurepip: what `python3 -m venv` needs).
-PTP_DEPS="gcc:gcc g++:g++ clang:clang make:make python3:python3 py.ensurepip:python3-venv
+PTP_DEPS="gcc:gcc g++:g++ clang:clang make:make cmake:cmake python3:python3 py.ensurepip:python3-venv
 glslangValidator:glslang-tools spirv-val:spirv-tools
 /usr/include/CL/cl.h:opencl-headers /usr/lib/x86_64-linux-gnu/libOpenCL.so:ocl-icd-opencl-dev
 /etc/OpenCL/vendors/pocl.icd:pocl-opencl-icd

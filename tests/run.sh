@@ -66,6 +66,8 @@ run tests/test_layers.sh bash tests/test_layers.sh
 if [ -x build/gcc/ptpgen ]; then
     run tests/test_cli.sh env PTPGEN=build/gcc/ptpgen PTPGEN_OTHER=build/clang/ptpgen bash tests/test_cli.sh
     run tests/test_examples.sh env PTPGEN=build/gcc/ptpgen bash tests/test_examples.sh
+    run tests/man_check.sh env PTPGEN=build/gcc/ptpgen bash tests/man_check.sh
+    run tests/test_cmake.sh bash tests/test_cmake.sh
     run tests/test_host_header.sh env PTPGEN=build/gcc/ptpgen bash tests/test_host_header.sh
 fi
 

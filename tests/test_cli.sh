@@ -69,9 +69,14 @@ left=$(ls "$tmp" "$tmp/adir" | grep -c 'tmp-' || true)
 "$P" --help >"$tmp/out" 2>&1 && grep -q '^usage: ptpgen --degree' "$tmp/out" && ok "--help prints usage, exit 0" ||
     notok "--help prints usage, exit 0" "$(head -2 "$tmp/out")"
 "$P" --help >"$tmp/help"
-for a in "help" "help verify" "help vectors" "verify --help" "vectors -h"; do
-    "$P" $a >"$tmp/out" 2>"$tmp/err" && cmp -s "$tmp/out" "$tmp/help" && [ ! -s "$tmp/err" ] &&
-        ok "ptpgen $a prints the usage, exit 0" || notok "ptpgen $a prints the usage" "$(head -2 "$tmp/out" "$tmp/err")"
+"$P" help >"$tmp/out" 2>"$tmp/err" && cmp -s "$tmp/out" "$tmp/help" && [ ! -s "$tmp/err" ] &&
+    ok "ptpgen help prints the usage, exit 0" || notok "ptpgen help prints the usage" "$(head -2 "$tmp/out" "$tmp/err")"
+# help verify|vectors (and verify --help, vectors -h) print that command's usage alone.
+for a in "help verify:verify" "help vectors:vectors" "verify --help:verify" "vectors -h:vectors"; do
+    c=${a#*:} a=${a%:*}
+    "$P" $a >"$tmp/out" 2>"$tmp/err" && [ ! -s "$tmp/err" ] && head -1 "$tmp/out" | grep -q "^usage: ptpgen $c " &&
+        ! grep -q -- '--threads-per-patch\|--list-targets\|--target' "$tmp/out" &&
+        ok "ptpgen $a prints $c's usage alone, exit 0" || notok "ptpgen $a prints $c's usage alone" "$(head -2 "$tmp/out" "$tmp/err")"
 done
 # --help describes exactly the options of README.md's option table (README "Command line").
 readme_opts=$(awk '/^## /{f = /^## Command line/} f' README.md | grep '^| `' | cut -d'|' -f2 |
@@ -442,6 +447,11 @@ expect_fail "unknown --rule" 2 "unknown rule 'lenient' \\(expected strict or deg
 for v in 3abc 'a-b' '' 'x y' 'abcdefghijklmnopqrstuvwxyzabcdefghijklmnopqrstuvwxyzabcdefghijklmn'; do
     expect_fail "--prefix '$v' is a usage error" 2 "prefix" --degree 3 --target c --prefix "$v"
 done
+# A prefix without a trailing '_' gets one: --prefix ptp_3x3 names ptp_3x3_planes.
+"$P" --degree 3 --target c --prefix ptp_3x3 >"$tmp/p1.out" && "$P" --degree 3 --target c --prefix ptp_3x3_ >"$tmp/p2.out" &&
+    grep -q 'ptp_3x3_planes' "$tmp/p1.out" && ! grep -q 'ptp_3x3planes' "$tmp/p1.out" && cmp -s "$tmp/p1.out" "$tmp/p2.out" &&
+    ok "--prefix ptp_3x3 appends the '_': the same file as --prefix ptp_3x3_" ||
+    notok "--prefix ptp_3x3 appends the '_'" "$(grep -o 'ptp_3x3[a-z]*' "$tmp/p1.out" | sort -u | head -3 | tr '\n' ' ')"
 "$P" --degree 2x3 --target opencl --prefix cull_ | grep -q 'void cull_classify(' &&
     ! "$P" --degree 2x3 --target opencl --prefix cull_ | grep -q 'ptp_2x3' &&
     ok "--prefix names every generated identifier" || notok "--prefix" "default names remain"

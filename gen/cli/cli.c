@@ -66,7 +66,8 @@ static void usage_options(sbuf *o)
         "                   (quads into quarters, triangles at their edge midpoints); with\n"
         "                   --certified in double, every value with a bound on its error\n"
         "  --prefix NAME    prefix of generated names (default ptp_NxM_ or ptp_triN_, then world_,\n"
-        "                   degenerate_, certified_, refineK_ for the options given)\n"
+        "                   degenerate_, certified_, refineK_ for the options given); a _ is\n"
+        "                   appended when NAME does not end in one\n"
         "  --kernel K       GPU targets: slp (default): one patch an invocation, the\n"
         "                   straight-line program; table (the default with --certified): the\n"
         "                   paper's kernel, P threads a patch over the term table\n"
@@ -115,6 +116,30 @@ void cli_usage(sbuf *o)
         "Exit status: 0 success, 1 failure, 2 usage error.\n");
 }
 
+void cli_usage_command(sbuf *o, cli_mode mode)
+{
+    if (mode == CLI_VERIFY)
+        sbuf_puts(o,
+            "usage: ptpgen verify FILE [--degree N|NxM] [--domain quad|triangle]\n"
+            "              [--convention u-first|v-first] [-o REPORT]\n"
+            "\n"
+            "verify checks a table (the paper's idx/wgt C header with its iwgt, owner and sched_\n"
+            "arrays, or ptpgen's json) against the exact derivation, names each problem with its\n"
+            "line and lists what it checked and ignored: exit 0 right, 1 wrong, 2 unreadable.\n"
+            "--degree and --domain name the patch when the file does not; --convention u-first\n"
+            "(default) or v-first is the table's index convention (ptpgen --help).\n");
+    else if (mode == CLI_VECTORS)
+        sbuf_puts(o,
+            "usage: ptpgen vectors --degree NxM [--domain quad|triangle] --count K --seed S\n"
+            "              [--space clip|world] [--format json|c] [-o FILE]\n"
+            "\n"
+            "vectors writes K random patches (small integers) with their exact plane values and\n"
+            "classes under both rules, as JSON (--format json, default) or a C include\n"
+            "(--format c); the same seed gives the same bytes.\n");
+    else
+        cli_usage(o);
+}
+
 /* Sets *v to the index of arg in names[0..n-1]; a usage error naming the choices otherwise. */
 static int parse_choice(int *v, const char *opt, const char *arg, const char *const *names, int n,
                         ptp_error *err)
@@ -132,7 +157,8 @@ static int parse_choice(int *v, const char *opt, const char *arg, const char *co
     return ptp_fail(err, PTP_EUSAGE, "unknown %s '%s' (expected %s)", opt, arg, choices);
 }
 
-/* A prefix is a C identifier start: a letter or '_', then letters, digits and '_'. */
+/* A prefix is a C identifier start: a letter or '_', then letters, digits and '_'; a '_' is
+ * appended when it does not end in one. */
 static int parse_prefix(cli_options *o, const char *arg, ptp_error *err)
 {
     size_t i, n = strlen(arg);
@@ -145,6 +171,8 @@ static int parse_prefix(cli_options *o, const char *arg, ptp_error *err)
                         "starting with a digit, at most %zu characters)",
                         arg, sizeof o->prefix - 2);
     strcpy(o->prefix, arg);
+    if (arg[n - 1] != '_')
+        strcpy(o->prefix + n, "_");
     return PTP_OK;
 }
 
@@ -307,15 +335,21 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     return st;
 }
 
-/* "ptpgen help [verify|vectors]": sets o->help; anything more is a usage error. */
+/* "ptpgen help [verify|vectors]": sets o->help, and o->mode to the command asked about;
+ * anything more is a usage error. */
 static int parse_help(cli_options *o, int argc, char **argv, ptp_error *err)
 {
     o->help = 1;
-    if (argc == 2 || (argc == 3 && (strcmp(argv[2], "verify") == 0 ||
-                                     strcmp(argv[2], "vectors") == 0)))
+    if (argc == 2)
         return PTP_OK;
-    return ptp_fail(err, PTP_EUSAGE, "help takes verify, vectors or nothing, not '%s'",
-                    argv[argc == 3 ? 2 : 3]);
+    if (argc == 3 && strcmp(argv[2], "verify") == 0)
+        o->mode = CLI_VERIFY;
+    else if (argc == 3 && strcmp(argv[2], "vectors") == 0)
+        o->mode = CLI_VECTORS;
+    else
+        return ptp_fail(err, PTP_EUSAGE, "help takes verify, vectors or nothing, not '%s'",
+                        argv[argc == 3 ? 2 : 3]);
+    return PTP_OK;
 }
 
 /* Sets o->mode from the first word ("verify", "vectors", else generation); returns the index of

@@ -51,5 +51,7 @@ typedef struct {
 int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err);
 /* Appends the --help text: the targets from the registry, the limits from their macros. */
 void cli_usage(sbuf *o);
+/* Appends the usage of one command: verify's or vectors' alone, else the whole --help text. */
+void cli_usage_command(sbuf *o, cli_mode mode);
 
 #endif

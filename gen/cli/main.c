@@ -184,7 +184,7 @@ static int run_info(const cli_options *o, ptp_error *err)
     int st;
     sbuf_init(&b);
     if (o->help)
-        cli_usage(&b);
+        cli_usage_command(&b, o->mode);
     else if (o->list)
         tgt_write_list(&b);
     else
