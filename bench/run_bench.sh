@@ -97,17 +97,20 @@ for d in "$@"; do
     while IFS= read -r line; do notes+=("$line"); done < <(grep '^#' "$tmp/rows")
     # the paper loop's patches/s and flops, for the kernels' rows
     read -r paper flops < <(awk '$2 == "paper" && $3 == "loop" { print $4 * 1e6, $5 }' "$tmp/rows")
+    # the straight-line program's flops, for the straight-line kernels' rows
+    slpflops=$(awk '$2 == "classify_batch" && $3 ~ /^[0-9.]+$/ { print $4 }' "$tmp/rows" | head -1)
     # The kernels: the straight-line kernel (default) and the paper's table kernel (table), each
     # dispatched as its banner's schedule says.
     for kernel in slp table; do
         kn=$([ $kernel = table ] && echo " table")
+        fl=$([ $kernel = table ] && echo "$flops" || echo "$slpflops")
 
         # OpenCL on PoCL
         rate="" check=""
         if [ -x "$B/host_opencl" ] && "$B/ptpgen" --degree "$d" --target opencl --kernel $kernel -o "$tmp/k.cl"; then
             gpu_bench "$B/host_opencl" "$tmp/k.cl" --kernel "ptp_${d}_classify" $(kernel_cfg "$tmp/k.cl" $d)
         fi
-        gpu_row "$d" "OpenCL$kn (PoCL), $cores" "$rate" "$flops" "$paper" "$check"
+        gpu_row "$d" "OpenCL$kn (PoCL), $cores" "$rate" "$fl" "$paper" "$check"
 
         # GLSL on lavapipe
         rate="" check=""
@@ -116,7 +119,7 @@ for d in "$@"; do
             glslangValidator -V "$tmp/k.comp" -o "$tmp/k.spv" >/dev/null 2>&1; then
             gpu_bench "$B/host_vulkan" "$tmp/k.spv" $(kernel_cfg "$tmp/k.comp" $d)
         fi
-        gpu_row "$d" "GLSL$kn (lavapipe), $cores" "$rate" "$flops" "$paper" "$check"
+        gpu_row "$d" "GLSL$kn (lavapipe), $cores" "$rate" "$fl" "$paper" "$check"
 
         # WGSL on wgpu-native (lavapipe through Vulkan): the straight-line kernel
         [ $kernel = table ] && continue
@@ -124,7 +127,7 @@ for d in "$@"; do
         if [ -x "$B/host_wgpu" ] && "$B/ptpgen" --degree "$d" --target wgsl -o "$tmp/k.wgsl"; then
             gpu_bench "$B/host_wgpu" "$tmp/k.wgsl" $(kernel_cfg "$tmp/k.wgsl" $d)
         fi
-        gpu_row "$d" "WGSL (wgpu, lavapipe), $cores" "$rate" "$flops" "$paper" "$check"
+        gpu_row "$d" "WGSL (wgpu, lavapipe), $cores" "$rate" "$fl" "$paper" "$check"
     done
 
     gen+="${gen:+, }$d $("$B/bench/bench_cull_$d" --gen "$B/ptpgen" || echo ?) ms"
@@ -149,9 +152,9 @@ cat <<EOF
 # differs: patches whose class differs from classify's, over the patches that path ran.
 # OpenCL, GLSL and WGSL: one dispatch of the hosts' random patches (tests/kref.c), as many as 0.25 s
 #   hold (1024 to $GPU_MAX, the number after "ref ok"), best of $GPU_RUNS (of 1 at 1024); kernel and
-#   class read-back only (compilation and upload excluded), on every core; flops as the paper
-#   loop's (the kernels run its terms, plus padding slots); "ref ok": the host checked the classes
-#   against the double reference.
+#   class read-back only (compilation and upload excluded), on every core; flops: the straight-line
+#   kernels' as classify's, the table kernels' as the paper loop's (its terms, plus padding
+#   slots); "ref ok": the host checked the classes against the double reference.
 EOF
 echo
 # the triangle rows: the degree-1 mesh path and its baselines, PN triangles and bicubic patches
