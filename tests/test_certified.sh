@@ -61,7 +61,7 @@ for space in clip world; do
             "$P" $(args_for ${te%%:*} 3 $space "" $cflag) --target ${te%%:*} -o "$dir/ptp_3x3${te#*:}" ||
                 notok "3x3 $space $kind ${te%%:*}" "ptpgen failed"
         done
-        read -r PQ Q < <(schedule "$dir/ptp_3x3.json")
+        read -r PQ Q < <(schedule "$dir/ptp_3x3.comp") # either GPU form
 
         # C: gcc -O2 and -O2 -march=native (GNU C vectors, 4 and 16 lanes), clang -O3 -march=native.
         for cc in "gcc -O2" "gcc -O2 -march=native" "clang -O3 -march=native"; do
