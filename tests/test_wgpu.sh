@@ -20,10 +20,10 @@ if [ ! -x "$B/host_wgpu" ] || [ -z "${WGPU_DIR:-}" ]; then
     exit 0
 fi
 
-# The kernels: 1x1, world space, and clip space with --planes (4 threads per patch, 32 patches per
-# workgroup of 128 invocations, 1 round).
-"$P" --degree 1 --space world --target wgsl -o "$tmp/world.wgsl" &&
-    "$P" --degree 1 --planes --target wgsl -o "$tmp/clip.wgsl" || notok "ptpgen writes 1x1 WGSL kernels" "it failed"
+# The table kernels (--kernel table): 1x1, world space, and clip space with --planes (4 threads
+# per patch, 32 patches per workgroup of 128 invocations, 1 round).
+"$P" --degree 1 --space world --kernel table --target wgsl -o "$tmp/world.wgsl" &&
+    "$P" --degree 1 --planes --kernel table --target wgsl -o "$tmp/clip.wgsl" || notok "ptpgen writes 1x1 WGSL kernels" "it failed"
 world="$tmp/world.wgsl --degree 1 1 --space world --rule strict --block-threads 128 --patches-per-block 32"
 clip="$tmp/clip.wgsl --degree 1 1 --space clip --rule strict --block-threads 128 --patches-per-block 32 --planes"
 
@@ -94,7 +94,7 @@ for cfg in "1x1 clip --rule strict" "1x1 world --rule degenerate" "2x3 world --c
     "$P" --degree $d --space $space "$@" --target wgsl -o "$tmp/n.wgsl" &&
         nan_check "wgsl $d $space $*: NaN" "$tmp/n.wgsl" ${d%x*} ${d#*x} $space
 done
-"$P" --degree 1 --space world --rule degenerate --target wgsl |
+"$P" --degree 1 --space world --rule degenerate --kernel table --target wgsl |
     sed 's/(bitcast<u32>(d) \& 0x7fffffffu) > 0x7f800000u/false/' >"$tmp/m.wgsl"
 if grep -q 'bitcast<u32>(d)' "$tmp/m.wgsl" || "$PY" tests/wgsl_nan.py "$tmp/m.wgsl" 1 1 world mutant >"$tmp/out" 2>&1 ||
     ! grep -q '^not ok - mutant: .* NaN' "$tmp/out"; then
