@@ -19,7 +19,8 @@ LIB_SRC = $(filter-out gen/cli/main.c,$(GEN_SRC)) $(B)/templates.c
 # objects (make -j compiles them in parallel).
 GEN_OBJ = $(patsubst %.c,$(B)/obj/%.o,$(GEN_SRC)) $(B)/obj/templates.o
 # The library the tests and the hosts link: the generator without main, and kref.
-LIB_OBJ = $(filter-out $(B)/obj/gen/cli/main.o,$(GEN_OBJ)) $(B)/obj/tests/kref.o
+LIB_OBJ = $(filter-out $(B)/obj/gen/cli/main.o,$(GEN_OBJ)) $(B)/obj/tests/kref.o \
+    $(B)/obj/bench/bezfile.o
 TESTS = $(patsubst tests/%.c,%,$(sort $(wildcard tests/test_*.c)))
 
 all: ptpgen
@@ -39,9 +40,26 @@ $(B)/obj/gen/%.o: gen/%.c $(GEN_HDR) Makefile
 	@mkdir -p $(@D)
 	$(CC) $(STD) $(CFLAGS) -Igen -c -o $@ $<
 
-$(B)/obj/tests/kref.o: tests/kref.c tests/kref.h tests/check.h $(GEN_HDR) Makefile
+$(B)/obj/tests/kref.o: tests/kref.c tests/kref.h tests/check.h bench/bezfile.h $(GEN_HDR) Makefile
 	@mkdir -p $(@D)
-	$(CC) $(STD) $(CFLAGS) -Igen -Itests -c -o $@ $<
+	$(CC) $(STD) $(CFLAGS) -Igen -Itests -Ibench -c -o $@ $<
+
+# The BEZ reader of the tests and benchmarks.
+$(B)/obj/bench/bezfile.o: bench/bezfile.c bench/bezfile.h Makefile
+	@mkdir -p $(@D)
+	$(CC) $(STD) $(CFLAGS) -c -o $@ $<
+
+# The models: models/ holds the Utah teapot set; build/models/knot.bez (bench/mkmodel.c, 2,880
+# bicubic patches) stands in for a large model. MODELS=DIR adds a folder of .bez files (or, for
+# `make figures`, picks BigGuy and the teapot from it), e.g. MODELS=../shared/models. The former
+# CULLRATE_MODELS=DIR and FIGURES_MODELS=DIR set it too.
+MODELS ?= $(or $(CULLRATE_MODELS),$(FIGURES_MODELS))
+KNOT = build/models/knot.bez
+models: $(KNOT)
+$(KNOT): bench/mkmodel.c
+	@mkdir -p $(B) $(@D)
+	$(CC) $(STD) $(CFLAGS) -o $(B)/mkmodel $< -lm
+	$(B)/mkmodel $@.tmp && mv $@.tmp $@
 
 $(B)/obj/templates.o: $(B)/templates.c gen/emit/template.h Makefile
 	@mkdir -p $(@D)
@@ -82,7 +100,7 @@ $(B)/host_wgpu: tests/host_wgpu.c tests/check.h tests/host_run.c tests/host_run.
 	    $(B)/libptptest.a -L$(WGPU_DIR) -l:libwgpu_native-release.so -Wl,-rpath,$(WGPU_DIR) -lm
 
 # Everything one compiler builds for the tests.
-build-tests: $(B)/ptpgen $(addprefix $(B)/,$(TESTS))
+build-tests: $(B)/ptpgen $(addprefix $(B)/,$(TESTS)) $(KNOT)
 
 test:
 	@bash tests/run.sh
@@ -185,8 +203,9 @@ $(B)/bench/peak: bench/peak.c Makefile $(B)/bench/cc.txt
 # Vulkan tessellation pipeline (bench/render/, README "Rendering"). Every shader, ptpgen's
 # kernels among them, is compiled to SPIR-V by glslangValidator and into the binary.
 RB = $(B)/render
-RENDER_SRC = $(sort $(wildcard bench/render/*.c)) bench/cones.c
-RENDER_HDR = $(wildcard bench/render/*.h) bench/cones.h bench/vec3.h tests/vk_result.h
+RENDER_SRC = $(sort $(wildcard bench/render/*.c)) bench/cones.c bench/bezfile.c
+RENDER_HDR = $(wildcard bench/render/*.h) bench/cones.h bench/bezfile.h bench/vec3.h \
+    tests/vk_result.h
 RENDER_SHADERS = xform:xform.comp cone:cone.comp vert:patch.vert tesc:patch.tesc \
     tese:patch.tese frag:shade.frag
 RENDER_SPV = $(foreach s,$(RENDER_SHADERS) ptp ptp_cert ptp_table tesc_ptp,$(RB)/spv_$(firstword $(subst :, ,$(s))).h)
@@ -240,21 +259,22 @@ $(RB)/ptp_groups.h: $(RB)/ptp.comp $(RB)/ptp_cert.comp $(RB)/ptp_table.comp
 	@test "$$(wc -l <$@.tmp)" = 3 || { echo "no PTP_3X3_Q in $(RB)/ptp*.comp"; exit 1; }
 	@mv $@.tmp $@
 
-# `make figures`: build/render over tessellation factors 1 to 64 for every cull method on BigGuy
-# and the teapot (bench/render/figures.py): bench/figures/ gets the Figure-1 images, gnuplot plots
+# `make figures`: build/render over tessellation factors 1 to 64 for every cull method on the
+# knot and the teapot of models/, or with MODELS=DIR on DIR's bigguy.bez and teapot.bez
+# (bench/render/figures.py): bench/figures/ gets the Figure-1 images, gnuplot plots
 # of frame time and tessellation work against the factor, and table.md. gnuplot comes from Debian
 # (installed when missing and run as root). FIGURES_ARGS=--quick for a short run, --one-view for
 # every factor from the first view alone.
-FIGURES_MODELS ?= ../shared/models
 FIGURES_ARGS ?=
 
-figures: build/render
+figures: build/render $(KNOT)
 	@command -v gnuplot >/dev/null 2>&1 || { [ "$$(id -u)" = 0 ] && \
 	    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq gnuplot-nox >/dev/null; } || \
 	    { echo "figures: gnuplot is missing (apt-get install gnuplot-nox)"; exit 1; }
-	python3 bench/render/figures.py build/render $(FIGURES_MODELS) bench/figures $(FIGURES_ARGS)
+	python3 bench/render/figures.py build/render bench/figures $(if $(MODELS),--models $(MODELS)) \
+	    $(FIGURES_ARGS)
 
-.PHONY: render figures
+.PHONY: render figures models
 
 # Fuzzing verify's parsers with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs
 # collect in build/fuzz/corpus; copy an input that fails into tests/fuzz/regressions/, which the
@@ -315,28 +335,29 @@ FORCE:
 
 # `make cullrate`: the average number of patches NCONE, TCONE and ptpgen's tangent-plane test
 # (strict, degenerate, certified, --refine 1 to 3, --refine 3 --certified) cull from 10,000
-# random eye points around each model of $(CULLRATE_MODELS) and the PN triangles of two of them
+# random eye points around the knot, the teapot set of models/ and each model of MODELS=DIR, and the
+# PN triangles of the knot and the teapot
 # (--pn), with a bracket of the exact answer
 # (CVis). CULLRATE_ARGS passes options, e.g. `make cullrate CULLRATE_ARGS=--quick`, or `CULLRATE_ARGS="--model my.bez"` to measure your own models.
 # It ends with `make cullrate-gpu` (below).
-CULLRATE_MODELS ?= ../shared/models
 CULLRATE_ARGS ?=
 CR = $(B)/cullrate
 
-cullrate: $(CR)/cullrate
-	$(CR)/cullrate --models $(CULLRATE_MODELS) $(CULLRATE_ARGS)
+cullrate: $(CR)/cullrate $(KNOT)
+	$(CR)/cullrate $(if $(MODELS),--models $(MODELS)) $(CULLRATE_ARGS)
 	@$(MAKE) -s cullrate-gpu
 
-# `make cullrate-gpu`: the certified GPU kernels' culls on BigGuy as the GPU targets compute them
+# `make cullrate-gpu`: the certified GPU kernels' culls on the knot (BigGuy with MODELS=DIR
+# where DIR has it) as the GPU targets compute them
 # (GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native, CUDA emulated on the CPU with
 # g++; bench/gpu_cullrate.sh), at CULLRATE_GPU_EYES eyes per radius. A target whose host cannot be
 # built is skipped.
 CULLRATE_GPU_EYES ?= 2
 
-cullrate-gpu: $(B)/ptpgen
+cullrate-gpu: $(B)/ptpgen $(KNOT)
 	@mkdir -p $(CR)
 	@$(MAKE) -s -k $(B)/host_opencl $(B)/host_vulkan $(B)/host_wgpu $(B)/libptptest.a >$(CR)/hosts.log 2>&1 || true
-	MODELS=$(CULLRATE_MODELS) bash bench/gpu_cullrate.sh $(B) $(CULLRATE_GPU_EYES)
+	MODELS=$(MODELS) bash bench/gpu_cullrate.sh $(B) $(CULLRATE_GPU_EYES)
 
 $(CR)/cr_s.h: $(B)/ptpgen
 	@mkdir -p $(CR)
@@ -382,8 +403,9 @@ $(CR)/cr_tt.h: $(B)/ptpgen
 	@mkdir -p $(CR)
 	$(B)/ptpgen --domain triangle --degree 3 --target table --prefix cr_tt_ -o $@
 
-CR_SRC = bench/cullrate.c bench/cones.c bench/exact.c bench/pn.c bench/tess.c
-CR_HDR = bench/cones.h bench/vec3.h bench/exact.h bench/pn.h bench/tess.h tests/float_widen.h \
+CR_SRC = bench/cullrate.c bench/bezfile.c bench/cones.c bench/exact.c bench/pn.c bench/tess.c
+CR_HDR = bench/bezfile.h bench/cones.h bench/vec3.h \
+    bench/exact.h bench/pn.h bench/tess.h tests/float_widen.h \
     $(addprefix $(CR)/,cr_s.h cr_d.h cr_c.h cr_r1.h cr_r2.h cr_r3.h cr_cr3.h cr_t.h) \
     $(addprefix $(CR)/,cr_ts.h cr_td.h cr_tc.h cr_tt.h)
 

@@ -1,6 +1,7 @@
 /* cullrate.c: `make cullrate`: how many patches of real models (bicubic, PN triangles) NCONE,
  * TCONE and ptpgen's tangent-plane test cull from random eyes, against the exact bracket (CVis). */
 #define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <pthread.h>
@@ -11,6 +12,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bezfile.h"
 #include "cones.h"
 #include "exact.h"
 #include "float_widen.h"
@@ -66,9 +68,11 @@ static const char *const method_name[NMETHODS] = {
     "ptpgen refine 2", "ptpgen refine 3", "ptpgen cert ref 3", "CVis lower bound",
     "CVis upper bound"};
 
-/* The models run without --model or --pn: these names in the --models directory, as bicubic
- * patches, then the first NDEFAULT_PN of them as PN triangles. */
-static const char *const default_models[] = {"bigguy", "teapot", "teacup", "teaspoon"};
+/* The models run without --model or --pn (paths from the repository's root): the generated knot
+ * (make build/models/knot.bez) and the Utah teapot set of models/, as bicubic patches, then the
+ * first NDEFAULT_PN of them as PN triangles. */
+static const char *const default_models[] = {"build/models/knot.bez", "models/teapot.bez",
+                                             "models/teacup.bez", "models/teaspoon.bez"};
 #define NDEFAULT (sizeof default_models / sizeof *default_models)
 #define NDEFAULT_PN 2
 
@@ -171,61 +175,30 @@ static void eye_point(const model *m, uint64_t seed, int stream, long e, double 
     eye[2] = m->center[2] + dist * z;
 }
 
-/* Reads a BEZ file (patch count, 16 one-based indices per patch, vertex count, x,y,z per
- * vertex) into m->npatches and the float model m->soa. Returns NULL, or what is wrong (one
- * line); on failure m->soa is NULL. */
-static const char *read_bez(model *m, const char *path)
+/* Reads a BEZ file (bench/bezfile.c) into m->npatches and the float model m->soa. Returns 0, or
+ * -1 with one line (file, line, what was expected) in err; on failure m->soa is NULL. */
+static int read_bez(model *m, const char *path, char *err, size_t errsz)
 {
-    FILE *f = fopen(path, "r");
-    int (*idx)[16] = NULL, p, k, c, nv;
-    double (*v)[3] = NULL;
-    const char *err = "not a BEZ file of bicubic patches";
-    size_t n;
+    bez_file f;
+    size_t n, p;
+    int k, c;
     m->soa = NULL;
-    if (!f)
-        return strerror(errno);
-    if (fscanf(f, "%d", &m->npatches) != 1 || m->npatches < 1 || m->npatches > 10000000)
-        goto done;
-    n = (size_t)m->npatches;
-    if (!(idx = malloc(n * sizeof *idx))) {
-        err = "out of memory";
-        goto done;
+    if (bez_file_read(&f, path, err, errsz))
+        return -1;
+    n = f.npatches;
+    if (!(m->soa = malloc(n * 64 * sizeof *m->soa))) {
+        snprintf(err, errsz, "%s: out of memory for %zu patches", path, n);
+        bez_file_free(&f);
+        return -1;
     }
-    for (p = 0; p < m->npatches; p++)
+    m->npatches = (int)n;
+    for (p = 0; p < n; p++)
         for (k = 0; k < 16; k++)
-            if (fscanf(f, k ? " ,%d" : "%d", &idx[p][k]) != 1)
-                goto done;
-    if (fscanf(f, "%d", &nv) != 1 || nv < 1 || nv > 100000000)
-        goto done;
-    if (!(v = malloc((size_t)nv * sizeof *v)) || !(m->soa = malloc(n * 64 * sizeof *m->soa))) {
-        err = "out of memory";
-        goto done;
-    }
-    for (k = 0; k < nv; k++)
-        for (c = 0; c < 3; c++)
-            if (fscanf(f, c ? " ,%lf" : "%lf", &v[k][c]) != 1 || !isfinite(v[k][c]) ||
-                !isfinite((float)v[k][c]))
-                goto done;
-    err = "a vertex index is out of range";
-    for (p = 0; p < m->npatches; p++)
-        for (k = 0; k < 16; k++) {
-            if (idx[p][k] < 1 || idx[p][k] > nv)
-                goto done;
             for (c = 0; c < 4; c++)
-                m->soa[(size_t)(k * 4 + c) * n + (size_t)p] =
-                    c < 3 ? (float)v[idx[p][k] - 1][c] : 1.0f;
-        }
-    err = NULL;
+                m->soa[(size_t)(k * 4 + c) * n + p] = c < 3 ? (float)f.v[f.idx[p][k]][c] : 1.0f;
     m->ops = &quad_ops;
-done:
-    fclose(f);
-    free(idx);
-    free(v);
-    if (err) {
-        free(m->soa);
-        m->soa = NULL;
-    }
-    return err;
+    bez_file_free(&f);
+    return 0;
 }
 
 /* The PN triangle of mesh triangle t of h into the float model m->soa as patch t. */
@@ -602,12 +575,14 @@ static double now(void)
 static void usage(FILE *f)
 {
     fprintf(f, "usage: cullrate [--eyes N] [--quick] [--model FILE.bez]... [--pn FILE.bez]...\n"
-               "                [--models DIR] [--grid G] [--seed S] [--threads T] [--depth D]\n"
+               "                [--models DIR]... [--grid G] [--seed S] [--threads T] [--depth D]\n"
                "                [--samples S]\n"
                "  --eyes N     eye points per model and radius (default 10000; --quick: 200)\n"
                "  --model F    a BEZ file of bicubic patches to measure, shown by its base name;\n"
-               "               repeat for more (default: bigguy, teapot, teacup and teaspoon\n"
-               "               in --models DIR, ../shared/models, then bigguy and teapot as PN)\n"
+               "               repeat for more (default, from the repository's root:\n"
+               "               build/models/knot.bez, models/teapot.bez, teacup.bez and\n"
+               "               teaspoon.bez, then the knot and the teapot as PN)\n"
+               "  --models DIR also every DIR/*.bez (by name) whose name is not measured yet\n"
                "  --pn F       the PN triangles (cubic triangular patches) of a BEZ file's\n"
                "               patches tessellated into a coarse triangle mesh with exact\n"
                "               normals, shown as its base name and PN; repeatable\n"
@@ -700,10 +675,11 @@ static int load_model(model *m, const char *path, int pn, const settings *s)
     model q;
     size_t nverts = 0;
     const char *err;
+    char msg[512];
     memset(m, 0, sizeof *m);
     model_name(m->name, sizeof m->name, path);
-    if ((err = read_bez(m, path))) {
-        fprintf(stderr, "cullrate: %s: %s\n", path, err);
+    if (read_bez(m, path, msg, sizeof msg)) {
+        fprintf(stderr, "cullrate: %s\n", msg);
         return 1;
     }
     if (!pn)
@@ -770,13 +746,75 @@ static int run_model(const char *path, int pn, const settings *s, int stream)
     return rc ? 1 : 0;
 }
 
+/* Orders strings for qsort. */
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* Appends the paths of dir's *.bez files, sorted by name, to (*paths, *n). Returns 0, or 1 after
+ * printing one line on stderr (a folder that cannot be read, or none there). */
+static int add_dir(char ***paths, size_t *n, const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    size_t first = *n, len;
+    if (!d) {
+        fprintf(stderr, "cullrate: --models %s: %s\n", dir, strerror(errno));
+        return 1;
+    }
+    while ((e = readdir(d))) {
+        char **more;
+        len = strlen(e->d_name);
+        if (len < 5 || strcmp(e->d_name + len - 4, ".bez"))
+            continue;
+        if (!(more = realloc(*paths, (*n + 1) * sizeof **paths)) ||
+            !(more[*n] = malloc(strlen(dir) + len + 2))) {
+            if (more)
+                *paths = more;
+            closedir(d);
+            fprintf(stderr, "cullrate: out of memory\n");
+            return 1;
+        }
+        *paths = more;
+        sprintf((*paths)[(*n)++], "%s/%s", dir, e->d_name);
+    }
+    closedir(d);
+    if (*n == first) {
+        fprintf(stderr, "cullrate: --models %s: no .bez file there\n", dir);
+        return 1;
+    }
+    qsort(*paths + first, *n - first, sizeof **paths, by_name);
+    return 0;
+}
+
+static void free_dirs(char **paths, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        free(paths[i]);
+    free(paths);
+}
+
+/* Whether a bicubic model of files[0..n) has path's base name. */
+static int listed(const char *const *files, const int *pn, int n, const char *path)
+{
+    char a[256], b[256];
+    model_name(a, sizeof a, path);
+    for (int i = 0; i < n; i++) {
+        model_name(b, sizeof b, files[i]);
+        if (!pn[i] && !strcmp(a, b))
+            return 1;
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     settings s = {10000, 1, 0, 6, 33, 2};
-    const char *dir = "../shared/models";
     const char **files = malloc((size_t)(argc + (int)NDEFAULT * 2) * sizeof *files);
     int *pn = calloc((size_t)(argc + (int)NDEFAULT * 2), sizeof *pn);
-    char defaults[NDEFAULT][4096];
+    char **dirs = NULL;
+    size_t ndirs = 0;
     long cpus = sysconf(_SC_NPROCESSORS_ONLN);
     double t0 = now();
     int a, i, nfiles = 0, rc = 0;
@@ -798,7 +836,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "cullrate: unknown option or missing argument: %s\n", o);
             rc = 2;
         } else if (!strcmp(o, "--models"))
-            dir = argv[++a];
+            rc = add_dir(&dirs, &ndirs, argv[++a]);
         else if (!strcmp(o, "--model") || !strcmp(o, "--pn")) {
             pn[nfiles] = !strcmp(o, "--pn");
             files[nfiles++] = argv[++a];
@@ -820,17 +858,17 @@ int main(int argc, char **argv)
         }
     }
     if (rc) {
-        usage(rc < 0 ? stdout : stderr);
+        if (rc != 1)
+            usage(rc < 0 ? stdout : stderr);
         free(files);
         free(pn);
+        free_dirs(dirs, ndirs);
         return rc < 0 ? 0 : rc;
     }
-    for (i = 0; !nfiles && i < (int)NDEFAULT; i++) {
-        snprintf(defaults[i], sizeof defaults[i], "%s/%s.bez", dir, default_models[i]);
-        files[i] = defaults[i];
-    }
+    for (i = 0; !nfiles && i < (int)NDEFAULT; i++)
+        files[i] = default_models[i];
     for (i = 0; !nfiles && i < NDEFAULT_PN; i++) {
-        files[NDEFAULT + (size_t)i] = defaults[i];
+        files[NDEFAULT + (size_t)i] = default_models[i];
         pn[NDEFAULT + (size_t)i] = 1;
     }
     nfiles = nfiles ? nfiles : (int)NDEFAULT + NDEFAULT_PN;
@@ -844,8 +882,12 @@ int main(int argc, char **argv)
            "plane at a sample of an unsafely culled patch.\n");
     for (i = 0; i < nfiles && !rc; i++)
         rc = run_model(files[i], pn[i], &s, i);
+    for (size_t d = 0; d < ndirs && !rc; d++) /* --models: the files no model above is named as */
+        if (!listed(files, pn, nfiles, dirs[d]))
+            rc = run_model(dirs[d], 0, &s, nfiles + (int)d);
     free(files);
     free(pn);
+    free_dirs(dirs, ndirs);
     if (!rc)
         printf("\nwall time %.1f s\n", now() - t0);
     return rc;

@@ -2,8 +2,9 @@
 # gpu_check.sh: what needs a real GPU, in one run of a few minutes, as one table headed by the
 # device's name: the renderer's cull methods over tessellation factors 1 to 64, the CUDA kernels
 # (straight-line and table) on the exact test data and on random patches, with their speed.
-#   bash bench/gpu_check.sh [MODEL.bez]   (default: BigGuy in $MODELS, else the teapot in models/;
-#   builds with gcc into build/gcc; needs nvcc, a Vulkan driver and nvidia-smi or vulkaninfo)
+#   bash bench/gpu_check.sh [MODEL.bez]   (default: BigGuy in $MODELS, else build/models/knot.bez,
+#   else the teapot in models/; builds with gcc into build/gcc; needs nvcc, a Vulkan driver and
+#   nvidia-smi or vulkaninfo)
 set -u
 cd "$(dirname "$0")/.."
 B=build/gcc
@@ -11,7 +12,7 @@ NVCC=${NVCC:-nvcc}
 command -v "$NVCC" >/dev/null || NVCC=/usr/local/cuda/bin/nvcc
 model=${1:-}
 if [ -z "$model" ]; then
-    for m in "${MODELS:-../shared/models}/bigguy.bez" models/teapot.bez; do
+    for m in ${MODELS:+"$MODELS/bigguy.bez"} build/models/knot.bez models/teapot.bez; do
         [ -e "$m" ] && { model=$m; break; }
     done
 fi

@@ -1,20 +1,20 @@
 #!/usr/bin/env bash
-# gpu_cullrate.sh: what the certified GPU kernels cull on BigGuy as the GPU targets compute them
+# gpu_cullrate.sh: what the certified GPU kernels cull on a model (bench/gpu_lib.sh: the knot, or
+# BigGuy with MODELS=DIR) as the GPU targets compute them
 # (table kernels: GLSL and HLSL on lavapipe, OpenCL on PoCL, WGSL on wgpu-native, CUDA emulated on the CPU by
 # tests/cuda_emu.h: "cuda-emu"), against the plain kernels of the same rule.
 #   bash bench/gpu_cullrate.sh BUILD [NEYES]   (BUILD holds ptpgen and the hosts; default 2 eyes
-#   per radius and space; MODELS names the models' folder). `make cullrate-gpu` runs it.
+#   per radius and space; MODELS=DIR: BigGuy from DIR). `make cullrate-gpu` runs it.
 # Columns: the patches plain and certified call back and front (b/f); the back or front classes
 # certified gives up against plain (the difference of the counts, and its share of plain's) and
 # against the double reference outside its float bound (kref's "given up"); certified culls that
-# are wrong: on BigGuy, of patches within the float bound, decided by the double reference to its
+# are wrong: on the model, of patches within the float bound, decided by the double reference to its
 # own rounding ("undecided" counts the rest; outside the bound the host's checks fail on any),
 # and on kref's exact integer sets (--exact 5 200), decided exactly. "opencl": whether a cuda-emu
 # row's counts equal OpenCL's, whose kernels compute the same float operations in the same order.
 set -u
 B=$1 neyes=${2:-2}
 . bench/gpu_lib.sh
-[ -e "$models/bigguy.bez" ] || { echo "# skip: no $models/bigguy.bez"; exit 0; }
 
 targets=""
 if command -v glslangValidator >/dev/null && [ -x "$B/host_vulkan" ]; then targets="$targets glsl hlsl"
@@ -63,7 +63,7 @@ classes() {
     echo "${b:-0} ${f:-0}"
 }
 
-echo "BigGuy, $neyes eyes per radius (kref's model views), plain and certified kernels of each rule"
+echo "$model_name, $neyes eyes per radius (kref's model views), plain and certified kernels of each rule"
 printf '%-8s %-6s %-11s %-2s %13s %13s %17s %14s %17s %11s %6s\n' target space rule R "plain b/f" \
     "certified b/f" "given up (plain)" "given up (dbl)" "wrong (undecided)" "exact wrong" opencl
 declare -A ocl # the opencl rows' counts by space, rule and R
@@ -76,9 +76,9 @@ for t in $targets; do
             run "exact $t" $cert --certified --exact 5 200 5
             exact=$(field '.*kernel unsafe \([0-9]*\) .*')
             for R in 2 5; do
-                run "$t plain" $plain --model "$models/bigguy.bez" "$neyes" 7 --eye-radius $R
+                run "$t plain" $plain --model "$model" "$neyes" 7 --eye-radius $R
                 read -r pb pf < <(classes)
-                run "$t certified" $cert --certified --model "$models/bigguy.bez" "$neyes" 7 --eye-radius $R
+                run "$t certified" $cert --certified --model "$model" "$neyes" 7 --eye-radius $R
                 read -r cb cf < <(classes)
                 up=$(field '.*given up \([0-9]*\) of [0-9]* back or front.*')
                 wrong=$(field '.*patches: \([0-9]* wrong, [0-9]*\) undecided.*' | sed 's/ wrong, / (/')

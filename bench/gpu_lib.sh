@@ -1,6 +1,14 @@
 # gpu_lib.sh: what the GPU benchmark scripts share, sourced with B (the build folder) set: a
-# temporary folder $tmp, lavapipe with mesa's shader cache, and the bicubic schedule (PQ, Q).
-models=${MODELS:-../shared/models}
+# temporary folder $tmp, lavapipe with mesa's shader cache, the bicubic schedule (PQ, Q), and the
+# model: BigGuy where MODELS=DIR holds bigguy.bez, else the generated knot (bench/mkmodel.c).
+if [ -n "${MODELS:-}" ] && [ -e "$MODELS/bigguy.bez" ]; then
+    model=$MODELS/bigguy.bez
+else
+    model=build/models/knot.bez
+    [ -e $model ] || make -s $model >/dev/null ||
+        { echo "no $model: make $model failed" >&2; exit 1; }
+fi
+model_name=$(basename "$model" .bez)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 export MESA_SHADER_CACHE_DIR=$PWD/build/cache/mesa

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # second_look.sh: what the GPU certified kernel's second look in double-float recovers, and how
-# often it runs: the world-space bicubic GLSL (or OpenCL) kernel over BigGuy, plain, certified with
+# often it runs: the world-space bicubic GLSL (or OpenCL) kernel over a model (bench/gpu_lib.sh:
+# the knot, or BigGuy with MODELS=DIR), plain, certified with
 # the float bound alone (the second look switched off) and certified (table kernels), with the culls given up
 # against the double reference, the kernel's culls (back and front), the dispatch time and the
 # patches that take the second look.
@@ -15,7 +16,7 @@ sed 's/bool again = live &&/bool again = false \&\& live \&\&/' "$tmp/on.src" >"
 # the patches that take the second look, as front (every other patch silhouette)
 sed 's/cls\[pid\] = sl_class_of(f);/cls[pid] = again ? 0u : 2u;/' "$tmp/on.src" >"$tmp/again.src"
 cmp -s "$tmp/on.src" "$tmp/off.src" || ! cmp -s "$tmp/on.src" "$tmp/again.src" || { echo "no second look found"; exit 1; }
-echo "BigGuy, $space space, $neyes eyes at 2 to 5 bounding radii (kref's model views), $target"
+echo "$model_name, $space space, $neyes eyes at 2 to 5 bounding radii (kref's model views), $target"
 printf '%-22s %12s %14s %8s %12s\n' kernel "given up" "back or front" culls "dispatch ms"
 for k in plain off on again; do
     if [ "$target" = glsl ]; then
@@ -26,7 +27,7 @@ for k in plain off on again; do
     fi
     "${host[@]}" --degree 3 3 --space "$space" --rule strict \
         $([ $k = plain ] || echo --certified) --block-threads "$PQ" --patches-per-block "$Q" \
-        --model "$models/bigguy.bez" "$neyes" 7 --name "$k" >"$tmp/out" 2>&1
+        --model "$model" "$neyes" 7 --name "$k" >"$tmp/out" 2>&1
     read -r n b s < <(sed -n 's/.*: kernel front \([0-9]*\), back \([0-9]*\), silhouette \([0-9]*\).*/\1 \2 \3/p' "$tmp/out")
     if [ $k = again ]; then # its classes fail the host's checks by design
         echo "patches that take the second look: ${n:-?} of $((${n:-0} + ${b:-0} + ${s:-0}))"

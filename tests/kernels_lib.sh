@@ -3,7 +3,8 @@
 # each target's kernels through the hosts. Needs PTPGEN, BUILD and build/<cc>/libptptest.a.
 P=${PTPGEN:?set PTPGEN}
 B=${BUILD:?set BUILD}
-models=${MODELS:-../shared/models}
+models=models # the Utah teapot set; the knot (bench/mkmodel.c) stands in for a large model
+knot=build/models/knot.bez
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 export POCL_CACHE_DIR=$PWD/build/cache/pocl MESA_SHADER_CACHE_DIR=$PWD/build/cache/mesa
@@ -29,7 +30,18 @@ CUDA_EMU_CXX=${CUDA_EMU_CXX:-g++}
 have_emu=1
 command -v "$CUDA_EMU_CXX" >/dev/null || { missing "$CUDA_EMU_CXX" "CUDA kernels emulated on the CPU"; have_emu=0; }
 [ -x "$B/host_wgpu" ] || missing "the WGSL host (wgpu-native: tests/deps.sh)" "WGSL kernels"
-ls "$models"/*.bez >/dev/null 2>&1 || missing "$models" "kernels on the shared models"
+[ -e $knot ] || make -s $knot >/dev/null 2>&1 || notok "the models" "make $knot failed"
+[ -z "${MODELS:-}" ] || ls "$MODELS"/*.bez >/dev/null 2>&1 ||
+    notok "the models" "MODELS=$MODELS has no .bez file"
+# model_files: the bicubic models: models/*.bez, the knot, and MODELS=DIR's other .bez files.
+model_files() {
+    local f
+    ls "$models"/*.bez
+    echo $knot
+    for f in ${MODELS:+"$MODELS"/*.bez}; do
+        [ -e "$f" ] && [ ! -e "$models/$(basename "$f")" ] && echo "$f"
+    done
+}
 
 # The files a configuration needs, as target:suffix (ptpgen --list-targets): json for the schedule,
 # and every target that takes --space (the C header and the kernels).

@@ -6,6 +6,7 @@
 #include "kref.h"
 #include "check.h"
 #include "core/i128.h"
+#include "bezfile.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -961,47 +962,14 @@ int kref_exact_signs(const kref_ref *r, const kref_set *s, size_t p, signed char
     return st;
 }
 
-/* The BEZ model: patches of 16 1-based vertex indices and the vertices. */
-typedef struct {
-    int npatches, nverts;
-    int (*idx)[16];
-    double (*v)[3];
-} bez_model;
-
-static int read_model(bez_model *mo, const char *path, ptp_error *err)
+/* Reads a BEZ model with bench/bezfile.c; its one-line message (file, line, what was expected)
+ * becomes err's. */
+static int read_model(bez_file *mo, const char *path, ptp_error *err)
 {
-    FILE *f = fopen(path, "r");
-    int p, k, c;
-    memset(mo, 0, sizeof *mo);
-    if (!f)
-        return ptp_fail(err, PTP_EIO, "cannot open %s", path);
-    if (fscanf(f, "%d", &mo->npatches) != 1 || mo->npatches < 1 || mo->npatches > 10000000)
-        goto bad;
-    if (!(mo->idx = malloc((size_t)mo->npatches * sizeof *mo->idx)))
-        goto bad;
-    for (p = 0; p < mo->npatches; p++)
-        for (k = 0; k < 16; k++)
-            if (fscanf(f, k ? " ,%d" : "%d", &mo->idx[p][k]) != 1)
-                goto bad;
-    if (fscanf(f, "%d", &mo->nverts) != 1 || mo->nverts < 1 || mo->nverts > 100000000)
-        goto bad;
-    if (!(mo->v = malloc((size_t)mo->nverts * sizeof *mo->v)))
-        goto bad;
-    for (k = 0; k < mo->nverts; k++)
-        for (c = 0; c < 3; c++)
-            if (fscanf(f, c ? " ,%lf" : "%lf", &mo->v[k][c]) != 1)
-                goto bad;
-    for (p = 0; p < mo->npatches; p++)
-        for (k = 0; k < 16; k++)
-            if (mo->idx[p][k] < 1 || mo->idx[p][k] > mo->nverts)
-                goto bad;
-    fclose(f);
+    char msg[512];
+    if (bez_file_read(mo, path, msg, sizeof msg))
+        return ptp_fail(err, PTP_EIO, "%s", msg);
     return PTP_OK;
-bad:
-    fclose(f);
-    free(mo->idx);
-    free(mo->v);
-    return ptp_fail(err, PTP_EIO, "%s is not a BEZ file of bicubic patches", path);
 }
 
 /* r = A * B for 4x4 row-major matrices. */
@@ -1078,25 +1046,26 @@ kref_set *kref_model_sets(const kref_ref *r, const char *path, int neyes, uint64
 kref_set *kref_model_sets_at(const kref_ref *r, const char *path, int neyes, uint64_t seed,
                              int radius, ptp_error *err)
 {
-    bez_model mo;
+    bez_file mo;
     kref_set *sets;
     double C[3] = {0, 0, 0}, R = 0;
     const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
-    int e, p, k, c;
+    int e, p, k, c, nverts;
     if (r->t.dom.kind != TP_QUAD || r->t.dom.n != 3 || r->t.dom.m != 3) {
         ptp_fail(err, PTP_EUSAGE, "models are bicubic: use bidegree 3x3");
         return NULL;
     }
     if (read_model(&mo, path, err))
         return NULL;
+    nverts = (int)mo.nverts;
     if (!(sets = alloc_sets(neyes, (size_t)mo.npatches, 16))) {
         ptp_fail(err, PTP_ENOMEM, "out of memory");
         goto done;
     }
-    for (k = 0; k < mo.nverts; k++)
+    for (k = 0; k < nverts; k++)
         for (c = 0; c < 3; c++)
-            C[c] += mo.v[k][c] / mo.nverts;
-    for (k = 0; k < mo.nverts; k++) {
+            C[c] += mo.v[k][c] / nverts;
+    for (k = 0; k < nverts; k++) {
         double d2 = 0;
         for (c = 0; c < 3; c++)
             d2 += (mo.v[k][c] - C[c]) * (mo.v[k][c] - C[c]);
@@ -1119,9 +1088,9 @@ kref_set *kref_model_sets_at(const kref_ref *r, const char *path, int neyes, uin
             E[c] = C[c] + dist * dir[c] / sqrt(len);
         snprintf(s->name, sizeof s->name, "%.*s eye %d", 40, base, e);
         camera(M, &alpha, E, C, R);
-        for (p = 0; p < mo.npatches; p++)
+        for (p = 0; p < (int)mo.npatches; p++)
             for (k = 0; k < 16; k++) {
-                const double *v = mo.v[mo.idx[p][k] - 1];
+                const double *v = mo.v[mo.idx[p][k]];
                 float *pt = s->cp[(size_t)p * 16 + (size_t)k];
                 for (c = 0; c < 4; c++)
                     pt[c] = r->space == KREF_WORLD
@@ -1138,8 +1107,7 @@ kref_set *kref_model_sets_at(const kref_ref *r, const char *path, int neyes, uin
         }
     }
 done:
-    free(mo.idx);
-    free(mo.v);
+    bez_file_free(&mo);
     return sets;
 }
 

@@ -1,5 +1,5 @@
 /* kref.h: test data and the double-precision reference for executing emitted kernels.
- * Patch sets (random or from ../shared/models) with an eye, reference values with bounds, checks. */
+ * Patch sets (random or from BEZ models) with an eye, reference values with bounds, checks. */
 #ifndef KREF_H
 #define KREF_H
 
@@ -153,7 +153,7 @@ void kref_table_max(int *maxp, int *maxk, const tp_table *t);
  * at o + a i/n + b j/m plus noise, (i, j) the point's cell (triangles: an affine triangle).
  * Returns an array of nsets sets, or NULL on failure. */
 kref_set *kref_random_sets(const kref_ref *r, int nsets, size_t count, uint64_t seed);
-/* One set per eye for a bicubic BEZ model (the format of ../shared/models): eyes uniform on
+/* One set per eye for a bicubic BEZ model (models/README.md, bench/bezfile.c): eyes uniform on
  * spheres of 2 to 5 bounding radii around the model; in clip space the points are transformed by
  * an OpenGL perspective camera looking at the model and the eye is (0, 0, alpha, 0) with
  * alpha = sign(det P) P[2][3] > 0, which gives the same classes as world space.

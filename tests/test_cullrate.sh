@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # test_cullrate.sh: bench/cullrate's --model on a small model (a table, the exact check, names),
-# its --pn (PN triangles of tessellated models) and its one-line errors on bad input; and
-# pn_check. Needs CULLRATE, the built binary; PN_CHECK (default: pn_check beside it); MODELS, the
-# .bez files.
+# its --pn (PN triangles of tessellated models), its default models and --models, and its
+# one-line errors on bad input (bench/bezfile.c's messages); and pn_check. Needs CULLRATE, the
+# built binary; PN_CHECK (default: pn_check beside it). Runs from the repository's root.
 set -u
 C=${CULLRATE:?set CULLRATE}
 P=${PN_CHECK:-$(dirname "$C")/pn_check}
-models=${MODELS:-../shared/models}
+models=models
 . "$(dirname "$0")/host_lib.sh"
 make_tmp
 
@@ -78,22 +78,80 @@ awk '/ patches, bounding radius/ { m = $1 }
     ok "cullrate --pn: TCONE <= NCONE <= certified <= strict <= CVis; cones and CVis safe" ||
     notok "cullrate --pn: rates" "$(cat "$tmp/order")"
 
-# Bad input: one line on stderr and status 1, never a crash.
-printf '1\n1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,17\n16\n' >"$tmp/index.bez"
-for k in $(seq 0 15); do echo "$((k / 4)),$((k % 4)),0.5" >>"$tmp/index.bez"; done
-head -c 40 "$tmp/index.bez" >"$tmp/short.bez"
-for bad in "--model:$tmp/missing.bez:No such file" "--model:$tmp/index.bez:out of range" \
-    "--model:$tmp/short.bez:not a BEZ" "--pn:$tmp/index.bez:out of range"; do
-    o=${bad%%:*} rest=${bad#*:}
-    f=${rest%%:*} want=${rest#*:}
-    "$C" --eyes 2 "$o" "$f" >/dev/null 2>"$tmp/err"
+# The default models (the knot, built here when missing, and models/), and --models DIR: its
+# .bez files whose names are not measured yet, by name.
+[ -e build/models/knot.bez ] || make -s build/models/knot.bez >/dev/null 2>&1
+mkdir "$tmp/dir" "$tmp/none"
+cp $models/teaspoon.bez "$tmp/dir/b.bez"
+cp $models/teacup.bez "$tmp/dir/a.bez"
+cp $models/teapot.bez "$tmp/dir/teapot.bez"
+"$C" --eyes 2 --threads 1 --models "$tmp/dir" >"$tmp/def" 2>"$tmp/err"
+got=$(sed -n 's/^\([a-z ]*PN\|[a-z]*\): \([0-9]*\) patches.*/\1 \2/p' "$tmp/def" | tr '\n' ,)
+want="knot 2880,teapot 32,teacup 26,teaspoon 16,knot PN 23040,teapot PN 240,a 26,b 16,"
+[ "$got" = "$want" ] && ok "cullrate's defaults and --models DIR: $want" ||
+    notok "cullrate's defaults and --models DIR" "got $got (want $want): $(head -2 "$tmp/err")"
+"$C" --eyes 2 --models "$tmp/none" >/dev/null 2>"$tmp/err"
+[ $? = 1 ] && [ "$(cat "$tmp/err")" = "cullrate: --models $tmp/none: no .bez file there" ] &&
+    ok "cullrate --models with no .bez file: status 1, one line" ||
+    notok "cullrate --models with no .bez file" "$(head -3 "$tmp/err")"
+(abs=$(realpath "$C") && cd "$tmp" && "$abs" --eyes 2 >/dev/null 2>err)
+[ $? = 1 ] && [ "$(cat "$tmp/err")" = \
+    "cullrate: build/models/knot.bez: cannot open: No such file or directory" ] &&
+    ok "cullrate away from the repository's root: a missing default model is an error" ||
+    notok "cullrate away from the repository's root" "$(head -3 "$tmp/err")"
+
+# Bad input: one line on stderr, status 1, never a crash; the BEZ reader names the file, the line
+# and what it expected there. Each case: NAME, the file's text (printf), the message after
+# "cullrate: FILE:".
+verts() { for k in $(seq 0 15); do printf '%d,%d,0.5\n' $((k / 4)) $((k % 4)); done; }
+idx16='1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16'
+bez_case() {
+    local name=$1 want=$2 o=${3:---model}
+    "$C" --eyes 2 "$o" "$tmp/$name.bez" >/dev/null 2>"$tmp/err"
     rc=$?
-    if [ $rc = 1 ] && [ "$(wc -l <"$tmp/err")" = 1 ] && grep -q "$want" "$tmp/err"; then
-        ok "cullrate $o $(basename "$f"): status 1, one line ($want)"
+    if [ $rc = 1 ] && [ "$(cat "$tmp/err")" = "cullrate: $tmp/$name.bez:$want" ]; then
+        ok "cullrate $o $name.bez: status 1, \"$want\""
     else
-        notok "cullrate $o $(basename "$f")" "status $rc: $(head -3 "$tmp/err")"
+        notok "cullrate $o $name.bez" "status $rc: $(head -3 "$tmp/err") (want \"$want\")"
     fi
-done
+}
+{ printf '1\n%s\n16\n' "${idx16%16}17"; verts; } >"$tmp/index.bez"
+bez_case index '2: vertex index 17 is out of range 1..16 (index 16 of 16)'
+bez_case index '2: vertex index 17 is out of range 1..16 (index 16 of 16)' --pn
+{ printf '2\n%s\n%s\n16\n' $idx16 "${idx16/#1,/0,}"; verts; } >"$tmp/zero.bez"
+bez_case zero '3: vertex index 0 is out of range 1..16 (index 1 of 16)'
+printf '1\n%s\n' "${idx16%,16}" >"$tmp/fifteen.bez"
+bez_case fifteen '2: expected 16 comma-separated vertex indices, found 15'
+printf '1\n%s,1\n' $idx16 >"$tmp/seventeen.bez"
+bez_case seventeen '2: expected 16 comma-separated vertex indices, found 17'
+printf '1\n%s\n' "${idx16/,7,/,seven,}" >"$tmp/word.bez"
+bez_case word '2: expected a vertex index (a whole number from 1), found "seven" (index 7 of 16)'
+printf '3\n%s\n%s\n' $idx16 $idx16 >"$tmp/patches.bez"
+bez_case patches '4: unexpected end of file, expected 3 patch lines, found 2'
+printf '1\n%s\n' $idx16 >"$tmp/nocount.bez"
+bez_case nocount '3: unexpected end of file, expected the vertex count'
+{ printf '1\n%s\n32\n' $idx16; verts; } >"$tmp/eof.bez"
+bez_case eof '20: unexpected end of file, expected 32 vertex lines, found 16'
+{ printf '1\n%s\n16\n' $idx16; verts | sed '5s/.*/1,2/'; } >"$tmp/two.bez"
+bez_case two '8: expected x,y,z (3 comma-separated numbers), found 2 fields'
+{ printf '1\n%s\n16\n' $idx16; verts | sed '16s/0.5$/x/'; } >"$tmp/coord.bez"
+bez_case coord '19: expected a finite number, found "x" (z of vertex 16)'
+{ printf '1\n%s\n16\n' $idx16; verts | sed '3s/^0/1e39/'; } >"$tmp/float.bez"
+bez_case float '6: coordinate 1e39 is beyond float'"'"'s range (x of vertex 3)'
+{ printf '1\n%s\n16\n' $idx16; verts; printf '\n0,0,0\n'; } >"$tmp/tail.bez"
+bez_case tail '21: expected the end of the file after 16 vertex lines, found "0,0,0"'
+printf 'many\n' >"$tmp/count.bez"
+bez_case count '1: expected the patch count (a whole number 1..10000000), found "many"'
+: >"$tmp/empty.bez"
+bez_case empty '1: unexpected end of file, expected the patch count'
+bez_case missing ' cannot open: No such file or directory'
+# Spaces and tabs around numbers, CRLF line ends and blank lines at the end are accepted.
+{ printf ' 1 \r\n %s \r\n16\r\n' "${idx16//,/ ,	}"; verts | sed 's/,/ , /g; s/$/\r/'; printf '\n\n'; } \
+    >"$tmp/spaces.bez"
+"$C" --eyes 2 --threads 1 --model "$tmp/spaces.bez" >"$tmp/out" 2>"$tmp/err" &&
+    grep -q '^spaces: 1 patches' "$tmp/out" &&
+    ok "cullrate reads a BEZ file with spaces and tabs around numbers, CRLF and blank lines" ||
+    notok "cullrate: spaces, CRLF and blank lines" "$(head -3 "$tmp/err")"
 "$C" --eyes 2 --grid 0 --pn "$models/teacup.bez" >/dev/null 2>"$tmp/err"
 [ $? = 2 ] && grep -q 'bad option or value: --grid 0' "$tmp/err" &&
     ok "cullrate --grid 0: status 2, the usage" ||

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # test_examples.sh: the README's examples (tests/examples/) compile and run: cull.c with gcc and
-# clang on BigGuy against world space, cull.tesc with glslangValidator, and the shaders that cull
-# their own patch (cull_patch.tesc, the hull shader cull_patch.hlsl) on --stage function's files
-# with glslangValidator; the README shows them verbatim.
+# clang on the generated knot (build/models/knot.bez) against world space, cull.tesc with
+# glslangValidator, and the shaders that cull their own patch (cull_patch.tesc, the hull shader
+# cull_patch.hlsl) on --stage function's files with glslangValidator; the README shows them
+# verbatim.
 # Needs PTPGEN (default build/gcc/ptpgen).
 set -u
 P=${PTPGEN:-build/gcc/ptpgen}
-model=${MODELS:-../shared/models}/bigguy.bez
+model=build/models/knot.bez # bench/mkmodel.c
+[ -e $model ] || make -s $model >/dev/null 2>&1 || echo "not ok - the model: make $model failed"
 ex=tests/examples
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -35,7 +37,7 @@ fi
 
 # build CC SOURCE: compiles SOURCE with tests/examples/check_cull.c into $tmp/run.
 build() {
-    $1 $STD -I"$tmp" -o "$tmp/run" "$2" $ex/check_cull.c -lm 2>"$tmp/err"
+    $1 $STD -I"$tmp" -Ibench -o "$tmp/run" "$2" $ex/check_cull.c bench/bezfile.c -lm 2>"$tmp/err"
 }
 if ! { "$P" --degree 3 --target c -o "$tmp/ptp_3x3.h" &&
     "$P" --degree 3 --target c --space world --prefix world_ -o "$tmp/world.h" &&
@@ -47,7 +49,7 @@ else
     for cc in gcc clang; do
         command -v $cc >/dev/null || { notok "cull.c with $cc" "$cc is missing"; continue; }
         if build $cc $ex/cull.c; then
-            "$tmp/run" "$model" "cull.c ($cc, $STD) on BigGuy from 8 eyes"
+            "$tmp/run" "$model" "cull.c ($cc, $STD) on the knot from 8 eyes"
         else
             notok "cull.c compiles with $cc $STD" "$(head -3 "$tmp/err")"
         fi

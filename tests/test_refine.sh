@@ -7,7 +7,7 @@
 # Needs PTPGEN and build/<cc>/libptptest.a for each C compiler.
 set -u
 P=${PTPGEN:?set PTPGEN}
-models=${MODELS:-../shared/models}
+models=models
 . "$(dirname "$0")/host_lib.sh"
 make_tmp
 

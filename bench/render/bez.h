@@ -13,9 +13,8 @@ typedef struct bez_model {
     double radius;
 } bez_model;
 
-/* Reads path into *m. Returns 0, or -1 with a message in err (size errsz): a missing file, a
- * malformed line (named by number), an index out of range, a non-finite coordinate, or out of
- * memory. On failure m->pts is NULL. */
+/* Reads path into *m with bench/bezfile.c. Returns 0, or -1 with bez_file_read's one-line
+ * message (file, line, what was expected) in err (size errsz). On failure m->pts is NULL. */
 int bez_read(bez_model *m, const char *path, char *err, size_t errsz);
 
 /* Frees m->pts. */

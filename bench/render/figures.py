@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""figures.py: `make figures`: build/render on BigGuy and the teapot for every cull method over
+"""figures.py: `make figures`: build/render on the generated knot (build/models/knot.bez) and the
+teapot (models/), or BigGuy and the teapot of --models DIR, for every cull method over
 tessellation factors 1..64 from fixed views; writes bench/figures/: the Figure-1 images of one
 view, plots of frame time and of tessellation-evaluation invocations against the factor (gnuplot),
 table.md with the numbers, and raw.txt with every output line.
 
-  figures.py RENDER MODELS_DIR OUT_DIR [--quick | --one-view]   (--quick: factors 1, 4, 16; one
-  view; 1 frame. --one-view: every factor and frame, the first view of each model)
+  figures.py RENDER OUT_DIR [--models DIR] [--quick | --one-view]   (--quick: factors 1, 4, 16;
+  one view; 1 frame. --one-view: every factor and frame, the first view of each model)
 """
 import os
 import struct
@@ -17,12 +18,26 @@ METHODS = ["none", "tcone", "ncone", "ptp", "ptp-tcs", "ptp-table", "ptp-certifi
 FACTORS = [1, 2, 4, 8, 16, 32, 64]
 SIZE = "512x512"
 FRAMES = 3
-# model: (file, extra options, eyes); the teapot's dB/du x dB/dv faces in.
-MODELS = {
-    "bigguy": ("bigguy.bez", [], ["0,0,12", "9,4,-7", "-10,3,5"]),
-    "teapot": ("teapot.bez", ["--up", "0,0,1", "--orientation", "in"],
-               ["8,-6,5", "-8,-8,4", "-6,3,-4"]),
-}
+# model: (file, extra options, eyes), the first for Figure 1; the teapot's dB/du x dB/dv faces
+# in. select_models fills it in.
+MODELS = {}
+BIG_EYES = ["0,0,12", "9,4,-7", "-10,3,5"]
+TEAPOT = (["--up", "0,0,1", "--orientation", "in"], ["8,-6,5", "-8,-8,4", "-6,3,-4"])
+
+
+def select_models(folder):
+    """The knot and models/teapot.bez, or with a folder its bigguy.bez and teapot.bez."""
+    if folder:
+        big = ("bigguy", os.path.join(folder, "bigguy.bez"))
+        teapot = os.path.join(folder, "teapot.bez")
+    else:
+        big, teapot = ("knot", "build/models/knot.bez"), "models/teapot.bez"
+    for path in (big[1], teapot):
+        if not os.path.isfile(path):
+            sys.exit("figures.py: no model %s%s" % (path, "" if folder else
+                                                    " (make build/models/knot.bez)"))
+    MODELS[big[0]] = (big[1], [], BIG_EYES)
+    MODELS["teapot"] = (teapot,) + TEAPOT
 TIMES = ["frame_ms", "frame_min_ms", "frame_cpu_ms", "cull_cpu_ms", "draw_cpu_ms"]
 
 
@@ -33,7 +48,7 @@ def run(render, args):
     return dict(kv.split("=", 1) for kv in line.split()), line
 
 
-def measure(render, models, out, factors, eyes_of, frames):
+def measure(render, out, factors, eyes_of, frames):
     """rows[(model, method, factor)] = averages over the views; raw lines into raw.txt."""
     rows = {}
     with open(os.path.join(out, "raw.txt"), "w") as raw:
@@ -42,7 +57,7 @@ def measure(render, models, out, factors, eyes_of, frames):
                 for method in METHODS:
                     got = []
                     for eye in eyes_of(eyes):
-                        kv, line = run(render, ["--model", os.path.join(models, path), "--eye", eye,
+                        kv, line = run(render, ["--model", path, "--eye", eye,
                                                 "--tess", str(factor), "--cull", method,
                                                 "--size", SIZE, "--frames", str(frames)] + extra)
                         raw.write(line + "\n")
@@ -130,12 +145,13 @@ def compress_png(path):
                     struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF))
 
 
-def figure1(render, models, out):
-    """BigGuy from its first view at factor 8: the image, and per method the overview."""
-    path, extra, eyes = MODELS["bigguy"]
-    base = ["--model", os.path.join(models, path), "--eye", eyes[0], "--tess", "8",
+def figure1(render, out):
+    """The first model from its first view at factor 8: the image, and per method the overview."""
+    name = next(iter(MODELS))
+    path, extra, eyes = MODELS[name]
+    base = ["--model", path, "--eye", eyes[0], "--tess", "8",
             "--size", SIZE, "--frames", "1"] + extra
-    paths = [os.path.join(out, "fig1_bigguy_%s.png" % m) for m in ["image"] + METHODS[1:]]
+    paths = [os.path.join(out, "fig1_%s_%s.png" % (name, m)) for m in ["image"] + METHODS[1:]]
     run(render, base + ["--cull", "none", "--png", paths[0]])
     for m, path in zip(METHODS[1:], paths[1:]):
         run(render, base + ["--cull", m, "--overview", path])
@@ -144,15 +160,17 @@ def figure1(render, models, out):
 
 
 def main():
-    render, models, out = sys.argv[1:4]
-    quick = "--quick" in sys.argv[4:]
-    views = 1 if quick or "--one-view" in sys.argv[4:] else 3
+    render, out, args = sys.argv[1], sys.argv[2], sys.argv[3:]
+    folder = args[args.index("--models") + 1] if "--models" in args[:-1] else None
+    select_models(folder)
+    quick = "--quick" in args
+    views = 1 if quick or "--one-view" in args else 3
     factors = [1, 4, 16] if quick else FACTORS
     eyes_of = lambda eyes: eyes[:views]
     frames = 1 if quick else FRAMES
     os.makedirs(out, exist_ok=True)
-    figure1(render, models, out)
-    rows = measure(render, models, out, factors, eyes_of, frames)
+    figure1(render, out)
+    rows = measure(render, out, factors, eyes_of, frames)
     plot(rows, out, factors, frames)
     table(rows, out, factors, views, frames)
 

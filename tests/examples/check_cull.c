@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include "bezfile.h" /* bench/bezfile.c */
 #define WORLD_IMPLEMENTATION
 #include "world.h" /* ptpgen --degree 3 --target c --space world --prefix world_ */
 #define CERT_IMPLEMENTATION
@@ -13,31 +14,24 @@
 size_t cull_patches(const float (*world)[4], size_t count, const float view[16],
                     const float proj[16], float (*clip)[4], unsigned char *cls);
 
-/* Reads a BEZ file of bicubic patches into *pts (16 points (x, y, z, 1) a patch, patch-major).
- * Returns the patch count, or 0 when the file cannot be read. */
+/* Reads a BEZ file of bicubic patches (bench/bezfile.c) into *pts (16 points (x, y, z, 1) a
+ * patch, patch-major). Returns the patch count, or 0 after printing why on stderr. */
 static size_t read_bez(const char *path, float (**pts)[4])
 {
-    FILE *f = fopen(path, "r");
-    int n = 0, nv = 0, ok = f && fscanf(f, "%d", &n) == 1 && n > 0;
-    int *idx = ok ? malloc((size_t)n * 16 * sizeof *idx) : NULL;
-    float (*v)[3] = NULL;
-    ok = ok && idx;
-    for (int i = 0; ok && i < n * 16; i++)
-        ok = fscanf(f, i % 16 ? " ,%d" : "%d", &idx[i]) == 1;
-    ok = ok && fscanf(f, "%d", &nv) == 1 && nv > 0 && (v = malloc((size_t)nv * sizeof *v));
-    for (int i = 0; ok && i < nv * 3; i++)
-        ok = fscanf(f, i % 3 ? " ,%f" : "%f", &v[i / 3][i % 3]) == 1;
-    ok = ok && (*pts = malloc((size_t)n * 16 * sizeof **pts));
-    for (int i = 0; ok && i < n * 16; i++) {
-        ok = idx[i] >= 1 && idx[i] <= nv;
-        for (int c = 0; ok && c < 4; c++)
-            (*pts)[i][c] = c < 3 ? v[idx[i] - 1][c] : 1.0f;
+    bez_file m;
+    char err[512];
+    size_t n;
+    if (bez_file_read(&m, path, err, sizeof err)) {
+        fprintf(stderr, "check_cull: %s\n", err);
+        return 0;
     }
-    if (f)
-        fclose(f);
-    free(idx);
-    free(v);
-    return ok ? (size_t)n : 0;
+    n = m.npatches;
+    if ((*pts = malloc(n * 16 * sizeof **pts)))
+        for (size_t i = 0; i < n * 16; i++)
+            for (int c = 0; c < 4; c++)
+                (*pts)[i][c] = c < 3 ? (float)m.v[m.idx[i / 16][i % 16]][c] : 1.0f;
+    bez_file_free(&m);
+    return *pts ? n : 0;
 }
 
 /* view = an OpenGL look-at matrix (column-major) from eye to center; proj = gluPerspective
