@@ -172,8 +172,10 @@ extern const kern_syntax kern_c_syntax;
 /* The GPU targets' tables. */
 extern const kern_target kern_glsl, kern_hlsl, kern_opencl, kern_cuda, kern_wgsl;
 
-/* Writes a GPU kernel for target g: P threads per patch accumulate the planes they own in
- * shared memory from the scheduled tables, then one thread per patch combines the signs. */
+/* Writes target g's GPU code: by default a compute kernel of one patch an invocation on the
+ * straight-line functions; the table kernel (kgpu_table_kernel: P threads a patch accumulate the
+ * planes they own in shared memory from the scheduled tables, one combines the signs); or, with
+ * info->functions, the functions alone. */
 int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                   ptp_error *err);
 

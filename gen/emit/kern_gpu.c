@@ -74,9 +74,14 @@ char *kgpu_group(char *out, size_t size, const kern_target *g, const char *e)
     return out;
 }
 
+int kgpu_table_kernel(const out_info *info)
+{
+    return info->table || info->certified;
+}
+
 void kgpu_dispatch(const out_info *info, unsigned *threads, unsigned *patches)
 {
-    if (info->table || info->certified) { /* kern_emit_gpu's choice of the table kernel */
+    if (kgpu_table_kernel(info)) {
         *patches = (unsigned)info->sched->patches;
         *threads = (unsigned)info->sched->threads * *patches;
     } else {
@@ -122,7 +127,7 @@ static int fill_kernel(sbuf *o, const kernel_parts *p, const out_info *info, con
 static int emit_kernel(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                        const char *up, const char *file, ptp_error *err)
 {
-    int table = info->table || info->certified, st;
+    int table = kgpu_table_kernel(info), st;
     out_info in = *info;
     kernel_parts p;
     sbuf_init(&p.banner);

@@ -20,6 +20,10 @@ void kgpu_end(sbuf *o, const kern_target *g, const char *indent);
 void kgpu_local(sbuf *o, const kern_target *g, const char *type, const char *name,
                 const char *init, int assigned);
 
+/* Whether the kernel is the paper's table kernel: --kernel table, or --certified (whose GPU code
+ * is only the table kernel); else the straight-line kernel. */
+int kgpu_table_kernel(const out_info *info);
+
 /* Whether the kernel has the second look: --certified on a target with double-float. */
 int kgpu_second_look(const out_info *info, const kern_target *g);
 
