@@ -7,6 +7,7 @@
 #   nvidia-smi or vulkaninfo)
 set -u
 cd "$(dirname "$0")/.."
+. tests/schedule.sh
 B=build/gcc
 NVCC=${NVCC:-nvcc}
 command -v "$NVCC" >/dev/null || NVCC=/usr/local/cuda/bin/nvcc
@@ -51,7 +52,7 @@ for kernel in slp table; do
         "$NVCC" -O2 -Igen -Itests -I"$tmp" -DKERNEL_FILE='"ptp_3x3.cu"' -DKERNEL=ptp_3x3_classify \
             tests/host_cuda.cu $B/libptptest.a -o "$tmp/host_cuda" >"$tmp/nvcc.log" 2>&1 ||
         { echo "cuda $kernel: build failed: $(head -3 "$tmp/nvcc.log")"; continue; }
-    read -r pq q < <(sed -n 's/^ \* Schedule: [0-9]* threads\{0,1\} per patch, \([0-9]*\) patches per workgroup (\([0-9]*\) threads).*/\2 \1/p' "$tmp/ptp_3x3.cu")
+    read -r pq q < <(kernel_schedule "$tmp/ptp_3x3.cu")
     cfg=(--degree 3 3 --space clip --rule strict --block-threads "$pq" --patches-per-block "$q")
     "$tmp/host_cuda" "${cfg[@]}" --exact 5 200 1 --random 1 65536 1 --name "cuda $kernel" >"$tmp/out" 2>&1
     echo "cuda $kernel: $(grep -c '^ok' "$tmp/out") ok, $(grep -c '^not ok' "$tmp/out") not ok"

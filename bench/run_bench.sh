@@ -5,6 +5,7 @@
 # triangle rows.
 #   bench/run_bench.sh BUILD CC "CFLAGS" DEGREE...   (BUILD holds ptpgen, bench/ and the hosts)
 set -u
+. tests/schedule.sh
 B=$1 CC=$2 FLAGS=$3
 shift 3
 GPU_MAX=65536 GPU_RUNS=3
@@ -85,7 +86,7 @@ gpu_bench() {
 # kernel_cfg KERNEL DEGREE: the hosts' options for a clip-space strict kernel of bidegree DEGREE,
 # with the workgroup of its banner ("Schedule: P threads per patch, Q patches per workgroup").
 kernel_cfg() {
-    sed -n 's/^ \* Schedule: [0-9]* threads\{0,1\} per patch, \([0-9]*\) patches per workgroup (\([0-9]*\) threads).*/--block-threads \2 --patches-per-block \1/p' "$1"
+    kernel_schedule "$1" | sed 's/^/--block-threads /; s/ \([0-9]*\)$/ --patches-per-block \1/'
     echo "--degree ${2%x*} ${2#*x} --space clip --rule strict"
 }
 

@@ -18,6 +18,7 @@ mkdir -p "$POCL_CACHE_DIR" "$MESA_SHADER_CACHE_DIR"
 NVCC=${NVCC:-/usr/local/cuda/bin/nvcc}
 
 . tests/host_lib.sh
+. tests/schedule.sh
 have_gpu_tools=1
 for tool in glslangValidator spirv-val; do
     command -v $tool >/dev/null || { missing $tool "GLSL and HLSL kernels"; have_gpu_tools=0; }
@@ -88,7 +89,7 @@ args_for() {
 schedule() {
     case $1 in
     *.json) python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['schedule']; print(s['threads_per_patch']*s['patches_per_block'], s['patches_per_block'])" "$1" ;;
-    *) sed -n 's/^ \* Schedule: [0-9]* threads\{0,1\} per patch, \([0-9]*\) patches per workgroup (\([0-9]*\) threads).*/\2 \1/p' "$1" ;;
+    *) kernel_schedule "$1" ;;
     esac
 }
 

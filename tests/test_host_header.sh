@@ -7,6 +7,7 @@
 # the GLSL kernel through its host header on lavapipe against the C header's classes.
 # Needs PTPGEN (default build/gcc/ptpgen).
 set -u
+. tests/schedule.sh
 P=${PTPGEN:-build/gcc/ptpgen}
 export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
 tmp=$(mktemp -d)
@@ -129,7 +130,7 @@ for t in glsl hlsl opencl cuda wgsl; do
         else
             notok "$what: the embedded source is the kernel byte for byte" "$(cmp "$d/source.c" "$d/kernel" 2>&1)"
         fi
-        sched=$(sed -n 's/^ \* Schedule: .*, \([0-9]*\) patches per workgroup (\([0-9]*\) threads).*/\2 \1/p' "$d/kernel")
+        sched=$(kernel_schedule "$d/kernel")
         if [ -n "$sched" ] && [ "$sched" = "$(cat "$d/wg.c")" ]; then
             ok "$what: the workgroup (threads, patches) is the kernel's Schedule: line ($sched)"
         else
@@ -156,7 +157,7 @@ else
 fi
 sed 's/^#define PTP_3X3_PATCHES_PER_WORKGROUP 64u/#define PTP_3X3_PATCHES_PER_WORKGROUP 32u/' "$d/h.h" >"$tmp/bad/h.h"
 if build "$tmp/bad" && "$tmp/bad/c" "$tmp/bad/src" >"$tmp/bad/wg" &&
-    [ "$(cat "$tmp/bad/wg")" != "$(sed -n 's/^ \* Schedule: .*, \([0-9]*\) patches per workgroup (\([0-9]*\) threads).*/\2 \1/p' "$d/kernel")" ]; then
+    [ "$(cat "$tmp/bad/wg")" != "$(kernel_schedule "$d/kernel")" ]; then
     ok "a header with another workgroup differs from the kernel's Schedule: line"
 else
     notok "a header with another workgroup differs from the kernel's Schedule: line" "not caught"
