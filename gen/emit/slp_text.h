@@ -45,7 +45,7 @@ void slpt_point(slpt_writer *w, int k);
 /* Writes every plane in slp_order's order (consecutive planes reuse values), each followed by
  * the syntax's plane_end. */
 int slpt_program(slpt_writer *w, ptp_error *err);
-/* Appends to o the float literal of 1 / c_P, or nothing when c_P = 1: the factor that takes
+/* Writes to out the float literal of 1 / c_P, or nothing when c_P = 1: the factor that takes
  * plane P's value v to its true scale (v * factor). Returns 1 when it appended one. */
 int slpt_inverse_scale(char *out, size_t size, const slp_prog *p, int plane);
 
