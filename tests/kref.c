@@ -1137,35 +1137,72 @@ static void cross4_mag(double t[4], double mag[4], const float *a, const float *
     }
 }
 
+/* Patch-local coordinates as the straight-line kernels compute them (ptpgen --coordinates local):
+ * o = -(x0, y0, z0) / w0 (0 where w0 is 0), x' = x + o w. Into mag the points' widened
+ * magnitudes |x'| + 2^-16 |o w| (and w's |w|), which cover a kernel whose reciprocal or origin
+ * rounds differently and a shift rounded twice; into eye's the eye's (world: l = e + o e3). */
+static void local_magnitudes(float (*mag)[4], float eye[4], const float (*b)[4], int K,
+                             const float e[4])
+{
+    float rw = b[0][3] != 0.0f ? 1.0f / b[0][3] : 0.0f, o[3];
+    int k, c;
+    for (c = 0; c < 3; c++)
+        o[c] = -(b[0][c] * rw);
+    for (k = 0; k < K; k++) {
+        for (c = 0; c < 3; c++)
+            mag[k][c] = fabsf(fmaf(o[c], b[k][3], b[k][c])) + ldexpf(fabsf(o[c] * b[k][3]), -16);
+        mag[k][3] = fabsf(b[k][3]);
+    }
+    for (c = 0; c < 3; c++)
+        eye[c] = fabsf(fmaf(o[c], e[3], e[c])) + ldexpf(fabsf(o[c] * e[3]), -16);
+    eye[3] = fabsf(e[3]);
+}
+
 /* The bound, with u = 2^-24: a cross4 component rounds its three-factor monomials, two
  * differences and two sums (5u relative to the sum of |monomials|), the float weight and its
  * product add 2u, the eye's products and sums at most 5u (world space), and summing a plane's
- * terms in any order (count - 1)u: (count + 12)u in all, taken as (count + 16)u. */
+ * terms in any order (count - 1)u: (count + 12)u in all, taken as (count + 16)u. A kernel in
+ * patch-local coordinates rounds every coordinate once more, at most 2^-16 of the shift from the
+ * reference's (local_magnitudes): (count + 24)u over the local points' monomials. The bound is
+ * the larger of the two, so that it holds for both formulations (the table kernels read the
+ * points as given). */
 void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, double *bound)
 {
     const float(*b)[4] = (const float(*)[4])s->cp + p * (size_t)r->K;
+    float(*lm)[4] = malloc((size_t)r->K * sizeof *lm), le[4];
+    double *lb = calloc((size_t)r->L, sizeof *lb);
     size_t x;
     int i, count = 0;
+    if (!lm || !lb) {
+        fprintf(stderr, "kref: out of memory\n");
+        exit(1);
+    }
+    local_magnitudes(lm, le, b, r->K, s->eye);
     for (i = 0; i < r->L; i++)
         d[i] = bound[i] = 0;
     for (x = 0; x < r->t.nterms; x++) {
         const tp_term *e = &r->t.terms[x];
-        double t[4], mag[4], w = rat_get_d(&e->w), v = 0, mg = 0;
+        double t[4], mag[4], lt[4], lmag[4], w = rat_get_d(&e->w), v = 0, mg = 0, lg = 0;
         int c;
         cross4_mag(t, mag, b[e->j], b[e->k], b[e->l], r->edge[e->plane]);
+        cross4_mag(lt, lmag, lm[e->j], lm[e->k], lm[e->l], 0);
         for (c = 0; c < 4; c++)
             if (r->space == KREF_WORLD || c == 2) {
                 v += s->eye[c] * t[c];
                 mg += fabs(s->eye[c]) * mag[c];
+                lg += (double)le[c] * lmag[c];
             }
         d[e->plane] += w * v;
         bound[e->plane] += fabs(w) * mg;
+        lb[e->plane] += mg > 0 ? fabs(w) * lg : 0; /* exactly zero stays exactly zero */
     }
     for (i = 0, x = 0; i < r->L; i++) {
         for (count = 0; x < r->t.nterms && r->t.terms[x].plane == i; x++)
             count++;
-        bound[i] *= (count + 16) * ldexp(1, -24);
+        bound[i] = fmax(bound[i] * (count + 16), lb[i] * (count + 24)) * ldexp(1, -24);
     }
+    free(lm);
+    free(lb);
 }
 
 int kref_classify(const double *d, int L, kref_rule rule)

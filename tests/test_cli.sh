@@ -281,9 +281,10 @@ fi
     notok "stats 2x4" "plane bidegree missing"
 
 # The operation counts of stats and of the header's MULS and FLOPS are those of the straight-line
-# code as emitted: products " * ", multiply-adds VFMA(S), sums " + ", " - ", "+=", "-=" in the
-# lanes body (loads, value stores and masks aside), in clip and world space; a doubling's repeats
-# in a statement, ((u + u) + (u + u)), are one sum each (the compiler shares them).
+# code as emitted: products " * ", multiply-adds VFMA(S) and the frame's VLOCAL, its reciprocal
+# VRECIP0 (a flop on neither pipe), sums " + ", " - ", "+=", "-=" in the lanes body (loads, value
+# stores and masks aside), in clip and world space; a doubling's repeats in a statement,
+# ((u + u) + (u + u)), are one sum each (the compiler shares them).
 count_ops() { # HEADER -> "muls flops adds"
     awk '/_vload\(q/ && !f {f = 1} /\/\* Strict:/ {f = 0}
          f && !/if \(d\)|vstoref\(/ {
@@ -291,9 +292,10 @@ count_ops() { # HEADER -> "muls flops adds"
              for (k = 1; k <= 6; k++)
                  if (gsub("\\(" (k > 1 ? "D" k - 1 : "u") " \\+ " (k > 1 ? "D" k - 1 : "u") "\\)", "D" k, line))
                      a++
-             p += gsub(/ \* /, "", line); m += gsub(/VFMAS?\(/, "", line)
+             p += gsub(/ \* /, "", line); m += gsub(/VFMAS?\(|VLOCAL\(/, "", line)
+             r += gsub(/VRECIP0\(/, "", line)
              a += gsub(/ \+ | - |\+=|-=/, "", line)
-         } END {print p + m, p + 2 * m + a, a}' "$1"
+         } END {print p + m, p + 2 * m + a + r, a}' "$1"
 }
 for args in "--degree 3" "--domain triangle --degree 3" "--degree 2x3 --space world"; do
     stats=${args% --space world}

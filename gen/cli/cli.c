@@ -26,8 +26,9 @@ static void usage_synopsis(sbuf *o)
 {
     sbuf_puts(o,
         "usage: ptpgen --degree N|NxM [--domain quad|triangle] [--target T] [--space clip|world]\n"
-        "              [--rule strict|degenerate] [--planes] [--certified] [--refine K]\n"
-        "              [--prefix NAME] [--kernel slp|table] [--stage kernel|function]\n"
+        "              [--rule strict|degenerate] [--coordinates local|absolute] [--planes]\n"
+        "              [--certified] [--refine K] [--prefix NAME] [--kernel slp|table]\n"
+        "              [--stage kernel|function]\n"
         "              [--threads-per-patch P] [--patches-per-block Q] [-o FILE]\n"
         "              [--host-header FILE]\n"
         "       ptpgen verify FILE [--degree N|NxM] [--domain quad|triangle]\n"
@@ -58,6 +59,10 @@ static void usage_options(sbuf *o)
         "                   world: the full planes dotted with a homogeneous eye point\n"
         "  --rule R         strict (default): back iff all values < 0, front iff all > 0;\n"
         "                   degenerate: back iff none > 0, front iff none < 0\n"
+        "  --coordinates C  C and the straight-line GPU code: local (default): each patch moved\n"
+        "                   to its first control point's origin before the planes (exact up\n"
+        "                   to one rounding a coordinate); absolute: as given (--kernel table\n"
+        "                   reads them as given always)\n"
         "  --planes         kernels also write the value of every plane\n"
         "  --certified      call a patch back or front only when every value clears a rigorous\n"
         "                   bound on its float rounding error (README: Certified classification)\n"
@@ -66,8 +71,8 @@ static void usage_options(sbuf *o)
         "                   (quads into quarters, triangles at their edge midpoints); with\n"
         "                   --certified in double, every value with a bound on its error\n"
         "  --prefix NAME    prefix of generated names (default ptp_NxM_ or ptp_triN_, then world_,\n"
-        "                   degenerate_, certified_, refineK_ for the options given); a _ is\n"
-        "                   appended when NAME does not end in one\n"
+        "                   degenerate_, absolute_, certified_, refineK_ for the options\n"
+        "                   given); a _ is appended when NAME does not end in one\n"
         "  --kernel K       GPU targets: slp (default): one patch an invocation, the\n"
         "                   straight-line program; table (the default with --certified): the\n"
         "                   paper's kernel, P threads a patch over the term table\n"
@@ -210,7 +215,7 @@ typedef enum {
     OPT_DEGREE, OPT_DOMAIN, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
     OPT_PATCHES, OPT_COUNT, OPT_SEED, OPT_CERTIFIED, OPT_REFINE, OPT_CONVENTION, OPT_FORMAT,
     OPT_OUTPUT, OPT_HELP,
-    OPT_VERSION, OPT_LIST, OPT_KERNEL, OPT_STAGE, OPT_HOST_HEADER, OPT_N
+    OPT_VERSION, OPT_LIST, OPT_KERNEL, OPT_STAGE, OPT_HOST_HEADER, OPT_COORDINATES, OPT_N
 } opt_id;
 
 /* The modes an option belongs to, as bits 1 << cli_mode. */
@@ -247,6 +252,7 @@ static const struct {
     [OPT_KERNEL] = {"--kernel", NULL, 1, GEN, TGT_KERNEL},
     [OPT_STAGE] = {"--stage", NULL, 1, GEN, TGT_KERNEL},
     [OPT_HOST_HEADER] = {"--host-header", NULL, 1, GEN, TGT_KERNEL},
+    [OPT_COORDINATES] = {"--coordinates", NULL, 1, GEN, TGT_SPACE},
 };
 
 /* Finds the option argv[*i] names ("--name", its alias, or "--name=value" for one that takes a
@@ -293,6 +299,7 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
     static const char *const conventions[] = {"u-first", "v-first"}, *const formats[] = {"json", "c"};
     static const char *const kernels[] = {"slp", "table"}, *const stages[] = {"kernel", "function"};
+    static const char *const coordinates[] = {"local", "absolute"};
     const char *kinds[] = {tp_kind_name(TP_QUAD), tp_kind_name(TP_TRI)};
     uint64_t u = 0;
     int st = PTP_OK, x = 0;
@@ -328,6 +335,7 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     case OPT_VERSION: o->version = 1; break;
     case OPT_LIST: o->list = 1; break;
     case OPT_KERNEL: return parse_choice(&o->table, "kernel", v, kernels, 2, err);
+    case OPT_COORDINATES: return parse_choice(&o->absolute, "coordinates", v, coordinates, 2, err);
     case OPT_STAGE: return parse_choice(&o->functions, "stage", v, stages, 2, err);
     case OPT_HOST_HEADER: o->host_header = v; break;
     case OPT_N: break;
@@ -444,6 +452,9 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
         o->table = 1;
     if (o->certified && !o->table)
         return ptp_fail(err, PTP_EUSAGE, "--certified GPU code is the table kernel (--kernel table)");
+    if (o->table && seen >> OPT_COORDINATES & 1)
+        return ptp_fail(err, PTP_EUSAGE, "--coordinates applies to the straight-line program; "
+                                         "--kernel table reads the coordinates as given");
     if (o->table && o->functions)
         return ptp_fail(err, PTP_EUSAGE, "--stage function writes the straight-line functions, not "
                                          "--kernel table");
@@ -482,6 +493,8 @@ static void put_command(cli_options *o)
         n += snprintf(c + n, size - (size_t)n, " --space world");
     if (o->degenerate)
         n += snprintf(c + n, size - (size_t)n, " --rule degenerate");
+    if (o->absolute)
+        n += snprintf(c + n, size - (size_t)n, " --coordinates absolute");
     if (o->planes)
         n += snprintf(c + n, size - (size_t)n, " --planes");
     if (o->certified)
@@ -501,7 +514,8 @@ static void put_command(cli_options *o)
 }
 
 /* Writes the default prefix: the domain's ("ptp_3x3_") and, in this order, each option that
- * differs from its default: world_, degenerate_, certified_, refineK_ (ptp_3x3_world_certified_);
+ * differs from its default: world_, degenerate_, absolute_, certified_, refineK_
+ * (ptp_3x3_world_certified_);
  * options a target does not take are refused before, so every target names its variant. */
 static void put_default_prefix(cli_options *o)
 {
@@ -511,6 +525,8 @@ static void put_default_prefix(cli_options *o)
         n += (size_t)snprintf(p + n, size - n, "world_");
     if (o->degenerate)
         n += (size_t)snprintf(p + n, size - n, "degenerate_");
+    if (o->absolute)
+        n += (size_t)snprintf(p + n, size - n, "absolute_");
     if (o->certified)
         n += (size_t)snprintf(p + n, size - n, "certified_");
     if (o->refine)

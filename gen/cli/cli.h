@@ -34,6 +34,7 @@ typedef struct {
     int degenerate;       /* --rule degenerate (else strict) */
     int planes;           /* --planes */
     int certified;        /* --certified */
+    int absolute;         /* --coordinates absolute (else local) */
     int refine;           /* --refine K (C only), 0 when not given */
     int table;            /* GPU targets: --kernel table (or --certified without --kernel) */
     int kernel_given;     /* --kernel was given */

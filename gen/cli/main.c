@@ -154,6 +154,7 @@ static int run(const cli_options *o, ptp_error *err)
     info.rule = o->degenerate ? OUT_DEGENERATE : OUT_STRICT;
     info.planes = o->planes;
     info.certified = o->certified;
+    info.absolute = o->absolute;
     info.refine = o->refine;
     info.table = o->table;
     info.functions = o->functions;

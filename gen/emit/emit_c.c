@@ -114,11 +114,17 @@ static void put_lanes_head(sbuf *o, const out_info *info, const cert_bounds *cb,
                 "%*sfloat *%sRESTRICT d, size_t ds)\n{\n"
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
                 up, up, px, up, (int)strlen(px) + 31, "", up, (int)strlen(px) + 31, "", up);
-    if (world)
+    if (world && info->slp->local) /* vectors: the frame's multiply-adds take them */
+        sbuf_printf(o, "    const %svf e0 = eye[0] + (%svf){0}, e1 = eye[1] + (%svf){0},\n"
+                       "        e2 = eye[2] + (%svf){0}, e3 = eye[3] + (%svf){0};\n",
+                    px, px, px, px, px);
+    else if (world)
         sbuf_puts(o, "    const float e0 = eye[0], e1 = eye[1], e2 = eye[2], e3 = eye[3];\n");
     else
         sbuf_puts(o, "    const float e2 = eye[2];\n");
-    if (info->certified) {
+    if (info->certified && world && info->slp->local) /* the local eye's: in the loop */
+        sbuf_printf(o, "    const float E3 = %sABSMAX(0.0f, eye[3]);\n", up);
+    else if (info->certified) {
         if (world)
             sbuf_printf(o, "    const float E0 = %sABSMAX(0.0f, e0), E1 = %sABSMAX(0.0f, e1),\n"
                            "        E2 = %sABSMAX(0.0f, e2), E3 = %sABSMAX(0.0f, e3);\n"
@@ -284,6 +290,13 @@ static void lanes_load(char *out, size_t size, const slpt_writer *w, int k, int 
     snprintf(out, size, "%svload(q + %d * qs)", x->info->prefix, 4 * k + c);
 }
 
+/* The lanes' 1 / x, 0 where x is 0. */
+static void lanes_recip0(char *out, size_t size, const slpt_writer *w, const char *x)
+{
+    const lanes_ctx *c = w->ctx;
+    snprintf(out, size, "%sVRECIP0(%s)", c->up, x);
+}
+
 /* After each plane: its value into d, then into the masks. */
 static void lanes_plane_end(slpt_writer *w, int plane, int first)
 {
@@ -296,18 +309,22 @@ static void lanes_plane_end(slpt_writer *w, int plane, int first)
 static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
                      const out_info *info, const char *up, ptp_error *err)
 {
-    char decl[96], fma[96], fmas[96];
-    slpt_syntax syn = {"        ", decl, 1, "%s * %s", fma, fmas, lanes_load, lanes_plane_end};
+    char decl[96], fma[96], fmas[96], shift[96];
+    slpt_syntax syn = {"        ", decl, 1, "%s * %s", fma, fmas, shift, lanes_recip0, lanes_load,
+                       lanes_plane_end};
     lanes_ctx ctx = {cb, info, up};
     slpt_writer w;
     int st;
     snprintf(decl, sizeof decl, "const %svf ", info->prefix);
     snprintf(fma, sizeof fma, "%sVFMA(%%s, %%s, %%s)", up);
     snprintf(fmas, sizeof fmas, "%sVFMAS(%%s, %%s, %%s)", up);
-    if ((st = slpt_init(&w, o, p, &syn, info->space == OUT_WORLD, &ctx, err)) != PTP_OK)
+    snprintf(shift, sizeof shift, "%sVLOCAL(%%s, %%s, %%s)", up);
+    if ((st = slpt_init(&w, o, p, &syn, info->space == OUT_WORLD, info->slp->local, &ctx, err)))
         return st;
     put_lanes_head(o, info, cb, up);
     put_lanes_loop(o, info, up);
+    if (info->slp->local)
+        slpt_frame(&w);
     put_loads(&w, t, info, cb, up);
     st = slpt_program(&w, err);
     slpt_clear(&w);

@@ -2,6 +2,10 @@
  * edges, and certify64, the second look in double at the patches float cannot certify. */
 #include "emit/emit_c_cert.h"
 #include "emit/emit_c.h"
+#include "emit/fmt.h"
+
+#include <stdio.h>
+#include <string.h>
 
 #include <stdlib.h>
 
@@ -233,19 +237,28 @@ void emit_c_cert_late_bounds(sbuf *o, int npoints, const out_info *info, const c
                 up, up);
 }
 
+/* Writes to out (size bytes) the load of coordinate c of point k of the lanes' patches (the
+ * masks compare the points as given, each comparison cast to the mask type). */
+static void put_load(char *out, size_t size, const char *px, int k, int c)
+{
+    snprintf(out, size, "%svload(q + %d * qs)", px, 4 * k + c);
+}
+
 void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
 {
-    static const char crd[] = "xyzw";
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD, e, k, c;
+    char a[128], b[128];
     sbuf_printf(o, "        /* Certified, degenerate rule: c<e> where boundary edge e is collapsed (its points\n"
-                   "         * equal, every coordinate finite); the planes it zeros are then exactly 0. */\n"
+                   "         * equal as given, every coordinate finite); the planes it zeros are then exactly 0. */\n"
                    "        const %svm fin =", px);
     for (k = 0; k < d->npoints; k++)
         for (c = 0; c < 4; c++)
-            if (world || c != 2)
-                sbuf_printf(o, "%s(%c%d - %c%d == 0.0f)", c ? " & " : k ? " &\n            " : "\n            ",
-                            crd[c], k, crd[c], k);
+            if (world || c != 2) {
+                put_load(a, sizeof a, px, k, c);
+                sbuf_printf(o, "%s(%svm)(%s - %s == 0.0f)",
+                            c ? " & " : k ? " &\n            " : "\n            ", px, a, a);
+            }
     sbuf_puts(o, ";\n");
     for (e = 0; e < tp_domain_edges(d); e++) {
         int f = edge_first(d, e);
@@ -257,29 +270,53 @@ void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
                 continue;
             sbuf_puts(o, " &\n            ");
             for (c = 0; c < 4; c++)
-                if (world || c != 2)
-                    sbuf_printf(o, "%s(%c%d == %c%d)", c ? " & " : "", crd[c], k, crd[c], f);
+                if (world || c != 2) {
+                    put_load(a, sizeof a, px, k, c);
+                    put_load(b, sizeof b, px, f, c);
+                    sbuf_printf(o, "%s(%svm)(%s == %s)", c ? " & " : "", px, a, b);
+                }
         }
         sbuf_puts(o, ";\n");
     }
 }
 
-void emit_c_cert_magnitudes(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb)
+/* Appends the magnitude update Rc = max(Rc, |coordinate c of point k|) (declared for k = 0), of
+ * the coordinate as the program reads it: patch-local x + o w (c < 3), else the load. */
+static void put_magnitude(sbuf *o, const out_info *info, int k, int c)
 {
     static const char crd[] = "xyzw";
     const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, k, c;
+    char x[128], w[128], v[400];
+    put_load(x, sizeof x, px, k, c);
+    if (info->slp->local && c < 3) {
+        put_load(w, sizeof w, px, k, 3);
+        fmt_upper(v, sizeof v, px);
+        snprintf(v + strlen(v), sizeof v - strlen(v), "VLOCAL(o%c, %s, %s)", crd[c], w, x);
+    } else
+        snprintf(v, sizeof v, "%s", x);
+    if (k == 0)
+        sbuf_printf(o, "        %svf R%c = %svabsmax(%s, %s);\n", px, crd[c], px, v, v);
+    else
+        sbuf_printf(o, "        R%c = %svabsmax(R%c, %s);\n", crd[c], px, crd[c], v);
+}
+
+void emit_c_cert_magnitudes(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb)
+{
+    const char *px = info->prefix;
+    int world = info->space == OUT_WORLD, local = info->slp->local, k, c;
+    char up[64];
     float k2 = 0;
-    sbuf_puts(o, "        /* Certified: Rc, the largest |coordinate c|, bound every value's rounding error. */\n");
-    for (c = 0; c < 4; c++)
-        if (world || c != 2)
-            sbuf_printf(o, "        %svf R%c = %svabsmax(%svload(q + %d * qs), %svload(q + %d * qs));\n",
-                        px, crd[c], px, px, c, px, c);
-    for (k = 1; k < npoints; k++)
+    fmt_upper(up, sizeof up, px);
+    sbuf_printf(o, "        /* Certified: Rc, the largest |coordinate c|%s, bound every value's rounding error. */\n",
+                local ? " in patch-local coordinates" : "");
+    for (k = 0; k < npoints; k++)
         for (c = 0; c < 4; c++)
             if (world || c != 2)
-                sbuf_printf(o, "        R%c = %svabsmax(R%c, %svload(q + %d * qs));\n", crd[c], px, crd[c], px,
-                            4 * k + c);
+                put_magnitude(o, info, k, c);
+    if (world && local) /* the local eye's magnitudes, lane by lane */
+        sbuf_printf(o, "        const %svf E0 = %sVABS(l0), E1 = %sVABS(l1), E2 = %sVABS(l2);\n"
+                       "        const %svf E = %svabsmax(%svabsmax(%svabsmax(E0, E1), E2), E0 * 0.0f + E3);\n",
+                    px, up, up, up, px, px, px, px);
     if (world)
         sbuf_printf(o, "        const %svf R = %svabsmax(%svabsmax(Rx, Ry), %svabsmax(Rz, Rw)), R3 = R * R * R;\n"
                        "        const %svf ER3 = %svabsmax(%svabsmax(E0 * Ry, E1 * Rx) * (Rz * Rw),\n"
@@ -293,10 +330,14 @@ void emit_c_cert_magnitudes(sbuf *o, int npoints, const out_info *info, const ce
         k2 = cb->k2[k] > k2 ? cb->k2[k] : k2;
     sbuf_printf(o, "        /* F: the underflow term of every plane's bound, with the largest K2. */\n"
                    "        const %svf F = %.8ef * ((1.0f + R) * (1.0f + R) * (1.0f + R) * (1.0f + E));\n"
-                   "        /* Patches too large for the bound (or NaN) are never certified. */\n"
-                   "        amb = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n"
-                   "        s = F * 0.0f + 3.40282347e+38f; /* the least t of the planes so far */\n",
-                px, (double)k2, (double)cb->q_max);
+                   "        /* Patches too large for the bound (or NaN) are never certified. */\n",
+                px, (double)k2);
+    if (world && local) /* E lane by lane: max(E, 1) through vabsmax */
+        sbuf_printf(o, "        amb = (%svabsmax(E, R * 0.0f + 1.0f) * R3 < %.8ef) == 0;\n", px,
+                    (double)cb->q_max);
+    else
+        sbuf_printf(o, "        amb = ((E > 1.0f ? E : 1.0f) * R3 < %.8ef) == 0;\n", (double)cb->q_max);
+    sbuf_puts(o, "        s = F * 0.0f + 3.40282347e+38f; /* the least t of the planes so far */\n");
 }
 
 /* Appends "c0 | c2", the masks of the collapsed edges in bits zero (not 0). */

@@ -20,6 +20,16 @@ static void fn_load(char *out, size_t size, const slpt_writer *w, int k, int c)
     snprintf(out, size, "cp[%d].%c", k, "xyzw"[c]);
 }
 
+/* 1 / x, 0 where x is 0, in the target's select. */
+static void fn_recip0(char *out, size_t size, const slpt_writer *w, const char *x)
+{
+    const fn_ctx *c = w->ctx;
+    char cond[160], inv[160];
+    snprintf(cond, sizeof cond, "%s != 0.0f", x);
+    snprintf(inv, sizeof inv, "1.0f / %s", x);
+    c->g->syntax->select(out, size, cond, inv, "0.0f");
+}
+
 /* After each plane: values stores it at true scale; classify_patch folds it into the rule's
  * flags (strict lt, gt: every value so far < 0, > 0; degenerate: some value < 0, > 0, NaN). */
 static void fn_plane_end(slpt_writer *w, int plane, int first)
@@ -88,7 +98,7 @@ static int put_slp_function(sbuf *o, const slp_prog *p, const tp_table *t, const
                             const kern_target *g, int values, ptp_error *err)
 {
     char name[128], mul[160], fma[96];
-    slpt_syntax syn = {"    ", g->slp_decl, 0, mul, fma, fma, fn_load, fn_plane_end};
+    slpt_syntax syn = {"    ", g->slp_decl, 0, mul, fma, fma, fma, fn_recip0, fn_load, fn_plane_end};
     fn_ctx ctx = {g, info, values};
     slpt_writer w;
     int st;
@@ -105,8 +115,10 @@ static int put_slp_function(sbuf *o, const slp_prog *p, const tp_table *t, const
     sbuf_printf(o, values ? g->slp_values : g->slp_classify, name, t->dom.npoints, t->dom.nplanes);
     sbuf_puts(o, "\n");
     put_slp_locals(o, info, g, values);
-    if ((st = slpt_init(&w, o, p, &syn, info->space == OUT_WORLD, &ctx, err)) != PTP_OK)
+    if ((st = slpt_init(&w, o, p, &syn, info->space == OUT_WORLD, info->slp->local, &ctx, err)))
         return st;
+    if (info->slp->local)
+        slpt_frame(&w);
     st = slpt_program(&w, err);
     slpt_clear(&w);
     if (!values)

@@ -37,6 +37,9 @@ typedef struct {
     int group;           /* GPU straight-line kernel: patches (invocations) per workgroup */
     const plan_slp *slp; /* the straight-line plan (the C header, the GPU straight-line code;
                             tgt_emit_target builds it), or NULL */
+    int absolute;        /* the straight-line program reads the coordinates as given (else
+                            patch-local: point 0's origin subtracted; the table kernels always
+                            read them as given) */
 } out_info;
 
 /* The ptpgen-planes/1 JSON document of t. */

@@ -63,9 +63,15 @@ static int put_slp(sbuf *o, const tp_table *t, ptp_error *err)
         exact_terms += (p.form[p.terms[i].plane] == SLP_BRACKET);
     sbuf_printf(o, "C straight-line code: %d exact planes (%zu terms), %d fused, %d in the point form; "
                    "per patch %ld flops, %ld on the multiply pipes, %ld on the add pipes (clip space), "
-                   "%ld, %ld and %ld (world space)\n",
-                exact, exact_terms, p.nplanes - exact - point, point, slp_flops(&p, 0), slp_muls(&p, 0),
-                slp_adds(&p, 0), slp_flops(&p, 1), slp_muls(&p, 1), slp_adds(&p, 1));
+                   "%ld, %ld and %ld (world space), with the patch-local frame's %ld, %ld and 0 "
+                   "(world %ld, %ld and 0)\n",
+                exact, exact_terms, p.nplanes - exact - point, point,
+                slp_flops(&p, 0) + plan_frame_flops(p.npoints, 0),
+                slp_muls(&p, 0) + plan_frame_muls(p.npoints, 0), slp_adds(&p, 0),
+                slp_flops(&p, 1) + plan_frame_flops(p.npoints, 1),
+                slp_muls(&p, 1) + plan_frame_muls(p.npoints, 1), slp_adds(&p, 1),
+                plan_frame_flops(p.npoints, 0), plan_frame_muls(p.npoints, 0),
+                plan_frame_flops(p.npoints, 1), plan_frame_muls(p.npoints, 1));
     slp_clear(&p);
     return PTP_OK;
 }

@@ -20,9 +20,9 @@
 #define EXPR 1024
 
 int slpt_init(slpt_writer *w, sbuf *o, const slp_prog *p, const slpt_syntax *s, int world,
-              const void *ctx, ptp_error *err)
+              int local, const void *ctx, ptp_error *err)
 {
-    *w = (slpt_writer){o, p, s, world, ctx, calloc(p->npairs + (size_t)p->npoints, 1)};
+    *w = (slpt_writer){o, p, s, world, local, ctx, calloc(p->npairs + (size_t)p->npoints, 1)};
     if (!w->done)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing the straight-line program");
     return PTP_OK;
@@ -73,11 +73,53 @@ static void minor_expr(char *out, const slpt_writer *w, const char *p, const cha
     expr(out, "%s - %s", mul(a, w, p, q), mul(b, w, r, s));
 }
 
+void slpt_frame(slpt_writer *w)
+{
+    static const char *const origin[3] = {"ox", "oy", "oz"}, *const eye[3] = {"l0", "l1", "l2"};
+    static const char *const raw[3] = {"e0", "e1", "e2"};
+    char w0[EXPR], x0[EXPR], inits[4][EXPR], pr[EXPR];
+    const char *name = "rw", *init[4];
+    int c, n = w->world ? 3 : 2;
+    w->s->load(w0, sizeof w0, w, 0, 3);
+    w->s->recip0(inits[0], EXPR, w, w0);
+    init[0] = inits[0];
+    declare(w, &name, init, 1);
+    for (c = 0; c < n; c++) {
+        w->s->load(x0, sizeof x0, w, 0, c);
+        expr(inits[c], "-(%s)", mul(pr, w, x0, "rw"));
+        init[c] = inits[c];
+    }
+    declare(w, origin, init, n);
+    if (!w->world)
+        return;
+    for (c = 0; c < 3; c++) {
+        expr(inits[c], w->s->shift, origin[c], "e3", raw[c]);
+        init[c] = inits[c];
+    }
+    declare(w, eye, init, 3);
+}
+
+/* Writes to out coordinate c of point k as the program reads it: the load, or in patch-local
+ * coordinates x + o w (c < 3). */
+static void coordinate(char *out, const slpt_writer *w, int k, int c)
+{
+    static const char *const origin[3] = {"ox", "oy", "oz"};
+    char x[EXPR], wk[EXPR];
+    w->s->load(x, EXPR, w, k, c);
+    if (!w->local || c == 3) {
+        memcpy(out, x, EXPR);
+        return;
+    }
+    w->s->load(wk, EXPR, w, k, 3);
+    expr(out, w->s->shift, origin[c], wk, x);
+}
+
 void slpt_point(slpt_writer *w, int k)
 {
     static const char xyzw[] = "xyzw";
     char names[6][24], inits[6][EXPR], v[4][24];
-    const char *name[6], *init[6];
+    const char *name[6], *init[6], *e0 = w->local ? "l0" : "e0", *e1 = w->local ? "l1" : "e1",
+               *e2 = w->local ? "l2" : "e2";
     int c, n = 0;
     if (w->done[w->p->npairs + (size_t)k])
         return;
@@ -87,14 +129,14 @@ void slpt_point(slpt_writer *w, int k)
         if (c == 2 && !w->world)
             continue; /* clip space never reads z */
         memcpy(names[n], v[c], sizeof v[c]);
-        w->s->load(inits[n], EXPR, w, k, c);
+        coordinate(inits[n], w, k, c);
         n++;
     }
     if (w->world) {
         snprintf(names[n], sizeof names[n], "a%d", k);
-        minor_expr(inits[n++], w, "e0", v[1], "e1", v[0]);
+        minor_expr(inits[n++], w, e0, v[1], e1, v[0]);
         snprintf(names[n], sizeof names[n], "b%d", k);
-        minor_expr(inits[n++], w, "e2", v[3], "e3", v[2]);
+        minor_expr(inits[n++], w, e2, v[3], "e3", v[2]);
     } else {
         snprintf(names[n], sizeof names[n], "g%d", k);
         mul(inits[n++], w, "e2", v[3]);

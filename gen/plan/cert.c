@@ -273,7 +273,26 @@ int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
     return PTP_OK;
 }
 
-int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)
+/* The roundings the patch-local frame adds to every monomial of the straight-line program: its
+ * shifted factors (clip x and y; world three of x, y, z and the eye's), two each (one
+ * multiply-add, or a product exact in double, a double sum and its rounding to float). */
+#define CERT_FRAME_ROUNDINGS(world) ((world) ? 6 : 4)
+
+/* Adds the frame's h roundings to every monomial of each plane: h to the depth, h times the
+ * plane's mass (at most m S: every form regroups the terms' m monomials) to D, and h m a term
+ * (n counts 32, clip 12, a term) to the roundings that may underflow. */
+static void frame_sums(double *d, double *D, const double *S, double *n, int nplanes, int world)
+{
+    const double h = CERT_FRAME_ROUNDINGS(world), m = world ? 24 : 6, per = world ? 32 : 12;
+    int i;
+    for (i = 0; i < nplanes; i++) {
+        d[i] += h;
+        D[i] += h * m * S[i] * (1 + 0x1p-50);
+        n[i] += n[i] / per * h * m;
+    }
+}
+
+int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, ptp_error *err)
 {
     double *d, *D, *S, *n;
     size_t i;
@@ -294,6 +313,8 @@ int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err)
         fused_sums(d, D, p, i, world);
     for (i = 0; i < p->nitems; i = slp_point_plane_end(p->items, p->nitems, i))
         point_sums(d, D, p, i, world);
+    if (local)
+        frame_sums(d, D, S, n, p->nplanes, world);
     fill(b, d, D, S, n, world, 0x1p-150, 0x1p-24); /* IEEE float with subnormals */
     free(d);
     return PTP_OK;

@@ -37,7 +37,10 @@ int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differe
  * splitter's 4097 x never overflows (docs/errors.md). k64 and k2_64 stay NULL. */
 int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
 /* The bounds of the straight-line program p (the C target's classify), at its planes' scales:
- * each monomial's roundings d_i from the program's summation trees as emitted. */
-int cert_slp(cert_bounds *b, const slp_prog *p, int world, ptp_error *err);
+ * each monomial's roundings d_i from the program's summation trees as emitted; local: the
+ * program reads patch-local coordinates, each rounded once (twice counted, for the double
+ * route without multiply-add instructions), whose magnitudes M is taken from (docs/errors.md:
+ * Patch-local coordinates). */
+int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, ptp_error *err);
 void cert_clear(cert_bounds *b);
 #endif

@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_1X1_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_1X1_FLOPS 42
-#define PTP_1X1_MULS 28
+#define PTP_1X1_FLOPS 61
+#define PTP_1X1_MULS 38
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_1X1_LANES
 #define PTP_1X1_LANES 16
@@ -168,7 +168,9 @@ static inline void ptp_1x1_vstoref(float *d, ptp_1x1_vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if PTP_1X1_VW == 16
 #include <immintrin.h>
@@ -189,7 +191,15 @@ static inline void ptp_1x1_vstoref(float *d, ptp_1x1_vf v, size_t count)
 #else
 #define PTP_1X1_VFMA(a, b, c) ((a) * (b) + (c))
 #define PTP_1X1_VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double ptp_1x1_vd __attribute__((vector_size(8 * PTP_1X1_VW)));
+#define PTP_1X1_VLOCAL(o, w, x) ((ptp_1x1_vf)__builtin_convertvector(__builtin_convertvector(x, ptp_1x1_vd) + \
+    __builtin_convertvector(o, ptp_1x1_vd) * __builtin_convertvector(w, ptp_1x1_vd), ptp_1x1_vf))
 #endif
+#ifndef PTP_1X1_VLOCAL
+#define PTP_1X1_VLOCAL PTP_1X1_VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define PTP_1X1_VRECIP0(x) ((ptp_1x1_vf)((ptp_1x1_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_1x1_vf ptp_1x1_vabsmax(ptp_1x1_vf r, ptp_1x1_vf x)
 {
@@ -220,10 +230,13 @@ static inline void ptp_1x1_vstoref(float *d, ptp_1x1_vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_1X1_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define PTP_1X1_VLOCAL PTP_1X1_VFMA
 #else
 #define PTP_1X1_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_1X1_VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define PTP_1X1_VFMAS PTP_1X1_VFMA
+#define PTP_1X1_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float ptp_1x1_alpha(const float proj[16], int layout)
@@ -364,12 +377,14 @@ static inline void ptp_1x1_lanes_body(const float *PTP_1X1_RESTRICT soa, size_t 
             qs = PTP_1X1_VW;
         }
 #endif
-        const ptp_1x1_vf x1 = ptp_1x1_vload(q + 4 * qs), y1 = ptp_1x1_vload(q + 5 * qs),
+        const ptp_1x1_vf rw = PTP_1X1_VRECIP0(ptp_1x1_vload(q + 3 * qs));
+        const ptp_1x1_vf ox = -(ptp_1x1_vload(q + 0 * qs) * rw), oy = -(ptp_1x1_vload(q + 1 * qs) * rw);
+        const ptp_1x1_vf x1 = PTP_1X1_VLOCAL(ox, ptp_1x1_vload(q + 7 * qs), ptp_1x1_vload(q + 4 * qs)), y1 = PTP_1X1_VLOCAL(oy, ptp_1x1_vload(q + 7 * qs), ptp_1x1_vload(q + 5 * qs)),
             w1 = ptp_1x1_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_1x1_vf x2 = ptp_1x1_vload(q + 8 * qs), y2 = ptp_1x1_vload(q + 9 * qs),
+        const ptp_1x1_vf x2 = PTP_1X1_VLOCAL(ox, ptp_1x1_vload(q + 11 * qs), ptp_1x1_vload(q + 8 * qs)), y2 = PTP_1X1_VLOCAL(oy, ptp_1x1_vload(q + 11 * qs), ptp_1x1_vload(q + 9 * qs)),
             w2 = ptp_1x1_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_1x1_vf m1_2 = x1 * y2 - y1 * x2;
-        const ptp_1x1_vf x0 = ptp_1x1_vload(q + 0 * qs), y0 = ptp_1x1_vload(q + 1 * qs),
+        const ptp_1x1_vf x0 = PTP_1X1_VLOCAL(ox, ptp_1x1_vload(q + 3 * qs), ptp_1x1_vload(q + 0 * qs)), y0 = PTP_1X1_VLOCAL(oy, ptp_1x1_vload(q + 3 * qs), ptp_1x1_vload(q + 1 * qs)),
             w0 = ptp_1x1_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_1x1_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_1x1_vf m0_1 = x0 * y1 - y0 * x1;
@@ -379,7 +394,7 @@ static inline void ptp_1x1_lanes_body(const float *PTP_1X1_RESTRICT soa, size_t 
             ptp_1x1_vstoref(d + 0 * ds + l, v, n - l);
         lt = PTP_1X1_KLT0(v);
         gt = PTP_1X1_KGT0(v); /* plane 0 */
-        const ptp_1x1_vf x3 = ptp_1x1_vload(q + 12 * qs), y3 = ptp_1x1_vload(q + 13 * qs),
+        const ptp_1x1_vf x3 = PTP_1X1_VLOCAL(ox, ptp_1x1_vload(q + 15 * qs), ptp_1x1_vload(q + 12 * qs)), y3 = PTP_1X1_VLOCAL(oy, ptp_1x1_vload(q + 15 * qs), ptp_1x1_vload(q + 13 * qs)),
             w3 = ptp_1x1_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_1x1_vf m1_3 = x1 * y3 - y1 * x3;
         const ptp_1x1_vf m0_3 = x0 * y3 - y0 * x3;

@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_2X2_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_2X2_FLOPS 568
-#define PTP_2X2_MULS 289
+#define PTP_2X2_FLOPS 607
+#define PTP_2X2_MULS 309
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_2X2_LANES
 #define PTP_2X2_LANES 16
@@ -168,7 +168,9 @@ static inline void ptp_2x2_vstoref(float *d, ptp_2x2_vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if PTP_2X2_VW == 16
 #include <immintrin.h>
@@ -189,7 +191,15 @@ static inline void ptp_2x2_vstoref(float *d, ptp_2x2_vf v, size_t count)
 #else
 #define PTP_2X2_VFMA(a, b, c) ((a) * (b) + (c))
 #define PTP_2X2_VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double ptp_2x2_vd __attribute__((vector_size(8 * PTP_2X2_VW)));
+#define PTP_2X2_VLOCAL(o, w, x) ((ptp_2x2_vf)__builtin_convertvector(__builtin_convertvector(x, ptp_2x2_vd) + \
+    __builtin_convertvector(o, ptp_2x2_vd) * __builtin_convertvector(w, ptp_2x2_vd), ptp_2x2_vf))
 #endif
+#ifndef PTP_2X2_VLOCAL
+#define PTP_2X2_VLOCAL PTP_2X2_VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define PTP_2X2_VRECIP0(x) ((ptp_2x2_vf)((ptp_2x2_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_2x2_vf ptp_2x2_vabsmax(ptp_2x2_vf r, ptp_2x2_vf x)
 {
@@ -220,10 +230,13 @@ static inline void ptp_2x2_vstoref(float *d, ptp_2x2_vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_2X2_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define PTP_2X2_VLOCAL PTP_2X2_VFMA
 #else
 #define PTP_2X2_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_2X2_VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define PTP_2X2_VFMAS PTP_2X2_VFMA
+#define PTP_2X2_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float ptp_2x2_alpha(const float proj[16], int layout)
@@ -508,12 +521,14 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
             qs = PTP_2X2_VW;
         }
 #endif
-        const ptp_2x2_vf x1 = ptp_2x2_vload(q + 4 * qs), y1 = ptp_2x2_vload(q + 5 * qs),
+        const ptp_2x2_vf rw = PTP_2X2_VRECIP0(ptp_2x2_vload(q + 3 * qs));
+        const ptp_2x2_vf ox = -(ptp_2x2_vload(q + 0 * qs) * rw), oy = -(ptp_2x2_vload(q + 1 * qs) * rw);
+        const ptp_2x2_vf x1 = PTP_2X2_VLOCAL(ox, ptp_2x2_vload(q + 7 * qs), ptp_2x2_vload(q + 4 * qs)), y1 = PTP_2X2_VLOCAL(oy, ptp_2x2_vload(q + 7 * qs), ptp_2x2_vload(q + 5 * qs)),
             w1 = ptp_2x2_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_2x2_vf x3 = ptp_2x2_vload(q + 12 * qs), y3 = ptp_2x2_vload(q + 13 * qs),
+        const ptp_2x2_vf x3 = PTP_2X2_VLOCAL(ox, ptp_2x2_vload(q + 15 * qs), ptp_2x2_vload(q + 12 * qs)), y3 = PTP_2X2_VLOCAL(oy, ptp_2x2_vload(q + 15 * qs), ptp_2x2_vload(q + 13 * qs)),
             w3 = ptp_2x2_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_2x2_vf m1_3 = x1 * y3 - y1 * x3;
-        const ptp_2x2_vf x0 = ptp_2x2_vload(q + 0 * qs), y0 = ptp_2x2_vload(q + 1 * qs),
+        const ptp_2x2_vf x0 = PTP_2X2_VLOCAL(ox, ptp_2x2_vload(q + 3 * qs), ptp_2x2_vload(q + 0 * qs)), y0 = PTP_2X2_VLOCAL(oy, ptp_2x2_vload(q + 3 * qs), ptp_2x2_vload(q + 1 * qs)),
             w0 = ptp_2x2_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_2x2_vf m0_3 = x0 * y3 - y0 * x3;
         const ptp_2x2_vf m0_1 = x0 * y1 - y0 * x1;
@@ -523,9 +538,9 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
             ptp_2x2_vstoref(d + 0 * ds + l, v * 4.0f, n - l);
         lt = PTP_2X2_KLT0(v);
         gt = PTP_2X2_KGT0(v); /* plane 0 */
-        const ptp_2x2_vf x2 = ptp_2x2_vload(q + 8 * qs), y2 = ptp_2x2_vload(q + 9 * qs),
+        const ptp_2x2_vf x2 = PTP_2X2_VLOCAL(ox, ptp_2x2_vload(q + 11 * qs), ptp_2x2_vload(q + 8 * qs)), y2 = PTP_2X2_VLOCAL(oy, ptp_2x2_vload(q + 11 * qs), ptp_2x2_vload(q + 9 * qs)),
             w2 = ptp_2x2_vload(q + 11 * qs), g2 = e2 * w2;
-        const ptp_2x2_vf x5 = ptp_2x2_vload(q + 20 * qs), y5 = ptp_2x2_vload(q + 21 * qs),
+        const ptp_2x2_vf x5 = PTP_2X2_VLOCAL(ox, ptp_2x2_vload(q + 23 * qs), ptp_2x2_vload(q + 20 * qs)), y5 = PTP_2X2_VLOCAL(oy, ptp_2x2_vload(q + 23 * qs), ptp_2x2_vload(q + 21 * qs)),
             w5 = ptp_2x2_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_2x2_vf m2_5 = x2 * y5 - y2 * x5;
         const ptp_2x2_vf m1_5 = x1 * y5 - y1 * x5;
@@ -540,7 +555,7 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         const ptp_2x2_vf m0_2 = x0 * y2 - y0 * x2;
         u = -((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
-        const ptp_2x2_vf x4 = ptp_2x2_vload(q + 16 * qs), y4 = ptp_2x2_vload(q + 17 * qs),
+        const ptp_2x2_vf x4 = PTP_2X2_VLOCAL(ox, ptp_2x2_vload(q + 19 * qs), ptp_2x2_vload(q + 16 * qs)), y4 = PTP_2X2_VLOCAL(oy, ptp_2x2_vload(q + 19 * qs), ptp_2x2_vload(q + 17 * qs)),
             w4 = ptp_2x2_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_2x2_vf m1_4 = x1 * y4 - y1 * x4;
         const ptp_2x2_vf m0_4 = x0 * y4 - y0 * x4;
@@ -569,7 +584,7 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
             ptp_2x2_vstoref(d + 3 * ds + l, v, n - l);
         lt = PTP_2X2_KLT(lt, v);
         gt = PTP_2X2_KGT(gt, v); /* plane 3 */
-        const ptp_2x2_vf x6 = ptp_2x2_vload(q + 24 * qs), y6 = ptp_2x2_vload(q + 25 * qs),
+        const ptp_2x2_vf x6 = PTP_2X2_VLOCAL(ox, ptp_2x2_vload(q + 27 * qs), ptp_2x2_vload(q + 24 * qs)), y6 = PTP_2X2_VLOCAL(oy, ptp_2x2_vload(q + 27 * qs), ptp_2x2_vload(q + 25 * qs)),
             w6 = ptp_2x2_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_2x2_vf m1_6 = x1 * y6 - y1 * x6;
         const ptp_2x2_vf m0_6 = x0 * y6 - y0 * x6;
@@ -582,7 +597,7 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
             ptp_2x2_vstoref(d + 5 * ds + l, v, n - l);
         lt = PTP_2X2_KLT(lt, v);
         gt = PTP_2X2_KGT(gt, v); /* plane 5 */
-        const ptp_2x2_vf x8 = ptp_2x2_vload(q + 32 * qs), y8 = ptp_2x2_vload(q + 33 * qs),
+        const ptp_2x2_vf x8 = PTP_2X2_VLOCAL(ox, ptp_2x2_vload(q + 35 * qs), ptp_2x2_vload(q + 32 * qs)), y8 = PTP_2X2_VLOCAL(oy, ptp_2x2_vload(q + 35 * qs), ptp_2x2_vload(q + 33 * qs)),
             w8 = ptp_2x2_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_2x2_vf m2_8 = x2 * y8 - y2 * x8;
         const ptp_2x2_vf m1_8 = x1 * y8 - y1 * x8;
@@ -598,7 +613,7 @@ static inline void ptp_2x2_lanes_body(const float *PTP_2X2_RESTRICT soa, size_t 
         const ptp_2x2_vf m2_6 = x2 * y6 - y2 * x6;
         u = -((g0 * m2_6 - g2 * m0_6) + g6 * m0_2);
         v = u;
-        const ptp_2x2_vf x7 = ptp_2x2_vload(q + 28 * qs), y7 = ptp_2x2_vload(q + 29 * qs),
+        const ptp_2x2_vf x7 = PTP_2X2_VLOCAL(ox, ptp_2x2_vload(q + 31 * qs), ptp_2x2_vload(q + 28 * qs)), y7 = PTP_2X2_VLOCAL(oy, ptp_2x2_vload(q + 31 * qs), ptp_2x2_vload(q + 29 * qs)),
             w7 = ptp_2x2_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_2x2_vf m1_7 = x1 * y7 - y1 * x7;
         const ptp_2x2_vf m0_7 = x0 * y7 - y0 * x7;

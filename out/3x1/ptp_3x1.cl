@@ -33,17 +33,20 @@ uint ptp_3x1_classify_patch(const float4 cp[8], float4 eye)
     float e2 = eye.z;
     float u, v;
     bool lt, gt;
-    const float x1 = cp[1].x;
-    const float y1 = cp[1].y;
+    const float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    const float ox = -(cp[0].x * rw);
+    const float oy = -(cp[0].y * rw);
+    const float x1 = fma(ox, cp[1].w, cp[1].x);
+    const float y1 = fma(oy, cp[1].w, cp[1].y);
     const float w1 = cp[1].w;
     const float g1 = e2 * w1;
-    const float x2 = cp[2].x;
-    const float y2 = cp[2].y;
+    const float x2 = fma(ox, cp[2].w, cp[2].x);
+    const float y2 = fma(oy, cp[2].w, cp[2].y);
     const float w2 = cp[2].w;
     const float g2 = e2 * w2;
     const float m1_2 = x1 * y2 - y1 * x2;
-    const float x0 = cp[0].x;
-    const float y0 = cp[0].y;
+    const float x0 = fma(ox, cp[0].w, cp[0].x);
+    const float y0 = fma(oy, cp[0].w, cp[0].y);
     const float w0 = cp[0].w;
     const float g0 = e2 * w0;
     const float m0_2 = x0 * y2 - y0 * x2;
@@ -52,8 +55,8 @@ uint ptp_3x1_classify_patch(const float4 cp[8], float4 eye)
     v = u;
     lt = v < 0.0f;
     gt = v > 0.0f; /* plane 0 */
-    const float x3 = cp[3].x;
-    const float y3 = cp[3].y;
+    const float x3 = fma(ox, cp[3].w, cp[3].x);
+    const float y3 = fma(oy, cp[3].w, cp[3].y);
     const float w3 = cp[3].w;
     const float g3 = e2 * w3;
     const float m1_3 = x1 * y3 - y1 * x3;
@@ -62,8 +65,8 @@ uint ptp_3x1_classify_patch(const float4 cp[8], float4 eye)
     v = u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 1 */
-    const float x4 = cp[4].x;
-    const float y4 = cp[4].y;
+    const float x4 = fma(ox, cp[4].w, cp[4].x);
+    const float y4 = fma(oy, cp[4].w, cp[4].y);
     const float w4 = cp[4].w;
     const float g4 = e2 * w4;
     const float m1_4 = x1 * y4 - y1 * x4;
@@ -75,8 +78,8 @@ uint ptp_3x1_classify_patch(const float4 cp[8], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 2 */
-    const float x5 = cp[5].x;
-    const float y5 = cp[5].y;
+    const float x5 = fma(ox, cp[5].w, cp[5].x);
+    const float y5 = fma(oy, cp[5].w, cp[5].y);
     const float w5 = cp[5].w;
     const float g5 = e2 * w5;
     const float m1_5 = x1 * y5 - y1 * x5;
@@ -87,8 +90,8 @@ uint ptp_3x1_classify_patch(const float4 cp[8], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 3 */
-    const float x6 = cp[6].x;
-    const float y6 = cp[6].y;
+    const float x6 = fma(ox, cp[6].w, cp[6].x);
+    const float y6 = fma(oy, cp[6].w, cp[6].y);
     const float w6 = cp[6].w;
     const float g6 = e2 * w6;
     const float m1_6 = x1 * y6 - y1 * x6;
@@ -106,8 +109,8 @@ uint ptp_3x1_classify_patch(const float4 cp[8], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 4 */
-    const float x7 = cp[7].x;
-    const float y7 = cp[7].y;
+    const float x7 = fma(ox, cp[7].w, cp[7].x);
+    const float y7 = fma(oy, cp[7].w, cp[7].y);
     const float w7 = cp[7].w;
     const float g7 = e2 * w7;
     const float m1_7 = x1 * y7 - y1 * x7;
@@ -233,17 +236,20 @@ void ptp_3x1_values(const float4 cp[8], float4 eye, float d[16])
 {
     float e2 = eye.z;
     float u, v;
-    const float x1 = cp[1].x;
-    const float y1 = cp[1].y;
+    const float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    const float ox = -(cp[0].x * rw);
+    const float oy = -(cp[0].y * rw);
+    const float x1 = fma(ox, cp[1].w, cp[1].x);
+    const float y1 = fma(oy, cp[1].w, cp[1].y);
     const float w1 = cp[1].w;
     const float g1 = e2 * w1;
-    const float x2 = cp[2].x;
-    const float y2 = cp[2].y;
+    const float x2 = fma(ox, cp[2].w, cp[2].x);
+    const float y2 = fma(oy, cp[2].w, cp[2].y);
     const float w2 = cp[2].w;
     const float g2 = e2 * w2;
     const float m1_2 = x1 * y2 - y1 * x2;
-    const float x0 = cp[0].x;
-    const float y0 = cp[0].y;
+    const float x0 = fma(ox, cp[0].w, cp[0].x);
+    const float y0 = fma(oy, cp[0].w, cp[0].y);
     const float w0 = cp[0].w;
     const float g0 = e2 * w0;
     const float m0_2 = x0 * y2 - y0 * x2;
@@ -251,8 +257,8 @@ void ptp_3x1_values(const float4 cp[8], float4 eye, float d[16])
     u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
     v = u;
     d[0] = v * 3.0f;
-    const float x3 = cp[3].x;
-    const float y3 = cp[3].y;
+    const float x3 = fma(ox, cp[3].w, cp[3].x);
+    const float y3 = fma(oy, cp[3].w, cp[3].y);
     const float w3 = cp[3].w;
     const float g3 = e2 * w3;
     const float m1_3 = x1 * y3 - y1 * x3;
@@ -260,8 +266,8 @@ void ptp_3x1_values(const float4 cp[8], float4 eye, float d[16])
     u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
     v = u;
     d[1] = v * 3.0f;
-    const float x4 = cp[4].x;
-    const float y4 = cp[4].y;
+    const float x4 = fma(ox, cp[4].w, cp[4].x);
+    const float y4 = fma(oy, cp[4].w, cp[4].y);
     const float w4 = cp[4].w;
     const float g4 = e2 * w4;
     const float m1_4 = x1 * y4 - y1 * x4;
@@ -272,8 +278,8 @@ void ptp_3x1_values(const float4 cp[8], float4 eye, float d[16])
     u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
     v += (u + u) + u;
     d[2] = v * 0.428571433f;
-    const float x5 = cp[5].x;
-    const float y5 = cp[5].y;
+    const float x5 = fma(ox, cp[5].w, cp[5].x);
+    const float y5 = fma(oy, cp[5].w, cp[5].y);
     const float w5 = cp[5].w;
     const float g5 = e2 * w5;
     const float m1_5 = x1 * y5 - y1 * x5;
@@ -283,8 +289,8 @@ void ptp_3x1_values(const float4 cp[8], float4 eye, float d[16])
     u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
     v += (u + u) + u;
     d[3] = v * 0.428571433f;
-    const float x6 = cp[6].x;
-    const float y6 = cp[6].y;
+    const float x6 = fma(ox, cp[6].w, cp[6].x);
+    const float y6 = fma(oy, cp[6].w, cp[6].y);
     const float w6 = cp[6].w;
     const float g6 = e2 * w6;
     const float m1_6 = x1 * y6 - y1 * x6;
@@ -301,8 +307,8 @@ void ptp_3x1_values(const float4 cp[8], float4 eye, float d[16])
     u = u + u;
     v += (u + u) + u;
     d[4] = v * 0.142857149f;
-    const float x7 = cp[7].x;
-    const float y7 = cp[7].y;
+    const float x7 = fma(ox, cp[7].w, cp[7].x);
+    const float y7 = fma(oy, cp[7].w, cp[7].y);
     const float w7 = cp[7].w;
     const float g7 = e2 * w7;
     const float m1_7 = x1 * y7 - y1 * x7;

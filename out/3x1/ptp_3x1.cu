@@ -31,17 +31,20 @@ static __device__ inline unsigned ptp_3x1_classify_patch(const float4 cp[8], flo
     float e2 = eye.z;
     float u, v;
     bool lt, gt;
-    const float x1 = cp[1].x;
-    const float y1 = cp[1].y;
+    const float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    const float ox = -(__fmul_rn(cp[0].x, rw));
+    const float oy = -(__fmul_rn(cp[0].y, rw));
+    const float x1 = __fmaf_rn(ox, cp[1].w, cp[1].x);
+    const float y1 = __fmaf_rn(oy, cp[1].w, cp[1].y);
     const float w1 = cp[1].w;
     const float g1 = __fmul_rn(e2, w1);
-    const float x2 = cp[2].x;
-    const float y2 = cp[2].y;
+    const float x2 = __fmaf_rn(ox, cp[2].w, cp[2].x);
+    const float y2 = __fmaf_rn(oy, cp[2].w, cp[2].y);
     const float w2 = cp[2].w;
     const float g2 = __fmul_rn(e2, w2);
     const float m1_2 = __fmul_rn(x1, y2) - __fmul_rn(y1, x2);
-    const float x0 = cp[0].x;
-    const float y0 = cp[0].y;
+    const float x0 = __fmaf_rn(ox, cp[0].w, cp[0].x);
+    const float y0 = __fmaf_rn(oy, cp[0].w, cp[0].y);
     const float w0 = cp[0].w;
     const float g0 = __fmul_rn(e2, w0);
     const float m0_2 = __fmul_rn(x0, y2) - __fmul_rn(y0, x2);
@@ -50,8 +53,8 @@ static __device__ inline unsigned ptp_3x1_classify_patch(const float4 cp[8], flo
     v = u;
     lt = v < 0.0f;
     gt = v > 0.0f; /* plane 0 */
-    const float x3 = cp[3].x;
-    const float y3 = cp[3].y;
+    const float x3 = __fmaf_rn(ox, cp[3].w, cp[3].x);
+    const float y3 = __fmaf_rn(oy, cp[3].w, cp[3].y);
     const float w3 = cp[3].w;
     const float g3 = __fmul_rn(e2, w3);
     const float m1_3 = __fmul_rn(x1, y3) - __fmul_rn(y1, x3);
@@ -60,8 +63,8 @@ static __device__ inline unsigned ptp_3x1_classify_patch(const float4 cp[8], flo
     v = u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 1 */
-    const float x4 = cp[4].x;
-    const float y4 = cp[4].y;
+    const float x4 = __fmaf_rn(ox, cp[4].w, cp[4].x);
+    const float y4 = __fmaf_rn(oy, cp[4].w, cp[4].y);
     const float w4 = cp[4].w;
     const float g4 = __fmul_rn(e2, w4);
     const float m1_4 = __fmul_rn(x1, y4) - __fmul_rn(y1, x4);
@@ -73,8 +76,8 @@ static __device__ inline unsigned ptp_3x1_classify_patch(const float4 cp[8], flo
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 2 */
-    const float x5 = cp[5].x;
-    const float y5 = cp[5].y;
+    const float x5 = __fmaf_rn(ox, cp[5].w, cp[5].x);
+    const float y5 = __fmaf_rn(oy, cp[5].w, cp[5].y);
     const float w5 = cp[5].w;
     const float g5 = __fmul_rn(e2, w5);
     const float m1_5 = __fmul_rn(x1, y5) - __fmul_rn(y1, x5);
@@ -85,8 +88,8 @@ static __device__ inline unsigned ptp_3x1_classify_patch(const float4 cp[8], flo
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 3 */
-    const float x6 = cp[6].x;
-    const float y6 = cp[6].y;
+    const float x6 = __fmaf_rn(ox, cp[6].w, cp[6].x);
+    const float y6 = __fmaf_rn(oy, cp[6].w, cp[6].y);
     const float w6 = cp[6].w;
     const float g6 = __fmul_rn(e2, w6);
     const float m1_6 = __fmul_rn(x1, y6) - __fmul_rn(y1, x6);
@@ -104,8 +107,8 @@ static __device__ inline unsigned ptp_3x1_classify_patch(const float4 cp[8], flo
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 4 */
-    const float x7 = cp[7].x;
-    const float y7 = cp[7].y;
+    const float x7 = __fmaf_rn(ox, cp[7].w, cp[7].x);
+    const float y7 = __fmaf_rn(oy, cp[7].w, cp[7].y);
     const float w7 = cp[7].w;
     const float g7 = __fmul_rn(e2, w7);
     const float m1_7 = __fmul_rn(x1, y7) - __fmul_rn(y1, x7);
@@ -231,17 +234,20 @@ static __device__ inline void ptp_3x1_values(const float4 cp[8], float4 eye, flo
 {
     float e2 = eye.z;
     float u, v;
-    const float x1 = cp[1].x;
-    const float y1 = cp[1].y;
+    const float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    const float ox = -(__fmul_rn(cp[0].x, rw));
+    const float oy = -(__fmul_rn(cp[0].y, rw));
+    const float x1 = __fmaf_rn(ox, cp[1].w, cp[1].x);
+    const float y1 = __fmaf_rn(oy, cp[1].w, cp[1].y);
     const float w1 = cp[1].w;
     const float g1 = __fmul_rn(e2, w1);
-    const float x2 = cp[2].x;
-    const float y2 = cp[2].y;
+    const float x2 = __fmaf_rn(ox, cp[2].w, cp[2].x);
+    const float y2 = __fmaf_rn(oy, cp[2].w, cp[2].y);
     const float w2 = cp[2].w;
     const float g2 = __fmul_rn(e2, w2);
     const float m1_2 = __fmul_rn(x1, y2) - __fmul_rn(y1, x2);
-    const float x0 = cp[0].x;
-    const float y0 = cp[0].y;
+    const float x0 = __fmaf_rn(ox, cp[0].w, cp[0].x);
+    const float y0 = __fmaf_rn(oy, cp[0].w, cp[0].y);
     const float w0 = cp[0].w;
     const float g0 = __fmul_rn(e2, w0);
     const float m0_2 = __fmul_rn(x0, y2) - __fmul_rn(y0, x2);
@@ -249,8 +255,8 @@ static __device__ inline void ptp_3x1_values(const float4 cp[8], float4 eye, flo
     u = -((__fmul_rn(g0, m1_2) - __fmul_rn(g1, m0_2)) + __fmul_rn(g2, m0_1));
     v = u;
     d[0] = __fmul_rn(v, 3.0f);
-    const float x3 = cp[3].x;
-    const float y3 = cp[3].y;
+    const float x3 = __fmaf_rn(ox, cp[3].w, cp[3].x);
+    const float y3 = __fmaf_rn(oy, cp[3].w, cp[3].y);
     const float w3 = cp[3].w;
     const float g3 = __fmul_rn(e2, w3);
     const float m1_3 = __fmul_rn(x1, y3) - __fmul_rn(y1, x3);
@@ -258,8 +264,8 @@ static __device__ inline void ptp_3x1_values(const float4 cp[8], float4 eye, flo
     u = -((__fmul_rn(g0, m1_3) - __fmul_rn(g1, m0_3)) + __fmul_rn(g3, m0_1));
     v = u;
     d[1] = __fmul_rn(v, 3.0f);
-    const float x4 = cp[4].x;
-    const float y4 = cp[4].y;
+    const float x4 = __fmaf_rn(ox, cp[4].w, cp[4].x);
+    const float y4 = __fmaf_rn(oy, cp[4].w, cp[4].y);
     const float w4 = cp[4].w;
     const float g4 = __fmul_rn(e2, w4);
     const float m1_4 = __fmul_rn(x1, y4) - __fmul_rn(y1, x4);
@@ -270,8 +276,8 @@ static __device__ inline void ptp_3x1_values(const float4 cp[8], float4 eye, flo
     u = ((__fmul_rn(g0, m2_3) - __fmul_rn(g2, m0_3)) + __fmul_rn(g3, m0_2));
     v += (u + u) + u;
     d[2] = __fmul_rn(v, 0.428571433f);
-    const float x5 = cp[5].x;
-    const float y5 = cp[5].y;
+    const float x5 = __fmaf_rn(ox, cp[5].w, cp[5].x);
+    const float y5 = __fmaf_rn(oy, cp[5].w, cp[5].y);
     const float w5 = cp[5].w;
     const float g5 = __fmul_rn(e2, w5);
     const float m1_5 = __fmul_rn(x1, y5) - __fmul_rn(y1, x5);
@@ -281,8 +287,8 @@ static __device__ inline void ptp_3x1_values(const float4 cp[8], float4 eye, flo
     u = ((__fmul_rn(g1, m2_3) - __fmul_rn(g2, m1_3)) + __fmul_rn(g3, m1_2));
     v += (u + u) + u;
     d[3] = __fmul_rn(v, 0.428571433f);
-    const float x6 = cp[6].x;
-    const float y6 = cp[6].y;
+    const float x6 = __fmaf_rn(ox, cp[6].w, cp[6].x);
+    const float y6 = __fmaf_rn(oy, cp[6].w, cp[6].y);
     const float w6 = cp[6].w;
     const float g6 = __fmul_rn(e2, w6);
     const float m1_6 = __fmul_rn(x1, y6) - __fmul_rn(y1, x6);
@@ -299,8 +305,8 @@ static __device__ inline void ptp_3x1_values(const float4 cp[8], float4 eye, flo
     u = u + u;
     v += (u + u) + u;
     d[4] = __fmul_rn(v, 0.142857149f);
-    const float x7 = cp[7].x;
-    const float y7 = cp[7].y;
+    const float x7 = __fmaf_rn(ox, cp[7].w, cp[7].x);
+    const float y7 = __fmaf_rn(oy, cp[7].w, cp[7].y);
     const float w7 = cp[7].w;
     const float g7 = __fmul_rn(e2, w7);
     const float m1_7 = __fmul_rn(x1, y7) - __fmul_rn(y1, x7);

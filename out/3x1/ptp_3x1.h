@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_3X1_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_3X1_FLOPS 436
-#define PTP_3X1_MULS 208
+#define PTP_3X1_FLOPS 471
+#define PTP_3X1_MULS 226
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X1_LANES
 #define PTP_3X1_LANES 16
@@ -168,7 +168,9 @@ static inline void ptp_3x1_vstoref(float *d, ptp_3x1_vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if PTP_3X1_VW == 16
 #include <immintrin.h>
@@ -189,7 +191,15 @@ static inline void ptp_3x1_vstoref(float *d, ptp_3x1_vf v, size_t count)
 #else
 #define PTP_3X1_VFMA(a, b, c) ((a) * (b) + (c))
 #define PTP_3X1_VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double ptp_3x1_vd __attribute__((vector_size(8 * PTP_3X1_VW)));
+#define PTP_3X1_VLOCAL(o, w, x) ((ptp_3x1_vf)__builtin_convertvector(__builtin_convertvector(x, ptp_3x1_vd) + \
+    __builtin_convertvector(o, ptp_3x1_vd) * __builtin_convertvector(w, ptp_3x1_vd), ptp_3x1_vf))
 #endif
+#ifndef PTP_3X1_VLOCAL
+#define PTP_3X1_VLOCAL PTP_3X1_VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define PTP_3X1_VRECIP0(x) ((ptp_3x1_vf)((ptp_3x1_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_3x1_vf ptp_3x1_vabsmax(ptp_3x1_vf r, ptp_3x1_vf x)
 {
@@ -220,10 +230,13 @@ static inline void ptp_3x1_vstoref(float *d, ptp_3x1_vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_3X1_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define PTP_3X1_VLOCAL PTP_3X1_VFMA
 #else
 #define PTP_3X1_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_3X1_VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define PTP_3X1_VFMAS PTP_3X1_VFMA
+#define PTP_3X1_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float ptp_3x1_alpha(const float proj[16], int layout)
@@ -452,12 +465,14 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
             qs = PTP_3X1_VW;
         }
 #endif
-        const ptp_3x1_vf x1 = ptp_3x1_vload(q + 4 * qs), y1 = ptp_3x1_vload(q + 5 * qs),
+        const ptp_3x1_vf rw = PTP_3X1_VRECIP0(ptp_3x1_vload(q + 3 * qs));
+        const ptp_3x1_vf ox = -(ptp_3x1_vload(q + 0 * qs) * rw), oy = -(ptp_3x1_vload(q + 1 * qs) * rw);
+        const ptp_3x1_vf x1 = PTP_3X1_VLOCAL(ox, ptp_3x1_vload(q + 7 * qs), ptp_3x1_vload(q + 4 * qs)), y1 = PTP_3X1_VLOCAL(oy, ptp_3x1_vload(q + 7 * qs), ptp_3x1_vload(q + 5 * qs)),
             w1 = ptp_3x1_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_3x1_vf x2 = ptp_3x1_vload(q + 8 * qs), y2 = ptp_3x1_vload(q + 9 * qs),
+        const ptp_3x1_vf x2 = PTP_3X1_VLOCAL(ox, ptp_3x1_vload(q + 11 * qs), ptp_3x1_vload(q + 8 * qs)), y2 = PTP_3X1_VLOCAL(oy, ptp_3x1_vload(q + 11 * qs), ptp_3x1_vload(q + 9 * qs)),
             w2 = ptp_3x1_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_3x1_vf m1_2 = x1 * y2 - y1 * x2;
-        const ptp_3x1_vf x0 = ptp_3x1_vload(q + 0 * qs), y0 = ptp_3x1_vload(q + 1 * qs),
+        const ptp_3x1_vf x0 = PTP_3X1_VLOCAL(ox, ptp_3x1_vload(q + 3 * qs), ptp_3x1_vload(q + 0 * qs)), y0 = PTP_3X1_VLOCAL(oy, ptp_3x1_vload(q + 3 * qs), ptp_3x1_vload(q + 1 * qs)),
             w0 = ptp_3x1_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_3x1_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_3x1_vf m0_1 = x0 * y1 - y0 * x1;
@@ -467,7 +482,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
             ptp_3x1_vstoref(d + 0 * ds + l, v * 3.0f, n - l);
         lt = PTP_3X1_KLT0(v);
         gt = PTP_3X1_KGT0(v); /* plane 0 */
-        const ptp_3x1_vf x3 = ptp_3x1_vload(q + 12 * qs), y3 = ptp_3x1_vload(q + 13 * qs),
+        const ptp_3x1_vf x3 = PTP_3X1_VLOCAL(ox, ptp_3x1_vload(q + 15 * qs), ptp_3x1_vload(q + 12 * qs)), y3 = PTP_3X1_VLOCAL(oy, ptp_3x1_vload(q + 15 * qs), ptp_3x1_vload(q + 13 * qs)),
             w3 = ptp_3x1_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_3x1_vf m1_3 = x1 * y3 - y1 * x3;
         const ptp_3x1_vf m0_3 = x0 * y3 - y0 * x3;
@@ -477,7 +492,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
             ptp_3x1_vstoref(d + 1 * ds + l, v * 3.0f, n - l);
         lt = PTP_3X1_KLT(lt, v);
         gt = PTP_3X1_KGT(gt, v); /* plane 1 */
-        const ptp_3x1_vf x4 = ptp_3x1_vload(q + 16 * qs), y4 = ptp_3x1_vload(q + 17 * qs),
+        const ptp_3x1_vf x4 = PTP_3X1_VLOCAL(ox, ptp_3x1_vload(q + 19 * qs), ptp_3x1_vload(q + 16 * qs)), y4 = PTP_3X1_VLOCAL(oy, ptp_3x1_vload(q + 19 * qs), ptp_3x1_vload(q + 17 * qs)),
             w4 = ptp_3x1_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_3x1_vf m1_4 = x1 * y4 - y1 * x4;
         const ptp_3x1_vf m0_4 = x0 * y4 - y0 * x4;
@@ -490,7 +505,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
             ptp_3x1_vstoref(d + 2 * ds + l, v * 0.428571433f, n - l);
         lt = PTP_3X1_KLT(lt, v);
         gt = PTP_3X1_KGT(gt, v); /* plane 2 */
-        const ptp_3x1_vf x5 = ptp_3x1_vload(q + 20 * qs), y5 = ptp_3x1_vload(q + 21 * qs),
+        const ptp_3x1_vf x5 = PTP_3X1_VLOCAL(ox, ptp_3x1_vload(q + 23 * qs), ptp_3x1_vload(q + 20 * qs)), y5 = PTP_3X1_VLOCAL(oy, ptp_3x1_vload(q + 23 * qs), ptp_3x1_vload(q + 21 * qs)),
             w5 = ptp_3x1_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_3x1_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_3x1_vf m0_5 = x0 * y5 - y0 * x5;
@@ -502,7 +517,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
             ptp_3x1_vstoref(d + 3 * ds + l, v * 0.428571433f, n - l);
         lt = PTP_3X1_KLT(lt, v);
         gt = PTP_3X1_KGT(gt, v); /* plane 3 */
-        const ptp_3x1_vf x6 = ptp_3x1_vload(q + 24 * qs), y6 = ptp_3x1_vload(q + 25 * qs),
+        const ptp_3x1_vf x6 = PTP_3X1_VLOCAL(ox, ptp_3x1_vload(q + 27 * qs), ptp_3x1_vload(q + 24 * qs)), y6 = PTP_3X1_VLOCAL(oy, ptp_3x1_vload(q + 27 * qs), ptp_3x1_vload(q + 25 * qs)),
             w6 = ptp_3x1_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_3x1_vf m1_6 = x1 * y6 - y1 * x6;
         const ptp_3x1_vf m0_6 = x0 * y6 - y0 * x6;
@@ -521,7 +536,7 @@ static inline void ptp_3x1_lanes_body(const float *PTP_3X1_RESTRICT soa, size_t 
             ptp_3x1_vstoref(d + 4 * ds + l, v * 0.142857149f, n - l);
         lt = PTP_3X1_KLT(lt, v);
         gt = PTP_3X1_KGT(gt, v); /* plane 4 */
-        const ptp_3x1_vf x7 = ptp_3x1_vload(q + 28 * qs), y7 = ptp_3x1_vload(q + 29 * qs),
+        const ptp_3x1_vf x7 = PTP_3X1_VLOCAL(ox, ptp_3x1_vload(q + 31 * qs), ptp_3x1_vload(q + 28 * qs)), y7 = PTP_3X1_VLOCAL(oy, ptp_3x1_vload(q + 31 * qs), ptp_3x1_vload(q + 29 * qs)),
             w7 = ptp_3x1_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_3x1_vf m1_7 = x1 * y7 - y1 * x7;
         const ptp_3x1_vf m0_7 = x0 * y7 - y0 * x7;

@@ -45,17 +45,20 @@ uint ptp_3x1_classify_patch(float4 cp[8], float4 eye)
     precise float e2 = eye.z;
     precise float u, v;
     bool lt, gt;
-    precise float x1 = cp[1].x;
-    precise float y1 = cp[1].y;
+    precise float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    precise float ox = -(cp[0].x * rw);
+    precise float oy = -(cp[0].y * rw);
+    precise float x1 = mad(ox, cp[1].w, cp[1].x);
+    precise float y1 = mad(oy, cp[1].w, cp[1].y);
     precise float w1 = cp[1].w;
     precise float g1 = e2 * w1;
-    precise float x2 = cp[2].x;
-    precise float y2 = cp[2].y;
+    precise float x2 = mad(ox, cp[2].w, cp[2].x);
+    precise float y2 = mad(oy, cp[2].w, cp[2].y);
     precise float w2 = cp[2].w;
     precise float g2 = e2 * w2;
     precise float m1_2 = x1 * y2 - y1 * x2;
-    precise float x0 = cp[0].x;
-    precise float y0 = cp[0].y;
+    precise float x0 = mad(ox, cp[0].w, cp[0].x);
+    precise float y0 = mad(oy, cp[0].w, cp[0].y);
     precise float w0 = cp[0].w;
     precise float g0 = e2 * w0;
     precise float m0_2 = x0 * y2 - y0 * x2;
@@ -64,8 +67,8 @@ uint ptp_3x1_classify_patch(float4 cp[8], float4 eye)
     v = u;
     lt = v < 0.0f;
     gt = v > 0.0f; /* plane 0 */
-    precise float x3 = cp[3].x;
-    precise float y3 = cp[3].y;
+    precise float x3 = mad(ox, cp[3].w, cp[3].x);
+    precise float y3 = mad(oy, cp[3].w, cp[3].y);
     precise float w3 = cp[3].w;
     precise float g3 = e2 * w3;
     precise float m1_3 = x1 * y3 - y1 * x3;
@@ -74,8 +77,8 @@ uint ptp_3x1_classify_patch(float4 cp[8], float4 eye)
     v = u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 1 */
-    precise float x4 = cp[4].x;
-    precise float y4 = cp[4].y;
+    precise float x4 = mad(ox, cp[4].w, cp[4].x);
+    precise float y4 = mad(oy, cp[4].w, cp[4].y);
     precise float w4 = cp[4].w;
     precise float g4 = e2 * w4;
     precise float m1_4 = x1 * y4 - y1 * x4;
@@ -87,8 +90,8 @@ uint ptp_3x1_classify_patch(float4 cp[8], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 2 */
-    precise float x5 = cp[5].x;
-    precise float y5 = cp[5].y;
+    precise float x5 = mad(ox, cp[5].w, cp[5].x);
+    precise float y5 = mad(oy, cp[5].w, cp[5].y);
     precise float w5 = cp[5].w;
     precise float g5 = e2 * w5;
     precise float m1_5 = x1 * y5 - y1 * x5;
@@ -99,8 +102,8 @@ uint ptp_3x1_classify_patch(float4 cp[8], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 3 */
-    precise float x6 = cp[6].x;
-    precise float y6 = cp[6].y;
+    precise float x6 = mad(ox, cp[6].w, cp[6].x);
+    precise float y6 = mad(oy, cp[6].w, cp[6].y);
     precise float w6 = cp[6].w;
     precise float g6 = e2 * w6;
     precise float m1_6 = x1 * y6 - y1 * x6;
@@ -118,8 +121,8 @@ uint ptp_3x1_classify_patch(float4 cp[8], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 4 */
-    precise float x7 = cp[7].x;
-    precise float y7 = cp[7].y;
+    precise float x7 = mad(ox, cp[7].w, cp[7].x);
+    precise float y7 = mad(oy, cp[7].w, cp[7].y);
     precise float w7 = cp[7].w;
     precise float g7 = e2 * w7;
     precise float m1_7 = x1 * y7 - y1 * x7;
@@ -245,17 +248,20 @@ void ptp_3x1_values(float4 cp[8], float4 eye, out float d[16])
 {
     precise float e2 = eye.z;
     precise float u, v;
-    precise float x1 = cp[1].x;
-    precise float y1 = cp[1].y;
+    precise float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    precise float ox = -(cp[0].x * rw);
+    precise float oy = -(cp[0].y * rw);
+    precise float x1 = mad(ox, cp[1].w, cp[1].x);
+    precise float y1 = mad(oy, cp[1].w, cp[1].y);
     precise float w1 = cp[1].w;
     precise float g1 = e2 * w1;
-    precise float x2 = cp[2].x;
-    precise float y2 = cp[2].y;
+    precise float x2 = mad(ox, cp[2].w, cp[2].x);
+    precise float y2 = mad(oy, cp[2].w, cp[2].y);
     precise float w2 = cp[2].w;
     precise float g2 = e2 * w2;
     precise float m1_2 = x1 * y2 - y1 * x2;
-    precise float x0 = cp[0].x;
-    precise float y0 = cp[0].y;
+    precise float x0 = mad(ox, cp[0].w, cp[0].x);
+    precise float y0 = mad(oy, cp[0].w, cp[0].y);
     precise float w0 = cp[0].w;
     precise float g0 = e2 * w0;
     precise float m0_2 = x0 * y2 - y0 * x2;
@@ -263,8 +269,8 @@ void ptp_3x1_values(float4 cp[8], float4 eye, out float d[16])
     u = -((g0 * m1_2 - g1 * m0_2) + g2 * m0_1);
     v = u;
     d[0] = v * 3.0f;
-    precise float x3 = cp[3].x;
-    precise float y3 = cp[3].y;
+    precise float x3 = mad(ox, cp[3].w, cp[3].x);
+    precise float y3 = mad(oy, cp[3].w, cp[3].y);
     precise float w3 = cp[3].w;
     precise float g3 = e2 * w3;
     precise float m1_3 = x1 * y3 - y1 * x3;
@@ -272,8 +278,8 @@ void ptp_3x1_values(float4 cp[8], float4 eye, out float d[16])
     u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
     v = u;
     d[1] = v * 3.0f;
-    precise float x4 = cp[4].x;
-    precise float y4 = cp[4].y;
+    precise float x4 = mad(ox, cp[4].w, cp[4].x);
+    precise float y4 = mad(oy, cp[4].w, cp[4].y);
     precise float w4 = cp[4].w;
     precise float g4 = e2 * w4;
     precise float m1_4 = x1 * y4 - y1 * x4;
@@ -284,8 +290,8 @@ void ptp_3x1_values(float4 cp[8], float4 eye, out float d[16])
     u = ((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
     v += (u + u) + u;
     d[2] = v * 0.428571433f;
-    precise float x5 = cp[5].x;
-    precise float y5 = cp[5].y;
+    precise float x5 = mad(ox, cp[5].w, cp[5].x);
+    precise float y5 = mad(oy, cp[5].w, cp[5].y);
     precise float w5 = cp[5].w;
     precise float g5 = e2 * w5;
     precise float m1_5 = x1 * y5 - y1 * x5;
@@ -295,8 +301,8 @@ void ptp_3x1_values(float4 cp[8], float4 eye, out float d[16])
     u = ((g1 * m2_3 - g2 * m1_3) + g3 * m1_2);
     v += (u + u) + u;
     d[3] = v * 0.428571433f;
-    precise float x6 = cp[6].x;
-    precise float y6 = cp[6].y;
+    precise float x6 = mad(ox, cp[6].w, cp[6].x);
+    precise float y6 = mad(oy, cp[6].w, cp[6].y);
     precise float w6 = cp[6].w;
     precise float g6 = e2 * w6;
     precise float m1_6 = x1 * y6 - y1 * x6;
@@ -313,8 +319,8 @@ void ptp_3x1_values(float4 cp[8], float4 eye, out float d[16])
     u = u + u;
     v += (u + u) + u;
     d[4] = v * 0.142857149f;
-    precise float x7 = cp[7].x;
-    precise float y7 = cp[7].y;
+    precise float x7 = mad(ox, cp[7].w, cp[7].x);
+    precise float y7 = mad(oy, cp[7].w, cp[7].y);
     precise float w7 = cp[7].w;
     precise float g7 = e2 * w7;
     precise float m1_7 = x1 * y7 - y1 * x7;

@@ -63,17 +63,20 @@ fn ptp_3x1_classify_patch(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32) ->
     var v: f32;
     var lt: bool;
     var gt: bool;
-    let x1 = cp[1].x;
-    let y1 = cp[1].y;
+    let rw = select(0.0f, 1.0f / cp[0].w, cp[0].w != 0.0f);
+    let ox = -(ptp_3x1_mul_rn(cp[0].x, rw, zero));
+    let oy = -(ptp_3x1_mul_rn(cp[0].y, rw, zero));
+    let x1 = fma(ox, cp[1].w, cp[1].x);
+    let y1 = fma(oy, cp[1].w, cp[1].y);
     let w1 = cp[1].w;
     let g1 = ptp_3x1_mul_rn(e2, w1, zero);
-    let x2 = cp[2].x;
-    let y2 = cp[2].y;
+    let x2 = fma(ox, cp[2].w, cp[2].x);
+    let y2 = fma(oy, cp[2].w, cp[2].y);
     let w2 = cp[2].w;
     let g2 = ptp_3x1_mul_rn(e2, w2, zero);
     let m1_2 = ptp_3x1_mul_rn(x1, y2, zero) - ptp_3x1_mul_rn(y1, x2, zero);
-    let x0 = cp[0].x;
-    let y0 = cp[0].y;
+    let x0 = fma(ox, cp[0].w, cp[0].x);
+    let y0 = fma(oy, cp[0].w, cp[0].y);
     let w0 = cp[0].w;
     let g0 = ptp_3x1_mul_rn(e2, w0, zero);
     let m0_2 = ptp_3x1_mul_rn(x0, y2, zero) - ptp_3x1_mul_rn(y0, x2, zero);
@@ -82,8 +85,8 @@ fn ptp_3x1_classify_patch(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32) ->
     v = u;
     lt = v < 0.0f;
     gt = v > 0.0f; /* plane 0 */
-    let x3 = cp[3].x;
-    let y3 = cp[3].y;
+    let x3 = fma(ox, cp[3].w, cp[3].x);
+    let y3 = fma(oy, cp[3].w, cp[3].y);
     let w3 = cp[3].w;
     let g3 = ptp_3x1_mul_rn(e2, w3, zero);
     let m1_3 = ptp_3x1_mul_rn(x1, y3, zero) - ptp_3x1_mul_rn(y1, x3, zero);
@@ -92,8 +95,8 @@ fn ptp_3x1_classify_patch(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32) ->
     v = u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 1 */
-    let x4 = cp[4].x;
-    let y4 = cp[4].y;
+    let x4 = fma(ox, cp[4].w, cp[4].x);
+    let y4 = fma(oy, cp[4].w, cp[4].y);
     let w4 = cp[4].w;
     let g4 = ptp_3x1_mul_rn(e2, w4, zero);
     let m1_4 = ptp_3x1_mul_rn(x1, y4, zero) - ptp_3x1_mul_rn(y1, x4, zero);
@@ -105,8 +108,8 @@ fn ptp_3x1_classify_patch(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32) ->
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 2 */
-    let x5 = cp[5].x;
-    let y5 = cp[5].y;
+    let x5 = fma(ox, cp[5].w, cp[5].x);
+    let y5 = fma(oy, cp[5].w, cp[5].y);
     let w5 = cp[5].w;
     let g5 = ptp_3x1_mul_rn(e2, w5, zero);
     let m1_5 = ptp_3x1_mul_rn(x1, y5, zero) - ptp_3x1_mul_rn(y1, x5, zero);
@@ -117,8 +120,8 @@ fn ptp_3x1_classify_patch(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32) ->
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 3 */
-    let x6 = cp[6].x;
-    let y6 = cp[6].y;
+    let x6 = fma(ox, cp[6].w, cp[6].x);
+    let y6 = fma(oy, cp[6].w, cp[6].y);
     let w6 = cp[6].w;
     let g6 = ptp_3x1_mul_rn(e2, w6, zero);
     let m1_6 = ptp_3x1_mul_rn(x1, y6, zero) - ptp_3x1_mul_rn(y1, x6, zero);
@@ -136,8 +139,8 @@ fn ptp_3x1_classify_patch(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32) ->
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 4 */
-    let x7 = cp[7].x;
-    let y7 = cp[7].y;
+    let x7 = fma(ox, cp[7].w, cp[7].x);
+    let y7 = fma(oy, cp[7].w, cp[7].y);
     let w7 = cp[7].w;
     let g7 = ptp_3x1_mul_rn(e2, w7, zero);
     let m1_7 = ptp_3x1_mul_rn(x1, y7, zero) - ptp_3x1_mul_rn(y1, x7, zero);
@@ -264,17 +267,20 @@ fn ptp_3x1_values(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32,
     let e2: f32 = eye.z;
     var u: f32;
     var v: f32;
-    let x1 = cp[1].x;
-    let y1 = cp[1].y;
+    let rw = select(0.0f, 1.0f / cp[0].w, cp[0].w != 0.0f);
+    let ox = -(ptp_3x1_mul_rn(cp[0].x, rw, zero));
+    let oy = -(ptp_3x1_mul_rn(cp[0].y, rw, zero));
+    let x1 = fma(ox, cp[1].w, cp[1].x);
+    let y1 = fma(oy, cp[1].w, cp[1].y);
     let w1 = cp[1].w;
     let g1 = ptp_3x1_mul_rn(e2, w1, zero);
-    let x2 = cp[2].x;
-    let y2 = cp[2].y;
+    let x2 = fma(ox, cp[2].w, cp[2].x);
+    let y2 = fma(oy, cp[2].w, cp[2].y);
     let w2 = cp[2].w;
     let g2 = ptp_3x1_mul_rn(e2, w2, zero);
     let m1_2 = ptp_3x1_mul_rn(x1, y2, zero) - ptp_3x1_mul_rn(y1, x2, zero);
-    let x0 = cp[0].x;
-    let y0 = cp[0].y;
+    let x0 = fma(ox, cp[0].w, cp[0].x);
+    let y0 = fma(oy, cp[0].w, cp[0].y);
     let w0 = cp[0].w;
     let g0 = ptp_3x1_mul_rn(e2, w0, zero);
     let m0_2 = ptp_3x1_mul_rn(x0, y2, zero) - ptp_3x1_mul_rn(y0, x2, zero);
@@ -282,8 +288,8 @@ fn ptp_3x1_values(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32,
     u = -((ptp_3x1_mul_rn(g0, m1_2, zero) - ptp_3x1_mul_rn(g1, m0_2, zero)) + ptp_3x1_mul_rn(g2, m0_1, zero));
     v = u;
     (*d)[0] = v * 3.0f;
-    let x3 = cp[3].x;
-    let y3 = cp[3].y;
+    let x3 = fma(ox, cp[3].w, cp[3].x);
+    let y3 = fma(oy, cp[3].w, cp[3].y);
     let w3 = cp[3].w;
     let g3 = ptp_3x1_mul_rn(e2, w3, zero);
     let m1_3 = ptp_3x1_mul_rn(x1, y3, zero) - ptp_3x1_mul_rn(y1, x3, zero);
@@ -291,8 +297,8 @@ fn ptp_3x1_values(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32,
     u = -((ptp_3x1_mul_rn(g0, m1_3, zero) - ptp_3x1_mul_rn(g1, m0_3, zero)) + ptp_3x1_mul_rn(g3, m0_1, zero));
     v = u;
     (*d)[1] = v * 3.0f;
-    let x4 = cp[4].x;
-    let y4 = cp[4].y;
+    let x4 = fma(ox, cp[4].w, cp[4].x);
+    let y4 = fma(oy, cp[4].w, cp[4].y);
     let w4 = cp[4].w;
     let g4 = ptp_3x1_mul_rn(e2, w4, zero);
     let m1_4 = ptp_3x1_mul_rn(x1, y4, zero) - ptp_3x1_mul_rn(y1, x4, zero);
@@ -303,8 +309,8 @@ fn ptp_3x1_values(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32,
     u = ((ptp_3x1_mul_rn(g0, m2_3, zero) - ptp_3x1_mul_rn(g2, m0_3, zero)) + ptp_3x1_mul_rn(g3, m0_2, zero));
     v += (u + u) + u;
     (*d)[2] = v * 0.428571433f;
-    let x5 = cp[5].x;
-    let y5 = cp[5].y;
+    let x5 = fma(ox, cp[5].w, cp[5].x);
+    let y5 = fma(oy, cp[5].w, cp[5].y);
     let w5 = cp[5].w;
     let g5 = ptp_3x1_mul_rn(e2, w5, zero);
     let m1_5 = ptp_3x1_mul_rn(x1, y5, zero) - ptp_3x1_mul_rn(y1, x5, zero);
@@ -314,8 +320,8 @@ fn ptp_3x1_values(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32,
     u = ((ptp_3x1_mul_rn(g1, m2_3, zero) - ptp_3x1_mul_rn(g2, m1_3, zero)) + ptp_3x1_mul_rn(g3, m1_2, zero));
     v += (u + u) + u;
     (*d)[3] = v * 0.428571433f;
-    let x6 = cp[6].x;
-    let y6 = cp[6].y;
+    let x6 = fma(ox, cp[6].w, cp[6].x);
+    let y6 = fma(oy, cp[6].w, cp[6].y);
     let w6 = cp[6].w;
     let g6 = ptp_3x1_mul_rn(e2, w6, zero);
     let m1_6 = ptp_3x1_mul_rn(x1, y6, zero) - ptp_3x1_mul_rn(y1, x6, zero);
@@ -332,8 +338,8 @@ fn ptp_3x1_values(cp: array<vec4<f32>, 8>, eye: vec4<f32>, zero: u32,
     u = u + u;
     v += (u + u) + u;
     (*d)[4] = v * 0.142857149f;
-    let x7 = cp[7].x;
-    let y7 = cp[7].y;
+    let x7 = fma(ox, cp[7].w, cp[7].x);
+    let y7 = fma(oy, cp[7].w, cp[7].y);
     let w7 = cp[7].w;
     let g7 = ptp_3x1_mul_rn(e2, w7, zero);
     let m1_7 = ptp_3x1_mul_rn(x1, y7, zero) - ptp_3x1_mul_rn(y1, x7, zero);

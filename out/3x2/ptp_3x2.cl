@@ -33,17 +33,20 @@ uint ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
     float e2 = eye.z;
     float u, v;
     bool lt, gt;
-    const float x1 = cp[1].x;
-    const float y1 = cp[1].y;
+    const float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    const float ox = -(cp[0].x * rw);
+    const float oy = -(cp[0].y * rw);
+    const float x1 = fma(ox, cp[1].w, cp[1].x);
+    const float y1 = fma(oy, cp[1].w, cp[1].y);
     const float w1 = cp[1].w;
     const float g1 = e2 * w1;
-    const float x3 = cp[3].x;
-    const float y3 = cp[3].y;
+    const float x3 = fma(ox, cp[3].w, cp[3].x);
+    const float y3 = fma(oy, cp[3].w, cp[3].y);
     const float w3 = cp[3].w;
     const float g3 = e2 * w3;
     const float m1_3 = x1 * y3 - y1 * x3;
-    const float x0 = cp[0].x;
-    const float y0 = cp[0].y;
+    const float x0 = fma(ox, cp[0].w, cp[0].x);
+    const float y0 = fma(oy, cp[0].w, cp[0].y);
     const float w0 = cp[0].w;
     const float g0 = e2 * w0;
     const float m0_3 = x0 * y3 - y0 * x3;
@@ -52,12 +55,12 @@ uint ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
     v = u;
     lt = v < 0.0f;
     gt = v > 0.0f; /* plane 0 */
-    const float x2 = cp[2].x;
-    const float y2 = cp[2].y;
+    const float x2 = fma(ox, cp[2].w, cp[2].x);
+    const float y2 = fma(oy, cp[2].w, cp[2].y);
     const float w2 = cp[2].w;
     const float g2 = e2 * w2;
-    const float x5 = cp[5].x;
-    const float y5 = cp[5].y;
+    const float x5 = fma(ox, cp[5].w, cp[5].x);
+    const float y5 = fma(oy, cp[5].w, cp[5].y);
     const float w5 = cp[5].w;
     const float g5 = e2 * w5;
     const float m2_5 = x2 * y5 - y2 * x5;
@@ -71,8 +74,8 @@ uint ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
     const float m0_2 = x0 * y2 - y0 * x2;
     u = -((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
     v = u;
-    const float x4 = cp[4].x;
-    const float y4 = cp[4].y;
+    const float x4 = fma(ox, cp[4].w, cp[4].x);
+    const float y4 = fma(oy, cp[4].w, cp[4].y);
     const float w4 = cp[4].w;
     const float g4 = e2 * w4;
     const float m1_4 = x1 * y4 - y1 * x4;
@@ -96,8 +99,8 @@ uint ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
     v += (u + u);
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 3 */
-    const float x6 = cp[6].x;
-    const float y6 = cp[6].y;
+    const float x6 = fma(ox, cp[6].w, cp[6].x);
+    const float y6 = fma(oy, cp[6].w, cp[6].y);
     const float w6 = cp[6].w;
     const float g6 = e2 * w6;
     const float m1_6 = x1 * y6 - y1 * x6;
@@ -109,8 +112,8 @@ uint ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 5 */
-    const float x8 = cp[8].x;
-    const float y8 = cp[8].y;
+    const float x8 = fma(ox, cp[8].w, cp[8].x);
+    const float y8 = fma(oy, cp[8].w, cp[8].y);
     const float w8 = cp[8].w;
     const float g8 = e2 * w8;
     const float m2_8 = x2 * y8 - y2 * x8;
@@ -132,8 +135,8 @@ uint ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
     u = fma(g3, -m0_5, u);
     u = fma(g5, m0_3, u);
     v += (u + u) + u;
-    const float x7 = cp[7].x;
-    const float y7 = cp[7].y;
+    const float x7 = fma(ox, cp[7].w, cp[7].x);
+    const float y7 = fma(oy, cp[7].w, cp[7].y);
     const float w7 = cp[7].w;
     const float g7 = e2 * w7;
     const float m1_7 = x1 * y7 - y1 * x7;
@@ -183,8 +186,8 @@ uint ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 7 */
-    const float x9 = cp[9].x;
-    const float y9 = cp[9].y;
+    const float x9 = fma(ox, cp[9].w, cp[9].x);
+    const float y9 = fma(oy, cp[9].w, cp[9].y);
     const float w9 = cp[9].w;
     const float g9 = e2 * w9;
     const float m1_9 = x1 * y9 - y1 * x9;
@@ -202,8 +205,8 @@ uint ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 10 */
-    const float x11 = cp[11].x;
-    const float y11 = cp[11].y;
+    const float x11 = fma(ox, cp[11].w, cp[11].x);
+    const float y11 = fma(oy, cp[11].w, cp[11].y);
     const float w11 = cp[11].w;
     const float g11 = e2 * w11;
     const float m2_11 = x2 * y11 - y2 * x11;
@@ -221,8 +224,8 @@ uint ptp_3x2_classify_patch(const float4 cp[12], float4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 14 */
-    const float x10 = cp[10].x;
-    const float y10 = cp[10].y;
+    const float x10 = fma(ox, cp[10].w, cp[10].x);
+    const float y10 = fma(oy, cp[10].w, cp[10].y);
     const float w10 = cp[10].w;
     const float g10 = e2 * w10;
     const float m3_10 = x3 * y10 - y3 * x10;
@@ -825,17 +828,20 @@ void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
 {
     float e2 = eye.z;
     float u, v;
-    const float x1 = cp[1].x;
-    const float y1 = cp[1].y;
+    const float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    const float ox = -(cp[0].x * rw);
+    const float oy = -(cp[0].y * rw);
+    const float x1 = fma(ox, cp[1].w, cp[1].x);
+    const float y1 = fma(oy, cp[1].w, cp[1].y);
     const float w1 = cp[1].w;
     const float g1 = e2 * w1;
-    const float x3 = cp[3].x;
-    const float y3 = cp[3].y;
+    const float x3 = fma(ox, cp[3].w, cp[3].x);
+    const float y3 = fma(oy, cp[3].w, cp[3].y);
     const float w3 = cp[3].w;
     const float g3 = e2 * w3;
     const float m1_3 = x1 * y3 - y1 * x3;
-    const float x0 = cp[0].x;
-    const float y0 = cp[0].y;
+    const float x0 = fma(ox, cp[0].w, cp[0].x);
+    const float y0 = fma(oy, cp[0].w, cp[0].y);
     const float w0 = cp[0].w;
     const float g0 = e2 * w0;
     const float m0_3 = x0 * y3 - y0 * x3;
@@ -843,12 +849,12 @@ void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
     u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
     v = u;
     d[0] = v * 6.0f;
-    const float x2 = cp[2].x;
-    const float y2 = cp[2].y;
+    const float x2 = fma(ox, cp[2].w, cp[2].x);
+    const float y2 = fma(oy, cp[2].w, cp[2].y);
     const float w2 = cp[2].w;
     const float g2 = e2 * w2;
-    const float x5 = cp[5].x;
-    const float y5 = cp[5].y;
+    const float x5 = fma(ox, cp[5].w, cp[5].x);
+    const float y5 = fma(oy, cp[5].w, cp[5].y);
     const float w5 = cp[5].w;
     const float g5 = e2 * w5;
     const float m2_5 = x2 * y5 - y2 * x5;
@@ -861,8 +867,8 @@ void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
     const float m0_2 = x0 * y2 - y0 * x2;
     u = -((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
     v = u;
-    const float x4 = cp[4].x;
-    const float y4 = cp[4].y;
+    const float x4 = fma(ox, cp[4].w, cp[4].x);
+    const float y4 = fma(oy, cp[4].w, cp[4].y);
     const float w4 = cp[4].w;
     const float g4 = e2 * w4;
     const float m1_4 = x1 * y4 - y1 * x4;
@@ -883,8 +889,8 @@ void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
     u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
     v += (u + u);
     d[3] = v * 1.5f;
-    const float x6 = cp[6].x;
-    const float y6 = cp[6].y;
+    const float x6 = fma(ox, cp[6].w, cp[6].x);
+    const float y6 = fma(oy, cp[6].w, cp[6].y);
     const float w6 = cp[6].w;
     const float g6 = e2 * w6;
     const float m1_6 = x1 * y6 - y1 * x6;
@@ -895,8 +901,8 @@ void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
     u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
     v += (u + u) + u;
     d[5] = v * 0.857142866f;
-    const float x8 = cp[8].x;
-    const float y8 = cp[8].y;
+    const float x8 = fma(ox, cp[8].w, cp[8].x);
+    const float y8 = fma(oy, cp[8].w, cp[8].y);
     const float w8 = cp[8].w;
     const float g8 = e2 * w8;
     const float m2_8 = x2 * y8 - y2 * x8;
@@ -917,8 +923,8 @@ void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
     u = fma(g3, -m0_5, u);
     u = fma(g5, m0_3, u);
     v += (u + u) + u;
-    const float x7 = cp[7].x;
-    const float y7 = cp[7].y;
+    const float x7 = fma(ox, cp[7].w, cp[7].x);
+    const float y7 = fma(oy, cp[7].w, cp[7].y);
     const float w7 = cp[7].w;
     const float g7 = e2 * w7;
     const float m1_7 = x1 * y7 - y1 * x7;
@@ -965,8 +971,8 @@ void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
     u = u + u;
     v += (u + u) + u;
     d[7] = v * 0.142857149f;
-    const float x9 = cp[9].x;
-    const float y9 = cp[9].y;
+    const float x9 = fma(ox, cp[9].w, cp[9].x);
+    const float y9 = fma(oy, cp[9].w, cp[9].y);
     const float w9 = cp[9].w;
     const float g9 = e2 * w9;
     const float m1_9 = x1 * y9 - y1 * x9;
@@ -983,8 +989,8 @@ void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
     u = u + u;
     v += (u + u) + u;
     d[10] = v * 0.285714298f;
-    const float x11 = cp[11].x;
-    const float y11 = cp[11].y;
+    const float x11 = fma(ox, cp[11].w, cp[11].x);
+    const float y11 = fma(oy, cp[11].w, cp[11].y);
     const float w11 = cp[11].w;
     const float g11 = e2 * w11;
     const float m2_11 = x2 * y11 - y2 * x11;
@@ -1001,8 +1007,8 @@ void ptp_3x2_values(const float4 cp[12], float4 eye, float d[40])
     u = u + u;
     v += (u + u) + u;
     d[14] = v * 0.285714298f;
-    const float x10 = cp[10].x;
-    const float y10 = cp[10].y;
+    const float x10 = fma(ox, cp[10].w, cp[10].x);
+    const float y10 = fma(oy, cp[10].w, cp[10].y);
     const float w10 = cp[10].w;
     const float g10 = e2 * w10;
     const float m3_10 = x3 * y10 - y3 * x10;

@@ -41,17 +41,20 @@ uint ptp_3x2_classify_patch(vec4 cp[12], vec4 eye)
     precise float e2 = eye.z;
     precise float u, v;
     bool lt, gt;
-    precise float x1 = cp[1].x;
-    precise float y1 = cp[1].y;
+    precise float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    precise float ox = -(cp[0].x * rw);
+    precise float oy = -(cp[0].y * rw);
+    precise float x1 = fma(ox, cp[1].w, cp[1].x);
+    precise float y1 = fma(oy, cp[1].w, cp[1].y);
     precise float w1 = cp[1].w;
     precise float g1 = e2 * w1;
-    precise float x3 = cp[3].x;
-    precise float y3 = cp[3].y;
+    precise float x3 = fma(ox, cp[3].w, cp[3].x);
+    precise float y3 = fma(oy, cp[3].w, cp[3].y);
     precise float w3 = cp[3].w;
     precise float g3 = e2 * w3;
     precise float m1_3 = x1 * y3 - y1 * x3;
-    precise float x0 = cp[0].x;
-    precise float y0 = cp[0].y;
+    precise float x0 = fma(ox, cp[0].w, cp[0].x);
+    precise float y0 = fma(oy, cp[0].w, cp[0].y);
     precise float w0 = cp[0].w;
     precise float g0 = e2 * w0;
     precise float m0_3 = x0 * y3 - y0 * x3;
@@ -60,12 +63,12 @@ uint ptp_3x2_classify_patch(vec4 cp[12], vec4 eye)
     v = u;
     lt = v < 0.0f;
     gt = v > 0.0f; /* plane 0 */
-    precise float x2 = cp[2].x;
-    precise float y2 = cp[2].y;
+    precise float x2 = fma(ox, cp[2].w, cp[2].x);
+    precise float y2 = fma(oy, cp[2].w, cp[2].y);
     precise float w2 = cp[2].w;
     precise float g2 = e2 * w2;
-    precise float x5 = cp[5].x;
-    precise float y5 = cp[5].y;
+    precise float x5 = fma(ox, cp[5].w, cp[5].x);
+    precise float y5 = fma(oy, cp[5].w, cp[5].y);
     precise float w5 = cp[5].w;
     precise float g5 = e2 * w5;
     precise float m2_5 = x2 * y5 - y2 * x5;
@@ -79,8 +82,8 @@ uint ptp_3x2_classify_patch(vec4 cp[12], vec4 eye)
     precise float m0_2 = x0 * y2 - y0 * x2;
     u = -((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
     v = u;
-    precise float x4 = cp[4].x;
-    precise float y4 = cp[4].y;
+    precise float x4 = fma(ox, cp[4].w, cp[4].x);
+    precise float y4 = fma(oy, cp[4].w, cp[4].y);
     precise float w4 = cp[4].w;
     precise float g4 = e2 * w4;
     precise float m1_4 = x1 * y4 - y1 * x4;
@@ -104,8 +107,8 @@ uint ptp_3x2_classify_patch(vec4 cp[12], vec4 eye)
     v += (u + u);
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 3 */
-    precise float x6 = cp[6].x;
-    precise float y6 = cp[6].y;
+    precise float x6 = fma(ox, cp[6].w, cp[6].x);
+    precise float y6 = fma(oy, cp[6].w, cp[6].y);
     precise float w6 = cp[6].w;
     precise float g6 = e2 * w6;
     precise float m1_6 = x1 * y6 - y1 * x6;
@@ -117,8 +120,8 @@ uint ptp_3x2_classify_patch(vec4 cp[12], vec4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 5 */
-    precise float x8 = cp[8].x;
-    precise float y8 = cp[8].y;
+    precise float x8 = fma(ox, cp[8].w, cp[8].x);
+    precise float y8 = fma(oy, cp[8].w, cp[8].y);
     precise float w8 = cp[8].w;
     precise float g8 = e2 * w8;
     precise float m2_8 = x2 * y8 - y2 * x8;
@@ -140,8 +143,8 @@ uint ptp_3x2_classify_patch(vec4 cp[12], vec4 eye)
     u = fma(g3, -m0_5, u);
     u = fma(g5, m0_3, u);
     v += (u + u) + u;
-    precise float x7 = cp[7].x;
-    precise float y7 = cp[7].y;
+    precise float x7 = fma(ox, cp[7].w, cp[7].x);
+    precise float y7 = fma(oy, cp[7].w, cp[7].y);
     precise float w7 = cp[7].w;
     precise float g7 = e2 * w7;
     precise float m1_7 = x1 * y7 - y1 * x7;
@@ -191,8 +194,8 @@ uint ptp_3x2_classify_patch(vec4 cp[12], vec4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 7 */
-    precise float x9 = cp[9].x;
-    precise float y9 = cp[9].y;
+    precise float x9 = fma(ox, cp[9].w, cp[9].x);
+    precise float y9 = fma(oy, cp[9].w, cp[9].y);
     precise float w9 = cp[9].w;
     precise float g9 = e2 * w9;
     precise float m1_9 = x1 * y9 - y1 * x9;
@@ -210,8 +213,8 @@ uint ptp_3x2_classify_patch(vec4 cp[12], vec4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 10 */
-    precise float x11 = cp[11].x;
-    precise float y11 = cp[11].y;
+    precise float x11 = fma(ox, cp[11].w, cp[11].x);
+    precise float y11 = fma(oy, cp[11].w, cp[11].y);
     precise float w11 = cp[11].w;
     precise float g11 = e2 * w11;
     precise float m2_11 = x2 * y11 - y2 * x11;
@@ -229,8 +232,8 @@ uint ptp_3x2_classify_patch(vec4 cp[12], vec4 eye)
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 14 */
-    precise float x10 = cp[10].x;
-    precise float y10 = cp[10].y;
+    precise float x10 = fma(ox, cp[10].w, cp[10].x);
+    precise float y10 = fma(oy, cp[10].w, cp[10].y);
     precise float w10 = cp[10].w;
     precise float g10 = e2 * w10;
     precise float m3_10 = x3 * y10 - y3 * x10;
@@ -833,17 +836,20 @@ void ptp_3x2_values(vec4 cp[12], vec4 eye, out float d[40])
 {
     precise float e2 = eye.z;
     precise float u, v;
-    precise float x1 = cp[1].x;
-    precise float y1 = cp[1].y;
+    precise float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    precise float ox = -(cp[0].x * rw);
+    precise float oy = -(cp[0].y * rw);
+    precise float x1 = fma(ox, cp[1].w, cp[1].x);
+    precise float y1 = fma(oy, cp[1].w, cp[1].y);
     precise float w1 = cp[1].w;
     precise float g1 = e2 * w1;
-    precise float x3 = cp[3].x;
-    precise float y3 = cp[3].y;
+    precise float x3 = fma(ox, cp[3].w, cp[3].x);
+    precise float y3 = fma(oy, cp[3].w, cp[3].y);
     precise float w3 = cp[3].w;
     precise float g3 = e2 * w3;
     precise float m1_3 = x1 * y3 - y1 * x3;
-    precise float x0 = cp[0].x;
-    precise float y0 = cp[0].y;
+    precise float x0 = fma(ox, cp[0].w, cp[0].x);
+    precise float y0 = fma(oy, cp[0].w, cp[0].y);
     precise float w0 = cp[0].w;
     precise float g0 = e2 * w0;
     precise float m0_3 = x0 * y3 - y0 * x3;
@@ -851,12 +857,12 @@ void ptp_3x2_values(vec4 cp[12], vec4 eye, out float d[40])
     u = -((g0 * m1_3 - g1 * m0_3) + g3 * m0_1);
     v = u;
     d[0] = v * 6.0f;
-    precise float x2 = cp[2].x;
-    precise float y2 = cp[2].y;
+    precise float x2 = fma(ox, cp[2].w, cp[2].x);
+    precise float y2 = fma(oy, cp[2].w, cp[2].y);
     precise float w2 = cp[2].w;
     precise float g2 = e2 * w2;
-    precise float x5 = cp[5].x;
-    precise float y5 = cp[5].y;
+    precise float x5 = fma(ox, cp[5].w, cp[5].x);
+    precise float y5 = fma(oy, cp[5].w, cp[5].y);
     precise float w5 = cp[5].w;
     precise float g5 = e2 * w5;
     precise float m2_5 = x2 * y5 - y2 * x5;
@@ -869,8 +875,8 @@ void ptp_3x2_values(vec4 cp[12], vec4 eye, out float d[40])
     precise float m0_2 = x0 * y2 - y0 * x2;
     u = -((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
     v = u;
-    precise float x4 = cp[4].x;
-    precise float y4 = cp[4].y;
+    precise float x4 = fma(ox, cp[4].w, cp[4].x);
+    precise float y4 = fma(oy, cp[4].w, cp[4].y);
     precise float w4 = cp[4].w;
     precise float g4 = e2 * w4;
     precise float m1_4 = x1 * y4 - y1 * x4;
@@ -891,8 +897,8 @@ void ptp_3x2_values(vec4 cp[12], vec4 eye, out float d[40])
     u = -((g1 * m2_4 - g2 * m1_4) + g4 * m1_2);
     v += (u + u);
     d[3] = v * 1.5f;
-    precise float x6 = cp[6].x;
-    precise float y6 = cp[6].y;
+    precise float x6 = fma(ox, cp[6].w, cp[6].x);
+    precise float y6 = fma(oy, cp[6].w, cp[6].y);
     precise float w6 = cp[6].w;
     precise float g6 = e2 * w6;
     precise float m1_6 = x1 * y6 - y1 * x6;
@@ -903,8 +909,8 @@ void ptp_3x2_values(vec4 cp[12], vec4 eye, out float d[40])
     u = ((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
     v += (u + u) + u;
     d[5] = v * 0.857142866f;
-    precise float x8 = cp[8].x;
-    precise float y8 = cp[8].y;
+    precise float x8 = fma(ox, cp[8].w, cp[8].x);
+    precise float y8 = fma(oy, cp[8].w, cp[8].y);
     precise float w8 = cp[8].w;
     precise float g8 = e2 * w8;
     precise float m2_8 = x2 * y8 - y2 * x8;
@@ -925,8 +931,8 @@ void ptp_3x2_values(vec4 cp[12], vec4 eye, out float d[40])
     u = fma(g3, -m0_5, u);
     u = fma(g5, m0_3, u);
     v += (u + u) + u;
-    precise float x7 = cp[7].x;
-    precise float y7 = cp[7].y;
+    precise float x7 = fma(ox, cp[7].w, cp[7].x);
+    precise float y7 = fma(oy, cp[7].w, cp[7].y);
     precise float w7 = cp[7].w;
     precise float g7 = e2 * w7;
     precise float m1_7 = x1 * y7 - y1 * x7;
@@ -973,8 +979,8 @@ void ptp_3x2_values(vec4 cp[12], vec4 eye, out float d[40])
     u = u + u;
     v += (u + u) + u;
     d[7] = v * 0.142857149f;
-    precise float x9 = cp[9].x;
-    precise float y9 = cp[9].y;
+    precise float x9 = fma(ox, cp[9].w, cp[9].x);
+    precise float y9 = fma(oy, cp[9].w, cp[9].y);
     precise float w9 = cp[9].w;
     precise float g9 = e2 * w9;
     precise float m1_9 = x1 * y9 - y1 * x9;
@@ -991,8 +997,8 @@ void ptp_3x2_values(vec4 cp[12], vec4 eye, out float d[40])
     u = u + u;
     v += (u + u) + u;
     d[10] = v * 0.285714298f;
-    precise float x11 = cp[11].x;
-    precise float y11 = cp[11].y;
+    precise float x11 = fma(ox, cp[11].w, cp[11].x);
+    precise float y11 = fma(oy, cp[11].w, cp[11].y);
     precise float w11 = cp[11].w;
     precise float g11 = e2 * w11;
     precise float m2_11 = x2 * y11 - y2 * x11;
@@ -1009,8 +1015,8 @@ void ptp_3x2_values(vec4 cp[12], vec4 eye, out float d[40])
     u = u + u;
     v += (u + u) + u;
     d[14] = v * 0.285714298f;
-    precise float x10 = cp[10].x;
-    precise float y10 = cp[10].y;
+    precise float x10 = fma(ox, cp[10].w, cp[10].x);
+    precise float y10 = fma(oy, cp[10].w, cp[10].y);
     precise float w10 = cp[10].w;
     precise float g10 = e2 * w10;
     precise float m3_10 = x3 * y10 - y3 * x10;

@@ -31,17 +31,20 @@ static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], fl
     float e2 = eye.z;
     float u, v;
     bool lt, gt;
-    const float x1 = cp[1].x;
-    const float y1 = cp[1].y;
+    const float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    const float ox = -(__fmul_rn(cp[0].x, rw));
+    const float oy = -(__fmul_rn(cp[0].y, rw));
+    const float x1 = __fmaf_rn(ox, cp[1].w, cp[1].x);
+    const float y1 = __fmaf_rn(oy, cp[1].w, cp[1].y);
     const float w1 = cp[1].w;
     const float g1 = __fmul_rn(e2, w1);
-    const float x3 = cp[3].x;
-    const float y3 = cp[3].y;
+    const float x3 = __fmaf_rn(ox, cp[3].w, cp[3].x);
+    const float y3 = __fmaf_rn(oy, cp[3].w, cp[3].y);
     const float w3 = cp[3].w;
     const float g3 = __fmul_rn(e2, w3);
     const float m1_3 = __fmul_rn(x1, y3) - __fmul_rn(y1, x3);
-    const float x0 = cp[0].x;
-    const float y0 = cp[0].y;
+    const float x0 = __fmaf_rn(ox, cp[0].w, cp[0].x);
+    const float y0 = __fmaf_rn(oy, cp[0].w, cp[0].y);
     const float w0 = cp[0].w;
     const float g0 = __fmul_rn(e2, w0);
     const float m0_3 = __fmul_rn(x0, y3) - __fmul_rn(y0, x3);
@@ -50,12 +53,12 @@ static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], fl
     v = u;
     lt = v < 0.0f;
     gt = v > 0.0f; /* plane 0 */
-    const float x2 = cp[2].x;
-    const float y2 = cp[2].y;
+    const float x2 = __fmaf_rn(ox, cp[2].w, cp[2].x);
+    const float y2 = __fmaf_rn(oy, cp[2].w, cp[2].y);
     const float w2 = cp[2].w;
     const float g2 = __fmul_rn(e2, w2);
-    const float x5 = cp[5].x;
-    const float y5 = cp[5].y;
+    const float x5 = __fmaf_rn(ox, cp[5].w, cp[5].x);
+    const float y5 = __fmaf_rn(oy, cp[5].w, cp[5].y);
     const float w5 = cp[5].w;
     const float g5 = __fmul_rn(e2, w5);
     const float m2_5 = __fmul_rn(x2, y5) - __fmul_rn(y2, x5);
@@ -69,8 +72,8 @@ static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], fl
     const float m0_2 = __fmul_rn(x0, y2) - __fmul_rn(y0, x2);
     u = -((__fmul_rn(g0, m2_3) - __fmul_rn(g2, m0_3)) + __fmul_rn(g3, m0_2));
     v = u;
-    const float x4 = cp[4].x;
-    const float y4 = cp[4].y;
+    const float x4 = __fmaf_rn(ox, cp[4].w, cp[4].x);
+    const float y4 = __fmaf_rn(oy, cp[4].w, cp[4].y);
     const float w4 = cp[4].w;
     const float g4 = __fmul_rn(e2, w4);
     const float m1_4 = __fmul_rn(x1, y4) - __fmul_rn(y1, x4);
@@ -94,8 +97,8 @@ static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], fl
     v += (u + u);
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 3 */
-    const float x6 = cp[6].x;
-    const float y6 = cp[6].y;
+    const float x6 = __fmaf_rn(ox, cp[6].w, cp[6].x);
+    const float y6 = __fmaf_rn(oy, cp[6].w, cp[6].y);
     const float w6 = cp[6].w;
     const float g6 = __fmul_rn(e2, w6);
     const float m1_6 = __fmul_rn(x1, y6) - __fmul_rn(y1, x6);
@@ -107,8 +110,8 @@ static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], fl
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 5 */
-    const float x8 = cp[8].x;
-    const float y8 = cp[8].y;
+    const float x8 = __fmaf_rn(ox, cp[8].w, cp[8].x);
+    const float y8 = __fmaf_rn(oy, cp[8].w, cp[8].y);
     const float w8 = cp[8].w;
     const float g8 = __fmul_rn(e2, w8);
     const float m2_8 = __fmul_rn(x2, y8) - __fmul_rn(y2, x8);
@@ -130,8 +133,8 @@ static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], fl
     u = __fmaf_rn(g3, -m0_5, u);
     u = __fmaf_rn(g5, m0_3, u);
     v += (u + u) + u;
-    const float x7 = cp[7].x;
-    const float y7 = cp[7].y;
+    const float x7 = __fmaf_rn(ox, cp[7].w, cp[7].x);
+    const float y7 = __fmaf_rn(oy, cp[7].w, cp[7].y);
     const float w7 = cp[7].w;
     const float g7 = __fmul_rn(e2, w7);
     const float m1_7 = __fmul_rn(x1, y7) - __fmul_rn(y1, x7);
@@ -181,8 +184,8 @@ static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], fl
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 7 */
-    const float x9 = cp[9].x;
-    const float y9 = cp[9].y;
+    const float x9 = __fmaf_rn(ox, cp[9].w, cp[9].x);
+    const float y9 = __fmaf_rn(oy, cp[9].w, cp[9].y);
     const float w9 = cp[9].w;
     const float g9 = __fmul_rn(e2, w9);
     const float m1_9 = __fmul_rn(x1, y9) - __fmul_rn(y1, x9);
@@ -200,8 +203,8 @@ static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], fl
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 10 */
-    const float x11 = cp[11].x;
-    const float y11 = cp[11].y;
+    const float x11 = __fmaf_rn(ox, cp[11].w, cp[11].x);
+    const float y11 = __fmaf_rn(oy, cp[11].w, cp[11].y);
     const float w11 = cp[11].w;
     const float g11 = __fmul_rn(e2, w11);
     const float m2_11 = __fmul_rn(x2, y11) - __fmul_rn(y2, x11);
@@ -219,8 +222,8 @@ static __device__ inline unsigned ptp_3x2_classify_patch(const float4 cp[12], fl
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 14 */
-    const float x10 = cp[10].x;
-    const float y10 = cp[10].y;
+    const float x10 = __fmaf_rn(ox, cp[10].w, cp[10].x);
+    const float y10 = __fmaf_rn(oy, cp[10].w, cp[10].y);
     const float w10 = cp[10].w;
     const float g10 = __fmul_rn(e2, w10);
     const float m3_10 = __fmul_rn(x3, y10) - __fmul_rn(y3, x10);
@@ -823,17 +826,20 @@ static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, fl
 {
     float e2 = eye.z;
     float u, v;
-    const float x1 = cp[1].x;
-    const float y1 = cp[1].y;
+    const float rw = cp[0].w != 0.0f ? 1.0f / cp[0].w : 0.0f;
+    const float ox = -(__fmul_rn(cp[0].x, rw));
+    const float oy = -(__fmul_rn(cp[0].y, rw));
+    const float x1 = __fmaf_rn(ox, cp[1].w, cp[1].x);
+    const float y1 = __fmaf_rn(oy, cp[1].w, cp[1].y);
     const float w1 = cp[1].w;
     const float g1 = __fmul_rn(e2, w1);
-    const float x3 = cp[3].x;
-    const float y3 = cp[3].y;
+    const float x3 = __fmaf_rn(ox, cp[3].w, cp[3].x);
+    const float y3 = __fmaf_rn(oy, cp[3].w, cp[3].y);
     const float w3 = cp[3].w;
     const float g3 = __fmul_rn(e2, w3);
     const float m1_3 = __fmul_rn(x1, y3) - __fmul_rn(y1, x3);
-    const float x0 = cp[0].x;
-    const float y0 = cp[0].y;
+    const float x0 = __fmaf_rn(ox, cp[0].w, cp[0].x);
+    const float y0 = __fmaf_rn(oy, cp[0].w, cp[0].y);
     const float w0 = cp[0].w;
     const float g0 = __fmul_rn(e2, w0);
     const float m0_3 = __fmul_rn(x0, y3) - __fmul_rn(y0, x3);
@@ -841,12 +847,12 @@ static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, fl
     u = -((__fmul_rn(g0, m1_3) - __fmul_rn(g1, m0_3)) + __fmul_rn(g3, m0_1));
     v = u;
     d[0] = __fmul_rn(v, 6.0f);
-    const float x2 = cp[2].x;
-    const float y2 = cp[2].y;
+    const float x2 = __fmaf_rn(ox, cp[2].w, cp[2].x);
+    const float y2 = __fmaf_rn(oy, cp[2].w, cp[2].y);
     const float w2 = cp[2].w;
     const float g2 = __fmul_rn(e2, w2);
-    const float x5 = cp[5].x;
-    const float y5 = cp[5].y;
+    const float x5 = __fmaf_rn(ox, cp[5].w, cp[5].x);
+    const float y5 = __fmaf_rn(oy, cp[5].w, cp[5].y);
     const float w5 = cp[5].w;
     const float g5 = __fmul_rn(e2, w5);
     const float m2_5 = __fmul_rn(x2, y5) - __fmul_rn(y2, x5);
@@ -859,8 +865,8 @@ static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, fl
     const float m0_2 = __fmul_rn(x0, y2) - __fmul_rn(y0, x2);
     u = -((__fmul_rn(g0, m2_3) - __fmul_rn(g2, m0_3)) + __fmul_rn(g3, m0_2));
     v = u;
-    const float x4 = cp[4].x;
-    const float y4 = cp[4].y;
+    const float x4 = __fmaf_rn(ox, cp[4].w, cp[4].x);
+    const float y4 = __fmaf_rn(oy, cp[4].w, cp[4].y);
     const float w4 = cp[4].w;
     const float g4 = __fmul_rn(e2, w4);
     const float m1_4 = __fmul_rn(x1, y4) - __fmul_rn(y1, x4);
@@ -881,8 +887,8 @@ static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, fl
     u = -((__fmul_rn(g1, m2_4) - __fmul_rn(g2, m1_4)) + __fmul_rn(g4, m1_2));
     v += (u + u);
     d[3] = __fmul_rn(v, 1.5f);
-    const float x6 = cp[6].x;
-    const float y6 = cp[6].y;
+    const float x6 = __fmaf_rn(ox, cp[6].w, cp[6].x);
+    const float y6 = __fmaf_rn(oy, cp[6].w, cp[6].y);
     const float w6 = cp[6].w;
     const float g6 = __fmul_rn(e2, w6);
     const float m1_6 = __fmul_rn(x1, y6) - __fmul_rn(y1, x6);
@@ -893,8 +899,8 @@ static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, fl
     u = ((__fmul_rn(g0, m3_4) - __fmul_rn(g3, m0_4)) + __fmul_rn(g4, m0_3));
     v += (u + u) + u;
     d[5] = __fmul_rn(v, 0.857142866f);
-    const float x8 = cp[8].x;
-    const float y8 = cp[8].y;
+    const float x8 = __fmaf_rn(ox, cp[8].w, cp[8].x);
+    const float y8 = __fmaf_rn(oy, cp[8].w, cp[8].y);
     const float w8 = cp[8].w;
     const float g8 = __fmul_rn(e2, w8);
     const float m2_8 = __fmul_rn(x2, y8) - __fmul_rn(y2, x8);
@@ -915,8 +921,8 @@ static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, fl
     u = __fmaf_rn(g3, -m0_5, u);
     u = __fmaf_rn(g5, m0_3, u);
     v += (u + u) + u;
-    const float x7 = cp[7].x;
-    const float y7 = cp[7].y;
+    const float x7 = __fmaf_rn(ox, cp[7].w, cp[7].x);
+    const float y7 = __fmaf_rn(oy, cp[7].w, cp[7].y);
     const float w7 = cp[7].w;
     const float g7 = __fmul_rn(e2, w7);
     const float m1_7 = __fmul_rn(x1, y7) - __fmul_rn(y1, x7);
@@ -963,8 +969,8 @@ static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, fl
     u = u + u;
     v += (u + u) + u;
     d[7] = __fmul_rn(v, 0.142857149f);
-    const float x9 = cp[9].x;
-    const float y9 = cp[9].y;
+    const float x9 = __fmaf_rn(ox, cp[9].w, cp[9].x);
+    const float y9 = __fmaf_rn(oy, cp[9].w, cp[9].y);
     const float w9 = cp[9].w;
     const float g9 = __fmul_rn(e2, w9);
     const float m1_9 = __fmul_rn(x1, y9) - __fmul_rn(y1, x9);
@@ -981,8 +987,8 @@ static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, fl
     u = u + u;
     v += (u + u) + u;
     d[10] = __fmul_rn(v, 0.285714298f);
-    const float x11 = cp[11].x;
-    const float y11 = cp[11].y;
+    const float x11 = __fmaf_rn(ox, cp[11].w, cp[11].x);
+    const float y11 = __fmaf_rn(oy, cp[11].w, cp[11].y);
     const float w11 = cp[11].w;
     const float g11 = __fmul_rn(e2, w11);
     const float m2_11 = __fmul_rn(x2, y11) - __fmul_rn(y2, x11);
@@ -999,8 +1005,8 @@ static __device__ inline void ptp_3x2_values(const float4 cp[12], float4 eye, fl
     u = u + u;
     v += (u + u) + u;
     d[14] = __fmul_rn(v, 0.285714298f);
-    const float x10 = cp[10].x;
-    const float y10 = cp[10].y;
+    const float x10 = __fmaf_rn(ox, cp[10].w, cp[10].x);
+    const float y10 = __fmaf_rn(oy, cp[10].w, cp[10].y);
     const float w10 = cp[10].w;
     const float g10 = __fmul_rn(e2, w10);
     const float m3_10 = __fmul_rn(x3, y10) - __fmul_rn(y3, x10);

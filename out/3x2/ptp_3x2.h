@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_3X2_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_3X2_FLOPS 1618
-#define PTP_3X2_MULS 720
+#define PTP_3X2_FLOPS 1669
+#define PTP_3X2_MULS 746
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X2_LANES
 #define PTP_3X2_LANES 16
@@ -168,7 +168,9 @@ static inline void ptp_3x2_vstoref(float *d, ptp_3x2_vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if PTP_3X2_VW == 16
 #include <immintrin.h>
@@ -189,7 +191,15 @@ static inline void ptp_3x2_vstoref(float *d, ptp_3x2_vf v, size_t count)
 #else
 #define PTP_3X2_VFMA(a, b, c) ((a) * (b) + (c))
 #define PTP_3X2_VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double ptp_3x2_vd __attribute__((vector_size(8 * PTP_3X2_VW)));
+#define PTP_3X2_VLOCAL(o, w, x) ((ptp_3x2_vf)__builtin_convertvector(__builtin_convertvector(x, ptp_3x2_vd) + \
+    __builtin_convertvector(o, ptp_3x2_vd) * __builtin_convertvector(w, ptp_3x2_vd), ptp_3x2_vf))
 #endif
+#ifndef PTP_3X2_VLOCAL
+#define PTP_3X2_VLOCAL PTP_3X2_VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define PTP_3X2_VRECIP0(x) ((ptp_3x2_vf)((ptp_3x2_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_3x2_vf ptp_3x2_vabsmax(ptp_3x2_vf r, ptp_3x2_vf x)
 {
@@ -220,10 +230,13 @@ static inline void ptp_3x2_vstoref(float *d, ptp_3x2_vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_3X2_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define PTP_3X2_VLOCAL PTP_3X2_VFMA
 #else
 #define PTP_3X2_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_3X2_VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define PTP_3X2_VFMAS PTP_3X2_VFMA
+#define PTP_3X2_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float ptp_3x2_alpha(const float proj[16], int layout)
@@ -756,12 +769,14 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             qs = PTP_3X2_VW;
         }
 #endif
-        const ptp_3x2_vf x1 = ptp_3x2_vload(q + 4 * qs), y1 = ptp_3x2_vload(q + 5 * qs),
+        const ptp_3x2_vf rw = PTP_3X2_VRECIP0(ptp_3x2_vload(q + 3 * qs));
+        const ptp_3x2_vf ox = -(ptp_3x2_vload(q + 0 * qs) * rw), oy = -(ptp_3x2_vload(q + 1 * qs) * rw);
+        const ptp_3x2_vf x1 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 7 * qs), ptp_3x2_vload(q + 4 * qs)), y1 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 7 * qs), ptp_3x2_vload(q + 5 * qs)),
             w1 = ptp_3x2_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_3x2_vf x3 = ptp_3x2_vload(q + 12 * qs), y3 = ptp_3x2_vload(q + 13 * qs),
+        const ptp_3x2_vf x3 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 15 * qs), ptp_3x2_vload(q + 12 * qs)), y3 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 15 * qs), ptp_3x2_vload(q + 13 * qs)),
             w3 = ptp_3x2_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_3x2_vf m1_3 = x1 * y3 - y1 * x3;
-        const ptp_3x2_vf x0 = ptp_3x2_vload(q + 0 * qs), y0 = ptp_3x2_vload(q + 1 * qs),
+        const ptp_3x2_vf x0 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 3 * qs), ptp_3x2_vload(q + 0 * qs)), y0 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 3 * qs), ptp_3x2_vload(q + 1 * qs)),
             w0 = ptp_3x2_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_3x2_vf m0_3 = x0 * y3 - y0 * x3;
         const ptp_3x2_vf m0_1 = x0 * y1 - y0 * x1;
@@ -771,9 +786,9 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 0 * ds + l, v * 6.0f, n - l);
         lt = PTP_3X2_KLT0(v);
         gt = PTP_3X2_KGT0(v); /* plane 0 */
-        const ptp_3x2_vf x2 = ptp_3x2_vload(q + 8 * qs), y2 = ptp_3x2_vload(q + 9 * qs),
+        const ptp_3x2_vf x2 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 11 * qs), ptp_3x2_vload(q + 8 * qs)), y2 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 11 * qs), ptp_3x2_vload(q + 9 * qs)),
             w2 = ptp_3x2_vload(q + 11 * qs), g2 = e2 * w2;
-        const ptp_3x2_vf x5 = ptp_3x2_vload(q + 20 * qs), y5 = ptp_3x2_vload(q + 21 * qs),
+        const ptp_3x2_vf x5 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 23 * qs), ptp_3x2_vload(q + 20 * qs)), y5 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 23 * qs), ptp_3x2_vload(q + 21 * qs)),
             w5 = ptp_3x2_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_3x2_vf m2_5 = x2 * y5 - y2 * x5;
         const ptp_3x2_vf m1_5 = x1 * y5 - y1 * x5;
@@ -788,7 +803,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         const ptp_3x2_vf m0_2 = x0 * y2 - y0 * x2;
         u = -((g0 * m2_3 - g2 * m0_3) + g3 * m0_2);
         v = u;
-        const ptp_3x2_vf x4 = ptp_3x2_vload(q + 16 * qs), y4 = ptp_3x2_vload(q + 17 * qs),
+        const ptp_3x2_vf x4 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 19 * qs), ptp_3x2_vload(q + 16 * qs)), y4 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 19 * qs), ptp_3x2_vload(q + 17 * qs)),
             w4 = ptp_3x2_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_3x2_vf m1_4 = x1 * y4 - y1 * x4;
         const ptp_3x2_vf m0_4 = x0 * y4 - y0 * x4;
@@ -817,7 +832,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 3 * ds + l, v * 1.5f, n - l);
         lt = PTP_3X2_KLT(lt, v);
         gt = PTP_3X2_KGT(gt, v); /* plane 3 */
-        const ptp_3x2_vf x6 = ptp_3x2_vload(q + 24 * qs), y6 = ptp_3x2_vload(q + 25 * qs),
+        const ptp_3x2_vf x6 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 27 * qs), ptp_3x2_vload(q + 24 * qs)), y6 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 27 * qs), ptp_3x2_vload(q + 25 * qs)),
             w6 = ptp_3x2_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_3x2_vf m1_6 = x1 * y6 - y1 * x6;
         const ptp_3x2_vf m0_6 = x0 * y6 - y0 * x6;
@@ -830,7 +845,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 5 * ds + l, v * 0.857142866f, n - l);
         lt = PTP_3X2_KLT(lt, v);
         gt = PTP_3X2_KGT(gt, v); /* plane 5 */
-        const ptp_3x2_vf x8 = ptp_3x2_vload(q + 32 * qs), y8 = ptp_3x2_vload(q + 33 * qs),
+        const ptp_3x2_vf x8 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 35 * qs), ptp_3x2_vload(q + 32 * qs)), y8 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 35 * qs), ptp_3x2_vload(q + 33 * qs)),
             w8 = ptp_3x2_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_3x2_vf m2_8 = x2 * y8 - y2 * x8;
         const ptp_3x2_vf m1_8 = x1 * y8 - y1 * x8;
@@ -853,7 +868,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
         u = PTP_3X2_VFMA(g3, -m0_5, u);
         u = PTP_3X2_VFMA(g5, m0_3, u);
         v += (u + u) + u;
-        const ptp_3x2_vf x7 = ptp_3x2_vload(q + 28 * qs), y7 = ptp_3x2_vload(q + 29 * qs),
+        const ptp_3x2_vf x7 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 31 * qs), ptp_3x2_vload(q + 28 * qs)), y7 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 31 * qs), ptp_3x2_vload(q + 29 * qs)),
             w7 = ptp_3x2_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_3x2_vf m1_7 = x1 * y7 - y1 * x7;
         u = g0 * (-m1_7);
@@ -908,7 +923,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 7 * ds + l, v * 0.142857149f, n - l);
         lt = PTP_3X2_KLT(lt, v);
         gt = PTP_3X2_KGT(gt, v); /* plane 7 */
-        const ptp_3x2_vf x9 = ptp_3x2_vload(q + 36 * qs), y9 = ptp_3x2_vload(q + 37 * qs),
+        const ptp_3x2_vf x9 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 39 * qs), ptp_3x2_vload(q + 36 * qs)), y9 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 39 * qs), ptp_3x2_vload(q + 37 * qs)),
             w9 = ptp_3x2_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_3x2_vf m1_9 = x1 * y9 - y1 * x9;
         const ptp_3x2_vf m0_9 = x0 * y9 - y0 * x9;
@@ -927,7 +942,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 10 * ds + l, v * 0.285714298f, n - l);
         lt = PTP_3X2_KLT(lt, v);
         gt = PTP_3X2_KGT(gt, v); /* plane 10 */
-        const ptp_3x2_vf x11 = ptp_3x2_vload(q + 44 * qs), y11 = ptp_3x2_vload(q + 45 * qs),
+        const ptp_3x2_vf x11 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 47 * qs), ptp_3x2_vload(q + 44 * qs)), y11 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 47 * qs), ptp_3x2_vload(q + 45 * qs)),
             w11 = ptp_3x2_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_3x2_vf m2_11 = x2 * y11 - y2 * x11;
         const ptp_3x2_vf m1_11 = x1 * y11 - y1 * x11;
@@ -946,7 +961,7 @@ static inline void ptp_3x2_lanes_body(const float *PTP_3X2_RESTRICT soa, size_t 
             ptp_3x2_vstoref(d + 14 * ds + l, v * 0.285714298f, n - l);
         lt = PTP_3X2_KLT(lt, v);
         gt = PTP_3X2_KGT(gt, v); /* plane 14 */
-        const ptp_3x2_vf x10 = ptp_3x2_vload(q + 40 * qs), y10 = ptp_3x2_vload(q + 41 * qs),
+        const ptp_3x2_vf x10 = PTP_3X2_VLOCAL(ox, ptp_3x2_vload(q + 43 * qs), ptp_3x2_vload(q + 40 * qs)), y10 = PTP_3X2_VLOCAL(oy, ptp_3x2_vload(q + 43 * qs), ptp_3x2_vload(q + 41 * qs)),
             w10 = ptp_3x2_vload(q + 43 * qs), g10 = e2 * w10;
         const ptp_3x2_vf m3_10 = x3 * y10 - y3 * x10;
         const ptp_3x2_vf m0_10 = x0 * y10 - y0 * x10;

@@ -63,17 +63,20 @@ fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -
     var v: f32;
     var lt: bool;
     var gt: bool;
-    let x1 = cp[1].x;
-    let y1 = cp[1].y;
+    let rw = select(0.0f, 1.0f / cp[0].w, cp[0].w != 0.0f);
+    let ox = -(ptp_3x2_mul_rn(cp[0].x, rw, zero));
+    let oy = -(ptp_3x2_mul_rn(cp[0].y, rw, zero));
+    let x1 = fma(ox, cp[1].w, cp[1].x);
+    let y1 = fma(oy, cp[1].w, cp[1].y);
     let w1 = cp[1].w;
     let g1 = ptp_3x2_mul_rn(e2, w1, zero);
-    let x3 = cp[3].x;
-    let y3 = cp[3].y;
+    let x3 = fma(ox, cp[3].w, cp[3].x);
+    let y3 = fma(oy, cp[3].w, cp[3].y);
     let w3 = cp[3].w;
     let g3 = ptp_3x2_mul_rn(e2, w3, zero);
     let m1_3 = ptp_3x2_mul_rn(x1, y3, zero) - ptp_3x2_mul_rn(y1, x3, zero);
-    let x0 = cp[0].x;
-    let y0 = cp[0].y;
+    let x0 = fma(ox, cp[0].w, cp[0].x);
+    let y0 = fma(oy, cp[0].w, cp[0].y);
     let w0 = cp[0].w;
     let g0 = ptp_3x2_mul_rn(e2, w0, zero);
     let m0_3 = ptp_3x2_mul_rn(x0, y3, zero) - ptp_3x2_mul_rn(y0, x3, zero);
@@ -82,12 +85,12 @@ fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -
     v = u;
     lt = v < 0.0f;
     gt = v > 0.0f; /* plane 0 */
-    let x2 = cp[2].x;
-    let y2 = cp[2].y;
+    let x2 = fma(ox, cp[2].w, cp[2].x);
+    let y2 = fma(oy, cp[2].w, cp[2].y);
     let w2 = cp[2].w;
     let g2 = ptp_3x2_mul_rn(e2, w2, zero);
-    let x5 = cp[5].x;
-    let y5 = cp[5].y;
+    let x5 = fma(ox, cp[5].w, cp[5].x);
+    let y5 = fma(oy, cp[5].w, cp[5].y);
     let w5 = cp[5].w;
     let g5 = ptp_3x2_mul_rn(e2, w5, zero);
     let m2_5 = ptp_3x2_mul_rn(x2, y5, zero) - ptp_3x2_mul_rn(y2, x5, zero);
@@ -101,8 +104,8 @@ fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -
     let m0_2 = ptp_3x2_mul_rn(x0, y2, zero) - ptp_3x2_mul_rn(y0, x2, zero);
     u = -((ptp_3x2_mul_rn(g0, m2_3, zero) - ptp_3x2_mul_rn(g2, m0_3, zero)) + ptp_3x2_mul_rn(g3, m0_2, zero));
     v = u;
-    let x4 = cp[4].x;
-    let y4 = cp[4].y;
+    let x4 = fma(ox, cp[4].w, cp[4].x);
+    let y4 = fma(oy, cp[4].w, cp[4].y);
     let w4 = cp[4].w;
     let g4 = ptp_3x2_mul_rn(e2, w4, zero);
     let m1_4 = ptp_3x2_mul_rn(x1, y4, zero) - ptp_3x2_mul_rn(y1, x4, zero);
@@ -126,8 +129,8 @@ fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -
     v += (u + u);
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 3 */
-    let x6 = cp[6].x;
-    let y6 = cp[6].y;
+    let x6 = fma(ox, cp[6].w, cp[6].x);
+    let y6 = fma(oy, cp[6].w, cp[6].y);
     let w6 = cp[6].w;
     let g6 = ptp_3x2_mul_rn(e2, w6, zero);
     let m1_6 = ptp_3x2_mul_rn(x1, y6, zero) - ptp_3x2_mul_rn(y1, x6, zero);
@@ -139,8 +142,8 @@ fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 5 */
-    let x8 = cp[8].x;
-    let y8 = cp[8].y;
+    let x8 = fma(ox, cp[8].w, cp[8].x);
+    let y8 = fma(oy, cp[8].w, cp[8].y);
     let w8 = cp[8].w;
     let g8 = ptp_3x2_mul_rn(e2, w8, zero);
     let m2_8 = ptp_3x2_mul_rn(x2, y8, zero) - ptp_3x2_mul_rn(y2, x8, zero);
@@ -162,8 +165,8 @@ fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -
     u = fma(g3, -m0_5, u);
     u = fma(g5, m0_3, u);
     v += (u + u) + u;
-    let x7 = cp[7].x;
-    let y7 = cp[7].y;
+    let x7 = fma(ox, cp[7].w, cp[7].x);
+    let y7 = fma(oy, cp[7].w, cp[7].y);
     let w7 = cp[7].w;
     let g7 = ptp_3x2_mul_rn(e2, w7, zero);
     let m1_7 = ptp_3x2_mul_rn(x1, y7, zero) - ptp_3x2_mul_rn(y1, x7, zero);
@@ -213,8 +216,8 @@ fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 7 */
-    let x9 = cp[9].x;
-    let y9 = cp[9].y;
+    let x9 = fma(ox, cp[9].w, cp[9].x);
+    let y9 = fma(oy, cp[9].w, cp[9].y);
     let w9 = cp[9].w;
     let g9 = ptp_3x2_mul_rn(e2, w9, zero);
     let m1_9 = ptp_3x2_mul_rn(x1, y9, zero) - ptp_3x2_mul_rn(y1, x9, zero);
@@ -232,8 +235,8 @@ fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 10 */
-    let x11 = cp[11].x;
-    let y11 = cp[11].y;
+    let x11 = fma(ox, cp[11].w, cp[11].x);
+    let y11 = fma(oy, cp[11].w, cp[11].y);
     let w11 = cp[11].w;
     let g11 = ptp_3x2_mul_rn(e2, w11, zero);
     let m2_11 = ptp_3x2_mul_rn(x2, y11, zero) - ptp_3x2_mul_rn(y2, x11, zero);
@@ -251,8 +254,8 @@ fn ptp_3x2_classify_patch(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32) -
     v += (u + u) + u;
     lt = lt && v < 0.0f;
     gt = gt && v > 0.0f; /* plane 14 */
-    let x10 = cp[10].x;
-    let y10 = cp[10].y;
+    let x10 = fma(ox, cp[10].w, cp[10].x);
+    let y10 = fma(oy, cp[10].w, cp[10].y);
     let w10 = cp[10].w;
     let g10 = ptp_3x2_mul_rn(e2, w10, zero);
     let m3_10 = ptp_3x2_mul_rn(x3, y10, zero) - ptp_3x2_mul_rn(y3, x10, zero);
@@ -856,17 +859,20 @@ fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
     let e2: f32 = eye.z;
     var u: f32;
     var v: f32;
-    let x1 = cp[1].x;
-    let y1 = cp[1].y;
+    let rw = select(0.0f, 1.0f / cp[0].w, cp[0].w != 0.0f);
+    let ox = -(ptp_3x2_mul_rn(cp[0].x, rw, zero));
+    let oy = -(ptp_3x2_mul_rn(cp[0].y, rw, zero));
+    let x1 = fma(ox, cp[1].w, cp[1].x);
+    let y1 = fma(oy, cp[1].w, cp[1].y);
     let w1 = cp[1].w;
     let g1 = ptp_3x2_mul_rn(e2, w1, zero);
-    let x3 = cp[3].x;
-    let y3 = cp[3].y;
+    let x3 = fma(ox, cp[3].w, cp[3].x);
+    let y3 = fma(oy, cp[3].w, cp[3].y);
     let w3 = cp[3].w;
     let g3 = ptp_3x2_mul_rn(e2, w3, zero);
     let m1_3 = ptp_3x2_mul_rn(x1, y3, zero) - ptp_3x2_mul_rn(y1, x3, zero);
-    let x0 = cp[0].x;
-    let y0 = cp[0].y;
+    let x0 = fma(ox, cp[0].w, cp[0].x);
+    let y0 = fma(oy, cp[0].w, cp[0].y);
     let w0 = cp[0].w;
     let g0 = ptp_3x2_mul_rn(e2, w0, zero);
     let m0_3 = ptp_3x2_mul_rn(x0, y3, zero) - ptp_3x2_mul_rn(y0, x3, zero);
@@ -874,12 +880,12 @@ fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
     u = -((ptp_3x2_mul_rn(g0, m1_3, zero) - ptp_3x2_mul_rn(g1, m0_3, zero)) + ptp_3x2_mul_rn(g3, m0_1, zero));
     v = u;
     (*d)[0] = v * 6.0f;
-    let x2 = cp[2].x;
-    let y2 = cp[2].y;
+    let x2 = fma(ox, cp[2].w, cp[2].x);
+    let y2 = fma(oy, cp[2].w, cp[2].y);
     let w2 = cp[2].w;
     let g2 = ptp_3x2_mul_rn(e2, w2, zero);
-    let x5 = cp[5].x;
-    let y5 = cp[5].y;
+    let x5 = fma(ox, cp[5].w, cp[5].x);
+    let y5 = fma(oy, cp[5].w, cp[5].y);
     let w5 = cp[5].w;
     let g5 = ptp_3x2_mul_rn(e2, w5, zero);
     let m2_5 = ptp_3x2_mul_rn(x2, y5, zero) - ptp_3x2_mul_rn(y2, x5, zero);
@@ -892,8 +898,8 @@ fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
     let m0_2 = ptp_3x2_mul_rn(x0, y2, zero) - ptp_3x2_mul_rn(y0, x2, zero);
     u = -((ptp_3x2_mul_rn(g0, m2_3, zero) - ptp_3x2_mul_rn(g2, m0_3, zero)) + ptp_3x2_mul_rn(g3, m0_2, zero));
     v = u;
-    let x4 = cp[4].x;
-    let y4 = cp[4].y;
+    let x4 = fma(ox, cp[4].w, cp[4].x);
+    let y4 = fma(oy, cp[4].w, cp[4].y);
     let w4 = cp[4].w;
     let g4 = ptp_3x2_mul_rn(e2, w4, zero);
     let m1_4 = ptp_3x2_mul_rn(x1, y4, zero) - ptp_3x2_mul_rn(y1, x4, zero);
@@ -914,8 +920,8 @@ fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
     u = -((ptp_3x2_mul_rn(g1, m2_4, zero) - ptp_3x2_mul_rn(g2, m1_4, zero)) + ptp_3x2_mul_rn(g4, m1_2, zero));
     v += (u + u);
     (*d)[3] = v * 1.5f;
-    let x6 = cp[6].x;
-    let y6 = cp[6].y;
+    let x6 = fma(ox, cp[6].w, cp[6].x);
+    let y6 = fma(oy, cp[6].w, cp[6].y);
     let w6 = cp[6].w;
     let g6 = ptp_3x2_mul_rn(e2, w6, zero);
     let m1_6 = ptp_3x2_mul_rn(x1, y6, zero) - ptp_3x2_mul_rn(y1, x6, zero);
@@ -926,8 +932,8 @@ fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
     u = ((ptp_3x2_mul_rn(g0, m3_4, zero) - ptp_3x2_mul_rn(g3, m0_4, zero)) + ptp_3x2_mul_rn(g4, m0_3, zero));
     v += (u + u) + u;
     (*d)[5] = v * 0.857142866f;
-    let x8 = cp[8].x;
-    let y8 = cp[8].y;
+    let x8 = fma(ox, cp[8].w, cp[8].x);
+    let y8 = fma(oy, cp[8].w, cp[8].y);
     let w8 = cp[8].w;
     let g8 = ptp_3x2_mul_rn(e2, w8, zero);
     let m2_8 = ptp_3x2_mul_rn(x2, y8, zero) - ptp_3x2_mul_rn(y2, x8, zero);
@@ -948,8 +954,8 @@ fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
     u = fma(g3, -m0_5, u);
     u = fma(g5, m0_3, u);
     v += (u + u) + u;
-    let x7 = cp[7].x;
-    let y7 = cp[7].y;
+    let x7 = fma(ox, cp[7].w, cp[7].x);
+    let y7 = fma(oy, cp[7].w, cp[7].y);
     let w7 = cp[7].w;
     let g7 = ptp_3x2_mul_rn(e2, w7, zero);
     let m1_7 = ptp_3x2_mul_rn(x1, y7, zero) - ptp_3x2_mul_rn(y1, x7, zero);
@@ -996,8 +1002,8 @@ fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
     u = u + u;
     v += (u + u) + u;
     (*d)[7] = v * 0.142857149f;
-    let x9 = cp[9].x;
-    let y9 = cp[9].y;
+    let x9 = fma(ox, cp[9].w, cp[9].x);
+    let y9 = fma(oy, cp[9].w, cp[9].y);
     let w9 = cp[9].w;
     let g9 = ptp_3x2_mul_rn(e2, w9, zero);
     let m1_9 = ptp_3x2_mul_rn(x1, y9, zero) - ptp_3x2_mul_rn(y1, x9, zero);
@@ -1014,8 +1020,8 @@ fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
     u = u + u;
     v += (u + u) + u;
     (*d)[10] = v * 0.285714298f;
-    let x11 = cp[11].x;
-    let y11 = cp[11].y;
+    let x11 = fma(ox, cp[11].w, cp[11].x);
+    let y11 = fma(oy, cp[11].w, cp[11].y);
     let w11 = cp[11].w;
     let g11 = ptp_3x2_mul_rn(e2, w11, zero);
     let m2_11 = ptp_3x2_mul_rn(x2, y11, zero) - ptp_3x2_mul_rn(y2, x11, zero);
@@ -1032,8 +1038,8 @@ fn ptp_3x2_values(cp: array<vec4<f32>, 12>, eye: vec4<f32>, zero: u32,
     u = u + u;
     v += (u + u) + u;
     (*d)[14] = v * 0.285714298f;
-    let x10 = cp[10].x;
-    let y10 = cp[10].y;
+    let x10 = fma(ox, cp[10].w, cp[10].x);
+    let y10 = fma(oy, cp[10].w, cp[10].y);
     let w10 = cp[10].w;
     let g10 = ptp_3x2_mul_rn(e2, w10, zero);
     let m3_10 = ptp_3x2_mul_rn(x3, y10, zero) - ptp_3x2_mul_rn(y3, x10, zero);

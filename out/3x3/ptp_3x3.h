@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_3X3_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_3X3_FLOPS 3992
-#define PTP_3X3_MULS 1744
+#define PTP_3X3_FLOPS 4059
+#define PTP_3X3_MULS 1778
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_3X3_LANES
 #define PTP_3X3_LANES 16
@@ -168,7 +168,9 @@ static inline void ptp_3x3_vstoref(float *d, ptp_3x3_vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if PTP_3X3_VW == 16
 #include <immintrin.h>
@@ -189,7 +191,15 @@ static inline void ptp_3x3_vstoref(float *d, ptp_3x3_vf v, size_t count)
 #else
 #define PTP_3X3_VFMA(a, b, c) ((a) * (b) + (c))
 #define PTP_3X3_VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double ptp_3x3_vd __attribute__((vector_size(8 * PTP_3X3_VW)));
+#define PTP_3X3_VLOCAL(o, w, x) ((ptp_3x3_vf)__builtin_convertvector(__builtin_convertvector(x, ptp_3x3_vd) + \
+    __builtin_convertvector(o, ptp_3x3_vd) * __builtin_convertvector(w, ptp_3x3_vd), ptp_3x3_vf))
 #endif
+#ifndef PTP_3X3_VLOCAL
+#define PTP_3X3_VLOCAL PTP_3X3_VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define PTP_3X3_VRECIP0(x) ((ptp_3x3_vf)((ptp_3x3_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_3x3_vf ptp_3x3_vabsmax(ptp_3x3_vf r, ptp_3x3_vf x)
 {
@@ -220,10 +230,13 @@ static inline void ptp_3x3_vstoref(float *d, ptp_3x3_vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_3X3_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define PTP_3X3_VLOCAL PTP_3X3_VFMA
 #else
 #define PTP_3X3_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_3X3_VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define PTP_3X3_VFMAS PTP_3X3_VFMA
+#define PTP_3X3_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float ptp_3x3_alpha(const float proj[16], int layout)
@@ -1388,12 +1401,14 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
             qs = PTP_3X3_VW;
         }
 #endif
-        const ptp_3x3_vf x1 = ptp_3x3_vload(q + 4 * qs), y1 = ptp_3x3_vload(q + 5 * qs),
+        const ptp_3x3_vf rw = PTP_3X3_VRECIP0(ptp_3x3_vload(q + 3 * qs));
+        const ptp_3x3_vf ox = -(ptp_3x3_vload(q + 0 * qs) * rw), oy = -(ptp_3x3_vload(q + 1 * qs) * rw);
+        const ptp_3x3_vf x1 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 7 * qs), ptp_3x3_vload(q + 4 * qs)), y1 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 7 * qs), ptp_3x3_vload(q + 5 * qs)),
             w1 = ptp_3x3_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_3x3_vf x4 = ptp_3x3_vload(q + 16 * qs), y4 = ptp_3x3_vload(q + 17 * qs),
+        const ptp_3x3_vf x4 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 19 * qs), ptp_3x3_vload(q + 16 * qs)), y4 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 19 * qs), ptp_3x3_vload(q + 17 * qs)),
             w4 = ptp_3x3_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_3x3_vf m1_4 = x1 * y4 - y1 * x4;
-        const ptp_3x3_vf x0 = ptp_3x3_vload(q + 0 * qs), y0 = ptp_3x3_vload(q + 1 * qs),
+        const ptp_3x3_vf x0 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 3 * qs), ptp_3x3_vload(q + 0 * qs)), y0 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 3 * qs), ptp_3x3_vload(q + 1 * qs)),
             w0 = ptp_3x3_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_3x3_vf m0_4 = x0 * y4 - y0 * x4;
         const ptp_3x3_vf m0_1 = x0 * y1 - y0 * x1;
@@ -1403,13 +1418,13 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
             ptp_3x3_vstoref(d + 0 * ds + l, v * 9.0f, n - l);
         lt = PTP_3X3_KLT0(v);
         gt = PTP_3X3_KGT0(v); /* plane 0 */
-        const ptp_3x3_vf x2 = ptp_3x3_vload(q + 8 * qs), y2 = ptp_3x3_vload(q + 9 * qs),
+        const ptp_3x3_vf x2 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 11 * qs), ptp_3x3_vload(q + 8 * qs)), y2 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 11 * qs), ptp_3x3_vload(q + 9 * qs)),
             w2 = ptp_3x3_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_3x3_vf m2_4 = x2 * y4 - y2 * x4;
         const ptp_3x3_vf m0_2 = x0 * y2 - y0 * x2;
         u = -((g0 * m2_4 - g2 * m0_4) + g4 * m0_2);
         v = (u + u);
-        const ptp_3x3_vf x5 = ptp_3x3_vload(q + 20 * qs), y5 = ptp_3x3_vload(q + 21 * qs),
+        const ptp_3x3_vf x5 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 23 * qs), ptp_3x3_vload(q + 20 * qs)), y5 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 23 * qs), ptp_3x3_vload(q + 21 * qs)),
             w5 = ptp_3x3_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_3x3_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_3x3_vf m0_5 = x0 * y5 - y0 * x5;
@@ -1419,13 +1434,13 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
             ptp_3x3_vstoref(d + 1 * ds + l, v * 1.28571427f, n - l);
         lt = PTP_3X3_KLT(lt, v);
         gt = PTP_3X3_KGT(gt, v); /* plane 1 */
-        const ptp_3x3_vf x3 = ptp_3x3_vload(q + 12 * qs), y3 = ptp_3x3_vload(q + 13 * qs),
+        const ptp_3x3_vf x3 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 15 * qs), ptp_3x3_vload(q + 12 * qs)), y3 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 15 * qs), ptp_3x3_vload(q + 13 * qs)),
             w3 = ptp_3x3_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_3x3_vf m3_4 = x3 * y4 - y3 * x4;
         const ptp_3x3_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m3_4 - g3 * m0_4) + g4 * m0_3);
         v = u;
-        const ptp_3x3_vf x6 = ptp_3x3_vload(q + 24 * qs), y6 = ptp_3x3_vload(q + 25 * qs),
+        const ptp_3x3_vf x6 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 27 * qs), ptp_3x3_vload(q + 24 * qs)), y6 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 27 * qs), ptp_3x3_vload(q + 25 * qs)),
             w6 = ptp_3x3_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_3x3_vf m1_6 = x1 * y6 - y1 * x6;
         const ptp_3x3_vf m0_6 = x0 * y6 - y0 * x6;
@@ -1441,7 +1456,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
             ptp_3x3_vstoref(d + 2 * ds + l, v * 0.428571433f, n - l);
         lt = PTP_3X3_KLT(lt, v);
         gt = PTP_3X3_KGT(gt, v); /* plane 2 */
-        const ptp_3x3_vf x7 = ptp_3x3_vload(q + 28 * qs), y7 = ptp_3x3_vload(q + 29 * qs),
+        const ptp_3x3_vf x7 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 31 * qs), ptp_3x3_vload(q + 28 * qs)), y7 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 31 * qs), ptp_3x3_vload(q + 29 * qs)),
             w7 = ptp_3x3_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_3x3_vf m1_7 = x1 * y7 - y1 * x7;
         const ptp_3x3_vf m0_7 = x0 * y7 - y0 * x7;
@@ -1508,7 +1523,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
             ptp_3x3_vstoref(d + 4 * ds + l, v * 0.257142872f, n - l);
         lt = PTP_3X3_KLT(lt, v);
         gt = PTP_3X3_KGT(gt, v); /* plane 4 */
-        const ptp_3x3_vf x8 = ptp_3x3_vload(q + 32 * qs), y8 = ptp_3x3_vload(q + 33 * qs),
+        const ptp_3x3_vf x8 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 35 * qs), ptp_3x3_vload(q + 32 * qs)), y8 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 35 * qs), ptp_3x3_vload(q + 33 * qs)),
             w8 = ptp_3x3_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_3x3_vf m1_8 = x1 * y8 - y1 * x8;
         const ptp_3x3_vf m0_8 = x0 * y8 - y0 * x8;
@@ -1526,7 +1541,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g2, m0_8, u);
         u = PTP_3X3_VFMA(g8, -m0_2, u);
         v = ((u + u) + (u + u));
-        const ptp_3x3_vf x9 = ptp_3x3_vload(q + 36 * qs), y9 = ptp_3x3_vload(q + 37 * qs),
+        const ptp_3x3_vf x9 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 39 * qs), ptp_3x3_vload(q + 36 * qs)), y9 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 39 * qs), ptp_3x3_vload(q + 37 * qs)),
             w9 = ptp_3x3_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_3x3_vf m1_9 = x1 * y9 - y1 * x9;
         const ptp_3x3_vf m4_6 = x4 * y6 - y4 * x6;
@@ -1556,7 +1571,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g4, -m0_7, u);
         u = PTP_3X3_VFMA(g7, m0_4, u);
         v += (u + u) + u;
-        const ptp_3x3_vf x10 = ptp_3x3_vload(q + 40 * qs), y10 = ptp_3x3_vload(q + 41 * qs),
+        const ptp_3x3_vf x10 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 43 * qs), ptp_3x3_vload(q + 40 * qs)), y10 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 43 * qs), ptp_3x3_vload(q + 41 * qs)),
             w10 = ptp_3x3_vload(q + 43 * qs), g10 = e2 * w10;
         const ptp_3x3_vf m1_10 = x1 * y10 - y1 * x10;
         u = g0 * (-m1_10);
@@ -1589,7 +1604,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
             ptp_3x3_vstoref(d + 10 * ds + l, v * 0.0612244904f, n - l);
         lt = PTP_3X3_KLT(lt, v);
         gt = PTP_3X3_KGT(gt, v); /* plane 10 */
-        const ptp_3x3_vf x11 = ptp_3x3_vload(q + 44 * qs), y11 = ptp_3x3_vload(q + 45 * qs),
+        const ptp_3x3_vf x11 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 47 * qs), ptp_3x3_vload(q + 44 * qs)), y11 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 47 * qs), ptp_3x3_vload(q + 45 * qs)),
             w11 = ptp_3x3_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_3x3_vf m3_11 = x3 * y11 - y3 * x11;
         u = g1 * (-m3_11);
@@ -1662,7 +1677,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
             ptp_3x3_vstoref(d + 13 * ds + l, v * 0.0612244904f, n - l);
         lt = PTP_3X3_KLT(lt, v);
         gt = PTP_3X3_KGT(gt, v); /* plane 13 */
-        const ptp_3x3_vf x12 = ptp_3x3_vload(q + 48 * qs), y12 = ptp_3x3_vload(q + 49 * qs),
+        const ptp_3x3_vf x12 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 51 * qs), ptp_3x3_vload(q + 48 * qs)), y12 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 51 * qs), ptp_3x3_vload(q + 49 * qs)),
             w12 = ptp_3x3_vload(q + 51 * qs), g12 = e2 * w12;
         const ptp_3x3_vf m1_12 = x1 * y12 - y1 * x12;
         const ptp_3x3_vf m0_12 = x0 * y12 - y0 * x12;
@@ -1686,7 +1701,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g2, m0_12, u);
         u = PTP_3X3_VFMA(g12, -m0_2, u);
         v = (u + u);
-        const ptp_3x3_vf x13 = ptp_3x3_vload(q + 52 * qs), y13 = ptp_3x3_vload(q + 53 * qs),
+        const ptp_3x3_vf x13 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 55 * qs), ptp_3x3_vload(q + 52 * qs)), y13 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 55 * qs), ptp_3x3_vload(q + 53 * qs)),
             w13 = ptp_3x3_vload(q + 55 * qs), g13 = e2 * w13;
         const ptp_3x3_vf m1_13 = x1 * y13 - y1 * x13;
         u = g0 * (-m1_13);
@@ -1810,7 +1825,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
             ptp_3x3_vstoref(d + 12 * ds + l, v * 0.0367346928f, n - l);
         lt = PTP_3X3_KLT(lt, v);
         gt = PTP_3X3_KGT(gt, v); /* plane 12 */
-        const ptp_3x3_vf x15 = ptp_3x3_vload(q + 60 * qs), y15 = ptp_3x3_vload(q + 61 * qs),
+        const ptp_3x3_vf x15 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 63 * qs), ptp_3x3_vload(q + 60 * qs)), y15 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 63 * qs), ptp_3x3_vload(q + 61 * qs)),
             w15 = ptp_3x3_vload(q + 63 * qs), g15 = e2 * w15;
         const ptp_3x3_vf m3_15 = x3 * y15 - y3 * x15;
         u = g0 * (-m3_15);
@@ -1834,7 +1849,7 @@ static inline void ptp_3x3_lanes_body(const float *PTP_3X3_RESTRICT soa, size_t 
         u = PTP_3X3_VFMA(g13, -m2_3, u);
         u = PTP_3X3_VFMA(g15, -m1_2, u);
         v += (u + u) + u;
-        const ptp_3x3_vf x14 = ptp_3x3_vload(q + 56 * qs), y14 = ptp_3x3_vload(q + 57 * qs),
+        const ptp_3x3_vf x14 = PTP_3X3_VLOCAL(ox, ptp_3x3_vload(q + 59 * qs), ptp_3x3_vload(q + 56 * qs)), y14 = PTP_3X3_VLOCAL(oy, ptp_3x3_vload(q + 59 * qs), ptp_3x3_vload(q + 57 * qs)),
             w14 = ptp_3x3_vload(q + 59 * qs), g14 = e2 * w14;
         const ptp_3x3_vf m3_14 = x3 * y14 - y3 * x14;
         u = g1 * (-m3_14);

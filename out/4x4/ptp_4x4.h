@@ -45,8 +45,8 @@ extern "C" {
 #define PTP_4X4_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_4X4_FLOPS 15207
-#define PTP_4X4_MULS 7261
+#define PTP_4X4_FLOPS 15310
+#define PTP_4X4_MULS 7313
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_4X4_LANES
 #define PTP_4X4_LANES 16
@@ -168,7 +168,9 @@ static inline void ptp_4x4_vstoref(float *d, ptp_4x4_vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if PTP_4X4_VW == 16
 #include <immintrin.h>
@@ -189,7 +191,15 @@ static inline void ptp_4x4_vstoref(float *d, ptp_4x4_vf v, size_t count)
 #else
 #define PTP_4X4_VFMA(a, b, c) ((a) * (b) + (c))
 #define PTP_4X4_VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double ptp_4x4_vd __attribute__((vector_size(8 * PTP_4X4_VW)));
+#define PTP_4X4_VLOCAL(o, w, x) ((ptp_4x4_vf)__builtin_convertvector(__builtin_convertvector(x, ptp_4x4_vd) + \
+    __builtin_convertvector(o, ptp_4x4_vd) * __builtin_convertvector(w, ptp_4x4_vd), ptp_4x4_vf))
 #endif
+#ifndef PTP_4X4_VLOCAL
+#define PTP_4X4_VLOCAL PTP_4X4_VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define PTP_4X4_VRECIP0(x) ((ptp_4x4_vf)((ptp_4x4_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_4x4_vf ptp_4x4_vabsmax(ptp_4x4_vf r, ptp_4x4_vf x)
 {
@@ -220,10 +230,13 @@ static inline void ptp_4x4_vstoref(float *d, ptp_4x4_vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_4X4_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define PTP_4X4_VLOCAL PTP_4X4_VFMA
 #else
 #define PTP_4X4_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_4X4_VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define PTP_4X4_VFMAS PTP_4X4_VFMA
+#define PTP_4X4_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float ptp_4x4_alpha(const float proj[16], int layout)
@@ -4652,12 +4665,14 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             qs = PTP_4X4_VW;
         }
 #endif
-        const ptp_4x4_vf x1 = ptp_4x4_vload(q + 4 * qs), y1 = ptp_4x4_vload(q + 5 * qs),
+        const ptp_4x4_vf rw = PTP_4X4_VRECIP0(ptp_4x4_vload(q + 3 * qs));
+        const ptp_4x4_vf ox = -(ptp_4x4_vload(q + 0 * qs) * rw), oy = -(ptp_4x4_vload(q + 1 * qs) * rw);
+        const ptp_4x4_vf x1 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 7 * qs), ptp_4x4_vload(q + 4 * qs)), y1 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 7 * qs), ptp_4x4_vload(q + 5 * qs)),
             w1 = ptp_4x4_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_4x4_vf x5 = ptp_4x4_vload(q + 20 * qs), y5 = ptp_4x4_vload(q + 21 * qs),
+        const ptp_4x4_vf x5 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 23 * qs), ptp_4x4_vload(q + 20 * qs)), y5 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 23 * qs), ptp_4x4_vload(q + 21 * qs)),
             w5 = ptp_4x4_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_4x4_vf m1_5 = x1 * y5 - y1 * x5;
-        const ptp_4x4_vf x0 = ptp_4x4_vload(q + 0 * qs), y0 = ptp_4x4_vload(q + 1 * qs),
+        const ptp_4x4_vf x0 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 3 * qs), ptp_4x4_vload(q + 0 * qs)), y0 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 3 * qs), ptp_4x4_vload(q + 1 * qs)),
             w0 = ptp_4x4_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_4x4_vf m0_5 = x0 * y5 - y0 * x5;
         const ptp_4x4_vf m0_1 = x0 * y1 - y0 * x1;
@@ -4667,13 +4682,13 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 0 * ds + l, v * 16.0f, n - l);
         lt = PTP_4X4_KLT0(v);
         gt = PTP_4X4_KGT0(v); /* plane 0 */
-        const ptp_4x4_vf x2 = ptp_4x4_vload(q + 8 * qs), y2 = ptp_4x4_vload(q + 9 * qs),
+        const ptp_4x4_vf x2 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 11 * qs), ptp_4x4_vload(q + 8 * qs)), y2 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 11 * qs), ptp_4x4_vload(q + 9 * qs)),
             w2 = ptp_4x4_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_4x4_vf m2_5 = x2 * y5 - y2 * x5;
         const ptp_4x4_vf m0_2 = x0 * y2 - y0 * x2;
         u = -((g0 * m2_5 - g2 * m0_5) + g5 * m0_2);
         v = (u + u) + u;
-        const ptp_4x4_vf x6 = ptp_4x4_vload(q + 24 * qs), y6 = ptp_4x4_vload(q + 25 * qs),
+        const ptp_4x4_vf x6 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 27 * qs), ptp_4x4_vload(q + 24 * qs)), y6 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 27 * qs), ptp_4x4_vload(q + 25 * qs)),
             w6 = ptp_4x4_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_4x4_vf m1_6 = x1 * y6 - y1 * x6;
         const ptp_4x4_vf m0_6 = x0 * y6 - y0 * x6;
@@ -4683,13 +4698,13 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 1 * ds + l, v * 1.60000002f, n - l);
         lt = PTP_4X4_KLT(lt, v);
         gt = PTP_4X4_KGT(gt, v); /* plane 1 */
-        const ptp_4x4_vf x3 = ptp_4x4_vload(q + 12 * qs), y3 = ptp_4x4_vload(q + 13 * qs),
+        const ptp_4x4_vf x3 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 15 * qs), ptp_4x4_vload(q + 12 * qs)), y3 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 15 * qs), ptp_4x4_vload(q + 13 * qs)),
             w3 = ptp_4x4_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_4x4_vf m3_5 = x3 * y5 - y3 * x5;
         const ptp_4x4_vf m0_3 = x0 * y3 - y0 * x3;
         u = -((g0 * m3_5 - g3 * m0_5) + g5 * m0_3);
         v = u;
-        const ptp_4x4_vf x7 = ptp_4x4_vload(q + 28 * qs), y7 = ptp_4x4_vload(q + 29 * qs),
+        const ptp_4x4_vf x7 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 31 * qs), ptp_4x4_vload(q + 28 * qs)), y7 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 31 * qs), ptp_4x4_vload(q + 29 * qs)),
             w7 = ptp_4x4_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_4x4_vf m1_7 = x1 * y7 - y1 * x7;
         const ptp_4x4_vf m0_7 = x0 * y7 - y0 * x7;
@@ -4704,13 +4719,13 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 2 * ds + l, v * 1.06666672f, n - l);
         lt = PTP_4X4_KLT(lt, v);
         gt = PTP_4X4_KGT(gt, v); /* plane 2 */
-        const ptp_4x4_vf x4 = ptp_4x4_vload(q + 16 * qs), y4 = ptp_4x4_vload(q + 17 * qs),
+        const ptp_4x4_vf x4 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 19 * qs), ptp_4x4_vload(q + 16 * qs)), y4 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 19 * qs), ptp_4x4_vload(q + 17 * qs)),
             w4 = ptp_4x4_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_4x4_vf m4_5 = x4 * y5 - y4 * x5;
         const ptp_4x4_vf m0_4 = x0 * y4 - y0 * x4;
         u = -((g0 * m4_5 - g4 * m0_5) + g5 * m0_4);
         v = u;
-        const ptp_4x4_vf x8 = ptp_4x4_vload(q + 32 * qs), y8 = ptp_4x4_vload(q + 33 * qs),
+        const ptp_4x4_vf x8 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 35 * qs), ptp_4x4_vload(q + 32 * qs)), y8 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 35 * qs), ptp_4x4_vload(q + 33 * qs)),
             w8 = ptp_4x4_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_4x4_vf m1_8 = x1 * y8 - y1 * x8;
         const ptp_4x4_vf m0_8 = x0 * y8 - y0 * x8;
@@ -4733,7 +4748,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 3 * ds + l, v * 0.13333334f, n - l);
         lt = PTP_4X4_KLT(lt, v);
         gt = PTP_4X4_KGT(gt, v); /* plane 3 */
-        const ptp_4x4_vf x9 = ptp_4x4_vload(q + 36 * qs), y9 = ptp_4x4_vload(q + 37 * qs),
+        const ptp_4x4_vf x9 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 39 * qs), ptp_4x4_vload(q + 36 * qs)), y9 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 39 * qs), ptp_4x4_vload(q + 37 * qs)),
             w9 = ptp_4x4_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_4x4_vf m1_9 = x1 * y9 - y1 * x9;
         const ptp_4x4_vf m0_9 = x0 * y9 - y0 * x9;
@@ -4816,7 +4831,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 7 * ds + l, v * 0.13333334f, n - l);
         lt = PTP_4X4_KLT(lt, v);
         gt = PTP_4X4_KGT(gt, v); /* plane 7 */
-        const ptp_4x4_vf x10 = ptp_4x4_vload(q + 40 * qs), y10 = ptp_4x4_vload(q + 41 * qs),
+        const ptp_4x4_vf x10 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 43 * qs), ptp_4x4_vload(q + 40 * qs)), y10 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 43 * qs), ptp_4x4_vload(q + 41 * qs)),
             w10 = ptp_4x4_vload(q + 43 * qs), g10 = e2 * w10;
         const ptp_4x4_vf m1_10 = x1 * y10 - y1 * x10;
         const ptp_4x4_vf m0_10 = x0 * y10 - y0 * x10;
@@ -4834,7 +4849,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g2, m0_10, u);
         u = PTP_4X4_VFMA(g10, -m0_2, u);
         v = (((u + u) + (u + u)) + ((u + u) + (u + u))) + u;
-        const ptp_4x4_vf x11 = ptp_4x4_vload(q + 44 * qs), y11 = ptp_4x4_vload(q + 45 * qs),
+        const ptp_4x4_vf x11 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 47 * qs), ptp_4x4_vload(q + 44 * qs)), y11 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 47 * qs), ptp_4x4_vload(q + 45 * qs)),
             w11 = ptp_4x4_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_4x4_vf m1_11 = x1 * y11 - y1 * x11;
         const ptp_4x4_vf m5_7 = x5 * y7 - y5 * x7;
@@ -4865,7 +4880,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g5, -m0_8, u);
         u = PTP_4X4_VFMA(g8, m0_5, u);
         v += ((u + u) + (u + u));
-        const ptp_4x4_vf x12 = ptp_4x4_vload(q + 48 * qs), y12 = ptp_4x4_vload(q + 49 * qs),
+        const ptp_4x4_vf x12 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 51 * qs), ptp_4x4_vload(q + 48 * qs)), y12 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 51 * qs), ptp_4x4_vload(q + 49 * qs)),
             w12 = ptp_4x4_vload(q + 51 * qs), g12 = e2 * w12;
         const ptp_4x4_vf m1_12 = x1 * y12 - y1 * x12;
         u = g0 * (-m1_12);
@@ -4948,7 +4963,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g5, -m0_9, u);
         u = PTP_4X4_VFMA(g9, m0_5, u);
         v += ((u + u) + (u + u));
-        const ptp_4x4_vf x13 = ptp_4x4_vload(q + 52 * qs), y13 = ptp_4x4_vload(q + 53 * qs),
+        const ptp_4x4_vf x13 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 55 * qs), ptp_4x4_vload(q + 52 * qs)), y13 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 55 * qs), ptp_4x4_vload(q + 53 * qs)),
             w13 = ptp_4x4_vload(q + 55 * qs), g13 = e2 * w13;
         const ptp_4x4_vf m1_13 = x1 * y13 - y1 * x13;
         u = g0 * (-m1_13);
@@ -4999,7 +5014,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 14 * ds + l, v * 0.0133333337f, n - l);
         lt = PTP_4X4_KLT(lt, v);
         gt = PTP_4X4_KGT(gt, v); /* plane 14 */
-        const ptp_4x4_vf x14 = ptp_4x4_vload(q + 56 * qs), y14 = ptp_4x4_vload(q + 57 * qs),
+        const ptp_4x4_vf x14 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 59 * qs), ptp_4x4_vload(q + 56 * qs)), y14 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 59 * qs), ptp_4x4_vload(q + 57 * qs)),
             w14 = ptp_4x4_vload(q + 59 * qs), g14 = e2 * w14;
         const ptp_4x4_vf m1_14 = x1 * y14 - y1 * x14;
         u = g0 * (-m1_14);
@@ -5147,7 +5162,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 21 * ds + l, v * 1.60000002f, n - l);
         lt = PTP_4X4_KLT(lt, v);
         gt = PTP_4X4_KGT(gt, v); /* plane 21 */
-        const ptp_4x4_vf x15 = ptp_4x4_vload(q + 60 * qs), y15 = ptp_4x4_vload(q + 61 * qs),
+        const ptp_4x4_vf x15 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 63 * qs), ptp_4x4_vload(q + 60 * qs)), y15 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 63 * qs), ptp_4x4_vload(q + 61 * qs)),
             w15 = ptp_4x4_vload(q + 63 * qs), g15 = e2 * w15;
         const ptp_4x4_vf m1_15 = x1 * y15 - y1 * x15;
         const ptp_4x4_vf m0_15 = x0 * y15 - y0 * x15;
@@ -5170,7 +5185,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g2, m0_15, u);
         u = PTP_4X4_VFMA(g15, -m0_2, u);
         v = (u + u) + u;
-        const ptp_4x4_vf x16 = ptp_4x4_vload(q + 64 * qs), y16 = ptp_4x4_vload(q + 65 * qs),
+        const ptp_4x4_vf x16 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 67 * qs), ptp_4x4_vload(q + 64 * qs)), y16 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 67 * qs), ptp_4x4_vload(q + 65 * qs)),
             w16 = ptp_4x4_vload(q + 67 * qs), g16 = e2 * w16;
         const ptp_4x4_vf m1_16 = x1 * y16 - y1 * x16;
         u = g0 * (-m1_16);
@@ -5213,7 +5228,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g3, m0_15, u);
         u = PTP_4X4_VFMA(g15, -m0_3, u);
         v = u;
-        const ptp_4x4_vf x17 = ptp_4x4_vload(q + 68 * qs), y17 = ptp_4x4_vload(q + 69 * qs),
+        const ptp_4x4_vf x17 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 71 * qs), ptp_4x4_vload(q + 68 * qs)), y17 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 71 * qs), ptp_4x4_vload(q + 69 * qs)),
             w17 = ptp_4x4_vload(q + 71 * qs), g17 = e2 * w17;
         const ptp_4x4_vf m1_17 = x1 * y17 - y1 * x17;
         const ptp_4x4_vf m5_13 = x5 * y13 - y5 * x13;
@@ -5445,7 +5460,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g10, m4_5, u);
         u = PTP_4X4_VFMA(g14, m0_5, u);
         v += (u + u);
-        const ptp_4x4_vf x18 = ptp_4x4_vload(q + 72 * qs), y18 = ptp_4x4_vload(q + 73 * qs),
+        const ptp_4x4_vf x18 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 75 * qs), ptp_4x4_vload(q + 72 * qs)), y18 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 75 * qs), ptp_4x4_vload(q + 73 * qs)),
             w18 = ptp_4x4_vload(q + 75 * qs), g18 = e2 * w18;
         const ptp_4x4_vf m1_18 = x1 * y18 - y1 * x18;
         const ptp_4x4_vf m9_10 = x9 * y10 - y9 * x10;
@@ -5520,7 +5535,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 25 * ds + l, v * 0.0088888891f, n - l);
         lt = PTP_4X4_KLT(lt, v);
         gt = PTP_4X4_KGT(gt, v); /* plane 25 */
-        const ptp_4x4_vf x19 = ptp_4x4_vload(q + 76 * qs), y19 = ptp_4x4_vload(q + 77 * qs),
+        const ptp_4x4_vf x19 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 79 * qs), ptp_4x4_vload(q + 76 * qs)), y19 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 79 * qs), ptp_4x4_vload(q + 77 * qs)),
             w19 = ptp_4x4_vload(q + 79 * qs), g19 = e2 * w19;
         const ptp_4x4_vf m2_19 = x2 * y19 - y2 * x19;
         u = g0 * (-m2_19);
@@ -5686,7 +5701,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 32 * ds + l, v * 1.06666672f, n - l);
         lt = PTP_4X4_KLT(lt, v);
         gt = PTP_4X4_KGT(gt, v); /* plane 32 */
-        const ptp_4x4_vf x20 = ptp_4x4_vload(q + 80 * qs), y20 = ptp_4x4_vload(q + 81 * qs),
+        const ptp_4x4_vf x20 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 83 * qs), ptp_4x4_vload(q + 80 * qs)), y20 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 83 * qs), ptp_4x4_vload(q + 81 * qs)),
             w20 = ptp_4x4_vload(q + 83 * qs), g20 = e2 * w20;
         const ptp_4x4_vf m1_20 = x1 * y20 - y1 * x20;
         const ptp_4x4_vf m0_20 = x0 * y20 - y0 * x20;
@@ -5717,7 +5732,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g2, m0_20, u);
         u = PTP_4X4_VFMA(g20, -m0_2, u);
         v = (u + u) + u;
-        const ptp_4x4_vf x21 = ptp_4x4_vload(q + 84 * qs), y21 = ptp_4x4_vload(q + 85 * qs),
+        const ptp_4x4_vf x21 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 87 * qs), ptp_4x4_vload(q + 84 * qs)), y21 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 87 * qs), ptp_4x4_vload(q + 85 * qs)),
             w21 = ptp_4x4_vload(q + 87 * qs), g21 = e2 * w21;
         const ptp_4x4_vf m1_21 = x1 * y21 - y1 * x21;
         u = g0 * (-m1_21);
@@ -5778,7 +5793,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g3, m0_20, u);
         u = PTP_4X4_VFMA(g20, -m0_3, u);
         v = u;
-        const ptp_4x4_vf x22 = ptp_4x4_vload(q + 88 * qs), y22 = ptp_4x4_vload(q + 89 * qs),
+        const ptp_4x4_vf x22 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 91 * qs), ptp_4x4_vload(q + 88 * qs)), y22 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 91 * qs), ptp_4x4_vload(q + 89 * qs)),
             w22 = ptp_4x4_vload(q + 91 * qs), g22 = e2 * w22;
         const ptp_4x4_vf m1_22 = x1 * y22 - y1 * x22;
         u = g0 * (-m1_22);
@@ -6120,7 +6135,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
         u = PTP_4X4_VFMA(g4, m0_20, u);
         u = PTP_4X4_VFMA(g20, -m0_4, u);
         v = u;
-        const ptp_4x4_vf x23 = ptp_4x4_vload(q + 92 * qs), y23 = ptp_4x4_vload(q + 93 * qs),
+        const ptp_4x4_vf x23 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 95 * qs), ptp_4x4_vload(q + 92 * qs)), y23 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 95 * qs), ptp_4x4_vload(q + 93 * qs)),
             w23 = ptp_4x4_vload(q + 95 * qs), g23 = e2 * w23;
         const ptp_4x4_vf m1_23 = x1 * y23 - y1 * x23;
         const ptp_4x4_vf m5_19 = x5 * y19 - y5 * x19;
@@ -6242,7 +6257,7 @@ static inline void ptp_4x4_lanes_body(const float *PTP_4X4_RESTRICT soa, size_t 
             ptp_4x4_vstoref(d + 36 * ds + l, v * 0.00111111114f, n - l);
         lt = PTP_4X4_KLT(lt, v);
         gt = PTP_4X4_KGT(gt, v); /* plane 36 */
-        const ptp_4x4_vf x24 = ptp_4x4_vload(q + 96 * qs), y24 = ptp_4x4_vload(q + 97 * qs),
+        const ptp_4x4_vf x24 = PTP_4X4_VLOCAL(ox, ptp_4x4_vload(q + 99 * qs), ptp_4x4_vload(q + 96 * qs)), y24 = PTP_4X4_VLOCAL(oy, ptp_4x4_vload(q + 99 * qs), ptp_4x4_vload(q + 97 * qs)),
             w24 = ptp_4x4_vload(q + 99 * qs), g24 = e2 * w24;
         const ptp_4x4_vf m4_24 = x4 * y24 - y4 * x24;
         u = g0 * (-m4_24);

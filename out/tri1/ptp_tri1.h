@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI1_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI1_FLOPS 17
-#define PTP_TRI1_MULS 12
+#define PTP_TRI1_FLOPS 32
+#define PTP_TRI1_MULS 20
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI1_LANES
 #define PTP_TRI1_LANES 16
@@ -167,7 +167,9 @@ static inline void ptp_tri1_vstoref(float *d, ptp_tri1_vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if PTP_TRI1_VW == 16
 #include <immintrin.h>
@@ -188,7 +190,15 @@ static inline void ptp_tri1_vstoref(float *d, ptp_tri1_vf v, size_t count)
 #else
 #define PTP_TRI1_VFMA(a, b, c) ((a) * (b) + (c))
 #define PTP_TRI1_VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double ptp_tri1_vd __attribute__((vector_size(8 * PTP_TRI1_VW)));
+#define PTP_TRI1_VLOCAL(o, w, x) ((ptp_tri1_vf)__builtin_convertvector(__builtin_convertvector(x, ptp_tri1_vd) + \
+    __builtin_convertvector(o, ptp_tri1_vd) * __builtin_convertvector(w, ptp_tri1_vd), ptp_tri1_vf))
 #endif
+#ifndef PTP_TRI1_VLOCAL
+#define PTP_TRI1_VLOCAL PTP_TRI1_VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define PTP_TRI1_VRECIP0(x) ((ptp_tri1_vf)((ptp_tri1_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri1_vf ptp_tri1_vabsmax(ptp_tri1_vf r, ptp_tri1_vf x)
 {
@@ -219,10 +229,13 @@ static inline void ptp_tri1_vstoref(float *d, ptp_tri1_vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_TRI1_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define PTP_TRI1_VLOCAL PTP_TRI1_VFMA
 #else
 #define PTP_TRI1_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI1_VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define PTP_TRI1_VFMAS PTP_TRI1_VFMA
+#define PTP_TRI1_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float ptp_tri1_alpha(const float proj[16], int layout)
@@ -357,12 +370,14 @@ static inline void ptp_tri1_lanes_body(const float *PTP_TRI1_RESTRICT soa, size_
             qs = PTP_TRI1_VW;
         }
 #endif
-        const ptp_tri1_vf x1 = ptp_tri1_vload(q + 4 * qs), y1 = ptp_tri1_vload(q + 5 * qs),
+        const ptp_tri1_vf rw = PTP_TRI1_VRECIP0(ptp_tri1_vload(q + 3 * qs));
+        const ptp_tri1_vf ox = -(ptp_tri1_vload(q + 0 * qs) * rw), oy = -(ptp_tri1_vload(q + 1 * qs) * rw);
+        const ptp_tri1_vf x1 = PTP_TRI1_VLOCAL(ox, ptp_tri1_vload(q + 7 * qs), ptp_tri1_vload(q + 4 * qs)), y1 = PTP_TRI1_VLOCAL(oy, ptp_tri1_vload(q + 7 * qs), ptp_tri1_vload(q + 5 * qs)),
             w1 = ptp_tri1_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_tri1_vf x2 = ptp_tri1_vload(q + 8 * qs), y2 = ptp_tri1_vload(q + 9 * qs),
+        const ptp_tri1_vf x2 = PTP_TRI1_VLOCAL(ox, ptp_tri1_vload(q + 11 * qs), ptp_tri1_vload(q + 8 * qs)), y2 = PTP_TRI1_VLOCAL(oy, ptp_tri1_vload(q + 11 * qs), ptp_tri1_vload(q + 9 * qs)),
             w2 = ptp_tri1_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_tri1_vf m1_2 = x1 * y2 - y1 * x2;
-        const ptp_tri1_vf x0 = ptp_tri1_vload(q + 0 * qs), y0 = ptp_tri1_vload(q + 1 * qs),
+        const ptp_tri1_vf x0 = PTP_TRI1_VLOCAL(ox, ptp_tri1_vload(q + 3 * qs), ptp_tri1_vload(q + 0 * qs)), y0 = PTP_TRI1_VLOCAL(oy, ptp_tri1_vload(q + 3 * qs), ptp_tri1_vload(q + 1 * qs)),
             w0 = ptp_tri1_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri1_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_tri1_vf m0_1 = x0 * y1 - y0 * x1;

@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI2_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI2_FLOPS 144
-#define PTP_TRI2_MULS 87
+#define PTP_TRI2_FLOPS 171
+#define PTP_TRI2_MULS 101
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI2_LANES
 #define PTP_TRI2_LANES 16
@@ -167,7 +167,9 @@ static inline void ptp_tri2_vstoref(float *d, ptp_tri2_vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if PTP_TRI2_VW == 16
 #include <immintrin.h>
@@ -188,7 +190,15 @@ static inline void ptp_tri2_vstoref(float *d, ptp_tri2_vf v, size_t count)
 #else
 #define PTP_TRI2_VFMA(a, b, c) ((a) * (b) + (c))
 #define PTP_TRI2_VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double ptp_tri2_vd __attribute__((vector_size(8 * PTP_TRI2_VW)));
+#define PTP_TRI2_VLOCAL(o, w, x) ((ptp_tri2_vf)__builtin_convertvector(__builtin_convertvector(x, ptp_tri2_vd) + \
+    __builtin_convertvector(o, ptp_tri2_vd) * __builtin_convertvector(w, ptp_tri2_vd), ptp_tri2_vf))
 #endif
+#ifndef PTP_TRI2_VLOCAL
+#define PTP_TRI2_VLOCAL PTP_TRI2_VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define PTP_TRI2_VRECIP0(x) ((ptp_tri2_vf)((ptp_tri2_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri2_vf ptp_tri2_vabsmax(ptp_tri2_vf r, ptp_tri2_vf x)
 {
@@ -219,10 +229,13 @@ static inline void ptp_tri2_vstoref(float *d, ptp_tri2_vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_TRI2_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define PTP_TRI2_VLOCAL PTP_TRI2_VFMA
 #else
 #define PTP_TRI2_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI2_VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define PTP_TRI2_VFMAS PTP_TRI2_VFMA
+#define PTP_TRI2_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float ptp_tri2_alpha(const float proj[16], int layout)
@@ -389,12 +402,14 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
             qs = PTP_TRI2_VW;
         }
 #endif
-        const ptp_tri2_vf x1 = ptp_tri2_vload(q + 4 * qs), y1 = ptp_tri2_vload(q + 5 * qs),
+        const ptp_tri2_vf rw = PTP_TRI2_VRECIP0(ptp_tri2_vload(q + 3 * qs));
+        const ptp_tri2_vf ox = -(ptp_tri2_vload(q + 0 * qs) * rw), oy = -(ptp_tri2_vload(q + 1 * qs) * rw);
+        const ptp_tri2_vf x1 = PTP_TRI2_VLOCAL(ox, ptp_tri2_vload(q + 7 * qs), ptp_tri2_vload(q + 4 * qs)), y1 = PTP_TRI2_VLOCAL(oy, ptp_tri2_vload(q + 7 * qs), ptp_tri2_vload(q + 5 * qs)),
             w1 = ptp_tri2_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_tri2_vf x2 = ptp_tri2_vload(q + 8 * qs), y2 = ptp_tri2_vload(q + 9 * qs),
+        const ptp_tri2_vf x2 = PTP_TRI2_VLOCAL(ox, ptp_tri2_vload(q + 11 * qs), ptp_tri2_vload(q + 8 * qs)), y2 = PTP_TRI2_VLOCAL(oy, ptp_tri2_vload(q + 11 * qs), ptp_tri2_vload(q + 9 * qs)),
             w2 = ptp_tri2_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_tri2_vf m1_2 = x1 * y2 - y1 * x2;
-        const ptp_tri2_vf x0 = ptp_tri2_vload(q + 0 * qs), y0 = ptp_tri2_vload(q + 1 * qs),
+        const ptp_tri2_vf x0 = PTP_TRI2_VLOCAL(ox, ptp_tri2_vload(q + 3 * qs), ptp_tri2_vload(q + 0 * qs)), y0 = PTP_TRI2_VLOCAL(oy, ptp_tri2_vload(q + 3 * qs), ptp_tri2_vload(q + 1 * qs)),
             w0 = ptp_tri2_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri2_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_tri2_vf m0_1 = x0 * y1 - y0 * x1;
@@ -404,12 +419,12 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
             ptp_tri2_vstoref(d + 0 * ds + l, v * 4.0f, n - l);
         lt = PTP_TRI2_KLT0(v);
         gt = PTP_TRI2_KGT0(v); /* plane 0 */
-        const ptp_tri2_vf x4 = ptp_tri2_vload(q + 16 * qs), y4 = ptp_tri2_vload(q + 17 * qs),
+        const ptp_tri2_vf x4 = PTP_TRI2_VLOCAL(ox, ptp_tri2_vload(q + 19 * qs), ptp_tri2_vload(q + 16 * qs)), y4 = PTP_TRI2_VLOCAL(oy, ptp_tri2_vload(q + 19 * qs), ptp_tri2_vload(q + 17 * qs)),
             w4 = ptp_tri2_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_tri2_vf m1_4 = x1 * y4 - y1 * x4;
         const ptp_tri2_vf m0_4 = x0 * y4 - y0 * x4;
         u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
-        const ptp_tri2_vf x3 = ptp_tri2_vload(q + 12 * qs), y3 = ptp_tri2_vload(q + 13 * qs),
+        const ptp_tri2_vf x3 = PTP_TRI2_VLOCAL(ox, ptp_tri2_vload(q + 15 * qs), ptp_tri2_vload(q + 12 * qs)), y3 = PTP_TRI2_VLOCAL(oy, ptp_tri2_vload(q + 15 * qs), ptp_tri2_vload(q + 13 * qs)),
             w3 = ptp_tri2_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_tri2_vf m2_3 = x2 * y3 - y2 * x3;
         const ptp_tri2_vf m0_3 = x0 * y3 - y0 * x3;
@@ -434,7 +449,7 @@ static inline void ptp_tri2_lanes_body(const float *PTP_TRI2_RESTRICT soa, size_
             ptp_tri2_vstoref(d + 6 * ds + l, v * 4.0f, n - l);
         lt = PTP_TRI2_KLT(lt, v);
         gt = PTP_TRI2_KGT(gt, v); /* plane 6 */
-        const ptp_tri2_vf x5 = ptp_tri2_vload(q + 20 * qs), y5 = ptp_tri2_vload(q + 21 * qs),
+        const ptp_tri2_vf x5 = PTP_TRI2_VLOCAL(ox, ptp_tri2_vload(q + 23 * qs), ptp_tri2_vload(q + 20 * qs)), y5 = PTP_TRI2_VLOCAL(oy, ptp_tri2_vload(q + 23 * qs), ptp_tri2_vload(q + 21 * qs)),
             w5 = ptp_tri2_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_tri2_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_tri2_vf m0_5 = x0 * y5 - y0 * x5;

@@ -44,8 +44,8 @@ extern "C" {
 #define PTP_TRI4_SILHOUETTE 2u
 /* Floating-point operations per patch of classify, classify_batch and classify_soa (a
  * multiply-add counts 2), and those of them on the multiply pipes (multiplies, multiply-adds). */
-#define PTP_TRI4_FLOPS 3105
-#define PTP_TRI4_MULS 1363
+#define PTP_TRI4_FLOPS 3168
+#define PTP_TRI4_MULS 1395
 /* Patches classify_batch transposes and classifies at a time (define it to override). */
 #ifndef PTP_TRI4_LANES
 #define PTP_TRI4_LANES 16
@@ -167,7 +167,9 @@ static inline void ptp_tri4_vstoref(float *d, ptp_tri4_vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if PTP_TRI4_VW == 16
 #include <immintrin.h>
@@ -188,7 +190,15 @@ static inline void ptp_tri4_vstoref(float *d, ptp_tri4_vf v, size_t count)
 #else
 #define PTP_TRI4_VFMA(a, b, c) ((a) * (b) + (c))
 #define PTP_TRI4_VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double ptp_tri4_vd __attribute__((vector_size(8 * PTP_TRI4_VW)));
+#define PTP_TRI4_VLOCAL(o, w, x) ((ptp_tri4_vf)__builtin_convertvector(__builtin_convertvector(x, ptp_tri4_vd) + \
+    __builtin_convertvector(o, ptp_tri4_vd) * __builtin_convertvector(w, ptp_tri4_vd), ptp_tri4_vf))
 #endif
+#ifndef PTP_TRI4_VLOCAL
+#define PTP_TRI4_VLOCAL PTP_TRI4_VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define PTP_TRI4_VRECIP0(x) ((ptp_tri4_vf)((ptp_tri4_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline ptp_tri4_vf ptp_tri4_vabsmax(ptp_tri4_vf r, ptp_tri4_vf x)
 {
@@ -219,10 +229,13 @@ static inline void ptp_tri4_vstoref(float *d, ptp_tri4_vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define PTP_TRI4_VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define PTP_TRI4_VLOCAL PTP_TRI4_VFMA
 #else
 #define PTP_TRI4_VFMA(a, b, c) ((a) * (b) + (c))
+#define PTP_TRI4_VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define PTP_TRI4_VFMAS PTP_TRI4_VFMA
+#define PTP_TRI4_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float ptp_tri4_alpha(const float proj[16], int layout)
@@ -1169,12 +1182,14 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             qs = PTP_TRI4_VW;
         }
 #endif
-        const ptp_tri4_vf x1 = ptp_tri4_vload(q + 4 * qs), y1 = ptp_tri4_vload(q + 5 * qs),
+        const ptp_tri4_vf rw = PTP_TRI4_VRECIP0(ptp_tri4_vload(q + 3 * qs));
+        const ptp_tri4_vf ox = -(ptp_tri4_vload(q + 0 * qs) * rw), oy = -(ptp_tri4_vload(q + 1 * qs) * rw);
+        const ptp_tri4_vf x1 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 7 * qs), ptp_tri4_vload(q + 4 * qs)), y1 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 7 * qs), ptp_tri4_vload(q + 5 * qs)),
             w1 = ptp_tri4_vload(q + 7 * qs), g1 = e2 * w1;
-        const ptp_tri4_vf x2 = ptp_tri4_vload(q + 8 * qs), y2 = ptp_tri4_vload(q + 9 * qs),
+        const ptp_tri4_vf x2 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 11 * qs), ptp_tri4_vload(q + 8 * qs)), y2 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 11 * qs), ptp_tri4_vload(q + 9 * qs)),
             w2 = ptp_tri4_vload(q + 11 * qs), g2 = e2 * w2;
         const ptp_tri4_vf m1_2 = x1 * y2 - y1 * x2;
-        const ptp_tri4_vf x0 = ptp_tri4_vload(q + 0 * qs), y0 = ptp_tri4_vload(q + 1 * qs),
+        const ptp_tri4_vf x0 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 3 * qs), ptp_tri4_vload(q + 0 * qs)), y0 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 3 * qs), ptp_tri4_vload(q + 1 * qs)),
             w0 = ptp_tri4_vload(q + 3 * qs), g0 = e2 * w0;
         const ptp_tri4_vf m0_2 = x0 * y2 - y0 * x2;
         const ptp_tri4_vf m0_1 = x0 * y1 - y0 * x1;
@@ -1184,12 +1199,12 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 0 * ds + l, v * 16.0f, n - l);
         lt = PTP_TRI4_KLT0(v);
         gt = PTP_TRI4_KGT0(v); /* plane 0 */
-        const ptp_tri4_vf x4 = ptp_tri4_vload(q + 16 * qs), y4 = ptp_tri4_vload(q + 17 * qs),
+        const ptp_tri4_vf x4 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 19 * qs), ptp_tri4_vload(q + 16 * qs)), y4 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 19 * qs), ptp_tri4_vload(q + 17 * qs)),
             w4 = ptp_tri4_vload(q + 19 * qs), g4 = e2 * w4;
         const ptp_tri4_vf m1_4 = x1 * y4 - y1 * x4;
         const ptp_tri4_vf m0_4 = x0 * y4 - y0 * x4;
         u = ((g0 * m1_4 - g1 * m0_4) + g4 * m0_1);
-        const ptp_tri4_vf x3 = ptp_tri4_vload(q + 12 * qs), y3 = ptp_tri4_vload(q + 13 * qs),
+        const ptp_tri4_vf x3 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 15 * qs), ptp_tri4_vload(q + 12 * qs)), y3 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 15 * qs), ptp_tri4_vload(q + 13 * qs)),
             w3 = ptp_tri4_vload(q + 15 * qs), g3 = e2 * w3;
         const ptp_tri4_vf m2_3 = x2 * y3 - y2 * x3;
         const ptp_tri4_vf m0_3 = x0 * y3 - y0 * x3;
@@ -1199,7 +1214,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 1 * ds + l, v * 5.33333349f, n - l);
         lt = PTP_TRI4_KLT(lt, v);
         gt = PTP_TRI4_KGT(gt, v); /* plane 1 */
-        const ptp_tri4_vf x5 = ptp_tri4_vload(q + 20 * qs), y5 = ptp_tri4_vload(q + 21 * qs),
+        const ptp_tri4_vf x5 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 23 * qs), ptp_tri4_vload(q + 20 * qs)), y5 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 23 * qs), ptp_tri4_vload(q + 21 * qs)),
             w5 = ptp_tri4_vload(q + 23 * qs), g5 = e2 * w5;
         const ptp_tri4_vf m1_5 = x1 * y5 - y1 * x5;
         const ptp_tri4_vf m0_5 = x0 * y5 - y0 * x5;
@@ -1211,10 +1226,10 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 2 * ds + l, v * 5.33333349f, n - l);
         lt = PTP_TRI4_KLT(lt, v);
         gt = PTP_TRI4_KGT(gt, v); /* plane 2 */
-        const ptp_tri4_vf x8 = ptp_tri4_vload(q + 32 * qs), y8 = ptp_tri4_vload(q + 33 * qs),
+        const ptp_tri4_vf x8 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 35 * qs), ptp_tri4_vload(q + 32 * qs)), y8 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 35 * qs), ptp_tri4_vload(q + 33 * qs)),
             w8 = ptp_tri4_vload(q + 35 * qs), g8 = e2 * w8;
         const ptp_tri4_vf m1_8 = x1 * y8 - y1 * x8;
-        const ptp_tri4_vf x7 = ptp_tri4_vload(q + 28 * qs), y7 = ptp_tri4_vload(q + 29 * qs),
+        const ptp_tri4_vf x7 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 31 * qs), ptp_tri4_vload(q + 28 * qs)), y7 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 31 * qs), ptp_tri4_vload(q + 29 * qs)),
             w7 = ptp_tri4_vload(q + 31 * qs), g7 = e2 * w7;
         const ptp_tri4_vf m2_7 = x2 * y7 - y2 * x7;
         u = g0 * (m1_8 - m2_7);
@@ -1240,7 +1255,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         gt = PTP_TRI4_KGT(gt, v); /* plane 4 */
         const ptp_tri4_vf m1_7 = x1 * y7 - y1 * x7;
         u = ((g0 * m1_7 - g1 * m0_7) + g7 * m0_1);
-        const ptp_tri4_vf x6 = ptp_tri4_vload(q + 24 * qs), y6 = ptp_tri4_vload(q + 25 * qs),
+        const ptp_tri4_vf x6 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 27 * qs), ptp_tri4_vload(q + 24 * qs)), y6 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 27 * qs), ptp_tri4_vload(q + 25 * qs)),
             w6 = ptp_tri4_vload(q + 27 * qs), g6 = e2 * w6;
         const ptp_tri4_vf m2_6 = x2 * y6 - y2 * x6;
         const ptp_tri4_vf m0_6 = x0 * y6 - y0 * x6;
@@ -1256,7 +1271,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 3 * ds + l, v * 1.33333337f, n - l);
         lt = PTP_TRI4_KLT(lt, v);
         gt = PTP_TRI4_KGT(gt, v); /* plane 3 */
-        const ptp_tri4_vf x9 = ptp_tri4_vload(q + 36 * qs), y9 = ptp_tri4_vload(q + 37 * qs),
+        const ptp_tri4_vf x9 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 39 * qs), ptp_tri4_vload(q + 36 * qs)), y9 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 39 * qs), ptp_tri4_vload(q + 37 * qs)),
             w9 = ptp_tri4_vload(q + 39 * qs), g9 = e2 * w9;
         const ptp_tri4_vf m1_9 = x1 * y9 - y1 * x9;
         const ptp_tri4_vf m0_9 = x0 * y9 - y0 * x9;
@@ -1274,12 +1289,12 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 5 * ds + l, v * 1.33333337f, n - l);
         lt = PTP_TRI4_KLT(lt, v);
         gt = PTP_TRI4_KGT(gt, v); /* plane 5 */
-        const ptp_tri4_vf x14 = ptp_tri4_vload(q + 56 * qs), y14 = ptp_tri4_vload(q + 57 * qs),
+        const ptp_tri4_vf x14 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 59 * qs), ptp_tri4_vload(q + 56 * qs)), y14 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 59 * qs), ptp_tri4_vload(q + 57 * qs)),
             w14 = ptp_tri4_vload(q + 59 * qs), g14 = e2 * w14;
         const ptp_tri4_vf m1_14 = x1 * y14 - y1 * x14;
         const ptp_tri4_vf m0_14 = x0 * y14 - y0 * x14;
         u = ((g0 * m1_14 - g1 * m0_14) + g14 * m0_1);
-        const ptp_tri4_vf x13 = ptp_tri4_vload(q + 52 * qs), y13 = ptp_tri4_vload(q + 53 * qs),
+        const ptp_tri4_vf x13 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 55 * qs), ptp_tri4_vload(q + 52 * qs)), y13 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 55 * qs), ptp_tri4_vload(q + 53 * qs)),
             w13 = ptp_tri4_vload(q + 55 * qs), g13 = e2 * w13;
         const ptp_tri4_vf m2_13 = x2 * y13 - y2 * x13;
         const ptp_tri4_vf m0_13 = x0 * y13 - y0 * x13;
@@ -1300,7 +1315,7 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
         lt = PTP_TRI4_KLT(lt, v);
         gt = PTP_TRI4_KGT(gt, v); /* plane 9 */
         const ptp_tri4_vf m1_13 = x1 * y13 - y1 * x13;
-        const ptp_tri4_vf x12 = ptp_tri4_vload(q + 48 * qs), y12 = ptp_tri4_vload(q + 49 * qs),
+        const ptp_tri4_vf x12 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 51 * qs), ptp_tri4_vload(q + 48 * qs)), y12 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 51 * qs), ptp_tri4_vload(q + 49 * qs)),
             w12 = ptp_tri4_vload(q + 51 * qs), g12 = e2 * w12;
         const ptp_tri4_vf m2_12 = x2 * y12 - y2 * x12;
         u = g0 * (m1_13 - m2_12);
@@ -1336,12 +1351,12 @@ static inline void ptp_tri4_lanes_body(const float *PTP_TRI4_RESTRICT soa, size_
             ptp_tri4_vstoref(d + 8 * ds + l, v * 0.190476194f, n - l);
         lt = PTP_TRI4_KLT(lt, v);
         gt = PTP_TRI4_KGT(gt, v); /* plane 8 */
-        const ptp_tri4_vf x11 = ptp_tri4_vload(q + 44 * qs), y11 = ptp_tri4_vload(q + 45 * qs),
+        const ptp_tri4_vf x11 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 47 * qs), ptp_tri4_vload(q + 44 * qs)), y11 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 47 * qs), ptp_tri4_vload(q + 45 * qs)),
             w11 = ptp_tri4_vload(q + 47 * qs), g11 = e2 * w11;
         const ptp_tri4_vf m1_11 = x1 * y11 - y1 * x11;
         const ptp_tri4_vf m0_11 = x0 * y11 - y0 * x11;
         u = ((g0 * m1_11 - g1 * m0_11) + g11 * m0_1);
-        const ptp_tri4_vf x10 = ptp_tri4_vload(q + 40 * qs), y10 = ptp_tri4_vload(q + 41 * qs),
+        const ptp_tri4_vf x10 = PTP_TRI4_VLOCAL(ox, ptp_tri4_vload(q + 43 * qs), ptp_tri4_vload(q + 40 * qs)), y10 = PTP_TRI4_VLOCAL(oy, ptp_tri4_vload(q + 43 * qs), ptp_tri4_vload(q + 41 * qs)),
             w10 = ptp_tri4_vload(q + 43 * qs), g10 = e2 * w10;
         const ptp_tri4_vf m2_10 = x2 * y10 - y2 * x10;
         const ptp_tri4_vf m0_10 = x0 * y10 - y0 * x10;

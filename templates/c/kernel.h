@@ -141,7 +141,9 @@ static inline void {{PREFIX}}vstoref(float *d, {{PREFIX}}vf v, size_t count)
         d[i] = v[i];
 }
 /* VFMA(a, b, c) = a * b + c, VFMAS the same with a float a: one rounding through the target's
- * multiply-add instructions, else two (the certified bound allows both). Macros: gcc inlines no
+ * multiply-add instructions, else two (the certified bound allows both). VLOCAL(o, w, x) = x +
+ * o * w, a patch-local coordinate: the multiply-add, else in double (the product exact, two
+ * roundings in all, which the certified bound counts). Macros: gcc inlines no
  * function into code compiled with other optimize options, such as the lanes' fp-contract=off. */
 #if {{UPREFIX}}VW == 16
 #include <immintrin.h>
@@ -162,7 +164,15 @@ static inline void {{PREFIX}}vstoref(float *d, {{PREFIX}}vf v, size_t count)
 #else
 #define {{UPREFIX}}VFMA(a, b, c) ((a) * (b) + (c))
 #define {{UPREFIX}}VFMAS(a, b, c) ((a) * (b) + (c))
+typedef double {{PREFIX}}vd __attribute__((vector_size(8 * {{UPREFIX}}VW)));
+#define {{UPREFIX}}VLOCAL(o, w, x) (({{PREFIX}}vf)__builtin_convertvector(__builtin_convertvector(x, {{PREFIX}}vd) + \
+    __builtin_convertvector(o, {{PREFIX}}vd) * __builtin_convertvector(w, {{PREFIX}}vd), {{PREFIX}}vf))
 #endif
+#ifndef {{UPREFIX}}VLOCAL
+#define {{UPREFIX}}VLOCAL {{UPREFIX}}VFMA
+#endif
+/* 1 / x lane by lane, 0 where x is 0. */
+#define {{UPREFIX}}VRECIP0(x) (({{PREFIX}}vf)(({{PREFIX}}vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
 static inline {{PREFIX}}vf {{PREFIX}}vabsmax({{PREFIX}}vf r, {{PREFIX}}vf x)
 {
@@ -193,10 +203,13 @@ static inline void {{PREFIX}}vstoref(float *d, {{PREFIX}}vf v, size_t count)
 }
 #if defined(__GNUC__) && (defined(__FMA__) || defined(__ARM_FEATURE_FMA))
 #define {{UPREFIX}}VFMA(a, b, c) __builtin_fmaf(a, b, c)
+#define {{UPREFIX}}VLOCAL {{UPREFIX}}VFMA
 #else
 #define {{UPREFIX}}VFMA(a, b, c) ((a) * (b) + (c))
+#define {{UPREFIX}}VLOCAL(o, w, x) ((float)((double)(x) + (double)(o) * (double)(w)))
 #endif
 #define {{UPREFIX}}VFMAS {{UPREFIX}}VFMA
+#define {{UPREFIX}}VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
 #endif
 
 float {{PREFIX}}alpha(const float proj[16], int layout)
