@@ -1112,11 +1112,11 @@ done:
 }
 
 /* cross4 of Appendix A in double, and the sum of |monomials| of each component. With two equal
- * points and exact set, it is exactly zero (t = mag = 0): the kernels evaluate the planes a
+ * points and exact set, it is exactly zero (t = mag = 0; returns 1, else 0): the kernels evaluate the planes a
  * collapsed edge zeros (kref_ref.edge) without contracted multiply-adds, so that their terms with
  * two equal points are exactly zero too and such a plane has bound 0. */
-static void cross4_mag(double t[4], double mag[4], const float *a, const float *b, const float *c,
-                       int exact)
+static int cross4_mag(double t[4], double mag[4], const float *a, const float *b, const float *c,
+                      int exact)
 {
     static const int rows[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
     int o;
@@ -1124,7 +1124,7 @@ static void cross4_mag(double t[4], double mag[4], const float *a, const float *
                   !memcmp(b, c, 4 * sizeof *b))) {
         for (o = 0; o < 4; o++)
             t[o] = mag[o] = 0;
-        return;
+        return 1;
     }
     for (o = 0; o < 4; o++) {
         int p = rows[o][0], q = rows[o][1], s = rows[o][2];
@@ -1135,6 +1135,7 @@ static void cross4_mag(double t[4], double mag[4], const float *a, const float *
         t[o] = (o & 1) ? -det : det;
         mag[o] = fabs(m1) + fabs(m2) + fabs(m3) + fabs(m4) + fabs(m5) + fabs(m6);
     }
+    return 0;
 }
 
 /* Patch-local coordinates as the straight-line kernels compute them (ptpgen --coordinates local):
@@ -1183,8 +1184,8 @@ void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, doub
     for (x = 0; x < r->t.nterms; x++) {
         const tp_term *e = &r->t.terms[x];
         double t[4], mag[4], lt[4], lmag[4], w = rat_get_d(&e->w), v = 0, mg = 0, lg = 0;
-        int c;
-        cross4_mag(t, mag, b[e->j], b[e->k], b[e->l], r->edge[e->plane]);
+        int c, zero;
+        zero = cross4_mag(t, mag, b[e->j], b[e->k], b[e->l], r->edge[e->plane]);
         cross4_mag(lt, lmag, lm[e->j], lm[e->k], lm[e->l], 0);
         for (c = 0; c < 4; c++)
             if (r->space == KREF_WORLD || c == 2) {
@@ -1194,7 +1195,7 @@ void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, doub
             }
         d[e->plane] += w * v;
         bound[e->plane] += fabs(w) * mg;
-        lb[e->plane] += mg > 0 ? fabs(w) * lg : 0; /* exactly zero stays exactly zero */
+        lb[e->plane] += zero ? 0 : fabs(w) * lg; /* two equal points stay equal */
     }
     for (i = 0, x = 0; i < r->L; i++) {
         for (count = 0; x < r->t.nterms && r->t.terms[x].plane == i; x++)
