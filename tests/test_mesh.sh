@@ -20,7 +20,7 @@ host() {
 }
 
 # The fused kernel: AVX-512 where the CPU has it (-march=native, and -mavx512f alone), AVX with
-# -mavx2 (8 wide, then 4, then 1 in blocks of 21).
+# -mavx2 -mfma (8 wide, then 4, then 1 in blocks of 21; patch-local coordinates take the FMA).
 avx512=
 grep -qw avx512f /proc/cpuinfo 2>/dev/null && avx512="gcc:gcc:-std=c11 -mavx512f"
 [ -z "$avx512" ] && echo "# skip: the fused AVX-512 kernel (this CPU has no AVX-512)"
@@ -36,7 +36,7 @@ for cfg in "clip strict" "clip degenerate" "world strict" "world degenerate" "cl
     # gathers: the fused kernel (certified: the gathers into classify_soa) of AVX-512 or AVX2 with
     # -march=native and of AVX (8 wide, then 4, then 1 in blocks of 21), SSE2 (4, then 1 in blocks
     # of 5), scalar
-    for build in ${avx512:+"$avx512"} "gcc:gcc:-std=c11" "gcc:gcc:-std=c11 -march=native" "gcc:gcc:-std=c11 -mavx2 -DPTP_TRI1_MESH_LANES=21" \
+    for build in ${avx512:+"$avx512"} "gcc:gcc:-std=c11" "gcc:gcc:-std=c11 -march=native" "gcc:gcc:-std=c11 -mavx2 -mfma -DPTP_TRI1_MESH_LANES=21" \
         "gcc:gcc:-std=c11 -DPTP_TRI1_MESH_LANES=5" "gcc:gcc:-std=c11 -DPTP_TRI1_NO_VECTOR -DPTP_TRI1_NO_SSE" \
         "clang:clang:-std=c11 -O3 -march=native" "g++:gcc:-std=c++11" "g++:gcc:-std=c++17 -march=native" \
         "clang++:clang:-std=c++20 -march=native"; do
@@ -82,6 +82,6 @@ for isa in "avx512f:_mm512:_mm512_set1_epi32(1)" "avx2:_mm256:_mm256_set1_ps(-1.
     mutant "a fused $cpu mesh kernel that contracts a product into an FMA" "-m$cpu -mfma" \
         "s|${v}_sub_ps(${v}_mul_ps(g0, m1_2), ${v}_mul_ps(g1, m0_2))|${v}_fmsub_ps(g0, m1_2, ${v}_mul_ps(g1, m0_2))|" \
         "classify_mesh equals classify"
-    mutant "a fused $cpu mesh kernel that calls a zero value back" "-m$cpu" \
+    mutant "a fused $cpu mesh kernel that calls a zero value back" "-m$cpu -mfma" \
         "s|_CMP_LT_OQ), $one|_CMP_LE_OQ), $one|" "classify_mesh equals classify"
 done

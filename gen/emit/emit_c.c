@@ -115,8 +115,8 @@ static void put_lanes_head(sbuf *o, const out_info *info, const cert_bounds *cb,
                 "#if defined(__clang__)\n#pragma STDC FP_CONTRACT OFF\n#endif\n",
                 up, up, px, up, (int)strlen(px) + 31, "", up, (int)strlen(px) + 31, "", up);
     if (world && info->slp->local) /* vectors: the frame's multiply-adds take them */
-        sbuf_printf(o, "    const %svf e0 = eye[0] + (%svf){0}, e1 = eye[1] + (%svf){0},\n"
-                       "        e2 = eye[2] + (%svf){0}, e3 = eye[3] + (%svf){0};\n",
+        sbuf_printf(o, "    const %svf e0 = %svsplat(eye[0]), e1 = %svsplat(eye[1]),\n"
+                       "        e2 = %svsplat(eye[2]), e3 = %svsplat(eye[3]);\n",
                     px, px, px, px, px);
     else if (world)
         sbuf_puts(o, "    const float e0 = eye[0], e1 = eye[1], e2 = eye[2], e3 = eye[3];\n");

@@ -87,8 +87,50 @@ static void put_eye(sbuf *o, const out_info *info, const fused_isa *isa)
             sbuf_printf(o, "    const %s e%d = %s_set1_ps(eye[%d]);\n", isa->vec, c, isa->fam, c);
 }
 
+/* Writes to out coordinate c of point k as the fused kernel reads it: v[k][c], or the local x<k>. */
+static void point_name(char *out, size_t size, int local, int k, int c)
+{
+    if (local)
+        snprintf(out, size, "%c%d", "xyzw"[c], k);
+    else
+        snprintf(out, size, "v[%d][%d]", k, c);
+}
+
+/* Patch-local coordinates (slpt_frame): rw = 1 / w0 (0 where w0 is 0; NaN stays NaN, as in the
+ * lanes), o = -(x0, y0[, z0]) rw, the local eye l = e + o e3 (world) and each point's x + o w, y +
+ * o w[, z + o w] as one multiply-add: the lanes' VRECIP0 and VLOCAL (the fused kernel runs only
+ * where VLOCAL is a multiply-add). Declares x<k> y<k> w<k> (world also z<k>, l0 l1 l2). */
+static void put_frame(sbuf *o, const out_info *info, const fused_isa *isa)
+{
+    static const char xyz[] = "xyz";
+    int world = info->space == OUT_WORLD, n = world ? 3 : 2, k, c;
+    if (isa->wide)
+        sbuf_puts(o, "        const __m512 rw = _mm512_maskz_div_ps(_mm512_cmp_ps_mask(v[0][3], _mm512_setzero_ps(), "
+                     "_CMP_NEQ_UQ),\n            _mm512_set1_ps(1.0f), v[0][3]);\n");
+    else
+        sbuf_puts(o, "        const __m256 rw = _mm256_and_ps(_mm256_div_ps(_mm256_set1_ps(1.0f), v[0][3]),\n"
+                     "            _mm256_cmp_ps(v[0][3], _mm256_setzero_ps(), _CMP_NEQ_UQ));\n");
+    for (c = 0; c < n; c++) /* -(x0 rw): the product's sign bit flipped */
+        if (isa->wide)
+            sbuf_printf(o, "        const __m512 o%c = _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512("
+                           "_mm512_mul_ps(v[0][%d], rw)),\n            _mm512_set1_epi32(INT32_MIN)));\n",
+                        xyz[c], c);
+        else
+            sbuf_printf(o, "        const __m256 o%c = _mm256_xor_ps(_mm256_mul_ps(v[0][%d], rw), _mm256_set1_ps(-0.0f));\n",
+                        xyz[c], c);
+    for (c = 0; world && c < 3; c++)
+        sbuf_printf(o, "        const %s l%d = %s_fmadd_ps(o%c, e3, e%d);\n", isa->vec, c, isa->fam, xyz[c], c);
+    for (k = 0; k < 3; k++) {
+        for (c = 0; c < n; c++)
+            sbuf_printf(o, "        const %s %c%d = %s_fmadd_ps(o%c, v[%d][3], v[%d][%d]);\n", isa->vec,
+                        xyz[c], k, isa->fam, xyz[c], k, k, c);
+        sbuf_printf(o, "        const %s w%d = v[%d][3];\n", isa->vec, k, k);
+    }
+}
+
 /* The fused kernel's value u of the degree-1 plane from the rows v[k][0 to 3] (x, y, z, w) of its
- * three points: the float operations of classify's straight-line code for degree 1, in its order.
+ * three points (in patch-local coordinates x<k> ..., put_frame): the float operations of
+ * classify's straight-line code for degree 1, in its order.
  * World: a_k = e0 y_k - e1 x_k, b_k = e2 w_k - e3 z_k, the minors m_ij = x_i y_j - y_i x_j and
  * n_ij = z_i w_j - w_i z_j, u = ((a0 n12 - a1 n02) + a2 n01) + ((b0 m12 - b1 m02) + b2 m01).
  * Clip: g_k = e2 w_k, u = (g0 m12 - g1 m02) + g2 m01. */
@@ -96,15 +138,18 @@ static void put_value(sbuf *o, const out_info *info, const fused_isa *isa)
 {
     static const int pair[3][2] = {{1, 2}, {0, 2}, {0, 1}};
     char t[4][32];
-    int k, c, world = info->space == OUT_WORLD;
+    int k, c, world = info->space == OUT_WORLD, local = info->slp->local;
+    const char *e0 = local ? "l0" : "e0", *e1 = local ? "l1" : "e1", *e2 = local ? "l2" : "e2";
+    if (local)
+        put_frame(o, info, isa);
     for (k = 0; k < 3; k++) {
         for (c = 0; c < 4; c++)
-            snprintf(t[c], sizeof t[c], "v[%d][%d]", k, c);
+            point_name(t[c], sizeof t[c], local, k, c);
         if (world) {
             sbuf_printf(o, "        const %s a%d = ", isa->vec, k);
-            put_diff(o, isa, "e0", t[1], "e1", t[0]);
+            put_diff(o, isa, e0, t[1], e1, t[0]);
             sbuf_printf(o, ", b%d = ", k);
-            put_diff(o, isa, "e2", t[3], "e3", t[2]);
+            put_diff(o, isa, e2, t[3], "e3", t[2]);
         } else {
             sbuf_printf(o, "        const %s g%d = ", isa->vec, k);
             put_mul(o, isa, "e2", t[3]);
@@ -116,10 +161,10 @@ static void put_value(sbuf *o, const out_info *info, const fused_isa *isa)
             if (c == 0 || world) {
                 int i = pair[k][0], j = pair[k][1];
                 char a[32], b[32], e[32], f[32];
-                snprintf(a, sizeof a, "v[%d][%d]", i, c);
-                snprintf(b, sizeof b, "v[%d][%d]", j, c + 1);
-                snprintf(e, sizeof e, "v[%d][%d]", i, c + 1);
-                snprintf(f, sizeof f, "v[%d][%d]", j, c);
+                point_name(a, sizeof a, local, i, c);
+                point_name(b, sizeof b, local, j, c + 1);
+                point_name(e, sizeof e, local, i, c + 1);
+                point_name(f, sizeof f, local, j, c);
                 sbuf_printf(o, "        const %s %c%d_%d = ", isa->vec, c ? 'n' : 'm', i, j);
                 put_diff(o, isa, a, b, e, f);
                 sbuf_puts(o, ";\n");
@@ -168,7 +213,7 @@ int emit_c_mesh(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err
                                         "BODY8", "BODY16",  "TRANSPOSE8", "TRANSPOSE16"};
     sbuf parts[9];
     char up[64];
-    tpl_slot slots[13];
+    tpl_slot slots[14];
     int i, st, failed = 0;
     if (t->dom.kind != TP_TRI || t->dom.n != 1)
         return PTP_OK;
@@ -192,8 +237,9 @@ int emit_c_mesh(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err
     slots[2] = (tpl_slot){"VALUE", info->space == OUT_CLIP ? "the points in clip space and eye (0, 0, alpha, 0)"
                                                          : "the points and the eye in world space"};
     slots[3] = (tpl_slot){"FUSED", info->certified ? "0" : "1"};
+    slots[13] = (tpl_slot){"LOCAL", info->slp->local ? "1" : "0"};
     st = failed ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
-                : tpl_fill(o, "c/mesh.h", slots, 13, err);
+                : tpl_fill(o, "c/mesh.h", slots, 14, err);
     for (i = 0; i < 9; i++)
         sbuf_clear(&parts[i]);
     return st;

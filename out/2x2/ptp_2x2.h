@@ -198,6 +198,15 @@ typedef double ptp_2x2_vd __attribute__((vector_size(8 * PTP_2X2_VW)));
 #ifndef PTP_2X2_VLOCAL
 #define PTP_2X2_VLOCAL PTP_2X2_VFMA
 #endif
+/* x in every lane. */
+static inline ptp_2x2_vf ptp_2x2_vsplat(float x)
+{
+    ptp_2x2_vf v = {0};
+    int i;
+    for (i = 0; i < PTP_2X2_VW; i++)
+        v[i] = x;
+    return v;
+}
 /* 1 / x lane by lane, 0 where x is 0. */
 #define PTP_2X2_VRECIP0(x) ((ptp_2x2_vf)((ptp_2x2_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
@@ -237,6 +246,10 @@ static inline void ptp_2x2_vstoref(float *d, ptp_2x2_vf v, size_t count)
 #endif
 #define PTP_2X2_VFMAS PTP_2X2_VFMA
 #define PTP_2X2_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
+static inline float ptp_2x2_vsplat(float x)
+{
+    return x;
+}
 #endif
 
 float ptp_2x2_alpha(const float proj[16], int layout)

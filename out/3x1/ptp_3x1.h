@@ -198,6 +198,15 @@ typedef double ptp_3x1_vd __attribute__((vector_size(8 * PTP_3X1_VW)));
 #ifndef PTP_3X1_VLOCAL
 #define PTP_3X1_VLOCAL PTP_3X1_VFMA
 #endif
+/* x in every lane. */
+static inline ptp_3x1_vf ptp_3x1_vsplat(float x)
+{
+    ptp_3x1_vf v = {0};
+    int i;
+    for (i = 0; i < PTP_3X1_VW; i++)
+        v[i] = x;
+    return v;
+}
 /* 1 / x lane by lane, 0 where x is 0. */
 #define PTP_3X1_VRECIP0(x) ((ptp_3x1_vf)((ptp_3x1_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
@@ -237,6 +246,10 @@ static inline void ptp_3x1_vstoref(float *d, ptp_3x1_vf v, size_t count)
 #endif
 #define PTP_3X1_VFMAS PTP_3X1_VFMA
 #define PTP_3X1_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
+static inline float ptp_3x1_vsplat(float x)
+{
+    return x;
+}
 #endif
 
 float ptp_3x1_alpha(const float proj[16], int layout)

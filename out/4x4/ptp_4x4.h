@@ -198,6 +198,15 @@ typedef double ptp_4x4_vd __attribute__((vector_size(8 * PTP_4X4_VW)));
 #ifndef PTP_4X4_VLOCAL
 #define PTP_4X4_VLOCAL PTP_4X4_VFMA
 #endif
+/* x in every lane. */
+static inline ptp_4x4_vf ptp_4x4_vsplat(float x)
+{
+    ptp_4x4_vf v = {0};
+    int i;
+    for (i = 0; i < PTP_4X4_VW; i++)
+        v[i] = x;
+    return v;
+}
 /* 1 / x lane by lane, 0 where x is 0. */
 #define PTP_4X4_VRECIP0(x) ((ptp_4x4_vf)((ptp_4x4_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
@@ -237,6 +246,10 @@ static inline void ptp_4x4_vstoref(float *d, ptp_4x4_vf v, size_t count)
 #endif
 #define PTP_4X4_VFMAS PTP_4X4_VFMA
 #define PTP_4X4_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
+static inline float ptp_4x4_vsplat(float x)
+{
+    return x;
+}
 #endif
 
 float ptp_4x4_alpha(const float proj[16], int layout)

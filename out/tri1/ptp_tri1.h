@@ -197,6 +197,15 @@ typedef double ptp_tri1_vd __attribute__((vector_size(8 * PTP_TRI1_VW)));
 #ifndef PTP_TRI1_VLOCAL
 #define PTP_TRI1_VLOCAL PTP_TRI1_VFMA
 #endif
+/* x in every lane. */
+static inline ptp_tri1_vf ptp_tri1_vsplat(float x)
+{
+    ptp_tri1_vf v = {0};
+    int i;
+    for (i = 0; i < PTP_TRI1_VW; i++)
+        v[i] = x;
+    return v;
+}
 /* 1 / x lane by lane, 0 where x is 0. */
 #define PTP_TRI1_VRECIP0(x) ((ptp_tri1_vf)((ptp_tri1_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
@@ -236,6 +245,10 @@ static inline void ptp_tri1_vstoref(float *d, ptp_tri1_vf v, size_t count)
 #endif
 #define PTP_TRI1_VFMAS PTP_TRI1_VFMA
 #define PTP_TRI1_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
+static inline float ptp_tri1_vsplat(float x)
+{
+    return x;
+}
 #endif
 
 float ptp_tri1_alpha(const float proj[16], int layout)
@@ -590,9 +603,12 @@ extern "C" {
 #endif
 
 /* 1: with AVX-512 (AVX), classify_mesh classifies 16 (8) triangles at a time in registers with
- * classify's float operations; 0 (certified headers, whose second look is classify_soa's): it
- * gathers blocks of MESH_LANES triangles for classify_soa. */
+ * classify's float operations (in patch-local coordinates: with AVX-512, or AVX and FMA); 0
+ * (certified headers, whose second look is classify_soa's): it gathers blocks of MESH_LANES
+ * triangles for classify_soa. */
 #define PTP_TRI1_MESH_FUSED 1
+/* 1: the header computes in patch-local coordinates (--coordinates local). */
+#define PTP_TRI1_MESH_LOCAL 1
 /* Triangles classify_mesh gathers and classifies at a time (define it to override). */
 #ifndef PTP_TRI1_MESH_LANES
 #define PTP_TRI1_MESH_LANES 64
@@ -675,7 +691,8 @@ static inline void ptp_tri1_mesh_rows(__m256 v[4], const float (*vertices)[4], c
     v[3] = _mm256_shuffle_ps(t2, t3, 0xee);
 }
 #endif
-#if PTP_TRI1_MESH_FUSED && defined(PTP_TRI1_MESH_W)
+#if PTP_TRI1_MESH_FUSED && defined(PTP_TRI1_MESH_W) && \
+    (!PTP_TRI1_MESH_LOCAL || defined(__FMA__) || PTP_TRI1_MESH_W == 16)
 #define PTP_TRI1_MESH_FUSED_ON
 /* The classes of the first triangle_count / MESH_W * MESH_W triangles, MESH_W at a time in
  * registers: classify's float operations for degree 1 in the same order (products never
@@ -698,24 +715,52 @@ static size_t ptp_tri1_mesh_fused(const float (*vertices)[4], const uint32_t *in
         ptp_tri1_mesh_rows(v[1], vertices, indices + 3 * l + 1);
         ptp_tri1_mesh_rows(v[2], vertices, indices + 3 * l + 2);
 #if PTP_TRI1_MESH_W == 16
-        const __m512 g0 = _mm512_mul_ps(e2, v[0][3]);
-        const __m512 g1 = _mm512_mul_ps(e2, v[1][3]);
-        const __m512 g2 = _mm512_mul_ps(e2, v[2][3]);
-        const __m512 m1_2 = _mm512_sub_ps(_mm512_mul_ps(v[1][0], v[2][1]), _mm512_mul_ps(v[1][1], v[2][0]));
-        const __m512 m0_2 = _mm512_sub_ps(_mm512_mul_ps(v[0][0], v[2][1]), _mm512_mul_ps(v[0][1], v[2][0]));
-        const __m512 m0_1 = _mm512_sub_ps(_mm512_mul_ps(v[0][0], v[1][1]), _mm512_mul_ps(v[0][1], v[1][0]));
+        const __m512 rw = _mm512_maskz_div_ps(_mm512_cmp_ps_mask(v[0][3], _mm512_setzero_ps(), _CMP_NEQ_UQ),
+            _mm512_set1_ps(1.0f), v[0][3]);
+        const __m512 ox = _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(_mm512_mul_ps(v[0][0], rw)),
+            _mm512_set1_epi32(INT32_MIN)));
+        const __m512 oy = _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(_mm512_mul_ps(v[0][1], rw)),
+            _mm512_set1_epi32(INT32_MIN)));
+        const __m512 x0 = _mm512_fmadd_ps(ox, v[0][3], v[0][0]);
+        const __m512 y0 = _mm512_fmadd_ps(oy, v[0][3], v[0][1]);
+        const __m512 w0 = v[0][3];
+        const __m512 x1 = _mm512_fmadd_ps(ox, v[1][3], v[1][0]);
+        const __m512 y1 = _mm512_fmadd_ps(oy, v[1][3], v[1][1]);
+        const __m512 w1 = v[1][3];
+        const __m512 x2 = _mm512_fmadd_ps(ox, v[2][3], v[2][0]);
+        const __m512 y2 = _mm512_fmadd_ps(oy, v[2][3], v[2][1]);
+        const __m512 w2 = v[2][3];
+        const __m512 g0 = _mm512_mul_ps(e2, w0);
+        const __m512 g1 = _mm512_mul_ps(e2, w1);
+        const __m512 g2 = _mm512_mul_ps(e2, w2);
+        const __m512 m1_2 = _mm512_sub_ps(_mm512_mul_ps(x1, y2), _mm512_mul_ps(y1, x2));
+        const __m512 m0_2 = _mm512_sub_ps(_mm512_mul_ps(x0, y2), _mm512_mul_ps(y0, x2));
+        const __m512 m0_1 = _mm512_sub_ps(_mm512_mul_ps(x0, y1), _mm512_mul_ps(y0, x1));
         u = _mm512_add_ps(_mm512_sub_ps(_mm512_mul_ps(g0, m1_2), _mm512_mul_ps(g1, m0_2)), _mm512_mul_ps(g2, m0_1));
         __m512i c = _mm512_set1_epi32(2);
         c = _mm512_mask_mov_epi32(c, _mm512_cmp_ps_mask(u, _mm512_setzero_ps(), _CMP_LT_OQ), _mm512_set1_epi32(1));
         c = _mm512_mask_mov_epi32(c, _mm512_cmp_ps_mask(u, _mm512_setzero_ps(), _CMP_GT_OQ), _mm512_set1_epi32(0));
         _mm_storeu_si128((__m128i *)(cls + l), _mm512_cvtepi32_epi8(c));
 #else
-        const __m256 g0 = _mm256_mul_ps(e2, v[0][3]);
-        const __m256 g1 = _mm256_mul_ps(e2, v[1][3]);
-        const __m256 g2 = _mm256_mul_ps(e2, v[2][3]);
-        const __m256 m1_2 = _mm256_sub_ps(_mm256_mul_ps(v[1][0], v[2][1]), _mm256_mul_ps(v[1][1], v[2][0]));
-        const __m256 m0_2 = _mm256_sub_ps(_mm256_mul_ps(v[0][0], v[2][1]), _mm256_mul_ps(v[0][1], v[2][0]));
-        const __m256 m0_1 = _mm256_sub_ps(_mm256_mul_ps(v[0][0], v[1][1]), _mm256_mul_ps(v[0][1], v[1][0]));
+        const __m256 rw = _mm256_and_ps(_mm256_div_ps(_mm256_set1_ps(1.0f), v[0][3]),
+            _mm256_cmp_ps(v[0][3], _mm256_setzero_ps(), _CMP_NEQ_UQ));
+        const __m256 ox = _mm256_xor_ps(_mm256_mul_ps(v[0][0], rw), _mm256_set1_ps(-0.0f));
+        const __m256 oy = _mm256_xor_ps(_mm256_mul_ps(v[0][1], rw), _mm256_set1_ps(-0.0f));
+        const __m256 x0 = _mm256_fmadd_ps(ox, v[0][3], v[0][0]);
+        const __m256 y0 = _mm256_fmadd_ps(oy, v[0][3], v[0][1]);
+        const __m256 w0 = v[0][3];
+        const __m256 x1 = _mm256_fmadd_ps(ox, v[1][3], v[1][0]);
+        const __m256 y1 = _mm256_fmadd_ps(oy, v[1][3], v[1][1]);
+        const __m256 w1 = v[1][3];
+        const __m256 x2 = _mm256_fmadd_ps(ox, v[2][3], v[2][0]);
+        const __m256 y2 = _mm256_fmadd_ps(oy, v[2][3], v[2][1]);
+        const __m256 w2 = v[2][3];
+        const __m256 g0 = _mm256_mul_ps(e2, w0);
+        const __m256 g1 = _mm256_mul_ps(e2, w1);
+        const __m256 g2 = _mm256_mul_ps(e2, w2);
+        const __m256 m1_2 = _mm256_sub_ps(_mm256_mul_ps(x1, y2), _mm256_mul_ps(y1, x2));
+        const __m256 m0_2 = _mm256_sub_ps(_mm256_mul_ps(x0, y2), _mm256_mul_ps(y0, x2));
+        const __m256 m0_1 = _mm256_sub_ps(_mm256_mul_ps(x0, y1), _mm256_mul_ps(y0, x1));
         u = _mm256_add_ps(_mm256_sub_ps(_mm256_mul_ps(g0, m1_2), _mm256_mul_ps(g1, m0_2)), _mm256_mul_ps(g2, m0_1));
         const __m256i c = _mm256_cvtps_epi32(_mm256_add_ps(_mm256_add_ps(_mm256_set1_ps(2.0f),
             _mm256_and_ps(_mm256_cmp_ps(u, _mm256_setzero_ps(), _CMP_LT_OQ), _mm256_set1_ps(-1.0f))),

@@ -197,6 +197,15 @@ typedef double ptp_tri2_vd __attribute__((vector_size(8 * PTP_TRI2_VW)));
 #ifndef PTP_TRI2_VLOCAL
 #define PTP_TRI2_VLOCAL PTP_TRI2_VFMA
 #endif
+/* x in every lane. */
+static inline ptp_tri2_vf ptp_tri2_vsplat(float x)
+{
+    ptp_tri2_vf v = {0};
+    int i;
+    for (i = 0; i < PTP_TRI2_VW; i++)
+        v[i] = x;
+    return v;
+}
 /* 1 / x lane by lane, 0 where x is 0. */
 #define PTP_TRI2_VRECIP0(x) ((ptp_tri2_vf)((ptp_tri2_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
@@ -236,6 +245,10 @@ static inline void ptp_tri2_vstoref(float *d, ptp_tri2_vf v, size_t count)
 #endif
 #define PTP_TRI2_VFMAS PTP_TRI2_VFMA
 #define PTP_TRI2_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
+static inline float ptp_tri2_vsplat(float x)
+{
+    return x;
+}
 #endif
 
 float ptp_tri2_alpha(const float proj[16], int layout)

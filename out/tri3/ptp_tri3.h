@@ -197,6 +197,15 @@ typedef double ptp_tri3_vd __attribute__((vector_size(8 * PTP_TRI3_VW)));
 #ifndef PTP_TRI3_VLOCAL
 #define PTP_TRI3_VLOCAL PTP_TRI3_VFMA
 #endif
+/* x in every lane. */
+static inline ptp_tri3_vf ptp_tri3_vsplat(float x)
+{
+    ptp_tri3_vf v = {0};
+    int i;
+    for (i = 0; i < PTP_TRI3_VW; i++)
+        v[i] = x;
+    return v;
+}
 /* 1 / x lane by lane, 0 where x is 0. */
 #define PTP_TRI3_VRECIP0(x) ((ptp_tri3_vf)((ptp_tri3_vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
@@ -236,6 +245,10 @@ static inline void ptp_tri3_vstoref(float *d, ptp_tri3_vf v, size_t count)
 #endif
 #define PTP_TRI3_VFMAS PTP_TRI3_VFMA
 #define PTP_TRI3_VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
+static inline float ptp_tri3_vsplat(float x)
+{
+    return x;
+}
 #endif
 
 float ptp_tri3_alpha(const float proj[16], int layout)

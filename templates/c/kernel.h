@@ -171,6 +171,15 @@ typedef double {{PREFIX}}vd __attribute__((vector_size(8 * {{UPREFIX}}VW)));
 #ifndef {{UPREFIX}}VLOCAL
 #define {{UPREFIX}}VLOCAL {{UPREFIX}}VFMA
 #endif
+/* x in every lane. */
+static inline {{PREFIX}}vf {{PREFIX}}vsplat(float x)
+{
+    {{PREFIX}}vf v = {0};
+    int i;
+    for (i = 0; i < {{UPREFIX}}VW; i++)
+        v[i] = x;
+    return v;
+}
 /* 1 / x lane by lane, 0 where x is 0. */
 #define {{UPREFIX}}VRECIP0(x) (({{PREFIX}}vf)(({{PREFIX}}vm)(1.0f / (x)) & ((x) != 0.0f)))
 /* max(r, |x|) lane by lane; NaN in x gives NaN. */
@@ -210,6 +219,10 @@ static inline void {{PREFIX}}vstoref(float *d, {{PREFIX}}vf v, size_t count)
 #endif
 #define {{UPREFIX}}VFMAS {{UPREFIX}}VFMA
 #define {{UPREFIX}}VRECIP0(x) ((x) != 0.0f ? 1.0f / (x) : 0.0f)
+static inline float {{PREFIX}}vsplat(float x)
+{
+    return x;
+}
 #endif
 
 float {{PREFIX}}alpha(const float proj[16], int layout)

@@ -12,9 +12,12 @@ extern "C" {
 #endif
 
 /* 1: with AVX-512 (AVX), classify_mesh classifies 16 (8) triangles at a time in registers with
- * classify's float operations; 0 (certified headers, whose second look is classify_soa's): it
- * gathers blocks of MESH_LANES triangles for classify_soa. */
+ * classify's float operations (in patch-local coordinates: with AVX-512, or AVX and FMA); 0
+ * (certified headers, whose second look is classify_soa's): it gathers blocks of MESH_LANES
+ * triangles for classify_soa. */
 #define {{UPREFIX}}MESH_FUSED {{FUSED}}
+/* 1: the header computes in patch-local coordinates (--coordinates local). */
+#define {{UPREFIX}}MESH_LOCAL {{LOCAL}}
 /* Triangles classify_mesh gathers and classifies at a time (define it to override). */
 #ifndef {{UPREFIX}}MESH_LANES
 #define {{UPREFIX}}MESH_LANES 64
@@ -85,7 +88,8 @@ static inline void {{PREFIX}}mesh_rows(__m256 v[4], const float (*vertices)[4], 
     }
 {{TRANSPOSE8}}}
 #endif
-#if {{UPREFIX}}MESH_FUSED && defined({{UPREFIX}}MESH_W)
+#if {{UPREFIX}}MESH_FUSED && defined({{UPREFIX}}MESH_W) && \
+    (!{{UPREFIX}}MESH_LOCAL || defined(__FMA__) || {{UPREFIX}}MESH_W == 16)
 #define {{UPREFIX}}MESH_FUSED_ON
 /* The classes of the first triangle_count / MESH_W * MESH_W triangles, MESH_W at a time in
  * registers: classify's float operations for degree 1 in the same order (products never
