@@ -50,16 +50,24 @@ $(B)/obj/bench/bezfile.o: bench/bezfile.c bench/bezfile.h Makefile
 	$(CC) $(STD) $(CFLAGS) -c -o $@ $<
 
 # The models: models/ holds the Utah teapot set; build/models/knot.bez (bench/mkmodel.c, 2,880
-# bicubic patches) stands in for a large model. MODELS=DIR adds a folder of .bez files (or, for
-# `make figures`, picks BigGuy and the teapot from it), e.g. MODELS=../shared/models. The former
-# CULLRATE_MODELS=DIR and FIGURES_MODELS=DIR set it too.
+# bicubic patches) stands in for a large model, and build/models/far.bez (mkmodel --far, 4,096
+# small patches far from the origin) is cullrate's test of absolute against local coordinates.
+# MODELS=DIR adds a folder of .bez files (or, for `make figures`, picks BigGuy and the teapot
+# from it), e.g. MODELS=../shared/models. The former CULLRATE_MODELS=DIR and FIGURES_MODELS=DIR
+# set it too.
 MODELS ?= $(or $(CULLRATE_MODELS),$(FIGURES_MODELS))
 KNOT = build/models/knot.bez
-models: $(KNOT)
-$(KNOT): bench/mkmodel.c
-	@mkdir -p $(B) $(@D)
-	$(CC) $(STD) $(CFLAGS) -o $(B)/mkmodel $< -lm
+FAR = build/models/far.bez
+models: $(KNOT) $(FAR)
+$(B)/mkmodel: bench/mkmodel.c
+	@mkdir -p $(@D)
+	$(CC) $(STD) $(CFLAGS) -o $@ $< -lm
+$(KNOT): bench/mkmodel.c | $(B)/mkmodel
+	@mkdir -p $(@D)
 	$(B)/mkmodel $@.tmp && mv $@.tmp $@
+$(FAR): bench/mkmodel.c | $(B)/mkmodel
+	@mkdir -p $(@D)
+	$(B)/mkmodel --far $@.tmp && mv $@.tmp $@
 
 $(B)/obj/templates.o: $(B)/templates.c gen/emit/template.h Makefile
 	@mkdir -p $(@D)
@@ -334,16 +342,16 @@ FORCE:
 .PHONY: all test install bench-gen build-tests out fuzz clean FORCE
 
 # `make cullrate`: the average number of patches NCONE, TCONE and ptpgen's tangent-plane test
-# (strict, degenerate, certified, --refine 1 to 3, --refine 3 --certified) cull from 10,000
-# random eye points around the knot, the teapot set of models/ and each model of MODELS=DIR, and the
-# PN triangles of the knot and the teapot
+# (strict, strict with --coordinates absolute, degenerate, certified, --refine 1 to 3, --refine 3
+# --certified) cull from 10,000 random eye points around the knot, the teapot set of models/, the
+# far model and each model of MODELS=DIR, and the PN triangles of the knot and the teapot
 # (--pn), with a bracket of the exact answer
 # (CVis). CULLRATE_ARGS passes options, e.g. `make cullrate CULLRATE_ARGS=--quick`, or `CULLRATE_ARGS="--model my.bez"` to measure your own models.
 # It ends with `make cullrate-gpu` (below).
 CULLRATE_ARGS ?=
 CR = $(B)/cullrate
 
-cullrate: $(CR)/cullrate $(KNOT)
+cullrate: $(CR)/cullrate $(KNOT) $(FAR)
 	$(CR)/cullrate $(if $(MODELS),--models $(MODELS)) $(CULLRATE_ARGS)
 	@$(MAKE) -s cullrate-gpu
 
@@ -362,6 +370,12 @@ cullrate-gpu: $(B)/ptpgen $(KNOT)
 $(CR)/cr_s.h: $(B)/ptpgen
 	@mkdir -p $(CR)
 	$(B)/ptpgen --degree 3 --target c --space world --rule strict --prefix cr_s_ -o $@
+
+# The same in absolute coordinates (the formulation before local ones), for cullrate's closing table.
+$(CR)/cr_sa.h: $(B)/ptpgen
+	@mkdir -p $(CR)
+	$(B)/ptpgen --degree 3 --target c --space world --rule strict --coordinates absolute \
+	    --prefix cr_sa_ -o $@
 
 $(CR)/cr_d.h: $(B)/ptpgen
 	@mkdir -p $(CR)
@@ -406,7 +420,7 @@ $(CR)/cr_tt.h: $(B)/ptpgen
 CR_SRC = bench/cullrate.c bench/bezfile.c bench/cones.c bench/exact.c bench/pn.c bench/tess.c
 CR_HDR = bench/bezfile.h bench/cones.h bench/vec3.h \
     bench/exact.h bench/pn.h bench/tess.h tests/float_widen.h \
-    $(addprefix $(CR)/,cr_s.h cr_d.h cr_c.h cr_r1.h cr_r2.h cr_r3.h cr_cr3.h cr_t.h) \
+    $(addprefix $(CR)/,cr_s.h cr_sa.h cr_d.h cr_c.h cr_r1.h cr_r2.h cr_r3.h cr_cr3.h cr_t.h) \
     $(addprefix $(CR)/,cr_ts.h cr_td.h cr_tc.h cr_tt.h)
 
 $(CR)/cullrate: $(CR_SRC) $(CR_HDR) Makefile

@@ -78,18 +78,28 @@ awk '/ patches, bounding radius/ { m = $1 }
     ok "cullrate --pn: TCONE <= NCONE <= certified <= strict <= CVis; cones and CVis safe" ||
     notok "cullrate --pn: rates" "$(cat "$tmp/order")"
 
-# The default models (the knot, built here when missing, and models/), and --models DIR: its
-# .bez files whose names are not measured yet, by name.
-[ -e build/models/knot.bez ] || make -s build/models/knot.bez >/dev/null 2>&1
+# The default models (the knot and the far model, built here when missing, and models/), and
+# --models DIR: its .bez files whose names are not measured yet, by name.
+for f in knot far; do
+    [ -e build/models/$f.bez ] || make -s build/models/$f.bez >/dev/null 2>&1
+done
 mkdir "$tmp/dir" "$tmp/none"
 cp $models/teaspoon.bez "$tmp/dir/b.bez"
 cp $models/teacup.bez "$tmp/dir/a.bez"
 cp $models/teapot.bez "$tmp/dir/teapot.bez"
 "$C" --eyes 2 --threads 1 --models "$tmp/dir" >"$tmp/def" 2>"$tmp/err"
 got=$(sed -n 's/^\([a-z ]*PN\|[a-z]*\): \([0-9]*\) patches.*/\1 \2/p' "$tmp/def" | tr '\n' ,)
-want="knot 2880,teapot 32,teacup 26,teaspoon 16,knot PN 23040,teapot PN 240,a 26,b 16,"
+want="knot 2880,teapot 32,teacup 26,teaspoon 16,far 4096,knot PN 23040,teapot PN 240,a 26,b 16,"
 [ "$got" = "$want" ] && ok "cullrate's defaults and --models DIR: $want" ||
     notok "cullrate's defaults and --models DIR" "got $got (want $want): $(head -2 "$tmp/err")"
+# The closing table of ptpgen strict in absolute (before) and local coordinates (after): a row per
+# bicubic model and radius; on the far model local coordinates make no unsafe cull and no fewer culls.
+rows=$(awk '/^ptpgen strict \(plain float\) in absolute/ { t = 1; next }
+            t && $2 ~ /^[25]x$/ { n++; if ($1 == "far" && ($6 != 0 || $5 < $3)) bad++ }
+            END { print n + 0, bad + 0 }' "$tmp/def")
+[ "$rows" = "14 0" ] &&
+    ok "cullrate: absolute vs local coordinates, 7 models x 2 radii; far: local safe, no fewer culls" ||
+    notok "cullrate: absolute against local coordinates" "rows and bad rows: $rows"
 "$C" --eyes 2 --models "$tmp/none" >/dev/null 2>"$tmp/err"
 [ $? = 1 ] && [ "$(cat "$tmp/err")" = "cullrate: --models $tmp/none: no .bez file there" ] &&
     ok "cullrate --models with no .bez file: status 1, one line" ||
