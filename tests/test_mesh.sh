@@ -85,3 +85,28 @@ for isa in "avx512f:_mm512:_mm512_set1_epi32(1)" "avx2:_mm256:_mm256_set1_ps(-1.
     mutant "a fused $cpu mesh kernel that calls a zero value back" "-m$cpu -mfma" \
         "s|_CMP_LT_OQ), $one|_CMP_LE_OQ), $one|" "classify_mesh equals classify"
 done
+
+# A dense mesh: the knot (bench/mkmodel.c) tessellated 8 x 8 a patch (368,640 triangles, welded by
+# bench/tess.c) from 40 eyes at 1.2 to 5 bounding radii, every triangle called back or front
+# against its exact sign (tests/dense_mesh.c). Patch-local coordinates (the default) must call no
+# front-facing triangle back, alone or in a back cluster; the absolute coordinates must (the
+# check can fail: about 250 such triangles in 14.7 million triangle-views).
+knot=build/models/knot.bez
+[ -e $knot ] || make -s $knot >/dev/null 2>&1 || notok "dense mesh" "make $knot failed"
+dense() { # COORDINATES FLAGS: builds and runs dense_mesh; its output in $tmp/dense
+    "$P" --domain triangle --degree 1 --target c --space world --coordinates $1 --prefix dm_ -o "$tmp/dm.h" &&
+        gcc -std=c11 -O2 $2 -Wall -Wextra -Werror -pedantic -Igen -Itests -Ibench -include "$tmp/dm.h" \
+            -DDM_IMPLEMENTATION -c tests/dense_mesh.c -o "$tmp/dm.o" 2>"$tmp/err" &&
+        gcc -std=c11 -O2 -Ibench "$tmp/dm.o" bench/bezfile.c bench/exact.c bench/tess.c bench/cones.c -lm \
+            -o "$tmp/dm" 2>>"$tmp/err" && "$tmp/dm" $knot 8 40 3 "dense knot, $1 coordinates${2:+ ($2)}" >"$tmp/dense"
+}
+for flags in "" "-march=native"; do
+    dense local "$flags"
+    cat "$tmp/dense"
+    grep -q '^ok - dense knot' "$tmp/dense" || notok "dense knot, local coordinates${flags:+ ($flags)}" "$(head -3 "$tmp/err")"
+done
+if ! dense absolute "" && grep -q '^not ok - dense knot' "$tmp/dense"; then
+    ok "dense knot, absolute coordinates: front-facing triangles called back ($(sed -n 's/^not ok - [^:]*: //p' "$tmp/dense"))"
+else
+    notok "dense knot, absolute coordinates calls front-facing triangles back" "$(cat "$tmp/dense" "$tmp/err" | head -3)"
+fi
