@@ -203,9 +203,25 @@ $(B)/bench/peak: bench/peak.c Makefile $(B)/bench/cc.txt
 	@mkdir -p $(@D)
 	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -ffp-contract=fast -o $@ $< -pthread
 
+# `make cert-look`: how often the certified bicubic C header leaves a patch to its second look in
+# double, and how many it culls, with patch-local and absolute coordinates, world and clip space
+# (bench/cert_look.c), on the knot, the far model and MODELS=dir's .bez files. CERT_LOOK_ARGS="--eyes N".
+CERT_LOOK_ARGS ?=
+CL_HDR = $(addprefix $(B)/bench/cl_,$(addsuffix .h,wl wa cl ca))
+cert-look: $(B)/bench/cert_look $(KNOT) $(FAR)
+	@$(B)/bench/cert_look $(CERT_LOOK_ARGS) $(KNOT) $(FAR) $(if $(MODELS),$(wildcard $(MODELS)/*.bez))
+$(B)/bench/cl_%.h: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target c --certified $(if $(filter w%,$*),--space world) \
+	    $(if $(filter %a,$*),--coordinates absolute) --prefix cl_$*_ -o $@
+$(B)/bench/cert_look: bench/cert_look.c $(CL_HDR) $(B)/obj/bench/bezfile.o Makefile $(B)/bench/cc.txt
+	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -Ibench $(addprefix -include ,$(CL_HDR)) -DCL_WL_IMPLEMENTATION \
+	    -DCL_WA_IMPLEMENTATION -DCL_CL_IMPLEMENTATION -DCL_CA_IMPLEMENTATION -o $@ $< \
+	    $(B)/obj/bench/bezfile.o -lm
+
 .SECONDARY: $(addprefix $(B)/bench/ptp_,$(addsuffix .h,$(BENCH_DEGREES))) \
-    $(addprefix $(B)/bench/ptp_3x3_,$(addsuffix .h,$(BENCH_VARIANTS))) $(BENCH_TRI_HDR)
-.PHONY: bench bench-tri
+    $(addprefix $(B)/bench/ptp_3x3_,$(addsuffix .h,$(BENCH_VARIANTS))) $(BENCH_TRI_HDR) $(CL_HDR)
+.PHONY: bench bench-tri cert-look
 
 # `make render`: build/render, ptpgen's clip-space GLSL kernels culling bicubic patches in a
 # Vulkan tessellation pipeline (bench/render/, README "Rendering"). Every shader, ptpgen's
