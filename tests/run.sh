@@ -10,9 +10,9 @@ mkdir -p build
 : > "$log"
 
 # run NAME CMD...: runs a command, streams its output to standard output and appends it to $log,
-# and turns a non-zero exit with no "not ok" line into one.
+# turns a non-zero exit with no "not ok" line into one, and ends with a line of its wall time.
 run() {
-    local name=$1 out rc
+    local name=$1 out rc start=$SECONDS
     shift
     out=$(mktemp)
     "$@" 2>&1 | tee "$out" | tee -a "$log"
@@ -20,6 +20,7 @@ run() {
     if [ "$rc" -ne 0 ] && ! grep -q '^not ok - ' "$out"; then
         echo "not ok - $name exited with status $rc" | tee -a "$log"
     fi
+    echo "# $name: $((SECONDS - start)) s" | tee -a "$log"
     rm -f "$out"
 }
 
