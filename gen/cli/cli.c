@@ -27,8 +27,8 @@ static void usage_synopsis(sbuf *o)
     sbuf_puts(o,
         "usage: ptpgen --degree N|NxM [--domain quad|triangle] [--target T] [--space clip|world]\n"
         "              [--rule strict|degenerate] [--coordinates local|absolute] [--planes]\n"
-        "              [--certified] [--refine K] [--prefix NAME] [--kernel slp|table]\n"
-        "              [--stage kernel|function]\n"
+        "              [--basis bezier|bspline] [--order u-major|v-major] [--certified]\n"
+        "              [--refine K] [--prefix NAME] [--kernel slp|table] [--stage kernel|function]\n"
         "              [--threads-per-patch P] [--patches-per-block Q] [-o FILE]\n"
         "              [--host-header FILE]\n"
         "       ptpgen verify FILE [--degree N|NxM] [--domain quad|triangle]\n"
@@ -63,6 +63,11 @@ static void usage_options(sbuf *o)
         "                   to its first control point's origin before the planes (exact up\n"
         "                   to one rounding a coordinate); absolute: as given (--kernel table\n"
         "                   reads them as given always)\n"
+        "  --basis B        C and the straight-line GPU code: bezier (default): Bezier control\n"
+        "                   points; bspline: the 16 control vertices of a uniform bicubic\n"
+        "                   B-spline patch (--degree 3), converted in registers\n"
+        "  --order O        C and the straight-line GPU code: u-major (default): point (i, j),\n"
+        "                   i along u, at i*(M+1)+j; v-major: at j*(N+1)+i (OpenSubdiv's order)\n"
         "  --planes         kernels also write the value of every plane\n"
         "  --certified      call a patch back or front only when every value clears a rigorous\n"
         "                   bound on its float rounding error (README: Certified classification)\n"
@@ -71,8 +76,8 @@ static void usage_options(sbuf *o)
         "                   (quads into quarters, triangles at their edge midpoints); with\n"
         "                   --certified in double, every value with a bound on its error\n"
         "  --prefix NAME    prefix of generated names (default ptp_NxM_ or ptp_triN_, then world_,\n"
-        "                   degenerate_, absolute_, certified_, refineK_ for the options\n"
-        "                   given); a _ is appended when NAME does not end in one\n"
+        "                   degenerate_, bspline_, vmajor_, absolute_, certified_, refineK_ for\n"
+        "                   the options given); a _ is appended when NAME does not end in one\n"
         "  --kernel K       GPU targets: slp (default): one patch an invocation, the\n"
         "                   straight-line program; table (the default with --certified): the\n"
         "                   paper's kernel, P threads a patch over the term table\n"
@@ -215,7 +220,8 @@ typedef enum {
     OPT_DEGREE, OPT_DOMAIN, OPT_TARGET, OPT_SPACE, OPT_RULE, OPT_PLANES, OPT_PREFIX, OPT_THREADS,
     OPT_PATCHES, OPT_COUNT, OPT_SEED, OPT_CERTIFIED, OPT_REFINE, OPT_CONVENTION, OPT_FORMAT,
     OPT_OUTPUT, OPT_HELP,
-    OPT_VERSION, OPT_LIST, OPT_KERNEL, OPT_STAGE, OPT_HOST_HEADER, OPT_COORDINATES, OPT_N
+    OPT_VERSION, OPT_LIST, OPT_KERNEL, OPT_STAGE, OPT_HOST_HEADER, OPT_COORDINATES, OPT_BASIS,
+    OPT_ORDER, OPT_N
 } opt_id;
 
 /* The modes an option belongs to, as bits 1 << cli_mode. */
@@ -253,6 +259,8 @@ static const struct {
     [OPT_STAGE] = {"--stage", NULL, 1, GEN, TGT_KERNEL},
     [OPT_HOST_HEADER] = {"--host-header", NULL, 1, GEN, TGT_KERNEL},
     [OPT_COORDINATES] = {"--coordinates", NULL, 1, GEN, TGT_SPACE},
+    [OPT_BASIS] = {"--basis", NULL, 1, GEN, TGT_SPACE},
+    [OPT_ORDER] = {"--order", NULL, 1, GEN, TGT_SPACE},
 };
 
 /* Finds the option argv[*i] names ("--name", its alias, or "--name=value" for one that takes a
@@ -299,7 +307,8 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
     static const char *const conventions[] = {"u-first", "v-first"}, *const formats[] = {"json", "c"};
     static const char *const kernels[] = {"slp", "table"}, *const stages[] = {"kernel", "function"};
-    static const char *const coordinates[] = {"local", "absolute"};
+    static const char *const coordinates[] = {"local", "absolute"}, *const bases[] = {"bezier", "bspline"};
+    static const char *const orders[] = {"u-major", "v-major"};
     const char *kinds[] = {tp_kind_name(TP_QUAD), tp_kind_name(TP_TRI)};
     uint64_t u = 0;
     int st = PTP_OK, x = 0;
@@ -336,6 +345,8 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     case OPT_LIST: o->list = 1; break;
     case OPT_KERNEL: return parse_choice(&o->table, "kernel", v, kernels, 2, err);
     case OPT_COORDINATES: return parse_choice(&o->absolute, "coordinates", v, coordinates, 2, err);
+    case OPT_BASIS: return parse_choice(&o->bspline, "basis", v, bases, 2, err);
+    case OPT_ORDER: return parse_choice(&o->vmajor, "order", v, orders, 2, err);
     case OPT_STAGE: return parse_choice(&o->functions, "stage", v, stages, 2, err);
     case OPT_HOST_HEADER: o->host_header = v; break;
     case OPT_N: break;
@@ -473,6 +484,26 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
     return PTP_OK;
 }
 
+/* The input's form: B-spline vertices are bicubic quads; both --basis bspline and --order v-major
+ * are the plain straight-line program's (the second looks and the table loop read Bezier points,
+ * u-major). */
+static int check_input(const cli_options *o, ptp_error *err)
+{
+    const char *what = o->bspline ? "--basis bspline" : "--order v-major";
+    if (!o->bspline && !o->vmajor)
+        return PTP_OK;
+    if (o->dom.kind != TP_QUAD)
+        return ptp_fail(err, PTP_EUSAGE, "%s applies to quads (--domain quad)", what);
+    if (o->bspline && (o->dom.n != 3 || o->dom.m != 3))
+        return ptp_fail(err, PTP_EUSAGE, "--basis bspline takes uniform bicubic B-spline patches "
+                                         "(--degree 3)");
+    if (o->certified || o->refine || o->table)
+        return ptp_fail(err, PTP_EUSAGE, "%s applies to the plain straight-line program, not %s "
+                                         "(which reads Bezier points, u-major)", what,
+                        o->certified ? "--certified" : o->refine ? "--refine" : "--kernel table");
+    return PTP_OK;
+}
+
 /* Writes o->command, the normalized command line: every option that was given, in one order. */
 static void put_command(cli_options *o)
 {
@@ -493,6 +524,10 @@ static void put_command(cli_options *o)
         n += snprintf(c + n, size - (size_t)n, " --space world");
     if (o->degenerate)
         n += snprintf(c + n, size - (size_t)n, " --rule degenerate");
+    if (o->bspline)
+        n += snprintf(c + n, size - (size_t)n, " --basis bspline");
+    if (o->vmajor)
+        n += snprintf(c + n, size - (size_t)n, " --order v-major");
     if (o->absolute)
         n += snprintf(c + n, size - (size_t)n, " --coordinates absolute");
     if (o->planes)
@@ -514,7 +549,7 @@ static void put_command(cli_options *o)
 }
 
 /* Writes the default prefix: the domain's ("ptp_3x3_") and, in this order, each option that
- * differs from its default: world_, degenerate_, absolute_, certified_, refineK_
+ * differs from its default: world_, degenerate_, bspline_, vmajor_, absolute_, certified_, refineK_
  * (ptp_3x3_world_certified_);
  * options a target does not take are refused before, so every target names its variant. */
 static void put_default_prefix(cli_options *o)
@@ -525,6 +560,10 @@ static void put_default_prefix(cli_options *o)
         n += (size_t)snprintf(p + n, size - n, "world_");
     if (o->degenerate)
         n += (size_t)snprintf(p + n, size - n, "degenerate_");
+    if (o->bspline)
+        n += (size_t)snprintf(p + n, size - n, "bspline_");
+    if (o->vmajor)
+        n += (size_t)snprintf(p + n, size - n, "vmajor_");
     if (o->absolute)
         n += (size_t)snprintf(p + n, size - n, "absolute_");
     if (o->certified)
@@ -549,7 +588,8 @@ int cli_parse(cli_options *o, int argc, char **argv, ptp_error *err)
         return st;
     if ((st = check_mode(o, seen, err)) || o->mode == CLI_VERIFY)
         return st;
-    if (o->mode == CLI_GENERATE && ((st = check_target(o, seen, err)) || (st = check_kernel(o, seen, err))))
+    if (o->mode == CLI_GENERATE && ((st = check_target(o, seen, err)) || (st = check_kernel(o, seen, err)) ||
+                                    (st = check_input(o, err))))
         return st;
     o->kernel_given = seen >> OPT_KERNEL & 1;
     put_command(o);

@@ -35,6 +35,8 @@ typedef struct {
     int planes;           /* --planes */
     int certified;        /* --certified */
     int absolute;         /* --coordinates absolute (else local) */
+    int bspline;          /* --basis bspline (else bezier) */
+    int vmajor;           /* --order v-major (else u-major) */
     int refine;           /* --refine K (C only), 0 when not given */
     int table;            /* GPU targets: --kernel table (or --certified without --kernel) */
     int kernel_given;     /* --kernel was given */

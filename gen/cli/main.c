@@ -155,6 +155,8 @@ static int run(const cli_options *o, ptp_error *err)
     info.planes = o->planes;
     info.certified = o->certified;
     info.absolute = o->absolute;
+    info.bspline = o->bspline;
+    info.vmajor = o->vmajor;
     info.refine = o->refine;
     info.table = o->table;
     info.functions = o->functions;

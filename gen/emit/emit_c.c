@@ -306,7 +306,7 @@ static void lanes_plane_end(slpt_writer *w, int plane, int first)
 }
 
 /* The straight-line kernel over n patches in structure-of-arrays order (the lanes function). */
-static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp_table *t,
+static int put_lanes(sbuf *o, const cert_bounds *cb, const tp_table *t,
                      const out_info *info, const char *up, ptp_error *err)
 {
     char decl[96], fma[96], fmas[96], shift[96];
@@ -319,12 +319,11 @@ static int put_lanes(sbuf *o, const slp_prog *p, const cert_bounds *cb, const tp
     snprintf(fma, sizeof fma, "%sVFMA(%%s, %%s, %%s)", up);
     snprintf(fmas, sizeof fmas, "%sVFMAS(%%s, %%s, %%s)", up);
     snprintf(shift, sizeof shift, "%sVLOCAL(%%s, %%s, %%s)", up);
-    if ((st = slpt_init(&w, o, p, &syn, info->space == OUT_WORLD, info->slp->local, &ctx, err)))
+    if ((st = slpt_init(&w, o, info->slp, &syn, info->space == OUT_WORLD, &ctx, err)))
         return st;
     put_lanes_head(o, info, cb, up);
     put_lanes_loop(o, info, up);
-    if (info->slp->local)
-        slpt_frame(&w);
+    slpt_frame(&w);
     put_loads(&w, t, info, cb, up);
     st = slpt_program(&w, err);
     slpt_clear(&w);
@@ -415,7 +414,7 @@ static int put_code(sbuf *o, char *flops, char *muls, const tp_table *t, const o
     int st;
     snprintf(flops, 24, "%ld", plan->flops);
     snprintf(muls, 24, "%ld", plan->muls);
-    st = put_lanes(o, &plan->prog, &plan->cert, t, info, up, err);
+    st = put_lanes(o, &plan->cert, t, info, up, err);
     return st ? st : put_entries(o, t, &plan->prog, info, up, err);
 }
 

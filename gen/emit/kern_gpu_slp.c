@@ -94,7 +94,7 @@ static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g)
 }
 
 /* One function: classify_patch (values 0) or values, its head, locals, program and end. */
-static int put_slp_function(sbuf *o, const slp_prog *p, const tp_table *t, const out_info *info,
+static int put_slp_function(sbuf *o, const tp_table *t, const out_info *info,
                             const kern_target *g, int values, ptp_error *err)
 {
     char name[128], mul[160], fma[96];
@@ -115,10 +115,9 @@ static int put_slp_function(sbuf *o, const slp_prog *p, const tp_table *t, const
     sbuf_printf(o, values ? g->slp_values : g->slp_classify, name, t->dom.npoints, t->dom.nplanes);
     sbuf_puts(o, "\n");
     put_slp_locals(o, info, g, values);
-    if ((st = slpt_init(&w, o, p, &syn, info->space == OUT_WORLD, info->slp->local, &ctx, err)))
+    if ((st = slpt_init(&w, o, info->slp, &syn, info->space == OUT_WORLD, &ctx, err)))
         return st;
-    if (info->slp->local)
-        slpt_frame(&w);
+    slpt_frame(&w);
     st = slpt_program(&w, err);
     slpt_clear(&w);
     if (!values)
@@ -133,8 +132,8 @@ int kgpu_slp_functions(sbuf *o, const tp_table *t, const out_info *info, const k
     int st;
     if (g->slp_helpers)
         sbuf_printf(o, g->slp_helpers, info->prefix);
-    st = put_slp_function(o, &info->slp->prog, t, info, g, 0, err);
-    return st ? st : put_slp_function(o, &info->slp->prog, t, info, g, 1, err);
+    st = put_slp_function(o, t, info, g, 0, err);
+    return st ? st : put_slp_function(o, t, info, g, 1, err);
 }
 
 /* The constants P (1), Q, K and L of the compute kernel. */

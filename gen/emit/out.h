@@ -37,6 +37,9 @@ typedef struct {
     int group;           /* GPU straight-line kernel: patches (invocations) per workgroup */
     const plan_slp *slp; /* the straight-line plan (the C header, the GPU straight-line code;
                             tgt_emit_target builds it), or NULL */
+    int bspline;         /* C and the straight-line GPU code: the points are a uniform bicubic
+                            B-spline patch's control vertices (--basis bspline) */
+    int vmajor;          /* the same: the points' rows run along v (--order v-major) */
     int absolute;        /* the straight-line program reads the coordinates as given (else
                             patch-local: point 0's origin subtracted; the table kernels always
                             read them as given) */

@@ -19,10 +19,11 @@
 /* A product, a multiply-add and a sum are at most this long (a sum of a dozen minors). */
 #define EXPR 1024
 
-int slpt_init(slpt_writer *w, sbuf *o, const slp_prog *p, const slpt_syntax *s, int world,
-              int local, const void *ctx, ptp_error *err)
+int slpt_init(slpt_writer *w, sbuf *o, const plan_slp *plan, const slpt_syntax *s, int world,
+              const void *ctx, ptp_error *err)
 {
-    *w = (slpt_writer){o, p, s, world, local, ctx, calloc(p->npairs + (size_t)p->npoints, 1)};
+    const slp_prog *p = &plan->prog;
+    *w = (slpt_writer){o, p, plan, s, world, ctx, calloc(p->npairs + (size_t)p->npoints, 1)};
     if (!w->done)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing the straight-line program");
     return PTP_OK;
@@ -73,6 +74,66 @@ static void minor_expr(char *out, const slpt_writer *w, const char *p, const cha
     expr(out, "%s - %s", mul(a, w, p, q), mul(b, w, r, s));
 }
 
+/* The input's index of point (i, j) of the (n+1) x (m+1) grid, i along u. */
+static int input_index(const slpt_writer *w, int i, int j)
+{
+    const plan_slp *pl = w->plan;
+    return pl->vmajor ? j * (pl->n + 1) + i : i * (pl->m + 1) + j;
+}
+
+/* Writes to out coordinate c of Bezier point k as given or converted, before the shift: the
+ * load of the input's point, or B-spline input's converted bx<k> ... */
+static void bezier_coordinate(char *out, const slpt_writer *w, int k, int c)
+{
+    if (w->plan->bspline)
+        expr(out, "b%c%d", "xyzw"[c], k);
+    else
+        w->s->load(out, EXPR, w, input_index(w, k / (w->plan->m + 1), k % (w->plan->m + 1)), c);
+}
+
+/* Writes to out row r of the uniform cubic B-spline-to-Bezier map (times 6) applied to a[0..3]:
+ * (a0 + a2) + 4 a1, 4 a1 + 2 a2, 2 a1 + 4 a2, (a1 + a3) + 4 a2. */
+static void bspline_row(char *out, const slpt_writer *w, int r, char a[4][EXPR])
+{
+    char p[EXPR], q[EXPR];
+    if (r == 0 || r == 3)
+        expr(out, "(%s + %s) + %s", a[r == 0 ? 0 : 1], a[r == 0 ? 2 : 3], mul(p, w, "4.0f", a[r == 0 ? 1 : 2]));
+    else
+        expr(out, "%s + %s", mul(p, w, r == 1 ? "4.0f" : "2.0f", a[1]), mul(q, w, r == 1 ? "2.0f" : "4.0f", a[2]));
+}
+
+/* B-spline input: declares h<c><i>_<j> (the map along u) and the Bezier points bx<k> ... (then
+ * along v), coordinate by coordinate (clip space never reads z). */
+static void put_bspline(slpt_writer *w)
+{
+    static const char xyzw[] = "xyzw";
+    char a[4][EXPR], names[16][24], inits[16][EXPR];
+    const char *name[16], *init[16];
+    int c, i, j, k;
+    for (c = 0; c < 4; c++) {
+        if (c == 2 && !w->world)
+            continue;
+        for (i = 0; i < 4; i++) /* along u: column j of the input's 4 x 4 vertices */
+            for (j = 0; j < 4; j++) {
+                for (k = 0; k < 4; k++)
+                    w->s->load(a[k], EXPR, w, input_index(w, k, j), c);
+                snprintf(names[i * 4 + j], sizeof names[0], "h%c%d_%d", xyzw[c], i, j);
+                bspline_row(inits[i * 4 + j], w, i, a);
+            }
+        for (k = 0; k < 16; k++)
+            name[k] = names[k], init[k] = inits[k];
+        declare(w, name, init, 16);
+        for (i = 0; i < 4; i++) /* along v */
+            for (j = 0; j < 4; j++) {
+                for (k = 0; k < 4; k++)
+                    expr(a[k], "h%c%d_%d", xyzw[c], i, k);
+                snprintf(names[i * 4 + j], sizeof names[0], "b%c%d", xyzw[c], i * 4 + j);
+                bspline_row(inits[i * 4 + j], w, j, a);
+            }
+        declare(w, name, init, 16);
+    }
+}
+
 void slpt_frame(slpt_writer *w)
 {
     static const char *const origin[3] = {"ox", "oy", "oz"}, *const eye[3] = {"l0", "l1", "l2"};
@@ -80,12 +141,16 @@ void slpt_frame(slpt_writer *w)
     char w0[EXPR], x0[EXPR], inits[4][EXPR], pr[EXPR];
     const char *name = "rw", *init[4];
     int c, n = w->world ? 3 : 2;
-    w->s->load(w0, sizeof w0, w, 0, 3);
+    if (w->plan->bspline)
+        put_bspline(w);
+    if (!w->plan->local)
+        return;
+    bezier_coordinate(w0, w, 0, 3);
     w->s->recip0(inits[0], EXPR, w, w0);
     init[0] = inits[0];
     declare(w, &name, init, 1);
     for (c = 0; c < n; c++) {
-        w->s->load(x0, sizeof x0, w, 0, c);
+        bezier_coordinate(x0, w, 0, c);
         expr(inits[c], "-(%s)", mul(pr, w, x0, "rw"));
         init[c] = inits[c];
     }
@@ -99,18 +164,18 @@ void slpt_frame(slpt_writer *w)
     declare(w, eye, init, 3);
 }
 
-/* Writes to out coordinate c of point k as the program reads it: the load, or in patch-local
- * coordinates x + o w (c < 3). */
+/* Writes to out coordinate c of point k as the program reads it: the Bezier coordinate, or in
+ * patch-local coordinates x + o w (c < 3). */
 static void coordinate(char *out, const slpt_writer *w, int k, int c)
 {
     static const char *const origin[3] = {"ox", "oy", "oz"};
     char x[EXPR], wk[EXPR];
-    w->s->load(x, EXPR, w, k, c);
-    if (!w->local || c == 3) {
+    bezier_coordinate(x, w, k, c);
+    if (!w->plan->local || c == 3) {
         memcpy(out, x, EXPR);
         return;
     }
-    w->s->load(wk, EXPR, w, k, 3);
+    bezier_coordinate(wk, w, k, 3);
     expr(out, w->s->shift, origin[c], wk, x);
 }
 
@@ -118,8 +183,9 @@ void slpt_point(slpt_writer *w, int k)
 {
     static const char xyzw[] = "xyzw";
     char names[6][24], inits[6][EXPR], v[4][24];
-    const char *name[6], *init[6], *e0 = w->local ? "l0" : "e0", *e1 = w->local ? "l1" : "e1",
-               *e2 = w->local ? "l2" : "e2";
+    const int local = w->plan->local;
+    const char *name[6], *init[6], *e0 = local ? "l0" : "e0", *e1 = local ? "l1" : "e1",
+               *e2 = local ? "l2" : "e2";
     int c, n = 0;
     if (w->done[w->p->npairs + (size_t)k])
         return;

@@ -4,7 +4,7 @@
 #define SLP_TEXT_H
 
 #include "emit/sbuf.h"
-#include "plan/slp.h"
+#include "plan/plan.h"
 
 typedef struct slpt_writer slpt_writer;
 
@@ -12,7 +12,8 @@ typedef struct slpt_writer slpt_writer;
  * x<k> y<k> z<k> w<k> (point k; z only in world space), g<k> (clip space: e2 w) or a<k> b<k>
  * (world: e0 y - e1 x, e2 w - e3 z), the minors m<k>_<l> (x, y) and n<k>_<l> (z, w), and u, v,
  * e0..e3, which the caller declares. In patch-local coordinates (slpt_frame) also rw, ox, oy, oz
- * and, in world space, the local eye l0 l1 l2 in e0 e1 e2's place. Every product goes through
+ * and, in world space, the local eye l0 l1 l2 in e0 e1 e2's place; from B-spline input the
+ * converted points bx<k> by<k> bz<k> bw<k> and the first pass's h<c><i>_<j>. Every product goes through
  * mul, so a language that would contract a * b - c * d into an FMA can forbid it there or in
  * decl. */
 typedef struct {
@@ -25,7 +26,8 @@ typedef struct {
     const char *shift;  /* printf format of x + o * w rounded once, of o, w, x: "fma(%s, %s, %s)" */
     /* Writes to out (size bytes) 1 / x, or 0 where x is 0. */
     void (*recip0)(char *out, size_t size, const slpt_writer *w, const char *x);
-    /* Writes to out (size bytes) coordinate c (0 x, 1 y, 2 z, 3 w) of point k. */
+    /* Writes to out (size bytes) coordinate c (0 x, 1 y, 2 z, 3 w) of input point k (as stored:
+     * Bezier points or B-spline vertices, u-major or v-major). */
     void (*load)(char *out, size_t size, const slpt_writer *w, int k, int c);
     /* Appends the statements after plane's value v (first: the first plane written). */
     void (*plane_end)(slpt_writer *w, int plane, int first);
@@ -34,23 +36,25 @@ typedef struct {
 struct slpt_writer {
     sbuf *o;
     const slp_prog *p;
+    const plan_slp *plan; /* p's plan: the input's form (local, bspline, vmajor) */
     const slpt_syntax *s;
     int world;           /* world space (else clip) */
-    int local;           /* patch-local coordinates (slpt_frame) */
     const void *ctx;     /* the caller's, for its hooks */
     unsigned char *done; /* the minors, then the points, declared so far */
 };
 
-/* Starts a writer of program p into o, in patch-local coordinates when local. Returns PTP_OK or
+/* Starts a writer of plan's program into o, reading its input form. Returns PTP_OK or
  * PTP_ENOMEM (w is then cleared). */
-int slpt_init(slpt_writer *w, sbuf *o, const slp_prog *p, const slpt_syntax *s, int world,
-              int local, const void *ctx, ptp_error *err);
+int slpt_init(slpt_writer *w, sbuf *o, const plan_slp *plan, const slpt_syntax *s, int world,
+              const void *ctx, ptp_error *err);
 /* Frees w's storage. */
 void slpt_clear(slpt_writer *w);
-/* Patch-local coordinates: declares the frame, once a patch before any point: rw = 1 / w0 (0
- * where w0 is 0), the origin's negation o = -(x0, y0[, z0]) rw, and in world space the local
- * eye l = e + o e3. Point k's coordinates are then x + o w (and y, z), each rounded once: a
- * shear of determinant 1, which leaves every plane's value as it is (docs/math.md). */
+/* Declares what the points need once a patch, before any point: from B-spline input the Bezier
+ * points times 36 (two passes of the uniform cubic map, rows (1 4 1 0), (0 4 2 0), (0 2 4 0),
+ * (0 1 4 1): exact products by 2 and 4, the sums rounded); in patch-local coordinates rw = 1 /
+ * w0 (0 where w0 is 0), the origin's negation o = -(x0, y0[, z0]) rw, and in world space the
+ * local eye l = e + o e3. Point k's coordinates are then x + o w (and y, z), each rounded once:
+ * a shear of determinant 1, which leaves every plane's value as it is (docs/math.md). */
 void slpt_frame(slpt_writer *w);
 /* Declares point k's coordinates and eye products unless done. */
 void slpt_point(slpt_writer *w, int k);

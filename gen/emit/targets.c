@@ -36,8 +36,10 @@ int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_i
     in.suffix = g->suffix;
     if (!(g->options & TGT_SPACE)) /* no straight-line code */
         return g->emit(o, t, &in, err);
-    if ((st = plan_slp_build(&plan, t, info->space == OUT_WORLD, !info->absolute, info->certified,
-                             err)))
+    if ((st = plan_slp_build(&plan, t, info->space == OUT_WORLD,
+                             (info->absolute ? 0 : PLAN_LOCAL) | (info->bspline ? PLAN_BSPLINE : 0) |
+                                 (info->vmajor ? PLAN_VMAJOR : 0),
+                             info->certified, err)))
         return st;
     in.slp = &plan;
     st = g->gpu ? kern_emit_gpu(o, t, &in, g->gpu, err) : g->emit(o, t, &in, err);

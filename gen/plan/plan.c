@@ -14,16 +14,32 @@ long plan_frame_flops(int k, int world)
     return 1 + c + 2 * ((long)c * k + (world ? 3 : 0)); /* a multiply-add counts two */
 }
 
-int plan_slp_build(plan_slp *p, const tp_table *t, int world, int local, int certified,
+long plan_bspline_muls(int world)
+{
+    return (world ? 4 : 3) * 48L;
+}
+
+long plan_bspline_flops(int world)
+{
+    return (world ? 4 : 3) * 96L;
+}
+
+int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form, int certified,
                    ptp_error *err)
 {
-    int st = slp_build(&p->prog, t, err);
+    int st = slp_build(&p->prog, t, err), local = (form & PLAN_LOCAL) != 0;
     p->cert = (cert_bounds){0};
     p->local = local;
+    p->bspline = (form & PLAN_BSPLINE) != 0;
+    p->vmajor = (form & PLAN_VMAJOR) != 0;
+    p->n = t->dom.n;
+    p->m = t->dom.m;
     if (st)
         return st;
-    p->flops = slp_flops(&p->prog, world) + (local ? plan_frame_flops(t->dom.npoints, world) : 0);
-    p->muls = slp_muls(&p->prog, world) + (local ? plan_frame_muls(t->dom.npoints, world) : 0);
+    p->flops = slp_flops(&p->prog, world) + (local ? plan_frame_flops(t->dom.npoints, world) : 0) +
+               (p->bspline ? plan_bspline_flops(world) : 0);
+    p->muls = slp_muls(&p->prog, world) + (local ? plan_frame_muls(t->dom.npoints, world) : 0) +
+              (p->bspline ? plan_bspline_muls(world) : 0);
     if (certified && (st = cert_slp(&p->cert, &p->prog, world, local, err)) != PTP_OK)
         slp_clear(&p->prog);
     return st;

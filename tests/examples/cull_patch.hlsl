@@ -20,12 +20,8 @@ PatchFactors cull_patch(InputPatch<ControlPoint, 16> patch)
     uint c = ptp_3x3_classify_patch(cp, float4(0.0f, 0.0f, alpha, 0.0f));
     float t = c == 1u ? 0.0f : level;
     PatchFactors f;
-    f.edges[0] = t;
-    f.edges[1] = t;
-    f.edges[2] = t;
-    f.edges[3] = t;
-    f.inside[0] = t;
-    f.inside[1] = t;
+    f.edges[0] = f.edges[1] = f.edges[2] = f.edges[3] = t;
+    f.inside[0] = f.inside[1] = t;
     return f;
 }
 

@@ -1,0 +1,94 @@
+/* basis_check.c: the C header's input forms against its default on exact data. Small-integer
+ * points keep every conversion exact, so the headers must agree bit for bit:
+ *   --order v-major on the transposed points      = the default on the points;
+ *   --basis bspline on B-spline vertices          = the default on their Bezier points times 36
+ *                                                   (computed here in integers);
+ *   --basis bspline --order v-major, transposed   = --basis bspline.
+ * Built around four bicubic headers of one space and rule (tests/test_basis.sh): prefixes bz_
+ * (default), vz_ (v-major), bs_ (B-spline), vs_ (B-spline, v-major), with -DWORLD for world space:
+ *   basis_check COUNT SEED NAME */
+#include "check.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The next of a 64-bit LCG's integers in [lo, hi]. */
+static int integer(uint64_t *s, int lo, int hi)
+{
+    *s = *s * 6364136223846793005u + 1442695040888963407u;
+    return lo + (int)((*s >> 33) % (uint64_t)(hi - lo + 1));
+}
+
+/* 6 times the uniform cubic B-spline-to-Bezier map, row r. */
+static const int bspline_map[4][4] = {{1, 4, 1, 0}, {0, 4, 2, 0}, {0, 2, 4, 0}, {0, 1, 4, 1}};
+
+/* out = in with point (i, j) moved from i * 4 + j to j * 4 + i. */
+static void transpose(float out[16][4], const float in[16][4])
+{
+    int i, j;
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            memcpy(out[j * 4 + i], in[i * 4 + j], sizeof out[0]);
+}
+
+/* b = the Bezier points of the B-spline vertices p times 36, in integers (exact). */
+static void to_bezier(float b[16][4], const float p[16][4])
+{
+    int i, j, a, c, k;
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            for (c = 0; c < 4; c++) {
+                long s = 0;
+                for (a = 0; a < 4; a++)
+                    for (k = 0; k < 4; k++)
+                        s += (long)bspline_map[i][a] * bspline_map[j][k] * (long)p[a * 4 + k][c];
+                b[i * 4 + j][c] = (float)s;
+            }
+}
+
+/* 1 when header A on a and header B on b give bitwise equal values and equal classes. */
+#define SAME(A, B, a, b)                                                                      \
+    (A##values((const float(*)[4])(a), eye, da), B##values((const float(*)[4])(b), eye, db), \
+     !memcmp(da, db, sizeof da) &&                                                           \
+         A##classify((const float(*)[4])(a), eye) == B##classify((const float(*)[4])(b), eye))
+
+int main(int argc, char **argv)
+{
+    long count = argc > 1 ? atol(argv[1]) : 1000, n, bad[3] = {0};
+    uint64_t seed = argc > 2 ? strtoull(argv[2], NULL, 10) : 1;
+    const char *name = argc > 3 ? argv[3] : "basis";
+    char label[3][256];
+    float p[16][4], t[16][4], b[16][4], da[64], db[64], eye[4];
+    int k, c;
+    for (n = 0; n < count; n++) {
+        for (k = 0; k < 16; k++) /* a bumpy grid of small integers, w 1 (clip space 1 to 4) */
+            for (c = 0; c < 4; c++)
+                p[k][c] = c == 3 ? 1.0f : (float)(8 * (c == 0 ? k / 4 : c == 1 ? k % 4 : 0) +
+                                                  integer(&seed, -6, 6));
+#ifndef WORLD
+        for (k = 0; k < 16; k++) {
+            int w = integer(&seed, 1, 4);
+            for (c = 0; c < 4; c++)
+                p[k][c] *= (float)w;
+        }
+        eye[0] = eye[1] = eye[3] = 0, eye[2] = (float)(integer(&seed, 0, 1) ? 1 : -1);
+#else
+        for (c = 0; c < 3; c++)
+            eye[c] = (float)integer(&seed, -60, 60);
+        eye[3] = 1;
+#endif
+        transpose(t, (const float(*)[4])p);
+        to_bezier(b, (const float(*)[4])p);
+        bad[0] += !SAME(vz_, bz_, t, p);
+        bad[1] += !SAME(bs_, bz_, p, b);
+        bad[2] += !SAME(vs_, bs_, t, p);
+    }
+    snprintf(label[0], sizeof label[0], "%s: --order v-major on transposed points = the default (%ld patches)", name, count);
+    snprintf(label[1], sizeof label[1], "%s: --basis bspline = the default on 36 times the Bezier points (%ld patches)", name, count);
+    snprintf(label[2], sizeof label[2], "%s: --basis bspline --order v-major on transposed vertices = --basis bspline (%ld patches)", name, count);
+    for (k = 0; k < 3; k++)
+        check(bad[k] == 0, label[k], "%ld patches differ", bad[k]);
+    return check_failed_count != 0;
+}

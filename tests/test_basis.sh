@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# test_basis.sh: the input forms --basis bspline and --order v-major. The C headers run on exact
+# small-integer data against the default header (tests/basis_check.c: bit for bit), in both
+# spaces and rules, with gcc and clang; a header whose B-spline map is wrong must fail; the GPU
+# targets' code compiles (GLSL and HLSL through glslangValidator and spirv-val, CUDA through nvcc
+# where present); the options' misuses are usage errors. Needs PTPGEN.
+set -u
+P=${PTPGEN:?set PTPGEN}
+. "$(dirname "$0")/host_lib.sh"
+make_tmp
+
+# build CC FLAGS SPACE RULE [SED]: the four headers (bz_ default, vz_ v-major, bs_ B-spline, vs_
+# both; the B-spline headers edited by sed script SED when given) and basis_check around them.
+build() {
+    local cc=$1 flags=$2 space=$3 rule=$4 v
+    for v in "bz:" "vz:--order v-major" "bs:--basis bspline" "vs:--basis bspline --order v-major"; do
+        "$P" --degree 3 --target c --space $space --rule $rule ${v#*:} --prefix ${v%%:*}_ \
+            -o "$tmp/${v%%:*}.h" || return 1
+        case $v in b[s]* | vs*) [ -n "${5:-}" ] && sed -i "$5" "$tmp/${v%%:*}.h" ;; esac
+    done
+    $cc -std=c11 -O2 $flags -Wall -Wextra -Werror -pedantic -Igen -Itests $([ $space = world ] && echo -DWORLD) \
+        -include "$tmp/bz.h" -include "$tmp/vz.h" -include "$tmp/bs.h" -include "$tmp/vs.h" \
+        -DBZ_IMPLEMENTATION -DVZ_IMPLEMENTATION -DBS_IMPLEMENTATION -DVS_IMPLEMENTATION \
+        tests/basis_check.c -lm -o "$tmp/bc" 2>"$tmp/err"
+}
+
+for space in clip world; do
+    for rule in strict degenerate; do
+        for build in "gcc:" "gcc:-march=native" "clang:-march=native"; do
+            cc=${build%%:*} flags=${build#*:}
+            command -v $cc >/dev/null || { missing $cc "input forms with $cc"; continue; }
+            name="$space $rule ($cc${flags:+ $flags})"
+            if build $cc "$flags" $space $rule; then
+                "$tmp/bc" 2000 $((${#name} + 1)) "$name"
+            else
+                notok "$name: the input forms' headers compile" "$(grep -m3 error "$tmp/err")"
+            fi
+        done
+    done
+done
+
+# A B-spline map with one weight wrong (row 1's 2 a2 taken as 4 a2) must fail.
+if build gcc "" clip strict 's/\(bx1 = 4.0f \* hx0_1 + \)2.0f/\14.0f/' && ! "$tmp/bc" 500 3 mutant >"$tmp/out" &&
+    grep -q '^not ok - mutant: --basis bspline = the default' "$tmp/out"; then
+    ok "a header whose B-spline map has a wrong weight fails"
+else
+    notok "a header whose B-spline map has a wrong weight fails" "$(grep -m2 '^not ok' "$tmp/out" 2>/dev/null)"
+fi
+
+# The GPU targets' straight-line code in both forms compiles.
+for space in clip world; do
+    o="--degree 3 --space $space --basis bspline --order v-major"
+    if command -v glslangValidator >/dev/null && command -v spirv-val >/dev/null; then
+        "$P" $o --target glsl -o "$tmp/k.comp" && glslangValidator -S comp -V "$tmp/k.comp" -o "$tmp/k.spv" >"$tmp/err" &&
+            spirv-val "$tmp/k.spv" && ok "GLSL $space: --basis bspline --order v-major compiles and validates" ||
+            notok "GLSL $space: --basis bspline --order v-major compiles" "$(grep -m3 ERROR "$tmp/err")"
+        "$P" $o --target hlsl -o "$tmp/k.hlsl" && glslangValidator -D -S comp -e main -V "$tmp/k.hlsl" -o "$tmp/h.spv" >"$tmp/err" &&
+            spirv-val "$tmp/h.spv" && ok "HLSL $space: --basis bspline --order v-major compiles and validates" ||
+            notok "HLSL $space: --basis bspline --order v-major compiles" "$(grep -m3 ERROR "$tmp/err")"
+    else
+        missing "glslangValidator and spirv-val" "GLSL and HLSL input forms"
+    fi
+    NVCC=${NVCC:-/usr/local/cuda/bin/nvcc}
+    if [ -x "$NVCC" ]; then
+        "$P" $o --target cuda -o "$tmp/k.cu" && "$NVCC" -ptx -o "$tmp/k.ptx" "$tmp/k.cu" 2>"$tmp/err" &&
+            ok "CUDA $space: --basis bspline --order v-major compiles" ||
+            notok "CUDA $space: --basis bspline --order v-major compiles" "$(grep -m3 error "$tmp/err")"
+    else
+        missing nvcc "CUDA input forms"
+    fi
+done
+
+# Misuses are usage errors (exit 2), with no output file.
+for bad in "--degree 2 --basis bspline" "--domain triangle --degree 3 --order v-major" \
+    "--degree 3 --basis bspline --certified" "--degree 3 --order v-major --refine 2" \
+    "--degree 3 --basis spline" "--degree 3 --order v-first"; do
+    "$P" $bad --target c -o "$tmp/none.h" 2>"$tmp/err"
+    rc=$?
+    [ $rc = 2 ] && [ ! -e "$tmp/none.h" ] && ok "ptpgen $bad: usage error ($(head -1 "$tmp/err"))" ||
+        notok "ptpgen $bad is a usage error" "exit $rc: $(head -1 "$tmp/err")"
+done
+"$P" --degree 3 --target glsl --basis bspline --kernel table >/dev/null 2>&1
+[ $? = 2 ] && ok "--basis bspline with --kernel table is a usage error" ||
+    notok "--basis bspline with --kernel table is a usage error" "it was accepted"
