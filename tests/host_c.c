@@ -5,6 +5,7 @@
  * C and C++ alike (c++ -x c++ host_c.c -x none libptptest.a): the header is used from both. */
 #include "host_c.h"
 
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,6 +46,8 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
     unsigned *cls = (unsigned *)malloc(s->count * sizeof *cls);
     unsigned char *batch = (unsigned char *)malloc(s->count);
     unsigned char *soa_cls = (unsigned char *)malloc(s->count);
+    unsigned char *idx_cls = (unsigned char *)malloc(s->count);
+    uint32_t *ix = (uint32_t *)calloc(s->count * (size_t)ref->K, sizeof *ix);
     /* the SoA copy, at a stride that is not the count (nor a power of two); zeroed, as gcc
      * cannot see the copy below fill what classify_soa reads */
     size_t stride = s->count + 3, k;
@@ -76,8 +79,13 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
         for (k = 0; k < (size_t)ref->K * 4; k++)
             soa[k * stride + p] = ((const float *)s->cp)[p * (size_t)ref->K * 4 + k];
     FN(classify_soa)(soa, stride, s->count, s->eye, soa_cls);
+    for (p = 0; p < s->count; p++) /* the indexed patches in reverse order: patch p is the set's last - p */
+        for (k = 0; k < (size_t)ref->K; k++)
+            ix[p * (size_t)ref->K + k] = (uint32_t)((s->count - 1 - p) * (size_t)ref->K + k);
+    FN(classify_indexed)((const float(*)[4])s->cp, ix, s->count, s->eye, idx_cls);
     for (p = 0; p < s->count; p++)
-        r->paths_differ += (batch[p] != cls[p]) + (soa_cls[p] != cls[p]);
+        r->paths_differ += (batch[p] != cls[p]) + (soa_cls[p] != cls[p]) +
+                           (idx_cls[s->count - 1 - p] != cls[p]);
     kref_check(&r->classify, ref, s, cls, d);
     for (p = 0; p < s->count; p++)
         cls[p] = batch[p];
@@ -86,6 +94,8 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
     free(cls);
     free(batch);
     free(soa_cls);
+    free(idx_cls);
+    free(ix);
     free(soa);
     free(d);
     free(dp);
@@ -110,7 +120,7 @@ static int report(void *ctx, const kref_args *o, const kref_ref *ref)
     int ok = host_report(&r->classify, o, "classify and values");
     (void)ref;
     ok &= host_report(&r->batch, o, "classify_batch");
-    snprintf(label, sizeof label, "%s classify_batch and classify_soa equal classify on every patch",
+    snprintf(label, sizeof label, "%s classify_batch, classify_soa and classify_indexed equal classify on every patch",
              o->label);
     ok &= check(r->paths_differ == 0, label, "they differ %d times", r->paths_differ);
     snprintf(label, sizeof label, "%s classify is the class of values() under the rule on all %zu patches%s",

@@ -23,6 +23,7 @@
 #define PTP_TRI4_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -65,6 +66,11 @@ void ptp_tri4_classify_batch(const float (*cp)[4], size_t patch_count, const flo
  * soa[(k * 4 + c) * stride + p], stride >= patch_count. */
 void ptp_tri4_classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
+/* The same from one vertex array and 15 indices a patch: point k of patch p is
+ * vertices[indices[p * 15 + k]] (a BEZ file's or OpenSubdiv's patch table); gathered
+ * INDEXED_LANES patches at a time into classify_soa. */
+void ptp_tri4_classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
+                                const float eye[4], unsigned char *cls);
 
 /* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
  * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
@@ -3024,6 +3030,27 @@ void ptp_tri4_classify_batch(const float (*cp)[4], size_t patch_count, const flo
         }
 #endif
         ptp_tri4_lanes_block(soa, n, eye, cls + p);
+    }
+}
+
+/* Patches classify_indexed gathers at a time: at most 32 KB of points on the stack. */
+#define PTP_TRI4_INDEXED_LANES (PTP_TRI4_POINTS <= 32 ? 64 : 8)
+
+void ptp_tri4_classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
+                                const float eye[4], unsigned char *cls)
+{
+    float soa[PTP_TRI4_POINTS * 4 * PTP_TRI4_INDEXED_LANES];
+    size_t p, n, l;
+    unsigned k, c;
+    for (p = 0; p < patch_count; p += n) {
+        n = patch_count - p < PTP_TRI4_INDEXED_LANES ? patch_count - p : PTP_TRI4_INDEXED_LANES;
+        for (l = 0; l < n; l++)
+            for (k = 0; k < PTP_TRI4_POINTS; k++) {
+                const float *v = vertices[indices[(p + l) * PTP_TRI4_POINTS + k]];
+                for (c = 0; c < 4; c++)
+                    soa[(k * 4 + c) * n + l] = v[c];
+            }
+        ptp_tri4_classify_soa(soa, n, n, eye, cls + p);
     }
 }
 #endif

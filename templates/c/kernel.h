@@ -3,6 +3,7 @@
 #define {{UPREFIX}}H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -39,6 +40,11 @@ void {{PREFIX}}classify_batch(const float (*cp)[4], size_t patch_count, const fl
  * soa[(k * 4 + c) * stride + p], stride >= patch_count. */
 void {{PREFIX}}classify_soa(const float *soa, size_t stride, size_t patch_count, const float eye[4],
                             unsigned char *cls);
+/* The same from one vertex array and {{POINTS}} indices a patch: point k of patch p is
+ * vertices[indices[p * {{POINTS}} + k]] (a BEZ file's or OpenSubdiv's patch table); gathered
+ * INDEXED_LANES patches at a time into classify_soa. */
+void {{PREFIX}}classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
+                                const float eye[4], unsigned char *cls);
 
 /* How alpha() reads a 4x4 projection. P is the matrix that maps column vectors, clip = P * view,
  * and P(r, c) its element in row r, column c. COLUMN_MAJOR: P(r, c) at proj[c * 4 + r], as
@@ -249,4 +255,25 @@ float {{PREFIX}}alpha(const float proj[16], int layout)
     return det > 0 ? (float)m[2][3] : det < 0 ? (float)-m[2][3] : 0.0f;
 }
 {{TABLES}}
-{{FUNCTIONS}}#endif
+{{FUNCTIONS}}
+/* Patches classify_indexed gathers at a time: at most 32 KB of points on the stack. */
+#define {{UPREFIX}}INDEXED_LANES ({{UPREFIX}}POINTS <= 32 ? 64 : 8)
+
+void {{PREFIX}}classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
+                                const float eye[4], unsigned char *cls)
+{
+    float soa[{{UPREFIX}}POINTS * 4 * {{UPREFIX}}INDEXED_LANES];
+    size_t p, n, l;
+    unsigned k, c;
+    for (p = 0; p < patch_count; p += n) {
+        n = patch_count - p < {{UPREFIX}}INDEXED_LANES ? patch_count - p : {{UPREFIX}}INDEXED_LANES;
+        for (l = 0; l < n; l++)
+            for (k = 0; k < {{UPREFIX}}POINTS; k++) {
+                const float *v = vertices[indices[(p + l) * {{UPREFIX}}POINTS + k]];
+                for (c = 0; c < 4; c++)
+                    soa[(k * 4 + c) * n + l] = v[c];
+            }
+        {{PREFIX}}classify_soa(soa, n, n, eye, cls + p);
+    }
+}
+#endif
