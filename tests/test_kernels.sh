@@ -182,7 +182,8 @@ mutant() {
 # The checks can fail: the table (values) and the straight-line code (classify) each.
 mutant '0,/-9.0f/s//-9.5f/' '.*plane values' "one table weight changed (-9 -> -9.5)"
 mutant '0,/u = -((g0 \* m1_5/s//u = ((g0 * m1_5/' 'classify_batch' "one straight-line term's sign flipped"
-mutant '0,/VFMA(g2, m0_8, u)/s//VFMA(g2, -m0_8, u)/' 'classify_batch' "one fused plane's minor's sign flipped"
+# (a minor without point 0: in patch-local coordinates point 0 is near the origin, its minors near 0)
+mutant '0,/VFMA(g5, m1_4, u)/s//VFMA(g5, -m1_4, u)/' 'classify and values: .*plane values' "one fused plane's minor's sign flipped"
 # The strict masks, < made <= (a zero plane counted negative): in vectors (SSE) and, where the CPU
 # has AVX-512, in mask registers.
 mutant 's/((k) \& ((v) < 0.0f))/((k) \& ((v) <= 0.0f))/' 'classify_batch' "the strict masks' < made <= (vectors)"
