@@ -107,7 +107,7 @@ static void bspline_row(char *out, const slpt_writer *w, int r, char a[4][EXPR])
 static void put_bspline(slpt_writer *w)
 {
     static const char xyzw[] = "xyzw";
-    char a[4][EXPR], names[16][24], inits[16][EXPR];
+    char a[4][EXPR], names[16][32], inits[16][EXPR];
     const char *name[16], *init[16];
     int c, i, j, k;
     for (c = 0; c < 4; c++) {
