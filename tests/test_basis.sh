@@ -16,7 +16,7 @@ build() {
     for v in "bz:" "vz:--order v-major" "bs:--basis bspline" "vs:--basis bspline --order v-major"; do
         "$P" --degree 3 --target c --space $space --rule $rule ${v#*:} --prefix ${v%%:*}_ \
             -o "$tmp/${v%%:*}.h" || return 1
-        case $v in b[s]* | vs*) [ -n "${5:-}" ] && sed -i "$5" "$tmp/${v%%:*}.h" ;; esac
+        case $v in bs* | vs*) [ -n "${5:-}" ] && sed -i "$5" "$tmp/${v%%:*}.h" ;; esac
     done
     $cc -std=c11 -O2 $flags -Wall -Wextra -Werror -pedantic -Igen -Itests $([ $space = world ] && echo -DWORLD) \
         -include "$tmp/bz.h" -include "$tmp/vz.h" -include "$tmp/bs.h" -include "$tmp/vs.h" \

@@ -74,6 +74,10 @@ static void minor_expr(char *out, const slpt_writer *w, const char *p, const cha
     expr(out, "%s - %s", mul(a, w, p, q), mul(b, w, r, s));
 }
 
+/* The frame's names: the origin's negation, and the eye as given and as the local frame sees it. */
+static const char *const origin[3] = {"ox", "oy", "oz"};
+static const char *const raw_eye[3] = {"e0", "e1", "e2"}, *const local_eye[3] = {"l0", "l1", "l2"};
+
 /* The input's index of point (i, j) of the (n+1) x (m+1) grid, i along u. */
 static int input_index(const slpt_writer *w, int i, int j)
 {
@@ -136,8 +140,6 @@ static void put_bspline(slpt_writer *w)
 
 void slpt_frame(slpt_writer *w)
 {
-    static const char *const origin[3] = {"ox", "oy", "oz"}, *const eye[3] = {"l0", "l1", "l2"};
-    static const char *const raw[3] = {"e0", "e1", "e2"};
     char w0[EXPR], x0[EXPR], inits[4][EXPR], pr[EXPR];
     const char *name = "rw", *init[4];
     int c, n = w->world ? 3 : 2;
@@ -158,17 +160,16 @@ void slpt_frame(slpt_writer *w)
     if (!w->world)
         return;
     for (c = 0; c < 3; c++) {
-        expr(inits[c], w->s->shift, origin[c], "e3", raw[c]);
+        expr(inits[c], w->s->shift, origin[c], "e3", raw_eye[c]);
         init[c] = inits[c];
     }
-    declare(w, eye, init, 3);
+    declare(w, local_eye, init, 3);
 }
 
 /* Writes to out coordinate c of point k as the program reads it: the Bezier coordinate, or in
  * patch-local coordinates x + o w (c < 3). */
 static void coordinate(char *out, const slpt_writer *w, int k, int c)
 {
-    static const char *const origin[3] = {"ox", "oy", "oz"};
     char x[EXPR], wk[EXPR];
     bezier_coordinate(x, w, k, c);
     if (!w->plan->local || c == 3) {
@@ -183,9 +184,7 @@ void slpt_point(slpt_writer *w, int k)
 {
     static const char xyzw[] = "xyzw";
     char names[6][24], inits[6][EXPR], v[4][24];
-    const int local = w->plan->local;
-    const char *name[6], *init[6], *e0 = local ? "l0" : "e0", *e1 = local ? "l1" : "e1",
-               *e2 = local ? "l2" : "e2";
+    const char *const *e = w->plan->local ? local_eye : raw_eye, *name[6], *init[6];
     int c, n = 0;
     if (w->done[w->p->npairs + (size_t)k])
         return;
@@ -200,9 +199,9 @@ void slpt_point(slpt_writer *w, int k)
     }
     if (w->world) {
         snprintf(names[n], sizeof names[n], "a%d", k);
-        minor_expr(inits[n++], w, e0, v[1], e1, v[0]);
+        minor_expr(inits[n++], w, e[0], v[1], e[1], v[0]);
         snprintf(names[n], sizeof names[n], "b%d", k);
-        minor_expr(inits[n++], w, e2, v[3], "e3", v[2]);
+        minor_expr(inits[n++], w, e[2], v[3], "e3", v[2]);
     } else {
         snprintf(names[n], sizeof names[n], "g%d", k);
         mul(inits[n++], w, "e2", v[3]);
