@@ -178,11 +178,11 @@ static void put_loads(slpt_writer *w, const tp_table *t, const out_info *info,
         return;
     if (emit_c_cert_late(info)) {
         sbuf_printf(w->o, "#if !%sCLATE\n", up);
-        emit_c_cert_magnitudes(w->o, t->dom.npoints, info, cb);
+        emit_c_cert_magnitudes(w, t->dom.npoints, info, cb);
         sbuf_puts(w->o, "#endif\n");
         return;
     }
-    emit_c_cert_magnitudes(w->o, t->dom.npoints, info, cb);
+    emit_c_cert_magnitudes(w, t->dom.npoints, info, cb);
     if (!emit_c_cert_zeros(info))
         return;
     for (k = 0; k < t->dom.npoints; k++)
@@ -326,9 +326,9 @@ static int put_lanes(sbuf *o, const cert_bounds *cb, const tp_table *t,
     slpt_frame(&w);
     put_loads(&w, t, info, cb, up);
     st = slpt_program(&w, err);
-    slpt_clear(&w);
     if (st == PTP_OK && emit_c_cert_late(info))
-        emit_c_cert_late_bounds(o, t->dom.npoints, info, cb, up);
+        emit_c_cert_late_bounds(&w, t->dom.npoints, info, cb, up);
+    slpt_clear(&w);
     if (st == PTP_OK)
         put_lanes_class(o, info, up);
     return st;

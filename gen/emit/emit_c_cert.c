@@ -225,13 +225,14 @@ void emit_c_cert_late_macros(sbuf *o, const cert_bounds *cb, const char *px, con
                 up, up, px, up, up, up, up, up, up, up, up);
 }
 
-void emit_c_cert_late_bounds(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb,
-                             const char *up)
+void emit_c_cert_late_bounds(const slpt_writer *w, int npoints, const out_info *info,
+                             const cert_bounds *cb, const char *up)
 {
+    sbuf *o = w->o;
     sbuf_printf(o, "#if %sCLATE\n"
                    "        __asm__(\"\" : \"+r\"(q)); /* the magnitudes load the points again: not kept live */\n",
                 up);
-    emit_c_cert_magnitudes(o, npoints, info, cb);
+    emit_c_cert_magnitudes(w, npoints, info, cb);
     sbuf_printf(o, "        {\n            size_t P;\n            for (P = 0; P < %sPLANES; P++)\n"
                    "                %sCMIN(P, raw[P]);\n        }\n#endif\n",
                 up, up);
@@ -281,27 +282,23 @@ void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
 }
 
 /* Appends the magnitude update Rc = max(Rc, |coordinate c of point k|) (declared for k = 0), of
- * the coordinate as the program reads it: patch-local x + o w (c < 3), else the load. */
-static void put_magnitude(sbuf *o, const out_info *info, int k, int c)
+ * the coordinate as the program reads it (slpt_coordinate). */
+static void put_magnitude(const slpt_writer *w, const out_info *info, int k, int c)
 {
     static const char crd[] = "xyzw";
     const char *px = info->prefix;
-    char x[128], w[128], v[400];
-    put_load(x, sizeof x, px, k, c);
-    if (info->slp->local && c < 3) {
-        put_load(w, sizeof w, px, k, 3);
-        fmt_upper(v, sizeof v, px);
-        snprintf(v + strlen(v), sizeof v - strlen(v), "VLOCAL(o%c, %s, %s)", crd[c], w, x);
-    } else
-        snprintf(v, sizeof v, "%s", x);
+    char v[SLPT_EXPR];
+    slpt_coordinate(v, w, k, c);
     if (k == 0)
-        sbuf_printf(o, "        %svf R%c = %svabsmax(%s, %s);\n", px, crd[c], px, v, v);
+        sbuf_printf(w->o, "        %svf R%c = %svabsmax(%s, %s);\n", px, crd[c], px, v, v);
     else
-        sbuf_printf(o, "        R%c = %svabsmax(R%c, %s);\n", crd[c], px, crd[c], v);
+        sbuf_printf(w->o, "        R%c = %svabsmax(R%c, %s);\n", crd[c], px, crd[c], v);
 }
 
-void emit_c_cert_magnitudes(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb)
+void emit_c_cert_magnitudes(const slpt_writer *w, int npoints, const out_info *info,
+                            const cert_bounds *cb)
 {
+    sbuf *o = w->o;
     const char *px = info->prefix;
     int world = info->space == OUT_WORLD, local = info->slp->local, k, c;
     char up[64];
@@ -312,7 +309,7 @@ void emit_c_cert_magnitudes(sbuf *o, int npoints, const out_info *info, const ce
     for (k = 0; k < npoints; k++)
         for (c = 0; c < 4; c++)
             if (world || c != 2)
-                put_magnitude(o, info, k, c);
+                put_magnitude(w, info, k, c);
     if (world && local) /* the local eye's magnitudes, lane by lane */
         sbuf_printf(o, "        const %svf E0 = %sVABS(l0), E1 = %sVABS(l1), E2 = %sVABS(l2);\n"
                        "        const %svf E = %svabsmax(%svabsmax(%svabsmax(E0, E1), E2), E0 * 0.0f + E3);\n",

@@ -4,6 +4,7 @@
 #define EMIT_C_CERT_H
 
 #include "emit/out.h"
+#include "emit/slp_text.h"
 #include "plan/cert.h"
 #include "plan/slp.h"
 
@@ -28,15 +29,16 @@ void emit_c_cert_late_macros(sbuf *o, const cert_bounds *cb, const char *px, con
 
 /* Appends, under CLATE, the magnitudes (emit_c_cert_magnitudes, from the points loaded again)
  * and the loop that bounds every plane's kept value raw[P] into s. After the planes. */
-void emit_c_cert_late_bounds(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb,
-                             const char *up);
+void emit_c_cert_late_bounds(const slpt_writer *w, int npoints, const out_info *info,
+                             const cert_bounds *cb, const char *up);
 
 /* Appends the lanes' certified magnitudes from loads of their own: the largest |coordinate| Rc
  * of each coordinate c the kernel reads over the npoints points, their maximum R, ER3 >= every
  * monomial's magnitude (clip: E Rx Ry Rw; world: |e_i| times the other three coordinates' Rc,
  * e_i x_j y_k z_l with i, j, k, l distinct), F with cb's largest K2, and the size guard amb
  * (cb->q_max). Needs E (and world: E0..E3) and the point loads q, qs before it. */
-void emit_c_cert_magnitudes(sbuf *o, int npoints, const out_info *info, const cert_bounds *cb);
+void emit_c_cert_magnitudes(const slpt_writer *w, int npoints, const out_info *info,
+                            const cert_bounds *cb);
 
 /* Appends the lanes' masks c<e>: boundary edge e of d is collapsed, its points equal in every
  * coordinate the kernel reads (== : +0 and -0 are one number, NaN never equal) and every

@@ -17,7 +17,7 @@
 #define SLP_ORDER_WIN 4
 
 /* A product, a multiply-add and a sum are at most this long (a sum of a dozen minors). */
-#define EXPR 1024
+#define EXPR SLPT_EXPR
 
 int slpt_init(slpt_writer *w, sbuf *o, const plan_slp *plan, const slpt_syntax *s, int world,
               const void *ctx, ptp_error *err)
@@ -166,9 +166,7 @@ void slpt_frame(slpt_writer *w)
     declare(w, local_eye, init, 3);
 }
 
-/* Writes to out coordinate c of point k as the program reads it: the Bezier coordinate, or in
- * patch-local coordinates x + o w (c < 3). */
-static void coordinate(char *out, const slpt_writer *w, int k, int c)
+void slpt_coordinate(char *out, const slpt_writer *w, int k, int c)
 {
     char x[EXPR], wk[EXPR];
     bezier_coordinate(x, w, k, c);
@@ -194,7 +192,7 @@ void slpt_point(slpt_writer *w, int k)
         if (c == 2 && !w->world)
             continue; /* clip space never reads z */
         memcpy(names[n], v[c], sizeof v[c]);
-        coordinate(inits[n], w, k, c);
+        slpt_coordinate(inits[n], w, k, c);
         n++;
     }
     if (w->world) {

@@ -56,6 +56,12 @@ void slpt_clear(slpt_writer *w);
  * local eye l = e + o e3. Point k's coordinates are then x + o w (and y, z), each rounded once:
  * a shear of determinant 1, which leaves every plane's value as it is (docs/math.md). */
 void slpt_frame(slpt_writer *w);
+/* The size of slpt_coordinate's text. */
+#define SLPT_EXPR 1024
+/* Writes to out (SLPT_EXPR bytes) coordinate c of point k as the program reads it: the input's
+ * load (or B-spline input's converted point), in patch-local coordinates x + o w (c < 3). Needs
+ * slpt_frame's names. */
+void slpt_coordinate(char *out, const slpt_writer *w, int k, int c);
 /* Declares point k's coordinates and eye products unless done. */
 void slpt_point(slpt_writer *w, int k);
 /* Writes every plane in slp_order's order (consecutive planes reuse values), each followed by
