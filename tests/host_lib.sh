@@ -1,5 +1,5 @@
 # host_lib.sh: the check-line helpers of the test scripts (sourced by tests/kernels_lib.sh,
-# test_wgpu.sh, test_refine.sh and test_cullrate.sh).
+# test_wgpu.sh, test_refine.sh, test_cullrate.sh and test_examples.sh).
 
 ok() { echo "ok - $1"; }
 # make_tmp: sets tmp to a new temporary directory, removed when the script exits.

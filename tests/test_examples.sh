@@ -3,17 +3,15 @@
 # clang on the generated knot (build/models/knot.bez) against world space, cull.tesc with
 # glslangValidator, and the shaders that cull their own patch (cull_patch.tesc, the hull shader
 # cull_patch.hlsl) on --stage function's files with glslangValidator; the README shows them
-# verbatim.
+# verbatim. The Direct3D 11 compute pass d3d11_cull.cpp compiles and links with mingw-w64.
 # Needs PTPGEN (default build/gcc/ptpgen).
 set -u
 P=${PTPGEN:-build/gcc/ptpgen}
 model=build/models/knot.bez # bench/mkmodel.c
 [ -e $model ] || make -s $model >/dev/null 2>&1 || echo "not ok - the model: make $model failed"
 ex=tests/examples
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1: $2"; }
+. tests/host_lib.sh # ok, notok, missing, make_tmp
+make_tmp
 STD="-std=c11 -O2 -Wall -Wextra -Werror -pedantic"
 
 # in_readme FILE: 0 if README.md contains FILE's whole text verbatim.
@@ -98,4 +96,33 @@ if command -v glslangValidator >/dev/null && command -v spirv-val >/dev/null &&
     fi
 else
     notok "the --stage function shaders compile" "glslangValidator, spirv-val or ptpgen failed"
+fi
+
+# The Direct3D 11 compute pass, d3d11_cull.cpp, on the HLSL kernel's host header and the C header:
+# it compiles and links with mingw-w64 (d3d11.h, libd3d11); running it needs Windows and a GPU.
+# The HLSL kernel itself compiles with glslang in test_kernels.sh and test_host_header.sh.
+MINGW=x86_64-w64-mingw32-g++-posix
+D3D="$MINGW -std=c++17 -O2 -Wall -Wextra -Werror"
+d3d11() { # SOURCE: compiles and links SOURCE into $tmp/d3d/d3d11_cull.exe; errors in $tmp/err
+    $D3D -I"$tmp/d3d" -o "$tmp/d3d/d3d11_cull.exe" "$1" -ld3d11 2>"$tmp/err"
+}
+if ! command -v $MINGW >/dev/null; then
+    missing "$MINGW (Debian package g++-mingw-w64-x86-64-posix)" "d3d11_cull.cpp compiles and links"
+elif ! { mkdir -p "$tmp/d3d" && "$P" --degree 3 --target c -o "$tmp/d3d/ptp_3x3.h" &&
+    "$P" --degree 3 --target hlsl -o "$tmp/d3d/ptp_3x3.hlsl" --host-header "$tmp/d3d/ptp_3x3_host.h"; } 2>"$tmp/err"; then
+    notok "d3d11_cull.cpp's headers" "$P failed: $(head -1 "$tmp/err")"
+else
+    if d3d11 $ex/d3d11_cull.cpp && [ -s "$tmp/d3d/d3d11_cull.exe" ]; then
+        ok "d3d11_cull.cpp compiles and links with $D3D -ld3d11"
+    else
+        notok "d3d11_cull.cpp compiles and links with $D3D -ld3d11" "$(grep -m3 -i error "$tmp/err")"
+    fi
+    # The check must be able to fail: the example's dispatch call misspelled does not compile.
+    sed 's/ptp_3x3_dispatch(/ptp_3x3_dispach(/' $ex/d3d11_cull.cpp >"$tmp/d3d/misspelled.cpp"
+    if ! d3d11 "$tmp/d3d/misspelled.cpp" && grep -q "ptp_3x3_dispach" "$tmp/err"; then
+        ok "d3d11_cull.cpp with the host header's dispatch misspelled fails to compile"
+    else
+        notok "d3d11_cull.cpp with the host header's dispatch misspelled fails to compile" \
+            "$(grep -m1 -i error "$tmp/err" || echo it compiled)"
+    fi
 fi
