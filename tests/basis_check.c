@@ -1,11 +1,14 @@
 /* basis_check.c: the C header's input forms against its default on exact data. Small-integer
- * points keep every conversion exact, so the headers must agree bit for bit:
+ * points (and w0 a power of 2) keep every conversion and shift exact, so the headers must agree
+ * bit for bit:
  *   --order v-major on the transposed points      = the default on the points;
- *   --basis bspline on B-spline vertices          = the default on their Bezier points times 36
- *                                                   (computed here in integers);
+ *   --basis bspline on B-spline vertices          = --coordinates absolute on the Bezier points
+ *                                                   times 36 of the vertices moved to vertex 0,
+ *                                                   with the eye moved alike (computed here);
  *   --basis bspline --order v-major, transposed   = --basis bspline.
- * Built around four bicubic headers of one space and rule (tests/test_basis.sh): prefixes bz_
- * (default), vz_ (v-major), bs_ (B-spline), vs_ (B-spline, v-major), with -DWORLD for world space:
+ * Built around five bicubic headers of one space and rule (tests/test_basis.sh): prefixes bz_
+ * (default), vz_ (v-major), bs_ (B-spline), vs_ (B-spline, v-major), ba_ (absolute coordinates),
+ * with -DWORLD for world space:
  *   basis_check COUNT SEED NAME */
 #include "check.h"
 
@@ -33,26 +36,43 @@ static void transpose(float out[16][4], const float in[16][4])
             memcpy(out[j * 4 + i], in[i * 4 + j], sizeof out[0]);
 }
 
-/* b = the Bezier points of the B-spline vertices p times 36, in integers (exact). */
+/* b = the Bezier points of the B-spline vertices p times 36 (exact for small dyadic p). */
 static void to_bezier(float b[16][4], const float p[16][4])
 {
     int i, j, a, c, k;
     for (i = 0; i < 4; i++)
         for (j = 0; j < 4; j++)
             for (c = 0; c < 4; c++) {
-                long s = 0;
+                double s = 0;
                 for (a = 0; a < 4; a++)
                     for (k = 0; k < 4; k++)
-                        s += (long)bspline_map[i][a] * bspline_map[j][k] * (long)p[a * 4 + k][c];
+                        s += bspline_map[i][a] * bspline_map[j][k] * (double)p[a * 4 + k][c];
                 b[i * 4 + j][c] = (float)s;
             }
 }
 
-/* 1 when header A on a and header B on b give bitwise equal values and equal classes. */
-#define SAME(A, B, a, b)                                                                      \
-    (A##values((const float(*)[4])(a), eye, da), B##values((const float(*)[4])(b), eye, db), \
-     !memcmp(da, db, sizeof da) &&                                                           \
-         A##classify((const float(*)[4])(a), eye) == B##classify((const float(*)[4])(b), eye))
+/* q = p moved to point 0 as the headers' patch-local coordinates move it (x + o w with
+ * o = -x0 / w0; clip space: x and y), and the eye l alike (world space: e + o e3); exact when
+ * w0 is a power of 2. */
+static void to_local(float q[16][4], float l[4], const float p[16][4], const float eye[4])
+{
+    int k, c, n = eye[3] != 0 ? 3 : 2;
+    memcpy(q, p, sizeof(float[16][4]));
+    memcpy(l, eye, sizeof(float[4]));
+    for (c = 0; c < n; c++) {
+        float o = -p[0][c] / p[0][3];
+        for (k = 0; k < 16; k++)
+            q[k][c] = p[k][c] + o * p[k][3];
+        l[c] = eye[c] + o * eye[3];
+    }
+}
+
+/* 1 when header A on a with eye ea and header B on b with eye eb give bitwise equal values and
+ * equal classes. */
+#define SAME(A, B, a, ea, b, eb)                                                                \
+    (A##values((const float(*)[4])(a), ea, da), B##values((const float(*)[4])(b), eb, db),     \
+     !memcmp(da, db, sizeof da) &&                                                             \
+         A##classify((const float(*)[4])(a), ea) == B##classify((const float(*)[4])(b), eb))
 
 int main(int argc, char **argv)
 {
@@ -60,7 +80,7 @@ int main(int argc, char **argv)
     uint64_t seed = argc > 2 ? strtoull(argv[2], NULL, 10) : 1;
     const char *name = argc > 3 ? argv[3] : "basis";
     char label[3][256];
-    float p[16][4], t[16][4], b[16][4], da[64], db[64], eye[4];
+    float p[16][4], t[16][4], q[16][4], b[16][4], da[64], db[64], eye[4], l[4];
     int k, c;
     for (n = 0; n < count; n++) {
         for (k = 0; k < 16; k++) /* a bumpy grid of small integers, w 1 (clip space 1 to 4) */
@@ -69,7 +89,7 @@ int main(int argc, char **argv)
                                                   integer(&seed, -6, 6));
 #ifndef WORLD
         for (k = 0; k < 16; k++) {
-            int w = integer(&seed, 1, 4);
+            int w = k ? integer(&seed, 1, 4) : 1 << integer(&seed, 0, 2);
             for (c = 0; c < 4; c++)
                 p[k][c] *= (float)w;
         }
@@ -80,13 +100,14 @@ int main(int argc, char **argv)
         eye[3] = 1;
 #endif
         transpose(t, (const float(*)[4])p);
-        to_bezier(b, (const float(*)[4])p);
-        bad[0] += !SAME(vz_, bz_, t, p);
-        bad[1] += !SAME(bs_, bz_, p, b);
-        bad[2] += !SAME(vs_, bs_, t, p);
+        to_local(q, l, (const float(*)[4])p, eye);
+        to_bezier(b, (const float(*)[4])q);
+        bad[0] += !SAME(vz_, bz_, t, eye, p, eye);
+        bad[1] += !SAME(bs_, ba_, p, eye, b, l);
+        bad[2] += !SAME(vs_, bs_, t, eye, p, eye);
     }
     snprintf(label[0], sizeof label[0], "%s: --order v-major on transposed points = the default (%ld patches)", name, count);
-    snprintf(label[1], sizeof label[1], "%s: --basis bspline = the default on 36 times the Bezier points (%ld patches)", name, count);
+    snprintf(label[1], sizeof label[1], "%s: --basis bspline = --coordinates absolute on 36 times the Bezier points in the local frame (%ld patches)", name, count);
     snprintf(label[2], sizeof label[2], "%s: --basis bspline --order v-major on transposed vertices = --basis bspline (%ld patches)", name, count);
     for (k = 0; k < 3; k++)
         check(bad[k] == 0, label[k], "%ld patches differ", bad[k]);

@@ -85,14 +85,18 @@ static int input_index(const slpt_writer *w, int i, int j)
     return pl->vmajor ? j * (pl->n + 1) + i : i * (pl->m + 1) + j;
 }
 
-/* Writes to out coordinate c of Bezier point k as given or converted, before the shift: the
- * load of the input's point, or B-spline input's converted bx<k> ... */
-static void bezier_coordinate(char *out, const slpt_writer *w, int k, int c)
+/* Writes to out coordinate c of input point idx (as stored), in patch-local coordinates x + o w
+ * when c < 3 (slpt_frame's origin). */
+static void input_coordinate(char *out, const slpt_writer *w, int idx, int c)
 {
-    if (w->plan->bspline)
-        expr(out, "b%c%d", "xyzw"[c], k);
-    else
-        w->s->load(out, EXPR, w, input_index(w, k / (w->plan->m + 1), k % (w->plan->m + 1)), c);
+    char x[EXPR], wk[EXPR];
+    w->s->load(x, EXPR, w, idx, c);
+    if (!w->plan->local || c == 3) {
+        memcpy(out, x, EXPR);
+        return;
+    }
+    w->s->load(wk, EXPR, w, idx, 3);
+    expr(out, w->s->shift, origin[c], wk, x);
 }
 
 /* Writes to out row r of the uniform cubic B-spline-to-Bezier map (times 6) applied to a[0..3]:
@@ -120,7 +124,7 @@ static void put_bspline(slpt_writer *w)
         for (i = 0; i < 4; i++) /* along u: column j of the input's 4 x 4 vertices */
             for (j = 0; j < 4; j++) {
                 for (k = 0; k < 4; k++)
-                    w->s->load(a[k], EXPR, w, input_index(w, k, j), c);
+                    input_coordinate(a[k], w, input_index(w, k, j), c);
                 snprintf(names[i * 4 + j], sizeof names[0], "h%c%d_%d", xyzw[c], i, j);
                 bspline_row(inits[i * 4 + j], w, i, a);
             }
@@ -138,21 +142,19 @@ static void put_bspline(slpt_writer *w)
     }
 }
 
-void slpt_frame(slpt_writer *w)
+/* Patch-local coordinates: declares rw, the origin's negation o from input point 0 and, in world
+ * space, the local eye. */
+static void put_origin(slpt_writer *w)
 {
     char w0[EXPR], x0[EXPR], inits[4][EXPR], pr[EXPR];
     const char *name = "rw", *init[4];
     int c, n = w->world ? 3 : 2;
-    if (w->plan->bspline)
-        put_bspline(w);
-    if (!w->plan->local)
-        return;
-    bezier_coordinate(w0, w, 0, 3);
+    w->s->load(w0, EXPR, w, 0, 3);
     w->s->recip0(inits[0], EXPR, w, w0);
     init[0] = inits[0];
     declare(w, &name, init, 1);
     for (c = 0; c < n; c++) {
-        bezier_coordinate(x0, w, 0, c);
+        w->s->load(x0, EXPR, w, 0, c);
         expr(inits[c], "-(%s)", mul(pr, w, x0, "rw"));
         init[c] = inits[c];
     }
@@ -166,16 +168,20 @@ void slpt_frame(slpt_writer *w)
     declare(w, local_eye, init, 3);
 }
 
+void slpt_frame(slpt_writer *w)
+{
+    if (w->plan->local)
+        put_origin(w);
+    if (w->plan->bspline)
+        put_bspline(w);
+}
+
 void slpt_coordinate(char *out, const slpt_writer *w, int k, int c)
 {
-    char x[EXPR], wk[EXPR];
-    bezier_coordinate(x, w, k, c);
-    if (!w->plan->local || c == 3) {
-        memcpy(out, x, EXPR);
-        return;
-    }
-    bezier_coordinate(wk, w, k, 3);
-    expr(out, w->s->shift, origin[c], wk, x);
+    if (w->plan->bspline)
+        expr(out, "b%c%d", "xyzw"[c], k);
+    else
+        input_coordinate(out, w, input_index(w, k / (w->plan->m + 1), k % (w->plan->m + 1)), c);
 }
 
 void slpt_point(slpt_writer *w, int k)

@@ -49,18 +49,20 @@ int slpt_init(slpt_writer *w, sbuf *o, const plan_slp *plan, const slpt_syntax *
               const void *ctx, ptp_error *err);
 /* Frees w's storage. */
 void slpt_clear(slpt_writer *w);
-/* Declares what the points need once a patch, before any point: from B-spline input the Bezier
- * points times 36 (two passes of the uniform cubic map, rows (1 4 1 0), (0 4 2 0), (0 2 4 0),
- * (0 1 4 1): exact products by 2 and 4, the sums rounded); in patch-local coordinates rw = 1 /
- * w0 (0 where w0 is 0), the origin's negation o = -(x0, y0[, z0]) rw, and in world space the
- * local eye l = e + o e3. Point k's coordinates are then x + o w (and y, z), each rounded once:
- * a shear of determinant 1, which leaves every plane's value as it is (docs/math.md). */
+/* Declares what the points need once a patch, before any point: in patch-local coordinates rw =
+ * 1 / w0 of input point 0 (0 where w0 is 0), the origin's negation o = -(x0, y0[, z0]) rw and in
+ * world space the local eye l = e + o e3; every input coordinate is then read as x + o w (and y,
+ * z), each rounded once: a shear of determinant 1, which leaves every plane's value as it is
+ * (docs/math.md). From B-spline input then the Bezier points times 36 of the sheared vertices
+ * (the map is linear, so they are the sheared Bezier points): two passes of the uniform cubic
+ * map, rows (1 4 1 0), (0 4 2 0), (0 2 4 0), (0 1 4 1), exact products by 2 and 4, the sums
+ * rounded (in local coordinates relative to the patch, not to the origin). */
 void slpt_frame(slpt_writer *w);
 /* The size of slpt_coordinate's text. */
 #define SLPT_EXPR 1024
-/* Writes to out (SLPT_EXPR bytes) coordinate c of point k as the program reads it: the input's
- * load (or B-spline input's converted point), in patch-local coordinates x + o w (c < 3). Needs
- * slpt_frame's names. */
+/* Writes to out (SLPT_EXPR bytes) coordinate c of Bezier point k as the program reads it: the
+ * input's load, in patch-local coordinates x + o w (c < 3), or B-spline input's converted point.
+ * Needs slpt_frame's names. */
 void slpt_coordinate(char *out, const slpt_writer *w, int k, int c);
 /* Declares point k's coordinates and eye products unless done. */
 void slpt_point(slpt_writer *w, int k);
