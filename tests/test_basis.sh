@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # test_basis.sh: the input forms --basis bspline and --order v-major. The C headers run on exact
 # small-integer data against the default header (tests/basis_check.c: bit for bit), in three of
-# the four spaces and rules, with gcc and clang; a header whose B-spline map is wrong must fail; the GPU
-# targets' code compiles (GLSL and HLSL through glslangValidator and spirv-val, CUDA through nvcc
-# where present); the options' misuses are usage errors. Needs PTPGEN.
+# the four spaces and rules, with gcc and clang, and classify_indexed_boundary on random masks; a
+# header whose B-spline map or phantoms are wrong must fail; the GPU targets' code compiles (GLSL
+# and HLSL through glslangValidator and spirv-val, CUDA through nvcc where present); the options'
+# misuses are usage errors. Needs PTPGEN.
 set -u
 P=${PTPGEN:?set PTPGEN}
 . "$(dirname "$0")/host_lib.sh"
@@ -45,6 +46,14 @@ if build gcc "" clip strict 's/\(bx1 = 4.0f \* hx0_1 + \)2.0f/\14.0f/' && ! "$tm
     ok "a header whose B-spline map has a wrong weight fails"
 else
     notok "a header whose B-spline map has a wrong weight fails" "$(grep -m2 '^not ok' "$tmp/out" 2>/dev/null)"
+fi
+
+# Phantoms extrapolated from the wrong vertex (2 p2 - p2) must fail.
+if build gcc "" clip strict 's/2.0f \* x\[q\[1\]/2.0f * x[q[2]/' && ! "$tmp/bc" 500 3 mutant >"$tmp/out" &&
+    grep -q '^not ok - mutant: classify_indexed_boundary' "$tmp/out"; then
+    ok "a header that extrapolates the phantoms from the wrong vertex fails"
+else
+    notok "a header that extrapolates the phantoms from the wrong vertex fails" "$(grep -m2 '^not ok' "$tmp/out" 2>/dev/null)"
 fi
 
 # The GPU targets' straight-line code in both forms compiles.

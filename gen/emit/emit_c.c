@@ -3,6 +3,7 @@
 #include "emit/emit_c.h"
 #include "emit/emit_c_batch.h"
 #include "emit/emit_c_cert.h"
+#include "emit/emit_c_boundary.h"
 #include "emit/emit_c_mesh.h"
 #include "emit/emit_c_refine.h"
 #include "emit/fmt.h"
@@ -485,6 +486,7 @@ int emit_c(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
              ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header")
              : tpl_fill(o, "c/kernel.h", slots, 11, err);
     st = st ? st : emit_c_mesh(o, t, info, err); /* the degree-1 triangle's mesh entry points */
+    st = st ? st : emit_c_boundary(o, info, err); /* B-spline input's boundary masks */
     sbuf_clear(&banner);
     sbuf_clear(&tables);
     sbuf_clear(&funcs);

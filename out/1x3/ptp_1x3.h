@@ -972,20 +972,27 @@ void ptp_1x3_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 /* Patches classify_indexed gathers at a time: at most 32 KB of points on the stack. */
 #define PTP_1X3_INDEXED_LANES (PTP_1X3_POINTS <= 32 ? 64 : 8)
 
+/* soa (stride n) = the points of n patches, point k of patch l at vertices[indices[l * POINTS + k]]. */
+static void ptp_1x3_gather(float *soa, const float (*vertices)[4], const uint32_t *indices, size_t n)
+{
+    size_t l;
+    unsigned k, c;
+    for (l = 0; l < n; l++)
+        for (k = 0; k < PTP_1X3_POINTS; k++) {
+            const float *v = vertices[indices[l * PTP_1X3_POINTS + k]];
+            for (c = 0; c < 4; c++)
+                soa[(k * 4 + c) * n + l] = v[c];
+        }
+}
+
 void ptp_1x3_classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
                                 const float eye[4], unsigned char *cls)
 {
     float soa[PTP_1X3_POINTS * 4 * PTP_1X3_INDEXED_LANES];
-    size_t p, n, l;
-    unsigned k, c;
+    size_t p, n;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_1X3_INDEXED_LANES ? patch_count - p : PTP_1X3_INDEXED_LANES;
-        for (l = 0; l < n; l++)
-            for (k = 0; k < PTP_1X3_POINTS; k++) {
-                const float *v = vertices[indices[(p + l) * PTP_1X3_POINTS + k]];
-                for (c = 0; c < 4; c++)
-                    soa[(k * 4 + c) * n + l] = v[c];
-            }
+        ptp_1x3_gather(soa, vertices, indices + p * PTP_1X3_POINTS, n);
         ptp_1x3_classify_soa(soa, n, n, eye, cls + p);
     }
 }

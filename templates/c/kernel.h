@@ -259,20 +259,27 @@ float {{PREFIX}}alpha(const float proj[16], int layout)
 /* Patches classify_indexed gathers at a time: at most 32 KB of points on the stack. */
 #define {{UPREFIX}}INDEXED_LANES ({{UPREFIX}}POINTS <= 32 ? 64 : 8)
 
+/* soa (stride n) = the points of n patches, point k of patch l at vertices[indices[l * POINTS + k]]. */
+static void {{PREFIX}}gather(float *soa, const float (*vertices)[4], const uint32_t *indices, size_t n)
+{
+    size_t l;
+    unsigned k, c;
+    for (l = 0; l < n; l++)
+        for (k = 0; k < {{UPREFIX}}POINTS; k++) {
+            const float *v = vertices[indices[l * {{UPREFIX}}POINTS + k]];
+            for (c = 0; c < 4; c++)
+                soa[(k * 4 + c) * n + l] = v[c];
+        }
+}
+
 void {{PREFIX}}classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
                                 const float eye[4], unsigned char *cls)
 {
     float soa[{{UPREFIX}}POINTS * 4 * {{UPREFIX}}INDEXED_LANES];
-    size_t p, n, l;
-    unsigned k, c;
+    size_t p, n;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < {{UPREFIX}}INDEXED_LANES ? patch_count - p : {{UPREFIX}}INDEXED_LANES;
-        for (l = 0; l < n; l++)
-            for (k = 0; k < {{UPREFIX}}POINTS; k++) {
-                const float *v = vertices[indices[(p + l) * {{UPREFIX}}POINTS + k]];
-                for (c = 0; c < 4; c++)
-                    soa[(k * 4 + c) * n + l] = v[c];
-            }
+        {{PREFIX}}gather(soa, vertices, indices + p * {{UPREFIX}}POINTS, n);
         {{PREFIX}}classify_soa(soa, n, n, eye, cls + p);
     }
 }

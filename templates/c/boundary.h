@@ -1,0 +1,69 @@
+
+/* OpenSubdiv's boundary patches (--basis bspline): the vertices beyond a boundary edge are
+ * phantoms, extrapolated from the two rows inside it as OpenSubdiv evaluates them. */
+#ifndef {{UPREFIX}}BOUNDARY_H
+#define {{UPREFIX}}BOUNDARY_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Replaces in cp (16 B-spline vertices, as classify reads them) the phantom vertices of the
+ * edges whose bits boundary sets, OpenSubdiv's Far::PatchParam::GetBoundary(): 1 the edge v = 0,
+ * 2 u = 1, 4 v = 1, 8 u = 0. Each vertex p0 of such an edge becomes 2 p1 - p2 (rounded once),
+ * p1 and p2 the next two inward. */
+void {{PREFIX}}extrapolate(float cp[][4], unsigned boundary);
+/* classify_indexed with boundary masks: patch p's vertices extrapolated by boundary[p] (NULL:
+ * none) before they are classified. */
+void {{PREFIX}}classify_indexed_boundary(const float (*vertices)[4], const uint32_t *indices,
+                                         const unsigned char *boundary, size_t patch_count,
+                                         const float eye[4], unsigned char *cls);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
+
+#if defined({{UPREFIX}}IMPLEMENTATION) && !defined({{UPREFIX}}BOUNDARY_IMPLEMENTED)
+#define {{UPREFIX}}BOUNDARY_IMPLEMENTED
+/* For bit b of a boundary mask, its four phantoms as input indices {p0, p1, p2}. */
+static const unsigned char {{PREFIX}}phantoms[4][4][3] = {{PHANTOMS}};
+
+/* extrapolate on point k's coordinate c at x[k * kstride + c * cstride]: one patch (4, 1) or a
+ * lane of classify_soa's layout (4 n, n). */
+static void {{PREFIX}}extrapolate_strided(float *x, size_t kstride, size_t cstride, unsigned boundary)
+{
+    unsigned b, i, c;
+    for (b = 0; b < 4; b++)
+        for (i = 0; boundary >> b & 1u && i < 4; i++) {
+            const unsigned char *q = {{PREFIX}}phantoms[b][i];
+            for (c = 0; c < 4; c++)
+                x[q[0] * kstride + c * cstride] = 2.0f * x[q[1] * kstride + c * cstride] -
+                                                  x[q[2] * kstride + c * cstride];
+        }
+}
+
+void {{PREFIX}}extrapolate(float cp[][4], unsigned boundary)
+{
+    {{PREFIX}}extrapolate_strided(cp[0], 4, 1, boundary);
+}
+
+void {{PREFIX}}classify_indexed_boundary(const float (*vertices)[4], const uint32_t *indices,
+                                         const unsigned char *boundary, size_t patch_count,
+                                         const float eye[4], unsigned char *cls)
+{
+    float soa[16 * 4 * {{UPREFIX}}INDEXED_LANES];
+    size_t p, n, l;
+    for (p = 0; p < patch_count; p += n) {
+        n = patch_count - p < {{UPREFIX}}INDEXED_LANES ? patch_count - p : {{UPREFIX}}INDEXED_LANES;
+        {{PREFIX}}gather(soa, vertices, indices + p * 16, n);
+        for (l = 0; boundary && l < n; l++)
+            if (boundary[p + l] & 15u)
+                {{PREFIX}}extrapolate_strided(soa + l, 4 * n, n, boundary[p + l]);
+        {{PREFIX}}classify_soa(soa, n, n, eye, cls + p);
+    }
+}
+#endif
