@@ -8,7 +8,7 @@ glslangValidator:glslang-tools spirv-val:spirv-tools
 /usr/include/CL/cl.h:opencl-headers /usr/lib/x86_64-linux-gnu/libOpenCL.so:ocl-icd-opencl-dev
 /etc/OpenCL/vendors/pocl.icd:pocl-opencl-icd
 /usr/include/vulkan/vulkan.h:libvulkan-dev /usr/share/vulkan/icd.d/lvp_icd.x86_64.json:mesa-vulkan-drivers
-x86_64-w64-mingw32-g++-posix:g++-mingw-w64-x86-64-posix"
+x86_64-w64-mingw32-g++-posix:g++-mingw-w64-x86-64-posix /usr/include/opensubdiv/version.h:libosd-dev"
 
 # Prints each entry "what:package" of PTP_DEPS that is missing.
 ptp_missing_deps() {

@@ -69,6 +69,7 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/test_examples.sh env PTPGEN=build/gcc/ptpgen bash tests/test_examples.sh
     run tests/man_check.sh env PTPGEN=build/gcc/ptpgen bash tests/man_check.sh
     run tests/test_basis.sh env PTPGEN=build/gcc/ptpgen bash tests/test_basis.sh
+    run tests/test_osd.sh env PTPGEN=build/gcc/ptpgen bash tests/test_osd.sh
     run tests/test_cmake.sh bash tests/test_cmake.sh
     run tests/test_host_header.sh env PTPGEN=build/gcc/ptpgen bash tests/test_host_header.sh
 fi

@@ -1,0 +1,318 @@
+// osd_check.cpp: B-spline input against OpenSubdiv itself. Cages made here (closed: extraordinary
+// vertices of valence 3, 5 and 6; open: boundary edges and corners) are refined adaptively by Far
+// (ENDCAP_BSPLINE_BASIS) and their patches culled by tests/examples/osd_cull.cpp. Checked against
+// the surface Far::PatchTable::EvaluateBasis gives: the classes of the default Bezier header on
+// each patch's Bezier points fitted in double to that surface, and the sign of
+// (dB/ds x dB/dt) . (E - B) on a grid of every patch called back or front. Built with ptp_osd.h
+// (implementation) and bz.h, a default world-space header with prefix bz_: osd_check
+#include "ptp_osd.h"
+#include "bz.h"
+
+#include <opensubdiv/far/patchTableFactory.h>
+#include <opensubdiv/far/stencilTableFactory.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+using namespace OpenSubdiv;
+
+std::vector<unsigned char> osd_cull(const Far::PatchTable &table, const float (*vertices)[4], const float eye[4]);
+
+static int failed;
+
+static void report(bool good, const char *what, const char *why)
+{
+    std::printf("%s - %s%s%s\n", good ? "ok" : "not ok", what, good ? "" : ": ", good ? "" : why);
+    failed += !good;
+}
+
+// A deterministic 64-bit LCG's doubles in [0, 1).
+struct Lcg {
+    uint64_t s;
+    double next()
+    {
+        s = s * 6364136223846793005u + 1442695040888963407u;
+        return (double)(s >> 11) / 9007199254740992.0; // 2^53;
+    }
+};
+
+// A polygon cage: positions, and the faces' vertex counts and indices.
+struct Cage {
+    std::vector<float> pos;
+    std::vector<int> counts, indices;
+    int vertex(double x, double y, double z, Lcg &r)
+    {
+        const double j = 0.02; // a little noise: no symmetric ties
+        pos.push_back((float)(x + j * r.next()));
+        pos.push_back((float)(y + j * r.next()));
+        pos.push_back((float)(z + j * r.next()));
+        return (int)pos.size() / 3 - 1;
+    }
+    void face(std::initializer_list<int> v)
+    {
+        counts.push_back((int)v.size());
+        indices.insert(indices.end(), v);
+    }
+};
+
+// A prism of n sides around (cx, cy, cz), its caps (unless open) fans of n / 2 quads around a
+// center of valence n / 2 (fan) or one quad (n = 4); faces counterclockwise seen from outside.
+static void add_prism(Cage &c, int n, bool fan, bool open, const double at[3], Lcg &r)
+{
+    std::vector<int> bot(n), top(n);
+    for (int i = 0; i < n; i++) {
+        double a = 2 * M_PI * i / n;
+        bot[i] = c.vertex(at[0] + std::cos(a), at[1] + std::sin(a), at[2] - 0.8, r);
+        top[i] = c.vertex(at[0] + std::cos(a), at[1] + std::sin(a), at[2] + 0.8, r);
+    }
+    for (int i = 0; i < n; i++)
+        c.face({bot[i], bot[(i + 1) % n], top[(i + 1) % n], top[i]});
+    if (open)
+        return;
+    if (!fan) {
+        c.face({top[0], top[1], top[2], top[3]});
+        c.face({bot[3], bot[2], bot[1], bot[0]});
+        return;
+    }
+    int ct = c.vertex(at[0], at[1], at[2] + 1.1, r), cb = c.vertex(at[0], at[1], at[2] - 1.1, r);
+    for (int i = 0; i < n; i += 2) {
+        c.face({ct, top[i], top[(i + 1) % n], top[(i + 2) % n]});
+        c.face({cb, bot[(i + 2) % n], bot[(i + 1) % n], bot[i]});
+    }
+}
+
+// A bumpy n x n grid of quads around at (boundary edges, corners of valence 2).
+static void add_grid(Cage &c, int n, const double at[3], Lcg &r)
+{
+    std::vector<int> v((n + 1) * (n + 1));
+    for (int i = 0; i <= n; i++)
+        for (int j = 0; j <= n; j++)
+            v[i * (n + 1) + j] = c.vertex(at[0] + 0.5 * i, at[1] + 0.5 * j, at[2] + 0.4 * std::sin(1.3 * i + 0.7 * j), r);
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++)
+            c.face({v[i * (n + 1) + j], v[(i + 1) * (n + 1) + j], v[(i + 1) * (n + 1) + j + 1], v[i * (n + 1) + j + 1]});
+}
+
+// A bumpy disc of n quads around a center of valence n (open: its rim is a boundary).
+static void add_disc(Cage &c, int n, const double at[3], Lcg &r)
+{
+    std::vector<int> rim(2 * n);
+    int ct = c.vertex(at[0], at[1], at[2] + 0.3, r);
+    for (int i = 0; i < 2 * n; i++) {
+        double a = M_PI * i / n;
+        rim[i] = c.vertex(at[0] + std::cos(a), at[1] + std::sin(a), at[2] + 0.2 * (i % 2), r);
+    }
+    for (int i = 0; i < 2 * n; i += 2)
+        c.face({ct, rim[i], rim[i + 1], rim[(i + 2) % (2 * n)]});
+}
+
+// A vertex for Far's stencils.
+struct Point {
+    float p[3];
+    void Clear() { p[0] = p[1] = p[2] = 0; }
+    void AddWithWeight(const Point &s, float w)
+    {
+        for (int c = 0; c < 3; c++)
+            p[c] += w * s.p[c];
+    }
+};
+
+// The cage refined: its patch table and the vertices it indexes (w = 1).
+struct Refined {
+    Far::PatchTable *table;
+    std::vector<float> v; // float4 each
+};
+
+static Refined refine(const Cage &c, int level)
+{
+    Far::TopologyDescriptor d;
+    d.numVertices = (int)c.pos.size() / 3;
+    d.numFaces = (int)c.counts.size();
+    d.numVertsPerFace = c.counts.data();
+    d.vertIndicesPerFace = c.indices.data();
+    Sdc::Options so;
+    so.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+    typedef Far::TopologyRefinerFactory<Far::TopologyDescriptor> Factory;
+    Far::TopologyRefiner *r = Factory::Create(d, Factory::Options(Sdc::SCHEME_CATMARK, so));
+    r->RefineAdaptive(Far::TopologyRefiner::AdaptiveOptions(level));
+    Far::PatchTableFactory::Options po(level);
+    po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_BSPLINE_BASIS);
+    Far::PatchTable *table = Far::PatchTableFactory::Create(*r, po);
+    Far::StencilTableFactory::Options sto;
+    sto.generateOffsets = true;
+    sto.generateIntermediateLevels = true;
+    const Far::StencilTable *st = Far::StencilTableFactory::Create(*r, sto);
+    const Far::StencilTable *local = table->GetLocalPointStencilTable();
+    if (local && local->GetNumStencils() > 0) {
+        const Far::StencilTable *all = Far::StencilTableFactory::AppendLocalPointStencilTable(*r, st, local);
+        delete st;
+        st = all;
+    }
+    std::vector<Point> pts(d.numVertices + st->GetNumStencils());
+    std::memcpy(pts.data(), c.pos.data(), c.pos.size() * sizeof(float));
+    if (st->GetNumStencils() > 0) // none where every face is a regular patch
+        st->UpdateValues(pts.data(), pts.data() + d.numVertices);
+    Refined out{table, std::vector<float>(pts.size() * 4)};
+    for (size_t k = 0; k < pts.size(); k++) {
+        std::memcpy(&out.v[k * 4], pts[k].p, sizeof pts[k].p);
+        out.v[k * 4 + 3] = 1.0f;
+    }
+    delete st;
+    delete r;
+    return out;
+}
+
+// The surface of patch p at its own (s, t): position b, derivatives ds, dt (double).
+static void evaluate(const Refined &m, int a, int i, int p, double s, double t, double b[3], double ds[3], double dt[3])
+{
+    Far::PatchTable::PatchHandle h;
+    h.arrayIndex = a, h.patchIndex = p, h.vertIndex = p * 16;
+    double w[16], wu[16], wv[16];
+    m.table->GetPatchParam(a, i).Unnormalize(s, t);
+    m.table->EvaluateBasis(h, s, t, w, wu, wv);
+    const Far::ConstIndexArray cv = m.table->GetPatchVertices(h);
+    for (int c = 0; c < 3; c++) {
+        b[c] = ds[c] = dt[c] = 0;
+        for (int k = 0; k < 16; k++) {
+            double x = m.v[cv[k] * 4 + c];
+            b[c] += w[k] * x, ds[c] += wu[k] * x, dt[c] += wv[k] * x;
+        }
+    }
+}
+
+// Bezier points (u-major) of patch p fitted to its surface at s, t in {0, 1/3, 2/3, 1}: the
+// Bernstein matrix's inverse on both sides.
+static void fit_bezier(float bz[16][4], const Refined &m, int a, int i, int p)
+{
+    static const double inv[4][4] = {{1, 0, 0, 0}, {-5.0 / 6, 3, -1.5, 1.0 / 3}, {1.0 / 3, -1.5, 3, -5.0 / 6}, {0, 0, 0, 1}};
+    double g[4][4][3], h[4][4][3], ds[3], dt[3];
+    for (int k = 0; k < 4; k++)
+        for (int l = 0; l < 4; l++)
+            evaluate(m, a, i, p, k / 3.0, l / 3.0, g[k][l], ds, dt);
+    for (int k = 0; k < 4; k++) // along s
+        for (int l = 0; l < 4; l++)
+            for (int c = 0; c < 3; c++) {
+                h[k][l][c] = 0;
+                for (int q = 0; q < 4; q++)
+                    h[k][l][c] += inv[k][q] * g[q][l][c];
+            }
+    for (int k = 0; k < 4; k++) // along t
+        for (int l = 0; l < 4; l++) {
+            for (int c = 0; c < 3; c++) {
+                double x = 0;
+                for (int q = 0; q < 4; q++)
+                    x += inv[l][q] * h[k][q][c];
+                bz[k * 4 + l][c] = (float)x;
+            }
+            bz[k * 4 + l][3] = 1.0f;
+        }
+}
+
+// 1 when the surface of patch p contradicts class cls (back: a point of the 7 x 7 grid clearly
+// faces the eye; front: one clearly faces away).
+static bool contradicts(const Refined &m, int a, int i, int p, const double e[3], int cls)
+{
+    for (int k = 0; k <= 6; k++)
+        for (int l = 0; l <= 6; l++) {
+            double b[3], ds[3], dt[3], n[3], v[3], f;
+            evaluate(m, a, i, p, k / 6.0, l / 6.0, b, ds, dt);
+            n[0] = ds[1] * dt[2] - ds[2] * dt[1], n[1] = ds[2] * dt[0] - ds[0] * dt[2], n[2] = ds[0] * dt[1] - ds[1] * dt[0];
+            for (int c = 0; c < 3; c++)
+                v[c] = e[c] - b[c];
+            f = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+            double tol = 1e-6 * std::sqrt((n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+            if ((cls == BZ_BACK && f > tol) || (cls == BZ_FRONT && f < -tol))
+                return true;
+        }
+    return false;
+}
+
+// Runs the checks on cage c refined to level from neyes eyes around at.
+static void check(const char *name, const Cage &c, int level, const double at[3], int neyes, Lcg &r)
+{
+    Refined m = refine(c, level);
+    const Far::PatchParamTable &params = m.table->GetPatchParamTable();
+    const size_t n = params.size(), nv = m.v.size() / 4;
+    std::vector<float> bz(n * 64);
+    std::vector<int> array(n), inner(n);
+    size_t boundary = 0, bad_index = 0, views = 0, culled = 0, differ = 0, flips = 0, wrong = 0, unmasked = 0;
+    char what[160], why[200];
+    for (int a = 0, p = 0; a < m.table->GetNumPatchArrays(); a++)
+        for (int i = 0; i < m.table->GetNumPatches(a); i++, p++) {
+            array[p] = a, inner[p] = i;
+            fit_bezier((float(*)[4]) & bz[p * 64], m, a, i, p);
+            boundary += params[p].GetBoundary() != 0;
+        }
+    for (int x : m.table->GetPatchControlVerticesTable())
+        bad_index += x < 0 || (size_t)x >= nv;
+    std::snprintf(what, sizeof what, "%s, level %d: %zu patches (%zu on a boundary), every index a vertex", name, level, n, boundary);
+    std::snprintf(why, sizeof why, "%zu indices out of range", bad_index);
+    report(bad_index == 0 && n > 0, what, why);
+    if (bad_index)
+        return;
+    std::vector<unsigned char> ref(n), none(n);
+    for (int k = 0; k < neyes; k++) {
+        double z = 2 * r.next() - 1, phi = 2 * M_PI * r.next(), rad = 2.5 + 3 * r.next(), e[3];
+        e[0] = at[0] + rad * std::sqrt(1 - z * z) * std::cos(phi), e[1] = at[1] + rad * std::sqrt(1 - z * z) * std::sin(phi);
+        e[2] = at[2] + rad * z;
+        const float eye[4] = {(float)e[0], (float)e[1], (float)e[2], 1.0f};
+        std::vector<unsigned char> cls = osd_cull(*m.table, (const float(*)[4])m.v.data(), eye);
+        if (cls.size() != n) {
+            report(false, name, "osd_cull refused the patch table");
+            return;
+        }
+        bz_classify_batch((const float(*)[4])bz.data(), n, eye, ref.data());
+        ptp_osd_classify_indexed((const float(*)[4])m.v.data(), (const uint32_t *)m.table->GetPatchControlVerticesTable().data(), n, eye, none.data());
+        for (size_t p = 0; p < n; p++) {
+            views++;
+            culled += cls[p] == BZ_BACK;
+            differ += cls[p] != ref[p];
+            flips += cls[p] + ref[p] == BZ_BACK && cls[p] != ref[p]; // back against front
+            unmasked += none[p] != ref[p];
+            if (cls[p] != BZ_SILHOUETTE)
+                wrong += contradicts(m, array[p], inner[p], (int)p, e, cls[p]);
+        }
+    }
+    std::snprintf(what, sizeof what, "%s, level %d, %d eyes: classes = the Bezier header's on points fitted to "
+                  "EvaluateBasis (%zu of %zu patch-views differ, culls %.2f%%)", name, level, neyes, differ, views,
+                  100.0 * culled / views);
+    std::snprintf(why, sizeof why, "%zu differ (at most 0.1%%), %zu back against front", differ, flips);
+    report(flips == 0 && differ * 1000 <= views && culled > 0, what, why);
+    std::snprintf(what, sizeof what, "%s, level %d: no patch called back or front against EvaluateBasis's "
+                  "dB/ds x dB/dt on a 7 x 7 grid", name, level);
+    std::snprintf(why, sizeof why, "%zu patch-views contradict it", wrong);
+    report(wrong == 0, what, why);
+    if (boundary) {
+        std::snprintf(what, sizeof what, "%s, level %d: without the boundary masks %zu patch-views differ", name, level, unmasked);
+        report(unmasked > differ, what, "the masks change nothing");
+    }
+    delete m.table;
+}
+
+int main()
+{
+    Lcg r{7};
+    const double far_away[3] = {300.0, -200.0, 150.0}; // patches small against their coordinates
+    double at[3];
+    Cage closed, open;
+    for (int k = 0; k < 3; k++) { // a cube (valence 3), fans of valence 5 and 6
+        at[0] = far_away[0] + 3 * k, at[1] = far_away[1], at[2] = far_away[2];
+        add_prism(closed, k == 0 ? 4 : k == 1 ? 10 : 12, k > 0, false, at, r);
+    }
+    add_grid(open, 6, far_away, r);
+    at[0] = far_away[0] + 5, at[1] = far_away[1] + 1, at[2] = far_away[2];
+    add_prism(open, 8, false, true, at, r); // an open tube: boundary loops
+    at[0] = far_away[0] - 2.5;
+    add_disc(open, 5, at, r);                 // valence 5 inside, a boundary around
+    for (int level = 2; level <= 3; level++) {
+        at[0] = far_away[0] + 3, at[1] = far_away[1], at[2] = far_away[2];
+        check("closed cage", closed, level, at, 40, r);
+        at[0] = far_away[0] + 2.5, at[1] = far_away[1] + 1.5;
+        check("open cage", open, level, at, 40, r);
+    }
+    return failed != 0;
+}
