@@ -127,7 +127,7 @@ struct Refined {
     std::vector<float> v; // float4 each
 };
 
-static Refined refine(const Cage &c, int level)
+static Refined refine(const Cage &c, int level, Far::PatchTableFactory::Options::EndCapType caps)
 {
     Far::TopologyDescriptor d;
     d.numVertices = (int)c.pos.size() / 3;
@@ -140,7 +140,7 @@ static Refined refine(const Cage &c, int level)
     Far::TopologyRefiner *r = Factory::Create(d, Factory::Options(Sdc::SCHEME_CATMARK, so));
     r->RefineAdaptive(Far::TopologyRefiner::AdaptiveOptions(level));
     Far::PatchTableFactory::Options po(level);
-    po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_BSPLINE_BASIS);
+    po.SetEndCapType(caps);
     Far::PatchTable *table = Far::PatchTableFactory::Create(*r, po);
     Far::StencilTableFactory::Options sto;
     sto.generateOffsets = true;
@@ -231,10 +231,35 @@ static bool contradicts(const Refined &m, int a, int i, int p, const double e[3]
     return false;
 }
 
+// OpenSubdiv's default end caps, Gregory patches, left unculled: the patches culled from eye, of
+// the table's regular arrays (B-spline patches); the table's patches and end caps to np, ncaps.
+static size_t gregory_culls(const Refined &g, const float eye[4], size_t *np, size_t *ncaps)
+{
+    size_t culled = 0;
+    *np = *ncaps = 0;
+    for (int a = 0; a < g.table->GetNumPatchArrays(); a++) {
+        const size_t n = (size_t)g.table->GetNumPatches(a);
+        *np += n;
+        if (g.table->GetPatchArrayDescriptor(a).GetType() != Far::PatchDescriptor::REGULAR) {
+            *ncaps += n;
+            continue;
+        }
+        const Far::ConstIndexArray cv = g.table->GetPatchArrayVertices(a);
+        const Far::ConstPatchParamArray pp = g.table->GetPatchParams(a);
+        std::vector<unsigned char> boundary(n), cls(n);
+        for (size_t p = 0; p < n; p++)
+            boundary[p] = (unsigned char)pp[(int)p].GetBoundary();
+        ptp_osd_classify_indexed_boundary((const float(*)[4])g.v.data(), (const uint32_t *)&cv[0], boundary.data(), n, eye, cls.data());
+        for (size_t p = 0; p < n; p++)
+            culled += cls[p] == BZ_BACK;
+    }
+    return culled;
+}
+
 // Runs the checks on cage c refined to level from neyes eyes around at.
 static void check(const char *name, const Cage &c, int level, const double at[3], int neyes, Lcg &r)
 {
-    Refined m = refine(c, level);
+    Refined m = refine(c, level, Far::PatchTableFactory::Options::ENDCAP_BSPLINE_BASIS);
     const Far::PatchParamTable &params = m.table->GetPatchParamTable();
     const size_t n = params.size(), nv = m.v.size() / 4;
     std::vector<float> bz(n * 64);
@@ -255,6 +280,8 @@ static void check(const char *name, const Cage &c, int level, const double at[3]
     if (bad_index)
         return;
     std::vector<unsigned char> ref(n), none(n);
+    Refined g = refine(c, level, Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+    size_t gculled = 0, gviews = 0, gpatches = 0, gcaps = 0;
     for (int k = 0; k < neyes; k++) {
         double z = 2 * r.next() - 1, phi = 2 * M_PI * r.next(), rad = 2.5 + 3 * r.next(), e[3];
         e[0] = at[0] + rad * std::sqrt(1 - z * z) * std::cos(phi), e[1] = at[1] + rad * std::sqrt(1 - z * z) * std::sin(phi);
@@ -266,6 +293,8 @@ static void check(const char *name, const Cage &c, int level, const double at[3]
             return;
         }
         bz_classify_batch((const float(*)[4])bz.data(), n, eye, ref.data());
+        gculled += gregory_culls(g, eye, &gpatches, &gcaps);
+        gviews += gpatches;
         ptp_osd_classify_indexed((const float(*)[4])m.v.data(), (const uint32_t *)m.table->GetPatchControlVerticesTable().data(), n, eye, none.data());
         for (size_t p = 0; p < n; p++) {
             views++;
@@ -290,7 +319,10 @@ static void check(const char *name, const Cage &c, int level, const double at[3]
         std::snprintf(what, sizeof what, "%s, level %d: without the boundary masks %zu patch-views differ", name, level, unmasked);
         report(unmasked > differ, what, "the masks change nothing");
     }
+    std::printf("# %s, level %d: culled %.2f%% with B-spline end caps, %.2f%% with Gregory end caps (%zu of %zu "
+                "patches) left unculled\n", name, level, 100.0 * culled / views, 100.0 * gculled / gviews, gcaps, gpatches);
     delete m.table;
+    delete g.table;
 }
 
 int main()
