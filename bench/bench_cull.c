@@ -156,6 +156,7 @@ typedef struct {
     size_t count;
     const float (*cp)[4]; /* count * NPOINTS points */
     const float *soa;     /* coordinate c of point k of patch p at soa[(k*4 + c) * count + p] */
+    const uint32_t *idx;  /* cp's points as classify_indexed's vertices: p * NPOINTS + k, in order */
 } data;
 
 /* A path classifies patches [first, first + count) of d into cls + first. */
@@ -183,6 +184,11 @@ static void run_batch(const data *d, size_t first, size_t count, unsigned char *
 static void run_soa(const data *d, size_t first, size_t count, unsigned char *cls)
 {
     FN(classify_soa)(d->soa + first, d->count, count, eye, cls + first);
+}
+
+static void run_indexed(const data *d, size_t first, size_t count, unsigned char *cls)
+{
+    FN(classify_indexed)(d->cp, d->idx + first * NPOINTS, count, eye, cls + first);
 }
 
 /* Patches per second of fn on this thread: the best of at least 5 calls on the first n patches
@@ -407,6 +413,8 @@ static void plain_rows(const data *d, unsigned char *cls, const unsigned char *r
     row("classify_batch", rate, MACRO(FLOPS), peak[0], paper, count_differ(cls, ref, used), used);
     rate = measure(run_soa, d, cls, 1, &used);
     row("classify_soa", rate, MACRO(FLOPS), peak[0], paper, count_differ(cls, ref, used), used);
+    rate = measure(run_indexed, d, cls, 1, &used);
+    row("classify_indexed", rate, MACRO(FLOPS), peak[0], paper, count_differ(cls, ref, used), used);
     memset(cls, 0xFF, d->count);
     rate = measure_threads(d, cls, (int)ncpu, cpus);
     snprintf(label, sizeof label, "classify_batch, %ld thread%s", ncpu, ncpu > 1 ? "s" : "");
@@ -436,6 +444,7 @@ int main(int argc, char **argv)
     size_t count = 262144, used, p, counts[3] = {0, 0, 0};
     int n = 0, m = 0, i, *cpus;
     float(*cp)[4], *soa;
+    uint32_t *idx;
     unsigned char *ref, *cls;
     data d;
 
@@ -448,10 +457,11 @@ int main(int argc, char **argv)
 
     cp = alloc64(count * NPOINTS * sizeof *cp);
     soa = alloc64(count * NPOINTS * 4 * sizeof *soa);
+    idx = malloc(count * NPOINTS * sizeof *idx);
     ref = malloc(count);
     cls = malloc(count);
     cpus = malloc((size_t)ncpu * sizeof *cpus);
-    if (!cp || !soa || !ref || !cls || !cpus) {
+    if (!cp || !soa || !idx || !ref || !cls || !cpus) {
         fprintf(stderr, "bench_cull: out of memory for %zu patches\n", count);
         return 1;
     }
@@ -459,9 +469,12 @@ int main(int argc, char **argv)
     for (p = 0; p < count; p++)
         for (i = 0; i < NPOINTS * 4; i++)
             soa[(size_t)i * count + p] = cp[p * NPOINTS + (size_t)(i / 4)][i % 4];
+    for (p = 0; p < count * NPOINTS; p++)
+        idx[p] = (uint32_t)p;
     d.count = count;
     d.cp = (const float(*)[4])cp;
     d.soa = soa;
+    d.idx = idx;
     if ((ncpus = usable_cpus(cpus, ncpu)))
         ncpu = ncpus;
 
@@ -475,6 +488,7 @@ int main(int argc, char **argv)
         plain_rows(&d, cls, ref, counts, peak, paper, used, ncpu, ncpus ? cpus : NULL);
     free(cp);
     free(soa);
+    free(idx);
     free(ref);
     free(cls);
     free(cpus);
