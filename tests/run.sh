@@ -62,6 +62,32 @@ for cc in $compilers; do
     fi
 done
 
+# The hosts that execute emitted kernels (they need the OpenCL and Vulkan development files, and
+# wgpu-native for the WGSL host).
+hosts="libptptest.a host_opencl host_vulkan"
+[ -n "${WGPU_DIR:-}" ] && hosts="$hosts host_wgpu"
+for cc in $compilers; do
+    for h in $hosts; do
+        if make -s -j"$jobs" CC=$cc build/$cc/$h >build/make-$cc-$h.log 2>&1; then
+            echo "ok - builds build/$cc/$h" | tee -a "$log"
+        else
+            echo "not ok - build of build/$cc/$h failed: $(grep -m1 -i error build/make-$cc-$h.log)" | tee -a "$log"
+        fi
+    done
+done
+# The kernels' tests take most of the time, mostly on one core each: the certified kernels run
+# in a second lane beside all the others (about as long together). Its lines join the log and
+# the terminal when both lanes are done.
+lane=build/test-lane.log
+(
+    log=$lane
+    : >"$log"
+    if [ -x build/gcc/ptpgen ]; then
+        run tests/test_certified.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_certified.sh
+    fi
+) >/dev/null &
+lane_pid=$!
+
 run tests/test_layers.sh bash tests/test_layers.sh
 
 if [ -x build/gcc/ptpgen ]; then
@@ -82,40 +108,15 @@ else
     echo "not ok - build of build/gcc/cullrate/cullrate failed: see build/make-cullrate.log" | tee -a "$log"
 fi
 
-# The hosts that execute emitted kernels (they need the OpenCL and Vulkan development files, and
-# wgpu-native for the WGSL host).
-hosts="libptptest.a host_opencl host_vulkan"
-[ -n "${WGPU_DIR:-}" ] && hosts="$hosts host_wgpu"
-for cc in $compilers; do
-    for h in $hosts; do
-        if make -s -j"$jobs" CC=$cc build/$cc/$h >build/make-$cc-$h.log 2>&1; then
-            echo "ok - builds build/$cc/$h" | tee -a "$log"
-        else
-            echo "not ok - build of build/$cc/$h failed: $(grep -m1 -i error build/make-$cc-$h.log)" | tee -a "$log"
-        fi
-    done
-done
-# The kernels' tests take most of the time, mostly on one core each: the certified kernels, the
-# second look, WGSL and the renderer run in a second lane beside the others. Its lines join the
-# log and the terminal when both lanes are done.
-lane=build/test-lane.log
-(
-    log=$lane
-    : >"$log"
-    if [ -x build/gcc/ptpgen ]; then
-        run tests/test_certified.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_certified.sh
-        run tests/test_second_look.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_second_look.sh
-    fi
-    run tests/test_wgpu.sh env BUILD=build/gcc bash tests/test_wgpu.sh
-    # build/render: the GLSL kernels culling patches before a tessellation pipeline on lavapipe.
-    run tests/test_render.sh env CC=gcc bash tests/test_render.sh
-) >/dev/null &
-lane_pid=$!
 if [ -x build/gcc/ptpgen ]; then
     run tests/test_refine.sh env PTPGEN=build/gcc/ptpgen bash tests/test_refine.sh
     run tests/test_mesh.sh env PTPGEN=build/gcc/ptpgen bash tests/test_mesh.sh
     run tests/test_kernels.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_kernels.sh
+    run tests/test_second_look.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_second_look.sh
 fi
+run tests/test_wgpu.sh env BUILD=build/gcc bash tests/test_wgpu.sh
+# build/render: the GLSL kernels culling patches before a tessellation pipeline on lavapipe.
+run tests/test_render.sh env CC=gcc bash tests/test_render.sh
 wait $lane_pid || echo "not ok - the second lane of tests exited with status $?" | tee -a "$log"
 tee -a "$log" <"$lane"
 
