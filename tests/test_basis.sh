@@ -49,7 +49,7 @@ else
 fi
 
 # Phantoms extrapolated from the wrong vertex (2 p2 - p2) must fail.
-if build gcc "" clip strict 's/2.0f \* x\[q\[1\]/2.0f * x[q[2]/' && ! "$tmp/bc" 500 3 mutant >"$tmp/out" &&
+if build gcc "" clip strict 's/2.0f \* cp\[q\[1\]\]/2.0f * cp[q[2]]/' && ! "$tmp/bc" 500 3 mutant >"$tmp/out" &&
     grep -q '^not ok - mutant: classify_indexed_boundary' "$tmp/out"; then
     ok "a header that extrapolates the phantoms from the wrong vertex fails"
 else

@@ -69,7 +69,7 @@ void ptp_3x1_classify_soa(const float *soa, size_t stride, size_t patch_count, c
                             unsigned char *cls);
 /* The same from one vertex array and 8 indices a patch: point k of patch p is
  * vertices[indices[p * 8 + k]] (a BEZ file's or OpenSubdiv's patch table); gathered
- * INDEXED_LANES patches at a time into classify_soa. */
+ * INDEXED_LANES patches at a time into classify_batch. */
 void ptp_3x1_classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
                                 const float eye[4], unsigned char *cls);
 
@@ -972,28 +972,23 @@ void ptp_3x1_classify_batch(const float (*cp)[4], size_t patch_count, const floa
 /* Patches classify_indexed gathers at a time: at most 32 KB of points on the stack. */
 #define PTP_3X1_INDEXED_LANES (PTP_3X1_POINTS <= 32 ? 64 : 8)
 
-/* soa (stride n) = the points of n patches, point k of patch l at vertices[indices[l * POINTS + k]]. */
-static void ptp_3x1_gather(float *soa, const float (*vertices)[4], const uint32_t *indices, size_t n)
+/* cp = the points of n patches, patch-major, point k of patch l from vertices[indices[l * POINTS + k]]. */
+static void ptp_3x1_gather(float (*cp)[4], const float (*vertices)[4], const uint32_t *indices, size_t n)
 {
-    size_t l;
-    unsigned k, c;
-    for (l = 0; l < n; l++)
-        for (k = 0; k < PTP_3X1_POINTS; k++) {
-            const float *v = vertices[indices[l * PTP_3X1_POINTS + k]];
-            for (c = 0; c < 4; c++)
-                soa[(k * 4 + c) * n + l] = v[c];
-        }
+    size_t k;
+    for (k = 0; k < n * PTP_3X1_POINTS; k++)
+        memcpy(cp[k], vertices[indices[k]], sizeof cp[k]);
 }
 
 void ptp_3x1_classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
                                 const float eye[4], unsigned char *cls)
 {
-    float soa[PTP_3X1_POINTS * 4 * PTP_3X1_INDEXED_LANES];
+    float cp[PTP_3X1_POINTS * PTP_3X1_INDEXED_LANES][4];
     size_t p, n;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < PTP_3X1_INDEXED_LANES ? patch_count - p : PTP_3X1_INDEXED_LANES;
-        ptp_3x1_gather(soa, vertices, indices + p * PTP_3X1_POINTS, n);
-        ptp_3x1_classify_soa(soa, n, n, eye, cls + p);
+        ptp_3x1_gather(cp, vertices, indices + p * PTP_3X1_POINTS, n);
+        ptp_3x1_classify_batch((const float(*)[4])cp, n, eye, cls + p);
     }
 }
 #endif

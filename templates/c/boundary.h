@@ -32,38 +32,30 @@ void {{PREFIX}}classify_indexed_boundary(const float (*vertices)[4], const uint3
 /* For bit b of a boundary mask, its four phantoms as input indices {p0, p1, p2}. */
 static const unsigned char {{PREFIX}}phantoms[4][4][3] = {{PHANTOMS}};
 
-/* extrapolate on point k's coordinate c at x[k * kstride + c * cstride]: one patch (4, 1) or a
- * lane of classify_soa's layout (4 n, n). */
-static void {{PREFIX}}extrapolate_strided(float *x, size_t kstride, size_t cstride, unsigned boundary)
+void {{PREFIX}}extrapolate(float cp[][4], unsigned boundary)
 {
     unsigned b, i, c;
     for (b = 0; b < 4; b++)
         for (i = 0; boundary >> b & 1u && i < 4; i++) {
             const unsigned char *q = {{PREFIX}}phantoms[b][i];
             for (c = 0; c < 4; c++)
-                x[q[0] * kstride + c * cstride] = 2.0f * x[q[1] * kstride + c * cstride] -
-                                                  x[q[2] * kstride + c * cstride];
+                cp[q[0]][c] = 2.0f * cp[q[1]][c] - cp[q[2]][c];
         }
-}
-
-void {{PREFIX}}extrapolate(float cp[][4], unsigned boundary)
-{
-    {{PREFIX}}extrapolate_strided(cp[0], 4, 1, boundary);
 }
 
 void {{PREFIX}}classify_indexed_boundary(const float (*vertices)[4], const uint32_t *indices,
                                          const unsigned char *boundary, size_t patch_count,
                                          const float eye[4], unsigned char *cls)
 {
-    float soa[16 * 4 * {{UPREFIX}}INDEXED_LANES];
+    float cp[16 * {{UPREFIX}}INDEXED_LANES][4];
     size_t p, n, l;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < {{UPREFIX}}INDEXED_LANES ? patch_count - p : {{UPREFIX}}INDEXED_LANES;
-        {{PREFIX}}gather(soa, vertices, indices + p * 16, n);
+        {{PREFIX}}gather(cp, vertices, indices + p * 16, n);
         for (l = 0; boundary && l < n; l++)
             if (boundary[p + l] & 15u)
-                {{PREFIX}}extrapolate_strided(soa + l, 4 * n, n, boundary[p + l]);
-        {{PREFIX}}classify_soa(soa, n, n, eye, cls + p);
+                {{PREFIX}}extrapolate(cp + 16 * l, boundary[p + l]);
+        {{PREFIX}}classify_batch((const float(*)[4])cp, n, eye, cls + p);
     }
 }
 #endif

@@ -42,7 +42,7 @@ void {{PREFIX}}classify_soa(const float *soa, size_t stride, size_t patch_count,
                             unsigned char *cls);
 /* The same from one vertex array and {{POINTS}} indices a patch: point k of patch p is
  * vertices[indices[p * {{POINTS}} + k]] (a BEZ file's or OpenSubdiv's patch table); gathered
- * INDEXED_LANES patches at a time into classify_soa. */
+ * INDEXED_LANES patches at a time into classify_batch. */
 void {{PREFIX}}classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
                                 const float eye[4], unsigned char *cls);
 
@@ -259,28 +259,23 @@ float {{PREFIX}}alpha(const float proj[16], int layout)
 /* Patches classify_indexed gathers at a time: at most 32 KB of points on the stack. */
 #define {{UPREFIX}}INDEXED_LANES ({{UPREFIX}}POINTS <= 32 ? 64 : 8)
 
-/* soa (stride n) = the points of n patches, point k of patch l at vertices[indices[l * POINTS + k]]. */
-static void {{PREFIX}}gather(float *soa, const float (*vertices)[4], const uint32_t *indices, size_t n)
+/* cp = the points of n patches, patch-major, point k of patch l from vertices[indices[l * POINTS + k]]. */
+static void {{PREFIX}}gather(float (*cp)[4], const float (*vertices)[4], const uint32_t *indices, size_t n)
 {
-    size_t l;
-    unsigned k, c;
-    for (l = 0; l < n; l++)
-        for (k = 0; k < {{UPREFIX}}POINTS; k++) {
-            const float *v = vertices[indices[l * {{UPREFIX}}POINTS + k]];
-            for (c = 0; c < 4; c++)
-                soa[(k * 4 + c) * n + l] = v[c];
-        }
+    size_t k;
+    for (k = 0; k < n * {{UPREFIX}}POINTS; k++)
+        memcpy(cp[k], vertices[indices[k]], sizeof cp[k]);
 }
 
 void {{PREFIX}}classify_indexed(const float (*vertices)[4], const uint32_t *indices, size_t patch_count,
                                 const float eye[4], unsigned char *cls)
 {
-    float soa[{{UPREFIX}}POINTS * 4 * {{UPREFIX}}INDEXED_LANES];
+    float cp[{{UPREFIX}}POINTS * {{UPREFIX}}INDEXED_LANES][4];
     size_t p, n;
     for (p = 0; p < patch_count; p += n) {
         n = patch_count - p < {{UPREFIX}}INDEXED_LANES ? patch_count - p : {{UPREFIX}}INDEXED_LANES;
-        {{PREFIX}}gather(soa, vertices, indices + p * {{UPREFIX}}POINTS, n);
-        {{PREFIX}}classify_soa(soa, n, n, eye, cls + p);
+        {{PREFIX}}gather(cp, vertices, indices + p * {{UPREFIX}}POINTS, n);
+        {{PREFIX}}classify_batch((const float(*)[4])cp, n, eye, cls + p);
     }
 }
 #endif
