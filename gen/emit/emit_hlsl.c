@@ -31,7 +31,7 @@ const kern_target kern_hlsl = {
     .mul = "%s * %s",
     .local_id = "lid3.x",
     .group_x = "gid.x", .group_y = "gid.y", .groups_x = "groups_x",
-    .planes_buffer = "[[vk::binding(2, 0)]] RWStructuredBuffer<float> planes : register(u2);\n",
+    .planes_buffer = "PTP_VK_BINDING(2) RWStructuredBuffer<float> planes : register(u2);\n",
     .interface =
         " * Entry point main. Resources: t0 / Vulkan binding 0 the control points (StructuredBuffer<float4>),\n"
         " * u1 / binding 1 the classes (RWStructuredBuffer<uint>), u2 / binding 2 the values d[p*L + P]\n"

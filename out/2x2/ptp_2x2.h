@@ -94,6 +94,7 @@ float ptp_2x2_alpha(const float proj[16], int layout);
 
 #if defined(PTP_2X2_IMPLEMENTATION) && !defined(PTP_2X2_IMPLEMENTED)
 #define PTP_2X2_IMPLEMENTED
+#include <string.h>
 /* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
  * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
 #if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
@@ -128,7 +129,6 @@ float ptp_2x2_alpha(const float proj[16], int layout);
  * result: 1 or -1 where true), PTP_2X2_VW patches wide. gcc gets GNU C vectors: it does not
  * vectorize the loop below -O3, and slowly at -O3. Elsewhere one patch: clang vectorizes the loop. */
 #if defined(__GNUC__) && !defined(__clang__) && !defined(PTP_2X2_NO_VECTOR)
-#include <string.h>
 #if defined(__AVX512F__)
 #define PTP_2X2_VW 16
 #elif defined(__AVX__)

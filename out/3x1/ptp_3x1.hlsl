@@ -23,10 +23,19 @@
  * Schedule: 1 thread per patch, 64 patches per workgroup (64 threads), straight-line code.
  */
 
-[[vk::binding(0, 0)]] StructuredBuffer<float4> cp : register(t0);
-[[vk::binding(1, 0)]] RWStructuredBuffer<uint> cls : register(u1);
+/* Vulkan's bindings where the compiler targets SPIR-V (DXC -spirv: __spirv__, glslang: VULKAN);
+ * FXC and DXC's DXIL read the registers. */
+#if defined(__spirv__) || defined(VULKAN)
+#define PTP_VK_BINDING(b) [[vk::binding(b, 0)]]
+#define PTP_VK_PUSH_CONSTANT [[vk::push_constant]]
+#else
+#define PTP_VK_BINDING(b)
+#define PTP_VK_PUSH_CONSTANT
+#endif
+PTP_VK_BINDING(0) StructuredBuffer<float4> cp : register(t0);
+PTP_VK_BINDING(1) RWStructuredBuffer<uint> cls : register(u1);
 
-[[vk::push_constant]] cbuffer Params : register(b0)
+PTP_VK_PUSH_CONSTANT cbuffer Params : register(b0)
 {
     float4 eye;
     uint patch_count;

@@ -67,6 +67,7 @@ float {{PREFIX}}alpha(const float proj[16], int layout);
 
 #if defined({{UPREFIX}}IMPLEMENTATION) && !defined({{UPREFIX}}IMPLEMENTED)
 #define {{UPREFIX}}IMPLEMENTED
+#include <string.h>
 /* -ffast-math (and its parts -ffinite-math-only, -fassociative-math) breaks this code: it drops
  * the NaN checks and regroups the sums whose exact zeros and signs the classes are. */
 #if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || \
@@ -101,7 +102,6 @@ float {{PREFIX}}alpha(const float proj[16], int layout);
  * result: 1 or -1 where true), {{UPREFIX}}VW patches wide. gcc gets GNU C vectors: it does not
  * vectorize the loop below -O3, and slowly at -O3. Elsewhere one patch: clang vectorizes the loop. */
 #if defined(__GNUC__) && !defined(__clang__) && !defined({{UPREFIX}}NO_VECTOR)
-#include <string.h>
 #if defined(__AVX512F__)
 #define {{UPREFIX}}VW 16
 #elif defined(__AVX__)
