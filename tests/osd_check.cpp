@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 using namespace OpenSubdiv;
@@ -123,7 +124,7 @@ struct Point {
 
 // The cage refined: its patch table and the vertices it indexes (w = 1).
 struct Refined {
-    Far::PatchTable *table;
+    std::unique_ptr<Far::PatchTable> table;
     std::vector<float> v; // float4 each
 };
 
@@ -156,7 +157,7 @@ static Refined refine(const Cage &c, int level, Far::PatchTableFactory::Options:
     std::memcpy(pts.data(), c.pos.data(), c.pos.size() * sizeof(float));
     if (st->GetNumStencils() > 0) // none where every face is a regular patch
         st->UpdateValues(pts.data(), pts.data() + d.numVertices);
-    Refined out{table, std::vector<float>(pts.size() * 4)};
+    Refined out{std::unique_ptr<Far::PatchTable>(table), std::vector<float>(pts.size() * 4)};
     for (size_t k = 0; k < pts.size(); k++) {
         std::memcpy(&out.v[k * 4], pts[k].p, sizeof pts[k].p);
         out.v[k * 4 + 3] = 1.0f;
@@ -321,8 +322,6 @@ static void check(const char *name, const Cage &c, int level, const double at[3]
     }
     std::printf("# %s, level %d: culled %.2f%% with B-spline end caps, %.2f%% with Gregory end caps (%zu of %zu "
                 "patches) left unculled\n", name, level, 100.0 * culled / views, 100.0 * gculled / gviews, gcaps, gpatches);
-    delete m.table;
-    delete g.table;
 }
 
 int main()
