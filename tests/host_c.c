@@ -2,7 +2,12 @@
  * (tests/test_kernels.sh).
  *
  * Built per header: cc -include HEADER -D<PREFIX>IMPLEMENTATION -DPFX=<prefix> -DUPFX=<PREFIX> ...
- * C and C++ alike (c++ -x c++ host_c.c -x none libptptest.a): the header is used from both. */
+ * C and C++ alike (c++ -x c++ host_c.c -x none libptptest.a): the header is used from both.
+ * -DHOST_BSPLINE (a bicubic --basis bspline header) and -DHOST_VMAJOR (--order v-major): the
+ * header reads each set's patches as the B-spline vertices whose Bezier points they are (the
+ * inverse map is integral: exact for integer points) or transposed, and only its classes are
+ * checked (its values are 36^3 times the Bezier points'). Patches whose vertices are not floats
+ * are given silhouette (tests/test_basis.sh). */
 #include "host_c.h"
 
 #include <stdint.h>
@@ -26,13 +31,62 @@ static int class_not_of_values(double *v, unsigned c, const float *d, int L, con
     return (int)c != kref_classify(v, L, ref->rule);
 }
 
+#if defined(HOST_BSPLINE) || defined(HOST_VMAJOR)
+#define HOST_INPUT 1
+#ifdef HOST_VMAJOR
+#define HOST_AT(i, j) ((j) * 4 + (i))
+#else
+#define HOST_AT(i, j) ((i) * 4 + (j))
+#endif
+/* Coordinate c of vertex (a, b) as the header reads it of Bezier points cp (exact in double). */
+static double input_coordinate(const float (*cp)[4], int a, int b, int c)
+{
+#ifdef HOST_BSPLINE
+    /* 6 times the inverse of the uniform cubic B-spline-to-Bezier map (rows (1 4 1 0) / 6 ...) */
+    static const int inverse_map[4][4] = {{6, -7, 2, 0}, {0, 2, -1, 0}, {0, -1, 2, 0}, {0, 2, -7, 6}};
+    double v = 0;
+    int i, j;
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            v += inverse_map[a][i] * inverse_map[b][j] * (double)cp[i * 4 + j][c];
+    return v;
+#else
+    return cp[a * 4 + b][c];
+#endif
+}
+
+/* in = the 16 points of each patch of s as the header reads them: with HOST_BSPLINE the
+ * B-spline vertices (times 36) of the Bezier points, with HOST_VMAJOR point (i, j) at j * 4 + i;
+ * lost[p] = 1 where a vertex is not a float. Returns how many patches lost. */
+static size_t input_form(float (*in)[4], unsigned char *lost, const kref_set *s)
+{
+    size_t p, n = 0;
+    int a, b, c;
+    for (p = 0; p < s->count; p++) {
+        const float(*cp)[4] = (const float(*)[4])s->cp + p * 16;
+        lost[p] = 0;
+        for (a = 0; a < 4; a++)
+            for (b = 0; b < 4; b++)
+                for (c = 0; c < 4; c++) {
+                    double v = input_coordinate(cp, a, b, c);
+                    in[p * 16 + HOST_AT(a, b)][c] = (float)v;
+                    lost[p] |= (double)(float)v != v;
+                }
+        n += lost[p];
+    }
+    return n;
+}
+#else
+#define HOST_INPUT 0
+#endif
+
 /* The comparisons over all sets, how often classify_batch or classify_soa differs from
  * classify, and how often classify is not the class of values() under the rule. */
 typedef struct {
     const kref_args *o;
     kref_result classify, batch, planes;
     int paths_differ;
-    size_t values_differ, patches;
+    size_t values_differ, patches, lost; /* lost: patches whose input form is not floats */
 } results;
 
 /* Runs the header's functions over one set and accumulates into ctx (results); returns 0, or
@@ -56,15 +110,22 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
     float *dp = (float *)malloc(s->count * L * sizeof *dp);
     float(*t)[4] = (float(*)[4])malloc(L * sizeof *t);
     double *v = (double *)malloc(L * sizeof *v);
+    float(*in)[4] = (float(*)[4])s->cp; /* the points as the header reads them */
+    unsigned char *lost = NULL;
+#if HOST_INPUT
+    in = (float(*)[4])malloc(s->count * 16 * sizeof *in);
+    lost = (unsigned char *)malloc(s->count);
+    r->lost += input_form(in, lost, s);
+#endif
     for (p = 0; p < s->count; p++) {
-        const float(*cp)[4] = (const float(*)[4])s->cp + p * (size_t)ref->K;
+        const float(*cp)[4] = (const float(*)[4])in + p * (size_t)ref->K;
         size_t x;
         int exact;
         cls[p] = FN(classify)(cp, s->eye);
         FN(values)(cp, s->eye, d + p * L);
         exact = kref_exact_class(s, p, ref->rule);
         r->values_differ += (size_t)class_not_of_values(v, cls[p], d + p * L, ref->L, ref, exact);
-        if (s->exact && p % KREF_EXACT_SAMPLE)
+        if (HOST_INPUT || (s->exact && p % KREF_EXACT_SAMPLE))
             continue; /* kref_check reads the values of exact sets on this sample only */
         FN(planes)(cp, t);
         for (x = 0; x < L; x++)
@@ -74,23 +135,27 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
                                 : s->eye[2] * t[x][2];
     }
     r->patches += s->count;
-    FN(classify_batch)((const float(*)[4])s->cp, s->count, s->eye, batch);
+    FN(classify_batch)((const float(*)[4])in, s->count, s->eye, batch);
     for (p = 0; p < s->count; p++)
         for (k = 0; k < (size_t)ref->K * 4; k++)
-            soa[k * stride + p] = ((const float *)s->cp)[p * (size_t)ref->K * 4 + k];
+            soa[k * stride + p] = ((const float *)in)[p * (size_t)ref->K * 4 + k];
     FN(classify_soa)(soa, stride, s->count, s->eye, soa_cls);
     for (p = 0; p < s->count; p++) /* the indexed patches in reverse order: patch p is the set's last - p */
         for (k = 0; k < (size_t)ref->K; k++)
             ix[p * (size_t)ref->K + k] = (uint32_t)((s->count - 1 - p) * (size_t)ref->K + k);
-    FN(classify_indexed)((const float(*)[4])s->cp, ix, s->count, s->eye, idx_cls);
-    for (p = 0; p < s->count; p++)
+    FN(classify_indexed)((const float(*)[4])in, ix, s->count, s->eye, idx_cls);
+    for (p = 0; p < s->count; p++) {
         r->paths_differ += (batch[p] != cls[p]) + (soa_cls[p] != cls[p]) +
                            (idx_cls[s->count - 1 - p] != cls[p]);
-    kref_check(&r->classify, ref, s, cls, d);
+        if (lost && lost[p]) /* not the set's patch: given up */
+            cls[p] = batch[p] = MACRO(SILHOUETTE);
+    }
+    kref_check(&r->classify, ref, s, cls, HOST_INPUT ? NULL : d);
     for (p = 0; p < s->count; p++)
         cls[p] = batch[p];
     kref_check(&r->batch, ref, s, cls, NULL);
-    kref_check(&r->planes, ref, s, cls, dp);
+    if (!HOST_INPUT)
+        kref_check(&r->planes, ref, s, cls, dp);
     free(cls);
     free(batch);
     free(soa_cls);
@@ -101,6 +166,10 @@ static int run_set(void *ctx, const kref_ref *ref, const kref_set *s)
     free(dp);
     free(t);
     free(v);
+    if (lost) {
+        free(in);
+        free(lost);
+    }
     return 0;
 }
 
@@ -126,6 +195,11 @@ static int report(void *ctx, const kref_args *o, const kref_ref *ref)
     snprintf(label, sizeof label, "%s classify is the class of values() under the rule on all %zu patches%s",
              o->label, r->patches, o->certified ? " (certified: or silhouette)" : "");
     ok &= check(r->values_differ == 0, label, "it is not on %zu", r->values_differ);
+    if (HOST_INPUT) { /* classes only; most patches must be the set's */
+        snprintf(label, sizeof label, "%s the input form of %zu of %zu patches is exact in floats",
+                 o->label, r->patches - r->lost, r->patches);
+        return ok & check(r->lost * 10 <= r->patches, label, "too few");
+    }
     return ok & host_report(&r->planes, o, "planes (dotted with the eye)");
 }
 

@@ -2,7 +2,8 @@
 # test_basis.sh: the input forms --basis bspline and --order v-major. The C headers run on exact
 # small-integer data against the default header (tests/basis_check.c: bit for bit), in three of
 # the four spaces and rules, with gcc and clang, and classify_indexed_boundary on random masks; a
-# header whose B-spline map or phantoms are wrong must fail; the GPU targets' code compiles (GLSL
+# header whose B-spline map or phantoms are wrong must fail; --certified headers of both forms
+# make no unsafe class on exact data (tests/host_c.c); the GPU targets' code compiles (GLSL
 # and HLSL through glslangValidator and spirv-val, CUDA through nvcc where present); the options'
 # misuses are usage errors. Needs PTPGEN.
 set -u
@@ -56,6 +57,43 @@ else
     notok "a header that extrapolates the phantoms from the wrong vertex fails" "$(grep -m2 '^not ok' "$tmp/out" 2>/dev/null)"
 fi
 
+# --certified in the input forms on exact data (tests/host_c.c with HOST_BSPLINE / HOST_VMAJOR:
+# the sets' Bezier points given as the B-spline vertices whose Bezier points they are, or
+# transposed): never an unsafe class. One space and rule each; v-major Bezier input under the
+# degenerate rule reads its collapsed edges through the order.
+# cert_host HEADER DEFINES: builds host_c around HEADER (prefix ptp_3x3_).
+cert_host() {
+    gcc -std=c11 -O2 -march=native -Wall -Wextra -Werror -pedantic -Igen -Itests -include "$1" \
+        -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ $2 tests/host_c.c \
+        build/gcc/libptptest.a -lm -o "$tmp/hc" 2>"$tmp/err"
+}
+for cfg in "clip strict:--basis bspline:-DHOST_BSPLINE" \
+    "world degenerate:--basis bspline --order v-major:-DHOST_BSPLINE -DHOST_VMAJOR" \
+    "world strict:--basis bspline --order v-major:-DHOST_BSPLINE -DHOST_VMAJOR" \
+    "clip degenerate:--order v-major:-DHOST_VMAJOR"; do
+    IFS=: read -r sr form defs <<<"$cfg"
+    read -r space rule <<<"$sr"
+    name="certified $space $rule $form"
+    if "$P" --degree 3 --target c --certified --space $space --rule $rule $form --prefix ptp_3x3_ \
+        -o "$tmp/c.h" && cert_host "$tmp/c.h" "$defs"; then
+        run_host "$name" "$tmp/hc" --degree 3 3 --space $space --rule $rule --certified \
+            --exact 4 10000 41 --name "$name"
+    else
+        notok "$name: the header compiles" "$(grep -m3 error "$tmp/err")"
+    fi
+done
+# A certified B-spline header whose magnitudes ignore the map's weights (1 in place of 36) must
+# make unsafe classes on the same data.
+if "$P" --degree 3 --target c --certified --basis bspline --prefix ptp_3x3_ -o "$tmp/c.h" &&
+    sed -i 's/36\.0001f/0.01f/; s/R \*= 36;/R *= 0.01;/' "$tmp/c.h" && cert_host "$tmp/c.h" -DHOST_BSPLINE &&
+    ! "$tmp/hc" --degree 3 3 --space clip --rule strict --certified --exact 4 10000 41 --name mutant >"$tmp/out" &&
+    grep -q '^not ok - mutant classify and values: certified: no unsafe class' "$tmp/out"; then
+    ok "a certified B-spline header whose bound ignores the map's weights makes unsafe classes"
+else
+    notok "a certified B-spline header whose bound ignores the map's weights makes unsafe classes" \
+        "$(grep -m2 '^not ok' "$tmp/out" 2>/dev/null)"
+fi
+
 # The GPU targets' straight-line code in both forms compiles.
 for space in clip world; do
     o="--degree 3 --space $space --basis bspline --order v-major"
@@ -81,13 +119,15 @@ done
 
 # Misuses are usage errors (exit 2), with no output file.
 for bad in "--degree 2 --basis bspline" "--domain triangle --degree 3 --order v-major" \
-    "--degree 3 --basis bspline --certified" "--degree 3 --order v-major --refine 2" \
+    "--degree 3 --basis bspline --certified --refine 2" "--degree 3 --order v-major --refine 2" \
     "--degree 3 --basis spline" "--degree 3 --order v-first"; do
     "$P" $bad --target c -o "$tmp/none.h" 2>"$tmp/err"
     rc=$?
     [ $rc = 2 ] && [ ! -e "$tmp/none.h" ] && ok "ptpgen $bad: usage error ($(head -1 "$tmp/err"))" ||
         notok "ptpgen $bad is a usage error" "exit $rc: $(head -1 "$tmp/err")"
 done
-"$P" --degree 3 --target glsl --basis bspline --kernel table >/dev/null 2>&1
-[ $? = 2 ] && ok "--basis bspline with --kernel table is a usage error" ||
-    notok "--basis bspline with --kernel table is a usage error" "it was accepted"
+for bad in "--kernel table" "--certified"; do
+    "$P" --degree 3 --target glsl --basis bspline $bad >/dev/null 2>&1
+    [ $? = 2 ] && ok "--target glsl --basis bspline $bad is a usage error (the table kernel)" ||
+        notok "--target glsl --basis bspline $bad is a usage error" "it was accepted"
+done

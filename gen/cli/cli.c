@@ -485,8 +485,8 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
 }
 
 /* The input's form: B-spline vertices are bicubic quads; both --basis bspline and --order v-major
- * are the plain straight-line program's (the second looks and the table loop read Bezier points,
- * u-major). */
+ * are the straight-line program's, plain or certified in C (--refine and the table loop read
+ * Bezier points, u-major; --certified GPU code is the table kernel). */
 static int check_input(const cli_options *o, ptp_error *err)
 {
     const char *what = o->bspline ? "--basis bspline" : "--order v-major";
@@ -497,10 +497,12 @@ static int check_input(const cli_options *o, ptp_error *err)
     if (o->bspline && (o->dom.n != 3 || o->dom.m != 3))
         return ptp_fail(err, PTP_EUSAGE, "--basis bspline takes uniform bicubic B-spline patches "
                                          "(--degree 3)");
-    if (o->certified || o->refine || o->table)
-        return ptp_fail(err, PTP_EUSAGE, "%s applies to the plain straight-line program, not %s "
-                                         "(which reads Bezier points, u-major)", what,
-                        o->certified ? "--certified" : o->refine ? "--refine" : "--kernel table");
+    if (o->refine || o->table)
+        return ptp_fail(err, PTP_EUSAGE, "%s applies to the straight-line program, not %s (which "
+                                         "reads Bezier points, u-major)%s", what,
+                        o->refine ? "--refine" : "--kernel table",
+                        o->certified && !o->refine ? "; --certified GPU code is the table kernel, "
+                                                     "--certified C code takes it" : "");
     return PTP_OK;
 }
 

@@ -20,26 +20,24 @@ static void put_double_table(sbuf *o, const char *px, const char *name, const do
     sbuf_puts(o, "\n};\n");
 }
 
-/* --certified, second look: the weights and each plane's bounds, as double tables. */
+/* --certified, second look: the weights and each plane's bounds (the plan's cert64), as double
+ * tables. */
 static int put_tables64(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
     const char *px = info->prefix;
+    const cert_bounds *cb = &info->slp->cert64;
     double *w = malloc((t->nterms + 1) * sizeof *w);
-    cert_bounds cb = {0};
     size_t i;
-    int st = w ? cert_table(&cb, t, info->space == OUT_WORLD, err)
-               : ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
-    if (!st) {
-        for (i = 0; i < t->nterms; i++)
-            w[i] = rat_get_d(&t->terms[i].w);
-        sbuf_puts(o, "/* --certified, second look: the weights in double, and each plane's bound in double. */\n");
-        put_double_table(o, px, "wgt64", w, (int)t->nterms);
-        put_double_table(o, px, "tau64_k", cb.k64, cb.nplanes);
-        put_double_table(o, px, "tau64_f", cb.k2_64, cb.nplanes);
-        cert_clear(&cb);
-    }
+    if (!w)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing the C header");
+    for (i = 0; i < t->nterms; i++)
+        w[i] = rat_get_d(&t->terms[i].w);
+    sbuf_puts(o, "/* --certified, second look: the weights in double, and each plane's bound in double. */\n");
+    put_double_table(o, px, "wgt64", w, (int)t->nterms);
+    put_double_table(o, px, "tau64_k", cb->k64, cb->nplanes);
+    put_double_table(o, px, "tau64_f", cb->k2_64, cb->nplanes);
     free(w);
-    return st;
+    return PTP_OK;
 }
 
 /* certify64's sum of the weighted terms in double, into d. */
@@ -69,12 +67,27 @@ static void put_terms64(sbuf *o, int world, const char *px, const char *up)
 
 int emit_c_cert_zeros(const out_info *info)
 {
-    return info->certified && info->rule == OUT_DEGENERATE;
+    return info->certified && info->rule == OUT_DEGENERATE && !info->slp->bspline;
 }
 
 int emit_c_cert_late(const out_info *info)
 {
     return info->certified && !emit_c_cert_zeros(info);
+}
+
+/* The input is not u-major Bezier points: certify64 reads them through points64. */
+static int converted(const out_info *info)
+{
+    return info->slp->bspline || info->slp->vmajor;
+}
+
+/* The input's index of point k (as the domain numbers it): k, or from v-major input the index of
+ * its (i, j) at j (n + 1) + i. */
+static int input_point(const out_info *info, const tp_domain *d, int k)
+{
+    int i, j;
+    tp_domain_point_ij(&i, &j, d, k);
+    return info->slp->vmajor ? j * (d->n + 1) + i : k;
 }
 
 /* The first point on boundary edge e of d. */
@@ -117,11 +130,82 @@ static void put_collapsed64(sbuf *o, const slp_prog *p, const tp_domain *d, cons
         for (k = f + 1; k < d->npoints; k++) {
             tp_domain_point_ij(&i, &j, d, k);
             if (tp_domain_on_edge(d, e, i, j))
-                sbuf_printf(o, "%s%ssame(cp[%d], cp[%d])", n++ ? " & " : "", px, k, f);
+                sbuf_printf(o, "%s%ssame(cp[%d], cp[%d])", n++ ? " & " : "", px,
+                            input_point(info, d, k), input_point(info, d, f));
         }
         sbuf_printf(o, ") << %d;\n", e);
     }
     sbuf_puts(o, "    return fin * col;\n}\n");
+}
+
+/* Appends points64(cp, in): the u-major Bezier points certify64 reads, in double, from the input
+ * in: v-major points reordered; B-spline vertices converted to 36 times their Bezier points by
+ * the uniform cubic map along u, then along v (exact products, two sums a pass: at most
+ * CERT_BSPLINE_ROUNDINGS roundings a coordinate, cert_table's count). */
+static void put_points64(sbuf *o, const out_info *info, const tp_domain *d, const char *up)
+{
+    const char *px = info->prefix;
+    int i, j, n = 0;
+    sbuf_printf(o, "\n/* certify64's u-major Bezier points%s of the input in. */\n"
+                   "static void %spoints64(double cp[][4], const float in[][4])\n{\n",
+                info->slp->bspline ? " (times 36, in double)" : "", px);
+    if (!info->slp->bspline) {
+        sbuf_printf(o, "    static const unsigned char at[%sPOINTS] = {", up);
+        for (i = 0; i <= d->n; i++)
+            for (j = 0; j <= d->m; j++, n++)
+                sbuf_printf(o, "%s%d", n == 0 ? "" : ", ", input_point(info, d, n));
+        sbuf_printf(o, "};\n    unsigned x, c;\n    for (x = 0; x < %sPOINTS; x++)\n"
+                       "        for (c = 0; c < 4; c++)\n            cp[x][c] = in[at[x]][c];\n}\n", up);
+        return;
+    }
+    sbuf_printf(o, "    static const double m[4][4] = {{1, 4, 1, 0}, {0, 4, 2, 0}, {0, 2, 4, 0}, {0, 1, 4, 1}};\n"
+                   "    double h[16][4], s;\n    unsigned i, j, k, c;\n"
+                   "    for (i = 0; i < 4; i++) /* along u */\n"
+                   "        for (j = 0; j < 4; j++)\n            for (c = 0; c < 4; c++) {\n"
+                   "                for (s = 0, k = 0; k < 4; k++)\n"
+                   "                    s += m[i][k] * in[%s][c];\n"
+                   "                h[i * 4 + j][c] = s;\n            }\n"
+                   "    for (i = 0; i < 4; i++) /* along v */\n"
+                   "        for (j = 0; j < 4; j++)\n            for (c = 0; c < 4; c++) {\n"
+                   "                for (s = 0, k = 0; k < 4; k++)\n"
+                   "                    s += m[j][k] * h[i * 4 + k][c];\n"
+                   "                cp[i * 4 + j][c] = s;\n            }\n}\n",
+                info->slp->vmajor ? "j * 4 + k" : "k * 4 + j");
+}
+
+/* Appends certify64's head through R, E, ER3 and F: R the largest |coordinate| of the points it
+ * reads (from B-spline input 36 times the vertices'), E the eye's. */
+static void put_certify64_head(sbuf *o, const out_info *info, const char *up)
+{
+    const char *px = info->prefix, *in = converted(info) ? "in" : "cp";
+    int world = info->space == OUT_WORLD;
+    sbuf_printf(o,
+                "\n/* The certified class of a patch whose plain float signs decide but whose bounds do not, from\n"
+                " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
+                "static unsigned %scertify64(const float %s[][4], const float eye[4]%s)\n{\n    double ",
+                px, in, info->refine ? ", double d[], double b[]" : "");
+    if (converted(info))
+        sbuf_printf(o, "cp[%sPOINTS][4], ", up);
+    if (!info->refine)
+        sbuf_printf(o, "d[%sPLANES], ", up);
+    sbuf_printf(o, "R = 0, E = 0, ER3, F;\n    unsigned x, k, notlt = 0, notgt = 0%s;\n",
+                emit_c_cert_zeros(info) ? ", col" : "");
+    if (converted(info))
+        sbuf_printf(o, "    %spoints64(cp, in);\n", px);
+    sbuf_printf(o,
+                "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
+                "    for (x = 0; x < %sPOINTS; x++)\n"
+                "        for (k = 0; k < 4; k++)\n"
+                "            if (%s)\n"
+                "                R = %sABSMAX(R, (double)%s[x][k]);\n%s"
+                "    for (k = 0; k < 4; k++)\n"
+                "        if (%s)\n"
+                "            E = %sABSMAX(E, (double)eye[k]);\n"
+                "    ER3 = E * (R * R * R);\n"
+                "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n",
+                up, up, world ? "1" : "k != 2", up, in,
+                info->slp->bspline ? "    R *= 36; /* exact: the Bezier points are 36 times the true ones */\n" : "",
+                world ? "1" : "k == 2", up);
 }
 
 int emit_c_cert_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const out_info *info,
@@ -133,39 +217,24 @@ int emit_c_cert_certify64(sbuf *o, const tp_table *t, const slp_prog *p, const o
         return st;
     if (emit_c_cert_zeros(info))
         put_collapsed64(o, p, &t->dom, info, up);
+    if (converted(info))
+        put_points64(o, info, &t->dom, up);
+    put_certify64_head(o, info, up);
     sbuf_printf(o,
-                "\n/* The certified class of a patch whose plain float signs decide but whose bounds do not, from\n"
-                " * the table loop in double: |d_P - exact| <= tau64_k[P] E R^3 + tau64_f[P] (1 + R)^3 (1 + E). */\n"
-                "static unsigned %scertify64(const float cp[][4], const float eye[4]%s)\n{\n"
-                "    double %s%s%sR = 0, E = 0, ER3, F;\n"
-                "    unsigned x, k, notlt = 0, notgt = 0%s;\n"
-                "    for (x = 0; x < %sPLANES; x++)\n        d[x] = 0;\n"
-                "    for (x = 0; x < %sPOINTS; x++)\n"
-                "        for (k = 0; k < 4; k++)\n"
-                "            if (%s)\n"
-                "                R = %sABSMAX(R, (double)cp[x][k]);\n"
-                "    for (k = 0; k < 4; k++)\n"
-                "        if (%s)\n"
-                "            E = %sABSMAX(E, (double)eye[k]);\n"
-                "    ER3 = E * (R * R * R);\n"
-                "    F = (1 + R) * (1 + R) * (1 + R) * (1 + E);\n"
                 "    for (x = 0; x < %sTERMS; x++) {\n"
-                "        const float *a = cp[%sterm_idx[x][1]], *b = cp[%sterm_idx[x][2]], *c = cp[%sterm_idx[x][3]];\n",
-                px, info->refine ? ", double d[], double b[]" : "", info->refine ? "" : "d[",
-                info->refine ? "" : up, info->refine ? "" : "PLANES], ",
-                emit_c_cert_zeros(info) ? ", col" : "", up, up, world ? "1" : "k != 2", up,
-                world ? "1" : "k == 2", up, up, px, px, px);
+                "        const %s *a = cp[%sterm_idx[x][1]], *b = cp[%sterm_idx[x][2]], *c = cp[%sterm_idx[x][3]];\n",
+                up, converted(info) ? "double" : "float", px, px, px);
     put_terms64(o, world, px, up);
     if (emit_c_cert_zeros(info))
         sbuf_printf(o,
-                    "    col = %scollapsed(cp);\n"
+                    "    col = %scollapsed(%s);\n"
                     "    for (x = 0; x < %sPLANES; x++) {\n"
                     "        double bound = %stau64_k[x] * ER3 + %stau64_f[x] * F;\n"
                     "        unsigned z = (%szero[x] & col) != 0; /* exactly 0 */\n"
                     "        notlt |= ((d[x] < -bound) | z) == 0;\n"
                     "        notgt |= ((d[x] > bound) | z) == 0;\n%s"
                     "    }\n",
-                    px, up, px, px, px,
+                    px, converted(info) ? "in" : "cp", up, px, px, px,
                     info->refine ? "        d[x] = z ? 0.0 : d[x]; /* for refined */\n"
                                    "        b[x] = z ? 0.0 : bound;\n" : "");
     else
@@ -272,8 +341,8 @@ void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
             sbuf_puts(o, " &\n            ");
             for (c = 0; c < 4; c++)
                 if (world || c != 2) {
-                    put_load(a, sizeof a, px, k, c);
-                    put_load(b, sizeof b, px, f, c);
+                    put_load(a, sizeof a, px, input_point(info, d, k), c);
+                    put_load(b, sizeof b, px, input_point(info, d, f), c);
                     sbuf_printf(o, "%s(%svm)(%s == %s)", c ? " & " : "", px, a, b);
                 }
         }
@@ -282,17 +351,32 @@ void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
 }
 
 /* Appends the magnitude update Rc = max(Rc, |coordinate c of point k|) (declared for k = 0), of
- * the coordinate as the program reads it (slpt_coordinate). */
+ * the coordinate as the program reads it (slpt_coordinate), or from B-spline input of vertex k
+ * as read (slpt_input: the conversion's magnitudes come from the vertices). */
 static void put_magnitude(const slpt_writer *w, const out_info *info, int k, int c)
 {
     static const char crd[] = "xyzw";
     const char *px = info->prefix;
     char v[SLPT_EXPR];
-    slpt_coordinate(v, w, k, c);
+    if (info->slp->bspline)
+        slpt_input(v, w, k, c);
+    else
+        slpt_coordinate(v, w, k, c);
     if (k == 0)
         sbuf_printf(w->o, "        %svf R%c = %svabsmax(%s, %s);\n", px, crd[c], px, v, v);
     else
         sbuf_printf(w->o, "        R%c = %svabsmax(R%c, %s);\n", crd[c], px, crd[c], v);
+}
+
+/* B-spline input: each Rc times 36 (the map's weights of a point, the Bezier points being 36
+ * times the true ones), rounded up: 36.0001 clears the product's rounding. */
+static void put_bspline_magnitudes(const slpt_writer *w, int world)
+{
+    int c;
+    sbuf_puts(w->o, "        /* B-spline input: a point's magnitude is at most 36 times its vertices'. */\n");
+    for (c = 0; c < 4; c++)
+        if (world || c != 2)
+            sbuf_printf(w->o, "        R%c = R%c * 36.0001f;\n", "xyzw"[c], "xyzw"[c]);
 }
 
 void emit_c_cert_magnitudes(const slpt_writer *w, int npoints, const out_info *info,
@@ -310,6 +394,8 @@ void emit_c_cert_magnitudes(const slpt_writer *w, int npoints, const out_info *i
         for (c = 0; c < 4; c++)
             if (world || c != 2)
                 put_magnitude(w, info, k, c);
+    if (info->slp->bspline)
+        put_bspline_magnitudes(w, world);
     if (world && local) /* the local eye's magnitudes, lane by lane */
         sbuf_printf(o, "        const %svf E0 = %sVABS(l0), E1 = %sVABS(l1), E2 = %sVABS(l2);\n"
                        "        const %svf E = %svabsmax(%svabsmax(%svabsmax(E0, E1), E2), E0 * 0.0f + E3);\n",

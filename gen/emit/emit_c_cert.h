@@ -8,8 +8,10 @@
 #include "plan/cert.h"
 #include "plan/slp.h"
 
-/* Nonzero for a certified header under the degenerate rule: a plane that a collapsed boundary
- * edge zeros (slp_prog.zero) counts as exactly 0 there, both <= 0 and >= 0. */
+/* Nonzero for a certified header under the degenerate rule on Bezier input: a plane that a
+ * collapsed boundary edge zeros (slp_prog.zero) counts as exactly 0 there, both <= 0 and >= 0.
+ * (Converted B-spline points are equal without the exact ones being equal: every plane then
+ * takes its bound.) */
 int emit_c_cert_zeros(const out_info *info);
 
 /* Appends the certified lanes' macros (prefix px, upper case up): VABS(x) = |x| lane by lane

@@ -85,9 +85,7 @@ static int input_index(const slpt_writer *w, int i, int j)
     return pl->vmajor ? j * (pl->n + 1) + i : i * (pl->m + 1) + j;
 }
 
-/* Writes to out coordinate c of input point idx (as stored), in patch-local coordinates x + o w
- * when c < 3 (slpt_frame's origin). */
-static void input_coordinate(char *out, const slpt_writer *w, int idx, int c)
+void slpt_input(char *out, const slpt_writer *w, int idx, int c)
 {
     char x[EXPR], wk[EXPR];
     w->s->load(x, EXPR, w, idx, c);
@@ -124,7 +122,7 @@ static void put_bspline(slpt_writer *w)
         for (i = 0; i < 4; i++) /* along u: column j of the input's 4 x 4 vertices */
             for (j = 0; j < 4; j++) {
                 for (k = 0; k < 4; k++)
-                    input_coordinate(a[k], w, input_index(w, k, j), c);
+                    slpt_input(a[k], w, input_index(w, k, j), c);
                 snprintf(names[i * 4 + j], sizeof names[0], "h%c%d_%d", xyzw[c], i, j);
                 bspline_row(inits[i * 4 + j], w, i, a);
             }
@@ -181,7 +179,7 @@ void slpt_coordinate(char *out, const slpt_writer *w, int k, int c)
     if (w->plan->bspline)
         expr(out, "b%c%d", "xyzw"[c], k);
     else
-        input_coordinate(out, w, input_index(w, k / (w->plan->m + 1), k % (w->plan->m + 1)), c);
+        slpt_input(out, w, input_index(w, k / (w->plan->m + 1), k % (w->plan->m + 1)), c);
 }
 
 void slpt_point(slpt_writer *w, int k)

@@ -64,6 +64,10 @@ void slpt_frame(slpt_writer *w);
  * input's load, in patch-local coordinates x + o w (c < 3), or B-spline input's converted point.
  * Needs slpt_frame's names. */
 void slpt_coordinate(char *out, const slpt_writer *w, int k, int c);
+/* Writes to out (SLPT_EXPR bytes) coordinate c of input point idx (as stored: a Bezier point or a
+ * B-spline vertex, in the input's order), in patch-local coordinates x + o w when c < 3. Needs
+ * slpt_frame's names. */
+void slpt_input(char *out, const slpt_writer *w, int idx, int c);
 /* Declares point k's coordinates and eye products unless done. */
 void slpt_point(slpt_writer *w, int k);
 /* Writes every plane in slp_order's order (consecutive planes reuse values), each followed by

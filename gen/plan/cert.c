@@ -98,15 +98,17 @@ static void table_sums(double *d, double *S, double *n, const tp_table *t, doubl
         d[i] += 16;
 }
 
-int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
+int cert_table(cert_bounds *b, const tp_table *t, int world, int bspline, ptp_error *err)
 {
     double *d, *D, *S, *n;
     int st = alloc(b, t->dom.nplanes, 1, &d, &D, &S, &n, err), i;
     if (st)
         return st;
     table_sums(d, S, n, t, world ? 44 : 12);
-    for (i = 0; i < b->nplanes; i++) /* every monomial at depth d */
+    for (i = 0; i < b->nplanes; i++) { /* every monomial at depth d */
+        d[i] += bspline ? 3 * CERT_BSPLINE_ROUNDINGS : 0;
         D[i] = d[i] * (world ? 24 : 6) * S[i];
+    }
     fill(b, d, D, S, n, world, 0x1p-126, 0x1p-24); /* GPUs may flush subnormals to zero */
     free(d);
     return PTP_OK;
@@ -278,21 +280,28 @@ int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
  * multiply-add, or a product exact in double, a double sum and its rounding to float). */
 #define CERT_FRAME_ROUNDINGS(world) ((world) ? 6 : 4)
 
-/* Adds the frame's h roundings to every monomial of each plane: h to the depth, h times the
- * plane's mass (at most m S: every form regroups the terms' m monomials) to D, and h m a term
- * (n counts 32, clip 12, a term) to the roundings that may underflow. */
-static void frame_sums(double *d, double *D, const double *S, double *n, int nplanes, int world)
+/* Adds the input's roundings to every monomial of each plane, h of them (the frame's, local;
+ * B-spline input's, three factors' CERT_BSPLINE_ROUNDINGS): h to the depth, h times the plane's
+ * mass (at most m S: every form regroups the terms' m monomials) to D, and the frame's m a term
+ * (n counts 32, clip 12, a term) to the roundings that may underflow, 36 times over from
+ * B-spline input (a vertex's shift reaches a point with weights summing to 36; the
+ * conversion's sums and exact products never underflow). */
+static void frame_sums(double *d, double *D, const double *S, double *n, int nplanes, int world,
+                       int local, int bspline)
 {
-    const double h = CERT_FRAME_ROUNDINGS(world), m = world ? 24 : 6, per = world ? 32 : 12;
+    const double f = local ? CERT_FRAME_ROUNDINGS(world) : 0,
+                 h = f + (bspline ? 3 * CERT_BSPLINE_ROUNDINGS : 0), m = world ? 24 : 6,
+                 per = world ? 32 : 12;
     int i;
     for (i = 0; i < nplanes; i++) {
         d[i] += h;
         D[i] += h * m * S[i] * (1 + 0x1p-50);
-        n[i] += n[i] / per * h * m;
+        n[i] += n[i] / per * f * m * (bspline ? 36 : 1);
     }
 }
 
-int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, ptp_error *err)
+int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, int bspline,
+             ptp_error *err)
 {
     double *d, *D, *S, *n;
     size_t i;
@@ -313,8 +322,8 @@ int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, ptp_error 
         fused_sums(d, D, p, i, world);
     for (i = 0; i < p->nitems; i = slp_point_plane_end(p->items, p->nitems, i))
         point_sums(d, D, p, i, world);
-    if (local)
-        frame_sums(d, D, S, n, p->nplanes, world);
+    if (local || bspline)
+        frame_sums(d, D, S, n, p->nplanes, world, local, bspline);
     fill(b, d, D, S, n, world, 0x1p-150, 0x1p-24); /* IEEE float with subnormals */
     free(d);
     return PTP_OK;

@@ -20,9 +20,17 @@ typedef struct {
     double *k64, *k2_64; /* cert_table: the same for the table loop in double (else NULL) */
     int nplanes;
 } cert_bounds;
+/* B-spline input (--basis bspline): the roundings the conversion to Bezier points adds to each
+ * factor of a monomial (two sums a pass, two passes), measured against the magnitude 36
+ * max |vertex coordinate|, which bounds the sum over the map's weights (36 a point) of the
+ * vertices' magnitudes: every monomial has three converted factors (docs/errors.md: B-spline
+ * input). */
+#define CERT_BSPLINE_ROUNDINGS 4
 /* The bounds of the table loop (in double, the C target's recheck): float
- * weights, (terms + 16) roundings on a path as derived in README. PTP_ENOMEM on failure. */
-int cert_table(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
+ * weights, (terms + 16) roundings on a path as derived in README; bspline: the points are
+ * converted from B-spline vertices first (CERT_BSPLINE_ROUNDINGS a factor). PTP_ENOMEM on
+ * failure. */
+int cert_table(cert_bounds *b, const tp_table *t, int world, int bspline, ptp_error *err);
 /* The bounds of the GPU kernels' float pass for float operations of relative error at most u:
  * each monomial at its own depth, a term's own roundings and its plane's sum in any order and
  * association, for M the largest |monomial| (clip space) or the sum over the eye's components of
@@ -40,7 +48,9 @@ int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
  * each monomial's roundings d_i from the program's summation trees as emitted; local: the
  * program reads patch-local coordinates, each rounded once (twice counted, for the double
  * route without multiply-add instructions), whose magnitudes M is taken from (docs/errors.md:
- * Patch-local coordinates). */
-int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, ptp_error *err);
+ * Patch-local coordinates); bspline: the points are converted from B-spline vertices (after
+ * the shift), CERT_BSPLINE_ROUNDINGS a factor, M from 36 times the vertices' magnitudes. */
+int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, int bspline,
+             ptp_error *err);
 void cert_clear(cert_bounds *b);
 #endif

@@ -28,7 +28,7 @@ int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form, int cert
                    ptp_error *err)
 {
     int st = slp_build(&p->prog, t, err), local = (form & PLAN_LOCAL) != 0;
-    p->cert = (cert_bounds){0};
+    p->cert = p->cert64 = (cert_bounds){0};
     p->local = local;
     p->bspline = (form & PLAN_BSPLINE) != 0;
     p->vmajor = (form & PLAN_VMAJOR) != 0;
@@ -40,7 +40,10 @@ int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form, int cert
                (p->bspline ? plan_bspline_flops(world) : 0);
     p->muls = slp_muls(&p->prog, world) + (local ? plan_frame_muls(t->dom.npoints, world) : 0) +
               (p->bspline ? plan_bspline_muls(world) : 0);
-    if (certified && (st = cert_slp(&p->cert, &p->prog, world, local, err)) != PTP_OK)
+    if (certified && (st = cert_slp(&p->cert, &p->prog, world, local, p->bspline, err)) == PTP_OK &&
+        (st = cert_table(&p->cert64, t, world, p->bspline, err)) != PTP_OK)
+        cert_clear(&p->cert);
+    if (st)
         slp_clear(&p->prog);
     return st;
 }
@@ -48,5 +51,6 @@ int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form, int cert
 void plan_slp_clear(plan_slp *p)
 {
     cert_clear(&p->cert);
+    cert_clear(&p->cert64);
     slp_clear(&p->prog);
 }

@@ -9,6 +9,8 @@
 typedef struct {
     slp_prog prog;    /* the straight-line program (plan/slp.h) */
     cert_bounds cert; /* with certified: its margins (cert_slp); else empty */
+    cert_bounds cert64; /* with certified: the second look's, the table loop in double
+                           (cert_table); else empty */
     long flops, muls; /* per patch (slp_flops, slp_muls, and the frame's) in the plan's space */
     int local;        /* the program reads patch-local coordinates (docs/math.md: Patch-local
                          coordinates): point 0's origin subtracted, one rounding a coordinate */
@@ -31,8 +33,8 @@ long plan_bspline_flops(int world);
 long plan_bspline_muls(int world);
 
 /* Builds the plan of t for world (else clip) space, reading the input form (PLAN_ bits), with
- * the margins when certified (Bezier points only). p is uninitialized on entry and on failure
- * (PTP_ENOMEM, PTP_EOVERFLOW: slp_build's). */
+ * the margins of the program and of the second look when certified. p is uninitialized on entry
+ * and on failure (PTP_ENOMEM, PTP_EOVERFLOW: slp_build's). */
 int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form, int certified,
                    ptp_error *err);
 /* Frees p's storage. */
