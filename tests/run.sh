@@ -96,6 +96,7 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/man_check.sh env PTPGEN=build/gcc/ptpgen bash tests/man_check.sh
     run tests/test_basis.sh env PTPGEN=build/gcc/ptpgen bash tests/test_basis.sh
     run tests/test_osd.sh env PTPGEN=build/gcc/ptpgen bash tests/test_osd.sh
+    run tests/test_indexed.sh env PTPGEN=build/gcc/ptpgen bash tests/test_indexed.sh
     run tests/test_cmake.sh bash tests/test_cmake.sh
     run tests/test_host_header.sh env PTPGEN=build/gcc/ptpgen bash tests/test_host_header.sh
 fi

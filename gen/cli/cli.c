@@ -28,9 +28,9 @@ static void usage_synopsis(sbuf *o)
         "usage: ptpgen --degree N|NxM [--domain quad|triangle] [--target T] [--space clip|world]\n"
         "              [--rule strict|degenerate] [--coordinates local|absolute] [--planes]\n"
         "              [--basis bezier|bspline] [--order u-major|v-major] [--certified]\n"
-        "              [--refine K] [--prefix NAME] [--kernel slp|table] [--stage kernel|function]\n"
-        "              [--threads-per-patch P] [--patches-per-block Q] [-o FILE]\n"
-        "              [--host-header FILE]\n"
+        "              [--refine K] [--prefix NAME] [--kernel slp|table|indexed]\n"
+        "              [--stage kernel|function] [--threads-per-patch P]\n"
+        "              [--patches-per-block Q] [-o FILE] [--host-header FILE]\n"
         "       ptpgen verify FILE [--degree N|NxM] [--domain quad|triangle]\n"
         "              [--convention u-first|v-first] [-o REPORT]\n"
         "       ptpgen vectors --degree NxM [--domain quad|triangle] --count K --seed S\n"
@@ -80,7 +80,9 @@ static void usage_options(sbuf *o)
         "                   the options given); a _ is appended when NAME does not end in one\n"
         "  --kernel K       GPU targets: slp (default): one patch an invocation, the\n"
         "                   straight-line program; table (the default with --certified): the\n"
-        "                   paper's kernel, P threads a patch over the term table\n"
+        "                   paper's kernel, P threads a patch over the term table; indexed:\n"
+        "                   slp's, reading each patch's points from a vertex buffer through K\n"
+        "                   indices a patch (--basis bspline: and OpenSubdiv's boundary masks)\n"
         "  --stage S        GPU targets: kernel (default): a compute kernel; function: only\n"
         "                   the functions classify_patch and values, for any shader stage\n"
         "                   (tessellation control or hull, mesh, task, compute)\n"
@@ -306,7 +308,8 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
 {
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
     static const char *const conventions[] = {"u-first", "v-first"}, *const formats[] = {"json", "c"};
-    static const char *const kernels[] = {"slp", "table"}, *const stages[] = {"kernel", "function"};
+    static const char *const kernels[] = {"slp", "table", "indexed"};
+    static const char *const stages[] = {"kernel", "function"};
     static const char *const coordinates[] = {"local", "absolute"}, *const bases[] = {"bezier", "bspline"};
     static const char *const orders[] = {"u-major", "v-major"};
     const char *kinds[] = {tp_kind_name(TP_QUAD), tp_kind_name(TP_TRI)};
@@ -343,7 +346,12 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     case OPT_HELP: o->help = 1; break;
     case OPT_VERSION: o->version = 1; break;
     case OPT_LIST: o->list = 1; break;
-    case OPT_KERNEL: return parse_choice(&o->table, "kernel", v, kernels, 2, err);
+    case OPT_KERNEL:
+        if (!(st = parse_choice(&x, "kernel", v, kernels, 3, err))) {
+            o->table = x == 1;
+            o->indexed = x == 2;
+        }
+        break;
     case OPT_COORDINATES: return parse_choice(&o->absolute, "coordinates", v, coordinates, 2, err);
     case OPT_BASIS: return parse_choice(&o->bspline, "basis", v, bases, 2, err);
     case OPT_ORDER: return parse_choice(&o->vmajor, "order", v, orders, 2, err);
@@ -466,6 +474,9 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
     if (o->table && seen >> OPT_COORDINATES & 1)
         return ptp_fail(err, PTP_EUSAGE, "--coordinates applies to the straight-line program; "
                                          "--kernel table reads the coordinates as given");
+    if (o->indexed && o->functions)
+        return ptp_fail(err, PTP_EUSAGE, "--kernel indexed is a compute kernel; --stage function "
+                                         "writes the functions alone (the caller gathers the points)");
     if (o->table && o->functions)
         return ptp_fail(err, PTP_EUSAGE, "--stage function writes the straight-line functions, not "
                                          "--kernel table");
@@ -545,7 +556,8 @@ static void put_command(cli_options *o)
     if (o->patches >= 0)
         n += snprintf(c + n, size - (size_t)n, " --patches-per-block %d", o->patches);
     if (o->kernel_given)
-        n += snprintf(c + n, size - (size_t)n, " --kernel %s", o->table ? "table" : "slp");
+        n += snprintf(c + n, size - (size_t)n, " --kernel %s",
+                      o->table ? "table" : o->indexed ? "indexed" : "slp");
     if (o->functions)
         snprintf(c + n, size - (size_t)n, " --stage function");
 }

@@ -160,6 +160,7 @@ static int run(const cli_options *o, ptp_error *err)
     info.refine = o->refine;
     info.table = o->table;
     info.functions = o->functions;
+    info.indexed = o->indexed;
     if (o->target->options & TGT_KERNEL) /* the GPU targets */
         info.group = o->patches >= 0 ? o->patches : OUT_SLP_GROUP;
     sbuf_init(&b);

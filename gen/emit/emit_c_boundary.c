@@ -3,27 +3,18 @@
 #include "emit/emit_c_boundary.h"
 #include "emit/fmt.h"
 #include "emit/template.h"
+#include "plan/phantom.h"
 
-/* Appends the phantoms table: for edge bit b (v = 0, u = 1, v = 1, u = 0) the vertices (i, j)
- * of that edge (i along u) with the two inward, as input indices {p0, p1, p2}. */
+/* Appends the phantoms table of phantom_table: per edge bit, its four {p0, p1, p2}. */
 static void put_phantoms(sbuf *o, int vmajor)
 {
-    /* per edge: the first vertex (i, j), the step along the edge, the step inward */
-    static const int edge[4][6] = {{0, 0, 1, 0, 0, 1}, {3, 0, 0, 1, -1, 0},
-                                   {0, 3, 1, 0, 0, -1}, {0, 0, 0, 1, 1, 0}};
-    int b, k, s;
+    int q[4][4][3], b, k;
+    phantom_table(q, vmajor);
     sbuf_puts(o, "{");
     for (b = 0; b < 4; b++) {
-        const int *e = edge[b];
         sbuf_puts(o, b ? ",\n    {" : "\n    {");
-        for (k = 0; k < 4; k++) {
-            sbuf_puts(o, k ? ", {" : "{");
-            for (s = 0; s < 3; s++) {
-                int i = e[0] + k * e[2] + s * e[4], j = e[1] + k * e[3] + s * e[5];
-                sbuf_printf(o, "%s%d", s ? ", " : "", vmajor ? j * 4 + i : i * 4 + j);
-            }
-            sbuf_puts(o, "}");
-        }
+        for (k = 0; k < 4; k++)
+            sbuf_printf(o, "%s{%d, %d, %d}", k ? ", " : "", q[b][k][0], q[b][k][1], q[b][k][2]);
         sbuf_puts(o, "}");
     }
     sbuf_puts(o, "}");

@@ -9,6 +9,9 @@ static const kern_host_slot host_slots[] = {
     {"ARG_PLANES", 2, "float *planes: the values d[p*L + P], or NULL", 0},
     {"ARG_EYE", 3, "float4 eye", 0},
     {"ARG_PATCH_COUNT", 4, "unsigned patch_count", 0},
+    {"ARG_INDICES", 5, "const unsigned *point_index: the indices, K a patch", KERN_SLOT_INDEXED},
+    {"ARG_BOUNDARY", 6, "const unsigned *boundary_mask: the boundary masks, one a patch",
+     KERN_SLOT_BOUNDARY},
     {NULL, 0, NULL, 0}};
 
 const kern_target kern_cuda = {
@@ -31,6 +34,10 @@ const kern_target kern_cuda = {
         " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count), extern \"C\": planes receives\n"
         " * d[p*L + P] when not NULL. Launch P*Q threads per block and ceil(patch_count / Q) blocks,\n"
         " * 1-D or 2-D: block (x, y) handles the patches of block y * gridDim.x + x.\n",
+    .indices_decl = ",\n        const unsigned *point_index",
+    .boundary_decl = ", const unsigned *boundary_mask",
+    .indices_note = " * Argument 5 point_index, the indices (K a patch).\n",
+    .boundary_note = " * Argument 6 boundary_mask, the boundary masks (one a patch).\n",
     .fabs = "fabsf", .fmax = "fmaxf",
     .unit_roundoff = 0x1p-24, /* round to nearest */
     /* float4 has no operators; __fsub_rn is never contracted or reassociated */

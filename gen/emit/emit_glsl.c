@@ -9,7 +9,10 @@ static const kern_host_slot host_slots[] = {
     {"SET", 0, "descriptor set of the buffers", 0},
     {"BINDING_POINTS", 0, "storage buffer: the control points, vec4[] (read)", 0},
     {"BINDING_CLASSES", 1, "storage buffer: the classes, uint[] (written)", 0},
-    {"BINDING_PLANES", 2, "storage buffer: the values d[p*L + P], float[] (written)", 1},
+    {"BINDING_PLANES", 2, "storage buffer: the values d[p*L + P], float[] (written)", KERN_SLOT_PLANES},
+    {"BINDING_INDICES", 4, "storage buffer: the indices, K a patch, uint[] (read)", KERN_SLOT_INDEXED},
+    {"BINDING_BOUNDARY", 5, "storage buffer: the boundary masks, one a patch, uint[] (read)",
+     KERN_SLOT_BOUNDARY},
     {NULL, 0, NULL, 0}};
 
 const kern_target kern_glsl = {
@@ -31,6 +34,10 @@ const kern_target kern_glsl = {
         " * d[p*L + P] (float[], with --planes). Push constants: { vec4 eye; uint patch_count; }.\n"
         " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
         " * workgroup (x, y) handles the patches of block y * num_groups_x + x.\n",
+    .indices_decl = "layout(std430, set = 0, binding = 4) readonly buffer Indices { uint point_index[]; };\n",
+    .boundary_decl = "layout(std430, set = 0, binding = 5) readonly buffer Boundary { uint boundary_mask[]; };\n",
+    .indices_note = " * Binding 4 the indices point_index (readonly uint[], K a patch).\n",
+    .boundary_note = " * Binding 5 the boundary masks boundary_mask (readonly uint[], one a patch).\n",
     .fabs = "abs", .fmax = "max",
     .unit_roundoff = 0x1p-24, /* round to nearest */
     .diff = "%s - %s", /* in a precise local: evaluated as written */

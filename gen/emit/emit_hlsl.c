@@ -9,13 +9,18 @@ static const kern_host_field host_params[] = {
 static const kern_host_slot host_slots[] = {
     {"REGISTER_POINTS", 0, "t0: StructuredBuffer<float4>, the control points (SRV)", 0},
     {"REGISTER_CLASSES", 1, "u1: RWStructuredBuffer<uint>, the classes (UAV)", 0},
-    {"REGISTER_PLANES", 2, "u2: RWStructuredBuffer<float>, the values d[p*L + P] (UAV)", 1},
+    {"REGISTER_PLANES", 2, "u2: RWStructuredBuffer<float>, the values d[p*L + P] (UAV)", KERN_SLOT_PLANES},
+    {"REGISTER_INDICES", 4, "t4: StructuredBuffer<uint>, the indices, K a patch (SRV)", KERN_SLOT_INDEXED},
+    {"REGISTER_BOUNDARY", 5, "t5: StructuredBuffer<uint>, the boundary masks, one a patch (SRV)",
+     KERN_SLOT_BOUNDARY},
     {"REGISTER_PARAMS", 0, "b0: cbuffer Params (CBV or root constants)", 0},
     {"ROOT_CONSTANTS", 6, "32-bit root constants the kernel reads (eye, patch_count, groups_x)", 0},
     {"SET", 0, "Vulkan: descriptor set of the buffers", 0},
     {"BINDING_POINTS", 0, "Vulkan: storage buffer binding of the control points", 0},
     {"BINDING_CLASSES", 1, "Vulkan: storage buffer binding of the classes", 0},
-    {"BINDING_PLANES", 2, "Vulkan: storage buffer binding of the values", 1},
+    {"BINDING_PLANES", 2, "Vulkan: storage buffer binding of the values", KERN_SLOT_PLANES},
+    {"BINDING_INDICES", 4, "Vulkan: storage buffer binding of the indices", KERN_SLOT_INDEXED},
+    {"BINDING_BOUNDARY", 5, "Vulkan: storage buffer binding of the boundary masks", KERN_SLOT_BOUNDARY},
     {NULL, 0, NULL, 0}};
 
 const kern_target kern_hlsl = {
@@ -39,6 +44,10 @@ const kern_target kern_hlsl = {
         " * uint groups_x; }, groups_x = the number of workgroups dispatched along x.\n"
         " * Dispatch ceil(patch_count / Q) workgroups, in 2-D (x, y) when x would exceed the limit:\n"
         " * workgroup (x, y) handles the patches of block y * groups_x + x.\n",
+    .indices_decl = "PTP_VK_BINDING(4) StructuredBuffer<uint> point_index : register(t4);\n",
+    .boundary_decl = "PTP_VK_BINDING(5) StructuredBuffer<uint> boundary_mask : register(t5);\n",
+    .indices_note = " * t4 / binding 4 the indices point_index (StructuredBuffer<uint>, K a patch).\n",
+    .boundary_note = " * t5 / binding 5 the boundary masks boundary_mask (StructuredBuffer<uint>, one a patch).\n",
     .fabs = "abs", .fmax = "max",
     .unit_roundoff = 0x1p-24, /* round to nearest */
     .diff = "%s - %s", /* in a precise local: evaluated as written */

@@ -9,6 +9,9 @@ static const kern_host_slot host_slots[] = {
     {"ARG_PLANES", 2, "global float *planes: the values d[p*L + P], or NULL", 0},
     {"ARG_EYE", 3, "float4 eye (cl_float4)", 0},
     {"ARG_PATCH_COUNT", 4, "uint patch_count (cl_uint)", 0},
+    {"ARG_INDICES", 5, "global const uint *point_index: the indices, K a patch", KERN_SLOT_INDEXED},
+    {"ARG_BOUNDARY", 6, "global const uint *boundary_mask: the boundary masks, one a patch",
+     KERN_SLOT_BOUNDARY},
     {NULL, 0, NULL, 0}};
 
 const kern_target kern_opencl = {
@@ -30,6 +33,10 @@ const kern_target kern_opencl = {
         " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count): planes receives d[p*L + P] when not\n"
         " * NULL. Work-group size exactly P*Q; ceil(patch_count / Q) work-groups, 1-D or 2-D:\n"
         " * work-group (x, y) handles the patches of block y * num_groups(0) + x.\n",
+    .indices_decl = ",\n                        global const uint *point_index",
+    .boundary_decl = ", global const uint *boundary_mask",
+    .indices_note = " * Argument 5 point_index, the indices (K a patch).\n",
+    .boundary_note = " * Argument 6 boundary_mask, the boundary masks (one a patch).\n",
     .fabs = "fabs", .fmax = "fmax",
     .unit_roundoff = 0x1p-24, /* round to nearest */
     .diff = "%s - %s", /* C semantics: no reassociation; FP_CONTRACT OFF */

@@ -84,7 +84,10 @@ static const kern_host_slot host_slots[] = {
     {"GROUP", 0, "bind group of every binding", 0},
     {"BINDING_POINTS", 0, "storage, read-only: the control points, array<vec4<f32>>", 0},
     {"BINDING_CLASSES", 1, "storage: the classes, array<u32>", 0},
-    {"BINDING_PLANES", 2, "storage: the values d[p*L + P], array<f32>", 1},
+    {"BINDING_PLANES", 2, "storage: the values d[p*L + P], array<f32>", KERN_SLOT_PLANES},
+    {"BINDING_INDICES", 4, "storage, read-only: the indices, K a patch, array<u32>", KERN_SLOT_INDEXED},
+    {"BINDING_BOUNDARY", 5, "storage, read-only: the boundary masks, one a patch, array<u32>",
+     KERN_SLOT_BOUNDARY},
     {"BINDING_PARAMS", 3, "uniform: Params, sizeof(params) bytes", 0},
     {NULL, 0, NULL, 0}};
 
@@ -108,6 +111,10 @@ const kern_target kern_wgsl = {
         " * rest of the padding, must be 0). Entry point main. Dispatch ceil(patch_count / Q)\n"
         " * workgroups, in 2-D (x, y) when x would exceed the limit: workgroup (x, y) handles the\n"
         " * patches of block y * num_workgroups.x + x.\n",
+    .indices_decl = "@group(0) @binding(4) var<storage, read> point_index: array<u32>;\n",
+    .boundary_decl = "@group(0) @binding(5) var<storage, read> boundary_mask: array<u32>;\n",
+    .indices_note = " * Binding 4 the indices point_index (array<u32>, K a patch).\n",
+    .boundary_note = " * Binding 5 the boundary masks boundary_mask (array<u32>, one a patch).\n",
     .fabs = "abs", .fmax = "max",
     .unit_roundoff = 0x1p-23, /* no rounding mode specified: either neighbour */
     .diff = "sub_rn(%s, %s)", /* the template's difference that no reassociation crosses */

@@ -16,13 +16,17 @@ typedef struct {
     unsigned offset;
 } kern_host_field;
 
+/* When a host slot exists: always, with --planes, with --kernel indexed, or with --kernel
+ * indexed --basis bspline. */
+enum { KERN_SLOT_ALWAYS, KERN_SLOT_PLANES, KERN_SLOT_INDEXED, KERN_SLOT_BOUNDARY };
+
 /* A binding slot or argument index the host header declares as PREFIX_NAME (--host-header): the
- * name after the prefix, its value, what it is, and whether it exists only with --planes. */
+ * name after the prefix, its value, what it is, and when it exists (KERN_SLOT_). */
 typedef struct {
     const char *name;
     long value;
     const char *comment;
-    int planes_only;
+    int when;
 } kern_host_slot;
 
 /* A variable of a local declaration: its name, its initializer (NULL: none; the kernel assigns
@@ -83,9 +87,10 @@ typedef struct {
 
 /* What differs between the GPU targets: one table per target (kern_glsl in emit_glsl.c, ...).
  * A string field documented "or NULL" may be left out of the initializer. The kernel's text
- * names what its template declares: cp (the points, vec4), cls (the classes), planes, eye and
- * patch_count. A new target is a file with its table (and, outside the C family, its
- * kern_syntax), its template templates/<name>/, and an entry naming the table in emit/targets.c. */
+ * names what its template declares: cp (the points, vec4), cls (the classes), planes, eye,
+ * patch_count and, in its slot INDEXED, indices_decl and boundary_decl. A new target is a file
+ * with its table (and, outside the C family, its kern_syntax), its template templates/<name>/,
+ * and an entry naming the table in emit/targets.c. */
 struct kern_target {
     const char *name;          /* "glsl" */
     const char *language;      /* for the banner: "GLSL 4.50 compute shader" */
@@ -113,6 +118,11 @@ struct kern_target {
     const char *planes_buffer; /* file-scope declaration of the values buffer (with --planes), or
                                   NULL when it is a kernel parameter that may be null */
     const char *interface;     /* the banner's description of bindings / signature and dispatch */
+    /* --kernel indexed: the declarations of the indices (uint, K a patch) and of the boundary
+     * masks (--basis bspline: uint, one a patch), read-only buffers point_index and
+     * boundary_mask: whole file-scope lines, or a named kernel's parameters after patch_count,
+     * each from its comma; and the banner's lines on each */
+    const char *indices_decl, *boundary_decl, *indices_note, *boundary_note;
     const char *fabs, *fmax;   /* absolute value and maximum of floats (--certified) */
     double unit_roundoff;      /* --certified: the largest relative error of one float + - *:
                                   0x1p-24 rounding to nearest, 0x1p-23 where the language lets a

@@ -93,6 +93,7 @@ void kgpu_dispatch(const out_info *info, unsigned *threads, unsigned *patches)
 /* A kernel's parts, each written into its own buffer before the template is filled. */
 typedef struct {
     sbuf banner, tables, shared, funcs, body;
+    sbuf indexed; /* --kernel indexed: the declarations of its buffers (the slot INDEXED) */
 } kernel_parts;
 
 /* Fills g's template with the parts p and the workgroup of kgpu_dispatch. */
@@ -116,10 +117,32 @@ static int fill_kernel(sbuf *o, const kernel_parts *p, const out_info *info, con
         slots[n++] = (tpl_slot){"SHARED", p->shared.s ? p->shared.s : ""};
     if (g->planes_buffer)
         slots[n++] = (tpl_slot){"PLANES_BUFFER", info->planes ? g->planes_buffer : ""};
+    slots[n++] = (tpl_slot){"INDEXED", p->indexed.s ? p->indexed.s : ""};
     if (p->banner.failed || p->tables.failed || p->shared.failed || p->funcs.failed ||
-        p->body.failed)
+        p->body.failed || p->indexed.failed)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing the kernel");
     return tpl_fill(o, g->template_name, slots, n, err);
+}
+
+/* --kernel indexed: the banner's interface, g's with the notes on its buffers; else nothing. */
+static void put_interface(sbuf *o, const out_info *info, const kern_target *g)
+{
+    if (!info->indexed)
+        return;
+    sbuf_printf(o, "%s * --kernel indexed: point k of patch p is cp[point_index[p*K + k]], cp the vertices.\n%s",
+                g->interface, g->indices_note);
+    if (info->bspline)
+        sbuf_printf(o, "%s * A mask's bits (1 v = 0, 2 u = 1, 4 v = 1, 8 u = 0: Far::PatchParam::GetBoundary())\n"
+                       " * name the edges whose phantoms are extrapolated, p0 = 2 p1 - p2, as C's extrapolate.\n",
+                    g->boundary_note);
+}
+
+/* --kernel indexed: the declarations of its buffers; else nothing. */
+static void put_indexed(sbuf *o, const out_info *info, const kern_target *g)
+{
+    if (!info->indexed)
+        return;
+    sbuf_printf(o, "%s%s", g->indices_decl, info->bspline ? g->boundary_decl : "");
 }
 
 /* The kernel: the paper's table kernel (P threads a patch over the schedule's rounds, shared
@@ -130,14 +153,21 @@ static int emit_kernel(sbuf *o, const tp_table *t, const out_info *info, const k
     int table = kgpu_table_kernel(info), st;
     out_info in = *info;
     kernel_parts p;
+    sbuf iface; /* --kernel indexed: the banner's interface */
+    sbuf_init(&iface);
     sbuf_init(&p.banner);
     sbuf_init(&p.tables);
     sbuf_init(&p.shared);
     sbuf_init(&p.funcs);
     sbuf_init(&p.body);
+    sbuf_init(&p.indexed);
     if (!table)
         in.sched = NULL; /* the banner states the straight-line dispatch */
-    fmt_banner(&p.banner, t, &in, file, g->language, g->interface);
+    put_interface(&iface, info, g);
+    fmt_banner(&p.banner, t, &in, file, g->language, iface.s ? iface.s : g->interface);
+    p.banner.failed |= iface.failed; /* fill_kernel reports it */
+    sbuf_clear(&iface);
+    put_indexed(&p.indexed, info, g);
     if (table) {
         st = kgpu_tables(&p.tables, t, info, g, up, err);
         kgpu_functions(&p.funcs, info, g);
@@ -155,6 +185,7 @@ static int emit_kernel(sbuf *o, const tp_table *t, const out_info *info, const k
     sbuf_clear(&p.shared);
     sbuf_clear(&p.funcs);
     sbuf_clear(&p.body);
+    sbuf_clear(&p.indexed);
     return st;
 }
 

@@ -151,8 +151,9 @@ void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const cha
 int kgpu_slp_kernel_parts(sbuf *tables, sbuf *funcs, const tp_table *t, const out_info *info,
                           const kern_target *g, const char *up, ptp_error *err);
 
-/* The straight-line kernel's body: invocation pid copies patch pid's points and calls
- * classify_patch (with --planes, values too). */
+/* The straight-line kernel's body: invocation pid copies patch pid's points (--kernel indexed:
+ * through its indices, with B-spline input its boundary's phantoms) and calls classify_patch
+ * (with --planes, values too). */
 void kgpu_slp_body(sbuf *o, const tp_domain *dom, const out_info *info, const kern_target *g,
                    const char *up);
 

@@ -2,6 +2,7 @@
  * values for any shader stage, and the compute kernel that runs one patch an invocation on them. */
 #include "emit/kern_gpu.h"
 #include "emit/slp_text.h"
+#include "plan/phantom.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -156,13 +157,47 @@ static void put_slp_constants(sbuf *o, const tp_table *t, const out_info *info,
     sbuf_puts(o, "\n");
 }
 
+/* --kernel indexed --basis bspline: the phantoms of the edges whose bits the patch's mask sets,
+ * p0 = 2 p1 - p2 per component, bit 0 to 3 in turn as the C header's extrapolate. */
+static void put_phantoms(sbuf *o, const out_info *info, const kern_target *g)
+{
+    int q[4][4][3], b, k, c;
+    char p1[32], e[96];
+    phantom_table(q, info->vmajor);
+    kgpu_local(o, g, g->uint, "mask", "boundary_mask[pid]", 0);
+    for (b = 0; b < 4; b++) {
+        sbuf_printf(o, "    if ((mask & %uu) != 0u) {\n", 1u << b);
+        for (k = 0; k < 4; k++)
+            for (c = 0; c < 4; c++) {
+                snprintf(p1, sizeof p1, "p[%d].%c", q[b][k][1], "xyzw"[c]);
+                sbuf_printf(o, "        p[%d].%c = %s - p[%d].%c;\n", q[b][k][0], "xyzw"[c],
+                            kgpu_mul(e, sizeof e, g, "2.0f", p1), q[b][k][2], "xyzw"[c]);
+            }
+        sbuf_puts(o, "    }\n");
+    }
+}
+
+/* Copies patch pid's K points into p: from cp[pid*K + n], or (--kernel indexed) from
+ * cp[point_index[pid*K + n]] with, for B-spline input, the boundary's phantoms. */
+static void put_gather(sbuf *o, const tp_domain *dom, const out_info *info,
+                       const kern_target *g, const char *k)
+{
+    int n;
+    for (n = 0; n < dom->npoints; n++) /* unrolled: PoCL keeps a loop's array in memory */
+        if (info->indexed)
+            sbuf_printf(o, "    p[%d] = cp[point_index[pid * %s + %du]];\n", n, k, n);
+        else
+            sbuf_printf(o, "    p[%d] = cp[pid * %s + %du];\n", n, k, n);
+    if (info->indexed && info->bspline)
+        put_phantoms(o, info, g);
+}
+
 void kgpu_slp_body(sbuf *o, const tp_domain *dom, const out_info *info, const kern_target *g,
                    const char *up)
 {
     const char *px = info->prefix, *in = g->planes_buffer ? "    " : "        ";
     char pid[256], arg[64], k[80], l[80];
     kern_var i = {"i", NULL, 1};
-    int n;
     snprintf(pid, sizeof pid, "(%s * %s + %s) * %sQ + %s", g->group_y, g->groups_x, g->group_x, up,
              g->local_id);
     snprintf(k, sizeof k, "%sK", up);
@@ -175,8 +210,7 @@ void kgpu_slp_body(sbuf *o, const tp_domain *dom, const out_info *info, const ke
     kgpu_then(o, g);
     sbuf_puts(o, "        return;\n");
     kgpu_end(o, g, "    ");
-    for (n = 0; n < dom->npoints; n++) /* unrolled: PoCL keeps a loop's array in memory */
-        sbuf_printf(o, "    p[%d] = cp[pid * %s + %du];\n", n, k, n);
+    put_gather(o, dom, info, g, k);
     sbuf_printf(o, "    cls[pid] = %sclassify_patch(p, eye%s);\n", px, kgpu_opt(g->slp_zero));
     if (!info->planes)
         return;

@@ -34,6 +34,8 @@ typedef struct {
     int table;           /* GPU: the paper's table kernel, sched's P threads a patch (also with
                             certified; else the straight-line program, one patch an invocation) */
     int functions;       /* GPU: only the functions classify_patch and values, for any stage */
+    int indexed;         /* GPU straight-line kernel: each patch's points through its indices
+                            (with bspline, and its boundary mask: OpenSubdiv's phantoms) */
     int group;           /* GPU straight-line kernel: patches (invocations) per workgroup */
     const plan_slp *slp; /* the straight-line plan (the C header, the GPU straight-line code;
                             tgt_emit_target builds it), or NULL */

@@ -10,7 +10,7 @@
 #endif
 PTP_VK_BINDING(0) StructuredBuffer<float4> cp : register(t0);
 PTP_VK_BINDING(1) RWStructuredBuffer<uint> cls : register(u1);
-{{PLANES_BUFFER}}
+{{PLANES_BUFFER}}{{INDEXED}}
 PTP_VK_PUSH_CONSTANT cbuffer Params : register(b0)
 {
     float4 eye;

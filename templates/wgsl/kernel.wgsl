@@ -7,7 +7,7 @@ struct Params {
 
 @group(0) @binding(0) var<storage, read> cp: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> cls: array<u32>;
-{{PLANES_BUFFER}}@group(0) @binding(3) var<uniform> params: Params;
+{{PLANES_BUFFER}}{{INDEXED}}@group(0) @binding(3) var<uniform> params: Params;
 
 /* x * y rounded to a float: through an integer XOR with a zero known only at run time, which no
  * FMA contraction can cross (WGSL has no `precise`). */
