@@ -4,9 +4,13 @@
 // the surface Far::PatchTable::EvaluateBasis gives: the classes of the default Bezier header on
 // each patch's Bezier points fitted in double to that surface, and the sign of
 // (dB/ds x dB/dt) . (E - B) on a grid of every patch called back or front. Built with ptp_osd.h
-// (implementation) and bz.h, a default world-space header with prefix bz_: osd_check
+// (implementation), bz.h, a default world-space header with prefix bz_, and cs.h, ptp_osd.h's
+// --certified form with prefix cs_: osd_check [DIR]
+// With DIR, each check also writes what tests/host_indexed.c reads into DIR/0, DIR/1, ...: the
+// vertices, the indices, the boundary masks, the eyes and classify_indexed_boundary's classes.
 #include "ptp_osd.h"
 #include "bz.h"
+#include "cs.h"
 
 #include <opensubdiv/far/patchTableFactory.h>
 #include <opensubdiv/far/stencilTableFactory.h>
@@ -17,6 +21,8 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <string>
+#include <sys/stat.h>
 #include <vector>
 
 using namespace OpenSubdiv;
@@ -24,6 +30,18 @@ using namespace OpenSubdiv;
 std::vector<unsigned char> osd_cull(const Far::PatchTable &table, const float (*vertices)[4], const float eye[4]);
 
 static int failed;
+static const char *dump_dir; // osd_check DIR
+static int dumps;            // the checks written to it
+
+// Writes the n elements of v to DIR/<dumps>/name; false when it cannot.
+template <class T> static bool dump(const char *name, const std::vector<T> &v)
+{
+    std::string d = std::string(dump_dir) + "/" + std::to_string(dumps);
+    mkdir(d.c_str(), 0777);
+    FILE *f = std::fopen((d + "/" + name).c_str(), "wb");
+    bool good = f && std::fwrite(v.data(), sizeof(T), v.size(), f) == v.size();
+    return f && std::fclose(f) == 0 && good;
+}
 
 static void report(bool good, const char *what, const char *why)
 {
@@ -280,7 +298,12 @@ static void check(const char *name, const Cage &c, int level, const double at[3]
     report(bad_index == 0 && n > 0, what, why);
     if (bad_index)
         return;
-    std::vector<unsigned char> ref(n), none(n);
+    std::vector<unsigned char> ref(n), none(n), masks(n), cert(n), dumped;
+    size_t cert_culled = 0, cert_flips = 0, cert_wrong = 0;
+    std::vector<float> eyes;
+    const uint32_t *indices = (const uint32_t *)m.table->GetPatchControlVerticesTable().data();
+    for (size_t p = 0; p < n; p++)
+        masks[p] = (unsigned char)params[p].GetBoundary();
     Refined g = refine(c, level, Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
     size_t gculled = 0, gviews = 0, gpatches = 0, gcaps = 0;
     for (int k = 0; k < neyes; k++) {
@@ -296,7 +319,13 @@ static void check(const char *name, const Cage &c, int level, const double at[3]
         bz_classify_batch((const float(*)[4])bz.data(), n, eye, ref.data());
         gculled += gregory_culls(g, eye, &gpatches, &gcaps);
         gviews += gpatches;
-        ptp_osd_classify_indexed((const float(*)[4])m.v.data(), (const uint32_t *)m.table->GetPatchControlVerticesTable().data(), n, eye, none.data());
+        ptp_osd_classify_indexed((const float(*)[4])m.v.data(), indices, n, eye, none.data());
+        cs_classify_indexed_boundary((const float(*)[4])m.v.data(), indices, masks.data(), n, eye, cert.data());
+        if (dump_dir) { // the reference of the GPU's indexed kernel
+            dumped.resize(dumped.size() + n);
+            ptp_osd_classify_indexed_boundary((const float(*)[4])m.v.data(), indices, masks.data(), n, eye, &dumped[dumped.size() - n]);
+            eyes.insert(eyes.end(), eye, eye + 4);
+        }
         for (size_t p = 0; p < n; p++) {
             views++;
             culled += cls[p] == BZ_BACK;
@@ -305,6 +334,10 @@ static void check(const char *name, const Cage &c, int level, const double at[3]
             unmasked += none[p] != ref[p];
             if (cls[p] != BZ_SILHOUETTE)
                 wrong += contradicts(m, array[p], inner[p], (int)p, e, cls[p]);
+            cert_culled += cert[p] == BZ_BACK;
+            cert_flips += cert[p] != BZ_SILHOUETTE && cert[p] != cls[p];
+            if (cert[p] != BZ_SILHOUETTE)
+                cert_wrong += contradicts(m, array[p], inner[p], (int)p, e, cert[p]);
         }
     }
     std::snprintf(what, sizeof what, "%s, level %d, %d eyes: classes = the Bezier header's on points fitted to "
@@ -316,16 +349,28 @@ static void check(const char *name, const Cage &c, int level, const double at[3]
                   "dB/ds x dB/dt on a 7 x 7 grid", name, level);
     std::snprintf(why, sizeof why, "%zu patch-views contradict it", wrong);
     report(wrong == 0, what, why);
+    std::snprintf(what, sizeof what, "%s, level %d: --certified gives up %zu of %zu culls, and calls no patch back "
+                  "or front that the plain header or EvaluateBasis's grid does not", name, level, culled - cert_culled, culled);
+    std::snprintf(why, sizeof why, "%zu against the plain header, %zu against the grid", cert_flips, cert_wrong);
+    report(cert_flips == 0 && cert_wrong == 0 && cert_culled * 100 >= culled * 99, what, why);
     if (boundary) {
         std::snprintf(what, sizeof what, "%s, level %d: without the boundary masks %zu patch-views differ", name, level, unmasked);
         report(unmasked > differ, what, "the masks change nothing");
+    }
+    if (dump_dir) {
+        std::vector<uint32_t> b(masks.begin(), masks.end()), ix(indices, indices + 16 * n);
+        std::snprintf(what, sizeof what, "%s, level %d: written to %s/%d", name, level, dump_dir, dumps);
+        report(dump("vertices", m.v) && dump("indices", ix) && dump("boundary", b) && dump("eyes", eyes) &&
+                   dump("classes", dumped), what, "cannot write the files");
+        dumps++;
     }
     std::printf("# %s, level %d: culled %.2f%% with B-spline end caps, %.2f%% with Gregory end caps (%zu of %zu "
                 "patches) left unculled\n", name, level, 100.0 * culled / views, 100.0 * gculled / gviews, gcaps, gpatches);
 }
 
-int main()
+int main(int argc, char **argv)
 {
+    dump_dir = argc > 1 ? argv[1] : nullptr;
     Lcg r{7};
     const double far_away[3] = {300.0, -200.0, 150.0}; // patches small against their coordinates
     double at[3];
