@@ -368,6 +368,20 @@ static void check(const char *name, const Cage &c, int level, const double at[3]
                 "patches) left unculled\n", name, level, 100.0 * culled / views, 100.0 * gculled / gviews, gcaps, gpatches);
 }
 
+// extrapolate's exactness, which the certified header's classify_indexed_boundary trusts: 2 p1 - p2
+// exact (p1 = 3, p2 = 1) is exact; p1 = 1, p2 = 2^-30 rounds (2 - 2^-30 is not a float).
+static void check_exactness()
+{
+    float cp[16][4] = {}, inexact[16][4] = {};
+    for (int k = 0; k < 16; k++)
+        for (int c = 0; c < 4; c++)
+            cp[k][c] = (float)(k / 4 + 1), inexact[k][c] = (k / 4 == 1) ? 1.0f : std::ldexp(1.0f, -30);
+    // mask 1 (v = 0): rows along v, so v is the row k / 4; row 0's phantoms from rows 1 and 2
+    const int good = cs_extrapolate(cp, 1), bad = cs_extrapolate(inexact, 1);
+    report(good == 1 && cp[0][0] == 1.0f && bad == 0, "extrapolate tells exact phantoms (2 p1 - p2) from rounded ones",
+           "it does not");
+}
+
 int main(int argc, char **argv)
 {
     dump_dir = argc > 1 ? argv[1] : nullptr;
@@ -384,6 +398,7 @@ int main(int argc, char **argv)
     add_prism(open, 8, false, true, at, r); // an open tube: boundary loops
     at[0] = far_away[0] - 2.5;
     add_disc(open, 5, at, r);                 // valence 5 inside, a boundary around
+    check_exactness();
     for (int level = 2; level <= 3; level++) {
         at[0] = far_away[0] + 3, at[1] = far_away[1], at[2] = far_away[2];
         check("closed cage", closed, level, at, 40, r);
