@@ -107,20 +107,6 @@ mutant_caught strict 'ER3 \* 0x1p-10f' "a certified C header with its bounds 2^1
 # E R^3 for every monomial, the bound was about twice as loose, and such a mutant was unsafe once).
 "$P" --degree 3 --space clip --certified --target c --prefix ptp_3x3_ -o "$tmp/k.h" && sed -i 's/\* ER3 + /* ER3 * 0x1p-6f + /; s/, ER3, PTP_3X3_VABS/, ER3 * 0x1p-6f, PTP_3X3_VABS/' "$tmp/k.h"
 mutant_caught strict 'ER3 \* 0x1p-6f' "a certified C header with its bounds 2^6 times too small" "$cert_data"
-# gives_up_little NAME OUT [PCT]: the host output OUT on random and teapot patches (a quarter with
-# a collapsed edge) gives up at most PCT% (default 1) of the back or front patches (its first
-# "given up" line); a host with no GPU prints none: skipped.
-gives_up_little() {
-    local g n pct=${3:-1}
-    printf '%s\n' "$2" | grep -q 'no CUDA device here' && return 0
-    read -r g n < <(printf '%s\n' "$2" | grep -m1 'front.*certified: given up' |
-        sed 's/.*given up \([0-9]*\) of \([0-9]*\) back or front.*/\1 \2/')
-    if [ "${n:-0}" -gt 400 ] && [ $((100 * g)) -le $((pct * n)) ]; then
-        ok "$1: gives up $g of $n back or front on random and teapot patches (at most $pct%)"
-    else
-        notok "$1: gives up at most $pct% of back or front on random and teapot patches" "${g:-?} of ${n:-?}"
-    fi
-}
 # Certified C headers under the degenerate rule: a plane that a collapsed boundary edge zeros is
 # exactly 0 there, so they keep the degenerate rule's culls of such patches (the teapot's lid and
 # bottom, and the random sets' collapsed quarter) while staying safe on the exact data. Headers

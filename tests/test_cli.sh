@@ -418,10 +418,12 @@ for opt in space rule planes certified refine prefix schedule kernel; do
 done
 # The GPU targets' two forms: options of one are refused with the other, each with one line.
 expect_fail "--threads-per-patch needs the table kernel on a GPU target" 2 "--threads-per-patch applies to --kernel table$" --degree 3 --target glsl --threads-per-patch 4
-expect_fail "--kernel slp is not certified" 2 "--certified GPU code is the table kernel" --degree 3 --target cuda --certified --kernel slp
+expect_fail "WGSL's straight-line code is not certified" 2 "--certified wgsl code is the table kernel" --degree 3 --target wgsl --certified --kernel slp
+expect_fail "--certified --kernel indexed is refused" 2 "--kernel indexed is not certified" --degree 3 --target glsl --certified --kernel indexed
+expect_fail "--certified GPU B-spline input is refused" 2 "with --certified is the C target's" --degree 3 --target glsl --certified --kernel slp --basis bspline
 expect_fail "--stage function with --kernel table is refused" 2 "not --kernel table$" --degree 3 --target hlsl --stage function --kernel table
 expect_fail "--stage function with --planes is refused" 2 "--planes applies to kernels" --degree 3 --target wgsl --stage function --planes
-expect_fail "--stage function with --certified is refused" 2 "is the table kernel" --degree 3 --target glsl --stage function --certified
+expect_fail "--stage function --certified is refused for WGSL" 2 "is the table kernel" --degree 3 --target wgsl --stage function --certified
 expect_fail "an unknown --kernel is named" 2 "kernel" --degree 3 --target glsl --kernel fast
 expect_fail "--planes for the C header is refused" 2 "--planes applies to targets glsl, hlsl, opencl, cuda, wgsl \\(not c\\)$" --degree 3 --target c --planes
 expect_fail "--space for json is refused" 2 "--space applies to targets c, glsl, hlsl, opencl, cuda, wgsl \\(not json\\)" --degree 3 --space world

@@ -77,10 +77,14 @@ static void usage_options(sbuf *o)
         "                   --certified in double, every value with a bound on its error\n"
         "  --prefix NAME    prefix of generated names (default ptp_NxM_ or ptp_triN_, then world_,\n"
         "                   degenerate_, bspline_, vmajor_, absolute_, certified_, refineK_ for\n"
-        "                   the options given); a _ is appended when NAME does not end in one\n"
+        "                   the options given); a _ is appended when NAME does not end in one\n",
+        CLI_MAX_REFINE);
+    sbuf_printf(o,
         "  --kernel K       GPU targets: slp (default): one patch an invocation, the\n"
-        "                   straight-line program; table (the default with --certified): the\n"
-        "                   paper's kernel, P threads a patch over the term table; indexed:\n"
+        "                   straight-line program (--certified: float only, a patch whose\n"
+        "                   bounds do not clear is silhouette; not WGSL); table (the default\n"
+        "                   with --certified): the paper's kernel, P threads a patch over the\n"
+        "                   term table, with a second look in double-float; indexed:\n"
         "                   slp's, reading each patch's points from a vertex buffer through K\n"
         "                   indices a patch (--basis bspline: and OpenSubdiv's boundary masks)\n"
         "  --stage S        GPU targets: kernel (default): a compute kernel; function: only\n"
@@ -109,7 +113,7 @@ static void usage_options(sbuf *o)
         "  --list-targets   list the targets, one a line: name, file suffix (- for none),\n"
         "                   the options it uses (comma-separated, - for none), description\n"
         "\n",
-        CLI_MAX_REFINE, SCHED_MAX_THREADS, SCHED_BLOCK_THREADS, OUT_SLP_GROUP, CLI_MAX_COUNT);
+        SCHED_MAX_THREADS, SCHED_BLOCK_THREADS, OUT_SLP_GROUP, CLI_MAX_COUNT);
 }
 
 void cli_usage(sbuf *o)
@@ -457,20 +461,20 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
     return PTP_OK;
 }
 
-/* The GPU targets' form: --certified takes the table kernel unless --kernel says otherwise, and
- * the options of one form do not go with the other. */
+/* The GPU targets' form: a --certified kernel is the table kernel unless --kernel slp says
+ * otherwise, and the options of one form do not go with the other. */
 static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
 {
     if (!(o->target->options & TGT_KERNEL))
         return PTP_OK;
-    if (o->certified && o->functions)
-        return ptp_fail(err, PTP_EUSAGE, "--stage function writes the straight-line functions, "
-                                         "which are not certified (--certified GPU code is the "
-                                         "table kernel)");
-    if (o->certified && !(seen >> OPT_KERNEL & 1))
+    if (o->certified && !o->functions && !(seen >> OPT_KERNEL & 1))
         o->table = 1;
-    if (o->certified && !o->table)
-        return ptp_fail(err, PTP_EUSAGE, "--certified GPU code is the table kernel (--kernel table)");
+    if (o->certified && !o->table && !o->target->gpu->slp_cert_u)
+        return ptp_fail(err, PTP_EUSAGE, "--certified %s code is the table kernel (the language may "
+                                         "reassociate the straight-line program's sums)",
+                        o->target->name);
+    if (o->certified && o->indexed)
+        return ptp_fail(err, PTP_EUSAGE, "--kernel indexed is not certified (--kernel slp or table)");
     if (o->table && seen >> OPT_COORDINATES & 1)
         return ptp_fail(err, PTP_EUSAGE, "--coordinates applies to the straight-line program; "
                                          "--kernel table reads the coordinates as given");
@@ -514,6 +518,8 @@ static int check_input(const cli_options *o, ptp_error *err)
                         o->refine ? "--refine" : "--kernel table",
                         o->certified && !o->refine ? "; --certified GPU code is the table kernel, "
                                                      "--certified C code takes it" : "");
+    if (o->certified && (o->target->options & TGT_KERNEL))
+        return ptp_fail(err, PTP_EUSAGE, "%s with --certified is the C target's", what);
     return PTP_OK;
 }
 

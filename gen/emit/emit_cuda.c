@@ -52,6 +52,7 @@ const kern_target kern_cuda = {
     .slp_d = "d[%d]",
     .slp_decl = "const float ",
     .slp_fma = "__fmaf_rn(%s, %s, %s)",
+    .slp_cert_u = 0x1p-24, /* __fmaf_rn rounds once */
     .slp_ref = "%s",
     .slp_suffix = ".cuh",
     .slp_language = "CUDA device functions",

@@ -49,6 +49,7 @@ const kern_target kern_opencl = {
     .slp_d = "d[%d]",
     .slp_decl = "const float ",
     .slp_fma = "fma(%s, %s, %s)",
+    .slp_cert_u = 0x1p-24, /* fma rounds once */
     .slp_ref = "%s",
     .slp_preamble = "#pragma OPENCL FP_CONTRACT OFF\n\n",
     .slp_note = " * The points are private memory (an array the caller copies them into). The file sets\n"

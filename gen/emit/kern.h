@@ -85,6 +85,10 @@ typedef struct {
     int braces;        /* 1: bodies of for and if are always braced; 0: a single statement is not */
 } kern_syntax;
 
+/* slp_cert_shift for languages with `precise float` (GLSL, HLSL): Dekker's exact product on
+ * Veltkamp's split, as written (kern_gpu_slp_cert.c). */
+extern const char kern_precise_shift[];
+
 /* What differs between the GPU targets: one table per target (kern_glsl in emit_glsl.c, ...).
  * A string field documented "or NULL" may be left out of the initializer. The kernel's text
  * names what its template declares: cp (the points, vec4), cls (the classes), planes, eye,
@@ -158,6 +162,15 @@ struct kern_target {
     const char *slp_d;        /* values' element P of d, printf format of P: "d[%d]" */
     const char *slp_decl;     /* declares float locals that no contraction crosses: "precise float " */
     const char *slp_fma;      /* an explicitly fused a * b + c, printf format of a, b, c */
+    /* --certified straight-line code: the largest relative error of one of its operations:
+     * 0x1p-24 where slp_fma rounds once; 0x1p-23 (and a little) where it may round the product and
+     * the sum apart (Vulkan's precision of Fma, HLSL's precise mad); 0: not certified (WGSL, which
+     * may reassociate) */
+    double slp_cert_u;
+    /* --certified straight-line code where slp_fma may round its product apart: the definition of
+     * <prefix>shift(o, w, x), x + o * w with the product exact, which the shear then calls,
+     * printf format of the prefix; NULL: slp_fma rounds once */
+    const char *slp_cert_shift;
     /* the program's product, printf format of the prefix giving that of a and b, or NULL: mul */
     const char *slp_mul;
     const char *slp_helpers;  /* functions the program calls, printf format of the prefix, or NULL */

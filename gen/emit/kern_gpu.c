@@ -31,7 +31,7 @@ void kgpu_local(sbuf *o, const kern_target *g, const char *type, const char *nam
 
 int kgpu_second_look(const out_info *info, const kern_target *g)
 {
-    return info->certified && g->vec2;
+    return info->certified && info->table && g->vec2;
 }
 
 int kgpu_second_look_rounds(const out_info *info, const kern_target *g)
@@ -41,12 +41,12 @@ int kgpu_second_look_rounds(const out_info *info, const kern_target *g)
 
 int kgpu_exact_zeros(const out_info *info)
 {
-    return info->certified && info->rule == OUT_DEGENERATE;
+    return info->certified && info->rule == OUT_DEGENERATE && !info->bspline;
 }
 
 int kgpu_differences(const out_info *info, const kern_target *g)
 {
-    return info->certified && g->diff;
+    return info->certified && info->table && g->diff;
 }
 
 char *kgpu_product(char *out, size_t size, const kern_target *g, const char *brk, int n,
@@ -76,7 +76,7 @@ char *kgpu_group(char *out, size_t size, const kern_target *g, const char *e)
 
 int kgpu_table_kernel(const out_info *info)
 {
-    return info->table || info->certified;
+    return info->table;
 }
 
 void kgpu_dispatch(const out_info *info, unsigned *threads, unsigned *patches)
@@ -219,8 +219,6 @@ int kern_emit_gpu(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     char up[64], file[96];
     fmt_upper(up, sizeof up, info->prefix);
     fmt_file_name(file, sizeof file, info->prefix, info->functions ? g->slp_suffix : info->suffix);
-    if (info->functions && info->certified)
-        return ptp_fail(err, PTP_EUSAGE, "the straight-line functions are not certified");
     if (info->functions)
         return emit_functions(o, t, info, g, file, err);
     return emit_kernel(o, t, info, g, up, file, err);

@@ -4,6 +4,7 @@
 #define KERN_GPU_H
 
 #include "emit/kern.h"
+#include "emit/slp_text.h"
 
 /* kern_gpu.c: the words every part writes with, and the options they test. */
 
@@ -20,22 +21,24 @@ void kgpu_end(sbuf *o, const kern_target *g, const char *indent);
 void kgpu_local(sbuf *o, const kern_target *g, const char *type, const char *name,
                 const char *init, int assigned);
 
-/* Whether the kernel is the paper's table kernel: --kernel table, or --certified (whose GPU code
- * is only the table kernel); else the straight-line kernel. */
+/* Whether the kernel is the paper's table kernel (--kernel table, the default with --certified);
+ * else the straight-line kernel. */
 int kgpu_table_kernel(const out_info *info);
 
-/* Whether the kernel has the second look: --certified on a target with double-float. */
+/* Whether the kernel has the second look: the certified table kernel on a target with
+ * double-float (the certified straight-line code has none: it gives up instead). */
 int kgpu_second_look(const out_info *info, const kern_target *g);
 
 /* Whether the second look sums its planes again from the rounds' tables (no df_table): the
  * weights' low parts and the accumulators' low parts acc2 are emitted for it. */
 int kgpu_second_look_rounds(const out_info *info, const kern_target *g);
 
-/* Whether the kernel knows exact zeros: --certified under the degenerate rule, where a plane that
- * a collapsed boundary edge zeros counts as exactly 0 (both <= 0 and >= 0), as in the C header. */
+/* Whether the code knows exact zeros: --certified under the degenerate rule on Bezier input, where
+ * a plane that a collapsed boundary edge zeros counts as exactly 0 (both <= 0 and >= 0), as in
+ * the C header. */
 int kgpu_exact_zeros(const out_info *info);
 
-/* Whether the terms read differences of points (the target's diff, --certified). */
+/* Whether the table kernel's terms read differences of points (the target's diff, --certified). */
 int kgpu_differences(const out_info *info, const kern_target *g);
 
 /* Writes to out (size bytes, truncating as snprintf) the product of the n factors f, left to
@@ -146,6 +149,20 @@ void kgpu_df_weight_lo(sbuf *o, const tp_table *t, const out_info *info, const k
 void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const char *up);
 
 /* kern_gpu_slp.c: the straight-line kernel, one patch an invocation. */
+
+/* kern_gpu_slp_cert.c: --certified straight-line code (classify_patch), float only: a patch
+ * whose bounds do not clear is silhouette (docs/errors.md). */
+
+/* Declares, after slpt_frame and before the planes, the certified scale of the patch: the
+ * magnitudes Rc, E, R, ER3, F, the bool clear (the patch small enough and, once every plane has
+ * passed kgpu_slp_cert_plane, every value clear of its bound) and, with kgpu_exact_zeros, fin and
+ * col<e> (boundary edge e collapsed as given). PTP_OK or PTP_ENOMEM. */
+int kgpu_slp_cert_head(slpt_writer *w, const tp_domain *d, const out_info *info,
+                       const kern_target *g, ptp_error *err);
+/* Appends plane's bound on its value v (at p's scale): clear stays set only where |v| - K_P ER3 >
+ * F, or where a collapsed edge zeros the plane exactly. */
+void kgpu_slp_cert_plane(sbuf *o, const slp_prog *p, const out_info *info, const kern_target *g,
+                         int plane);
 
 /* The straight-line kernel's constants P (1), Q, K, L into tables and its functions into funcs. */
 int kgpu_slp_kernel_parts(sbuf *tables, sbuf *funcs, const tp_table *t, const out_info *info,

@@ -46,6 +46,8 @@ static void fn_plane_end(slpt_writer *w, int plane, int first)
             sbuf_printf(w->o, "    %s = v;\n", d);
         return;
     }
+    if (x->info->certified)
+        kgpu_slp_cert_plane(w->o, w->p, x->info, g, plane);
     if (x->info->rule == OUT_STRICT) {
         if (first)
             sbuf_printf(w->o, "    lt = v < 0.0f;\n    gt = v > 0.0f; /* plane %d */\n", plane);
@@ -79,7 +81,8 @@ static void put_slp_locals(sbuf *o, const out_info *info, const kern_target *g, 
 }
 
 /* The class from the flags: strict back (1) iff lt, front (0) iff gt; degenerate silhouette (2)
- * on NaN, back iff no value > 0, front iff none < 0; else silhouette. */
+ * on NaN, back iff no value > 0, front iff none < 0; else silhouette; certified, silhouette
+ * unless every value clears its bound. */
 static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g)
 {
     char a[128], b[192], c[256];
@@ -91,6 +94,10 @@ static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g)
         g->syntax->select(c, sizeof c, "gt", a, "1u");
         g->syntax->select(b, sizeof b, "nan", "2u", c);
     }
+    if (info->certified) {
+        snprintf(c, sizeof c, "(%s)", b);
+        g->syntax->select(b, sizeof b, "clear", c, "2u");
+    }
     sbuf_printf(o, "    return %s;\n", b);
 }
 
@@ -98,8 +105,8 @@ static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g)
 static int put_slp_function(sbuf *o, const tp_table *t, const out_info *info,
                             const kern_target *g, int values, ptp_error *err)
 {
-    char name[128], mul[160], fma[96];
-    slpt_syntax syn = {"    ", g->slp_decl, 0, mul, fma, fma, fma, fn_recip0, fn_load, fn_plane_end};
+    char name[128], mul[160], fma[96], shift[96];
+    slpt_syntax syn = {"    ", g->slp_decl, 0, mul, fma, fma, shift, fn_recip0, fn_load, fn_plane_end};
     fn_ctx ctx = {g, info, values};
     slpt_writer w;
     int st;
@@ -108,6 +115,10 @@ static int put_slp_function(sbuf *o, const tp_table *t, const out_info *info,
     else
         snprintf(mul, sizeof mul, "%s", g->mul);
     snprintf(fma, sizeof fma, "%s", g->slp_fma);
+    if (info->certified && g->slp_cert_shift)
+        snprintf(shift, sizeof shift, "%sshift(%%s, %%s, %%s)", info->prefix);
+    else
+        snprintf(shift, sizeof shift, "%s", g->slp_fma);
     snprintf(name, sizeof name, "%s%s", info->prefix, values ? "values" : "classify_patch");
     if (values)
         sbuf_printf(o, "/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */\n");
@@ -119,7 +130,10 @@ static int put_slp_function(sbuf *o, const tp_table *t, const out_info *info,
     if ((st = slpt_init(&w, o, info->slp, &syn, info->space == OUT_WORLD, &ctx, err)))
         return st;
     slpt_frame(&w);
-    st = slpt_program(&w, err);
+    if (!values && info->certified)
+        st = kgpu_slp_cert_head(&w, &t->dom, info, g, err);
+    if (!st)
+        st = slpt_program(&w, err);
     slpt_clear(&w);
     if (!values)
         put_slp_return(o, info, g);
@@ -133,6 +147,8 @@ int kgpu_slp_functions(sbuf *o, const tp_table *t, const out_info *info, const k
     int st;
     if (g->slp_helpers)
         sbuf_printf(o, g->slp_helpers, info->prefix);
+    if (info->certified && g->slp_cert_shift)
+        sbuf_printf(o, g->slp_cert_shift, info->prefix);
     st = put_slp_function(o, t, info, g, 0, err);
     return st ? st : put_slp_function(o, t, info, g, 1, err);
 }

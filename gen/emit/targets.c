@@ -32,6 +32,8 @@ int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_i
 {
     out_info in = *info;
     plan_slp plan;
+    /* the straight-line program's rounding: the GPU target's (flushed subnormals), else IEEE's */
+    const cert_model model = g->gpu ? (cert_model){g->gpu->slp_cert_u, 0x1p-126} : CERT_MODEL_IEEE;
     int st;
     in.suffix = g->suffix;
     if (!(g->options & TGT_SPACE)) /* no straight-line code */
@@ -39,7 +41,7 @@ int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_i
     if ((st = plan_slp_build(&plan, t, info->space == OUT_WORLD,
                              (info->absolute ? 0 : PLAN_LOCAL) | (info->bspline ? PLAN_BSPLINE : 0) |
                                  (info->vmajor ? PLAN_VMAJOR : 0),
-                             info->certified, err)))
+                             info->certified && !info->table ? &model : NULL, err)))
         return st;
     in.slp = &plan;
     st = g->gpu ? kern_emit_gpu(o, t, &in, g->gpu, err) : g->emit(o, t, &in, err);

@@ -301,7 +301,7 @@ static void frame_sums(double *d, double *D, const double *S, double *n, int npl
 }
 
 int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, int bspline,
-             ptp_error *err)
+             const cert_model *m, ptp_error *err)
 {
     double *d, *D, *S, *n;
     size_t i;
@@ -324,7 +324,7 @@ int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, int bsplin
         point_sums(d, D, p, i, world);
     if (local || bspline)
         frame_sums(d, D, S, n, p->nplanes, world, local, bspline);
-    fill(b, d, D, S, n, world, 0x1p-150, 0x1p-24); /* IEEE float with subnormals */
+    fill(b, d, D, S, n, world, m->eta, m->u);
     free(d);
     return PTP_OK;
 }

@@ -20,6 +20,16 @@ typedef struct {
     double *k64, *k2_64; /* cert_table: the same for the table loop in double (else NULL) */
     int nplanes;
 } cert_bounds;
+/* A float evaluation's rounding model: u, the largest relative error of one operation (2^-24
+ * rounding to nearest; more where an operation may round twice), and eta, the largest absolute
+ * error of a rounded product that underflows (2^-150 with subnormals, 2^-126 where they may be
+ * flushed to zero). */
+typedef struct {
+    double u, eta;
+} cert_model;
+/* IEEE float with subnormals, every operation rounded once (C). */
+#define CERT_MODEL_IEEE ((cert_model){0x1p-24, 0x1p-150})
+
 /* B-spline input (--basis bspline): the roundings the conversion to Bezier points adds to each
  * factor of a monomial (two sums a pass, two passes), measured against the magnitude 36
  * max |vertex coordinate|, which bounds the sum over the map's weights (36 a point) of the
@@ -49,8 +59,9 @@ int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err);
  * program reads patch-local coordinates, each rounded once (twice counted, for the double
  * route without multiply-add instructions), whose magnitudes M is taken from (docs/errors.md:
  * Patch-local coordinates); bspline: the points are converted from B-spline vertices (after
- * the shift), CERT_BSPLINE_ROUNDINGS a factor, M from 36 times the vertices' magnitudes. */
+ * the shift), CERT_BSPLINE_ROUNDINGS a factor, M from 36 times the vertices' magnitudes; for
+ * operations of model m. */
 int cert_slp(cert_bounds *b, const slp_prog *p, int world, int local, int bspline,
-             ptp_error *err);
+             const cert_model *m, ptp_error *err);
 void cert_clear(cert_bounds *b);
 #endif

@@ -24,8 +24,8 @@ long plan_bspline_flops(int world)
     return (world ? 4 : 3) * 96L;
 }
 
-int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form, int certified,
-                   ptp_error *err)
+int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form,
+                   const cert_model *certified, ptp_error *err)
 {
     int st = slp_build(&p->prog, t, err), local = (form & PLAN_LOCAL) != 0;
     p->cert = p->cert64 = (cert_bounds){0};
@@ -40,7 +40,8 @@ int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form, int cert
                (p->bspline ? plan_bspline_flops(world) : 0);
     p->muls = slp_muls(&p->prog, world) + (local ? plan_frame_muls(t->dom.npoints, world) : 0) +
               (p->bspline ? plan_bspline_muls(world) : 0);
-    if (certified && (st = cert_slp(&p->cert, &p->prog, world, local, p->bspline, err)) == PTP_OK &&
+    if (certified &&
+        (st = cert_slp(&p->cert, &p->prog, world, local, p->bspline, certified, err)) == PTP_OK &&
         (st = cert_table(&p->cert64, t, world, p->bspline, err)) != PTP_OK)
         cert_clear(&p->cert);
     if (st)

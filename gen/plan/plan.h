@@ -33,10 +33,11 @@ long plan_bspline_flops(int world);
 long plan_bspline_muls(int world);
 
 /* Builds the plan of t for world (else clip) space, reading the input form (PLAN_ bits), with
- * the margins of the program and of the second look when certified. p is uninitialized on entry
+ * the margins of the program (for the rounding model certified) and of the second look when
+ * certified is not NULL. p is uninitialized on entry
  * and on failure (PTP_ENOMEM, PTP_EOVERFLOW: slp_build's). */
-int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form, int certified,
-                   ptp_error *err);
+int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form,
+                   const cert_model *certified, ptp_error *err);
 /* Frees p's storage. */
 void plan_slp_clear(plan_slp *p);
 

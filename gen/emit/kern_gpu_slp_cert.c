@@ -1,0 +1,193 @@
+/* kern_gpu_slp_cert.c: --certified straight-line functions on the GPU targets: the patch's
+ * magnitudes and size guard, the collapsed edges, and each plane's bound (docs/errors.md). */
+#include "emit/kern_gpu.h"
+
+#include <stdio.h>
+#include <string.h>
+
+const char kern_precise_shift[] =
+    "/* o * w + x, --certified: the product exact (Dekker's two-product on Veltkamp's split, precise:\n"
+    " * as written), so that the result is rounded about once relative to itself, where the\n"
+    " * language may round fma's product apart (docs/errors.md: The straight-line program on the\n"
+    " * GPU). */\n"
+    "float %sshift(float o, float w, float x)\n{\n"
+    "    precise float p = o * w, co = 4097.0f * o, cw = 4097.0f * w;\n"
+    "    precise float oh = co - (co - o), wh = cw - (cw - w);\n"
+    "    precise float ol = o - oh, wl = w - wh;\n"
+    "    precise float lo = ((oh * wh - p) + oh * wl + ol * wh) + ol * wl;\n"
+    "    precise float s = (x + p) + lo;\n"
+    "    return s;\n}\n\n";
+
+/* Declares one bool or float local name = init, assigned again or not. */
+static void local(slpt_writer *w, const kern_target *g, const char *type, const char *name,
+                  const char *init, int assigned)
+{
+    kgpu_local(w->o, g, type, name, init, assigned);
+}
+
+/* Writes to out (SLPT_EXPR bytes) e as a factor: kgpu_group's, where e has an operator. */
+static char *factor(char *out, const kern_target *g, const char *e)
+{
+    if (strpbrk(e, " +-*/"))
+        return kgpu_group(out, SLPT_EXPR, g, e);
+    if (snprintf(out, SLPT_EXPR, "%s", e) < 0)
+        out[0] = '\0';
+    return out;
+}
+
+/* Writes to out (SLPT_EXPR bytes) the product of a and b in the target's product (CUDA's is
+ * never contracted); returns out. */
+static char *prod(char *out, const kern_target *g, const char *a, const char *b)
+{
+    char x[SLPT_EXPR], y[SLPT_EXPR];
+    return kgpu_mul(out, SLPT_EXPR, g, factor(x, g, a), factor(y, g, b));
+}
+
+/* Writes to out (SLPT_EXPR bytes) the larger of a and b; returns out. */
+static char *larger(char *out, const kern_target *g, const char *a, const char *b)
+{
+    if (snprintf(out, SLPT_EXPR, "%s(%s, %s)", g->fmax, a, b) < 0)
+        out[0] = '\0';
+    return out;
+}
+
+/* Rc = the largest |coordinate c| of the points as the program reads them (Bezier input: the
+ * command line leaves --certified B-spline and v-major input to C). */
+static void put_magnitudes(slpt_writer *w, const tp_domain *d, const out_info *info,
+                           const kern_target *g)
+{
+    char name[8], v[SLPT_EXPR];
+    int world = info->space == OUT_WORLD, k, c;
+    for (c = 0; c < 4; c++)
+        if (world || c != 2) {
+            snprintf(name, sizeof name, "R%c", "xyzw"[c]);
+            local(w, g, g->real, name, "0.0f", 1);
+        }
+    for (k = 0; k < d->npoints; k++)
+        for (c = 0; c < 4; c++)
+            if (world || c != 2) {
+                slpt_coordinate(v, w, k, c);
+                sbuf_printf(w->o, "    R%c = %s(R%c, %s(%s));\n", "xyzw"[c], g->fmax, "xyzw"[c],
+                            g->fabs, v);
+            }
+}
+
+/* E, R and ER3 >= every monomial's magnitude in world space: |e_i| times the other three
+ * coordinates' Rc, the eye the program reads (local: l0..l2). */
+static void put_world_scale(slpt_writer *w, const out_info *info, const kern_target *g)
+{
+    const char *l = info->slp->local ? "l" : "e";
+    char e[32], name[8], a[SLPT_EXPR], b[SLPT_EXPR], c[SLPT_EXPR], d[SLPT_EXPR], s[SLPT_EXPR];
+    int i;
+    for (i = 0; i < 4; i++) {
+        snprintf(e, sizeof e, "%s(%s%d)", g->fabs, i < 3 ? l : "e", i);
+        snprintf(name, sizeof name, "E%d", i);
+        local(w, g, g->real, name, e, 0);
+    }
+    local(w, g, g->real, "E", larger(s, g, larger(a, g, "E0", "E1"), larger(b, g, "E2", "E3")), 0);
+    local(w, g, g->real, "R", larger(s, g, larger(a, g, "Rx", "Ry"), larger(b, g, "Rz", "Rw")), 0);
+    larger(c, g, prod(a, g, "E0", "Ry"), prod(b, g, "E1", "Rx"));
+    prod(d, g, c, prod(a, g, "Rz", "Rw"));
+    larger(c, g, prod(a, g, "E2", "Rw"), prod(b, g, "E3", "Rz"));
+    prod(a, g, c, prod(b, g, "Rx", "Ry"));
+    local(w, g, g->real, "ER3", larger(s, g, d, a), 0);
+}
+
+/* E (the eye's largest |component|), R, ER3 >= every monomial's magnitude (clip: E Rx Ry Rw),
+ * F (the underflow term with the largest K2) and clear: the patch small enough for the bound. */
+static void put_scale(slpt_writer *w, const out_info *info, const kern_target *g)
+{
+    const cert_bounds *cb = &info->slp->cert;
+    char s[SLPT_EXPR], a[SLPT_EXPR], b[SLPT_EXPR], k[48];
+    float k2 = 0;
+    int i;
+    for (i = 0; i < cb->nplanes; i++)
+        k2 = cb->k2[i] > k2 ? cb->k2[i] : k2;
+    if (info->space == OUT_WORLD) {
+        put_world_scale(w, info, g);
+    } else {
+        snprintf(s, sizeof s, "%s(e2)", g->fabs);
+        local(w, g, g->real, "E", s, 0);
+        local(w, g, g->real, "R", larger(s, g, larger(a, g, "Rx", "Ry"), "Rw"), 0);
+        local(w, g, g->real, "ER3", prod(s, g, "E", prod(b, g, prod(a, g, "Rx", "Ry"), "Rw")), 0);
+    }
+    local(w, g, g->real, "R1", "1.0f + R", 0);
+    local(w, g, g->real, "R3", prod(s, g, prod(a, g, "R", "R"), "R"), 0);
+    snprintf(k, sizeof k, "%.9ef", (double)k2);
+    prod(b, g, prod(a, g, "R1", "R1"), "R1");
+    local(w, g, g->real, "F", prod(s, g, k, prod(a, g, b, "1.0f + E")), 0);
+    snprintf(s, sizeof s, "%s < %.9ef", prod(a, g, larger(b, g, "E", "1.0f"), "R3"), (double)cb->q_max);
+    local(w, g, "bool", "clear", s, 1);
+}
+
+/* Appends to s "a == b" of coordinate c of input points a and b, or a's finiteness (b < 0). */
+static void put_compare(sbuf *s, const char *sep, int a, int b, int c)
+{
+    if (b < 0)
+        sbuf_printf(s, "%scp[%d].%c - cp[%d].%c == 0.0f", sep, a, "xyzw"[c], a, "xyzw"[c]);
+    else
+        sbuf_printf(s, "%scp[%d].%c == cp[%d].%c", sep, a, "xyzw"[c], b, "xyzw"[c]);
+}
+
+/* With exact zeros: fin (every coordinate read finite) and col<e>, boundary edge e collapsed:
+ * its points equal as given (so the planes it zeros are exactly 0, docs/errors.md). */
+static int put_collapsed(slpt_writer *w, const tp_domain *d, const out_info *info,
+                         const kern_target *g, ptp_error *err)
+{
+    int world = info->space == OUT_WORLD, e, k, c, f, i, j, n, failed;
+    char name[16];
+    sbuf s;
+    sbuf_init(&s);
+    for (k = 0, n = 0; k < d->npoints; k++)
+        for (c = 0; c < 4; c++)
+            if (world || c != 2)
+                put_compare(&s, n++ ? " && " : "", k, -1, c);
+    local(w, g, "bool", "fin", s.s, 0);
+    failed = s.failed;
+    for (e = 0; e < tp_domain_edges(d); e++) {
+        sbuf_clear(&s);
+        sbuf_puts(&s, "fin");
+        for (f = -1, k = 0; k < d->npoints; k++) {
+            tp_domain_point_ij(&i, &j, d, k);
+            if (!tp_domain_on_edge(d, e, i, j))
+                continue;
+            if (f < 0) {
+                f = k;
+                continue;
+            }
+            for (c = 0; c < 4; c++)
+                if (world || c != 2)
+                    put_compare(&s, " && ", k, f, c);
+        }
+        snprintf(name, sizeof name, "col%d", e);
+        local(w, g, "bool", name, s.s, 0);
+        failed |= s.failed;
+    }
+    sbuf_clear(&s);
+    return failed ? ptp_fail(err, PTP_ENOMEM, "out of memory writing the kernel") : PTP_OK;
+}
+
+int kgpu_slp_cert_head(slpt_writer *w, const tp_domain *d, const out_info *info,
+                       const kern_target *g, ptp_error *err)
+{
+    sbuf_puts(w->o, "    /* Certified: the patch's magnitudes bound every value's rounding error. */\n");
+    put_magnitudes(w, d, info, g);
+    put_scale(w, info, g);
+    return kgpu_exact_zeros(info) ? put_collapsed(w, d, info, g, err) : PTP_OK;
+}
+
+void kgpu_slp_cert_plane(sbuf *o, const slp_prog *p, const out_info *info, const kern_target *g,
+                         int plane)
+{
+    unsigned zero = kgpu_exact_zeros(info) ? p->zero[plane] : 0;
+    char k[32], t[128], bound[192];
+    int e;
+    snprintf(k, sizeof k, "%.9ef", -(double)info->slp->cert.k[plane]);
+    snprintf(t, sizeof t, "%s(v)", g->fabs);
+    snprintf(bound, sizeof bound, g->slp_fma, k, "ER3", t);
+    sbuf_puts(o, "    clear = clear && (");
+    for (e = 0; e < 8; e++)
+        if (zero >> e & 1)
+            sbuf_printf(o, "col%d || ", e);
+    sbuf_printf(o, "%s > F);\n", bound);
+}
