@@ -278,7 +278,7 @@ $(RB)/ptp.comp: $(B)/ptpgen
 
 $(RB)/ptp_cert.comp: $(B)/ptpgen
 	@mkdir -p $(@D)
-	$(B)/ptpgen --degree 3 --target glsl --space clip --certified --prefix ptp_3x3_ -o $@
+	$(B)/ptpgen --degree 3 --target glsl --space clip --certified --kernel slp --prefix ptp_3x3_ -o $@
 
 # The kernels' patches per workgroup (the default schedule), for the host's dispatch.
 $(RB)/ptp_groups.h: $(RB)/ptp.comp $(RB)/ptp_cert.comp $(RB)/ptp_table.comp
