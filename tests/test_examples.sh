@@ -88,6 +88,10 @@ if command -v glslangValidator >/dev/null && command -v spirv-val >/dev/null &&
     "$P" --degree 3 --target hlsl --stage function -o "$tmp/ptp_3x3.hlsli"; then
     stage_shader "cull_patch.tesc (GLSL tessellation control)" $ex/cull_patch.tesc -V
     stage_shader "cull_patch.hlsl (HLSL hull shader)" $ex/cull_patch.hlsl -D -V -S tesc -e main
+    "$P" --degree 3 --target glsl --stage function --certified --prefix ptp_3x3_ -o "$tmp/ptp_3x3.glsl" &&
+        "$P" --degree 3 --target hlsl --stage function --certified --prefix ptp_3x3_ -o "$tmp/ptp_3x3.hlsli" &&
+        stage_shader "cull_patch.tesc on --certified functions" $ex/cull_patch.tesc -V &&
+        stage_shader "cull_patch.hlsl on --certified functions" $ex/cull_patch.hlsl -D -V -S tesc -e main
     "$P" --degree 3 --target glsl --stage function --prefix other_ -o "$tmp/ptp_3x3.glsl"
     if ! glslangValidator -V -I"$tmp" $ex/cull_patch.tesc -o "$tmp/stage.spv" >/dev/null 2>&1; then
         ok "cull_patch.tesc fails to compile without ptp_3x3_classify_patch"
