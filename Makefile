@@ -360,21 +360,37 @@ clean:
 	rm -rf build ptpgen
 
 FORCE:
-.PHONY: all test install bench-gen build-tests out fuzz clean FORCE
+.PHONY: all test install bench-gen build-tests out fuzz clean osd-models FORCE
 
 # `make cullrate`: the average number of patches NCONE, TCONE and ptpgen's tangent-plane test
 # (strict, strict with --coordinates absolute, degenerate, certified, --refine 1 to 3, --refine 3
 # --certified) cull from 10,000 random eye points around the knot, the teapot set of models/, the
-# far model and each model of MODELS=DIR, and the PN triangles of the knot and the teapot
+# far model, the OpenSubdiv models (below), each model of MODELS=DIR, and the PN triangles of the
+# knot and the teapot
 # (--pn), with a bracket of the exact answer
 # (CVis). CULLRATE_ARGS passes options, e.g. `make cullrate CULLRATE_ARGS=--quick`, or `CULLRATE_ARGS="--model my.bez"` to measure your own models.
 # It ends with `make cullrate-gpu` (below).
 CULLRATE_ARGS ?=
 CR = $(B)/cullrate
 
-cullrate: $(CR)/cullrate $(KNOT) $(FAR)
-	$(CR)/cullrate $(if $(MODELS),--models $(MODELS)) $(CULLRATE_ARGS)
+cullrate: $(CR)/cullrate $(KNOT) $(FAR) osd-models
+	$(CR)/cullrate $(if $(MODELS),--models $(MODELS)) $$(test -d $(OSD) && echo --models $(OSD)) \
+	    $(CULLRATE_ARGS)
 	@$(MAKE) -s cullrate-gpu
+
+# cullrate's OpenSubdiv models (bench/osd_model.cpp): the closed cage of bench/osd_cage.h, 390
+# units from the origin, refined by Far at isolation levels 2 and 3 (B-spline end caps), as
+# Bezier patches in build/models/osd/; one line, and none, without libosd-dev (tests/deps.sh).
+OSD = build/models/osd
+$(B)/osd_model: bench/osd_model.cpp bench/osd_cage.h
+	@mkdir -p $(@D)
+	$(CXX) -std=c++11 -O2 -Wall -Wextra -Werror -pedantic -Ibench -o $@ bench/osd_model.cpp -losdCPU
+$(OSD)/osd%.bez: $(B)/osd_model
+	@mkdir -p $(@D)
+	$(B)/osd_model $* $@.tmp && mv $@.tmp $@
+osd-models:
+	@if [ -e /usr/include/opensubdiv/version.h ]; then $(MAKE) -s $(OSD)/osd2.bez $(OSD)/osd3.bez; \
+	else echo "cullrate: no OpenSubdiv models (libosd-dev is missing; tests/deps.sh installs it)"; fi
 
 # `make cullrate-gpu`: the certified GPU kernels' culls on the knot (BigGuy with MODELS=DIR
 # where DIR has it) as the GPU targets compute them

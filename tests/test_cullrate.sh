@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # test_cullrate.sh: bench/cullrate's --model on a small model (a table, the exact check, names),
 # its --pn (PN triangles of tessellated models), its default models and --models, and its
-# one-line errors on bad input (bench/bezfile.c's messages); and pn_check. Needs CULLRATE, the
-# built binary; PN_CHECK (default: pn_check beside it). Runs from the repository's root.
+# one-line errors on bad input (bench/bezfile.c's messages), the OpenSubdiv model of make
+# cullrate (bench/osd_model.cpp); and pn_check. Needs CULLRATE, the built binary; PN_CHECK
+# (default: pn_check beside it). Runs from the repository's root.
 set -u
 C=${CULLRATE:?set CULLRATE}
 P=${PN_CHECK:-$(dirname "$C")/pn_check}
@@ -166,3 +167,27 @@ bez_case missing ' cannot open: No such file or directory'
 [ $? = 2 ] && grep -q 'bad option or value: --grid 0' "$tmp/err" &&
     ok "cullrate --grid 0: status 2, the usage" ||
     notok "cullrate --grid 0" "$(head -2 "$tmp/err")"
+
+# The OpenSubdiv model of `make cullrate` (bench/osd_model.cpp, level 2): ptpgen strict culls
+# what the exact bracket does, within 0.5 points, at both radii; local coordinates make no unsafe
+# cull where absolute ones make some, and certified none.
+if [ ! -e /usr/include/opensubdiv/version.h ]; then
+    missing "OpenSubdiv (Debian package libosd-dev)" "cullrate's OpenSubdiv model"
+elif g++ -std=c++11 -O2 -Wall -Wextra -Werror -pedantic -Ibench bench/osd_model.cpp -losdCPU \
+    -o "$tmp/osd_model" 2>"$tmp/err" && "$tmp/osd_model" 2 "$tmp/osd2.bez" &&
+    "$C" --eyes 200 --threads 1 --model "$tmp/osd2.bez" >"$tmp/out" 2>"$tmp/err"; then
+    row() { grep "^  $1 " "$tmp/out" | awk -v c=$2 '{ print $c }'; }
+    s2=$(row "ptpgen strict" 4) s5=$(row "ptpgen strict" 9) x2=$(row "CVis lower bound" 5) x5=$(row "CVis lower bound" 10)
+    if awk -v a="${s2%\%}" -v b="${x2%\%}" -v c="${s5%\%}" -v d="${x5%\%}" \
+        'BEGIN { exit !(a > 40 && (b - a) < 0.5 && (a - b) < 0.5 && (d - c) < 0.5 && (c - d) < 0.5) }'; then
+        ok "cullrate's OpenSubdiv model: ptpgen strict culls $s2 and $s5, the exact bracket $x2 and $x5"
+    else
+        notok "cullrate's OpenSubdiv model: ptpgen strict culls what the exact bracket does" "strict $s2 $s5, exact $x2 $x5"
+    fi
+    [ "$(row "ptpgen strict" 5)$(row "ptpgen strict" 10)$(row "ptpgen certified" 5)$(row "ptpgen certified" 10)" = 0000 ] &&
+        [ "$(row "ptpgen absolute" 5)" -gt 0 ] &&
+        ok "cullrate's OpenSubdiv model: no unsafe strict or certified cull, $(row "ptpgen absolute" 5) in absolute coordinates" ||
+        notok "cullrate's OpenSubdiv model: unsafe culls" "$(grep -E 'ptpgen (strict|absolute|certified) ' "$tmp/out")"
+else
+    notok "bench/osd_model.cpp builds and cullrate runs its model" "$(head -3 "$tmp/err")"
+fi

@@ -13,7 +13,7 @@ if [ ! -e /usr/include/opensubdiv/version.h ]; then
     missing "OpenSubdiv (Debian package libosd-dev)" "OpenSubdiv's patches"
     exit 0
 fi
-CXX="g++ -std=c++11 -O2 -Wall -Wextra -Werror -pedantic -I$tmp"
+CXX="g++ -std=c++11 -O2 -Wall -Wextra -Werror -pedantic -I$tmp -Ibench"
 if "$P" --degree 3 --basis bspline --order v-major --space world --target c --prefix ptp_osd_ -o "$tmp/ptp_osd.h" &&
     "$P" --degree 3 --space world --target c --prefix bz_ -o "$tmp/bz.h" &&
     "$P" --degree 3 --basis bspline --order v-major --space world --target c --certified --prefix cs_ -o "$tmp/cs.h" &&
