@@ -65,7 +65,8 @@ static void check_zeros(const tp_table *t, const sched *s)
     int i, c, n[2] = {-1, -1}, k, st;
     for (i = -1; i < 5; i++)
         for (c = 0; c < 2; c++) {
-            out_info info = {"test", "ptp_", s, c ? OUT_WORLD : OUT_CLIP, OUT_DEGENERATE, 0, 1, 0, NULL, 0, 0, 0, NULL, 0, 0, 0};
+            out_info info = {.command = "test", .prefix = "ptp_", .sched = s, .space = c ? OUT_WORLD : OUT_CLIP,
+                             .rule = OUT_DEGENERATE, .certified = 1, .table = 1};
             ptp_error err = {0};
             char name[160], deg[32];
             sbuf o;
@@ -118,8 +119,8 @@ static void check_split_rounds(const tp_table *t, const sched *s)
     for (i = 0; i < tgt_count; i++)
         for (c = 0; c < 2 && tgt_targets[i].gpu && tgt_targets[i].gpu->vec2; c++) {
             const kern_target *g = tgt_targets[i].gpu;
-            out_info info = {"test", "ptp_", s, c ? OUT_WORLD : OUT_CLIP, c ? OUT_DEGENERATE : OUT_STRICT, 0, 1, 0,
-                             NULL, 0, 0, 0, NULL, 0, 0, 0};
+            out_info info = {.command = "test", .prefix = "ptp_", .sched = s, .space = c ? OUT_WORLD : OUT_CLIP,
+                             .rule = c ? OUT_DEGENERATE : OUT_STRICT, .certified = 1, .table = 1};
             ptp_error err = {0};
             char name[160], deg[32];
             int st, n, want = g->split_rounds ? s->rounds : 0;
@@ -165,7 +166,8 @@ static void check_scale_products(const tp_table *t, const sched *s)
     static const char *const target[2] = {"opencl", "cuda"};
     int i;
     for (i = 0; i < 2; i++) {
-        out_info info = {"test", "ptp_", s, OUT_WORLD, OUT_STRICT, 0, 1, 0, NULL, 0, 0, 0, NULL, 0, 0, 0};
+        out_info info = {.command = "test", .prefix = "ptp_", .sched = s, .space = OUT_WORLD,
+                         .rule = OUT_STRICT, .certified = 1, .table = 1};
         ptp_error err = {0};
         char name[160], deg[32];
         const char *a, *b;
@@ -201,8 +203,10 @@ int main(void)
         if (sched_build(&s, &t, P, sched_default_patches(P), &err))
             return check(0, "schedule", "%s", err.msg), 1;
         for (c = 0; c < 8; c++) { /* space, rule, certified */
-            out_info info = {"test", "ptp_", &s, c & 1 ? OUT_WORLD : OUT_CLIP,
-                             c & 2 ? OUT_DEGENERATE : OUT_STRICT, 1, c >> 2, 0, NULL, 1, 0, 0, NULL, 0, 0, 0};
+            out_info info = {.command = "test", .prefix = "ptp_", .sched = &s,
+                             .space = c & 1 ? OUT_WORLD : OUT_CLIP,
+                             .rule = c & 2 ? OUT_DEGENERATE : OUT_STRICT, .planes = 1,
+                             .certified = c >> 2, .table = 1};
             char name[160], why[256] = "";
             sbuf o;
             int st;

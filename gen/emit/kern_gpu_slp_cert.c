@@ -56,7 +56,7 @@ static char *larger(char *out, const kern_target *g, const char *a, const char *
 static void put_magnitudes(slpt_writer *w, const tp_domain *d, const out_info *info,
                            const kern_target *g)
 {
-    char name[8], v[SLPT_EXPR];
+    char name[16], v[SLPT_EXPR];
     int world = info->space == OUT_WORLD, k, c;
     for (c = 0; c < 4; c++)
         if (world || c != 2) {
@@ -77,7 +77,7 @@ static void put_magnitudes(slpt_writer *w, const tp_domain *d, const out_info *i
 static void put_world_scale(slpt_writer *w, const out_info *info, const kern_target *g)
 {
     const char *l = info->slp->local ? "l" : "e";
-    char e[32], name[8], a[SLPT_EXPR], b[SLPT_EXPR], c[SLPT_EXPR], d[SLPT_EXPR], s[SLPT_EXPR];
+    char e[32], name[16], a[SLPT_EXPR], b[SLPT_EXPR], c[SLPT_EXPR], d[SLPT_EXPR], s[SLPT_EXPR];
     int i;
     for (i = 0; i < 4; i++) {
         snprintf(e, sizeof e, "%s(%s%d)", g->fabs, i < 3 ? l : "e", i);
