@@ -41,7 +41,7 @@ int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_i
     if ((st = plan_slp_build(&plan, t, info->space == OUT_WORLD,
                              (info->absolute ? 0 : PLAN_LOCAL) | (info->bspline ? PLAN_BSPLINE : 0) |
                                  (info->vmajor ? PLAN_VMAJOR : 0),
-                             info->certified && !info->table ? &model : NULL, err)))
+                             info->certified && !(g->gpu && info->table) ? &model : NULL, err)))
         return st;
     in.slp = &plan;
     st = g->gpu ? kern_emit_gpu(o, t, &in, g->gpu, err) : g->emit(o, t, &in, err);
