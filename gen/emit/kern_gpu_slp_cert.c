@@ -18,13 +18,6 @@ const char kern_precise_shift[] =
     "    precise float s = (x + p) + lo;\n"
     "    return s;\n}\n\n";
 
-/* Declares one bool or float local name = init, assigned again or not. */
-static void local(slpt_writer *w, const kern_target *g, const char *type, const char *name,
-                  const char *init, int assigned)
-{
-    kgpu_local(w->o, g, type, name, init, assigned);
-}
-
 /* Writes to out (SLPT_EXPR bytes) e as a factor: kgpu_group's, where e has an operator. */
 static char *factor(char *out, const kern_target *g, const char *e)
 {
@@ -61,7 +54,7 @@ static void put_magnitudes(slpt_writer *w, const tp_domain *d, const out_info *i
     for (c = 0; c < 4; c++)
         if (world || c != 2) {
             snprintf(name, sizeof name, "R%c", "xyzw"[c]);
-            local(w, g, g->real, name, "0.0f", 1);
+            kgpu_local(w->o, g, g->real, name, "0.0f", 1);
         }
     for (k = 0; k < d->npoints; k++)
         for (c = 0; c < 4; c++)
@@ -82,15 +75,17 @@ static void put_world_scale(slpt_writer *w, const out_info *info, const kern_tar
     for (i = 0; i < 4; i++) {
         snprintf(e, sizeof e, "%s(%s%d)", g->fabs, i < 3 ? l : "e", i);
         snprintf(name, sizeof name, "E%d", i);
-        local(w, g, g->real, name, e, 0);
+        kgpu_local(w->o, g, g->real, name, e, 0);
     }
-    local(w, g, g->real, "E", larger(s, g, larger(a, g, "E0", "E1"), larger(b, g, "E2", "E3")), 0);
-    local(w, g, g->real, "R", larger(s, g, larger(a, g, "Rx", "Ry"), larger(b, g, "Rz", "Rw")), 0);
+    larger(s, g, larger(a, g, "E0", "E1"), larger(b, g, "E2", "E3"));
+    kgpu_local(w->o, g, g->real, "E", s, 0);
+    larger(s, g, larger(a, g, "Rx", "Ry"), larger(b, g, "Rz", "Rw"));
+    kgpu_local(w->o, g, g->real, "R", s, 0);
     larger(c, g, prod(a, g, "E0", "Ry"), prod(b, g, "E1", "Rx"));
     prod(d, g, c, prod(a, g, "Rz", "Rw"));
     larger(c, g, prod(a, g, "E2", "Rw"), prod(b, g, "E3", "Rz"));
     prod(a, g, c, prod(b, g, "Rx", "Ry"));
-    local(w, g, g->real, "ER3", larger(s, g, d, a), 0);
+    kgpu_local(w->o, g, g->real, "ER3", larger(s, g, d, a), 0);
 }
 
 /* E (the eye's largest |component|), R, ER3 >= every monomial's magnitude (clip: E Rx Ry Rw),
@@ -107,17 +102,18 @@ static void put_scale(slpt_writer *w, const out_info *info, const kern_target *g
         put_world_scale(w, info, g);
     } else {
         snprintf(s, sizeof s, "%s(e2)", g->fabs);
-        local(w, g, g->real, "E", s, 0);
-        local(w, g, g->real, "R", larger(s, g, larger(a, g, "Rx", "Ry"), "Rw"), 0);
-        local(w, g, g->real, "ER3", prod(s, g, "E", prod(b, g, prod(a, g, "Rx", "Ry"), "Rw")), 0);
+        kgpu_local(w->o, g, g->real, "E", s, 0);
+        kgpu_local(w->o, g, g->real, "R", larger(s, g, larger(a, g, "Rx", "Ry"), "Rw"), 0);
+        prod(s, g, "E", prod(b, g, prod(a, g, "Rx", "Ry"), "Rw"));
+        kgpu_local(w->o, g, g->real, "ER3", s, 0);
     }
-    local(w, g, g->real, "R1", "1.0f + R", 0);
-    local(w, g, g->real, "R3", prod(s, g, prod(a, g, "R", "R"), "R"), 0);
+    kgpu_local(w->o, g, g->real, "R1", "1.0f + R", 0);
+    kgpu_local(w->o, g, g->real, "R3", prod(s, g, prod(a, g, "R", "R"), "R"), 0);
     snprintf(k, sizeof k, "%.9ef", (double)k2);
     prod(b, g, prod(a, g, "R1", "R1"), "R1");
-    local(w, g, g->real, "F", prod(s, g, k, prod(a, g, b, "1.0f + E")), 0);
+    kgpu_local(w->o, g, g->real, "F", prod(s, g, k, prod(a, g, b, "1.0f + E")), 0);
     snprintf(s, sizeof s, "%s < %.9ef", prod(a, g, larger(b, g, "E", "1.0f"), "R3"), (double)cb->q_max);
-    local(w, g, "bool", "clear", s, 1);
+    kgpu_local(w->o, g, "bool", "clear", s, 1);
 }
 
 /* Appends to s "a == b" of coordinate c of input points a and b, or a's finiteness (b < 0). */
@@ -142,7 +138,7 @@ static int put_collapsed(slpt_writer *w, const tp_domain *d, const out_info *inf
         for (c = 0; c < 4; c++)
             if (world || c != 2)
                 put_compare(&s, n++ ? " && " : "", k, -1, c);
-    local(w, g, "bool", "fin", s.s, 0);
+    kgpu_local(w->o, g, "bool", "fin", s.s, 0);
     failed = s.failed;
     for (e = 0; e < tp_domain_edges(d); e++) {
         sbuf_clear(&s);
@@ -160,7 +156,7 @@ static int put_collapsed(slpt_writer *w, const tp_domain *d, const out_info *inf
                     put_compare(&s, " && ", k, f, c);
         }
         snprintf(name, sizeof name, "col%d", e);
-        local(w, g, "bool", name, s.s, 0);
+        kgpu_local(w->o, g, "bool", name, s.s, 0);
         failed |= s.failed;
     }
     sbuf_clear(&s);
