@@ -20,12 +20,12 @@ static void put_double_table(sbuf *o, const char *px, const char *name, const do
     sbuf_puts(o, "\n};\n");
 }
 
-/* --certified, second look: the weights and each plane's bounds (the plan's cert64), as double
+/* --certified, second look: the weights and each plane's bounds (the plan's look), as double
  * tables. */
 static int put_tables64(sbuf *o, const tp_table *t, const out_info *info, ptp_error *err)
 {
     const char *px = info->prefix;
-    const cert_bounds *cb = &info->slp->cert64;
+    const cert_bounds *cb = &info->slp->look;
     double *w = malloc((t->nterms + 1) * sizeof *w);
     size_t i;
     if (!w)

@@ -49,6 +49,8 @@ const kern_target kern_cuda = {
     .df_table = 1,
     .slp_classify = "static __device__ inline unsigned %s(const float4 cp[%d], float4 eye)\n{",
     .slp_values = "static __device__ inline void %s(const float4 cp[%d], float4 eye, float d[%d])\n{",
+    .slp_look = "static __device__ unsigned %s(const float4 cp[%d], float4 eye, unsigned c,\n"
+                "                                const unsigned redo[%d])\n{",
     .slp_d = "d[%d]",
     .slp_decl = "const float ",
     .slp_fma = "__fmaf_rn(%s, %s, %s)",

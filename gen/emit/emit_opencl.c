@@ -46,6 +46,7 @@ const kern_target kern_opencl = {
     .df_table = 1,
     .slp_classify = "uint %s(const float4 cp[%d], float4 eye)\n{",
     .slp_values = "void %s(const float4 cp[%d], float4 eye, float d[%d])\n{",
+    .slp_look = "uint %s(const float4 cp[%d], float4 eye, uint c, const uint redo[%d])\n{",
     .slp_d = "d[%d]",
     .slp_decl = "const float ",
     .slp_fma = "fma(%s, %s, %s)",

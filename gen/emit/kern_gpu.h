@@ -78,6 +78,9 @@ int kgpu_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_tar
  * with exact zeros finite and same, with the second look kgpu_df_functions, then flags and
  * class_of. */
 void kgpu_functions(sbuf *o, const out_info *info, const kern_target *g);
+/* The straight-line code's second look's helpers: with exact zeros finite and same, then
+ * kgpu_df_functions, flags and class_of (certified). */
+void kgpu_look_functions(sbuf *o, const out_info *info, const kern_target *g);
 
 /* kern_gpu_df.c: the second look's double-float helper functions. */
 
@@ -105,6 +108,13 @@ void kgpu_body(sbuf *o, const tp_domain *d, const out_info *info, const kern_tar
  * QMAX2, tau2_k and tau2_f of its double-float evaluation too; with exact zeros, zero. */
 int kgpu_cert_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                      const char *up, ptp_error *err);
+/* The second look's QMAX2, tau2_k and tau2_f from cb (cert_table_df's). */
+void kgpu_look_bounds(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                      const cert_bounds *cb);
+/* With exact zeros, the table zero: per plane the boundary edges (bit e) on which every term has
+ * two points, so that collapsing any of them makes the plane exactly 0. PTP_OK or PTP_ENOMEM. */
+int kgpu_zero_table(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                    ptp_error *err);
 
 /* Appends at indent the head of the test that the patch is too large for the bound (or NaN),
  * if (!(max(E, 1) * R3 < <up>qmax)), with the target's product. */
@@ -118,6 +128,11 @@ void kgpu_too_large(sbuf *o, const kern_target *g, const char *indent, const cha
  * edges of d too. */
 void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
                      const char *up);
+/* The straight-line second look's scale, from the points cp[0..K-1] of d: the magnitudes as
+ * kgpu_cert_scale's, M2, F, a return of silhouette for a patch too large for QMAX2 (or NaN) and,
+ * with exact zeros, fin and col. Reads the locals i (uint) declared before. */
+void kgpu_cert_look_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+                          const char *up);
 
 /* With exact zeros, the local keep of the plane numbered by the expression plane: 0u where a
  * collapsed edge makes it exactly 0, so that its flags certify both signs; else 3u. */
@@ -147,11 +162,21 @@ void kgpu_df_weight_lo(sbuf *o, const tp_table *t, const out_info *info, const k
  * from fd and the planes of redo in double-float against the bounds tau2 (plus twice the low
  * part, for comparing the high part alone). */
 void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const char *up);
+/* Writes to out (size bytes, 512 suffice) and returns the certified flags of the double-float
+ * value d of the plane numbered by the expression plane: flags(d.x, tau2_k M2 + tau2_f F +
+ * 2 |d.y|). */
+char *kgpu_df_flags(char *out, size_t size, const out_info *info, const kern_target *g,
+                    const char *plane);
+/* The second look's terms in plane order (kgpu_df_terms' tables, dstart[n] for plane n).
+ * PTP_OK or PTP_ENOMEM. */
+int kgpu_df_plane_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                        ptp_error *err);
 
 /* kern_gpu_slp.c: the straight-line kernel, one patch an invocation. */
 
-/* kern_gpu_slp_cert.c: --certified straight-line code (classify_patch), float only: a patch
- * whose bounds do not clear is silhouette (docs/errors.md). */
+/* kern_gpu_slp_cert.c: --certified straight-line code (classify_patch): a patch whose float
+ * bounds do not clear but whose float signs decide is looked at again in double-float where the
+ * target has it, else silhouette (docs/errors.md). */
 
 /* Declares, after slpt_frame and before the planes, the certified scale of the patch: the
  * magnitudes Rc, E, R, ER3, F, the bool clear (the patch small enough and, once every plane has
@@ -163,6 +188,15 @@ int kgpu_slp_cert_head(slpt_writer *w, const tp_domain *d, const out_info *info,
  * F, or where a collapsed edge zeros the plane exactly. */
 void kgpu_slp_cert_plane(sbuf *o, const slp_prog *p, const out_info *info, const kern_target *g,
                          int plane);
+/* Whether the certified straight-line code has the second look: g has double-float (vec2) and
+ * loops over term tables (df_table). */
+int kgpu_slp_look(const out_info *info, const kern_target *g);
+/* With kgpu_slp_look, what classify_patch's second look needs, before it: the term tables in
+ * plane order, zero, the bounds of the plan's look, the helpers (kgpu_look_functions) and the
+ * function second_look(cp, eye), the class from every plane in double-float against its own
+ * bound. PTP_OK or PTP_ENOMEM. */
+int kgpu_slp_look_functions(sbuf *o, const tp_table *t, const out_info *info,
+                            const kern_target *g, ptp_error *err);
 
 /* The straight-line kernel's constants P (1), Q, K, L into tables and its functions into funcs. */
 int kgpu_slp_kernel_parts(sbuf *tables, sbuf *funcs, const tp_table *t, const out_info *info,

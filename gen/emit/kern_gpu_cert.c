@@ -8,9 +8,9 @@
 #include <string.h>
 
 /* Appends the constant <UP>QMAX<n> and the tables tau<n>_k, tau<n>_f of cb (n: "" or "2"), after
- * the comment what, which ends with "for max(E, 1) R^3 < ". Clears cb. */
+ * the comment what, which ends with "for max(E, 1) R^3 < ". */
 static void put_bounds(sbuf *o, const out_info *info, const kern_target *g, const char *up,
-                       cert_bounds *cb, const char *n, const char *what)
+                       const cert_bounds *cb, const char *n, const char *what)
 {
     char name[128], lit[48];
     sbuf_printf(o, "%s%sQMAX%s. */\n", what, up, n);
@@ -22,13 +22,12 @@ static void put_bounds(sbuf *o, const out_info *info, const kern_target *g, cons
     snprintf(name, sizeof name, "tau%s_f", n);
     kgpu_float_table(o, g, info->prefix, name, cb->k2, cb->nplanes);
     sbuf_puts(o, "\n");
-    cert_clear(cb);
 }
 
 /* With exact zeros, the table zero: per plane the boundary edges (bit e) on which every term has
  * two points, so that collapsing any of them makes the plane exactly 0. */
-static int put_zero_table(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
-                          ptp_error *err)
+int kgpu_zero_table(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                    ptp_error *err)
 {
     unsigned long *z = calloc((size_t)t->dom.nplanes, sizeof *z);
     size_t x;
@@ -48,6 +47,15 @@ static int put_zero_table(sbuf *o, const tp_table *t, const out_info *info, cons
     return PTP_OK;
 }
 
+void kgpu_look_bounds(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                      const cert_bounds *cb)
+{
+    put_bounds(o, info, g, up, cb, "2",
+               "/* Second look, in double-float from the points: |hi + lo - exact| <= tau2_k[P] * M2\n"
+               " * + tau2_f[P] * (1 + R)^3 (1 + E), M2 from the largest |coordinates|, for\n"
+               " * max(E, 1) R^3 < ");
+}
+
 int kgpu_cert_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                      const char *up, ptp_error *err)
 {
@@ -59,31 +67,31 @@ int kgpu_cert_tables(sbuf *o, const tp_table *t, const out_info *info, const ker
                "/* Certified: |d_P - exact| <= tau_k[P] * M + tau_f[P] * (1 + R)^3 (1 + E), M from the\n"
                " * patch's largest |coordinates| and the eye, R the largest of them, E the eye's largest\n"
                " * |component|; for max(E, 1) R^3 < ");
-    if (kgpu_exact_zeros(info) && (st = put_zero_table(o, t, info, g, err)))
+    cert_clear(&cb);
+    if (kgpu_exact_zeros(info) && (st = kgpu_zero_table(o, t, info, g, err)))
         return st;
     if (!g->vec2)
         return PTP_OK;
     if ((st = cert_table_df(&cb, t, info->space == OUT_WORLD, err)))
         return st;
-    put_bounds(o, info, g, up, &cb, "2",
-               "/* Second look, in double-float from the points: |hi + lo - exact| <= tau2_k[P] * M2\n"
-               " * + tau2_f[P] * (1 + R)^3 (1 + E), M2 from the largest |coordinates|, for\n"
-               " * max(E, 1) R^3 < ");
+    kgpu_look_bounds(o, info, g, up, &cb);
+    cert_clear(&cb);
     return PTP_OK;
 }
 
 /* With exact zeros, col: bit e where boundary edge e of d is collapsed, its points bitwise equal
- * and every coordinate of the patch finite (fin). */
+ * and every coordinate of the patch finite (fin); point k is pt (a format of k), which may read
+ * the local base, declared from base where base is not NULL. */
 static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
-                          const char *up)
+                          const char *pt, const char *base)
 {
-    char base[96], bit[16];
+    char bit[16], a[64], b[64];
     int e, k, f, i, j;
     sbuf_puts(o, "    /* Degenerate rule: bit e of col where boundary edge e is collapsed (its points bitwise\n"
                  "     * equal, every coordinate finite); the planes of zero[] with bit e are then exactly 0. */\n");
     kgpu_local(o, g, g->uint, "col", "0u", 1);
-    snprintf(base, sizeof base, "q * %sK", up);
-    kgpu_local(o, g, g->uint, "base", base, 0);
+    if (base)
+        kgpu_local(o, g, g->uint, "base", base, 0);
     for (e = 0; e < tp_domain_edges(d); e++) {
         sbuf cond;
         char *sel;
@@ -93,10 +101,13 @@ static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, con
             tp_domain_point_ij(&i, &j, d, k);
             if (!tp_domain_on_edge(d, e, i, j))
                 continue;
-            if (f < 0)
+            if (f < 0) {
                 f = k;
-            else
-                sbuf_printf(&cond, " &&\n        %ssame(pts[base + %du], pts[base + %du])", info->prefix, k, f);
+                continue;
+            }
+            snprintf(a, sizeof a, pt, k);
+            snprintf(b, sizeof b, pt, f);
+            sbuf_printf(&cond, " &&\n        %ssame(%s, %s)", info->prefix, a, b);
         }
         snprintf(bit, sizeof bit, "%uu", 1u << e);
         sel = cond.failed ? NULL : malloc(strlen(cond.s) + 64);
@@ -209,12 +220,13 @@ void kgpu_too_large(sbuf *o, const kern_target *g, const char *indent, const cha
     sbuf_printf(o, "%sif (!(%s < %s%s))", indent, kgpu_mul(m, sizeof m, g, e, "R3"), up, qmax);
 }
 
-/* The patch's largest |coordinates| Rc over the coordinates c (n of them), with differences its
- * extents (put_extents' steps 0 and 1), with exact zeros fin: every coordinate is finite. */
+/* The patch's largest |coordinates| Rc over the coordinates c (n of them) of the points point
+ * (an expression of i) for i below count, with differences its extents (put_extents' steps 0 and
+ * 1), with exact zeros fin: every coordinate is finite. */
 static void put_patch_max(sbuf *o, const out_info *info, const kern_target *g, const char *up,
-                          const char *c, int n)
+                          const char *c, int n, const char *point, const char *count)
 {
-    char e[96], rc[4][4];
+    char rc[4][4];
     kern_var r[4];
     int k;
     for (k = 0; k < n; k++) {
@@ -225,9 +237,8 @@ static void put_patch_max(sbuf *o, const out_info *info, const kern_target *g, c
     put_extents(o, info, g, up, c, n, 0);
     if (kgpu_exact_zeros(info))
         kgpu_local(o, g, "bool", "fin", "true", 1);
-    sbuf_printf(o, "    for (i = 0u; i < %sK; i++) {\n", up);
-    snprintf(e, sizeof e, "pts[q * %sK + i]", up);
-    g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"a", e, 0}, 1, 0);
+    sbuf_printf(o, "    for (i = 0u; i < %s; i++) {\n", count);
+    g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"a", point, 0}, 1, 0);
     for (k = 0; k < n; k++)
         sbuf_printf(o, "        R%c = %s(R%c, %s(a.%c));\n", c[k], g->fmax, c[k], g->fabs, c[k]);
     put_extents(o, info, g, up, c, n, 1);
@@ -236,14 +247,15 @@ static void put_patch_max(sbuf *o, const out_info *info, const kern_target *g, c
     sbuf_puts(o, "    }\n");
 }
 
-void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
-                     const char *up)
+/* The magnitudes of the points point (an expression of i, i below count): put_patch_max's, R the
+ * largest of them, E the eye's largest |component| and R3 = R^3. */
+static void put_magnitudes(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                           const char *point, const char *count)
 {
     const char *ab = g->fabs, *mx = g->fmax, *f = g->real, *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
-    char e[1024], r1[16], e1[16];
-    int n = (int)strlen(c);
+    char e[256];
     sbuf_puts(o, "    /* Certified: the patch's largest |coordinates| and the eye's bound the errors. */\n");
-    put_patch_max(o, info, g, up, c, n);
+    put_patch_max(o, info, g, up, c, (int)strlen(c), point, count);
     if (info->space == OUT_CLIP) {
         snprintf(e, sizeof e, "%s(%s(Rx, Ry), Rw)", mx, mx);
         kgpu_local(o, g, f, "R", e, 0);
@@ -257,27 +269,61 @@ void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const ke
     kgpu_local(o, g, f, "E", e, 0);
     kgpu_product(e, sizeof e, g, " ", 3, (const char *const[]){"R", "R", "R"});
     kgpu_local(o, g, f, "R3", e, 0);
-    put_extents(o, info, g, up, c, n, 2);
-    put_monomial_max(e, info, g, kgpu_differences(info, g));
-    kgpu_local(o, g, f, "M", e, 0);
-    if (kgpu_second_look(info, g)) { /* M2: the second look reads the points */
-        put_monomial_max(e, info, g, 0);
-        kgpu_local(o, g, f, "M2", e, 0);
-    }
+}
+
+/* F, the underflow term's factor (1 + R)^3 (1 + E); then, for a patch too large for the bound
+ * <up>qmax (or NaN), the statement then. */
+static void put_guard(sbuf *o, const kern_target *g, const char *up, const char *qmax,
+                      const char *then)
+{
+    char e[256], r1[16], e1[16];
     kgpu_group(r1, sizeof r1, g, "1.0f + R");
     kgpu_group(e1, sizeof e1, g, "1.0f + E");
     kgpu_product(e, sizeof e, g, " ", 4, (const char *const[]){r1, r1, r1, e1});
-    kgpu_local(o, g, f, "F", e, 0);
-    kgpu_too_large(o, g, "    ", up, "QMAX");
+    kgpu_local(o, g, g->real, "F", e, 0);
+    kgpu_too_large(o, g, "    ", up, qmax);
     kgpu_then(o, g);
-    sbuf_puts(o, "        f = 3u; /* too large for the bound, or NaN: never certified */\n");
+    sbuf_printf(o, "        %s /* too large for the bound, or NaN: never certified */\n", then);
     kgpu_end(o, g, "    ");
-    if (kgpu_exact_zeros(info))
-        put_collapsed(o, d, info, g, up);
+}
+
+void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+                     const char *up)
+{
+    const char *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
+    char e[1024], pt[96], count[80];
+    snprintf(pt, sizeof pt, "pts[q * %sK + i]", up);
+    snprintf(count, sizeof count, "%sK", up);
+    put_magnitudes(o, info, g, up, pt, count);
+    put_extents(o, info, g, up, c, (int)strlen(c), 2);
+    put_monomial_max(e, info, g, kgpu_differences(info, g));
+    kgpu_local(o, g, g->real, "M", e, 0);
+    if (kgpu_second_look(info, g)) { /* M2: the second look reads the points */
+        put_monomial_max(e, info, g, 0);
+        kgpu_local(o, g, g->real, "M2", e, 0);
+    }
+    put_guard(o, g, up, "QMAX", "f = 3u;");
+    if (kgpu_exact_zeros(info)) {
+        snprintf(e, sizeof e, "q * %sK", up);
+        put_collapsed(o, d, info, g, "pts[base + %du]", e);
+    }
     if (kgpu_second_look(info, g)) { /* the plain float signs' flags; the planes to look at again */
         kern_var v[3] = {{"pf", "0u", 1}, {"redo", "0u", 1}, {"fd", "0u", 1}};
         g->syntax->locals(o, g, "    ", g->uint, v, 3, 0);
     }
+}
+
+void kgpu_cert_look_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
+                          const char *up)
+{
+    char e[1024], count[16];
+    snprintf(count, sizeof count, "%du", d->npoints);
+    put_magnitudes(o, info, g, up, "cp[i]", count);
+    put_monomial_max(e, info, g, 0);
+    kgpu_local(o, g, g->real, "M2", e, 0);
+    put_guard(o, g, up, "QMAX2", "return 2u;");
+    if (kgpu_exact_zeros(info))
+        put_collapsed(o, d, info, g, "cp[%d]", NULL);
 }
 
 void kgpu_keep(sbuf *o, const out_info *info, const kern_target *g, const char *indent,

@@ -147,6 +147,14 @@ static void put_classify(sbuf *o, const out_info *info, const kern_target *g)
     sbuf_printf(o, "    return %s;\n}\n\n", e[k]);
 }
 
+void kgpu_look_functions(sbuf *o, const out_info *info, const kern_target *g)
+{
+    if (kgpu_exact_zeros(info))
+        put_edge_functions(o, info, g);
+    kgpu_df_functions(o, info, g);
+    put_classify(o, info, g);
+}
+
 void kgpu_functions(sbuf *o, const out_info *info, const kern_target *g)
 {
     put_cross4(o, info, g);

@@ -15,41 +15,31 @@ static void weight_split(float *hi, float *lo, const rat *w)
     *lo = (float)(rat_get_d(w) - (double)*hi);
 }
 
-int kgpu_df_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
-                  unsigned long *v, ptp_error *err)
+/* The second look's term tables for the planes plane[0..L-1] in that order (v as
+ * kgpu_df_terms'), after a comment that names plane n's as whose. */
+static int put_df_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                        const long *plane, const char *whose, unsigned long *v, ptp_error *err)
 {
-    const sched *s = info->sched;
-    long L = t->dom.nplanes, n = 0, th, p;
+    long L = t->dom.nplanes, n;
     size_t x, k = 0;
-    float *w;
-    for (th = 0; th < s->threads; th++) {
-        for (p = 0, n = 0; p < L; p++)
-            n += s->owner[p] == th;
-        if (n > 32) /* the planes a thread chose are bits of one uint */
-            return ptp_fail(err, PTP_ELIMIT, "--certified: thread %ld owns %ld planes, more than 32", th, n);
-    }
-    n = 0;
-    w = malloc(2 * (t->nterms + 1) * sizeof *w);
+    float *w = malloc(2 * (t->nterms + 1) * sizeof *w);
     if (!w)
         return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
-    for (th = 0; th < s->threads; th++)
-        for (p = 0; p < L; p++) {
-            if (s->owner[p] != th)
+    for (n = 0; n < L; n++) {
+        v[n] = (unsigned long)k;
+        for (x = 0; x < t->nterms; x++) {
+            const tp_term *a = &t->terms[x];
+            if (a->plane != plane[n])
                 continue;
-            v[n++] = (unsigned long)k;
-            for (x = 0; x < t->nterms; x++) {
-                const tp_term *a = &t->terms[x];
-                if (a->plane != p)
-                    continue;
-                v[L + 1 + k] = (unsigned long)a->j;
-                v[L + 1 + t->nterms + k] = (unsigned long)a->k | (unsigned long)a->l << 16;
-                weight_split(&w[k], &w[t->nterms + k], &a->w);
-                k++;
-            }
+            v[L + 1 + k] = (unsigned long)a->j;
+            v[L + 1 + t->nterms + k] = (unsigned long)a->k | (unsigned long)a->l << 16;
+            weight_split(&w[k], &w[t->nterms + k], &a->w);
+            k++;
         }
-    v[n] = (unsigned long)k;
-    sbuf_puts(o, "/* Second look: the terms of own_plane[n] are dw[i] * term(dj[i], dkl[i] = k | l << 16)\n"
-                 " * (weight dw + dwl in double-float) for i in dstart[n] .. dstart[n+1]-1. */\n");
+    }
+    v[L] = (unsigned long)k;
+    sbuf_printf(o, "/* Second look: the terms of %s are dw[i] * term(dj[i], dkl[i] = k | l << 16)\n"
+                   " * (weight dw + dwl in double-float) for i in dstart[n] .. dstart[n+1]-1. */\n", whose);
     kgpu_uint_table(o, g, info->prefix, "dstart", v, L + 1, 16, 0);
     kgpu_uint_table(o, g, info->prefix, "dj", v + L + 1, (long)k, 16, 0);
     kgpu_uint_table(o, g, info->prefix, "dkl", v + L + 1 + t->nterms, (long)k, 8, 1);
@@ -58,6 +48,50 @@ int kgpu_df_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     sbuf_puts(o, "\n");
     free(w);
     return PTP_OK;
+}
+
+int kgpu_df_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                  unsigned long *v, ptp_error *err)
+{
+    const sched *s = info->sched;
+    long L = t->dom.nplanes, n, th, p, mine;
+    long *order = malloc((size_t)L * sizeof *order);
+    int st;
+    if (!order)
+        return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
+    for (th = 0, n = 0; th < s->threads; th++) {
+        for (p = 0, mine = 0; p < L; p++)
+            if (s->owner[p] == th) {
+                order[n++] = p;
+                mine++;
+            }
+        if (mine > 32) { /* the planes a thread chose are bits of one uint */
+            free(order);
+            return ptp_fail(err, PTP_ELIMIT, "--certified: thread %ld owns %ld planes, more than 32", th, mine);
+        }
+    }
+    st = put_df_terms(o, t, info, g, order, "own_plane[n]", v, err);
+    free(order);
+    return st;
+}
+
+int kgpu_df_plane_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
+                        ptp_error *err)
+{
+    long L = t->dom.nplanes, p;
+    unsigned long *v = malloc(((size_t)L + 1 + 2 * t->nterms) * sizeof *v);
+    long *order = malloc((size_t)L * sizeof *order);
+    int st;
+    if (!v || !order)
+        st = ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
+    else {
+        for (p = 0; p < L; p++)
+            order[p] = p;
+        st = put_df_terms(o, t, info, g, order, "plane n", v, err);
+    }
+    free(v);
+    free(order);
+    return st;
 }
 
 void kgpu_df_weight_lo(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
@@ -151,10 +185,24 @@ static void put_df_sum(sbuf *o, const out_info *info, const kern_target *g, cons
     kgpu_end(o, g, "            ");
 }
 
+char *kgpu_df_flags(char *out, size_t size, const out_info *info, const kern_target *g,
+                    const char *plane)
+{
+    char a[96], m[3][128];
+    snprintf(a, sizeof a, "%stau2_k[%s]", info->prefix, plane);
+    kgpu_mul(m[0], sizeof m[0], g, a, "M2");
+    snprintf(a, sizeof a, "%stau2_f[%s]", info->prefix, plane);
+    kgpu_mul(m[1], sizeof m[1], g, a, "F");
+    snprintf(a, sizeof a, "%s(d.y)", g->fabs);
+    kgpu_mul(m[2], sizeof m[2], g, "2.0f", a);
+    snprintf(out, size, "%sflags(d.x, %s + %s +\n                %s)", info->prefix, m[0], m[1], m[2]);
+    return out;
+}
+
 void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix;
-    char a[160], b[160], m[3][128];
+    char a[160], b[160], fl[512];
     kern_var j = {"j", NULL, 1}, s = {"s", NULL, 1};
     put_again(o, g, up);
     sbuf_puts(o, "    if (again) {\n");
@@ -186,12 +234,6 @@ void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const cha
     snprintf(b, sizeof b, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "            ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? b : "s", 0}, 1, 0);
-    snprintf(a, sizeof a, "%stau2_k[plane]", px);
-    kgpu_mul(m[0], sizeof m[0], g, a, "M2");
-    snprintf(a, sizeof a, "%stau2_f[plane]", px);
-    kgpu_mul(m[1], sizeof m[1], g, a, "F");
-    snprintf(a, sizeof a, "%s(d.y)", g->fabs);
-    kgpu_mul(m[2], sizeof m[2], g, "2.0f", a);
-    sbuf_printf(o, "            f |= %sflags(d.x, %s + %s +\n                %s) & mine * %s;\n        }\n    }\n",
-                px, m[0], m[1], m[2], kgpu_exact_zeros(info) ? "keep" : "3u");
+    sbuf_printf(o, "            f |= %s & mine * %s;\n        }\n    }\n",
+                kgpu_df_flags(fl, sizeof fl, info, g, "plane"), kgpu_exact_zeros(info) ? "keep" : "3u");
 }

@@ -82,8 +82,9 @@ static void put_slp_locals(sbuf *o, const out_info *info, const kern_target *g, 
 
 /* The class from the flags: strict back (1) iff lt, front (0) iff gt; degenerate silhouette (2)
  * on NaN, back iff no value > 0, front iff none < 0; else silhouette; certified, silhouette
- * unless every value clears its bound. */
-static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g)
+ * unless every value clears its bound or, with the second look, the L planes whose bounds do
+ * not clear are certainly of the class's sign in double-float. */
+static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g, int L)
 {
     char a[128], b[192], c[256];
     if (info->rule == OUT_STRICT) {
@@ -93,6 +94,19 @@ static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g)
         g->syntax->select(a, sizeof a, "lt", "2u", "0u");
         g->syntax->select(c, sizeof c, "gt", a, "1u");
         g->syntax->select(b, sizeof b, "nan", "2u", c);
+    }
+    if (kgpu_slp_look(info, g)) { /* the plain class; again where bounds do not clear */
+        int k, n = (L + 31) / 32;
+        kgpu_local(o, g, g->uint, "c", b, 1);
+        sbuf_puts(o, "    if (c != 2u && (");
+        for (k = 0; k < n; k++)
+            sbuf_printf(o, "%sredo[%d]", k ? " | " : "", k);
+        sbuf_puts(o, ") != 0u)");
+        kgpu_then(o, g);
+        sbuf_printf(o, "        c = %ssecond_look(cp, eye, c, redo);\n", info->prefix);
+        kgpu_end(o, g, "    ");
+        sbuf_puts(o, "    return c;\n");
+        return;
     }
     if (info->certified) {
         snprintf(c, sizeof c, "(%s)", b);
@@ -136,7 +150,7 @@ static int put_slp_function(sbuf *o, const tp_table *t, const out_info *info,
         st = slpt_program(&w, err);
     slpt_clear(&w);
     if (!values)
-        put_slp_return(o, info, g);
+        put_slp_return(o, info, g, t->dom.nplanes);
     sbuf_puts(o, "}\n\n");
     return st;
 }
@@ -149,6 +163,8 @@ int kgpu_slp_functions(sbuf *o, const tp_table *t, const out_info *info, const k
         sbuf_printf(o, g->slp_helpers, info->prefix);
     if (info->certified && g->slp_cert_shift)
         sbuf_printf(o, g->slp_cert_shift, info->prefix);
+    if (kgpu_slp_look(info, g) && (st = kgpu_slp_look_functions(o, t, info, g, err)))
+        return st;
     st = put_slp_function(o, t, info, g, 0, err);
     return st ? st : put_slp_function(o, t, info, g, 1, err);
 }

@@ -1,6 +1,8 @@
 /* kern_gpu_slp_cert.c: --certified straight-line functions on the GPU targets: the patch's
- * magnitudes and size guard, the collapsed edges, and each plane's bound (docs/errors.md). */
+ * magnitudes and size guard, the collapsed edges, each plane's bound (docs/errors.md) and the
+ * second look in double-float. */
 #include "emit/kern_gpu.h"
+#include "emit/fmt.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -88,8 +90,15 @@ static void put_world_scale(slpt_writer *w, const out_info *info, const kern_tar
     kgpu_local(w->o, g, g->real, "ER3", larger(s, g, d, a), 0);
 }
 
+/* The words of the second look's plane bits redo for L planes. */
+static int redo_words(int L)
+{
+    return (L + 31) / 32;
+}
+
 /* E (the eye's largest |component|), R, ER3 >= every monomial's magnitude (clip: E Rx Ry Rw),
- * F (the underflow term with the largest K2) and clear: the patch small enough for the bound. */
+ * F (the underflow term with the largest K2) and clear: the patch small enough for the bound;
+ * with the second look, redo instead: every plane's bit set unless the patch is small enough. */
 static void put_scale(slpt_writer *w, const out_info *info, const kern_target *g)
 {
     const cert_bounds *cb = &info->slp->cert;
@@ -113,7 +122,15 @@ static void put_scale(slpt_writer *w, const out_info *info, const kern_target *g
     prod(b, g, prod(a, g, "R1", "R1"), "R1");
     kgpu_local(w->o, g, g->real, "F", prod(s, g, k, prod(a, g, b, "1.0f + E")), 0);
     snprintf(s, sizeof s, "%s < %.9ef", prod(a, g, larger(b, g, "E", "1.0f"), "R3"), (double)cb->q_max);
-    kgpu_local(w->o, g, "bool", "clear", s, 1);
+    if (!kgpu_slp_look(info, g)) {
+        kgpu_local(w->o, g, "bool", "clear", s, 1);
+        return;
+    }
+    snprintf(k, sizeof k, "%d", redo_words(cb->nplanes));
+    g->syntax->array(w->o, g, "    ", g->uint, "redo", k);
+    g->syntax->select(a, sizeof a, s, "0u", "0xffffffffu");
+    for (i = 0; i < redo_words(cb->nplanes); i++)
+        sbuf_printf(w->o, "    redo[%d] = %s;\n", i, a);
 }
 
 /* Appends to s "a == b" of coordinate c of input points a and b, or a's finiteness (b < 0). */
@@ -181,9 +198,82 @@ void kgpu_slp_cert_plane(sbuf *o, const slp_prog *p, const out_info *info, const
     snprintf(k, sizeof k, "%.9ef", -(double)info->slp->cert.k[plane]);
     snprintf(t, sizeof t, "%s(v)", g->fabs);
     snprintf(bound, sizeof bound, g->slp_fma, k, "ER3", t);
-    sbuf_puts(o, "    clear = clear && (");
+    if (kgpu_slp_look(info, g)) /* C's ?: in every target that has the second look */
+        sbuf_printf(o, "    redo[%d] |= (", plane >> 5);
+    else
+        sbuf_puts(o, "    clear = clear && (");
     for (e = 0; e < 8; e++)
         if (zero >> e & 1)
             sbuf_printf(o, "col%d || ", e);
-    sbuf_printf(o, "%s > F);\n", bound);
+    if (kgpu_slp_look(info, g))
+        sbuf_printf(o, "%s > F) ? 0u : %uu;\n", bound, 1u << (plane & 31));
+    else
+        sbuf_printf(o, "%s > F);\n", bound);
+}
+
+int kgpu_slp_look(const out_info *info, const kern_target *g)
+{
+    return info->certified && !info->table && g->vec2 && g->df_table;
+}
+
+/* The second look's loop over the planes of redo: each one's terms in double-float into s, its
+ * value d (clip space: times eye.z), its certified flags into f; silhouette once both flags are
+ * set. */
+static void put_look_planes(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g)
+{
+    const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
+    char zero[96], w[128], e[160], fl[512];
+    kern_var s = {"s", zero, 1};
+    snprintf(zero, sizeof zero, g->vec2_make, "0.0f", "0.0f");
+    snprintf(w, sizeof w, g->vec2_make, "$dw[j]", "$dwl[j]");
+    sbuf_printf(o, "    for (i = 0u; i < %du; i++) {\n"
+                   "        if (((redo[i >> 5u] >> (i & 31u)) & 1u) == 0u)\n"
+                   "            continue;\n", d->nplanes);
+    if (kgpu_exact_zeros(info))
+        kgpu_keep(o, info, g, "        ", "i");
+    g->syntax->locals(o, g, "        ", g->vec2, &s, 1, 0);
+    sbuf_printf(o, "        for (j = %sdstart[i]; j < %sdstart[i + 1u]; j++)", px, px);
+    kgpu_then(o, g);
+    sbuf_printf(o, "            s = %sdf_add(s, %sdf_mul(", px, px);
+    kgpu_df_text(o, info, g, w);
+    sbuf_printf(o, ", %sdf_%s(cp[%sdj[j]],\n                cp[%sdkl[j] & 0xffffu], cp[%sdkl[j] >> 16]%s)));\n",
+                px, fn, px, px, px, info->space == OUT_CLIP ? "" : ", eye");
+    kgpu_end(o, g, "        ");
+    snprintf(e, sizeof e, "%sdf_mul_f(s, eye.z)", px);
+    g->syntax->locals(o, g, "        ", g->vec2,
+                      &(kern_var){"d", info->space == OUT_CLIP ? e : "s", 0}, 1, 0);
+    sbuf_printf(o, "        f |= %s%s;\n        if (f == 3u)", kgpu_df_flags(fl, sizeof fl, info, g, "i"),
+                kgpu_exact_zeros(info) ? " & keep" : "");
+    kgpu_then(o, g);
+    sbuf_puts(o, "            break; /* silhouette */\n");
+    kgpu_end(o, g, "        ");
+    sbuf_puts(o, "    }\n");
+}
+
+int kgpu_slp_look_functions(sbuf *o, const tp_table *t, const out_info *info,
+                            const kern_target *g, ptp_error *err)
+{
+    /* the planes not in redo cleared their bounds with c's sign: f starts not certainly of the
+     * other sign */
+    kern_var v[3] = {{"i", NULL, 1}, {"j", NULL, 1}, {"f", "1u + c", 1}};
+    char up[64], name[128];
+    int st;
+    fmt_upper(up, sizeof up, info->prefix);
+    if ((st = kgpu_df_plane_terms(o, t, info, g, err)))
+        return st;
+    if (kgpu_exact_zeros(info) && (st = kgpu_zero_table(o, t, info, g, err)))
+        return st;
+    kgpu_look_bounds(o, info, g, up, &info->slp->look);
+    kgpu_look_functions(o, info, g);
+    snprintf(name, sizeof name, "%ssecond_look", info->prefix);
+    sbuf_puts(o, "/* classify_patch's second look: c (back 1 or front 0) where the planes of redo (bit P % 32\n"
+                 " * of redo[P / 32]) are certainly of its sign in double-float, each against its own bound,\n"
+                 " * else silhouette (2). The other planes' float bounds cleared with c's sign. */\n");
+    sbuf_printf(o, g->slp_look, name, t->dom.npoints, redo_words(t->dom.nplanes));
+    sbuf_puts(o, "\n");
+    g->syntax->locals(o, g, "    ", g->uint, v, 3, 0);
+    kgpu_cert_look_scale(o, &t->dom, info, g, up);
+    put_look_planes(o, &t->dom, info, g);
+    sbuf_printf(o, "    return %sclass_of(f);\n}\n\n", info->prefix);
+    return PTP_OK;
 }

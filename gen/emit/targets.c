@@ -33,7 +33,7 @@ int tgt_emit_target(sbuf *o, const tgt_target *g, const tp_table *t, const out_i
     out_info in = *info;
     plan_slp plan;
     /* the straight-line program's rounding: the GPU target's (flushed subnormals), else IEEE's */
-    const cert_model model = g->gpu ? (cert_model){g->gpu->slp_cert_u, 0x1p-126} : CERT_MODEL_IEEE;
+    const cert_model model = g->gpu ? (cert_model){g->gpu->slp_cert_u, 0x1p-126, 1} : CERT_MODEL_IEEE;
     int st;
     in.suffix = g->suffix;
     if (!(g->options & TGT_SPACE)) /* no straight-line code */

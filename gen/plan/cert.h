@@ -23,12 +23,14 @@ typedef struct {
 /* A float evaluation's rounding model: u, the largest relative error of one operation (2^-24
  * rounding to nearest; more where an operation may round twice), and eta, the largest absolute
  * error of a rounded product that underflows (2^-150 with subnormals, 2^-126 where they may be
- * flushed to zero). */
+ * flushed to zero); and its second look: the table loop in double (C) or, df set, in
+ * double-float (the GPU targets). */
 typedef struct {
     double u, eta;
+    int df;
 } cert_model;
-/* IEEE float with subnormals, every operation rounded once (C). */
-#define CERT_MODEL_IEEE ((cert_model){0x1p-24, 0x1p-150})
+/* IEEE float with subnormals, every operation rounded once, a second look in double (C). */
+#define CERT_MODEL_IEEE ((cert_model){0x1p-24, 0x1p-150, 0})
 
 /* B-spline input (--basis bspline): the roundings the conversion to Bezier points adds to each
  * factor of a monomial (two sums a pass, two passes), measured against the magnitude 36

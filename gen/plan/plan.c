@@ -28,7 +28,7 @@ int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form,
                    const cert_model *certified, ptp_error *err)
 {
     int st = slp_build(&p->prog, t, err), local = (form & PLAN_LOCAL) != 0;
-    p->cert = p->cert64 = (cert_bounds){0};
+    p->cert = p->look = (cert_bounds){0};
     p->local = local;
     p->bspline = (form & PLAN_BSPLINE) != 0;
     p->vmajor = (form & PLAN_VMAJOR) != 0;
@@ -42,7 +42,8 @@ int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form,
               (p->bspline ? plan_bspline_muls(world) : 0);
     if (certified &&
         (st = cert_slp(&p->cert, &p->prog, world, local, p->bspline, certified, err)) == PTP_OK &&
-        (st = cert_table(&p->cert64, t, world, p->bspline, err)) != PTP_OK)
+        (st = certified->df ? cert_table_df(&p->look, t, world, err)
+                            : cert_table(&p->look, t, world, p->bspline, err)) != PTP_OK)
         cert_clear(&p->cert);
     if (st)
         slp_clear(&p->prog);
@@ -52,6 +53,6 @@ int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form,
 void plan_slp_clear(plan_slp *p)
 {
     cert_clear(&p->cert);
-    cert_clear(&p->cert64);
+    cert_clear(&p->look);
     slp_clear(&p->prog);
 }

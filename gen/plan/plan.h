@@ -9,8 +9,8 @@
 typedef struct {
     slp_prog prog;    /* the straight-line program (plan/slp.h) */
     cert_bounds cert; /* with certified: its margins (cert_slp); else empty */
-    cert_bounds cert64; /* with certified: the second look's, the table loop in double
-                           (cert_table); else empty */
+    cert_bounds look; /* with certified: the second look's, the table loop in double
+                         (cert_table) or, the model's df, in double-float (cert_table_df) */
     long flops, muls; /* per patch (slp_flops, slp_muls, and the frame's) in the plan's space */
     int local;        /* the program reads patch-local coordinates (docs/math.md: Patch-local
                          coordinates): point 0's origin subtracted, one rounding a coordinate */
