@@ -6,10 +6,10 @@
 #include "plan/phantom.h"
 
 /* Appends the phantoms table of phantom_table: per edge bit, its four {p0, p1, p2}. */
-static void put_phantoms(sbuf *o, int vmajor)
+static void put_phantoms(sbuf *o, const plan_slp *p)
 {
     int q[4][4][3], b, k;
-    phantom_table(q, vmajor);
+    phantom_table(q, p);
     sbuf_puts(o, "{");
     for (b = 0; b < 4; b++) {
         sbuf_puts(o, b ? ",\n    {" : "\n    {");
@@ -30,7 +30,7 @@ int emit_c_boundary(sbuf *o, const out_info *info, ptp_error *err)
         return PTP_OK;
     fmt_upper(up, sizeof up, info->prefix);
     sbuf_init(&phantoms);
-    put_phantoms(&phantoms, info->slp->vmajor);
+    put_phantoms(&phantoms, info->slp);
     slots[0] = (tpl_slot){"PREFIX", info->prefix};
     slots[1] = (tpl_slot){"UPREFIX", up};
     slots[2] = (tpl_slot){"PHANTOMS", phantoms.s};

@@ -81,13 +81,13 @@ static int converted(const out_info *info)
     return info->slp->bspline || info->slp->vmajor;
 }
 
-/* The input's index of point k (as the domain numbers it): k, or from v-major input the index of
- * its (i, j) at j (n + 1) + i. */
+/* The input's index of point k (as the domain numbers it): k, or from v-major input
+ * plan_input_index's of its (i, j). */
 static int input_point(const out_info *info, const tp_domain *d, int k)
 {
     int i, j;
     tp_domain_point_ij(&i, &j, d, k);
-    return info->slp->vmajor ? j * (d->n + 1) + i : k;
+    return info->slp->vmajor ? plan_input_index(info->slp, i, j) : k;
 }
 
 /* The first point on boundary edge e of d. */

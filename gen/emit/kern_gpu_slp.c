@@ -195,7 +195,7 @@ static void put_phantoms(sbuf *o, const out_info *info, const kern_target *g)
 {
     int q[4][4][3], b, k, c;
     char p1[32], e[96];
-    phantom_table(q, info->vmajor);
+    phantom_table(q, info->slp);
     kgpu_local(o, g, g->uint, "mask", "boundary_mask[pid]", 0);
     for (b = 0; b < 4; b++) {
         sbuf_printf(o, "    if ((mask & %uu) != 0u) {\n", 1u << b);

@@ -78,13 +78,6 @@ static void minor_expr(char *out, const slpt_writer *w, const char *p, const cha
 static const char *const origin[3] = {"ox", "oy", "oz"};
 static const char *const raw_eye[3] = {"e0", "e1", "e2"}, *const local_eye[3] = {"l0", "l1", "l2"};
 
-/* The input's index of point (i, j) of the (n+1) x (m+1) grid, i along u. */
-static int input_index(const slpt_writer *w, int i, int j)
-{
-    const plan_slp *pl = w->plan;
-    return pl->vmajor ? j * (pl->n + 1) + i : i * (pl->m + 1) + j;
-}
-
 void slpt_input(char *out, const slpt_writer *w, int idx, int c)
 {
     char x[EXPR], wk[EXPR];
@@ -122,7 +115,7 @@ static void put_bspline(slpt_writer *w)
         for (i = 0; i < 4; i++) /* along u: column j of the input's 4 x 4 vertices */
             for (j = 0; j < 4; j++) {
                 for (k = 0; k < 4; k++)
-                    slpt_input(a[k], w, input_index(w, k, j), c);
+                    slpt_input(a[k], w, plan_input_index(w->plan, k, j), c);
                 snprintf(names[i * 4 + j], sizeof names[0], "h%c%d_%d", xyzw[c], i, j);
                 bspline_row(inits[i * 4 + j], w, i, a);
             }
@@ -179,7 +172,7 @@ void slpt_coordinate(char *out, const slpt_writer *w, int k, int c)
     if (w->plan->bspline)
         expr(out, "b%c%d", "xyzw"[c], k);
     else
-        slpt_input(out, w, input_index(w, k / (w->plan->m + 1), k % (w->plan->m + 1)), c);
+        slpt_input(out, w, plan_input_index(w->plan, k / (w->plan->m + 1), k % (w->plan->m + 1)), c);
 }
 
 void slpt_point(slpt_writer *w, int k)

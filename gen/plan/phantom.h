@@ -3,10 +3,11 @@
  * 8 u = 0), its four vertices p0 with the two inward p1, p2, extrapolated p0 = 2 p1 - p2. */
 #ifndef PHANTOM_H
 #define PHANTOM_H
+#include "plan/plan.h"
 
-/* Fills q[b][k] with the input indices {p0, p1, p2} of phantom k of edge bit b, for 16 vertices
- * in u-major (vmajor 0) or v-major order. The writers apply bits 0 to 3 in turn, each reading
- * the values the earlier ones wrote. */
-void phantom_table(int q[4][4][3], int vmajor);
+/* Fills q[b][k] with the input indices {p0, p1, p2} of phantom k of edge bit b, for the 16
+ * vertices of a bicubic plan's input (plan_input_index). The writers apply bits 0 to 3 in
+ * turn, each reading the values the earlier ones wrote. */
+void phantom_table(int q[4][4][3], const plan_slp *p);
 
 #endif

@@ -50,6 +50,11 @@ int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form,
     return st;
 }
 
+int plan_input_index(const plan_slp *p, int i, int j)
+{
+    return p->vmajor ? j * (p->n + 1) + i : i * (p->m + 1) + j;
+}
+
 void plan_slp_clear(plan_slp *p)
 {
     cert_clear(&p->cert);

@@ -40,5 +40,8 @@ int plan_slp_build(plan_slp *p, const tp_table *t, int world, int form,
                    const cert_model *certified, ptp_error *err);
 /* Frees p's storage. */
 void plan_slp_clear(plan_slp *p);
+/* The input's index of point (i, j) of a quad plan's (n + 1) x (m + 1) grid, i along u:
+ * i (m + 1) + j, or from v-major input j (n + 1) + i. */
+int plan_input_index(const plan_slp *p, int i, int j);
 
 #endif
