@@ -136,8 +136,9 @@ BENCH_CFLAGS = -O3 -march=native
 BENCH_CC ?= $(CC)
 
 # Variants of the bicubic header whose batch path is timed too: --refine 3, --certified, both,
-# and --basis bspline (B-spline input: the conversion included).
-BENCH_VARIANTS = refine3 certified certified_refine3 bspline
+# --basis bspline (B-spline input: the conversion included) and --coordinates absolute (the
+# points as given: what the patch-local frame costs).
+BENCH_VARIANTS = refine3 certified certified_refine3 bspline absolute
 
 bench: ptpgen $(B)/bench/peak $(addprefix $(B)/bench/bench_cull_,$(BENCH_DEGREES)) \
     $(addprefix $(B)/bench/bench_cull_3x3_,$(BENCH_VARIANTS)) $(B)/bench/bench_tri
@@ -181,10 +182,14 @@ $(B)/bench/ptp_3x3_bspline.h: $(B)/ptpgen
 	@mkdir -p $(@D)
 	$(B)/ptpgen --degree 3 --target c --basis bspline --prefix ptp_3x3_ -o $@
 
+$(B)/bench/ptp_3x3_absolute.h: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target c --coordinates absolute --prefix ptp_3x3_ -o $@
+
 $(B)/bench/bench_cull_3x3_%: bench/bench_cull.c $(B)/bench/ptp_3x3_%.h Makefile $(B)/bench/cc.txt
 	$(BENCH_CC) $(STD) $(BENCH_CFLAGS) -D_GNU_SOURCE -include $(B)/bench/ptp_3x3_$*.h \
 	    -DPTP_3X3_IMPLEMENTATION -DPFX=ptp_3x3_ -DUPFX=PTP_3X3_ -DDEGREE='"3x3"' \
-	    -DVARIANT='"$(subst _, ,$(subst bspline,--basis bspline,$(subst refine,--refine ,$(subst certified,--certified,$*))))"' \
+	    -DVARIANT='"$(subst _, ,$(subst absolute,--coordinates absolute,$(subst bspline,--basis bspline,$(subst refine,--refine ,$(subst certified,--certified,$*)))))"' \
 	    -o $@ $< -lm -pthread
 
 # The triangle benchmark's headers: degree 1 in world (ptp_tri1w_) and clip space, the cubic
