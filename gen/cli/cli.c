@@ -81,11 +81,10 @@ static void usage_options(sbuf *o)
         CLI_MAX_REFINE);
     sbuf_printf(o,
         "  --kernel K       GPU targets: slp (default): one patch an invocation, the\n"
-        "                   straight-line program (--certified: a second look in\n"
-        "                   double-float in OpenCL and CUDA, none in GLSL and HLSL; not\n"
-        "                   WGSL); table (the default with --certified): the paper's\n"
-        "                   kernel, P threads a patch over the term table, with a second\n"
-        "                   look in double-float; indexed: slp's, reading each patch's\n"
+        "                   straight-line program (--certified: with a second look in\n"
+        "                   double-float; not WGSL); table (the default with --certified):\n"
+        "                   the paper's kernel, P threads a patch over the term table, with\n"
+        "                   a second look in double-float; indexed: slp's, reading each patch's\n"
         "                   points from a vertex buffer through K indices a patch (--basis\n"
         "                   bspline: and OpenSubdiv's boundary masks)\n"
         "  --stage S        GPU targets: kernel (default): a compute kernel; function: only\n"

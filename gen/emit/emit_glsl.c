@@ -45,6 +45,7 @@ const kern_target kern_glsl = {
     .vec2 = "vec2", .vec2_make = "vec2(%s, %s)",
     .slp_classify = "uint %s(vec4 cp[%d], vec4 eye)\n{",
     .slp_values = "void %s(vec4 cp[%d], vec4 eye, out float d[%d])\n{",
+    .slp_look = "uint %s(vec4 cp[%d], vec4 eye, uint c, uint redo[%d])\n{",
     .slp_d = "d[%d]",
     .slp_decl = "precise float ",
     .slp_fma = "fma(%s, %s, %s)",

@@ -150,19 +150,17 @@ struct kern_target {
      * own: HLSL's SPIR-V legalization (glslang, DXC) inlines every call, in a time quadratic in
      * the size of the block that receives the inlined code */
     int split_rounds;
-    /* 1: the second look reads the terms of the planes it looks at again from one table of all
-     * terms (constant memory), and the certified straight-line code has one too; 0: the table
-     * kernel's sums every plane again from the rounds' small tables, and the straight-line code
-     * has none (lavapipe copies a large constant array at every dynamic access, and compiles a
-     * loop over one for minutes: two for the straight-line second look) */
+    /* 1: the table kernel's second look reads the terms of the planes it looks at again from one
+     * table of all terms (constant memory); 0: it sums every plane again from the rounds' small
+     * tables (lavapipe copies a large constant array at every dynamic access, and compiles a loop
+     * over one for minutes) */
     int df_table;
     /* The straight-line functions (kern_gpu_slp.c): classify_patch and values. */
     const char *slp_classify; /* classify_patch's head through its opening brace, printf format of
                                  its name and the point count K: "uint %s(vec4 cp[%d], vec4 eye)\n{" */
     const char *slp_values;   /* values' head, printf format of its name, K and the plane count L */
-    const char *slp_look;     /* --certified with df_table: second_look's head (the class c, the
-                                 planes to look at again as bits of redo), format of its name, K
-                                 and the words W */
+    const char *slp_look;     /* --certified: second_look's head (the class c, the planes to look
+                                 at again as bits of redo), format of its name, K and the words W */
     const char *slp_d;        /* values' element P of d, printf format of P: "d[%d]" */
     const char *slp_decl;     /* declares float locals that no contraction crosses: "precise float " */
     const char *slp_fma;      /* an explicitly fused a * b + c, printf format of a, b, c */

@@ -167,16 +167,17 @@ void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const cha
  * 2 |d.y|). */
 char *kgpu_df_flags(char *out, size_t size, const out_info *info, const kern_target *g,
                     const char *plane);
-/* The second look's terms in plane order (kgpu_df_terms' tables, dstart[n] for plane n).
- * PTP_OK or PTP_ENOMEM. */
+/* The straight-line second look's terms in plane order: the table dstart (plane n's terms are i
+ * in dstart[n] .. dstart[n+1]-1) and the switch functions dterm_points(i) (j | k << 10 |
+ * l << 20: at most 1024 points) and dterm_weight(i) (double-float). PTP_OK or PTP_ENOMEM. */
 int kgpu_df_plane_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                         ptp_error *err);
 
 /* kern_gpu_slp.c: the straight-line kernel, one patch an invocation. */
 
 /* kern_gpu_slp_cert.c: --certified straight-line code (classify_patch): a patch whose float
- * bounds do not clear but whose float signs decide is looked at again in double-float where the
- * target has it, else silhouette (docs/errors.md). */
+ * signs decide but whose bounds do not all clear is looked at again in double-float, its planes
+ * whose bounds do not clear (docs/errors.md). */
 
 /* Declares, after slpt_frame and before the planes, the certified scale of the patch: the
  * magnitudes Rc, E, R, ER3, F, the bool clear (the patch small enough and, once every plane has
@@ -188,8 +189,7 @@ int kgpu_slp_cert_head(slpt_writer *w, const tp_domain *d, const out_info *info,
  * F, or where a collapsed edge zeros the plane exactly. */
 void kgpu_slp_cert_plane(sbuf *o, const slp_prog *p, const out_info *info, const kern_target *g,
                          int plane);
-/* Whether the certified straight-line code has the second look: g has double-float (vec2) and
- * loops over term tables (df_table). */
+/* Whether the certified straight-line code has the second look: g has double-float (vec2). */
 int kgpu_slp_look(const out_info *info, const kern_target *g);
 /* With kgpu_slp_look, what classify_patch's second look needs, before it: the term tables in
  * plane order, zero, the bounds of the plan's look, the helpers (kgpu_look_functions) and the

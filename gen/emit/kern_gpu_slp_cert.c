@@ -213,7 +213,7 @@ void kgpu_slp_cert_plane(sbuf *o, const slp_prog *p, const out_info *info, const
 
 int kgpu_slp_look(const out_info *info, const kern_target *g)
 {
-    return info->certified && !info->table && g->vec2 && g->df_table;
+    return info->certified && !info->table && g->vec2;
 }
 
 /* The second look's loop over the planes of redo: each one's terms in double-float into s, its
@@ -222,23 +222,21 @@ int kgpu_slp_look(const out_info *info, const kern_target *g)
 static void put_look_planes(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    char zero[96], w[128], e[160], fl[512];
+    char zero[96], e[160], fl[512];
     kern_var s = {"s", zero, 1};
     snprintf(zero, sizeof zero, g->vec2_make, "0.0f", "0.0f");
-    snprintf(w, sizeof w, g->vec2_make, "$dw[j]", "$dwl[j]");
     sbuf_printf(o, "    for (i = 0u; i < %du; i++) {\n"
                    "        if (((redo[i >> 5u] >> (i & 31u)) & 1u) == 0u)\n"
                    "            continue;\n", d->nplanes);
     if (kgpu_exact_zeros(info))
         kgpu_keep(o, info, g, "        ", "i");
     g->syntax->locals(o, g, "        ", g->vec2, &s, 1, 0);
-    sbuf_printf(o, "        for (j = %sdstart[i]; j < %sdstart[i + 1u]; j++)", px, px);
-    kgpu_then(o, g);
-    sbuf_printf(o, "            s = %sdf_add(s, %sdf_mul(", px, px);
-    kgpu_df_text(o, info, g, w);
-    sbuf_printf(o, ", %sdf_%s(cp[%sdj[j]],\n                cp[%sdkl[j] & 0xffffu], cp[%sdkl[j] >> 16]%s)));\n",
-                px, fn, px, px, px, info->space == OUT_CLIP ? "" : ", eye");
-    kgpu_end(o, g, "        ");
+    sbuf_printf(o, "        for (j = %sdstart[i]; j < %sdstart[i + 1u]; j++) {\n", px, px);
+    snprintf(e, sizeof e, "%sdterm_points(j)", px);
+    g->syntax->locals(o, g, "            ", g->uint, &(kern_var){"t", e, 0}, 1, 0);
+    sbuf_printf(o, "            s = %sdf_add(s, %sdf_mul(%sdterm_weight(j), %sdf_%s(cp[t & 1023u],\n"
+                   "                cp[(t >> 10) & 1023u], cp[t >> 20]%s)));\n        }\n",
+                px, px, px, px, fn, info->space == OUT_CLIP ? "" : ", eye");
     snprintf(e, sizeof e, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "        ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? e : "s", 0}, 1, 0);
