@@ -56,7 +56,7 @@ const kern_target kern_hlsl = {
     .split_rounds = 1,
     .slp_classify = "uint %s(float4 cp[%d], float4 eye)\n{",
     .slp_values = "void %s(float4 cp[%d], float4 eye, out float d[%d])\n{",
-    .slp_look = "uint %s(float4 cp[%d], float4 eye, uint c, uint redo[%d])\n{",
+    /* no .slp_look: as GLSL's (the same runtime in the tests) */
     .slp_d = "d[%d]",
     .slp_decl = "precise float ",
     .slp_fma = "mad(%s, %s, %s)",

@@ -160,7 +160,9 @@ struct kern_target {
                                  its name and the point count K: "uint %s(vec4 cp[%d], vec4 eye)\n{" */
     const char *slp_values;   /* values' head, printf format of its name, K and the plane count L */
     const char *slp_look;     /* --certified: second_look's head (the class c, the planes to look
-                                 at again as bits of redo), format of its name, K and the words W */
+                                 at again as bits of redo), format of its name, K and the words W;
+                                 NULL: no second look (a patch whose bounds do not clear is
+                                 silhouette) */
     const char *slp_d;        /* values' element P of d, printf format of P: "d[%d]" */
     const char *slp_decl;     /* declares float locals that no contraction crosses: "precise float " */
     const char *slp_fma;      /* an explicitly fused a * b + c, printf format of a, b, c */

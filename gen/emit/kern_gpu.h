@@ -189,7 +189,7 @@ int kgpu_slp_cert_head(slpt_writer *w, const tp_domain *d, const out_info *info,
  * F, or where a collapsed edge zeros the plane exactly. */
 void kgpu_slp_cert_plane(sbuf *o, const slp_prog *p, const out_info *info, const kern_target *g,
                          int plane);
-/* Whether the certified straight-line code has the second look: g has double-float (vec2). */
+/* Whether the certified straight-line code has the second look: g's slp_look (and vec2). */
 int kgpu_slp_look(const out_info *info, const kern_target *g);
 /* With kgpu_slp_look, what classify_patch's second look needs, before it: the term tables in
  * plane order, zero, the bounds of the plan's look, the helpers (kgpu_look_functions) and the

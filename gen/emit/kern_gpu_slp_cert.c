@@ -213,7 +213,7 @@ void kgpu_slp_cert_plane(sbuf *o, const slp_prog *p, const out_info *info, const
 
 int kgpu_slp_look(const out_info *info, const kern_target *g)
 {
-    return info->certified && !info->table && g->vec2;
+    return info->certified && !info->table && g->slp_look;
 }
 
 /* The second look's loop over the planes of redo: each one's terms in double-float into s, its
