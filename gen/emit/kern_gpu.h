@@ -167,9 +167,8 @@ void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const cha
  * 2 |d.y|). */
 char *kgpu_df_flags(char *out, size_t size, const out_info *info, const kern_target *g,
                     const char *plane);
-/* The straight-line second look's terms in plane order: the table dstart (plane n's terms are i
- * in dstart[n] .. dstart[n+1]-1) and the switch functions dterm_points(i) (j | k << 10 |
- * l << 20: at most 1024 points) and dterm_weight(i) (double-float). PTP_OK or PTP_ENOMEM. */
+/* The straight-line second look's terms in plane order (kgpu_df_terms' tables, dstart[n] for
+ * plane n). PTP_OK or PTP_ENOMEM. */
 int kgpu_df_plane_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                         ptp_error *err);
 
@@ -191,6 +190,8 @@ void kgpu_slp_cert_plane(sbuf *o, const slp_prog *p, const out_info *info, const
                          int plane);
 /* Whether the certified straight-line code has the second look: g's slp_look (and vec2). */
 int kgpu_slp_look(const out_info *info, const kern_target *g);
+/* The uint words of the second look's plane bits redo, for L planes. */
+int kgpu_redo_words(int L);
 /* With kgpu_slp_look, what classify_patch's second look needs, before it: the term tables in
  * plane order, zero, the bounds of the plan's look, the helpers (kgpu_look_functions) and the
  * function second_look(cp, eye), the class from every plane in double-float against its own

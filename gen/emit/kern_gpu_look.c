@@ -5,7 +5,6 @@
 
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 /* Into hi the float of w's literal, into lo the float nearest w - hi: hi + lo is w within
  * 2^-47 |w|. */
@@ -76,72 +75,23 @@ int kgpu_df_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_t
     return st;
 }
 
-/* Writes to lit (48 bytes) a float literal of f, exact (9 significant digits); returns lit. */
-static char *float_literal(char *lit, float f)
-{
-    size_t n = (size_t)snprintf(lit, 44, "%.9g", (double)f);
-    snprintf(lit + n, 48 - n, "%sf", strpbrk(lit, ".en") ? "" : ".0");
-    return lit;
-}
-
-/* The switch function <prefix>name(uint i) of type ret over the terms of t in plane order (term
- * order[n] at i = n): the term's points (j | k << 10 | l << 20) or, weight set, its weight in
- * double-float (weight_split's); zero for other i. The cases assign and break: lavapipe
- * miscompiles returns from inside a switch inlined into a loop (the second look then decided
- * less). */
-static void put_term_switch(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
-                            const size_t *order, const char *ret, const char *name, int weight)
-{
-    char full[128], zero[64], h[48], l[48];
-    size_t n;
-    snprintf(full, sizeof full, "%s%s", info->prefix, name);
-    g->syntax->function(o, g, ret, full, &(kern_param){g->uint, "i"}, 1);
-    snprintf(zero, sizeof zero, g->vec2_make, "0.0f", "0.0f");
-    g->syntax->locals(o, g, "    ", ret, &(kern_var){"r", weight ? zero : "0u", 1}, 1, 0);
-    sbuf_puts(o, "    switch (i) {\n");
-    for (n = 0; n < t->nterms; n++) {
-        const tp_term *a = &t->terms[order[n]];
-        float hi, lo;
-        sbuf_printf(o, "    case %zuu: r = ", n);
-        if (weight) {
-            weight_split(&hi, &lo, &a->w);
-            sbuf_printf(o, g->vec2_make, float_literal(h, hi), float_literal(l, lo));
-        } else {
-            sbuf_printf(o, "%uu", (unsigned)a->j | (unsigned)a->k << 10 | (unsigned)a->l << 20);
-        }
-        sbuf_puts(o, "; break;\n");
-    }
-    sbuf_puts(o, "    default: break;\n    }\n    return r;\n}\n\n");
-}
-
 int kgpu_df_plane_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                         ptp_error *err)
 {
     long L = t->dom.nplanes, p;
-    unsigned long *start = malloc(((size_t)L + 1) * sizeof *start);
-    size_t *order = malloc((t->nterms + 1) * sizeof *order), x, k = 0;
-    if (!start || !order) {
-        free(start);
-        free(order);
-        return ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
+    unsigned long *v = malloc(((size_t)L + 1 + 2 * t->nterms) * sizeof *v);
+    long *order = malloc((size_t)L * sizeof *order);
+    int st;
+    if (!v || !order)
+        st = ptp_fail(err, PTP_ENOMEM, "out of memory writing tables");
+    else {
+        for (p = 0; p < L; p++)
+            order[p] = p;
+        st = put_df_terms(o, t, info, g, order, "plane n", v, err);
     }
-    for (p = 0; p < L; p++) {
-        start[p] = (unsigned long)k;
-        for (x = 0; x < t->nterms; x++)
-            if (t->terms[x].plane == p)
-                order[k++] = x;
-    }
-    start[L] = (unsigned long)k;
-    sbuf_puts(o, "/* Second look: the terms of plane n are i in dstart[n] .. dstart[n+1]-1, term i the weight\n"
-                 " * dterm_weight(i) (double-float) times term(j, k, l) of dterm_points(i) = j | k << 10 | l << 20.\n"
-                 " * Switches, not tables: lavapipe compiles a loop over a large constant table for minutes. */\n");
-    kgpu_uint_table(o, g, info->prefix, "dstart", start, L + 1, 16, 0);
-    sbuf_puts(o, "\n");
-    put_term_switch(o, t, info, g, order, g->uint, "dterm_points", 0);
-    put_term_switch(o, t, info, g, order, g->vec2, "dterm_weight", 1);
-    free(start);
+    free(v);
     free(order);
-    return PTP_OK;
+    return st;
 }
 
 void kgpu_df_weight_lo(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,

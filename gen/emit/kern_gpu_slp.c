@@ -96,7 +96,7 @@ static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g, 
         g->syntax->select(b, sizeof b, "nan", "2u", c);
     }
     if (kgpu_slp_look(info, g)) { /* the plain class; again where bounds do not clear */
-        int k, n = (L + 31) / 32;
+        int k, n = kgpu_redo_words(L);
         kgpu_local(o, g, g->uint, "c", b, 1);
         sbuf_puts(o, "    if (c != 2u && (");
         for (k = 0; k < n; k++)

@@ -90,8 +90,7 @@ static void put_world_scale(slpt_writer *w, const out_info *info, const kern_tar
     kgpu_local(w->o, g, g->real, "ER3", larger(s, g, d, a), 0);
 }
 
-/* The words of the second look's plane bits redo for L planes. */
-static int redo_words(int L)
+int kgpu_redo_words(int L)
 {
     return (L + 31) / 32;
 }
@@ -126,10 +125,10 @@ static void put_scale(slpt_writer *w, const out_info *info, const kern_target *g
         kgpu_local(w->o, g, "bool", "clear", s, 1);
         return;
     }
-    snprintf(k, sizeof k, "%d", redo_words(cb->nplanes));
+    snprintf(k, sizeof k, "%d", kgpu_redo_words(cb->nplanes));
     g->syntax->array(w->o, g, "    ", g->uint, "redo", k);
     g->syntax->select(a, sizeof a, s, "0u", "0xffffffffu");
-    for (i = 0; i < redo_words(cb->nplanes); i++)
+    for (i = 0; i < kgpu_redo_words(cb->nplanes); i++)
         sbuf_printf(w->o, "    redo[%d] = %s;\n", i, a);
 }
 
@@ -222,21 +221,23 @@ int kgpu_slp_look(const out_info *info, const kern_target *g)
 static void put_look_planes(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    char zero[96], e[160], fl[512];
+    char zero[96], w[128], e[160], fl[512];
     kern_var s = {"s", zero, 1};
     snprintf(zero, sizeof zero, g->vec2_make, "0.0f", "0.0f");
+    snprintf(w, sizeof w, g->vec2_make, "$dw[j]", "$dwl[j]");
     sbuf_printf(o, "    for (i = 0u; i < %du; i++) {\n"
                    "        if (((redo[i >> 5u] >> (i & 31u)) & 1u) == 0u)\n"
                    "            continue;\n", d->nplanes);
     if (kgpu_exact_zeros(info))
         kgpu_keep(o, info, g, "        ", "i");
     g->syntax->locals(o, g, "        ", g->vec2, &s, 1, 0);
-    sbuf_printf(o, "        for (j = %sdstart[i]; j < %sdstart[i + 1u]; j++) {\n", px, px);
-    snprintf(e, sizeof e, "%sdterm_points(j)", px);
-    g->syntax->locals(o, g, "            ", g->uint, &(kern_var){"t", e, 0}, 1, 0);
-    sbuf_printf(o, "            s = %sdf_add(s, %sdf_mul(%sdterm_weight(j), %sdf_%s(cp[t & 1023u],\n"
-                   "                cp[(t >> 10) & 1023u], cp[t >> 20]%s)));\n        }\n",
-                px, px, px, px, fn, info->space == OUT_CLIP ? "" : ", eye");
+    sbuf_printf(o, "        for (j = %sdstart[i]; j < %sdstart[i + 1u]; j++)", px, px);
+    kgpu_then(o, g);
+    sbuf_printf(o, "            s = %sdf_add(s, %sdf_mul(", px, px);
+    kgpu_df_text(o, info, g, w);
+    sbuf_printf(o, ", %sdf_%s(cp[%sdj[j]],\n                cp[%sdkl[j] & 0xffffu], cp[%sdkl[j] >> 16]%s)));\n",
+                px, fn, px, px, px, info->space == OUT_CLIP ? "" : ", eye");
+    kgpu_end(o, g, "        ");
     snprintf(e, sizeof e, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "        ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? e : "s", 0}, 1, 0);
@@ -267,7 +268,7 @@ int kgpu_slp_look_functions(sbuf *o, const tp_table *t, const out_info *info,
     sbuf_puts(o, "/* classify_patch's second look: c (back 1 or front 0) where the planes of redo (bit P % 32\n"
                  " * of redo[P / 32]) are certainly of its sign in double-float, each against its own bound,\n"
                  " * else silhouette (2). The other planes' float bounds cleared with c's sign. */\n");
-    sbuf_printf(o, g->slp_look, name, t->dom.npoints, redo_words(t->dom.nplanes));
+    sbuf_printf(o, g->slp_look, name, t->dom.npoints, kgpu_redo_words(t->dom.nplanes));
     sbuf_puts(o, "\n");
     g->syntax->locals(o, g, "    ", g->uint, v, 3, 0);
     kgpu_cert_look_scale(o, &t->dom, info, g, up);
