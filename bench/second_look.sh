@@ -11,7 +11,7 @@ set -u
 B=$1 neyes=${2:-24} space=${3:-world} target=${4:-glsl}
 . bench/gpu_lib.sh
 "$B/ptpgen" --degree 3 --space "$space" --kernel table --prefix sl_ --target "$target" -o "$tmp/plain.src" &&
-    "$B/ptpgen" --degree 3 --space "$space" --certified --prefix sl_ --target "$target" -o "$tmp/on.src" || exit 1
+    "$B/ptpgen" --degree 3 --space "$space" --certified --kernel table --prefix sl_ --target "$target" -o "$tmp/on.src" || exit 1
 sed 's/bool again = live &&/bool again = false \&\& live \&\&/' "$tmp/on.src" >"$tmp/off.src"
 # the patches that take the second look, as front (every other patch silhouette)
 sed 's/cls\[pid\] = sl_class_of(f);/cls[pid] = again ? 0u : 2u;/' "$tmp/on.src" >"$tmp/again.src"

@@ -93,6 +93,11 @@ schedule() {
     esac
 }
 
+# host_sched KERNEL: the hosts' options for the workgroup of KERNEL's banner (either form).
+host_sched() {
+    kernel_schedule "$1" | sed 's/^/--block-threads /; s/ \([0-9]*\)$/ --patches-per-block \1/'
+}
+
 # build_host_c CC FLAGS HEADER D: builds tests/host_c.c around the C header HEADER of bidegree D
 # (default names) with compiler CC and options FLAGS into $tmp/host_c; errors in $tmp/err.
 build_host_c() {
@@ -184,37 +189,36 @@ gives_up_little() {
 # degree_args takes it, default names) on every runtime this machine has: OpenCL on PoCL, GLSL
 # and HLSL on lavapipe (as SPIR-V that spirv-val accepts), WGSL on wgpu-native, CUDA compiled by
 # nvcc (and run where a GPU is) and emulated on the CPU. For each it calls RUN TARGET HOST... with
-# the command that runs the kernel with $PQ threads and $Q patches a workgroup; RUN appends the
+# the command that runs the kernel with the workgroup of its banner (host_sched); RUN appends the
 # configuration and the data from its caller's variables, which the gr_ locals here do not hide.
-# A kernel that does not compile is a "not ok" naming LABEL; DIR without a WGSL file (the
-# certified straight-line code, which WGSL has not) skips WGSL.
+# A kernel that does not compile is a "not ok" naming LABEL; DIR without a WGSL file skips WGSL.
 gpu_runtimes() {
-    local gr_run=$1 gr_dir=$2 gr_d=$3 gr_label=$4 lang extra
-    local sched="--block-threads $PQ --patches-per-block $Q"
-    [ -x "$B/host_opencl" ] && $gr_run opencl "$B/host_opencl" "$gr_dir/ptp_$gr_d.cl" --kernel ptp_${gr_d}_classify $sched
+    local gr_run=$1 gr_dir=$2 gr_d=$3 gr_label=$4 lang extra gr_k="$2/ptp_$3"
+    [ -x "$B/host_opencl" ] && $gr_run opencl "$B/host_opencl" "$gr_k.cl" --kernel ptp_${gr_d}_classify $(host_sched "$gr_k.cl")
     for lang in glsl hlsl; do
         [ $have_gpu_tools = 1 ] || break
-        if ! to_spirv $lang "$gr_dir/ptp_$gr_d"; then
+        if ! to_spirv $lang "$gr_k"; then
             notok "$lang $gr_label compiles to SPIR-V that spirv-val accepts" "$(grep -m3 -i error "$tmp/err")"
             continue
         fi
         ok "$lang $gr_label compiles to SPIR-V that spirv-val accepts"
-        [ -x "$B/host_vulkan" ] && $gr_run $lang "$B/host_vulkan" "$tmp/k.spv" $sched $extra
+        [ -x "$B/host_vulkan" ] && $gr_run $lang "$B/host_vulkan" "$tmp/k.spv" \
+            $(host_sched "$gr_k.$([ $lang = glsl ] && echo comp || echo hlsl)") $extra
     done
-    [ -x "$B/host_wgpu" ] && [ -e "$gr_dir/ptp_$gr_d.wgsl" ] && $gr_run wgsl "$B/host_wgpu" "$gr_dir/ptp_$gr_d.wgsl" $sched
+    [ -x "$B/host_wgpu" ] && [ -e "$gr_k.wgsl" ] && $gr_run wgsl "$B/host_wgpu" "$gr_k.wgsl" $(host_sched "$gr_k.wgsl")
     if [ -x "$NVCC" ]; then
         if cuda_compile "$gr_dir" $gr_d && cuda_host "$gr_dir" $gr_d; then
             ok "cuda $gr_label compiles with nvcc (-ptx with the entry ptp_${gr_d}_classify$([ $cuda_host_new = 1 ] && echo ', and the host')"
             cuda_no_fmad "$gr_label" "$gr_dir" $gr_d
             # The host runs wherever a GPU is (it says so when there is none).
-            [ $cuda_host_new = 1 ] && $gr_run cuda "$tmp/host_cuda" $sched
+            [ $cuda_host_new = 1 ] && $gr_run cuda "$tmp/host_cuda" $(host_sched "$gr_k.cu")
         else
             notok "cuda $gr_label compiles with nvcc" "$(grep -m3 -i error "$tmp/err")"
         fi
     fi
     if [ $have_emu = 1 ]; then
         if cuda_emu_host "$gr_dir" $gr_d; then
-            $gr_run cuda-emu "$tmp/host_cuda_emu" $sched
+            $gr_run cuda-emu "$tmp/host_cuda_emu" $(host_sched "$gr_k.cu")
         else
             notok "cuda $gr_label builds for the emulation with $CUDA_EMU_CXX" "$(grep -m3 -i error "$tmp/err")"
         fi

@@ -84,7 +84,6 @@ lane=build/test-lane.log
     : >"$log"
     if [ -x build/gcc/ptpgen ]; then
         run tests/test_certified.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_certified.sh
-        run tests/test_certified_slp.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_certified_slp.sh
     fi
 ) >/dev/null &
 lane_pid=$!

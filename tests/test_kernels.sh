@@ -32,17 +32,17 @@ exercise_run() {
     done
 }
 
-# exercise DIR D SPACE RULE PLANES PQ Q LABEL [GPU]: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu,wgsl}
+# exercise DIR D SPACE RULE PLANES LABEL [GPU]: compiles the kernels DIR/ptp_D.{h,cl,comp,hlsl,cu,wgsl}
 # (degree D as degree_args takes it, default names) and runs each on the data of data_args against
 # the reference; with GPU, the GPU kernels alone (the C header is another configuration's).
 exercise() {
-    local dir=$1 d=$2 pl="" PQ=$6 Q=$7 label=$8 cc data
+    local dir=$1 d=$2 pl="" label=$6 cc data
     local hcfg="$(host_degree $2) --space $3 --rule $4"
     [ "$5" = 1 ] && pl=--planes
 
     # C, with gcc and clang.
     for cc in gcc clang; do
-        [ -z "${9:-}" ] || break
+        [ -z "${7:-}" ] || break
         command -v $cc >/dev/null || continue
         if build_host_c $cc -O2 "$dir/ptp_$d.h" $d; then
             data_args $d | while read -r data; do
@@ -78,8 +78,7 @@ for d in $fresh; do
                     "$P" $(args_for ${te%%:*} $d $space $rule --planes --kernel=$kernel) --target ${te%%:*} \
                         -o "$tmp/gen/ptp_$d${te#*:}" || notok "$d $space $rule $kernel ${te%%:*}" "ptpgen failed"
                 done
-                read -r PQ Q < <(schedule "$tmp/gen/ptp_$d.comp")
-                exercise "$tmp/gen" $d $space $rule 1 $PQ $Q "$d $space $rule $kernel" $([ $kernel = table ] && echo gpu)
+                exercise "$tmp/gen" $d $space $rule 1 "$d $space $rule $kernel" $([ $kernel = table ] && echo gpu)
             done
         done
     done
@@ -92,9 +91,8 @@ done
 for dir in out/*x*/ out/tri*/; do
     d=$(basename "$dir")
     seed=$((seed + 1))
-    read -r PQ Q < <(schedule "out/$d/ptp_$d.comp")
     case " $fresh " in *" $d "*) [ $d != 4x4 ] && gpu=gpu || gpu="" ;; *) gpu="" ;; esac
-    exercise "out/$d" $d clip strict 0 $PQ $Q "vendored out/$d" $gpu
+    exercise "out/$d" $d clip strict 0 "vendored out/$d" $gpu
 done
 
 # Without --planes the kernels write only the classes (OpenCL gets a null planes pointer).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_second_look.sh: the GPU certified kernels' second look in double-float recovers the culls
+# test_second_look.sh: the certified table kernels' second look in double-float recovers the culls
 # that their float bound gives up. Needs PTPGEN and BUILD (the folder with host_vulkan).
 set -u
 P=${PTPGEN:?set PTPGEN}
@@ -40,7 +40,7 @@ read -r PQ Q < <(python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['sc
 # it the kernel must give up strictly fewer (on the knot alone the float bound gives up almost none:
 # the exact patches are what it leaves), and at most 1% of the back or front patches.
 for space in world clip; do
-    "$P" --degree 3 --space $space --certified --target glsl -o "$tmp/on.comp"
+    "$P" --degree 3 --space $space --certified --kernel table --target glsl -o "$tmp/on.comp"
     sed 's/bool again = live &&/bool again = false \&\& live \&\&/' "$tmp/on.comp" >"$tmp/off.comp"
     if cmp -s "$tmp/on.comp" "$tmp/off.comp"; then
         notok "glsl 3x3 $space certified has a second look" "its condition was not found"

@@ -82,8 +82,8 @@ static void usage_options(sbuf *o)
     sbuf_printf(o,
         "  --kernel K       GPU targets: slp (default): one patch an invocation, the\n"
         "                   straight-line program (--certified: a second look in double-\n"
-        "                   float in OpenCL and CUDA, none in GLSL and HLSL; not WGSL);\n"
-        "                   table (the default with --certified): the paper's kernel, P\n"
+        "                   float in OpenCL and CUDA, none in GLSL and HLSL; WGSL's\n"
+        "                   --certified code is the table kernel); table: the paper's kernel, P\n"
         "                   threads a patch over the term table, with a second look in\n"
         "                   double-float; indexed: slp's, reading each patch's points from a\n"
         "                   vertex buffer through K indices a patch (--basis bspline: and\n"
@@ -462,13 +462,13 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
     return PTP_OK;
 }
 
-/* The GPU targets' form: a --certified kernel is the table kernel unless --kernel slp says
- * otherwise, and the options of one form do not go with the other. */
+/* The GPU targets' form: a --certified kernel is the straight-line one where the target certifies
+ * it (the table kernel elsewhere, WGSL), and the options of one form do not go with the other. */
 static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
 {
     if (!(o->target->options & TGT_KERNEL))
         return PTP_OK;
-    if (o->certified && !o->functions && !(seen >> OPT_KERNEL & 1))
+    if (o->certified && !o->functions && !(seen >> OPT_KERNEL & 1) && !o->target->gpu->slp_cert_u)
         o->table = 1;
     if (o->certified && !o->table && !o->target->gpu->slp_cert_u)
         return ptp_fail(err, PTP_EUSAGE, "--certified %s code is the table kernel (the language may "
@@ -502,7 +502,7 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
 
 /* The input's form: B-spline vertices are bicubic quads; both --basis bspline and --order v-major
  * are the straight-line program's, plain or certified in C (--refine and the table loop read
- * Bezier points, u-major; --certified GPU code is the table kernel). */
+ * Bezier points, u-major). */
 static int check_input(const cli_options *o, ptp_error *err)
 {
     const char *what = o->bspline ? "--basis bspline" : "--order v-major";
@@ -513,14 +513,12 @@ static int check_input(const cli_options *o, ptp_error *err)
     if (o->bspline && (o->dom.n != 3 || o->dom.m != 3))
         return ptp_fail(err, PTP_EUSAGE, "--basis bspline takes uniform bicubic B-spline patches "
                                          "(--degree 3)");
-    if (o->refine || o->table)
-        return ptp_fail(err, PTP_EUSAGE, "%s applies to the straight-line program, not %s (which "
-                                         "reads Bezier points, u-major)%s", what,
-                        o->refine ? "--refine" : "--kernel table",
-                        o->certified && !o->refine ? "; --certified GPU code is the table kernel, "
-                                                     "--certified C code takes it" : "");
     if (o->certified && (o->target->options & TGT_KERNEL))
         return ptp_fail(err, PTP_EUSAGE, "%s with --certified is the C target's", what);
+    if (o->refine || o->table)
+        return ptp_fail(err, PTP_EUSAGE, "%s applies to the straight-line program, not %s (which "
+                                         "reads Bezier points, u-major)", what,
+                        o->refine ? "--refine" : "--kernel table");
     return PTP_OK;
 }
 
