@@ -242,7 +242,7 @@ RENDER_HDR = $(wildcard bench/render/*.h) bench/cones.h bench/bezfile.h bench/ve
     tests/vk_result.h
 RENDER_SHADERS = xform:xform.comp cone:cone.comp vert:patch.vert tesc:patch.tesc \
     tese:patch.tese frag:shade.frag
-RENDER_SPV = $(foreach s,$(RENDER_SHADERS) ptp ptp_cert ptp_table tesc_ptp,$(RB)/spv_$(firstword $(subst :, ,$(s))).h)
+RENDER_SPV = $(foreach s,$(RENDER_SHADERS) ptp ptp_cert ptp_table tesc_ptp tesc_ptp_cert,$(RB)/spv_$(firstword $(subst :, ,$(s))).h)
 
 render: build/render
 
@@ -264,14 +264,22 @@ $(eval $(call render_spv,ptp,$(RB)/ptp.comp))
 $(eval $(call render_spv,ptp_cert,$(RB)/ptp_cert.comp))
 $(eval $(call render_spv,ptp_table,$(RB)/ptp_table.comp))
 
-# ptp-tcs: patch.tesc classifying its own patch with the functions of --stage function.
+# ptp-tcs and ptp-tcs-certified: patch.tesc classifying its own patch with the functions of
+# --stage function (the certified ones under the same names, from their own folder).
 $(RB)/spv_tesc_ptp.h: bench/render/patch.tesc bench/render/params.glsl $(RB)/ptp_3x3.glsl
 	@mkdir -p $(@D)
 	@glslangValidator -V -DPTP_TCS -I$(RB) --vn render_spv_tesc_ptp -o $@ $< >$@.log || { cat $@.log; exit 1; }
 
+$(RB)/spv_tesc_ptp_cert.h: bench/render/patch.tesc bench/render/params.glsl $(RB)/cert/ptp_3x3.glsl
+	@glslangValidator -V -DPTP_TCS -I$(RB)/cert --vn render_spv_tesc_ptp_cert -o $@ $< >$@.log || { cat $@.log; exit 1; }
+
 $(RB)/ptp_3x3.glsl: $(B)/ptpgen
 	@mkdir -p $(@D)
 	$(B)/ptpgen --degree 3 --target glsl --stage function -o $@
+
+$(RB)/cert/ptp_3x3.glsl: $(B)/ptpgen
+	@mkdir -p $(@D)
+	$(B)/ptpgen --degree 3 --target glsl --stage function --certified --prefix ptp_3x3_ -o $@
 
 $(RB)/ptp_table.comp: $(B)/ptpgen
 	@mkdir -p $(@D)
@@ -283,7 +291,7 @@ $(RB)/ptp.comp: $(B)/ptpgen
 
 $(RB)/ptp_cert.comp: $(B)/ptpgen
 	@mkdir -p $(@D)
-	$(B)/ptpgen --degree 3 --target glsl --space clip --certified --kernel slp --prefix ptp_3x3_ -o $@
+	$(B)/ptpgen --degree 3 --target glsl --space clip --certified --prefix ptp_3x3_ -o $@
 
 # The kernels' patches per workgroup (the default schedule), for the host's dispatch.
 $(RB)/ptp_groups.h: $(RB)/ptp.comp $(RB)/ptp_cert.comp $(RB)/ptp_table.comp

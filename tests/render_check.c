@@ -3,7 +3,7 @@
  * (classify_batch) on the same clip-space floats, and the TCONE / NCONE shader's culled set
  * against bench/cones.c on the same model and eye (the axis negated for --orientation in).
  *
- *   render_check ptp|ptp-table|ptp-tcs|ptp-certified DUMP LABEL
+ *   render_check ptp|ptp-table|ptp-tcs|ptp-certified|ptp-tcs-certified DUMP LABEL
  *   render_check tcone|ncone DUMP MODEL.bez LABEL
  * (compiled with rc_s.h and rc_c.h, ptpgen's clip-space C headers, strict and certified, and
  * linked with libptptest.a)
@@ -171,13 +171,13 @@ int main(int argc, char **argv)
     dump d;
     int ok = 0, rc = 2;
     if (argc < 4 || read_dump(&d, argv[2])) {
-        fprintf(stderr, "usage: render_check ptp|ptp-table|ptp-tcs|ptp-certified DUMP LABEL | "
+        fprintf(stderr, "usage: render_check ptp|ptp-table|ptp-tcs|ptp-certified|ptp-tcs-certified DUMP LABEL | "
                         "tcone|ncone DUMP "
                         "MODEL LABEL (DUMP: a build/render --dump-clip file)\n");
         return 2;
     }
     if (!strncmp(argv[1], "ptp", 3) && argc == 4) { /* every plain ptp method, or certified */
-        ok = check_ptp(&d, !strcmp(argv[1], "ptp-certified"), argv[3]);
+        ok = check_ptp(&d, strstr(argv[1], "certified") != NULL, argv[3]);
         rc = ok ? 0 : 1;
     } else if ((!strcmp(argv[1], "tcone") || !strcmp(argv[1], "ncone")) && argc == 5) {
         ok = check_cone(&d, argv[3], argv[1][0] == 't', argv[4]);

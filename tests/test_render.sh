@@ -73,7 +73,7 @@ view() {
         "render: $name: the image is a valid PNG and the model covers $covered of 19200 pixels"
     check $([ "$tes_none" = $((patches * 25)) ] && [ "$(val "$line" tcs_patches)" = "$patches" ] && echo 1 || echo 0) \
         "render: $name: --cull none tessellates all $patches patches (25 evaluations each at factor 4)" "$line"
-    for m in ptp ptp-table ptp-tcs ptp-certified tcone ncone; do
+    for m in ptp ptp-table ptp-tcs ptp-certified ptp-tcs-certified tcone ncone; do
         if ! line=$($R "${args[@]}" --cull $m --png "$T/$m.png" --dump-clip "$T/$m.dump" 2>"$T/err"); then
             check 0 "render: $name, --cull $m runs" "$(cat "$T/err")"
             continue

@@ -11,12 +11,12 @@
 static const char usage[] =
     "usage: render --model FILE.bez --eye X,Y,Z [--target X,Y,Z] [--up X,Y,Z] [--fov DEG]\n"
     "              --tess F --cull none|tcone|ncone|ptp|ptp-certified|ptp-table|ptp-tcs\n"
+    "                              |ptp-tcs-certified\n"
     "              [--orientation out|in] [--size WxH] [--frames K] [--png FILE]\n"
-    "              [--overview FILE.png]"
-" [--dump-clip FILE] [--device N]\n";
+    "              [--overview FILE.png] [--dump-clip FILE] [--device N]\n";
 
-static const char *const method_names[] = {"none",          "tcone",     "ncone",  "ptp",
-                                           "ptp-certified", "ptp-table", "ptp-tcs"};
+static const char *const method_names[] = {"none",          "tcone",     "ncone",   "ptp",
+                                           "ptp-certified", "ptp-table", "ptp-tcs", "ptp-tcs-certified"};
 
 /* Parses the whole of s as n comma-separated finite doubles into v. */
 static int parse_doubles(const char *s, double *v, int n)

@@ -14,7 +14,7 @@ import subprocess
 import sys
 import zlib
 
-METHODS = ["none", "tcone", "ncone", "ptp", "ptp-tcs", "ptp-table", "ptp-certified"]
+METHODS = ["none", "tcone", "ncone", "ptp", "ptp-tcs", "ptp-table", "ptp-certified", "ptp-tcs-certified"]
 FACTORS = [1, 2, 4, 8, 16, 32, 64]
 SIZE = "512x512"
 FRAMES = 3

@@ -64,7 +64,7 @@ static void cull(render_gpu *g, const render_cam *cam, int overview)
     else
         cp.eye[2] = cam->alpha;
     vkCmdWriteTimestamp(g->cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, g->ts, 0);
-    if (g->method != RENDER_NONE && g->method != RENDER_PTP_TCS)
+    if (g->p_cull != VK_NULL_HANDLE)
         compute(g, g->p_cull, g->set_cull, &cp, sizeof cp, g->npatches, g->cull_group);
     barrier(g, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
             VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);

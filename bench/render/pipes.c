@@ -13,6 +13,7 @@
 #include "spv_ptp_table.h"
 #include "spv_tesc.h"
 #include "spv_tesc_ptp.h"
+#include "spv_tesc_ptp_cert.h"
 #include "spv_tese.h"
 #include "spv_vert.h"
 #include "spv_xform.h"
@@ -21,7 +22,8 @@
 
 /* Indices of g->mod. */
 enum { M_XFORM, M_CONE, M_PTP, M_PTP_CERT, M_PTP_TABLE, M_VERT, M_TESC, M_TESE, M_FRAG, M_TESC_PTP,
-       M_COUNT };
+       M_TESC_PTP_CERT, M_COUNT };
+_Static_assert(M_COUNT == RENDER_MODULES, "render_gpu's mod[] holds every shader module");
 
 static int modules(render_gpu *g, char *err)
 {
@@ -39,6 +41,7 @@ static int modules(render_gpu *g, char *err)
         {render_spv_tese, sizeof render_spv_tese},
         {render_spv_frag, sizeof render_spv_frag},
         {render_spv_tesc_ptp, sizeof render_spv_tesc_ptp},
+        {render_spv_tesc_ptp_cert, sizeof render_spv_tesc_ptp_cert},
     };
     for (int i = 0; i < M_COUNT; i++)
         if (vkx_shader(&g->vk, &g->mod[i], spv[i].code, spv[i].bytes, err))
@@ -138,8 +141,8 @@ static int compute_pipeline(render_gpu *g, VkShaderModule m, VkPipeline *p, char
 /* The compute pipelines: transform, the method's cull pass, and ptp strict for the overview. */
 static int computes(render_gpu *g, char *err)
 {
-    static const int cull_mod[] = {-1, M_CONE, M_CONE, M_PTP, M_PTP_CERT, M_PTP_TABLE, -1};
-    static const uint32_t group[] = {0, 64, 64, RENDER_PTP_Q, RENDER_PTP_CERT_Q, RENDER_PTP_TABLE_Q, 0};
+    static const int cull_mod[] = {-1, M_CONE, M_CONE, M_PTP, M_PTP_CERT, M_PTP_TABLE, -1, -1};
+    static const uint32_t group[] = {0, 64, 64, RENDER_PTP_Q, RENDER_PTP_CERT_Q, RENDER_PTP_TABLE_Q, 0, 0};
     g->cull_group = group[g->method];
     g->exact_group = RENDER_PTP_Q;
     if (compute_pipeline(g, g->mod[M_XFORM], &g->p_xform, err) ||
@@ -162,7 +165,9 @@ int render_pipelines(render_gpu *g, char *err)
                &g->glayout, err) ||
         sets(g, err) || computes(g, err))
         return -1;
-    VkShaderModule gfx[4] = {g->mod[M_VERT], g->mod[g->method == RENDER_PTP_TCS ? M_TESC_PTP : M_TESC],
-                             g->mod[M_TESE], g->mod[M_FRAG]};
+    int tesc = g->method == RENDER_PTP_TCS        ? M_TESC_PTP
+               : g->method == RENDER_PTP_TCS_CERT ? M_TESC_PTP_CERT
+                                                  : M_TESC;
+    VkShaderModule gfx[4] = {g->mod[M_VERT], g->mod[tesc], g->mod[M_TESE], g->mod[M_FRAG]};
     return render_gfx_pipeline(g, gfx, err);
 }

@@ -12,14 +12,18 @@ typedef enum render_method {
     RENDER_TCONE,    /* cone.comp on bench/cones.c's TCONE cones */
     RENDER_NCONE,    /* cone.comp on NCONE cones */
     RENDER_PTP,      /* ptpgen's clip-space GLSL kernel: the straight-line program */
-    RENDER_PTP_CERT, /* the same with --certified (the table kernel) */
+    RENDER_PTP_CERT, /* the same with --certified (no second look in GLSL) */
     RENDER_PTP_TABLE, /* the paper's table kernel (--kernel table) */
-    RENDER_PTP_TCS   /* no cull pass: the TCS classifies its patch (--stage function) */
+    RENDER_PTP_TCS,  /* no cull pass: the TCS classifies its patch (--stage function) */
+    RENDER_PTP_TCS_CERT /* the same with --certified */
 } render_method;
 
 /* Bytes of the compute and of the graphics push constants. */
 #define RENDER_CPUSH 80u
 #define RENDER_GPUSH 96u
+
+/* Shader modules: the compute passes, the draw's stages and the TCS variants (pipes.c). */
+#define RENDER_MODULES 11
 
 /* One camera's per-draw inputs. */
 typedef struct render_cam {
@@ -44,7 +48,7 @@ typedef struct render_gpu {
     VkPipelineLayout clayout, glayout;
     VkDescriptorPool dpool;
     VkDescriptorSet set_xform, set_cull, set_exact, set_gfx;
-    VkShaderModule mod[10];
+    VkShaderModule mod[RENDER_MODULES];
     VkPipeline p_xform, p_cull, p_exact, p_gfx;
     uint32_t cull_group;  /* patches per workgroup of p_cull; 0 for RENDER_NONE */
     uint32_t exact_group; /* patches per workgroup of p_exact */

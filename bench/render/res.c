@@ -192,7 +192,7 @@ void render_destroy(render_gpu *g)
     VkDevice d = g->vk.dev;
     if (d) {
         vkDeviceWaitIdle(d);
-        for (int i = 0; i < 8; i++)
+        for (int i = 0; i < RENDER_MODULES; i++)
             if (g->mod[i])
                 vkDestroyShaderModule(d, g->mod[i], NULL);
         if (g->fence)
