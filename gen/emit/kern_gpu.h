@@ -167,6 +167,10 @@ void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const cha
  * 2 |d.y|). */
 char *kgpu_df_flags(char *out, size_t size, const out_info *info, const kern_target *g,
                     const char *plane);
+/* Writes at indent in the loop that adds to the double-float s the terms j from start to end of
+ * the plane-order tables (dw, dwl, dj, dkl), their points read as pt[0..2] (expressions of j). */
+void kgpu_df_term_sum(sbuf *o, const out_info *info, const kern_target *g, const char *in,
+                      const char *start, const char *end, const char *const pt[3]);
 /* The straight-line second look's terms in plane order (kgpu_df_terms' tables, dstart[n] for
  * plane n). PTP_OK or PTP_ENOMEM. */
 int kgpu_df_plane_terms(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,

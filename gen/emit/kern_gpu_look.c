@@ -164,25 +164,37 @@ static void put_df_accumulate(sbuf *o, const out_info *info, const kern_target *
     }
 }
 
+void kgpu_df_term_sum(sbuf *o, const out_info *info, const kern_target *g, const char *in,
+                      const char *start, const char *end, const char *const pt[3])
+{
+    const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
+    char w[128];
+    snprintf(w, sizeof w, g->vec2_make, "$dw[j]", "$dwl[j]");
+    sbuf_printf(o, "%sfor (j = %s; j < %s; j++)", in, start, end);
+    kgpu_then(o, g);
+    sbuf_printf(o, "%s    s = %sdf_add(s, %sdf_mul(", in, px, px);
+    kgpu_df_text(o, info, g, w);
+    sbuf_printf(o, ", %sdf_%s(%s,\n%s        %s, %s%s)));\n", px, fn, pt[0], in, pt[1], pt[2],
+                info->space == OUT_CLIP ? "" : ", eye");
+    kgpu_end(o, g, in);
+}
+
 /* The second look's sum for own_plane[i] into s, in double-float: its terms when mine (its bit in
  * redo) is set, else none. */
 static void put_df_sum(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
-    const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    char start[96], end[96], init[256], zero[96], w[128];
+    const char *px = info->prefix;
+    char start[96], end[96], init[256], zero[96], pt[3][256];
+    const char *pp[3] = {pt[0], pt[1], pt[2]};
     snprintf(start, sizeof start, "%sdstart[i]", px);
     snprintf(end, sizeof end, "%sdstart[i + 1u]", px);
     g->syntax->select(init, sizeof init, "mine != 0u", start, end);
     snprintf(zero, sizeof zero, g->vec2_make, "0.0f", "0.0f");
-    snprintf(w, sizeof w, g->vec2_make, "$dw[j]", "$dwl[j]");
-    sbuf_printf(o, "            s = %s;\n            for (j = %s; j < %s; j++)", zero, init, end);
-    kgpu_then(o, g);
-    sbuf_printf(o, "                s = %sdf_add(s, %sdf_mul(", px, px);
-    kgpu_df_text(o, info, g, w);
-    sbuf_printf(o, ", %sdf_%s(pts[q * %sK + %sdj[j]],\n"
-                   "                    pts[q * %sK + (%sdkl[j] & 0xffffu)], pts[q * %sK + (%sdkl[j] >> 16)]%s)));\n",
-                px, fn, up, px, up, px, up, px, info->space == OUT_CLIP ? "" : ", eye");
-    kgpu_end(o, g, "            ");
+    snprintf(pt[0], sizeof pt[0], "pts[q * %sK + %sdj[j]]", up, px);
+    snprintf(pt[1], sizeof pt[1], "pts[q * %sK + (%sdkl[j] & 0xffffu)]", up, px);
+    snprintf(pt[2], sizeof pt[2], "pts[q * %sK + (%sdkl[j] >> 16)]", up, px);
+    sbuf_printf(o, "            s = %s;\n", zero);
+    kgpu_df_term_sum(o, info, g, "            ", init, end, pp);
 }
 
 char *kgpu_df_flags(char *out, size_t size, const out_info *info, const kern_target *g,

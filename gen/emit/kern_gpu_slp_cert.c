@@ -220,24 +220,23 @@ int kgpu_slp_look(const out_info *info, const kern_target *g)
  * set. */
 static void put_look_planes(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g)
 {
-    const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    char zero[96], w[128], e[160], fl[512];
+    const char *px = info->prefix;
+    char zero[96], e[160], fl[512], start[96], end[96], pt[3][256];
+    const char *pp[3] = {pt[0], pt[1], pt[2]};
     kern_var s = {"s", zero, 1};
     snprintf(zero, sizeof zero, g->vec2_make, "0.0f", "0.0f");
-    snprintf(w, sizeof w, g->vec2_make, "$dw[j]", "$dwl[j]");
+    snprintf(start, sizeof start, "%sdstart[i]", px);
+    snprintf(end, sizeof end, "%sdstart[i + 1u]", px);
+    snprintf(pt[0], sizeof pt[0], "cp[%sdj[j]]", px);
+    snprintf(pt[1], sizeof pt[1], "cp[%sdkl[j] & 0xffffu]", px);
+    snprintf(pt[2], sizeof pt[2], "cp[%sdkl[j] >> 16]", px);
     sbuf_printf(o, "    for (i = 0u; i < %du; i++) {\n"
                    "        if (((redo[i >> 5u] >> (i & 31u)) & 1u) == 0u)\n"
                    "            continue;\n", d->nplanes);
     if (kgpu_exact_zeros(info))
         kgpu_keep(o, info, g, "        ", "i");
     g->syntax->locals(o, g, "        ", g->vec2, &s, 1, 0);
-    sbuf_printf(o, "        for (j = %sdstart[i]; j < %sdstart[i + 1u]; j++)", px, px);
-    kgpu_then(o, g);
-    sbuf_printf(o, "            s = %sdf_add(s, %sdf_mul(", px, px);
-    kgpu_df_text(o, info, g, w);
-    sbuf_printf(o, ", %sdf_%s(cp[%sdj[j]],\n                cp[%sdkl[j] & 0xffffu], cp[%sdkl[j] >> 16]%s)));\n",
-                px, fn, px, px, px, info->space == OUT_CLIP ? "" : ", eye");
-    kgpu_end(o, g, "        ");
+    kgpu_df_term_sum(o, info, g, "        ", start, end, pp);
     snprintf(e, sizeof e, "%sdf_mul_f(s, eye.z)", px);
     g->syntax->locals(o, g, "        ", g->vec2,
                       &(kern_var){"d", info->space == OUT_CLIP ? e : "s", 0}, 1, 0);
