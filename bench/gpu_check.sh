@@ -30,7 +30,7 @@ echo "# gpu_check: ${device:-unknown device}; $(date -u +%Y-%m-%d); model $(base
 
 # The renderer: every method at each factor from one view, 512x512, 5 frames (the best frame).
 printf '%-14s' "render factor"
-methods="none tcone ncone ptp ptp-tcs ptp-table ptp-certified"
+methods="none tcone ncone ptp ptp-tcs ptp-table ptp-certified ptp-tcs-certified"
 for m in $methods; do printf ' %13s' "$m"; done
 echo "   (frame ms, best of 5; culled)"
 for f in 1 2 4 8 16 32 64; do
@@ -45,18 +45,19 @@ for f in 1 2 4 8 16 32 64; do
     echo
 done
 
-# CUDA: each kernel form built with nvcc around tests/host_cuda.cu, on exact data (0 unsafe) and
-# random patches (classes against the double reference), with the host's --bench.
-for kernel in slp table; do
-    build/gcc/ptpgen --degree 3 --target cuda --kernel $kernel -o "$tmp/ptp_3x3.cu" &&
+# CUDA: each kernel form, plain and certified, built with nvcc around tests/host_cuda.cu, on exact
+# data (0 unsafe) and random patches (classes against the double reference), with the host's --bench.
+for form in "slp" "table" "slp --certified" "table --certified"; do
+    read -r kernel cert <<<"$form"
+    build/gcc/ptpgen --degree 3 --target cuda --kernel $kernel $cert --prefix ptp_3x3_ -o "$tmp/ptp_3x3.cu" &&
         "$NVCC" -O2 -Igen -Itests -I"$tmp" -DKERNEL_FILE='"ptp_3x3.cu"' -DKERNEL=ptp_3x3_classify \
             tests/host_cuda.cu $B/libptptest.a -o "$tmp/host_cuda" >"$tmp/nvcc.log" 2>&1 ||
-        { echo "cuda $kernel: build failed: $(head -3 "$tmp/nvcc.log")"; continue; }
+        { echo "cuda $form: build failed: $(head -3 "$tmp/nvcc.log")"; continue; }
     read -r pq q < <(kernel_schedule "$tmp/ptp_3x3.cu")
-    cfg=(--degree 3 3 --space clip --rule strict --block-threads "$pq" --patches-per-block "$q")
-    "$tmp/host_cuda" "${cfg[@]}" --exact 5 200 1 --random 1 65536 1 --name "cuda $kernel" >"$tmp/out" 2>&1
-    echo "cuda $kernel: $(grep -c '^ok' "$tmp/out") ok, $(grep -c '^not ok' "$tmp/out") not ok"
+    cfg=(--degree 3 3 --space clip --rule strict --block-threads "$pq" --patches-per-block "$q" $cert)
+    "$tmp/host_cuda" "${cfg[@]}" --exact 5 200 1 --random 1 65536 1 --name "cuda $form" >"$tmp/out" 2>&1
+    echo "cuda $form: $(grep -c '^ok' "$tmp/out") ok, $(grep -c '^not ok' "$tmp/out") not ok"
     grep '^not ok' "$tmp/out" | head -3
-    "$tmp/host_cuda" "${cfg[@]}" --random 1 1048576 1 --bench 5 --name "cuda $kernel bench" 2>&1 |
-        sed -n 's/^# bench: /cuda '"$kernel"' bench: /p'
+    "$tmp/host_cuda" "${cfg[@]}" --random 1 1048576 1 --bench 5 --name "cuda $form bench" 2>&1 |
+        sed -n 's/^# bench: /cuda '"$form"' bench: /p'
 done
