@@ -127,7 +127,7 @@ $(B)/bench_gen: bench/bench_gen.c
 
 # `make bench`: culling throughput on this machine (bench/run_bench.sh): the paper's loop and the
 # emitted C header's paths per bidegree on one core and on all cores, against a peak it measures;
-# the OpenCL kernel on PoCL, the GLSL kernel on lavapipe and the WGSL kernel on wgpu-native (the
+# the OpenCL kernels on PoCL (lanes too), the GLSL kernel on lavapipe and the WGSL kernel on wgpu-native (the
 # test hosts' --bench); ptpgen's own time. The hosts are built when their libraries are there; a missing one makes its rows unavailable.
 BENCH_DEGREES = 2x2 3x3 4x4
 BENCH_CFLAGS = -O3 -march=native

@@ -84,7 +84,7 @@ gpu_bench() {
 }
 
 # kernel_cfg KERNEL DEGREE: the hosts' options for a clip-space strict kernel of bidegree DEGREE,
-# with the workgroup of its banner ("Schedule: P threads per patch, Q patches per workgroup").
+# with the workgroup of its banner (tests/schedule.sh).
 kernel_cfg() {
     kernel_schedule "$1" | sed 's/^/--block-threads /; s/ \([0-9]*\)$/ --patches-per-block \1/'
     echo "--degree ${2%x*} ${2#*x} --space clip --rule strict"
@@ -112,6 +112,13 @@ for d in "$@"; do
             gpu_bench "$B/host_opencl" "$tmp/k.cl" --kernel "ptp_${d}_classify" $(kernel_cfg "$tmp/k.cl" $d)
         fi
         gpu_row "$d" "OpenCL$kn (PoCL), $cores" "$rate" "$fl" "$paper" "$check"
+        if [ $kernel = slp ]; then # in float16 vectors, 16 patches a work-item (CPU devices)
+            rate="" check=""
+            if [ -x "$B/host_opencl" ] && "$B/ptpgen" --degree "$d" --target opencl --kernel lanes -o "$tmp/k.cl"; then
+                gpu_bench "$B/host_opencl" "$tmp/k.cl" --kernel "ptp_${d}_classify" $(kernel_cfg "$tmp/k.cl" $d)
+            fi
+            gpu_row "$d" "OpenCL lanes (PoCL), $cores" "$rate" "$fl" "$paper" "$check"
+        fi
 
         # GLSL on lavapipe
         rate="" check=""

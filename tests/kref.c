@@ -197,8 +197,9 @@ static int parse_check(kref_args *o, const parse_seen *seen, const char *host, u
     if (!seen->degree || !seen->space || !seen->rule || (need & KREF_NEED_FILE && !o->file) ||
         (need & KREF_NEED_KERNEL && !o->kernel_name) || (need & KREF_NEED_BLOCK && (!o->pq || !o->q)))
         return usage(host, o->label, "a required argument is missing");
-    if (o->q && o->pq % o->q)
-        return usage(host, o->label, "--block-threads PQ must be a multiple of --patches-per-block Q");
+    if (o->q && o->pq % o->q && o->q % o->pq)
+        return usage(host, o->label, "--block-threads PQ must be a multiple of --patches-per-block Q "
+                                     "or divide it (OpenCL's --kernel lanes)");
     if (!o->nsources)
         return usage(host, o->label, "give at least one --random, --model or --exact(-far)");
     for (i = 0; i < o->nsources; i++)

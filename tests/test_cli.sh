@@ -435,6 +435,10 @@ expect_fail "--certified GPU B-spline input is refused" 2 "with --certified is t
 expect_fail "--stage function with --kernel table is refused" 2 "not --kernel table$" --degree 3 --target hlsl --stage function --kernel table
 expect_fail "--stage function with --planes is refused" 2 "--planes applies to kernels" --degree 3 --target wgsl --stage function --planes
 expect_fail "--stage function --certified is refused for WGSL" 2 "is the table kernel" --degree 3 --target wgsl --stage function --certified
+expect_fail "--kernel lanes is OpenCL's" 2 "--kernel lanes is OpenCL's" --degree 3 --target glsl --kernel lanes
+expect_fail "--kernel lanes is not certified" 2 "not with --certified$" --degree 3 --target opencl --kernel lanes --certified
+expect_fail "--kernel lanes writes no values" 2 "not with --planes$" --degree 3 --target opencl --kernel lanes --planes
+expect_fail "--kernel lanes takes whole vectors of patches" 2 "must be a multiple of 16" --degree 3 --target opencl --kernel lanes --patches-per-block 40
 expect_fail "an unknown --kernel is named" 2 "kernel" --degree 3 --target glsl --kernel fast
 expect_fail "--planes for the C header is refused" 2 "--planes applies to targets glsl, hlsl, opencl, cuda, wgsl \\(not c\\)$" --degree 3 --target c --planes
 expect_fail "--space for json is refused" 2 "--space applies to targets c, glsl, hlsl, opencl, cuda, wgsl \\(not json\\)" --degree 3 --space world

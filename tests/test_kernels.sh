@@ -95,6 +95,35 @@ for dir in out/*x*/ out/tri*/; do
     exercise "out/$d" $d clip strict 0 "vendored out/$d" $gpu
 done
 
+# OpenCL's --kernel lanes (16 patches a work-item in float16 vectors, for CPU devices) on PoCL:
+# both spaces and rules, quads and triangles, patch-local and absolute coordinates, random
+# patches (and for bicubic the models) against the reference, a workgroup of 32 patches and a
+# patch count that leaves spare lanes; a kernel with one term's sign flipped must fail its check.
+if [ -x "$B/host_opencl" ]; then
+    for cfg in "3x3 clip strict" "3x3 world degenerate" "2x3 world strict --coordinates absolute" \
+        "tri2 clip degenerate --patches-per-block 32"; do
+        read -r d space rule extra <<<"$cfg"
+        if "$P" $(degree_args $d) --target opencl --space $space --rule $rule --kernel lanes \
+            --prefix ptp_${d}_ ${extra:-} -o "$tmp/l.cl"; then
+            data="--random 1 4999 $((++seed))"
+            [ $d = 3x3 ] && data="$data $(model_files | sed 's/^/--model /; s/$/ 3 7/' | tr '\n' ' ')"
+            run_host "opencl lanes $cfg" "$B/host_opencl" "$tmp/l.cl" --kernel ptp_${d}_classify \
+                $(host_degree $d) --space $space --rule $rule $(host_sched "$tmp/l.cl") $data \
+                --name "opencl lanes $d $space $rule${extra:+ $extra}"
+        else
+            notok "opencl --kernel lanes $cfg" "ptpgen failed"
+        fi
+    done
+    "$P" --degree 3 --target opencl --kernel lanes -o "$tmp/l.cl" && sed -i '0,/u = -((/s//u = ((/' "$tmp/l.cl"
+    if grep -q 'u = ((' "$tmp/l.cl" && ! "$B/host_opencl" "$tmp/l.cl" --kernel ptp_3x3_classify --degree 3 3 \
+        --space clip --rule strict $(host_sched "$tmp/l.cl") --random 1 2000 5 --name mutant >"$tmp/out" 2>&1 &&
+        grep -q '^not ok - mutant: .*classes agree' "$tmp/out"; then
+        ok "an OpenCL lanes kernel with one term's sign flipped fails its check"
+    else
+        notok "an OpenCL lanes kernel with one term's sign flipped fails its check" "it passed, or the term was not found"
+    fi
+fi
+
 # Without --planes the kernels write only the classes (OpenCL gets a null planes pointer).
 "$P" --degree 3 --target opencl --kernel table -o "$tmp/k.cl" && [ -x "$B/host_opencl" ] &&
     run_host "opencl without --planes" "$B/host_opencl" "$tmp/k.cl" --kernel ptp_3x3_classify --degree 3 3 \

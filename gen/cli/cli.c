@@ -28,7 +28,7 @@ static void usage_synopsis(sbuf *o)
         "usage: ptpgen --degree N|NxM [--domain quad|triangle] [--target T] [--space clip|world]\n"
         "              [--rule strict|degenerate] [--coordinates local|absolute] [--planes]\n"
         "              [--basis bezier|bspline] [--order u-major|v-major] [--certified]\n"
-        "              [--refine K] [--prefix NAME] [--kernel slp|table|indexed]\n"
+        "              [--refine K] [--prefix NAME] [--kernel slp|table|indexed|lanes]\n"
         "              [--stage kernel|function] [--threads-per-patch P]\n"
         "              [--patches-per-block Q] [-o FILE] [--host-header FILE]\n"
         "       ptpgen verify FILE [--degree N|NxM] [--domain quad|triangle]\n"
@@ -87,7 +87,8 @@ static void usage_options(sbuf *o)
         "                   threads a patch over the term table, with a second look in\n"
         "                   double-float; indexed: slp's, reading each patch's points from a\n"
         "                   vertex buffer through K indices a patch (--basis bspline: and\n"
-        "                   OpenSubdiv's boundary masks)\n"
+        "                   OpenSubdiv's boundary masks); lanes (OpenCL, for CPU devices):\n"
+        "                   16 patches a work-item in float16 vectors, plain float\n"
         "  --stage S        GPU targets: kernel (default): a compute kernel; function: only\n"
         "                   the functions classify_patch and values, for any shader stage\n"
         "                   (tessellation control or hull, mesh, task, compute)\n"
@@ -313,7 +314,7 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
 {
     static const char *const spaces[] = {"clip", "world"}, *const rules[] = {"strict", "degenerate"};
     static const char *const conventions[] = {"u-first", "v-first"}, *const formats[] = {"json", "c"};
-    static const char *const kernels[] = {"slp", "table", "indexed"};
+    static const char *const kernels[] = {"slp", "table", "indexed", "lanes"};
     static const char *const stages[] = {"kernel", "function"};
     static const char *const coordinates[] = {"local", "absolute"}, *const bases[] = {"bezier", "bspline"};
     static const char *const orders[] = {"u-major", "v-major"};
@@ -352,9 +353,10 @@ static int apply(cli_options *o, opt_id k, const char *v, ptp_error *err)
     case OPT_VERSION: o->version = 1; break;
     case OPT_LIST: o->list = 1; break;
     case OPT_KERNEL:
-        if (!(st = parse_choice(&x, "kernel", v, kernels, 3, err))) {
+        if (!(st = parse_choice(&x, "kernel", v, kernels, 4, err))) {
             o->table = x == 1;
             o->indexed = x == 2;
+            o->lanes = x == 3;
         }
         break;
     case OPT_COORDINATES: return parse_choice(&o->absolute, "coordinates", v, coordinates, 2, err);
@@ -462,10 +464,32 @@ static int check_target(const cli_options *o, unsigned seen, ptp_error *err)
     return PTP_OK;
 }
 
+/* --kernel lanes: the target's vectors, plain float, Bezier points, a whole number of vectors of
+ * patches a workgroup; o->lanes becomes the vectors' width. */
+static int check_lanes(cli_options *o, unsigned seen, ptp_error *err)
+{
+    const char *other = o->certified ? "--certified" : o->planes ? "--planes" : o->functions
+                        ? "--stage function" : o->bspline ? "--basis bspline" : o->vmajor
+                        ? "--order v-major" : NULL;
+    int w = o->target->gpu->lanes ? o->target->gpu->lanes->width : 0, q = o->patches;
+    if (!w)
+        return ptp_fail(err, PTP_EUSAGE, "--kernel lanes is OpenCL's (float16 vectors for CPU "
+                                         "devices), not %s's", o->target->name);
+    if (other)
+        return ptp_fail(err, PTP_EUSAGE, "--kernel lanes classifies Bezier patches in plain float: "
+                                         "not with %s", other);
+    if (seen >> OPT_PATCHES & 1 && q % w)
+        return ptp_fail(err, PTP_EUSAGE, "--kernel lanes: --patches-per-block must be a multiple "
+                                         "of %d (the vectors' width)", w);
+    o->lanes = w;
+    return PTP_OK;
+}
+
 /* The GPU targets' form: a --certified kernel is the straight-line one where the target certifies
  * it (the table kernel elsewhere, WGSL), and the options of one form do not go with the other. */
 static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
 {
+    int st;
     if (!(o->target->options & TGT_KERNEL))
         return PTP_OK;
     if (o->certified && !o->functions && !(seen >> OPT_KERNEL & 1) && !o->target->gpu->slp_cert_u)
@@ -476,6 +500,8 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
                         o->target->name);
     if (o->certified && o->indexed)
         return ptp_fail(err, PTP_EUSAGE, "--kernel indexed is not certified (--kernel slp or table)");
+    if (o->lanes && (st = check_lanes(o, seen, err)))
+        return st;
     if (o->table && seen >> OPT_COORDINATES & 1)
         return ptp_fail(err, PTP_EUSAGE, "--coordinates applies to the straight-line program; "
                                          "--kernel table reads the coordinates as given");
@@ -562,7 +588,7 @@ static void put_command(cli_options *o)
         n += snprintf(c + n, size - (size_t)n, " --patches-per-block %d", o->patches);
     if (o->kernel_given)
         n += snprintf(c + n, size - (size_t)n, " --kernel %s",
-                      o->table ? "table" : o->indexed ? "indexed" : "slp");
+                      o->table ? "table" : o->indexed ? "indexed" : o->lanes ? "lanes" : "slp");
     if (o->functions)
         snprintf(c + n, size - (size_t)n, " --stage function");
 }

@@ -40,6 +40,7 @@ typedef struct {
     int refine;           /* --refine K (C only), 0 when not given */
     int table;            /* GPU targets: --kernel table (or --certified without --kernel) */
     int indexed;          /* GPU targets: --kernel indexed (the points through indices) */
+    int lanes;            /* OpenCL: --kernel lanes (patches per work-item, in vectors) */
     int kernel_given;     /* --kernel was given */
     int functions;        /* GPU targets: --stage function */
     int vfirst;           /* verify: --convention v-first (else u-first) */

@@ -161,6 +161,7 @@ static int run(const cli_options *o, ptp_error *err)
     info.table = o->table;
     info.functions = o->functions;
     info.indexed = o->indexed;
+    info.lanes = o->lanes;
     if (o->target->options & TGT_KERNEL) /* the GPU targets */
         info.group = o->patches >= 0 ? o->patches : OUT_SLP_GROUP;
     sbuf_init(&b);

@@ -14,6 +14,45 @@ static const kern_host_slot host_slots[] = {
      KERN_SLOT_BOUNDARY},
     {NULL, 0, NULL, 0}};
 
+/* --kernel lanes: 16 patches a work-item in float16 vectors, the points gathered lane by lane;
+ * the last work-item's spare lanes repeat the last patch and are not stored. */
+static const kern_lanes opencl_lanes = {
+    .width = 16,
+    .real = "float16",
+    .flag = "int16",
+    .decl = "const float16 ",
+    .point = "/* A coordinate of one control point of 16 patches, patch l in lane l. */\n"
+             "typedef struct {\n    float16 x, y, z, w;\n} %slanes;\n\n",
+    .classify = "uint16 %s(const %slanes cp[%d], float4 eye)\n{",
+    .interface =
+        " * Kernel <prefix>classify(cp, cls, planes, eye, patch_count): planes is not written. Work-group\n"
+        " * size exactly Q / LANES; ceil(patch_count / Q) work-groups, 1-D or 2-D: work-group (x, y)\n"
+        " * handles the patches of block y * num_groups(0) + x, each work-item LANES of them.\n",
+    .body = "    uint base = ((uint)get_group_id(1) * (uint)get_num_groups(0) + (uint)get_group_id(0)) * @Q +\n"
+            "                (uint)get_local_id(0) * @LANES;\n"
+            "    $lanes p[@K];\n"
+            "    float x[@LANES], y[@LANES], z[@LANES], w[@LANES];\n"
+            "    uint c[@LANES], k, l;\n"
+            "    if (base >= patch_count)\n"
+            "        return;\n"
+            "    for (k = 0u; k < @K; k++) {\n"
+            "        for (l = 0u; l < @LANES; l++) {\n"
+            "            float4 q = cp[min(base + l, patch_count - 1u) * @K + k];\n"
+            "            x[l] = q.x;\n"
+            "            y[l] = q.y;\n"
+            "            z[l] = q.z;\n"
+            "            w[l] = q.w;\n"
+            "        }\n"
+            "        p[k].x = vload16(0, x);\n"
+            "        p[k].y = vload16(0, y);\n"
+            "        p[k].z = vload16(0, z);\n"
+            "        p[k].w = vload16(0, w);\n"
+            "    }\n"
+            "    vstore16($classify_lanes(p, eye), 0, c);\n"
+            "    for (l = 0u; l < @LANES && base + l < patch_count; l++)\n"
+            "        cls[base + l] = c[l];\n",
+};
+
 const kern_target kern_opencl = {
     .name = "opencl",
     .language = "OpenCL C 1.2 kernel",
@@ -44,6 +83,7 @@ const kern_target kern_opencl = {
     .vec2 = "float2", .vec2_make = "(float2)(%s, %s)",
     .fma = "fma(%s, %s, %s)", /* correctly rounded: one rounding */
     .df_table = 1,
+    .lanes = &opencl_lanes,
     .slp_classify = "uint %s(const float4 cp[%d], float4 eye)\n{",
     .slp_values = "void %s(const float4 cp[%d], float4 eye, float d[%d])\n{",
     .slp_look = "uint %s(const float4 cp[%d], float4 eye, uint c, const uint redo[%d])\n{",

@@ -52,6 +52,9 @@ void fmt_banner(sbuf *o, const tp_table *t, const out_info *info, const char *fi
     if (s)
         sbuf_printf(o, " * Schedule: %d threads per patch, %d patches per workgroup (%d threads), %d rounds.\n",
                     s->threads, s->patches, s->threads * s->patches, s->rounds);
+    else if (info->lanes)
+        sbuf_printf(o, " * Schedule: %d patches per thread (float%d vectors), %d patches per workgroup (%d threads),\n"
+                       " * straight-line code.\n", info->lanes, info->lanes, info->group, info->group / info->lanes);
     else if (info->group)
         sbuf_printf(o, " * Schedule: 1 thread per patch, %d patches per workgroup (%d threads), straight-line code.\n",
                     info->group, info->group);

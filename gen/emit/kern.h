@@ -5,6 +5,21 @@
 
 #include "emit/out.h"
 
+/* --kernel lanes: the straight-line program in vectors of width patches, each work-item a vector
+ * (for CPU devices, whose compilers vectorize across work-items poorly). */
+typedef struct {
+    int width;
+    const char *real;     /* the vector of floats: "float16" */
+    const char *flag;     /* the vector comparisons give, -1 or 0 a lane: "int16" */
+    const char *decl;     /* declares vector locals: "const float16 " */
+    const char *point;    /* the points' struct, printf format of the prefix */
+    const char *classify; /* classify_lanes' head through its brace, of its name, the prefix, K */
+    const char *interface; /* the banner's, in the target's interface's place */
+    /* the kernel's body: gathers each work-item's patches, classifies, scatters; printf format
+     * of the upper-case prefix (4 times), then the prefix */
+    const char *body;
+} kern_lanes;
+
 typedef struct kern_target kern_target;
 
 /* A member of the kernel's parameter block as the host writes it (--host-header): C type
@@ -155,6 +170,7 @@ struct kern_target {
      * tables (lavapipe copies a large constant array at every dynamic access, and compiles a loop
      * over one for minutes) */
     int df_table;
+    const kern_lanes *lanes; /* --kernel lanes (NULL: the target has none) */
     /* The straight-line functions (kern_gpu_slp.c): classify_patch and values. */
     const char *slp_classify; /* classify_patch's head through its opening brace, printf format of
                                  its name and the point count K: "uint %s(vec4 cp[%d], vec4 eye)\n{" */

@@ -86,7 +86,7 @@ void kgpu_dispatch(const out_info *info, unsigned *threads, unsigned *patches)
         *threads = (unsigned)info->sched->threads * *patches;
     } else {
         *patches = (unsigned)info->group;
-        *threads = *patches;
+        *threads = *patches / (unsigned)(info->lanes ? info->lanes : 1);
     }
 }
 
@@ -164,7 +164,8 @@ static int emit_kernel(sbuf *o, const tp_table *t, const out_info *info, const k
     if (!table)
         in.sched = NULL; /* the banner states the straight-line dispatch */
     put_interface(&iface, info, g);
-    fmt_banner(&p.banner, t, &in, file, g->language, iface.s ? iface.s : g->interface);
+    fmt_banner(&p.banner, t, &in, file, g->language,
+               iface.s ? iface.s : info->lanes ? g->lanes->interface : g->interface);
     p.banner.failed |= iface.failed; /* fill_kernel reports it */
     sbuf_clear(&iface);
     put_indexed(&p.indexed, info, g);
@@ -176,7 +177,10 @@ static int emit_kernel(sbuf *o, const tp_table *t, const out_info *info, const k
             kgpu_shared(&p.shared, info, g, up, "");
     } else {
         st = kgpu_slp_kernel_parts(&p.tables, &p.funcs, t, info, g, up, err);
-        kgpu_slp_body(&p.body, &t->dom, info, g, up);
+        if (info->lanes)
+            kgpu_lanes_body(&p.body, info, g, up);
+        else
+            kgpu_slp_body(&p.body, &t->dom, info, g, up);
     }
     if (!st)
         st = fill_kernel(o, &p, table ? info : &in, g, err);

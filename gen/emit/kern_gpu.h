@@ -203,7 +203,8 @@ int kgpu_redo_words(int L);
 int kgpu_slp_look_functions(sbuf *o, const tp_table *t, const out_info *info,
                             const kern_target *g, ptp_error *err);
 
-/* The straight-line kernel's constants P (1), Q, K, L into tables and its functions into funcs. */
+/* The straight-line kernel's constants P (1; --kernel lanes: LANES), Q, K, L into tables and its
+ * functions into funcs (--kernel lanes: the points' struct and classify_lanes). */
 int kgpu_slp_kernel_parts(sbuf *tables, sbuf *funcs, const tp_table *t, const out_info *info,
                           const kern_target *g, const char *up, ptp_error *err);
 
@@ -212,5 +213,7 @@ int kgpu_slp_kernel_parts(sbuf *tables, sbuf *funcs, const tp_table *t, const ou
  * (with --planes, values too). */
 void kgpu_slp_body(sbuf *o, const tp_domain *dom, const out_info *info, const kern_target *g,
                    const char *up);
+/* --kernel lanes' body: g->lanes->body with $ the prefix and @ the upper-case prefix. */
+void kgpu_lanes_body(sbuf *o, const out_info *info, const kern_target *g, const char *up);
 
 #endif

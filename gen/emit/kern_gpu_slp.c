@@ -64,9 +64,11 @@ static void fn_plane_end(slpt_writer *w, int plane, int first)
                           "    nan = nan || %s; /* plane %d */\n", nan, plane);
 }
 
-/* The eye's components the program reads (e2 in clip space), u and v, and the flags. */
+/* The eye's components the program reads (e2 in clip space), u and v, and the flags (with
+ * --kernel lanes u, v and the flags are vectors). */
 static void put_slp_locals(sbuf *o, const out_info *info, const kern_target *g, int values)
 {
+    const char *real = info->lanes ? g->lanes->real : g->real;
     static const char *const comp[4] = {"eye.x", "eye.y", "eye.z", "eye.w"};
     kern_var e[4] = {{"e0", comp[0], 0}, {"e1", comp[1], 0}, {"e2", comp[2], 0}, {"e3", comp[3], 0}};
     kern_var uv[2] = {{"u", NULL, 1}, {"v", NULL, 1}};
@@ -75,9 +77,10 @@ static void put_slp_locals(sbuf *o, const out_info *info, const kern_target *g, 
         g->syntax->locals(o, g, "    ", g->real, e, 4, 1);
     else
         g->syntax->locals(o, g, "    ", g->real, e + 2, 1, 1);
-    g->syntax->locals(o, g, "    ", g->real, uv, 2, 1);
+    g->syntax->locals(o, g, "    ", real, uv, 2, 1);
     if (!values)
-        g->syntax->locals(o, g, "    ", "bool", f, info->rule == OUT_STRICT ? 2 : 3, 0);
+        g->syntax->locals(o, g, "    ", info->lanes ? g->lanes->flag : "bool", f,
+                          info->rule == OUT_STRICT ? 2 : 3, 0);
 }
 
 /* The class from the flags: strict back (1) iff lt, front (0) iff gt; degenerate silhouette (2)
@@ -115,12 +118,14 @@ static void put_slp_return(sbuf *o, const out_info *info, const kern_target *g, 
     sbuf_printf(o, "    return %s;\n", b);
 }
 
-/* One function: classify_patch (values 0) or values, its head, locals, program and end. */
+/* One function: classify_patch (values 0) or values, its head, locals, program and end; with
+ * --kernel lanes classify_lanes, classify_patch over vectors of patches. */
 static int put_slp_function(sbuf *o, const tp_table *t, const out_info *info,
                             const kern_target *g, int values, ptp_error *err)
 {
     char name[128], mul[160], fma[96], shift[96];
-    slpt_syntax syn = {"    ", g->slp_decl, 0, mul, fma, fma, shift, fn_recip0, fn_load, fn_plane_end};
+    slpt_syntax syn = {"    ", info->lanes ? g->lanes->decl : g->slp_decl, 0, mul, fma, fma, shift,
+                       fn_recip0, fn_load, fn_plane_end};
     fn_ctx ctx = {g, info, values};
     slpt_writer w;
     int st;
@@ -133,12 +138,17 @@ static int put_slp_function(sbuf *o, const tp_table *t, const out_info *info,
         snprintf(shift, sizeof shift, "%sshift(%%s, %%s, %%s)", info->prefix);
     else
         snprintf(shift, sizeof shift, "%s", g->slp_fma);
-    snprintf(name, sizeof name, "%s%s", info->prefix, values ? "values" : "classify_patch");
+    snprintf(name, sizeof name, "%s%s", info->prefix,
+             values ? "values" : info->lanes ? "classify_lanes" : "classify_patch");
     if (values)
         sbuf_printf(o, "/* d[P] = the value of plane P of the patch cp seen from eye, at true scale. */\n");
     else
-        sbuf_printf(o, "/* The class of the patch cp seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */\n");
-    sbuf_printf(o, values ? g->slp_values : g->slp_classify, name, t->dom.npoints, t->dom.nplanes);
+        sbuf_printf(o, "/* The class of the patch cp%s seen from eye: 0 front-facing, 1 back-facing, 2 silhouette. */\n",
+                    info->lanes ? " (each lane of each coordinate one patch's)" : "");
+    if (info->lanes)
+        sbuf_printf(o, g->lanes->classify, name, info->prefix, t->dom.npoints);
+    else
+        sbuf_printf(o, values ? g->slp_values : g->slp_classify, name, t->dom.npoints, t->dom.nplanes);
     sbuf_puts(o, "\n");
     put_slp_locals(o, info, g, values);
     if ((st = slpt_init(&w, o, info->slp, &syn, info->space == OUT_WORLD, &ctx, err)))
@@ -169,20 +179,25 @@ int kgpu_slp_functions(sbuf *o, const tp_table *t, const out_info *info, const k
     return st ? st : put_slp_function(o, t, info, g, 1, err);
 }
 
-/* The constants P (1), Q, K and L of the compute kernel. */
+/* The constants P (1), Q, K and L of the compute kernel; with --kernel lanes LANES (patches a
+ * work-item) in P's place. */
 static void put_slp_constants(sbuf *o, const tp_table *t, const out_info *info,
                               const kern_target *g, const char *up)
 {
-    static const char *const what[4] = {"threads per patch", "patches per workgroup",
-                                        "control points per patch", "control planes per patch"};
+    const char *what[4] = {"threads per patch", "patches per workgroup",
+                           "control points per patch", "control planes per patch"};
     unsigned threads, patches;
     long v[4] = {1, 0, t->dom.npoints, t->dom.nplanes};
     char name[80], lit[32];
     int i;
     kgpu_dispatch(info, &threads, &patches); /* the workgroup the host header states */
     v[1] = (long)patches;
+    if (info->lanes) {
+        what[0] = "patches per work-item, one a lane";
+        v[0] = info->lanes;
+    }
     for (i = 0; i < 4; i++) {
-        snprintf(name, sizeof name, "%s%c", up, "PQKL"[i]);
+        snprintf(name, sizeof name, i || !info->lanes ? "%s%c" : "%sLANES", up, "PQKL"[i]);
         snprintf(lit, sizeof lit, "%ldu", v[i]);
         g->syntax->constant(o, g, name, g->uint, lit, what[i]);
     }
@@ -265,5 +280,20 @@ int kgpu_slp_kernel_parts(sbuf *tables, sbuf *funcs, const tp_table *t, const ou
                           const kern_target *g, const char *up, ptp_error *err)
 {
     put_slp_constants(tables, t, info, g, up);
-    return kgpu_slp_functions(funcs, t, info, g, err);
+    if (!info->lanes)
+        return kgpu_slp_functions(funcs, t, info, g, err);
+    sbuf_printf(funcs, g->lanes->point, info->prefix);
+    return put_slp_function(funcs, t, info, g, 0, err);
+}
+
+void kgpu_lanes_body(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    const char *s;
+    for (s = g->lanes->body; *s; s++)
+        if (*s == '$')
+            sbuf_puts(o, info->prefix);
+        else if (*s == '@')
+            sbuf_puts(o, up);
+        else
+            sbuf_printf(o, "%c", *s);
 }

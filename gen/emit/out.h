@@ -37,6 +37,7 @@ typedef struct {
     int indexed;         /* GPU straight-line kernel: each patch's points through its indices
                             (with bspline, and its boundary mask: OpenSubdiv's phantoms) */
     int group;           /* GPU straight-line kernel: patches (invocations) per workgroup */
+    int lanes;           /* OpenCL --kernel lanes: patches per work-item, a vector's width (or 0) */
     const plan_slp *slp; /* the straight-line plan (the C header, the GPU straight-line code;
                             tgt_emit_target builds it), or NULL */
     int bspline;         /* C and the straight-line GPU code: the points are a uniform bicubic
