@@ -65,7 +65,7 @@ static void fn_plane_end(slpt_writer *w, int plane, int first)
 }
 
 /* The eye's components the program reads (e2 in clip space), u and v, and the flags (with
- * --kernel lanes u, v and the flags are vectors). */
+ * --kernel lanes all vectors, so that every fma has operands of one type). */
 static void put_slp_locals(sbuf *o, const out_info *info, const kern_target *g, int values)
 {
     const char *real = info->lanes ? g->lanes->real : g->real;
@@ -74,9 +74,9 @@ static void put_slp_locals(sbuf *o, const out_info *info, const kern_target *g, 
     kern_var uv[2] = {{"u", NULL, 1}, {"v", NULL, 1}};
     kern_var f[3] = {{"lt", NULL, 1}, {"gt", NULL, 1}, {"nan", NULL, 1}};
     if (info->space == OUT_WORLD)
-        g->syntax->locals(o, g, "    ", g->real, e, 4, 1);
+        g->syntax->locals(o, g, "    ", real, e, 4, 1);
     else
-        g->syntax->locals(o, g, "    ", g->real, e + 2, 1, 1);
+        g->syntax->locals(o, g, "    ", real, e + 2, 1, 1);
     g->syntax->locals(o, g, "    ", real, uv, 2, 1);
     if (!values)
         g->syntax->locals(o, g, "    ", info->lanes ? g->lanes->flag : "bool", f,
