@@ -75,15 +75,17 @@ for cc in $compilers; do
         fi
     done
 done
-# The kernels' tests take most of the time, mostly on one core each: the certified kernels run
-# in a second lane beside all the others (about as long together). Its lines join the log and
-# the terminal when both lanes are done.
+# The kernels' tests take most of the time, mostly on one core each: the certified kernels, then
+# the refinement and the input forms, run in a second lane beside all the others (about as long
+# together). Its lines join the log and the terminal when both lanes are done.
 lane=build/test-lane.log
 (
     log=$lane
     : >"$log"
     if [ -x build/gcc/ptpgen ]; then
         run tests/test_certified.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_certified.sh
+        run tests/test_refine.sh env PTPGEN=build/gcc/ptpgen bash tests/test_refine.sh
+        run tests/test_basis.sh env PTPGEN=build/gcc/ptpgen bash tests/test_basis.sh
     fi
 ) >/dev/null &
 lane_pid=$!
@@ -94,7 +96,6 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/test_cli.sh env PTPGEN=build/gcc/ptpgen PTPGEN_OTHER=build/clang/ptpgen bash tests/test_cli.sh
     run tests/test_examples.sh env PTPGEN=build/gcc/ptpgen bash tests/test_examples.sh
     run tests/man_check.sh env PTPGEN=build/gcc/ptpgen bash tests/man_check.sh
-    run tests/test_basis.sh env PTPGEN=build/gcc/ptpgen bash tests/test_basis.sh
     run tests/test_osd.sh env PTPGEN=build/gcc/ptpgen bash tests/test_osd.sh
     run tests/test_indexed.sh env PTPGEN=build/gcc/ptpgen bash tests/test_indexed.sh
     run tests/test_cmake.sh bash tests/test_cmake.sh
@@ -110,7 +111,6 @@ else
 fi
 
 if [ -x build/gcc/ptpgen ]; then
-    run tests/test_refine.sh env PTPGEN=build/gcc/ptpgen bash tests/test_refine.sh
     run tests/test_mesh.sh env PTPGEN=build/gcc/ptpgen bash tests/test_mesh.sh
     run tests/test_kernels.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_kernels.sh
     run tests/test_second_look.sh env PTPGEN=build/gcc/ptpgen BUILD=build/gcc bash tests/test_second_look.sh
