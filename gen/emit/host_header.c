@@ -53,16 +53,14 @@ static void hh_open(sbuf *o, const char *px, const char *up)
 static void hh_workgroup(sbuf *o, const tp_table *t, const out_info *info, const kern_target *g,
                          const char *up)
 {
+    const char *per = info->lanes ? "PATCHES_PER_THREAD" : "THREADS_PER_PATCH";
     unsigned threads, patches;
     kgpu_dispatch(info, &threads, &patches);
     sbuf_printf(o, "/* The workgroup: WORKGROUP_SIZE invocations (the kernel's local size along x) handle\n"
                    " * PATCHES_PER_WORKGROUP patches, %s each; POINTS control points a\n"
-                   " * patch (vec4 each, patch-major), PLANES values a patch with --planes. */\n",
-                info->lanes ? "PATCHES_PER_THREAD" : "THREADS_PER_PATCH");
-    sbuf_printf(o, "#define %sWORKGROUP_SIZE %uu\n#define %sPATCHES_PER_WORKGROUP %uu\n"
-                   "#define %s%s %uu\n",
-                up, threads, up, patches, up, info->lanes ? "PATCHES_PER_THREAD" : "THREADS_PER_PATCH",
-                info->lanes ? patches / threads : threads / patches);
+                   " * patch (vec4 each, patch-major), PLANES values a patch with --planes. */\n", per);
+    sbuf_printf(o, "#define %sWORKGROUP_SIZE %uu\n#define %sPATCHES_PER_WORKGROUP %uu\n#define %s%s %uu\n",
+                up, threads, up, patches, up, per, info->lanes ? patches / threads : threads / patches);
     sbuf_printf(o, "#define %sPOINTS %d\n#define %sPLANES %d\n", up, t->dom.npoints, up,
                 t->dom.nplanes);
     if (g->named_kernel)

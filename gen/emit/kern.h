@@ -15,8 +15,8 @@ typedef struct {
     const char *point;    /* the points' struct, printf format of the prefix */
     const char *classify; /* classify_lanes' head through its brace, of its name, the prefix, K */
     const char *interface; /* the banner's, in the target's interface's place */
-    /* the kernel's body: gathers each work-item's patches, classifies, scatters; printf format
-     * of the upper-case prefix (4 times), then the prefix */
+    /* the kernel's body: gathers each work-item's patches, classifies, scatters; $ stands for
+     * the prefix, @ for the upper-case prefix (kgpu_lanes_body) */
     const char *body;
 } kern_lanes;
 
