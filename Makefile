@@ -108,7 +108,7 @@ $(B)/host_wgpu: tests/host_wgpu.c tests/check.h tests/host_run.c tests/host_run.
 	    $(B)/libptptest.a -L$(WGPU_DIR) -l:libwgpu_native-release.so -Wl,-rpath,$(WGPU_DIR) -lm
 
 # Everything one compiler builds for the tests.
-build-tests: $(B)/ptpgen $(addprefix $(B)/,$(TESTS)) $(KNOT)
+build-tests: $(B)/ptpgen $(addprefix $(B)/,$(TESTS)) $(KNOT) $(FAR)
 
 test:
 	@bash tests/run.sh

@@ -170,6 +170,8 @@ static int parse_arg(kref_args *o, parse_seen *seen, int argc, char **argv, int 
         o->groups_x_constant = 1;
     } else if (!strcmp(s, "--certified")) {
         o->certified = 1;
+    } else if (!strcmp(s, "--local-bound")) {
+        o->local_bound = 1;
     } else if ((!strcmp(s, "--random") || !strcmp(s, "--model") || !strcmp(s, "--exact") ||
                 !strcmp(s, "--exact-far")) && left >= 3) {
         st = parse_source(o, s, argv + *i + 1, host);
@@ -341,6 +343,7 @@ int kref_init(kref_ref *r, tp_kind kind, int n, int m, kref_space space, kref_ru
     r->space = space;
     r->rule = rule;
     r->certified = 0;
+    r->local_bound = 0;
     r->edge = NULL;
     if ((st = integer_weights(r, err)) || (st = edge_planes(r, err))) {
         free(r->wint);
@@ -356,6 +359,7 @@ int kref_init_args(kref_ref *r, const kref_args *a)
     if (kref_init(r, a->kind, a->n, a->m, a->space, a->rule, &err))
         return !check(0, a->label, "kref_init(%dx%d): %s", a->n, a->m, err.msg);
     r->certified = a->certified;
+    r->local_bound = a->local_bound;
     return 0;
 }
 
@@ -1166,8 +1170,8 @@ static void local_magnitudes(float (*mag)[4], float eye[4], const float (*b)[4],
  * terms in any order (count - 1)u: (count + 12)u in all, taken as (count + 16)u. A kernel in
  * patch-local coordinates rounds every coordinate once more, at most 2^-16 of the shift from the
  * reference's (local_magnitudes): (count + 24)u over the local points' monomials. The bound is
- * the larger of the two, so that it holds for both formulations (the table kernels read the
- * points as given). */
+ * the larger of the two, so that it holds for both formulations (--coordinates absolute and the
+ * certified table kernel read the points as given), or with r->local_bound the local one alone. */
 void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, double *bound)
 {
     const float(*b)[4] = (const float(*)[4])s->cp + p * (size_t)r->K;
@@ -1201,7 +1205,8 @@ void kref_values(const kref_ref *r, const kref_set *s, size_t p, double *d, doub
     for (i = 0, x = 0; i < r->L; i++) {
         for (count = 0; x < r->t.nterms && r->t.terms[x].plane == i; x++)
             count++;
-        bound[i] = fmax(bound[i] * (count + 16), lb[i] * (count + 24)) * ldexp(1, -24);
+        bound[i] = r->local_bound ? lb[i] * (count + 24) * ldexp(1, -24)
+                                  : fmax(bound[i] * (count + 16), lb[i] * (count + 24)) * ldexp(1, -24);
     }
     free(lm);
     free(lb);

@@ -35,6 +35,8 @@ typedef struct {
     kref_space space;
     kref_rule rule;
     int certified;     /* the kernel is certified (ptpgen --certified); kref_init sets 0 */
+    int local_bound;   /* the values' bound for patch-local coordinates alone (--local-bound);
+                          kref_init sets 0: the larger of it and the bound as given */
     int64_t *wint;     /* per term: den[plane] * w, an integer; NULL when a plane's sum of
                           |den * w| reaches 2^47 (exact sets are then refused) */
     ptp_i128 *den;     /* per plane: the lcm of its weights' denominators (> 0) */
@@ -87,6 +89,7 @@ typedef struct {
  *   [FILE] [--kernel NAME] --degree N M [--domain quad|triangle] --space clip|world
  *   --rule strict|degenerate
  *   [--block-threads PQ --patches-per-block Q] [--planes] [--groups-x-constant] [--certified]
+ *   [--local-bound]
  *   (--random SETS COUNT SEED | --model PATH NEYES SEED | --exact SETS COUNT SEED
  *    | --exact-far SETS COUNT SEED)... [--eye-radius R] --name LABEL
  * --exact-far: kref_exact_sets' far tangent corners (far set).
@@ -94,7 +97,10 @@ typedef struct {
  * --domain triangle: triangular patches of degree N (M is ignored).
  * --certified: the kernel was generated with --certified: it may answer silhouette wherever the
  * reference says back or front (counted as given up), and on --exact data it must never call a
- * patch back or front unless the exact class under --rule is that class. */
+ * patch back or front unless the exact class under --rule is that class.
+ * --local-bound: hold the values (and the classes' ambiguity) to the bound of a kernel in
+ * patch-local coordinates alone (kref_values), which a kernel in the coordinates as given
+ * exceeds on small patches far from the origin. */
 #define KREF_MAX_SOURCES 16
 typedef enum { KREF_SRC_RANDOM, KREF_SRC_MODEL, KREF_SRC_EXACT, KREF_SRC_EXACT_FAR } kref_source_kind;
 typedef struct {
@@ -113,7 +119,7 @@ typedef struct {
     kref_space space;
     kref_rule rule;
     size_t pq, q;                           /* --block-threads, --patches-per-block */
-    int planes, groups_x_constant, certified;
+    int planes, groups_x_constant, certified, local_bound;
     int nsources;
     kref_source src[KREF_MAX_SOURCES];
 } kref_args;

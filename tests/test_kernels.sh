@@ -124,6 +124,38 @@ if [ -x "$B/host_opencl" ]; then
     fi
 fi
 
+# Patch-local coordinates on the GPU. On the far model (the knot's patches split 16 ways, 2^14
+# times their size from the origin; clip space, where the double reference is accurate there),
+# every plane value of the plain table kernel and of the straight-line kernel on PoCL stays within
+# the bound of patch-local coordinates (--local-bound); the table kernel with --coordinates
+# absolute must exceed it. (OpenCL's fma rounds once, as the bound assumes; lavapipe rounds GLSL's
+# fma as a product and a sum, so there the shear rounds relative to o w, not to the sheared value,
+# and its values exceed the local bound too, though 200 times less than in absolute coordinates.)
+far=build/models/far.bez
+[ -e $far ] || make -s $far >/dev/null 2>&1 || notok "the far model" "make $far failed"
+if [ -x "$B/host_opencl" ]; then
+    for k in table slp "table --coordinates absolute"; do
+        name="far model, opencl --kernel $k, within the local coordinates' bound"
+        if ! "$P" --degree 3 --target opencl --space clip --planes --kernel $k --prefix ptp_3x3_ \
+            -o "$tmp/f.cl"; then
+            notok "$name" "ptpgen failed"
+            continue
+        fi
+        cmd=("$B/host_opencl" "$tmp/f.cl" --kernel ptp_3x3_classify --degree 3 3 --space clip
+            --rule strict $(host_sched "$tmp/f.cl") --planes --local-bound --model $far 2 7 --name "$name")
+        case $k in
+        *absolute)
+            if ! "${cmd[@]}" >"$tmp/out" 2>&1 && grep -q '^not ok - .*plane values within' "$tmp/out"; then
+                ok "far model, opencl --kernel $k: the values exceed the local coordinates' bound"
+            else
+                notok "far model, opencl --kernel $k: the values exceed the local coordinates' bound" \
+                    "they did not, or the host failed otherwise"
+            fi ;;
+        *) run_host "$name" "${cmd[@]}" ;;
+        esac
+    done
+fi
+
 # Without --planes the kernels write only the classes (OpenCL gets a null planes pointer).
 "$P" --degree 3 --target opencl --kernel table -o "$tmp/k.cl" && [ -x "$B/host_opencl" ] &&
     run_host "opencl without --planes" "$B/host_opencl" "$tmp/k.cl" --kernel ptp_3x3_classify --degree 3 3 \

@@ -59,10 +59,10 @@ static void usage_options(sbuf *o)
         "                   world: the full planes dotted with a homogeneous eye point\n"
         "  --rule R         strict (default): back iff all values < 0, front iff all > 0;\n"
         "                   degenerate: back iff none > 0, front iff none < 0\n"
-        "  --coordinates C  C and the straight-line GPU code: local (default): each patch moved\n"
-        "                   to its first control point's origin before the planes (exact up\n"
-        "                   to one rounding a coordinate); absolute: as given (--kernel table\n"
-        "                   reads them as given always)\n"
+        "  --coordinates C  C and GPU code: local (default): each patch moved to its first\n"
+        "                   control point's origin before the planes (exact up to one\n"
+        "                   rounding a coordinate); absolute: as given (the certified table\n"
+        "                   kernel reads them as given always)\n"
         "  --basis B        C and the straight-line GPU code: bezier (default): Bezier control\n"
         "                   points; bspline: the 16 control vertices of a uniform bicubic\n"
         "                   B-spline patch (--degree 3), converted in registers\n"
@@ -502,9 +502,10 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
         return ptp_fail(err, PTP_EUSAGE, "--kernel indexed is not certified (--kernel slp or table)");
     if (o->lanes && (st = check_lanes(o, seen, err)))
         return st;
-    if (o->table && seen >> OPT_COORDINATES & 1)
-        return ptp_fail(err, PTP_EUSAGE, "--coordinates applies to the straight-line program; "
-                                         "--kernel table reads the coordinates as given");
+    if (o->table && o->certified && seen >> OPT_COORDINATES & 1)
+        return ptp_fail(err, PTP_EUSAGE, "--coordinates applies to plain code and the straight-line "
+                                         "program; the certified table kernel reads the coordinates "
+                                         "as given (its terms read differences of points)");
     if (o->indexed && o->functions)
         return ptp_fail(err, PTP_EUSAGE, "--kernel indexed is a compute kernel; --stage function "
                                          "writes the functions alone (the caller gathers the points)");

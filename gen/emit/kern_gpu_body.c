@@ -19,13 +19,58 @@ void kgpu_shared(sbuf *o, const out_info *info, const kern_target *g, const char
     g->syntax->shared(o, g, indent, g->uint, "flags", count);
 }
 
-/* The body's start: the thread's place (lid, q, t), its patch (pid, live), the loop variables
- * and the flags f; then the patch's control points into shared memory. */
-static void put_load(sbuf *o, const kern_target *g, const char *up)
+/* Whether the table kernel moves each patch to patch-local coordinates: plain, without
+ * --coordinates absolute (the certified one reads the points as given: its bounds, second look
+ * and collapsed edges are derived for them; its terms read differences of points). */
+static int table_local(const out_info *info)
 {
-    char q[96], t[96], pid[256];
+    return !info->absolute && !info->certified;
+}
+
+/* Patch-local coordinates (table_local): into the
+ * mutable locals ox, oy (world: oz) the patch's shift o = -b0.xyz / b0.w (0 where b0.w = 0, or
+ * for a thread past the last patch), and in world space the eye moved the same way into l. */
+static void put_shift(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    static const char *const c[3] = {"x", "y", "z"};
+    kern_var v[3] = {{"ox", "0.0f", 1}, {"oy", "0.0f", 1}, {"oz", "0.0f", 1}};
+    char e[160], rw[128];
+    int k, n = info->space == OUT_WORLD ? 3 : 2;
+    g->syntax->locals(o, g, "    ", g->real, v, n, 0);
+    sbuf_puts(o, "    if (live) {\n");
+    snprintf(e, sizeof e, "cp[pid * %sK]", up);
+    g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"b0", e, 0}, 1, 0);
+    g->syntax->select(rw, sizeof rw, "b0.w != 0.0f", "1.0f / b0.w", "0.0f");
+    g->syntax->locals(o, g, "        ", g->real, &(kern_var){"rw", rw, 0}, 1, 0);
+    for (k = 0; k < n; k++) {
+        char b0c[8], m[64];
+        snprintf(b0c, sizeof b0c, "b0.%s", c[k]);
+        kgpu_mul(m, sizeof m, g, b0c, "rw");
+        sbuf_printf(o, "        o%s = -%s;\n", c[k], m);
+    }
+    sbuf_puts(o, "    }\n");
+    if (info->space != OUT_WORLD)
+        return;
+    g->syntax->locals(o, g, "    ", g->vec4, &(kern_var){"l", "eye", 1}, 1, 0);
+    for (k = 0; k < n; k++) {
+        char oc[8], ec[8];
+        snprintf(oc, sizeof oc, "o%s", c[k]);
+        snprintf(ec, sizeof ec, "eye.%s", c[k]);
+        snprintf(e, sizeof e, g->slp_fma, oc, "eye.w", ec);
+        sbuf_printf(o, "    l.%s = %s;\n", c[k], e);
+    }
+}
+
+/* The body's start: the thread's place (lid, q, t), its patch (pid, live), the loop variables
+ * and the flags f; then the patch's control points into shared memory, in patch-local
+ * coordinates where table_local (put_shift). */
+static void put_load(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    static const char *const c[3] = {"x", "y", "z"};
+    char q[96], t[96], pid[256], e[160];
     kern_var v[6] = {{"lid", g->local_id, 0}, {"q", q, 0}, {"t", t, 0},
                      {"i", NULL, 1}, {"pj", NULL, 1}, {"kl", NULL, 1}};
+    int k, local = table_local(info);
     snprintf(q, sizeof q, "lid / %sP", up);
     snprintf(t, sizeof t, "lid %% %sP", up);
     snprintf(pid, sizeof pid, "(%s * %s + %s) * %sQ + q", g->group_y, g->groups_x, g->group_x, up);
@@ -33,14 +78,30 @@ static void put_load(sbuf *o, const kern_target *g, const char *up)
     kgpu_local(o, g, g->uint, "pid", pid, 0);
     kgpu_local(o, g, g->uint, "f", "0u", 1);
     kgpu_local(o, g, "bool", "live", "pid < patch_count", 0);
-    sbuf_printf(o, "\n    /* The patch's control points into shared memory, P threads cooperating. */\n"
+    if (local)
+        put_shift(o, info, g, up);
+    sbuf_printf(o, "\n    /* The patch's control points into shared memory, P threads cooperating%s. */\n"
                    "    for (i = t; i < %sK; i += %sP)",
-                up, up);
+                local ? ", in\n     * patch-local coordinates (x + o w)" : "", up, up);
     kgpu_then(o, g);
-    sbuf_puts(o, "        if (live)");
-    kgpu_then(o, g);
-    sbuf_printf(o, "            pts[q * %sK + i] = cp[pid * %sK + i];\n", up, up);
-    kgpu_end(o, g, "        ");
+    if (!local) {
+        sbuf_puts(o, "        if (live)");
+        kgpu_then(o, g);
+        sbuf_printf(o, "            pts[q * %sK + i] = cp[pid * %sK + i];\n", up, up);
+        kgpu_end(o, g, "        ");
+    } else {
+        sbuf_puts(o, "        if (live) {\n");
+        snprintf(e, sizeof e, "cp[pid * %sK + i]", up);
+        g->syntax->locals(o, g, "            ", g->vec4, &(kern_var){"p", e, 1}, 1, 0);
+        for (k = 0; k < (info->space == OUT_WORLD ? 3 : 2); k++) {
+            char oc[8], pc[8];
+            snprintf(oc, sizeof oc, "o%s", c[k]);
+            snprintf(pc, sizeof pc, "p.%s", c[k]);
+            snprintf(e, sizeof e, g->slp_fma, oc, "p.w", pc);
+            sbuf_printf(o, "            p.%s = %s;\n", c[k], e);
+        }
+        sbuf_printf(o, "            pts[q * %sK + i] = p;\n        }\n", up);
+    }
     kgpu_end(o, g, "    ");
     sbuf_printf(o, "    %s\n\n", g->barrier);
 }
@@ -50,7 +111,7 @@ static void put_load(sbuf *o, const kern_target *g, const char *up)
 static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    const char *eye = info->space == OUT_CLIP ? "" : ", eye";
+    const char *eye = info->space == OUT_CLIP ? "" : table_local(info) ? ", l" : ", eye";
     char a[128], b[320], c[320], w[96], term[1024], e[1152]; /* up has at most 63 bytes */
     int r, n = (int)(strlen(px) + strlen(fn));
     sbuf_printf(o,
@@ -135,7 +196,7 @@ void kgpu_body(sbuf *o, const tp_domain *d, const out_info *info, const kern_tar
 {
     if (g->shared_in_body)
         kgpu_shared(o, info, g, up, "    ");
-    put_load(o, g, up);
+    put_load(o, info, g, up);
     put_accumulate(o, info, g, up);
     if (info->certified)
         kgpu_cert_scale(o, d, info, g, up);

@@ -43,9 +43,9 @@ typedef struct {
     int bspline;         /* C and the straight-line GPU code: the points are a uniform bicubic
                             B-spline patch's control vertices (--basis bspline) */
     int vmajor;          /* the same: the points' rows run along v (--order v-major) */
-    int absolute;        /* the straight-line program reads the coordinates as given (else
-                            patch-local: point 0's origin subtracted; the table kernels always
-                            read them as given) */
+    int absolute;        /* the code reads the coordinates as given (else patch-local: point
+                            0's origin subtracted; the certified table kernel always reads them
+                            as given) */
 } out_info;
 
 /* The ptpgen-planes/1 JSON document of t. */
