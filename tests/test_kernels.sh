@@ -125,7 +125,7 @@ if [ -x "$B/host_opencl" ]; then
 fi
 
 # Patch-local coordinates on the GPU. On the far model (the knot's patches split 16 ways, 2^14
-# times their size from the origin; clip space, where the double reference is accurate there),
+# times their size from the origin; clip space, where the double reference is accurate),
 # every plane value of the plain table kernel and of the straight-line kernel on PoCL stays within
 # the bound of patch-local coordinates (--local-bound); the table kernel with --coordinates
 # absolute must exceed it. (OpenCL's fma rounds once, as the bound assumes; lavapipe rounds GLSL's

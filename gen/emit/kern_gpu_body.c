@@ -27,23 +27,45 @@ static int table_local(const out_info *info)
     return !info->absolute && !info->certified;
 }
 
-/* Patch-local coordinates (table_local): into the
- * mutable locals ox, oy (world: oz) the patch's shift o = -b0.xyz / b0.w (0 where b0.w = 0, or
- * for a thread past the last patch), and in world space the eye moved the same way into l. */
+/* The coordinates the shear moves: x and y, and in world space z. */
+static int sheared_coords(const out_info *info)
+{
+    return info->space == OUT_WORLD ? 3 : 2;
+}
+
+/* Lines at indent moving the vec4 v by the shift: v.c = fma(oc, w.w, w.c) for the sheared
+ * coordinates c, w being v's value before (its own name, or the one v was copied from). */
+static void put_sheared(sbuf *o, const out_info *info, const kern_target *g, const char *indent,
+                        const char *v, const char *w)
+{
+    static const char *const c[3] = {"x", "y", "z"};
+    char oc[8], wc[72], ww[72], e[224];
+    int k;
+    snprintf(ww, sizeof ww, "%s.w", w);
+    for (k = 0; k < sheared_coords(info); k++) {
+        snprintf(oc, sizeof oc, "o%s", c[k]);
+        snprintf(wc, sizeof wc, "%s.%s", w, c[k]);
+        snprintf(e, sizeof e, g->slp_fma, oc, ww, wc);
+        sbuf_printf(o, "%s%s.%s = %s;\n", indent, v, c[k], e);
+    }
+}
+
+/* Patch-local coordinates (table_local): into the mutable locals ox, oy (world: oz) the patch's
+ * shift o = -b0.xyz / b0.w (0 where b0.w = 0, or for a thread past the last patch), and in world
+ * space the eye moved the same way into l. */
 static void put_shift(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     static const char *const c[3] = {"x", "y", "z"};
     kern_var v[3] = {{"ox", "0.0f", 1}, {"oy", "0.0f", 1}, {"oz", "0.0f", 1}};
-    char e[160], rw[128];
-    int k, n = info->space == OUT_WORLD ? 3 : 2;
-    g->syntax->locals(o, g, "    ", g->real, v, n, 0);
+    char e[160], rw[128], b0c[8], m[64];
+    int k;
+    g->syntax->locals(o, g, "    ", g->real, v, sheared_coords(info), 0);
     sbuf_puts(o, "    if (live) {\n");
     snprintf(e, sizeof e, "cp[pid * %sK]", up);
     g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"b0", e, 0}, 1, 0);
     g->syntax->select(rw, sizeof rw, "b0.w != 0.0f", "1.0f / b0.w", "0.0f");
     g->syntax->locals(o, g, "        ", g->real, &(kern_var){"rw", rw, 0}, 1, 0);
-    for (k = 0; k < n; k++) {
-        char b0c[8], m[64];
+    for (k = 0; k < sheared_coords(info); k++) {
         snprintf(b0c, sizeof b0c, "b0.%s", c[k]);
         kgpu_mul(m, sizeof m, g, b0c, "rw");
         sbuf_printf(o, "        o%s = -%s;\n", c[k], m);
@@ -52,13 +74,7 @@ static void put_shift(sbuf *o, const out_info *info, const kern_target *g, const
     if (info->space != OUT_WORLD)
         return;
     g->syntax->locals(o, g, "    ", g->vec4, &(kern_var){"l", "eye", 1}, 1, 0);
-    for (k = 0; k < n; k++) {
-        char oc[8], ec[8];
-        snprintf(oc, sizeof oc, "o%s", c[k]);
-        snprintf(ec, sizeof ec, "eye.%s", c[k]);
-        snprintf(e, sizeof e, g->slp_fma, oc, "eye.w", ec);
-        sbuf_printf(o, "    l.%s = %s;\n", c[k], e);
-    }
+    put_sheared(o, info, g, "    ", "l", "eye");
 }
 
 /* The body's start: the thread's place (lid, q, t), its patch (pid, live), the loop variables
@@ -66,11 +82,10 @@ static void put_shift(sbuf *o, const out_info *info, const kern_target *g, const
  * coordinates where table_local (put_shift). */
 static void put_load(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
-    static const char *const c[3] = {"x", "y", "z"};
     char q[96], t[96], pid[256], e[160];
     kern_var v[6] = {{"lid", g->local_id, 0}, {"q", q, 0}, {"t", t, 0},
                      {"i", NULL, 1}, {"pj", NULL, 1}, {"kl", NULL, 1}};
-    int k, local = table_local(info);
+    int local = table_local(info);
     snprintf(q, sizeof q, "lid / %sP", up);
     snprintf(t, sizeof t, "lid %% %sP", up);
     snprintf(pid, sizeof pid, "(%s * %s + %s) * %sQ + q", g->group_y, g->groups_x, g->group_x, up);
@@ -93,13 +108,7 @@ static void put_load(sbuf *o, const out_info *info, const kern_target *g, const 
         sbuf_puts(o, "        if (live) {\n");
         snprintf(e, sizeof e, "cp[pid * %sK + i]", up);
         g->syntax->locals(o, g, "            ", g->vec4, &(kern_var){"p", e, 1}, 1, 0);
-        for (k = 0; k < (info->space == OUT_WORLD ? 3 : 2); k++) {
-            char oc[8], pc[8];
-            snprintf(oc, sizeof oc, "o%s", c[k]);
-            snprintf(pc, sizeof pc, "p.%s", c[k]);
-            snprintf(e, sizeof e, g->slp_fma, oc, "p.w", pc);
-            sbuf_printf(o, "            p.%s = %s;\n", c[k], e);
-        }
+        put_sheared(o, info, g, "            ", "p", "p");
         sbuf_printf(o, "            pts[q * %sK + i] = p;\n        }\n", up);
     }
     kgpu_end(o, g, "    ");
