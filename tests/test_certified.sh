@@ -173,7 +173,7 @@ for td in tri1 tri2 tri3 tri4; do
     done
 done
 # ... and the far triangles catch a certified GLSL table kernel on lavapipe whose second look
-# bounds by the differences' magnitudes (M2 = M: 11 unsafe of 44,000, far tangent corners).
+# bounds by the sheared points' magnitudes (M2 = M: 11 unsafe of 44,000, far tangent corners).
 if [ $have_gpu_tools = 1 ] && [ -x "$B/host_vulkan" ]; then
     "$P" $(args_for glsl tri3 clip strict --certified --kernel=table) --target glsl -o "$tmp/t.comp" &&
         sed 's/float M2 = .*;$/float M2 = M;/' "$tmp/t.comp" >"$tmp/m.comp"
@@ -215,9 +215,11 @@ for space in clip world; do
 done
 # The paper's table kernel (--kernel table), certified, on every runtime (WGSL's --certified kernel
 # above is already the table kernel): clip strict and world degenerate, on a fifth of the exact
-# data. Its terms read differences of points, and its second look (double-float, every plane whose
-# float bound does not clear, on every target) reads the points. On lavapipe a patch that takes the
-# second look costs about 70 us of CPU, a far tangent corner about 1.3 ms (5 s a run).
+# data. It shears each point to patch-local coordinates as it loads it (WGSL's reads the points
+# as given, its terms differences of points); its second look (double-float, every plane whose
+# float bound does not clear) and its collapsed-edge tests read the points as given. On lavapipe
+# a patch that takes the second look costs about 70 us of CPU, a far tangent corner about 1.3 ms
+# (5 s a run).
 kname=table data=$cert_short
 for cfg in "clip strict" "world degenerate"; do
     read -r space rule <<<"$cfg"
@@ -229,6 +231,49 @@ for cfg in "clip strict" "world degenerate"; do
     done
     gpu_runtimes degenerate_run "$dir" 3x3 "3x3 $space $rule certified table"
 done
+# ... and with --coordinates absolute, the points as given and each term reading differences of
+# points (WGSL's form) with the second look from the points: OpenCL, clip strict.
+name="certified table opencl 3x3 clip strict, --coordinates absolute"
+if [ -x "$B/host_opencl" ]; then
+    if "$P" $(args_for opencl 3 clip strict --certified --kernel=table) --coordinates absolute \
+        --target opencl -o "$tmp/abs.cl"; then
+        grep -q 'ptp_3x3_diff(' "$tmp/abs.cl" || notok "$name reads differences of points" "no diff( found"
+        run_host "$name" "$B/host_opencl" "$tmp/abs.cl" --kernel ptp_3x3_classify $(host_sched "$tmp/abs.cl") \
+            --degree 3 3 --space clip --rule strict --certified $cert_short --name "$name"
+    else
+        notok "$name" "ptpgen failed"
+    fi
+fi
+# Patch-local coordinates pay on small patches far from the origin: on the far model (the knot's
+# patches split 16 ways, 2^14 times their size from the origin) in world space, with eyes near
+# it, the certified OpenCL table kernel culls about 5% more patch-views than with --coordinates
+# absolute (31,448 against 29,929 of 32,768 from 8 views; plain float culls 31,448), where the
+# second look, which reads the points as given, decides none. The host's double reference is
+# not accurate there (world space, 2^14 from the origin), so only the kernels' culls are compared;
+# the exact data above hold them to no unsafe class.
+far=build/models/far.bez
+[ -e $far ] || make -s $far >/dev/null 2>&1 || notok "the far model" "make $far failed"
+if [ -x "$B/host_opencl" ]; then
+    far_culls() { # far_culls KERNEL: the kernel's back and front patch-views on the far model, world
+        "$B/host_opencl" "$1" --kernel ptp_3x3_classify $(host_sched "$1") --degree 3 3 --space world \
+            --rule strict --certified --model $far 8 7 --name far 2>&1 |
+            sed -n 's/.*: kernel front \([0-9]*\), back \([0-9]*\),.*/\1 \2/p' | awk '{ print $1 + $2 }'
+    }
+    name="far model, world space: the certified OpenCL table kernel culls at least 3% more than with --coordinates absolute"
+    if "$P" --degree 3 --space world --certified --kernel table --target opencl --prefix ptp_3x3_ -o "$tmp/fl.cl" &&
+        "$P" --degree 3 --space world --certified --kernel table --coordinates absolute --target opencl \
+            --prefix ptp_3x3_ -o "$tmp/fa.cl"; then
+        local_culls=$(far_culls "$tmp/fl.cl") absolute_culls=$(far_culls "$tmp/fa.cl")
+        if [ -n "$local_culls" ] && [ -n "$absolute_culls" ] && [ "$absolute_culls" -gt 0 ] &&
+            [ $((local_culls * 100)) -ge $((absolute_culls * 103)) ]; then
+            ok "$name ($local_culls against $absolute_culls)"
+        else
+            notok "$name" "local ${local_culls:-?}, absolute ${absolute_culls:-?}"
+        fi
+    else
+        notok "$name" "ptpgen failed"
+    fi
+fi
 # ocl_mutant_caught DIR RULE SED MARK LABEL: the certified clip OpenCL table kernel of DIR (of
 # --rule RULE), mutated by the sed script SED so that it contains MARK (a grep pattern), is caught
 # calling unsafe classes on exact data; so is the CUDA kernel of DIR under the same mutation, run
@@ -258,23 +303,20 @@ done
 ocl_mutant_caught "$dir" degenerate \
     's/ptp_3x3_zero\[plane\] & col/col/; s/ptp_3x3_zero\[ptp_3x3_own_plane\[i\]\] & col/col/' \
     '(col) == 0u' "a certified degenerate OpenCL table kernel that zeros planes off the collapsed edge"
-# The certified table kernels' terms read differences of points (docs/errors.md: differences). The
-# exact data are integer points, whose differences are exact and whose float errors stay far below
-# the bound (none unsafe at 2^-6 of it, 21 at 2^-10): an OpenCL kernel whose float-pass bounds are
-# 2^12 times too small is caught (about 1,100 unsafe of 200,000), though its second look, against
+# The certified table kernel's float bound (docs/errors.md): an OpenCL kernel whose float-pass
+# bounds are 2^12 times too small is caught (about 6,400 unsafe of 200,000; 7 at 2^-6 of the
+# bound, as the exact data's integer points round once sheared), though its second look, against
 # the right bound, still runs where the mutated bound does not decide.
 ocl_mutant_caught "$tmp/cert/table-clip-strict" strict 's/tau_k\[plane\] \* M + /tau_k[plane] * M * 0x1p-12f + /' \
     'M \* 0x1p-12f' "a certified OpenCL table kernel with its float bounds 2^12 times too small"
 # The second look must count the planes it looks at again: an OpenCL kernel that drops their
 # double-float flags (keeping only the planes the float bounds decided) is caught unsafe (about
-# 4,000 of 2*10^5).
+# 7,100 of 2*10^5).
 ocl_mutant_caught "$tmp/cert/table-clip-strict" strict 's/) & mine \* 3u;/) \& 0u;/' \
     ') & 0u;' "a certified OpenCL table kernel whose second look drops the planes it looks at again"
-# The second look reads the points themselves, so its bound takes their own magnitudes (M2), not
-# the differences' (M), which are 2^26 to 2^30 times smaller on the far tangent corners of
-# --exact-far: an OpenCL kernel whose second look takes M is caught there (7 unsafe of 4,000,
-# where rounding in double-float flips an exactly zero corner plane), though on the --exact data
-# alone, whose points are not far from the eye against their extent, it is not (none of 10^6).
+# The second look reads the points as given, so its bound takes their own magnitudes (M2), not
+# the sheared points' (M), which are far smaller on the far tangent corners of --exact-far: an
+# OpenCL kernel whose second look takes M is caught (about 20 unsafe of 204,000).
 ocl_mutant_caught "$tmp/cert/table-clip-strict" strict 's/float M2 = .*;$/float M2 = M;/' \
     'float M2 = M;' "a certified OpenCL table kernel whose second look bounds by the differences' magnitudes"
 # WGSL's likewise (u = 2^-23, no second look; none unsafe at 2^-10 of its bound): a kernel whose

@@ -344,27 +344,41 @@ expect_fail "--certified does not apply to verify" 2 "does not apply to verify" 
     ok "--certified is in the banner's command line, --refine 0 is no refinement" ||
     notok "--certified in the banner" "$(grep -m1 Generated "$tmp/c.h")"
 # The table kernels' bounds take each target's unit roundoff: WGSL, which fixes no rounding mode,
-# 2^-23, the others 2^-24; every certified table kernel's terms read differences of points (two
-# more roundings on each of a term's monomials), so the first plane's tau_k (one term) is the same
-# on GLSL, HLSL, OpenCL and CUDA (the same schedule and table) and twice that on WGSL, whose
-# --certified kernel is the table kernel.
+# 2^-23, the others 2^-24. With --coordinates absolute every certified table kernel's terms read
+# differences of points (two more roundings on each of a term's monomials), so the first plane's
+# tau_k (one term) is the same on GLSL, HLSL, OpenCL and CUDA (the same schedule and table) and
+# twice that on WGSL, whose --certified kernel is the table kernel over differences always. In
+# patch-local coordinates (the default) the four agree again, with the frame's roundings instead.
 for t in glsl hlsl opencl cuda wgsl; do
     "$P" --degree 3 --certified $([ $t = wgsl ] || echo --kernel table) --target $t -o "$tmp/k.$t" ||
         notok "--certified --target $t" "ptpgen failed"
+    if [ $t = wgsl ]; then
+        cp "$tmp/k.$t" "$tmp/ka.$t"
+    else
+        "$P" --degree 3 --certified --kernel table --coordinates absolute --target $t -o "$tmp/ka.$t" ||
+            notok "--certified --coordinates absolute --target $t" "ptpgen failed"
+    fi
 done
-r=$(for t in glsl hlsl opencl cuda wgsl; do
-    awk '/_tau_k[:[]/ { f = 1; next } f { gsub(/f,?/, ""); print $1; exit }' "$tmp/k.$t"; done | paste -sd' ')
-awk -v r="$r" 'BEGIN { n = split(r, a, " "); q = a[5] / a[1] / 2
-    exit !(n == 5 && a[1] > 0 && a[2] == a[1] && a[3] == a[1] && a[4] == a[1] && q > 0.9999 && q < 1.0001) }' &&
+first_tau() { # first_tau FILE...: the first tau_k of each
+    for f in "$@"; do
+        awk '/_tau_k[:[]/ { f = 1; next } f { gsub(/f,?/, ""); print $1; exit }' "$f"
+    done | paste -sd' '
+}
+r=$(first_tau "$tmp"/ka.{glsl,hlsl,opencl,cuda,wgsl}) l=$(first_tau "$tmp"/k.{glsl,hlsl,opencl,cuda})
+awk -v r="$r" -v l="$l" 'BEGIN { n = split(r, a, " "); m = split(l, b, " "); q = a[5] / a[1] / 2
+    exit !(n == 5 && a[1] > 0 && a[2] == a[1] && a[3] == a[1] && a[4] == a[1] && q > 0.9999 && q < 1.0001 &&
+           m == 4 && b[1] > 0 && b[2] == b[1] && b[3] == b[1] && b[4] == b[1] && b[1] != a[1]) }' &&
     ok "the certified GPU kernels' bounds agree, WGSL's twice the others' (u = 2^-23 against 2^-24)" ||
-    notok "the certified GPU kernels' bounds agree, WGSL's twice the others'" "first tau_k of each: ${r:-none}"
-# The certified table kernels' terms read b_j, b_k - b_j, b_l - b_j (the generated diff, two a
-# term; WGSL's through the template's fenced sub_rn); the plain ones' read the points.
+    notok "the certified GPU kernels' bounds agree, WGSL's twice the others'" "first tau_k: absolute ${r:-none}, local ${l:-none}"
+# The certified table kernels' terms read b_j, b_k - b_j, b_l - b_j with --coordinates absolute
+# (the generated diff, two a term; WGSL's through the template's fenced sub_rn) and the sheared
+# points in patch-local coordinates, like the plain ones.
 for t in glsl hlsl opencl cuda wgsl; do
     "$P" --degree 3 --kernel table --target $t -o "$tmp/p.$t" &&
-        n=$(grep -c '_diff(pts' "$tmp/k.$t") && [ "$(grep -c '_diff(' "$tmp/p.$t")" = 0 ] &&
-        [ "$n" -gt 0 ] && [ "$n" = $((2 * $(grep -c '_certified_cross4z(pts' "$tmp/k.$t"))) ] &&
-        ok "the certified $t table kernel's terms read differences of points, the plain one's the points" ||
+        n=$(grep -c '_diff(pts' "$tmp/ka.$t") && [ "$(grep -c '_diff(' "$tmp/p.$t")" = 0 ] &&
+        [ "$n" -gt 0 ] && [ "$n" = $((2 * $(grep -c '_certified_cross4z(pts' "$tmp/ka.$t"))) ] &&
+        { [ $t = wgsl ] || [ "$(grep -c '_diff(' "$tmp/k.$t")" = 0 ]; } &&
+        ok "the certified $t table kernel's terms read differences of points as given, the plain one's and the patch-local one's the points" ||
         notok "the certified $t table kernel's terms read differences of points" "diff in terms: ${n:-none}"
 done
 grep -q 'sub_rn(b, a)' "$tmp/k.wgsl" && ok "the certified WGSL kernel's differences go through sub_rn" ||
@@ -435,6 +449,7 @@ expect_fail "--certified GPU B-spline input is refused" 2 "with --certified is t
 expect_fail "--stage function with --kernel table is refused" 2 "not --kernel table$" --degree 3 --target hlsl --stage function --kernel table
 expect_fail "--stage function with --planes is refused" 2 "--planes applies to kernels" --degree 3 --target wgsl --stage function --planes
 expect_fail "--stage function --certified is refused for WGSL" 2 "is the table kernel" --degree 3 --target wgsl --stage function --certified
+expect_fail "--coordinates with WGSL's certified table kernel is refused" 2 "wgsl's certified table kernel reads the coordinates as given" --degree 3 --target wgsl --certified --coordinates local
 expect_fail "--kernel lanes is OpenCL's" 2 "--kernel lanes is OpenCL's" --degree 3 --target glsl --kernel lanes
 expect_fail "--kernel lanes is not certified" 2 "not with --certified$" --degree 3 --target opencl --kernel lanes --certified
 expect_fail "--kernel lanes writes no values" 2 "not with --planes$" --degree 3 --target opencl --kernel lanes --planes

@@ -61,8 +61,8 @@ static void usage_options(sbuf *o)
         "                   degenerate: back iff none > 0, front iff none < 0\n"
         "  --coordinates C  C and GPU code: local (default): each patch moved to its first\n"
         "                   control point's origin before the planes (exact up to one\n"
-        "                   rounding a coordinate); absolute: as given (the certified table\n"
-        "                   kernel reads them as given always)\n"
+        "                   rounding a coordinate); absolute: as given (WGSL's certified\n"
+        "                   table kernel reads them as given always)\n"
         "  --basis B        C and the straight-line GPU code: bezier (default): Bezier control\n"
         "                   points; bspline: the 16 control vertices of a uniform bicubic\n"
         "                   B-spline patch (--degree 3), converted in registers\n"
@@ -502,10 +502,11 @@ static int check_kernel(cli_options *o, unsigned seen, ptp_error *err)
         return ptp_fail(err, PTP_EUSAGE, "--kernel indexed is not certified (--kernel slp or table)");
     if (o->lanes && (st = check_lanes(o, seen, err)))
         return st;
-    if (o->table && o->certified && seen >> OPT_COORDINATES & 1)
-        return ptp_fail(err, PTP_EUSAGE, "--coordinates applies to plain code and the straight-line "
-                                         "program; the certified table kernel reads the coordinates "
-                                         "as given (its terms read differences of points)");
+    if (o->table && o->certified && seen >> OPT_COORDINATES & 1 && !o->target->gpu->slp_cert_u)
+        return ptp_fail(err, PTP_EUSAGE, "--coordinates: %s's certified table kernel reads the "
+                                         "coordinates as given (its terms read differences of "
+                                         "points; the language may reassociate a shear)",
+                        o->target->name);
     if (o->indexed && o->functions)
         return ptp_fail(err, PTP_EUSAGE, "--kernel indexed is a compute kernel; --stage function "
                                          "writes the functions alone (the caller gathers the points)");

@@ -44,9 +44,28 @@ int kgpu_exact_zeros(const out_info *info)
     return info->certified && info->rule == OUT_DEGENERATE && !info->bspline;
 }
 
+int kgpu_table_local(const out_info *info, const kern_target *g)
+{
+    return info->table && !info->absolute && (!info->certified || g->slp_cert_u > 0);
+}
+
+int kgpu_given(const out_info *info, const kern_target *g)
+{
+    return info->certified && kgpu_table_local(info, g) &&
+           (kgpu_exact_zeros(info) || kgpu_second_look(info, g));
+}
+
 int kgpu_differences(const out_info *info, const kern_target *g)
 {
-    return info->certified && info->table && g->diff;
+    return info->certified && info->table && g->diff && !kgpu_table_local(info, g);
+}
+
+void kgpu_shear(char *out, size_t size, const out_info *info, const kern_target *g)
+{
+    if (info->certified && g->slp_cert_shift)
+        snprintf(out, size, "%sshift(%%s, %%s, %%s)", info->prefix);
+    else
+        snprintf(out, size, "%s", g->slp_fma);
 }
 
 char *kgpu_product(char *out, size_t size, const kern_target *g, const char *brk, int n,

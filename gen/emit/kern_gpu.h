@@ -38,8 +38,24 @@ int kgpu_second_look_rounds(const out_info *info, const kern_target *g);
  * the C header. */
 int kgpu_exact_zeros(const out_info *info);
 
-/* Whether the table kernel's terms read differences of points (the target's diff, --certified). */
+/* Whether the table kernel moves each patch to patch-local coordinates as it loads it: unless
+ * --coordinates absolute, and certified only where the target certifies the shear (slp_cert_u;
+ * elsewhere, WGSL, the certified terms read differences of the points as given). */
+int kgpu_table_local(const out_info *info, const kern_target *g);
+
+/* Whether the certified table kernel in patch-local coordinates keeps the points as given too,
+ * in the shared array given, for the tests of collapsed edges and the second look (a shear may
+ * round distinct points equal, and its roundings would undo the look's precision). */
+int kgpu_given(const out_info *info, const kern_target *g);
+
+/* Whether the table kernel's terms read differences of points (the target's diff, --certified,
+ * in the points as given). */
 int kgpu_differences(const out_info *info, const kern_target *g);
+
+/* Writes to out (size bytes) the shear x + o w as a printf format of o, w, x: with --certified
+ * where the target's fma may round its product apart, its exact-product shift (slp_cert_shift),
+ * else slp_fma. */
+void kgpu_shear(char *out, size_t size, const out_info *info, const kern_target *g);
 
 /* Writes to out (size bytes, truncating as snprintf) the product of the n factors f, left to
  * right, as the kernel writes every float product but cross4's (kern_target.product): the
@@ -74,7 +90,8 @@ int kgpu_tables(sbuf *o, const tp_table *t, const out_info *info, const kern_tar
 
 /* kern_gpu_funcs.c: the helper functions. */
 
-/* Appends the kernel's helper functions: the term (cross4z or eye_cross4), with differences diff,
+/* Appends the kernel's helper functions: the term (cross4z or eye_cross4), certified in
+ * patch-local coordinates the target's shift (kgpu_shear), with differences diff,
  * with exact zeros finite and same, with the second look kgpu_df_functions, then flags and
  * class_of. */
 void kgpu_functions(sbuf *o, const out_info *info, const kern_target *g);
@@ -93,8 +110,8 @@ void kgpu_df_functions(sbuf *o, const out_info *info, const kern_target *g);
 
 /* kern_gpu_body.c: the kernel body. */
 
-/* The workgroup-shared arrays: the patches' points, the planes' accumulators (with the second
- * look from the rounds, their low parts acc2 too), the flags. */
+/* The workgroup-shared arrays: the patches' points (with kgpu_given, as given too), the planes'
+ * accumulators (with the second look from the rounds, their low parts acc2 too), the flags. */
 void kgpu_shared(sbuf *o, const out_info *info, const kern_target *g, const char *up,
                  const char *indent);
 
@@ -117,15 +134,23 @@ int kgpu_zero_table(sbuf *o, const tp_table *t, const out_info *info, const kern
                     ptp_error *err);
 
 /* Appends at indent the head of the test that the patch is too large for the bound (or NaN),
- * if (!(max(E, 1) * R3 < <up>qmax)), with the target's product. */
+ * if (!(max(E, 1) * R3 < <up>qmax)), with the target's product, E and R3 of the suffix s. */
 void kgpu_too_large(sbuf *o, const kern_target *g, const char *indent, const char *up,
-                    const char *qmax);
+                    const char *qmax, const char *s);
+
+/* The suffix of the table kernel's second look's magnitudes (E, R3, F): "_o" with kgpu_given,
+ * where it reads the points as given from given[], else "" (the first look's, of pts[]). */
+const char *kgpu_look_names(const out_info *info, const kern_target *g);
+/* With kgpu_given, at the second look's start (indent 8): the magnitudes of the points as given
+ * (suffix _o), M2 and F_o. */
+void kgpu_look_magnitudes(sbuf *o, const out_info *info, const kern_target *g, const char *up);
 
 /* --certified: the patch's largest |coordinates| Rx, Ry, (Rz,) Rw, R the largest of them, E the
  * eye's largest |component|, M the largest |monomial| (with differences, of the terms as they
- * read them), with the second look M2 that of the points, and F the underflow term's factor;
- * patches too large for the bound get flags 3 (never certified). With exact zeros, the collapsed
- * edges of d too. */
+ * read them), with the second look M2 that of the points (kgpu_look_names: in patch-local
+ * coordinates from the points as given, with their own magnitudes and F_o), and F the
+ * underflow term's factor; patches too large for the bound get flags 3 (never certified). With
+ * exact zeros, the collapsed edges of d too, of the points as given. */
 void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
                      const char *up);
 /* The straight-line second look's scale, from the points cp[0..K-1] of d: the magnitudes as
@@ -164,7 +189,7 @@ void kgpu_df_weight_lo(sbuf *o, const tp_table *t, const out_info *info, const k
 void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const char *up);
 /* Writes to out (size bytes, 512 suffice) and returns the certified flags of the double-float
  * value d of the plane numbered by the expression plane: flags(d.x, tau2_k M2 + tau2_f F +
- * 2 |d.y|). */
+ * 2 |d.y|), F of kgpu_look_names' suffix. */
 char *kgpu_df_flags(char *out, size_t size, const out_info *info, const kern_target *g,
                     const char *plane);
 /* Writes at indent in the loop that adds to the double-float s the terms j from start to end of

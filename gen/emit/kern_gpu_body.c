@@ -11,6 +11,8 @@ void kgpu_shared(sbuf *o, const out_info *info, const kern_target *g, const char
     char count[160];
     snprintf(count, sizeof count, "%sQ * %sK", up, up);
     g->syntax->shared(o, g, indent, g->vec4, "pts", count);
+    if (kgpu_given(info, g))
+        g->syntax->shared(o, g, indent, g->vec4, "given", count);
     snprintf(count, sizeof count, "%sQ * %sL", up, up);
     g->syntax->shared(o, g, indent, g->real, "acc", count);
     if (kgpu_second_look_rounds(info, g))
@@ -19,39 +21,32 @@ void kgpu_shared(sbuf *o, const out_info *info, const kern_target *g, const char
     g->syntax->shared(o, g, indent, g->uint, "flags", count);
 }
 
-/* Whether the table kernel moves each patch to patch-local coordinates: plain, without
- * --coordinates absolute (the certified one reads the points as given: its bounds, second look
- * and collapsed edges are derived for them; its terms read differences of points). */
-static int table_local(const out_info *info)
-{
-    return !info->absolute && !info->certified;
-}
-
 /* The coordinates the shear moves: x and y, and in world space z. */
 static int sheared_coords(const out_info *info)
 {
     return info->space == OUT_WORLD ? 3 : 2;
 }
 
-/* Lines at indent moving the vec4 v by the shift: v.c = fma(oc, w.w, w.c) for the sheared
+/* Lines at indent moving the vec4 v by the shift: v.c = oc w.w + w.c (kgpu_shear) for the sheared
  * coordinates c, w being v's value before (its own name, or the one v was copied from). */
 static void put_sheared(sbuf *o, const out_info *info, const kern_target *g, const char *indent,
                         const char *v, const char *w)
 {
     static const char *const c[3] = {"x", "y", "z"};
-    char oc[8], wc[72], ww[72], e[224];
+    char oc[8], wc[72], ww[72], e[224], shear[96];
     int k;
+    kgpu_shear(shear, sizeof shear, info, g);
     snprintf(ww, sizeof ww, "%s.w", w);
     for (k = 0; k < sheared_coords(info); k++) {
         snprintf(oc, sizeof oc, "o%s", c[k]);
         snprintf(wc, sizeof wc, "%s.%s", w, c[k]);
-        snprintf(e, sizeof e, g->slp_fma, oc, ww, wc);
+        snprintf(e, sizeof e, shear, oc, ww, wc);
         sbuf_printf(o, "%s%s.%s = %s;\n", indent, v, c[k], e);
     }
 }
 
-/* Patch-local coordinates (table_local): into the mutable locals ox, oy (world: oz) the patch's
- * shift o = -b0.xyz / b0.w (0 where b0.w = 0, or for a thread past the last patch), and in world
+/* Patch-local coordinates (kgpu_table_local): into the mutable locals ox, oy (world: oz) the
+ * patch's shift o = -b0.xyz / b0.w (0 where b0.w = 0, or for a thread past the last patch), and in world
  * space the eye moved the same way into l. */
 static void put_shift(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
@@ -79,13 +74,13 @@ static void put_shift(sbuf *o, const out_info *info, const kern_target *g, const
 
 /* The body's start: the thread's place (lid, q, t), its patch (pid, live), the loop variables
  * and the flags f; then the patch's control points into shared memory, in patch-local
- * coordinates where table_local (put_shift). */
+ * coordinates where kgpu_table_local (put_shift). */
 static void put_load(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     char q[96], t[96], pid[256], e[160];
     kern_var v[6] = {{"lid", g->local_id, 0}, {"q", q, 0}, {"t", t, 0},
                      {"i", NULL, 1}, {"pj", NULL, 1}, {"kl", NULL, 1}};
-    int local = table_local(info);
+    int local = kgpu_table_local(info, g);
     snprintf(q, sizeof q, "lid / %sP", up);
     snprintf(t, sizeof t, "lid %% %sP", up);
     snprintf(pid, sizeof pid, "(%s * %s + %s) * %sQ + q", g->group_y, g->groups_x, g->group_x, up);
@@ -95,9 +90,10 @@ static void put_load(sbuf *o, const out_info *info, const kern_target *g, const 
     kgpu_local(o, g, "bool", "live", "pid < patch_count", 0);
     if (local)
         put_shift(o, info, g, up);
-    sbuf_printf(o, "\n    /* The patch's control points into shared memory, P threads cooperating%s. */\n"
+    sbuf_printf(o, "\n    /* The patch's control points into shared memory, P threads cooperating%s%s. */\n"
                    "    for (i = t; i < %sK; i += %sP)",
-                local ? ", in\n     * patch-local coordinates (x + o w)" : "", up, up);
+                local ? ", in\n     * patch-local coordinates (x + o w)" : "",
+                kgpu_given(info, g) ? " and as given" : "", up, up);
     kgpu_then(o, g);
     if (!local) {
         sbuf_puts(o, "        if (live)");
@@ -108,6 +104,8 @@ static void put_load(sbuf *o, const out_info *info, const kern_target *g, const 
         sbuf_puts(o, "        if (live) {\n");
         snprintf(e, sizeof e, "cp[pid * %sK + i]", up);
         g->syntax->locals(o, g, "            ", g->vec4, &(kern_var){"p", e, 1}, 1, 0);
+        if (kgpu_given(info, g))
+            sbuf_printf(o, "            given[q * %sK + i] = p;\n", up);
         put_sheared(o, info, g, "            ", "p", "p");
         sbuf_printf(o, "            pts[q * %sK + i] = p;\n        }\n", up);
     }
@@ -120,7 +118,7 @@ static void put_load(sbuf *o, const out_info *info, const kern_target *g, const 
 static void put_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    const char *eye = info->space == OUT_CLIP ? "" : table_local(info) ? ", l" : ", eye";
+    const char *eye = info->space == OUT_CLIP ? "" : kgpu_table_local(info, g) ? ", l" : ", eye";
     char a[128], b[320], c[320], w[96], term[1024], e[1152]; /* up has at most 63 bytes */
     int r, n = (int)(strlen(px) + strlen(fn));
     sbuf_printf(o,

@@ -60,7 +60,8 @@ int kgpu_cert_tables(sbuf *o, const tp_table *t, const out_info *info, const ker
                      const char *up, ptp_error *err)
 {
     cert_bounds cb;
-    int st = cert_gpu(&cb, t, info->space == OUT_WORLD, g->unit_roundoff, kgpu_differences(info, g), err);
+    int st = cert_gpu(&cb, t, info->space == OUT_WORLD, g->unit_roundoff, kgpu_differences(info, g),
+                      kgpu_table_local(info, g), err);
     if (st)
         return st;
     put_bounds(o, info, g, up, &cb, "",
@@ -137,51 +138,62 @@ static char *put_diff_monomial(char *e, size_t size, const kern_target *g, const
     return kgpu_group(e, size, g, s);
 }
 
+/* The names of one set of magnitudes: the eye they read (eye, or l in patch-local coordinates),
+ * the suffix s of Rc, R, E, R3 and F ("", or "_o" for the second look's points as given) and
+ * the indent in of their declarations (their loop's body one deeper, in2). */
+typedef struct {
+    const char *eye, *s, *in, *in2;
+} mag_names;
+
 /* Into e (size bytes) world space's largest |monomial| with the eye's components h[0], h[1]
- * (the other two r): (|eye.h0| Rh1 + |eye.h1| Rh0) (Rr0 Rr1). Returns e. */
+ * (the other two r): (|eye.h0| Rh1 + |eye.h1| Rh0) (Rr0 Rr1), names from n. Returns e. */
 static char *put_eye_monomial(char *e, size_t size, const kern_target *g, const char *h,
-                              const char *r)
+                              const char *r, const mag_names *n)
 {
-    char a[32], x[2][4], m[2][64], s[160], t[2][160];
+    char a[32], x[2][8], m[2][64], s[160], t[2][160];
     int i;
     for (i = 0; i < 2; i++) {
-        snprintf(a, sizeof a, "%s(eye.%c)", g->fabs, h[i]);
-        snprintf(x[0], sizeof x[0], "R%c", h[!i]);
+        snprintf(a, sizeof a, "%s(%s.%c)", g->fabs, n->eye, h[i]);
+        snprintf(x[0], sizeof x[0], "R%c%s", h[!i], n->s);
         kgpu_mul(m[i], sizeof m[i], g, a, x[0]);
     }
     snprintf(s, sizeof s, "%s + %s", m[0], m[1]);
-    snprintf(x[0], sizeof x[0], "R%c", r[0]);
-    snprintf(x[1], sizeof x[1], "R%c", r[1]);
+    snprintf(x[0], sizeof x[0], "R%c%s", r[0], n->s);
+    snprintf(x[1], sizeof x[1], "R%c%s", r[1], n->s);
     kgpu_group(t[0], sizeof t[0], g, s);
     kgpu_group(t[1], sizeof t[1], g, kgpu_mul(a, sizeof a, g, x[0], x[1]));
     return kgpu_mul(e, size, g, t[0], t[1]);
 }
 
-/* Into e (1024 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw: the
- * largest |monomial| (clip space); in world space the sum over the eye's components of the
- * largest |monomial| with that component (docs/errors.md). With diff (differences), a
- * monomial has one coordinate and two differences instead (put_diff_monomial). */
-static void put_monomial_max(char *e, const out_info *info, const kern_target *g, int diff)
+/* Into e (1024 bytes), M from the eye and the patch's largest |coordinates| Rx, Ry, Rz, Rw
+ * (names from n): the largest |monomial| (clip space); in world space the sum over the eye's
+ * components of the largest |monomial| with that component (docs/errors.md). With diff
+ * (differences), a monomial has one coordinate and two differences instead (put_diff_monomial). */
+static void put_monomial_max(char *e, const out_info *info, const kern_target *g, int diff,
+                             const mag_names *n)
 {
     static const char *const other[4] = {"yzw", "xzw", "xyw", "xyz"};
-    char a[32], m[256], x[160];
-    size_t n = 0;
+    char a[32], m[256], x[160], r[3][8], big[8];
+    size_t k = 0;
     int c;
     if (info->space == OUT_CLIP) {
+        for (c = 0; c < 3; c++)
+            snprintf(r[c], sizeof r[c], "R%c%s", "xyw"[c], n->s);
         if (diff)
             put_diff_monomial(m, sizeof m, g, "xyw");
         else
-            kgpu_group(m, sizeof m, g, kgpu_product(x, sizeof x, g, " ", 3, (const char *const[]){"Rx", "Ry", "Rw"}));
-        kgpu_mul(e, 1024, g, "E", m);
+            kgpu_group(m, sizeof m, g, kgpu_product(x, sizeof x, g, " ", 3, (const char *const[]){r[0], r[1], r[2]}));
+        snprintf(big, sizeof big, "E%s", n->s);
+        kgpu_mul(e, 1024, g, big, m);
     } else if (diff) {
-        for (c = 0; c < 4 && n < 1024; c++) {
-            snprintf(a, sizeof a, "%s(eye.%c)", g->fabs, "xyzw"[c]);
+        for (c = 0; c < 4 && k < 1024; c++) {
+            snprintf(a, sizeof a, "%s(%s.%c)", g->fabs, n->eye, "xyzw"[c]);
             put_diff_monomial(x, sizeof x, g, other[c]);
-            n += (size_t)snprintf(e + n, 1024 - n, "%s%s", c ? " +\n        " : "", kgpu_mul(m, sizeof m, g, a, x));
+            k += (size_t)snprintf(e + k, 1024 - k, "%s%s", c ? " +\n        " : "", kgpu_mul(m, sizeof m, g, a, x));
         }
     } else {
-        put_eye_monomial(m, sizeof m, g, "xy", "zw");
-        snprintf(e, 1024, "%s +\n        %s", m, put_eye_monomial(x, sizeof x, g, "zw", "xy"));
+        put_eye_monomial(m, sizeof m, g, "xy", "zw", n);
+        snprintf(e, 1024, "%s +\n        %s", m, put_eye_monomial(x, sizeof x, g, "zw", "xy", n));
     }
 }
 
@@ -213,99 +225,147 @@ static void put_extents(sbuf *o, const out_info *info, const kern_target *g, con
 }
 
 void kgpu_too_large(sbuf *o, const kern_target *g, const char *indent, const char *up,
-                    const char *qmax)
+                    const char *qmax, const char *s)
 {
-    char e[32], m[64];
-    snprintf(e, sizeof e, "%s(E, 1.0f)", g->fmax);
-    sbuf_printf(o, "%sif (!(%s < %s%s))", indent, kgpu_mul(m, sizeof m, g, e, "R3"), up, qmax);
+    char e[32], m[64], r3[8];
+    snprintf(e, sizeof e, "%s(E%s, 1.0f)", g->fmax, s);
+    snprintf(r3, sizeof r3, "R3%s", s);
+    sbuf_printf(o, "%sif (!(%s < %s%s))", indent, kgpu_mul(m, sizeof m, g, e, r3), up, qmax);
 }
 
 /* The patch's largest |coordinates| Rc over the coordinates c (n of them) of the points point
- * (an expression of i) for i below count, with differences its extents (put_extents' steps 0 and
- * 1), with exact zeros fin: every coordinate is finite. */
+ * (an expression of i) for i below count (names from m), with differences its extents
+ * (put_extents' steps 0 and 1), with exact zeros (of the terms' points, suffix "") fin: every
+ * coordinate is finite. */
 static void put_patch_max(sbuf *o, const out_info *info, const kern_target *g, const char *up,
-                          const char *c, int n, const char *point, const char *count)
+                          const char *c, int n, const char *point, const char *count,
+                          const mag_names *m)
 {
-    char rc[4][4];
+    int fin = kgpu_exact_zeros(info) && !*m->s, k;
+    char rc[4][8];
     kern_var r[4];
-    int k;
     for (k = 0; k < n; k++) {
-        snprintf(rc[k], sizeof rc[k], "R%c", c[k]);
+        snprintf(rc[k], sizeof rc[k], "R%c%s", c[k], m->s);
         r[k] = (kern_var){rc[k], "0.0f", 1};
     }
-    g->syntax->locals(o, g, "    ", g->real, r, n, 0);
-    put_extents(o, info, g, up, c, n, 0);
-    if (kgpu_exact_zeros(info))
+    g->syntax->locals(o, g, m->in, g->real, r, n, 0);
+    if (!*m->s)
+        put_extents(o, info, g, up, c, n, 0);
+    if (fin)
         kgpu_local(o, g, "bool", "fin", "true", 1);
-    sbuf_printf(o, "    for (i = 0u; i < %s; i++) {\n", count);
-    g->syntax->locals(o, g, "        ", g->vec4, &(kern_var){"a", point, 0}, 1, 0);
+    sbuf_printf(o, "%sfor (i = 0u; i < %s; i++) {\n", m->in, count);
+    g->syntax->locals(o, g, m->in2, g->vec4, &(kern_var){"a", point, 0}, 1, 0);
     for (k = 0; k < n; k++)
-        sbuf_printf(o, "        R%c = %s(R%c, %s(a.%c));\n", c[k], g->fmax, c[k], g->fabs, c[k]);
-    put_extents(o, info, g, up, c, n, 1);
-    if (kgpu_exact_zeros(info))
+        sbuf_printf(o, "%s%s = %s(%s, %s(a.%c));\n", m->in2, rc[k], g->fmax, rc[k], g->fabs, c[k]);
+    if (!*m->s)
+        put_extents(o, info, g, up, c, n, 1);
+    if (fin)
         sbuf_printf(o, "        fin = fin && %sfinite(a);\n", info->prefix);
-    sbuf_puts(o, "    }\n");
+    sbuf_printf(o, "%s}\n", m->in);
 }
 
-/* The magnitudes of the points point (an expression of i, i below count): put_patch_max's, R the
- * largest of them, E the eye's largest |component| and R3 = R^3. */
-static void put_magnitudes(sbuf *o, const out_info *info, const kern_target *g, const char *up,
-                           const char *point, const char *count)
+/* Declares at m's indent the float name+suffix = init. */
+static void put_named(sbuf *o, const kern_target *g, const mag_names *m, const char *name,
+                      const char *init)
 {
-    const char *ab = g->fabs, *mx = g->fmax, *f = g->real, *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
-    char e[256];
-    sbuf_puts(o, "    /* Certified: the patch's largest |coordinates| and the eye's bound the errors. */\n");
-    put_patch_max(o, info, g, up, c, (int)strlen(c), point, count);
-    if (info->space == OUT_CLIP) {
-        snprintf(e, sizeof e, "%s(%s(Rx, Ry), Rw)", mx, mx);
-        kgpu_local(o, g, f, "R", e, 0);
-        snprintf(e, sizeof e, "%s(eye.z)", ab);
-    } else {
-        snprintf(e, sizeof e, "%s(%s(Rx, Ry), %s(Rz, Rw))", mx, mx, mx);
-        kgpu_local(o, g, f, "R", e, 0);
-        snprintf(e, sizeof e, "%s(%s(%s(eye.x), %s(eye.y)), %s(%s(eye.z), %s(eye.w)))", mx, mx, ab, ab,
-                 mx, ab, ab);
-    }
-    kgpu_local(o, g, f, "E", e, 0);
-    kgpu_product(e, sizeof e, g, " ", 3, (const char *const[]){"R", "R", "R"});
-    kgpu_local(o, g, f, "R3", e, 0);
+    char n[8];
+    snprintf(n, sizeof n, "%s%s", name, m->s);
+    g->syntax->locals(o, g, m->in, g->real, &(kern_var){n, init, 0}, 1, 0);
 }
 
-/* F, the underflow term's factor (1 + R)^3 (1 + E); then, for a patch too large for the bound
- * <up>qmax (or NaN), the statement then. */
+/* The magnitudes of the points point (an expression of i, i below count), names from m:
+ * put_patch_max's, R the largest of them, E the eye's largest |component| and R3 = R^3. */
+static void put_magnitudes(sbuf *o, const out_info *info, const kern_target *g, const char *up,
+                           const char *point, const char *count, const mag_names *m)
+{
+    const char *ab = g->fabs, *mx = g->fmax, *c = info->space == OUT_CLIP ? "xyw" : "xyzw",
+               *s = m->s, *v = m->eye;
+    char e[320], name[8];
+    if (*s)
+        sbuf_printf(o, "%s/* The largest |coordinates| of the points as given and the eye's bound the\n"
+                       "%s * second look's errors. */\n", m->in, m->in);
+    else
+        sbuf_printf(o, "%s/* Certified: the patch's largest |coordinates| and the eye's bound the "
+                       "errors. */\n", m->in);
+    put_patch_max(o, info, g, up, c, (int)strlen(c), point, count, m);
+    if (info->space == OUT_CLIP) {
+        snprintf(e, sizeof e, "%s(%s(Rx%s, Ry%s), Rw%s)", mx, mx, s, s, s);
+        put_named(o, g, m, "R", e);
+        snprintf(e, sizeof e, "%s(%s.z)", ab, v);
+    } else {
+        snprintf(e, sizeof e, "%s(%s(Rx%s, Ry%s), %s(Rz%s, Rw%s))", mx, mx, s, s, mx, s, s);
+        put_named(o, g, m, "R", e);
+        snprintf(e, sizeof e, "%s(%s(%s(%s.x), %s(%s.y)), %s(%s(%s.z), %s(%s.w)))", mx, mx, ab, v, ab,
+                 v, mx, ab, v, ab, v);
+    }
+    put_named(o, g, m, "E", e);
+    snprintf(name, sizeof name, "R%s", s);
+    kgpu_product(e, sizeof e, g, " ", 3, (const char *const[]){name, name, name});
+    put_named(o, g, m, "R3", e);
+}
+
+/* F (names from m), the underflow term's factor (1 + R)^3 (1 + E) of m's magnitudes. */
+static void put_underflow(sbuf *o, const kern_target *g, const mag_names *m)
+{
+    char e[256], r1[16], e1[16];
+    snprintf(e, sizeof e, "1.0f + R%s", m->s);
+    kgpu_group(r1, sizeof r1, g, e);
+    snprintf(e, sizeof e, "1.0f + E%s", m->s);
+    kgpu_group(e1, sizeof e1, g, e);
+    kgpu_product(e, sizeof e, g, " ", 4, (const char *const[]){r1, r1, r1, e1});
+    put_named(o, g, m, "F", e);
+}
+
+/* F; then, for a patch too large for the bound <up>qmax (or NaN), the statement then. */
 static void put_guard(sbuf *o, const kern_target *g, const char *up, const char *qmax,
                       const char *then)
 {
-    char e[256], r1[16], e1[16];
-    kgpu_group(r1, sizeof r1, g, "1.0f + R");
-    kgpu_group(e1, sizeof e1, g, "1.0f + E");
-    kgpu_product(e, sizeof e, g, " ", 4, (const char *const[]){r1, r1, r1, e1});
-    kgpu_local(o, g, g->real, "F", e, 0);
-    kgpu_too_large(o, g, "    ", up, qmax);
+    put_underflow(o, g, &(mag_names){"eye", "", "    ", "        "});
+    kgpu_too_large(o, g, "    ", up, qmax, "");
     kgpu_then(o, g);
     sbuf_printf(o, "        %s /* too large for the bound, or NaN: never certified */\n", then);
     kgpu_end(o, g, "    ");
+}
+
+const char *kgpu_look_names(const out_info *info, const kern_target *g)
+{
+    return kgpu_given(info, g) ? "_o" : "";
+}
+
+void kgpu_look_magnitudes(sbuf *o, const out_info *info, const kern_target *g, const char *up)
+{
+    mag_names m = {"eye", "_o", "        ", "            "};
+    char e[1024], pt[96], count[80];
+    snprintf(pt, sizeof pt, "given[q * %sK + i]", up);
+    snprintf(count, sizeof count, "%sK", up);
+    put_magnitudes(o, info, g, up, pt, count, &m);
+    put_monomial_max(e, info, g, 0, &m);
+    g->syntax->locals(o, g, m.in, g->real, &(kern_var){"M2", e, 0}, 1, 0);
+    put_underflow(o, g, &m);
 }
 
 void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
                      const char *up)
 {
     const char *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
+    mag_names m = {kgpu_table_local(info, g) && info->space == OUT_WORLD ? "l" : "eye", "", "    ",
+                   "        "};
     char e[1024], pt[96], count[80];
     snprintf(pt, sizeof pt, "pts[q * %sK + i]", up);
     snprintf(count, sizeof count, "%sK", up);
-    put_magnitudes(o, info, g, up, pt, count);
+    put_magnitudes(o, info, g, up, pt, count, &m);
     put_extents(o, info, g, up, c, (int)strlen(c), 2);
-    put_monomial_max(e, info, g, kgpu_differences(info, g));
+    put_monomial_max(e, info, g, kgpu_differences(info, g), &m);
     kgpu_local(o, g, g->real, "M", e, 0);
-    if (kgpu_second_look(info, g)) { /* M2: the second look reads the points */
-        put_monomial_max(e, info, g, 0);
+    if (kgpu_second_look(info, g) && !kgpu_given(info, g)) { /* M2: the look reads the points */
+        put_monomial_max(e, info, g, 0, &m);
         kgpu_local(o, g, g->real, "M2", e, 0);
     }
     put_guard(o, g, up, "QMAX", "f = 3u;");
-    if (kgpu_exact_zeros(info)) {
+    if (kgpu_exact_zeros(info)) { /* as given: a shear may round distinct points equal */
         snprintf(e, sizeof e, "q * %sK", up);
-        put_collapsed(o, d, info, g, "pts[base + %du]", e);
+        put_collapsed(o, d, info, g,
+                      kgpu_given(info, g) ? "given[base + %du]" : "pts[base + %du]", e);
     }
     if (kgpu_second_look(info, g)) { /* the plain float signs' flags; the planes to look at again */
         kern_var v[3] = {{"pf", "0u", 1}, {"redo", "0u", 1}, {"fd", "0u", 1}};
@@ -316,10 +376,11 @@ void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const ke
 void kgpu_cert_look_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
                           const char *up)
 {
+    mag_names m = {"eye", "", "    ", "        "};
     char e[1024], count[16];
     snprintf(count, sizeof count, "%du", d->npoints);
-    put_magnitudes(o, info, g, up, "cp[i]", count);
-    put_monomial_max(e, info, g, 0);
+    put_magnitudes(o, info, g, up, "cp[i]", count, &m);
+    put_monomial_max(e, info, g, 0, &m);
     kgpu_local(o, g, g->real, "M2", e, 0);
     put_guard(o, g, up, "QMAX2", "return 2u;");
     if (kgpu_exact_zeros(info))

@@ -158,6 +158,8 @@ void kgpu_look_functions(sbuf *o, const out_info *info, const kern_target *g)
 void kgpu_functions(sbuf *o, const out_info *info, const kern_target *g)
 {
     put_cross4(o, info, g);
+    if (kgpu_table_local(info, g) && info->certified && g->slp_cert_shift)
+        sbuf_printf(o, g->slp_cert_shift, info->prefix);
     if (kgpu_differences(info, g))
         put_diff(o, info, g);
     if (kgpu_exact_zeros(info))

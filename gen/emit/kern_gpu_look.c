@@ -131,13 +131,25 @@ static void put_again(sbuf *o, const kern_target *g, const char *up)
     sbuf_printf(o, "    %s\n", g->barrier);
 }
 
+/* Writes to out (size bytes) the point the second look reads at index idx (an expression): as
+ * given (kgpu_given), else from pts. Returns out. */
+static char *look_point(char *out, size_t size, const out_info *info, const kern_target *g,
+                        const char *up, const char *idx)
+{
+    snprintf(out, size, "%s[q * %sK + %s]", kgpu_given(info, g) ? "given" : "pts", up, idx);
+    return out;
+}
+
 /* The second look from the rounds: put_accumulate's rounds in double-float into acc and acc2;
  * with split_rounds each round under a test of its weight (padding slots' is 0). */
 static void put_df_accumulate(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix, *fn = info->space == OUT_CLIP ? "cross4z" : "eye_cross4";
-    char hi[96], lo[96], w[96], wl[96], x[256], y[256];
+    char hi[96], lo[96], w[96], wl[96], x[256], y[256], pt[3][128];
     int r;
+    look_point(pt[0], sizeof pt[0], info, g, up, "(pj >> 16)");
+    look_point(pt[1], sizeof pt[1], info, g, up, "(kl & 0xffffu)");
+    look_point(pt[2], sizeof pt[2], info, g, up, "(kl >> 16)");
     g->syntax->locals(o, g, "        ", g->uint, &(kern_var){"at", NULL, 1}, 1, 0);
     sbuf_printf(o, "        for (i = %sown_start[t]; i < %sown_start[t + 1u]; i++) {\n"
                    "            acc[q * %sL + %sown_plane[i]] = 0.0f;\n"
@@ -154,10 +166,10 @@ static void put_df_accumulate(sbuf *o, const out_info *info, const kern_target *
         if (g->split_rounds)
             sbuf_printf(o, "        if (%s != 0.0f) {\n", hi);
         sbuf_printf(o, "%spj = %s;\n%skl = %s;\n%sat = q * %sL + (pj & 0xffffu);\n"
-                       "%ss = %sdf_add(%s, %sdf_mul(%s, %sdf_%s(pts[q * %sK + (pj >> 16)],\n"
-                       "%s    pts[q * %sK + (kl & 0xffffu)], pts[q * %sK + (kl >> 16)]%s)));\n"
+                       "%ss = %sdf_add(%s, %sdf_mul(%s, %sdf_%s(%s,\n"
+                       "%s    %s, %s%s)));\n"
                        "%sacc[at] = s.x;\n%sacc2[at] = s.y;\n",
-                    in, w, in, wl, in, up, in, px, x, px, y, px, fn, up, in, up, up,
+                    in, w, in, wl, in, up, in, px, x, px, y, px, fn, pt[0], in, pt[1], pt[2],
                     info->space == OUT_CLIP ? "" : ", eye", in, in);
         if (g->split_rounds)
             sbuf_puts(o, "        }\n");
@@ -184,15 +196,18 @@ void kgpu_df_term_sum(sbuf *o, const out_info *info, const kern_target *g, const
 static void put_df_sum(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
     const char *px = info->prefix;
-    char start[96], end[96], init[256], zero[96], pt[3][256];
+    char start[96], end[96], init[256], zero[96], pt[3][320], idx[3][96];
     const char *pp[3] = {pt[0], pt[1], pt[2]};
+    int k;
     snprintf(start, sizeof start, "%sdstart[i]", px);
     snprintf(end, sizeof end, "%sdstart[i + 1u]", px);
     g->syntax->select(init, sizeof init, "mine != 0u", start, end);
     snprintf(zero, sizeof zero, g->vec2_make, "0.0f", "0.0f");
-    snprintf(pt[0], sizeof pt[0], "pts[q * %sK + %sdj[j]]", up, px);
-    snprintf(pt[1], sizeof pt[1], "pts[q * %sK + (%sdkl[j] & 0xffffu)]", up, px);
-    snprintf(pt[2], sizeof pt[2], "pts[q * %sK + (%sdkl[j] >> 16)]", up, px);
+    snprintf(idx[0], sizeof idx[0], "%sdj[j]", px);
+    snprintf(idx[1], sizeof idx[1], "(%sdkl[j] & 0xffffu)", px);
+    snprintf(idx[2], sizeof idx[2], "(%sdkl[j] >> 16)", px);
+    for (k = 0; k < 3; k++)
+        look_point(pt[k], sizeof pt[k], info, g, up, idx[k]);
     sbuf_printf(o, "            s = %s;\n", zero);
     kgpu_df_term_sum(o, info, g, "            ", init, end, pp);
 }
@@ -200,11 +215,12 @@ static void put_df_sum(sbuf *o, const out_info *info, const kern_target *g, cons
 char *kgpu_df_flags(char *out, size_t size, const out_info *info, const kern_target *g,
                     const char *plane)
 {
-    char a[96], m[3][128];
+    char a[96], f[8], m[3][128];
     snprintf(a, sizeof a, "%stau2_k[%s]", info->prefix, plane);
     kgpu_mul(m[0], sizeof m[0], g, a, "M2");
     snprintf(a, sizeof a, "%stau2_f[%s]", info->prefix, plane);
-    kgpu_mul(m[1], sizeof m[1], g, a, "F");
+    snprintf(f, sizeof f, "F%s", kgpu_look_names(info, g));
+    kgpu_mul(m[1], sizeof m[1], g, a, f);
     snprintf(a, sizeof a, "%s(d.y)", g->fabs);
     kgpu_mul(m[2], sizeof m[2], g, "2.0f", a);
     snprintf(out, size, "%sflags(d.x, %s + %s +\n                %s)", info->prefix, m[0], m[1], m[2]);
@@ -218,13 +234,15 @@ void kgpu_df_look(sbuf *o, const out_info *info, const kern_target *g, const cha
     kern_var j = {"j", NULL, 1}, s = {"s", NULL, 1};
     put_again(o, g, up);
     sbuf_puts(o, "    if (again) {\n");
+    if (kgpu_given(info, g))
+        kgpu_look_magnitudes(o, info, g, up);
     g->syntax->locals(o, g, "        ", g->vec2, &s, 1, 0);
     if (g->df_table)
         g->syntax->locals(o, g, "        ", g->uint, &j, 1, 0);
     else
         put_df_accumulate(o, info, g, up);
     sbuf_puts(o, "        f = fd;\n");
-    kgpu_too_large(o, g, "        ", up, "QMAX2");
+    kgpu_too_large(o, g, "        ", up, "QMAX2", kgpu_look_names(info, g));
     kgpu_then(o, g);
     sbuf_puts(o, "            f = 3u;\n");
     kgpu_end(o, g, "        ");

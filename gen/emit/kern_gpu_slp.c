@@ -134,10 +134,7 @@ static int put_slp_function(sbuf *o, const tp_table *t, const out_info *info,
     else
         snprintf(mul, sizeof mul, "%s", g->mul);
     snprintf(fma, sizeof fma, "%s", g->slp_fma);
-    if (info->certified && g->slp_cert_shift)
-        snprintf(shift, sizeof shift, "%sshift(%%s, %%s, %%s)", info->prefix);
-    else
-        snprintf(shift, sizeof shift, "%s", g->slp_fma);
+    kgpu_shear(shift, sizeof shift, info, g);
     snprintf(name, sizeof name, "%s%s", info->prefix,
              values ? "values" : info->lanes ? "classify_lanes" : "classify_patch");
     if (values)

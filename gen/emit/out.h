@@ -44,8 +44,8 @@ typedef struct {
                             B-spline patch's control vertices (--basis bspline) */
     int vmajor;          /* the same: the points' rows run along v (--order v-major) */
     int absolute;        /* the code reads the coordinates as given (else patch-local: point
-                            0's origin subtracted; the certified table kernel always reads them
-                            as given) */
+                            0's origin subtracted; WGSL's certified table kernel always reads
+                            them as given) */
 } out_info;
 
 /* The ptpgen-planes/1 JSON document of t. */

@@ -114,6 +114,12 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, int bspline, ptp_er
     return PTP_OK;
 }
 
+/* The roundings the patch-local frame adds to every monomial of the straight-line program and
+ * of the table kernel: its shifted factors (clip x and y; world three of x, y, z and the eye's),
+ * two each (one multiply-add, or a product exact in double, a double sum and its rounding to
+ * float). */
+#define CERT_FRAME_ROUNDINGS(world) ((world) ? 6 : 4)
+
 static int cmp_desc(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
@@ -133,13 +139,16 @@ static void gpu_sums(double *d, double *D, double *a, size_t n, double own, doub
         *D += (own + m * (double)(n - (k > 0 ? k : 1))) * a[k] * (1 + 0x1p-50);
 }
 
-int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differences, ptp_error *err)
+int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differences, int local,
+             ptp_error *err)
 {
     /* A term's monomials (of one eye component in world space, where the kernel's M sums the
      * components' bounds) and their own roundings (docs/errors.md): clip space 6, 46 in all,
-     * at most 8; world space 6, 64, at most 11; with differences 2 more on every monomial. */
-    const double m = 6, own = (world ? 64 : 46) + (differences ? 2 * m : 0),
-                 own_max = (world ? 11 : 8) + (differences ? 2 : 0);
+     * at most 8; world space 6, 64, at most 11; with differences 2 more on every monomial, in
+     * patch-local coordinates the frame's (f, whose roundings may underflow too). */
+    const double m = 6, f = local ? CERT_FRAME_ROUNDINGS(world) : 0,
+                 own = (world ? 64 : 46) + (differences ? 2 * m : 0) + f * m,
+                 own_max = (world ? 11 : 8) + (differences ? 2 : 0) + f;
     double *d, *D, *S, *n, *a = malloc((t->nterms + 1) * sizeof *a);
     int st = a ? alloc(b, t->dom.nplanes, 0, &d, &D, &S, &n, err)
                : ptp_fail(err, PTP_ENOMEM, "out of memory computing the certified bounds");
@@ -150,7 +159,7 @@ int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differe
     }
     /* With differences: 8 more products that may underflow, at up to 4 times the scale (a
      * difference is at most 2 R), and their flush to zero */
-    table_sums(d, S, n, t, (world ? 44 : 12) * (differences ? 8 : 1));
+    table_sums(d, S, n, t, (world ? 44 : 12) * (differences ? 8 : 1) + f * (world ? 4 : 1) * m);
     for (i = 0; i < t->nterms; i++) {
         double w = rat_get_d(&t->terms[i].w);
         a[i] = w < 0 ? -w : w;
@@ -274,11 +283,6 @@ int cert_table_df(cert_bounds *b, const tp_table *t, int world, ptp_error *err)
     free(d);
     return PTP_OK;
 }
-
-/* The roundings the patch-local frame adds to every monomial of the straight-line program: its
- * shifted factors (clip x and y; world three of x, y, z and the eye's), two each (one
- * multiply-add, or a product exact in double, a double sum and its rounding to float). */
-#define CERT_FRAME_ROUNDINGS(world) ((world) ? 6 : 4)
 
 /* Adds the input's roundings to every monomial of each plane, h of them (the frame's, local;
  * B-spline input's, three factors' CERT_BSPLINE_ROUNDINGS): h to the depth, h times the plane's

@@ -49,8 +49,11 @@ int cert_table(cert_bounds *b, const tp_table *t, int world, int bspline, ptp_er
  * the largest |monomial| with that component (world space) (docs/errors.md). With
  * differences, the terms read b_j, b_k - b_j, b_l - b_j, the differences computed in float (two
  * more roundings a monomial), and M from the largest coordinates and the extents (README:
- * Differences of points). k64 and k2_64 stay NULL. */
-int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differences, ptp_error *err);
+ * Differences of points); local: the points (world: and the eye) sheared to patch-local
+ * coordinates first, as the straight-line program's frame (CERT_FRAME_ROUNDINGS more a
+ * monomial). k64 and k2_64 stay NULL. */
+int cert_gpu(cert_bounds *b, const tp_table *t, int world, double u, int differences, int local,
+             ptp_error *err);
 /* The bounds of the GPU kernels' second look: the table loop again in double-float arithmetic
  * (hi + lo floats from error-free transformations, + - * only), each double-float operation with
  * relative error at most 2^-44, eta = 2^-126 per float operation, and q_max low enough that the
