@@ -140,9 +140,9 @@ static char *put_diff_monomial(char *e, size_t size, const kern_target *g, const
 
 /* The names of one set of magnitudes: the eye they read (eye, or l in patch-local coordinates),
  * the suffix s of Rc, R, E, R3 and F ("", or "_o" for the second look's points as given) and
- * the indent in of their declarations (their loop's body one deeper, in2). */
+ * the indent in of their declarations (their loop's body one level deeper). */
 typedef struct {
-    const char *eye, *s, *in, *in2;
+    const char *eye, *s, *in;
 } mag_names;
 
 /* Into e (size bytes) world space's largest |monomial| with the eye's components h[0], h[1]
@@ -242,8 +242,9 @@ static void put_patch_max(sbuf *o, const out_info *info, const kern_target *g, c
                           const mag_names *m)
 {
     int fin = kgpu_exact_zeros(info) && !*m->s, k;
-    char rc[4][8];
+    char rc[4][8], in2[32];
     kern_var r[4];
+    snprintf(in2, sizeof in2, "%s    ", m->in);
     for (k = 0; k < n; k++) {
         snprintf(rc[k], sizeof rc[k], "R%c%s", c[k], m->s);
         r[k] = (kern_var){rc[k], "0.0f", 1};
@@ -254,13 +255,13 @@ static void put_patch_max(sbuf *o, const out_info *info, const kern_target *g, c
     if (fin)
         kgpu_local(o, g, "bool", "fin", "true", 1);
     sbuf_printf(o, "%sfor (i = 0u; i < %s; i++) {\n", m->in, count);
-    g->syntax->locals(o, g, m->in2, g->vec4, &(kern_var){"a", point, 0}, 1, 0);
+    g->syntax->locals(o, g, in2, g->vec4, &(kern_var){"a", point, 0}, 1, 0);
     for (k = 0; k < n; k++)
-        sbuf_printf(o, "%s%s = %s(%s, %s(a.%c));\n", m->in2, rc[k], g->fmax, rc[k], g->fabs, c[k]);
+        sbuf_printf(o, "%s%s = %s(%s, %s(a.%c));\n", in2, rc[k], g->fmax, rc[k], g->fabs, c[k]);
     if (!*m->s)
         put_extents(o, info, g, up, c, n, 1);
     if (fin)
-        sbuf_printf(o, "        fin = fin && %sfinite(a);\n", info->prefix);
+        sbuf_printf(o, "%sfin = fin && %sfinite(a);\n", in2, info->prefix);
     sbuf_printf(o, "%s}\n", m->in);
 }
 
@@ -304,6 +305,18 @@ static void put_magnitudes(sbuf *o, const out_info *info, const kern_target *g, 
     put_named(o, g, m, "R3", e);
 }
 
+/* The second look's magnitudes of the points point (an expression of i, i below count), names
+ * from m: put_magnitudes' and M2, the largest |monomial| of the points themselves. */
+static void put_look_magnitudes(sbuf *o, const out_info *info, const kern_target *g,
+                                const char *up, const char *point, const char *count,
+                                const mag_names *m)
+{
+    char e[1024];
+    put_magnitudes(o, info, g, up, point, count, m);
+    put_monomial_max(e, info, g, 0, m);
+    g->syntax->locals(o, g, m->in, g->real, &(kern_var){"M2", e, 0}, 1, 0);
+}
+
 /* F (names from m), the underflow term's factor (1 + R)^3 (1 + E) of m's magnitudes. */
 static void put_underflow(sbuf *o, const kern_target *g, const mag_names *m)
 {
@@ -320,7 +333,7 @@ static void put_underflow(sbuf *o, const kern_target *g, const mag_names *m)
 static void put_guard(sbuf *o, const kern_target *g, const char *up, const char *qmax,
                       const char *then)
 {
-    put_underflow(o, g, &(mag_names){"eye", "", "    ", "        "});
+    put_underflow(o, g, &(mag_names){"eye", "", "    "});
     kgpu_too_large(o, g, "    ", up, qmax, "");
     kgpu_then(o, g);
     sbuf_printf(o, "        %s /* too large for the bound, or NaN: never certified */\n", then);
@@ -334,13 +347,11 @@ const char *kgpu_look_names(const out_info *info, const kern_target *g)
 
 void kgpu_look_magnitudes(sbuf *o, const out_info *info, const kern_target *g, const char *up)
 {
-    mag_names m = {"eye", "_o", "        ", "            "};
-    char e[1024], pt[96], count[80];
+    mag_names m = {"eye", "_o", "        "};
+    char pt[96], count[80];
     snprintf(pt, sizeof pt, "given[q * %sK + i]", up);
     snprintf(count, sizeof count, "%sK", up);
-    put_magnitudes(o, info, g, up, pt, count, &m);
-    put_monomial_max(e, info, g, 0, &m);
-    g->syntax->locals(o, g, m.in, g->real, &(kern_var){"M2", e, 0}, 1, 0);
+    put_look_magnitudes(o, info, g, up, pt, count, &m);
     put_underflow(o, g, &m);
 }
 
@@ -348,8 +359,7 @@ void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const ke
                      const char *up)
 {
     const char *c = info->space == OUT_CLIP ? "xyw" : "xyzw";
-    mag_names m = {kgpu_table_local(info, g) && info->space == OUT_WORLD ? "l" : "eye", "", "    ",
-                   "        "};
+    mag_names m = {kgpu_table_local(info, g) && info->space == OUT_WORLD ? "l" : "eye", "", "    "};
     char e[1024], pt[96], count[80];
     snprintf(pt, sizeof pt, "pts[q * %sK + i]", up);
     snprintf(count, sizeof count, "%sK", up);
@@ -376,12 +386,10 @@ void kgpu_cert_scale(sbuf *o, const tp_domain *d, const out_info *info, const ke
 void kgpu_cert_look_scale(sbuf *o, const tp_domain *d, const out_info *info, const kern_target *g,
                           const char *up)
 {
-    mag_names m = {"eye", "", "    ", "        "};
-    char e[1024], count[16];
+    mag_names m = {"eye", "", "    "};
+    char count[16];
     snprintf(count, sizeof count, "%du", d->npoints);
-    put_magnitudes(o, info, g, up, "cp[i]", count, &m);
-    put_monomial_max(e, info, g, 0, &m);
-    kgpu_local(o, g, g->real, "M2", e, 0);
+    put_look_magnitudes(o, info, g, up, "cp[i]", count, &m);
     put_guard(o, g, up, "QMAX2", "return 2u;");
     if (kgpu_exact_zeros(info))
         put_collapsed(o, d, info, g, "cp[%d]", NULL);
