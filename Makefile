@@ -152,6 +152,16 @@ BENCH_TRI_ARGS ?=
 bench-tri: $(B)/bench/bench_tri
 	@$(B)/bench/bench_tri $(BENCH_TRI_ARGS)
 
+# `make bench-paired`: the bicubic batch path of the default header against --coordinates absolute
+# (what the patch-local frame costs) and --certified, in PAIRED_ROUNDS alternating rounds on CPU
+# PAIRED_CPU (bench/paired.sh): each build's median time ratio to the default's, with a 95% interval.
+PAIRED_ROUNDS ?= 41
+PAIRED_CPU ?= $(shell echo $$(($$(nproc) - 1)))
+PAIRED = 3x3 3x3_absolute 3x3_certified
+bench-paired: $(addprefix $(B)/bench/bench_cull_,$(PAIRED))
+	@bash bench/paired.sh $(PAIRED_ROUNDS) $(PAIRED_CPU) $(foreach p,$(PAIRED),$(or \
+	    $(subst 3x3_,,$(filter-out 3x3,$(p))),local)=$(B)/bench/bench_cull_$(p))
+
 # The benchmark's compiler and flags: a change rebuilds the benchmarks.
 $(B)/bench/cc.txt: FORCE
 	@mkdir -p $(@D)
@@ -231,7 +241,7 @@ $(B)/bench/cert_look: bench/cert_look.c $(CL_HDR) $(B)/obj/bench/bezfile.o Makef
 
 .SECONDARY: $(addprefix $(B)/bench/ptp_,$(addsuffix .h,$(BENCH_DEGREES))) \
     $(addprefix $(B)/bench/ptp_3x3_,$(addsuffix .h,$(BENCH_VARIANTS))) $(BENCH_TRI_HDR) $(CL_HDR)
-.PHONY: bench bench-tri cert-look
+.PHONY: bench bench-tri bench-paired cert-look
 
 # `make render`: build/render, ptpgen's clip-space GLSL kernels culling bicubic patches in a
 # Vulkan tessellation pipeline (bench/render/, README "Rendering"). Every shader, ptpgen's

@@ -8,6 +8,9 @@
  *
  *   bench_cull --peak GFLOPS_1 GFLOPS_ALL [--patches N]   the table's rows for this bidegree
  *     (built with -DVARIANT='"--refine 3"' around a header with that option: its batch row only)
+ *   bench_cull --batch [--patches N]    one line, "classify_batch M": classify_batch's million
+ *     patches per second on one core (bench/paired.sh alternates builds on it); status 1 when its
+ *     classes differ from classify's
  *   bench_cull --gen PTPGEN                               median ms of PTPGEN --target c */
 #include <math.h>
 #include <pthread.h>
@@ -349,11 +352,14 @@ static void *alloc64(size_t bytes)
 
 /* Parses "--peak GFLOPS_1 GFLOPS_ALL [--patches N]" into peak[0], peak[1] and *count, and DEGREE
  * into *n, *m; 0, or 2 after the usage line. */
-static int parse_args(double peak[2], size_t *count, int *n, int *m, int argc, char **argv)
+static int parse_args(double peak[2], size_t *count, int *n, int *m, int *batch, int argc,
+                      char **argv)
 {
     int i;
     for (i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--peak") && i + 2 < argc) {
+        if (!strcmp(argv[i], "--batch")) {
+            *batch = 1;
+        } else if (!strcmp(argv[i], "--peak") && i + 2 < argc) {
             peak[0] = atof(argv[i + 1]);
             peak[1] = atof(argv[i + 2]);
             i += 2;
@@ -363,9 +369,11 @@ static int parse_args(double peak[2], size_t *count, int *n, int *m, int argc, c
             break;
         }
     }
-    if (i < argc || peak[0] <= 0 || peak[1] <= 0 || *count == 0 ||
+    if (i < argc || (!*batch && (peak[0] <= 0 || peak[1] <= 0)) || *count == 0 ||
         sscanf(DEGREE, "%dx%d", n, m) != 2 || (*n + 1) * (*m + 1) != NPOINTS) {
-        fprintf(stderr, "usage: %s --peak GFLOPS_1 GFLOPS_ALL [--patches N] | --gen PTPGEN\n",
+        fprintf(stderr,
+                "usage: %s --peak GFLOPS_1 GFLOPS_ALL [--patches N] | --batch [--patches N] | "
+                "--gen PTPGEN\n",
                 argv[0]);
         return 2;
     }
@@ -424,6 +432,19 @@ static void plain_rows(const data *d, unsigned char *cls, const unsigned char *r
     print_shares(counts, d->count);
 }
 
+/* The line of --batch: classify_batch's rate in M patches/s. Returns 1 when its classes differ
+ * from ref's, else 0. */
+static int batch_line(const data *d, unsigned char *cls, const unsigned char *ref)
+{
+    size_t used, differ;
+    double rate = measure(run_batch, d, cls, 1, &used);
+    printf("classify_batch %.3f\n", rate * 1e-6);
+    differ = count_differ(cls, ref, used);
+    if (differ)
+        fprintf(stderr, "bench_cull: classify_batch differs from classify on %zu patches\n", differ);
+    return differ != 0;
+}
+
 /* The row of a header with an option: its batch path only, and its classes (as plain_rows). */
 static void variant_rows(const data *d, unsigned char *cls, const unsigned char *ref,
                          const size_t counts[3], const double peak[2], double paper)
@@ -442,7 +463,7 @@ int main(int argc, char **argv)
     double peak[2] = {0, 0}, paper;
     long ncpu = sysconf(_SC_NPROCESSORS_ONLN), ncpus;
     size_t count = 262144, used, p, counts[3] = {0, 0, 0};
-    int n = 0, m = 0, i, *cpus;
+    int n = 0, m = 0, batch = 0, status = 0, i, *cpus;
     float(*cp)[4], *soa;
     uint32_t *idx;
     unsigned char *ref, *cls;
@@ -450,7 +471,7 @@ int main(int argc, char **argv)
 
     if (argc == 3 && !strcmp(argv[1], "--gen"))
         return gen_time(argv[2]);
-    if (parse_args(peak, &count, &n, &m, argc, argv))
+    if (parse_args(peak, &count, &n, &m, &batch, argc, argv))
         return 2;
     if (ncpu < 1)
         ncpu = 1;
@@ -481,16 +502,20 @@ int main(int argc, char **argv)
     run_classify(&d, 0, count, ref); /* the classes the other paths are compared with */
     for (p = 0; p < count; p++)
         counts[ref[p] < 3 ? ref[p] : 2]++;
-    paper = measure(run_paper, &d, cls, 0, &used);
-    if (variant)
-        variant_rows(&d, cls, ref, counts, peak, paper);
-    else
-        plain_rows(&d, cls, ref, counts, peak, paper, used, ncpu, ncpus ? cpus : NULL);
+    if (batch) {
+        status = batch_line(&d, cls, ref);
+    } else {
+        paper = measure(run_paper, &d, cls, 0, &used);
+        if (variant)
+            variant_rows(&d, cls, ref, counts, peak, paper);
+        else
+            plain_rows(&d, cls, ref, counts, peak, paper, used, ncpu, ncpus ? cpus : NULL);
+    }
     free(cp);
     free(soa);
     free(idx);
     free(ref);
     free(cls);
     free(cpus);
-    return 0;
+    return status;
 }
