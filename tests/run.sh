@@ -102,6 +102,9 @@ if [ -x build/gcc/ptpgen ]; then
     run tests/test_host_header.sh env PTPGEN=build/gcc/ptpgen bash tests/test_host_header.sh
 fi
 
+# bench/paired.sh (make bench-paired) on stand-in builds whose rates are known.
+run tests/test_paired.sh bash tests/test_paired.sh
+
 # bench/cullrate (make cullrate) on small models (bicubic and PN triangles), its errors on bad
 # input, and pn_check (PN triangles, the tessellator, triangular cones and the exact arbiter).
 if make -s CC=gcc build/gcc/cullrate/cullrate build/gcc/cullrate/pn_check >build/make-cullrate.log 2>&1; then
