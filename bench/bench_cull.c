@@ -301,7 +301,7 @@ static void row(const char *path, double rate, long flops, double peak, double p
         snprintf(diff, sizeof diff, "%zu/%zu", differ, of);
     else
         snprintf(diff, sizeof diff, "-");
-    printf("%-8s  %-26s %10.3f %11ld %8.1f %6.1f%% %8s  %s\n", DEGREE, path, rate * 1e-6, flops,
+    printf("%-8s  %-37s %10.3f %11ld %8.1f %6.1f%% %8s  %s\n", DEGREE, path, rate * 1e-6, flops,
            gf, 100 * gf / peak, vs, diff);
 }
 

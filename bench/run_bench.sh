@@ -38,7 +38,7 @@ echo "ptpgen bench: ${cpu:-unknown CPU}, $ccname $ccver $FLAGS, 1 core (pinned) 
 echo "peak (measured): $peak1 GFLOP/s on 1 core, $peakall GFLOP/s on $cores" \
     "(FMA+ADD mix of $bits-bit vectors, an FMA counted as 2 flops)"
 # line COLUMNS...: one line of the table, aligned with bench_cull's rows.
-line() { printf '%-8s  %-26s %10s %11s %8s %7s %8s  %s\n' "$@"; }
+line() { printf '%-8s  %-37s %10s %11s %8s %7s %8s  %s\n' "$@"; }
 line bidegree path Mpatches/s flops/patch GFLOP/s %peak 'vs paper' differs
 
 # gpu_row DEGREE LABEL RATE FLOPS PAPER_RATE CHECK: a row of a kernel on all cores (RATE patches/s,
