@@ -154,9 +154,10 @@ bench-tri: $(B)/bench/bench_tri
 
 # `make bench-paired`: the bicubic batch path of the default header against --coordinates absolute
 # (what the patch-local frame costs) and --certified, in PAIRED_ROUNDS alternating rounds on CPU
-# PAIRED_CPU (bench/paired.sh): each build's median time ratio to the default's, with a 95% interval.
+# PAIRED_CPU (bench/paired.sh; by default the last CPU make may run on): each build's median time
+# ratio to the default's, with a 95% interval.
 PAIRED_ROUNDS ?= 41
-PAIRED_CPU ?= $(shell echo $$(($$(nproc) - 1)))
+PAIRED_CPU ?= last
 PAIRED = 3x3 3x3_absolute 3x3_certified
 bench-paired: $(addprefix $(B)/bench/bench_cull_,$(PAIRED))
 	@bash bench/paired.sh $(PAIRED_ROUNDS) $(PAIRED_CPU) $(foreach p,$(PAIRED),$(or \

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # paired.sh: `make bench-paired`: builds of bench_cull compared in alternating rounds on one core,
 # each against the first by the median of its per-round time ratios, with a 95% interval.
-#   bench/paired.sh ROUNDS CPU NAME=BINARY...   (each BINARY a bench_cull; NAME its label)
+#   bench/paired.sh ROUNDS CPU NAME=BINARY...   (each BINARY a bench_cull; NAME its label; CPU
+#   "last": the last CPU this process may run on)
 # A round runs every binary once with --batch (classify_batch's best time), pinned to CPU, in an
 # order rotated each round, so that a slow spell of the machine falls on every binary alike. The
 # interval of the median ratio is distribution-free (order statistics of the rounds' ratios).
@@ -9,6 +10,9 @@ set -u
 [ $# -ge 4 ] || { echo "usage: bench/paired.sh ROUNDS CPU NAME=BINARY NAME=BINARY..." >&2; exit 2; }
 rounds=$1 cpu=$2
 shift 2
+if [ "$cpu" = last ]; then
+    cpu=$(taskset -cp $$ | sed 's/.*: //; s/.*,//; s/.*-//')
+fi
 names=() bins=()
 for a in "$@"; do
     names+=("${a%%=*}")

@@ -44,6 +44,11 @@ if ! bash bench/paired.sh 3 0 a="$tmp/a" bad="$tmp/bad" >"$tmp/out" 2>&1 && grep
 else
     not_ok "paired.sh with a failing build: $(cat "$tmp/out")"
 fi
+if taskset -c 0 bash bench/paired.sh 1 last a="$tmp/a" b="$tmp/b" | grep -q 'on CPU 0:'; then
+    ok "paired.sh: CPU last is the last CPU it may run on"
+else
+    not_ok "paired.sh: CPU last under taskset -c 0"
+fi
 bash bench/paired.sh 3 0 a="$tmp/a" >"$tmp/out" 2>&1
 if [ $? = 2 ] && grep -q '^usage: ' "$tmp/out"; then
     ok "paired.sh: fewer than two builds is a usage error"
