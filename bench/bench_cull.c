@@ -350,8 +350,9 @@ static void *alloc64(size_t bytes)
     return aligned_alloc(64, (bytes + 63) / 64 * 64);
 }
 
-/* Parses "--peak GFLOPS_1 GFLOPS_ALL [--patches N]" into peak[0], peak[1] and *count, and DEGREE
- * into *n, *m; 0, or 2 after the usage line. */
+/* Parses "--peak GFLOPS_1 GFLOPS_ALL [--patches N]" into peak[0], peak[1] and *count, or
+ * "--batch [--patches N]" into *batch = 1 and *count, and DEGREE into *n, *m; 0, or 2 after the
+ * usage line. */
 static int parse_args(double peak[2], size_t *count, int *n, int *m, int *batch, int argc,
                       char **argv)
 {

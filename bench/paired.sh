@@ -10,6 +10,9 @@ set -u
 [ $# -ge 4 ] || { echo "usage: bench/paired.sh ROUNDS CPU NAME=BINARY NAME=BINARY..." >&2; exit 2; }
 rounds=$1 cpu=$2
 shift 2
+case $rounds in
+'' | *[!0-9]* | 0) echo "paired: ROUNDS must be a positive integer, not '$rounds'" >&2; exit 2 ;;
+esac
 if [ "$cpu" = last ]; then
     cpu=$(taskset -cp $$ | sed 's/.*: //; s/.*,//; s/.*-//')
 fi
@@ -31,7 +34,7 @@ for ((r = 0; r < rounds; r++)); do
         echo "$r ${line#classify_batch }" >>"$tmp/$i"
     done
 done
-echo "classify_batch (bicubic, clip, strict), $rounds alternating rounds on CPU $cpu:" \
+echo "classify_batch (clip space, strict rule), $rounds alternating rounds on CPU $cpu:" \
     "M patches/s, and the time against ${names[0]}'s in the same round"
 printf '%-12s %8s %8s %8s   %s\n' build median min max 'time ratio: median [95% interval]'
 for ((i = 0; i < n; i++)); do

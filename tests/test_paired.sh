@@ -55,4 +55,10 @@ if [ $? = 2 ] && grep -q '^usage: ' "$tmp/out"; then
 else
     not_ok "paired.sh with one build: $(cat "$tmp/out")"
 fi
+bash bench/paired.sh x3 0 a="$tmp/a" b="$tmp/b" >"$tmp/out" 2>&1
+if [ $? = 2 ] && grep -q "ROUNDS must be a positive integer, not 'x3'" "$tmp/out"; then
+    ok "paired.sh: a bad round count is an error that names it"
+else
+    not_ok "paired.sh with ROUNDS x3: $(cat "$tmp/out")"
+fi
 [ $fails = 0 ]
