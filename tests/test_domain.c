@@ -331,6 +331,41 @@ static void test_tri_names(void)
     }
 }
 
+/* The points on edge e of the grid written out from the documented numberings (quad k = i*(m+1)
+ * + j; triangle k = (d-i)(d-i+1)/2 + (d-i-j)), in increasing order; returns their count. */
+static int edge_expected(int *k, const tp_domain *d, int e)
+{
+    int x, count = d->kind == TP_TRI || e < 2 ? d->m + 1 : d->n + 1;
+    for (x = 0; x < count; x++) {
+        int i = d->kind == TP_TRI ? (e == 0 ? 0 : d->n - x) : (e == 0 ? 0 : e == 1 ? d->n : x);
+        int j = d->kind == TP_TRI ? (e == 0 ? d->n - x : e == 1 ? 0 : x) : (e < 2 ? x : e == 2 ? 0 : d->m);
+        k[x] = d->kind == TP_TRI ? (d->n - i) * (d->n - i + 1) / 2 + d->n - i - j : i * (d->m + 1) + j;
+    }
+    return count;
+}
+
+/* tp_domain_edge_points on every quad bidegree and triangle degree against edge_expected. */
+static void test_edge_points(void)
+{
+    char why[160] = "";
+    int kind, n, m, e, bad = 0;
+    for (kind = 0; kind < 2; kind++)
+        for (n = 1; n <= (kind ? PTP_MAX_TRI_DEGREE : PTP_MAX_DEGREE); n++)
+            for (m = kind ? n : 1; m <= (kind ? n : PTP_MAX_DEGREE); m++) {
+                tp_domain d;
+                tp_domain_init(&d, kind ? TP_TRI : TP_QUAD, n, m, NULL);
+                for (e = 0; e < tp_domain_edges(&d); e++) {
+                    int got[TP_EDGE_POINTS_MAX + 1], want[TP_EDGE_POINTS_MAX + 1];
+                    int c = tp_domain_edge_points(got, &d, e), w = edge_expected(want, &d, e);
+                    if ((c != w || c > TP_EDGE_POINTS_MAX || memcmp(got, want, sizeof *got * (size_t)w)) &&
+                        !bad++)
+                        snprintf(why, sizeof why, "%s %dx%d edge %d: %d points, %d expected",
+                                 kind ? "triangle" : "quad", n, m, e, c, w);
+                }
+            }
+    check(!bad, "tp_domain_edge_points lists every edge's points in order (every degree)", "%s", why);
+}
+
 int main(void)
 {
     test_maps();
@@ -342,5 +377,6 @@ int main(void)
     test_derive_counts();
     test_tri_maps();
     test_tri_names();
+    test_edge_points();
     return check_exit();
 }

@@ -291,6 +291,19 @@ int tp_domain_on_edge(const tp_domain *d, int e, int i, int j)
     return e == 0 ? i == 0 : e == 1 ? i == d->n : e == 2 ? j == 0 : j == d->m;
 }
 
+_Static_assert(PTP_MAX_DEGREE <= PTP_MAX_TRI_DEGREE, "TP_EDGE_POINTS_MAX holds a quad's edge");
+
+int tp_domain_edge_points(int *k, const tp_domain *d, int e)
+{
+    int p, i, j, count = 0;
+    for (p = 0; p < d->npoints; p++) {
+        tp_domain_point_ij(&i, &j, d, p);
+        if (tp_domain_on_edge(d, e, i, j))
+            k[count++] = p;
+    }
+    return count;
+}
+
 unsigned tp_domain_term_edges(const tp_domain *d, const int k[3])
 {
     unsigned z = 0;

@@ -15,7 +15,8 @@ typedef enum { TP_QUAD, TP_TRI } tp_kind;
 /* A patch domain. Points and planes are both numbered over a grid: a point over the degrees
  * (n, m), a plane over the plane degrees (pu, pv), by the kind's rule (quad: row-major, the
  * first index along u: k = i*(m+1) + j, P = I*(pv+1) + J; triangle: (i, j) in descending
- * lexicographic order, k = (d-i)(d-i+1)/2 + j, P = (D-I)(D-I+1)/2 + J with D = 3d-3). */
+ * lexicographic order, k = (d-i)(d-i+1)/2 + (d-i-j), P = (D-I)(D-I+1)/2 + (D-I-J) with
+ * D = 3d-3). */
 typedef struct {
     tp_kind kind;
     int n, m;            /* patch degrees (quad: n along u, m along v) */
@@ -84,6 +85,11 @@ int tp_domain_plane_row_start(const tp_domain *d, int P);
  * 2 k = 0 (i + j = d)). */
 int tp_domain_edges(const tp_domain *d);
 int tp_domain_on_edge(const tp_domain *d, int e, int i, int j);
+/* The most points a boundary edge has (of the largest triangle). */
+#define TP_EDGE_POINTS_MAX (PTP_MAX_TRI_DEGREE + 1)
+/* k[0 .. count-1] = the points on boundary edge e of d, in increasing order; returns count
+ * (the edge's degree plus 1, at most TP_EDGE_POINTS_MAX). */
+int tp_domain_edge_points(int *k, const tp_domain *d, int e);
 /* The boundary edges e of d (bit e) on which at least two of the points k[0..2] lie: collapsing
  * such an edge (all its points equal) makes the term det[b_k0 b_k1 b_k2 ...] exactly zero. */
 unsigned tp_domain_term_edges(const tp_domain *d, const int k[3]);

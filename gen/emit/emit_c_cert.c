@@ -90,25 +90,13 @@ static int input_point(const out_info *info, const tp_domain *d, int k)
     return info->slp->vmajor ? plan_input_index(info->slp, i, j) : k;
 }
 
-/* The first point on boundary edge e of d. */
-static int edge_first(const tp_domain *d, int e)
-{
-    int k, i, j;
-    for (k = 0; k < d->npoints; k++) {
-        tp_domain_point_ij(&i, &j, d, k);
-        if (tp_domain_on_edge(d, e, i, j))
-            break;
-    }
-    return k;
-}
-
 /* certify64's collapsed edges (degenerate rule): each plane's edges zero[], same(), and
  * collapsed(cp): bit e where edge e's points are equal and every coordinate is finite. */
 static void put_collapsed64(sbuf *o, const slp_prog *p, const tp_domain *d, const out_info *info,
                             const char *up)
 {
     const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, e, k, i, j;
+    int world = info->space == OUT_WORLD, e, k, x, n, pt[TP_EDGE_POINTS_MAX];
     sbuf_printf(o, "\n/* Degenerate rule: bit e of zero[P] where every term of plane P has two points on boundary\n"
                    " * edge e, so that the plane is exactly 0 when that edge is collapsed. */\n"
                    "static const unsigned char %szero[%sPLANES] = {", px, up);
@@ -125,14 +113,11 @@ static void put_collapsed64(sbuf *o, const slp_prog *p, const tp_domain *d, cons
                    "            fin &= %scp[x][k] - cp[x][k] == 0;\n",
                 px, world ? "(a[2] == b[2]) & " : "", px, up, world ? "" : "k == 2 || ");
     for (e = 0; e < tp_domain_edges(d); e++) {
-        int f = edge_first(d, e), n = 0;
         sbuf_printf(o, "    col |= (");
-        for (k = f + 1; k < d->npoints; k++) {
-            tp_domain_point_ij(&i, &j, d, k);
-            if (tp_domain_on_edge(d, e, i, j))
-                sbuf_printf(o, "%s%ssame(cp[%d], cp[%d])", n++ ? " & " : "", px,
-                            input_point(info, d, k), input_point(info, d, f));
-        }
+        n = tp_domain_edge_points(pt, d, e);
+        for (x = 1; x < n; x++)
+            sbuf_printf(o, "%s%ssame(cp[%d], cp[%d])", x > 1 ? " & " : "", px,
+                        input_point(info, d, pt[x]), input_point(info, d, pt[0]));
         sbuf_printf(o, ") << %d;\n", e);
     }
     sbuf_puts(o, "    return fin * col;\n}\n");
@@ -317,7 +302,7 @@ static void put_load(char *out, size_t size, const char *px, int k, int c)
 void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
 {
     const char *px = info->prefix;
-    int world = info->space == OUT_WORLD, e, k, c;
+    int world = info->space == OUT_WORLD, e, k, c, x, n, pt[TP_EDGE_POINTS_MAX];
     char a[128], b[128];
     sbuf_printf(o, "        /* Certified, degenerate rule: c<e> where boundary edge e is collapsed (its points\n"
                    "         * equal as given, every coordinate finite); the planes it zeros are then exactly 0. */\n"
@@ -331,18 +316,14 @@ void emit_c_cert_collapsed(sbuf *o, const tp_domain *d, const out_info *info)
             }
     sbuf_puts(o, ";\n");
     for (e = 0; e < tp_domain_edges(d); e++) {
-        int f = edge_first(d, e);
         sbuf_printf(o, "        const %svm c%d = fin", px, e);
-        for (k = f + 1; k < d->npoints; k++) {
-            int i, j;
-            tp_domain_point_ij(&i, &j, d, k);
-            if (!tp_domain_on_edge(d, e, i, j))
-                continue;
+        n = tp_domain_edge_points(pt, d, e);
+        for (x = 1; x < n; x++) {
             sbuf_puts(o, " &\n            ");
             for (c = 0; c < 4; c++)
                 if (world || c != 2) {
-                    put_load(a, sizeof a, px, input_point(info, d, k), c);
-                    put_load(b, sizeof b, px, input_point(info, d, f), c);
+                    put_load(a, sizeof a, px, input_point(info, d, pt[x]), c);
+                    put_load(b, sizeof b, px, input_point(info, d, pt[0]), c);
                     sbuf_printf(o, "%s(%svm)(%s == %s)", c ? " & " : "", px, a, b);
                 }
         }

@@ -87,7 +87,7 @@ static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, con
                           const char *pt, const char *base)
 {
     char bit[16], a[64], b[64];
-    int e, k, f, i, j;
+    int e, x, n, k[TP_EDGE_POINTS_MAX];
     sbuf_puts(o, "    /* Degenerate rule: bit e of col where boundary edge e is collapsed (its points bitwise\n"
                  "     * equal, every coordinate finite); the planes of zero[] with bit e are then exactly 0. */\n");
     kgpu_local(o, g, g->uint, "col", "0u", 1);
@@ -98,16 +98,10 @@ static void put_collapsed(sbuf *o, const tp_domain *d, const out_info *info, con
         char *sel;
         sbuf_init(&cond);
         sbuf_puts(&cond, "fin");
-        for (k = 0, f = -1; k < d->npoints; k++) {
-            tp_domain_point_ij(&i, &j, d, k);
-            if (!tp_domain_on_edge(d, e, i, j))
-                continue;
-            if (f < 0) {
-                f = k;
-                continue;
-            }
-            snprintf(a, sizeof a, pt, k);
-            snprintf(b, sizeof b, pt, f);
+        n = tp_domain_edge_points(k, d, e);
+        for (x = 1; x < n; x++) {
+            snprintf(a, sizeof a, pt, k[x]);
+            snprintf(b, sizeof b, pt, k[0]);
             sbuf_printf(&cond, " &&\n        %ssame(%s, %s)", info->prefix, a, b);
         }
         snprintf(bit, sizeof bit, "%uu", 1u << e);

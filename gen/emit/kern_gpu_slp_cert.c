@@ -146,7 +146,7 @@ static void put_compare(sbuf *s, const char *sep, int a, int b, int c)
 static int put_collapsed(slpt_writer *w, const tp_domain *d, const out_info *info,
                          const kern_target *g, ptp_error *err)
 {
-    int world = info->space == OUT_WORLD, e, k, c, f, i, j, n, failed;
+    int world = info->space == OUT_WORLD, e, k, c, x, n, failed, p[TP_EDGE_POINTS_MAX];
     char name[16];
     sbuf s;
     sbuf_init(&s);
@@ -159,18 +159,11 @@ static int put_collapsed(slpt_writer *w, const tp_domain *d, const out_info *inf
     for (e = 0; e < tp_domain_edges(d); e++) {
         sbuf_clear(&s);
         sbuf_puts(&s, "fin");
-        for (f = -1, k = 0; k < d->npoints; k++) {
-            tp_domain_point_ij(&i, &j, d, k);
-            if (!tp_domain_on_edge(d, e, i, j))
-                continue;
-            if (f < 0) {
-                f = k;
-                continue;
-            }
+        n = tp_domain_edge_points(p, d, e);
+        for (x = 1; x < n; x++)
             for (c = 0; c < 4; c++)
                 if (world || c != 2)
-                    put_compare(&s, " && ", k, f, c);
-        }
+                    put_compare(&s, " && ", p[x], p[0], c);
         snprintf(name, sizeof name, "col%d", e);
         kgpu_local(w->o, g, "bool", name, s.s, 0);
         failed |= s.failed;

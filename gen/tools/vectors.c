@@ -131,15 +131,11 @@ static void corner_tangent(vcase *v, const tp_table *t, out_space space, uint64_
 /* Replaces the control points of one random boundary edge by copies of its first point. */
 static void collapse_edge(vcase *v, const tp_table *t, uint64_t *s)
 {
-    int e = draw(s, 0, tp_domain_edges(&t->dom) - 1), first = -1, k, c, i, j;
-    for (k = 0; k < t->dom.npoints; k++) {
-        tp_domain_point_ij(&i, &j, &t->dom, k);
-        if (!tp_domain_on_edge(&t->dom, e, i, j))
-            continue;
-        first = first < 0 ? k : first;
+    int pt[TP_EDGE_POINTS_MAX], x, c;
+    int n = tp_domain_edge_points(pt, &t->dom, draw(s, 0, tp_domain_edges(&t->dom) - 1));
+    for (x = 1; x < n; x++)
         for (c = 0; c < 4; c++)
-            v->b[k][c] = v->b[first][c];
-    }
+            v->b[pt[x]][c] = v->b[pt[0]][c];
 }
 
 /* Draws the next case from s (see vectors.h for the distribution). */
