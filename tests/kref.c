@@ -388,16 +388,11 @@ void kref_table_max(int *maxp, int *maxk, const tp_table *t)
  * k: the first point on the edge, or -1 when k is not on it. */
 static int edge_first(const tp_domain *d, int e, int k)
 {
-    int x, i, j;
-    e %= tp_domain_edges(d);
-    tp_domain_point_ij(&i, &j, d, k);
-    if (!tp_domain_on_edge(d, e, i, j))
-        return -1;
-    for (x = 0;; x++) {
-        tp_domain_point_ij(&i, &j, d, x);
-        if (tp_domain_on_edge(d, e, i, j))
-            return x;
-    }
+    int pt[TP_EDGE_POINTS_MAX], x, n = tp_domain_edge_points(pt, d, e % tp_domain_edges(d));
+    for (x = 0; x < n; x++)
+        if (pt[x] == k)
+            return pt[0];
+    return -1;
 }
 
 int kref_exact_class(const kref_set *s, size_t p, kref_rule rule)
