@@ -60,7 +60,9 @@ exercise() {
 # kernel runs on two corners of the matrix, clip strict and world degenerate, on the GPU runtimes
 # only (the C header does not depend on the GPU form: the straight-line configuration runs it).
 # The biquartic (4x4) straight-line code, minutes of compilation on every runtime, runs once: the
-# vendored out/4x4 below (clip strict; the writer is the same for every degree and space).
+# vendored out/4x4 below (clip strict; the writer is the same for every degree and space). Its
+# table kernels, half a minute to a minute of compilation each on lavapipe (llvmpipe builds their
+# constant tables), run on the clip strict corner alone.
 seed=1
 mkdir -p "$tmp/gen"
 fresh="1x1 2x2 3x3 4x4 2x3 3x1 tri1 tri2 tri3"
@@ -70,6 +72,7 @@ for d in $fresh; do
             for kernel in slp table; do
                 if [ $kernel = table ]; then
                     [ $space/$rule = clip/strict ] || [ $space/$rule = world/degenerate ] || continue
+                    [ $d = 4x4 ] && [ $space/$rule != clip/strict ] && continue
                 elif [ $d = 4x4 ]; then
                     continue
                 fi
