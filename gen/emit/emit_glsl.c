@@ -45,8 +45,9 @@ const kern_target kern_glsl = {
     .vec2 = "vec2", .vec2_make = "vec2(%s, %s)",
     .slp_classify = "uint %s(vec4 cp[%d], vec4 eye)\n{",
     .slp_values = "void %s(vec4 cp[%d], vec4 eye, out float d[%d])\n{",
-    /* no .slp_look: lavapipe runs a branch for every invocation, taken or not, and the second look
-     * made every patch of the certified straight-line kernel cost 3.6 times as much */
+    /* no .slp_look: lavapipe builds the look's constant term tables in every invocation (minutes
+     * of compilation, most of the run time); from a storage buffer they would cost little
+     * (bench/README) */
     .slp_d = "d[%d]",
     .slp_decl = "precise float ",
     .slp_fma = "fma(%s, %s, %s)",
