@@ -61,8 +61,8 @@ exercise() {
 # only (the C header does not depend on the GPU form: the straight-line configuration runs it).
 # The biquartic (4x4) straight-line code, minutes of compilation on every runtime, runs once: the
 # vendored out/4x4 below (clip strict; the writer is the same for every degree and space). Its
-# table kernels, half a minute to a minute of compilation each on lavapipe (llvmpipe builds their
-# constant tables), run on the clip strict corner alone.
+# table kernels, half a minute to a minute of compilation each on lavapipe, run on the clip strict
+# corner alone.
 seed=1
 mkdir -p "$tmp/gen"
 fresh="1x1 2x2 3x3 4x4 2x3 3x1 tri1 tri2 tri3"
